@@ -1,0 +1,7 @@
+#!/usr/bin/env bash
+# Configures and builds whirl (Release) into build/. Used by main.sh and test.sh.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/install-deps.sh
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release > build.log 2>&1 || { cat build.log; exit 1; }
+cmake --build build -j "$(nproc)" 2>&1 | tail -n 3

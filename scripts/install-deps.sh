@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages whirl needs, only those missing. Idempotent; needs root (or sudo).
+set -euo pipefail
+packages=(
+  build-essential cmake pkg-config
+  libeigen3-dev liblapacke-dev liblapack-dev libblas-dev
+  libpetsc-real-dev libslepc-real-dev libopenmpi-dev openmpi-bin
+  gnuplot-nox libyaml-cpp-dev libcli11-dev libfmt-dev libmatio-dev nlohmann-json3-dev
+  libgtest-dev libgmock-dev libbenchmark-dev
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+echo "install-deps: installing ${missing[*]}"
+sudo_cmd=""
+[ "$(id -u)" -eq 0 ] || sudo_cmd="sudo"
+export DEBIAN_FRONTEND=noninteractive
+$sudo_cmd apt-get update -qq
+$sudo_cmd apt-get install -y -qq --no-install-recommends "${missing[@]}"
