@@ -1,0 +1,52 @@
+#include "linearize/linearize.hpp"
+
+#include "linearize/jacobian.hpp"
+#include "src/dynamics/mass_matrix.hpp"
+#include "src/dynamics/residual.hpp"
+#include "src/model/error.hpp"
+
+namespace whirl {
+
+LinearModel linearize(const Model& m, const OperatingPoint& op) {
+  LinearModel lin;
+  lin.dofs = m.activeDofs();
+  const int n = static_cast<int>(lin.dofs.size());
+  for (int i : lin.dofs) lin.dof_names.push_back(m.dofs[i].name);
+  for (const auto& in : m.inputs) lin.input_names.push_back(in.name);
+  std::vector<int> inputs(m.ninput());
+  for (int i = 0; i < m.ninput(); ++i) inputs[i] = i;
+
+  Workspace<double> ws(m);
+  JacobianWorkspace jw(m);
+  auto rows = [&](const MatX& J, double sign) {
+    MatX out(n, J.cols());
+    for (int r = 0; r < n; ++r) out.row(r) = sign * J.row(lin.dofs[r]);
+    return out;
+  };
+  lin.K = rows(residualJacobian(m, jw, op.q, op.qd, op.qdd, op.u, Wrt::Q, lin.dofs), -1.0);
+  lin.C = rows(residualJacobian(m, jw, op.q, op.qd, op.qdd, op.u, Wrt::Qd, lin.dofs), -1.0);
+  lin.Q = rows(residualJacobian(m, jw, op.q, op.qd, op.qdd, op.u, Wrt::U, inputs), 1.0);
+  MatX Mfull;
+  massMatrix(m, ws, op.q, Mfull);
+  lin.M.resize(n, n);
+  for (int r = 0; r < n; ++r)
+    for (int c = 0; c < n; ++c) lin.M(r, c) = Mfull(lin.dofs[r], lin.dofs[c]);
+  VecX e(m.ndof());
+  residual(m, ws, op.q, op.qd, op.qdd, op.u, e);
+  lin.residual.resize(n);
+  for (int r = 0; r < n; ++r) lin.residual(r) = e(lin.dofs[r]);
+
+  Eigen::LDLT<MatX> ldlt(lin.M);
+  if (ldlt.info() != Eigen::Success || !ldlt.isPositive() || ldlt.vectorD().minCoeff() <= 0)
+    throw ComputeError("the mass matrix is not positive definite: a coordinate without inertia? (check masses, "
+                       "inertias and which DOFs are frozen)");
+  lin.A = MatX::Zero(2 * n, 2 * n);
+  lin.A.block(0, n, n, n).setIdentity();
+  lin.A.block(n, 0, n, n) = -ldlt.solve(lin.K);
+  lin.A.block(n, n, n, n) = -ldlt.solve(lin.C);
+  lin.B = MatX::Zero(2 * n, m.ninput());
+  if (m.ninput() > 0) lin.B.block(n, 0, n, m.ninput()) = ldlt.solve(lin.Q);
+  return lin;
+}
+
+}  // namespace whirl

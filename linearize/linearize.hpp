@@ -1,0 +1,28 @@
+#pragma once
+/// \file
+/// Linearization at an operating point (seed 001 eq. 25–26):
+///   M δq̈ + C δq̇ + K δq = Q δu,  M = −∂e/∂q̈, C = −∂e/∂q̇, K = −∂e/∂q, Q = ∂e/∂u,
+/// on the active (non-frozen) coordinates; C, K, Q by chunked forward AD, M from the double
+/// assembly. State space x = [δq; δq̇]: A = [[0, I], [−M⁻¹K, −M⁻¹C]], B = [[0], [M⁻¹Q]] (solved
+/// with an LU of M, never inverted).
+#include <string>
+#include <vector>
+
+#include "linearize/operating_point.hpp"
+
+namespace whirl {
+
+struct LinearModel {
+  std::vector<int> dofs;                 ///< model coordinates of the states, in order
+  std::vector<std::string> dof_names;    ///< dim n
+  std::vector<std::string> input_names;  ///< dim nu
+  MatX M, C, K;  ///< n × n
+  MatX Q;        ///< n × nu
+  MatX A;        ///< 2n × 2n
+  MatX B;        ///< 2n × nu
+  VecX residual; ///< e at the operating point on the active coordinates (dim n)
+};
+
+LinearModel linearize(const Model& model, const OperatingPoint& op);
+
+}  // namespace whirl

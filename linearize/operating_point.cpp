@@ -1,0 +1,88 @@
+#include "linearize/operating_point.hpp"
+
+#include <cmath>
+
+#include "linearize/jacobian.hpp"
+#include "src/dynamics/residual.hpp"
+#include "src/model/error.hpp"
+
+namespace whirl {
+
+OperatingPoint initialPoint(const Model& m) {
+  OperatingPoint op;
+  const int n = m.ndof();
+  op.q = VecX::Zero(n);
+  op.qd = VecX::Zero(n);
+  op.qdd = VecX::Zero(n);
+  for (int i = 0; i < n; ++i) {
+    op.q(i) = m.dofs[i].value;
+    op.qd(i) = m.dofs[i].rate;
+  }
+  op.u = VecX::Zero(m.ninput());
+  for (int i = 0; i < m.ninput(); ++i) op.u(i) = m.inputs[i].value;
+  return op;
+}
+
+OperatingPoint solveOperatingPoint(const Model& m, const OperatingPoint& start, const EquilibriumOptions& opt) {
+  OperatingPoint op = start;
+  op.solved.clear();
+  for (int i : m.activeDofs()) {
+    if (m.dofs[i].rotating) continue;
+    if (op.qd(i) != 0.0)
+      throw ComputeError("DOF '" + m.dofs[i].name + "': a non-rotating coordinate has a rate; mark it rotating or freeze it");
+    op.solved.push_back(i);
+  }
+  Workspace<double> ws(m);
+  JacobianWorkspace jw(m);
+  VecX e(m.ndof());
+  const int ns = static_cast<int>(op.solved.size());
+  auto solvedResidual = [&]() {
+    residual(m, ws, op.q, op.qd, op.qdd, op.u, e);
+    VecX es(ns);
+    for (int k = 0; k < ns; ++k) es(k) = e(op.solved[k]);
+    return es;
+  };
+  VecX es = solvedResidual();
+  if (!e.allFinite()) throw ComputeError("operating point: the residual is not finite (NaN in the model or inputs)");
+  // Load scale: the residual at the undeflected start, or the gravity/centrifugal loads it holds.
+  const double scale = std::max(1.0, es.lpNorm<Eigen::Infinity>());
+  op.iterations = 0;
+  while (ns > 0 && es.lpNorm<Eigen::Infinity>() > opt.tolerance * scale) {
+    if (op.iterations >= opt.max_iterations) {
+      Eigen::Index worst;
+      es.cwiseAbs().maxCoeff(&worst);
+      throw ComputeError("operating point did not converge in " + std::to_string(opt.max_iterations) +
+                         " Newton iterations: residual " + std::to_string(es(worst)) + " on DOF '" +
+                         m.dofs[op.solved[worst]].name + "'");
+    }
+    const MatX J = residualJacobian(m, jw, op.q, op.qd, op.qdd, op.u, Wrt::Q, op.solved);
+    MatX K(ns, ns);
+    for (int r = 0; r < ns; ++r) K.row(r) = -J.row(op.solved[r]);
+    Eigen::FullPivLU<MatX> lu(K);
+    if (lu.rank() < ns) {
+      // Name a coordinate in the null space: the one with the largest component.
+      const MatX ker = lu.kernel();
+      Eigen::Index worst = 0;
+      ker.col(0).cwiseAbs().maxCoeff(&worst);
+      throw ComputeError("operating point: no stiffness on DOF '" + m.dofs[op.solved[worst]].name +
+                         "' (a free rigid-body motion): freeze it, or mark it rotating");
+    }
+    const VecX dq = lu.solve(es);
+    for (int k = 0; k < ns; ++k) op.q(op.solved[k]) += dq(k);
+    ++op.iterations;
+    es = solvedResidual();
+    if (!es.allFinite()) throw ComputeError("operating point: Newton diverged (residual not finite)");
+    if (dq.lpNorm<Eigen::Infinity>() < 1e-14 * (1.0 + op.q.lpNorm<Eigen::Infinity>())) break;
+  }
+  op.residual_norm = es.norm();
+  residual(m, ws, op.q, op.qd, op.qdd, op.u, e);
+  op.residual_max_active = 0;
+  for (int i : m.activeDofs())
+    if (std::abs(e(i)) >= op.residual_max_active) {
+      op.residual_max_active = std::abs(e(i));
+      op.residual_max_dof = m.dofs[i].name;
+    }
+  return op;
+}
+
+}  // namespace whirl

@@ -1,0 +1,35 @@
+#pragma once
+/// \file
+/// Operating point: rates of the rotating coordinates, inputs and frozen coordinates are given;
+/// the other active coordinates are solved for static/steady equilibrium e(q, q̇, 0, u) = 0 by
+/// Newton with the AD stiffness K = −∂e/∂q.
+#include <string>
+#include <vector>
+
+#include "src/model/model.hpp"
+
+namespace whirl {
+
+struct OperatingPoint {
+  VecX q, qd, qdd, u;        ///< all coordinates (ndof) and inputs (ninput)
+  std::vector<int> solved;   ///< coordinates solved for equilibrium
+  int iterations = 0;
+  double residual_norm = 0;  ///< ‖e‖ over the solved coordinates at the solution [N, N m]
+  double residual_max_active = 0;  ///< max |e| over all active coordinates (rotating ones included)
+  std::string residual_max_dof;    ///< where that maximum sits
+};
+
+struct EquilibriumOptions {
+  int max_iterations = 50;
+  double tolerance = 1e-10;  ///< on ‖e_solved‖ relative to the generalized gravity/centrifugal load scale
+};
+
+/// Starting point from the model: each coordinate at its value, each rate at its rate, q̈ = 0,
+/// inputs at their values.
+OperatingPoint initialPoint(const Model& model);
+
+/// Solves the equilibrium of the non-rotating active coordinates starting from `start`.
+/// Throws ComputeError naming the coordinate when K is singular or Newton does not converge.
+OperatingPoint solveOperatingPoint(const Model& model, const OperatingPoint& start, const EquilibriumOptions& opt = {});
+
+}  // namespace whirl

@@ -1,0 +1,28 @@
+#pragma once
+/// \file
+/// Root-to-leaf kinematics of the body tree (seed 000 §3.2–3.3, seed 001 eq. 1–3), written once
+/// for any scalar type T (double or ADChunk) and instantiated in kinematics.cpp.
+#include "src/dynamics/workspace.hpp"
+
+namespace whirl {
+
+/// Fills ws.basis (c, ċ, c̈, D of every body) and ws.frames (R, r, v, a, ω, ω̇, Jv, Jω of every body
+/// frame, ground components).
+/// \param[in] q, qd, qdd  all coordinates, frozen ones included (dim model.ndof())
+template <class T>
+void forwardKinematics(const Model& model, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T>& qd,
+                       const VecXT<T>& qdd);
+
+/// Rotation by angle phi about the unit axis n: R such that R v turns v about n.
+template <class T>
+Mat3T<T> axisRotation(const Vec3& n, const T& phi);
+
+/// Skew matrix: skew(a) b = a × b.
+template <class T>
+Mat3T<T> skew(const Vec3T<T>& a) {
+  Mat3T<T> s;
+  s << T(0), -a(2), a(1), a(2), T(0), -a(0), -a(1), a(0), T(0);
+  return s;
+}
+
+}  // namespace whirl

@@ -1,0 +1,18 @@
+#pragma once
+/// \file
+/// Generalized mass matrix assembled in double: M(q) = Σ_b Bᵀ M_b B (seed 000 eq. 8), with
+/// B = [Rᵀ Jv; Rᵀ Jω; E_b] mapping q̈ to the body-frame accelerations and the body's q̈_e, and M_b
+/// the body mass matrix from its shape integrals (seed 000 eq. 2, seed 001 A2–A7). Independent of
+/// the residual's q̈ path: tests check M = −∂e/∂q̈.
+#include "src/dynamics/workspace.hpp"
+
+namespace whirl {
+
+/// Body mass matrix (6 + ne square) at the body's basis state: rows/columns a', α', q̈_e.
+MatX bodyMassMatrix(const BodyInertia& inertia, const BasisState<double>& basis);
+
+/// \param[in]  q  all coordinates (dim model.ndof())
+/// \param[out] M  ndof × ndof, symmetric
+void massMatrix(const Model& model, Workspace<double>& ws, const VecX& q, MatX& M);
+
+}  // namespace whirl

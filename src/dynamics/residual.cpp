@@ -1,0 +1,18 @@
+// Explicit instantiation: the heavy templates compile once, for double and the AD chunk type.
+#include "src/dynamics/residual.hxx"
+#include "src/dynamics/scalar.hpp"
+
+namespace whirl {
+
+template struct Workspace<double>;
+template struct Workspace<ADChunk>;
+template void forwardKinematics<double>(const Model&, Workspace<double>&, const VecX&, const VecX&, const VecX&);
+template void forwardKinematics<ADChunk>(const Model&, Workspace<ADChunk>&, const VecXT<ADChunk>&,
+                                         const VecXT<ADChunk>&, const VecXT<ADChunk>&);
+template void residual<double>(const Model&, Workspace<double>&, const VecX&, const VecX&, const VecX&, const VecX&,
+                               VecX&);
+template void residual<ADChunk>(const Model&, Workspace<ADChunk>&, const VecXT<ADChunk>&, const VecXT<ADChunk>&,
+                                const VecXT<ADChunk>&, const VecXT<ADChunk>&, VecXT<ADChunk>&);
+template Mat3T<double> axisRotation<double>(const Vec3&, const double&);
+
+}  // namespace whirl

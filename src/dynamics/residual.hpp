@@ -1,0 +1,18 @@
+#pragma once
+/// \file
+/// The nonlinear equations of motion as a residual (seed 001 eq. 22):
+///   e(q, q̇, q̈, u) = F(q, q̇, u) − M(q) q̈ = f + f*   (Kane's method, seed 001 eq. 4–21)
+/// written once for any scalar T and instantiated for double and ADChunk in residual.cpp.
+#include "src/dynamics/workspace.hpp"
+
+namespace whirl {
+
+/// Evaluates e for every coordinate of the model (frozen ones included; callers drop those rows).
+/// \param[in]  q, qd, qdd  coordinates and their rates (dim model.ndof())
+/// \param[in]  u           inputs (dim model.ninput())
+/// \param[out] e           residual (dim model.ndof()) [N or N m]
+template <class T>
+void residual(const Model& model, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T>& qd, const VecXT<T>& qdd,
+              const VecXT<T>& u, VecXT<T>& e);
+
+}  // namespace whirl

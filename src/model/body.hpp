@@ -1,0 +1,52 @@
+#pragma once
+/// \file
+/// A body as whirl integrates it: a mass distribution with a Ritz basis.
+///
+/// Every point P of body i sits, in the body frame, at s_P = P(x) c, where
+///   c = [1; q_e; q_i q_j (i <= j)]   (dim nc)
+/// collects the constant, the ne elastic coordinates q_e and, when axial shortening is on, their
+/// pairwise products (the radial shortening of a bent beam, -1/2 ∫ ν·ν dx, as in ElastoDyn).
+/// All inertia terms of Kane's equations (seed 001 eq. 12–21, App. A) are bilinear in c, so the
+/// body carries only the shape integrals m1 = ∫ P dm and S_jl = ∫ P_jᵀ P_l dm (seed 000 App. A
+/// with the quadratic terms appended). A rigid body is the case ne = 0, nc = 1, P = [ρ].
+#include <array>
+#include <string>
+#include <vector>
+
+#include "src/model/types.hpp"
+
+namespace whirl {
+
+/// Shape integrals of one body (body frame, SI units).
+struct BodyInertia {
+  int ne = 0;              ///< number of elastic coordinates
+  bool quadratic = false;  ///< c holds the q_i q_j products (axial shortening)
+  double mass = 0.0;       ///< total mass [kg]
+  Mat3X m1;                ///< ∫ P dm, 3 × nc [kg m]
+  std::array<MatX, 9> S;   ///< S[3j+l] = ∫ P_jᵀ P_l dm, nc × nc [kg m²]
+
+  /// Length of c: 1 + ne (+ ne(ne+1)/2 when quadratic).
+  int nc() const { return 1 + ne + (quadratic ? ne * (ne + 1) / 2 : 0); }
+};
+
+/// A material point of a body that children or loads attach to.
+struct BodyPoint {
+  std::string name;
+  Mat3X P;      ///< position field, 3 × nc: s = P c (body frame)
+  Mat3X theta;  ///< small rotation angles about body x, y, z per elastic coordinate, 3 × ne
+};
+
+/// Elastic stiffness and damping of the elastic coordinates (ne × ne).
+struct ElasticProperties {
+  MatX K;  ///< [N/m] (or N m/rad for torsion shapes)
+  MatX D;  ///< [N s/m]
+};
+
+/// Rigid-body shape integrals: mass m, centre of gravity rho (body frame), inertia at the COG.
+BodyInertia rigidBodyInertia(double mass, const Vec3& rho, const Mat3& inertia_cog);
+
+/// Adds a point mass distribution (the whole of `other`) given in the same basis: used to merge
+/// contributions (e.g. beam sections and their rotary inertia) before a body is frozen.
+void addInertia(BodyInertia& into, const BodyInertia& other);
+
+}  // namespace whirl

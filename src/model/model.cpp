@@ -1,0 +1,281 @@
+#include "src/model/model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+#include <set>
+
+#include "src/model/error.hpp"
+
+namespace whirl {
+namespace {
+
+template <class V>
+std::optional<int> findByName(const V& items, const std::string& name) {
+  for (size_t i = 0; i < items.size(); ++i)
+    if (items[i].name == name) return static_cast<int>(i);
+  return std::nullopt;
+}
+
+bool allFinite(const MatX& m) { return m.allFinite(); }
+
+std::string bodyWhere(const Body& b, const std::string& what) { return "body '" + b.name + "': " + what; }
+
+// Depth of each body in the tree; throws on unknown parents and cycles.
+std::vector<int> depths(const std::vector<Body>& bodies) {
+  const int n = static_cast<int>(bodies.size());
+  std::vector<int> depth(n, -1);
+  for (int i = 0; i < n; ++i) {
+    int d = 0, j = i;
+    while (bodies[j].parent >= 0) {
+      if (bodies[j].parent >= n) throw InputError(bodyWhere(bodies[j], "parent index out of range"));
+      j = bodies[j].parent;
+      if (++d > n) throw InputError(bodyWhere(bodies[i], "the parent chain forms a loop"));
+    }
+    depth[i] = d;
+  }
+  return depth;
+}
+
+void checkInertia(const Body& b) {
+  const BodyInertia& in = b.inertia;
+  if (!std::isfinite(in.mass)) throw InputError(bodyWhere(b, "mass is not finite"));
+  if (in.mass < 0) throw InputError(bodyWhere(b, "negative mass " + std::to_string(in.mass) + " kg"));
+  if (in.m1.cols() != in.nc()) throw InputError(bodyWhere(b, "shape integrals have the wrong size"));
+  if (!allFinite(in.m1)) throw InputError(bodyWhere(b, "shape integrals are not finite (NaN in a property?)"));
+  for (const auto& s : in.S) {
+    if (s.rows() != in.nc() || s.cols() != in.nc()) throw InputError(bodyWhere(b, "shape integrals have the wrong size"));
+    if (!allFinite(s)) throw InputError(bodyWhere(b, "shape integrals are not finite (NaN in a property?)"));
+  }
+  // Second moment Θ = ∫ s sᵀ dm at q = 0 must be positive semi-definite (a physical mass distribution).
+  Mat3 theta;
+  for (int j = 0; j < 3; ++j)
+    for (int l = 0; l < 3; ++l) theta(j, l) = in.S[3 * j + l](0, 0);
+  const double scale = std::max(1.0, theta.trace());
+  if (Eigen::SelfAdjointEigenSolver<Mat3>(0.5 * (theta + theta.transpose())).eigenvalues().minCoeff() < -1e-9 * scale)
+    throw InputError(bodyWhere(b, "inertia is not positive semi-definite (check the inertia tensor: "
+                                  "each principal moment must not exceed the sum of the other two)"));
+  if (in.ne > 0) {
+    MatX mee = MatX::Zero(in.ne, in.ne);
+    for (int k = 0; k < 3; ++k) mee += in.S[4 * k].block(1, 1, in.ne, in.ne);
+    Eigen::LLT<MatX> llt(0.5 * (mee + mee.transpose()));
+    if (llt.info() != Eigen::Success)
+      throw InputError(bodyWhere(b, "elastic mass matrix is not positive definite (a shape function with no "
+                                    "mass, or two identical shapes)"));
+    if (b.elastic.K.rows() != in.ne || b.elastic.K.cols() != in.ne || b.elastic.D.rows() != in.ne ||
+        b.elastic.D.cols() != in.ne)
+      throw InputError(bodyWhere(b, "elastic stiffness/damping size differs from the number of shapes"));
+    if (!allFinite(b.elastic.K) || !allFinite(b.elastic.D))
+      throw InputError(bodyWhere(b, "elastic stiffness or damping is not finite"));
+  }
+  for (const auto& p : b.points) {
+    if (p.P.cols() != in.nc() || p.theta.cols() != in.ne)
+      throw InputError(bodyWhere(b, "point '" + p.name + "' has the wrong size"));
+    if (!allFinite(p.P) || !allFinite(p.theta)) throw InputError(bodyWhere(b, "point '" + p.name + "' is not finite"));
+  }
+}
+
+std::vector<ChainStep> buildChain(const Model& m, int i) {
+  const Body& b = m.bodies[i];
+  std::vector<ChainStep> steps;
+  if (b.parent >= 0 && b.parent_point >= 0) {
+    const Body& p = m.bodies[b.parent];
+    const BodyPoint& pt = p.points[b.parent_point];
+    if (!pt.P.isZero(0)) {
+      ChainStep s;
+      s.kind = ChainStep::PointTranslate;
+      s.body = b.parent;
+      s.point = b.parent_point;
+      steps.push_back(s);
+    }
+    // Small rotations of the point, applied in the order y, z, x (seed 000 §4.1: R_y R_z R_x).
+    for (int axis : {1, 2, 0}) {
+      if (p.inertia.ne == 0 || pt.theta.row(axis).isZero(0)) continue;
+      ChainStep s;
+      s.kind = ChainStep::ElasticRotate;
+      s.body = b.parent;
+      s.point = b.parent_point;
+      s.axis_index = axis;
+      steps.push_back(s);
+    }
+  }
+  if (!b.offset.isZero(0)) {
+    ChainStep s;
+    s.kind = ChainStep::ConstTranslate;
+    s.vec = b.offset;
+    steps.push_back(s);
+  }
+  if (!b.rotation.isIdentity(0)) {
+    ChainStep s;
+    s.kind = ChainStep::ConstRotate;
+    s.rot = b.rotation;
+    steps.push_back(s);
+  }
+  auto axisStep = [&](ChainStep::Kind kind, const Vec3& axis, int dof) {
+    ChainStep s;
+    s.kind = kind;
+    s.vec = axis;
+    s.dof = dof;
+    steps.push_back(s);
+  };
+  switch (b.joint) {
+    case JointType::Fixed: break;
+    case JointType::Revolute: axisStep(ChainStep::AxisRotate, b.axis, b.joint_dof); break;
+    case JointType::Prismatic: axisStep(ChainStep::AxisTranslate, b.axis, b.joint_dof); break;
+    case JointType::Free:
+      // Translations along the joint-frame axes, then yaw (z), pitch (y'), roll (x'').
+      for (int k = 0; k < 3; ++k) axisStep(ChainStep::AxisTranslate, Vec3::Unit(k), b.joint_dof + k);
+      axisStep(ChainStep::AxisRotate, Vec3::UnitZ(), b.joint_dof + 5);
+      axisStep(ChainStep::AxisRotate, Vec3::UnitY(), b.joint_dof + 4);
+      axisStep(ChainStep::AxisRotate, Vec3::UnitX(), b.joint_dof + 3);
+      break;
+  }
+  return steps;
+}
+
+}  // namespace
+
+int jointDofCount(JointType t) {
+  switch (t) {
+    case JointType::Fixed: return 0;
+    case JointType::Revolute: return 1;
+    case JointType::Prismatic: return 1;
+    case JointType::Free: return 6;
+  }
+  return 0;
+}
+
+std::optional<int> Model::findBody(const std::string& n) const { return findByName(bodies, n); }
+std::optional<int> Model::findDof(const std::string& n) const { return findByName(dofs, n); }
+std::optional<int> Model::findInput(const std::string& n) const { return findByName(inputs, n); }
+
+std::vector<int> Model::activeDofs() const {
+  std::vector<int> a;
+  for (int i = 0; i < ndof(); ++i)
+    if (!dofs[i].frozen) a.push_back(i);
+  return a;
+}
+
+void finalize(Model& m) {
+  const int nb = static_cast<int>(m.bodies.size());
+  {
+    std::set<std::string> names;
+    for (const auto& b : m.bodies) {
+      if (b.name.empty()) throw InputError("a body has no name");
+      if (!names.insert(b.name).second) throw InputError(bodyWhere(b, "name used twice"));
+    }
+  }
+  if (!m.gravity.allFinite()) throw InputError("gravity: not finite");
+
+  // Parents first, by depth; stable so that siblings keep the order they were given in.
+  const std::vector<int> depth = depths(m.bodies);
+  std::vector<int> order(nb);
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return depth[a] < depth[b]; });
+  std::vector<int> new_index(nb);
+  for (int k = 0; k < nb; ++k) new_index[order[k]] = k;
+  std::vector<Body> sorted;
+  sorted.reserve(nb);
+  for (int k = 0; k < nb; ++k) {
+    sorted.push_back(std::move(m.bodies[order[k]]));
+    if (sorted.back().parent >= 0) sorted.back().parent = new_index[sorted.back().parent];
+  }
+  m.bodies = std::move(sorted);
+  for (auto& d : m.dofs) {
+    if (d.body < 0 || d.body >= nb) throw InputError("DOF '" + d.name + "': no such body");
+    d.body = new_index[d.body];
+  }
+  auto remapBody = [&](int& b, const std::string& what) {
+    if (b < 0 || b >= nb) throw InputError(what + ": no such body");
+    b = new_index[b];
+  };
+  for (auto& l : m.point_loads) remapBody(l.body, "point load");
+  for (auto& l : m.body_matrices) remapBody(l.body, "body matrices");
+
+  // Number the DOFs body by body: joint coordinates, then elastic ones.
+  std::map<std::pair<int, std::pair<int, int>>, int> given;  // (body, (kind, local)) -> old index
+  for (int k = 0; k < m.ndof(); ++k) {
+    const Dof& d = m.dofs[k];
+    auto key = std::make_pair(d.body, std::make_pair(static_cast<int>(d.kind), d.local));
+    if (!given.emplace(key, k).second) throw InputError("DOF '" + d.name + "': defined twice");
+  }
+  std::vector<Dof> dofs;
+  std::vector<int> new_dof(m.ndof(), -1);
+  for (int i = 0; i < nb; ++i) {
+    Body& b = m.bodies[i];
+    checkInertia(b);
+    if (b.parent >= 0 && b.parent_point >= static_cast<int>(m.bodies[b.parent].points.size()))
+      throw InputError(bodyWhere(b, "parent point index out of range"));
+    if (b.parent < 0 && b.parent_point >= 0) throw InputError(bodyWhere(b, "a point on the ground is not allowed; use offset"));
+    if (b.joint == JointType::Revolute || b.joint == JointType::Prismatic) {
+      if (!b.axis.allFinite() || b.axis.norm() < 1e-12) throw InputError(bodyWhere(b, "joint axis is zero"));
+      b.axis.normalize();
+    }
+    if (!b.offset.allFinite() || !b.rotation.allFinite()) throw InputError(bodyWhere(b, "offset or rotation not finite"));
+    if ((b.rotation.transpose() * b.rotation - Mat3::Identity()).norm() > 1e-9)
+      throw InputError(bodyWhere(b, "rotation is not orthonormal"));
+    auto place = [&](DofKind kind, int local, const std::string& default_name) {
+      auto it = given.find({i, {static_cast<int>(kind), local}});
+      Dof d;
+      if (it != given.end()) {
+        d = m.dofs[it->second];
+        new_dof[it->second] = static_cast<int>(dofs.size());
+      } else {
+        d.name = default_name;
+        d.kind = kind;
+        d.local = local;
+      }
+      d.body = i;
+      if (!std::isfinite(d.value) || !std::isfinite(d.rate)) throw InputError("DOF '" + d.name + "': value not finite");
+      dofs.push_back(d);
+      return static_cast<int>(dofs.size()) - 1;
+    };
+    const int nj = jointDofCount(b.joint);
+    b.joint_dof = nj > 0 ? static_cast<int>(dofs.size()) : -1;
+    for (int k = 0; k < nj; ++k) place(DofKind::Joint, k, b.name + " joint " + std::to_string(k + 1));
+    b.elastic_dof = b.inertia.ne > 0 ? static_cast<int>(dofs.size()) : -1;
+    for (int k = 0; k < b.inertia.ne; ++k) place(DofKind::Elastic, k, b.name + " shape " + std::to_string(k + 1));
+  }
+  for (size_t k = 0; k < new_dof.size(); ++k)
+    if (new_dof[k] < 0) throw InputError("DOF '" + m.dofs[k].name + "': its body has no such coordinate");
+  m.dofs = std::move(dofs);
+  {
+    std::set<std::string> names;
+    for (const auto& d : m.dofs)
+      if (!names.insert(d.name).second) throw InputError("DOF '" + d.name + "': name used twice");
+  }
+  auto remapDof = [&](int& d, const std::string& what) {
+    if (d < 0 || d >= static_cast<int>(new_dof.size())) throw InputError(what + ": no such DOF");
+    d = new_dof[d];
+  };
+  for (auto& l : m.dof_loads) remapDof(l.dof, "DOF load");
+  for (auto& s : m.springs) remapDof(s.dof, "DOF spring");
+  for (const auto& bm : m.body_matrices)
+    if (m.bodies[bm.body].joint != JointType::Free)
+      throw InputError(bodyWhere(m.bodies[bm.body], "6x6 matrices need a free joint"));
+  for (const auto& l : m.point_loads) {
+    if (l.point >= static_cast<int>(m.bodies[l.body].points.size())) throw InputError("point load: no such point");
+    if (l.input >= m.ninput()) throw InputError("point load: no such input");
+  }
+  for (const auto& l : m.dof_loads)
+    if (l.input >= m.ninput()) throw InputError("DOF load: no such input");
+
+  m.chains.assign(nb, {});
+  m.support.assign(nb, {});
+  for (int i = 0; i < nb; ++i) {
+    m.chains[i] = buildChain(m, i);
+    const Body& b = m.bodies[i];
+    std::set<int> s;
+    if (b.parent >= 0) {
+      s.insert(m.support[b.parent].begin(), m.support[b.parent].end());
+      const Body& p = m.bodies[b.parent];
+      if (b.parent_point >= 0)
+        for (int k = 0; k < p.inertia.ne; ++k) s.insert(p.elastic_dof + k);
+    }
+    for (int k = 0; k < jointDofCount(b.joint); ++k) s.insert(b.joint_dof + k);
+    m.support[i].assign(s.begin(), s.end());
+  }
+}
+
+}  // namespace whirl

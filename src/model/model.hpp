@@ -1,0 +1,136 @@
+#pragma once
+/// \file
+/// The multibody model: a tree of bodies connected by joints, its generalized coordinates
+/// (DOFs), named inputs and loads. Plain data, validated once by finalize(), immutable afterwards.
+///
+/// Frames: the inertial frame is "ground"; each body has a frame B whose pose follows from its
+/// parent's frame through the attachment chain
+///   parent point (elastic displacement P c and small rotations θ = Θ q_e, applied y, z, x)
+///   → constant offset (attachment frame) → constant rotation → joint.
+/// DOF order (seed 000 §3.1): bodies by depth in the tree, for each body its joint coordinates
+/// then its elastic coordinates.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "src/model/body.hpp"
+#include "src/model/types.hpp"
+
+namespace whirl {
+
+enum class JointType { Fixed, Revolute, Prismatic, Free };
+enum class DofKind { Joint, Elastic };
+
+/// One generalized coordinate.
+struct Dof {
+  std::string name;
+  DofKind kind = DofKind::Joint;
+  int body = -1;        ///< body the coordinate belongs to
+  int local = 0;        ///< index within the joint (0..5) or the body's elastic coordinates
+  bool frozen = false;  ///< held at `value` (moving at `rate`): not a state of the linear model
+  double value = 0.0;   ///< initial guess, or the frozen value [m or rad]
+  double rate = 0.0;    ///< prescribed rate [m/s or rad/s]; e.g. the rotor speed of an azimuth
+  bool rotating = false;  ///< an azimuth: its position is given, not solved for equilibrium
+};
+
+/// One body and the joint that connects it to its parent.
+struct Body {
+  std::string name;
+  int parent = -1;        ///< index of the parent body, -1 = ground
+  int parent_point = -1;  ///< point of the parent the joint sits at, -1 = parent origin
+  Vec3 offset = Vec3::Zero();         ///< from the point to the joint, attachment frame [m]
+  Mat3 rotation = Mat3::Identity();   ///< attachment frame → joint frame (columns: joint axes)
+  JointType joint = JointType::Fixed;
+  Vec3 axis = Vec3::UnitX();          ///< revolute/prismatic axis, joint frame (unit)
+  int joint_dof = -1;     ///< index of the first joint coordinate (finalize)
+  int elastic_dof = -1;   ///< index of the first elastic coordinate (finalize)
+  BodyInertia inertia;
+  ElasticProperties elastic;
+  std::vector<BodyPoint> points;
+};
+
+/// A named input u (thrust, generator torque, ...): loads are scaled by it.
+struct Input {
+  std::string name;
+  double value = 0.0;  ///< operating-point value
+};
+
+/// Force and moment at a body point; if input >= 0 they are multiplied by u[input].
+struct PointLoad {
+  int body = -1;
+  int point = -1;           ///< -1 = body origin
+  Vec3 force = Vec3::Zero();   ///< [N]
+  Vec3 moment = Vec3::Zero();  ///< [N m]
+  bool body_frame = true;      ///< components in the body frame (follower) or ground frame
+  int input = -1;
+};
+
+/// Generalized force on one coordinate; if input >= 0 multiplied by u[input].
+struct DofLoad {
+  int dof = -1;
+  double value = 0.0;
+  int input = -1;
+};
+
+/// Linear spring and damper on one coordinate: −k (q − q0) − c q̇.
+struct DofSpring {
+  int dof = -1;
+  double k = 0.0, c = 0.0, q0 = 0.0;
+};
+
+/// Constant 6×6 stiffness, damping and added mass on the six coordinates of a free joint
+/// (surge, sway, heave, roll, pitch, yaw): −K (x − x0) − C ẋ − A ẍ, e.g. hydrostatics, mooring.
+struct BodyMatrices {
+  int body = -1;
+  Eigen::Matrix<double, 6, 6> K = Eigen::Matrix<double, 6, 6>::Zero();
+  Eigen::Matrix<double, 6, 6> C = Eigen::Matrix<double, 6, 6>::Zero();
+  Eigen::Matrix<double, 6, 6> A = Eigen::Matrix<double, 6, 6>::Zero();
+  Eigen::Matrix<double, 6, 1> x0 = Eigen::Matrix<double, 6, 1>::Zero();
+};
+
+/// One step of the kinematic chain from a parent frame to a child frame (built by finalize).
+struct ChainStep {
+  enum Kind { PointTranslate, ElasticRotate, ConstTranslate, ConstRotate, AxisRotate, AxisTranslate };
+  Kind kind = ConstTranslate;
+  int body = -1;   ///< PointTranslate/ElasticRotate: the parent body
+  int point = -1;  ///< PointTranslate/ElasticRotate: the parent point
+  int axis_index = 0;  ///< ElasticRotate: 0, 1, 2 for body x, y, z
+  Vec3 vec = Vec3::Zero();  ///< ConstTranslate: offset; Axis*: unit axis
+  Mat3 rot = Mat3::Identity();
+  int dof = -1;    ///< Axis*: the joint coordinate
+};
+
+struct Model {
+  std::string name;
+  Vec3 gravity = Vec3(0, 0, -9.80665);  ///< ground frame [m/s²]
+  std::vector<Body> bodies;              ///< parents before children (finalize sorts)
+  std::vector<Dof> dofs;
+  std::vector<Input> inputs;
+  std::vector<PointLoad> point_loads;
+  std::vector<DofLoad> dof_loads;
+  std::vector<DofSpring> springs;
+  std::vector<BodyMatrices> body_matrices;
+
+  // Derived by finalize().
+  std::vector<std::vector<ChainStep>> chains;  ///< per body
+  std::vector<std::vector<int>> support;       ///< per body: DOFs its frame depends on (sorted)
+
+  int ndof() const { return static_cast<int>(dofs.size()); }
+  int ninput() const { return static_cast<int>(inputs.size()); }
+  std::optional<int> findBody(const std::string& name) const;
+  std::optional<int> findDof(const std::string& name) const;
+  std::optional<int> findInput(const std::string& name) const;
+  /// Indices of the coordinates that are states of the linear model (not frozen).
+  std::vector<int> activeDofs() const;
+};
+
+/// Number of coordinates a joint type carries.
+int jointDofCount(JointType t);
+
+/// Orders bodies parents-first (by depth), numbers the DOFs (seed 000 §3.1), builds the chains and
+/// checks the data: names unique, parents and points exist, masses ≥ 0, inertia positive
+/// semi-definite, everything finite. Bodies must carry their DOFs in `dofs` with `body`/`local`
+/// set; DOFs are renumbered. Throws InputError naming the body/DOF and the reason.
+void finalize(Model& model);
+
+}  // namespace whirl

@@ -1,0 +1,226 @@
+#include "src/shapes/beam.hpp"
+
+#include <cmath>
+
+#include "src/model/error.hpp"
+
+namespace whirl {
+namespace {
+
+double interp(const VecX& x, const VecX& v, double xi) {
+  if (v.size() == 0) return 0.0;
+  const int n = static_cast<int>(x.size());
+  if (n == 1) return v(0);
+  int i = 0;
+  while (i < n - 2 && xi > x(i + 1)) ++i;
+  const double w = (xi - x(i)) / (x(i + 1) - x(i));
+  return (1 - w) * v(i) + w * v(i + 1);
+}
+
+// Nodes and weights of the chosen quadrature on [0, L].
+void quadrature(const BeamProperties& p, const BeamIntegration& q, VecX& x, VecX& w) {
+  const double L = p.length;
+  switch (q.method) {
+    case BeamIntegration::Stations: {
+      x = p.x;
+      const int n = static_cast<int>(x.size());
+      w = VecX::Zero(n);
+      for (int i = 0; i + 1 < n; ++i) {
+        const double h = x(i + 1) - x(i);
+        w(i) += h / 2;
+        w(i + 1) += h / 2;
+      }
+      return;
+    }
+    case BeamIntegration::Trapezoid: {
+      x = VecX::LinSpaced(q.n + 1, 0, L);
+      w = VecX::Constant(q.n + 1, L / q.n);
+      w(0) /= 2;
+      w(q.n) /= 2;
+      return;
+    }
+    case BeamIntegration::Midpoint: {
+      x.resize(q.n);
+      w = VecX::Constant(q.n, L / q.n);
+      for (int i = 0; i < q.n; ++i) x(i) = (i + 0.5) * L / q.n;
+      return;
+    }
+    case BeamIntegration::Gauss: {
+      // Golub–Welsch: nodes are eigenvalues of the Jacobi matrix of the Legendre recurrence.
+      const int n = q.n;
+      MatX J = MatX::Zero(n, n);
+      for (int i = 1; i < n; ++i) J(i, i - 1) = J(i - 1, i) = i / std::sqrt(4.0 * i * i - 1.0);
+      Eigen::SelfAdjointEigenSolver<MatX> es(J);
+      x = (es.eigenvalues().array() + 1.0) * (L / 2);
+      w = 2.0 * es.eigenvectors().row(0).transpose().array().square() * (L / 2);
+      return;
+    }
+  }
+}
+
+int pairIndex(int ne, int i, int j) {  // position of q_i q_j (i <= j) in c
+  int p = 1 + ne;
+  for (int a = 0; a < ne; ++a)
+    for (int b = a; b < ne; ++b, ++p)
+      if (a == i && b == j) return p;
+  return -1;
+}
+
+// Appends the axial-shortening columns −½ G_ii (i = j) and −G_ij (i < j) along x.
+void shorteningColumns(Mat3X& P, const MatX& G) {
+  const int ne = static_cast<int>(G.rows());
+  for (int i = 0; i < ne; ++i)
+    for (int j = i; j < ne; ++j) P(0, pairIndex(ne, i, j)) = (i == j ? -0.5 : -1.0) * G(i, j);
+}
+
+}  // namespace
+
+void validateBeam(const BeamProperties& p, const std::string& body) {
+  auto where = [&](const std::string& f, const std::string& why) { return "body '" + body + "': " + f + ": " + why; };
+  if (!(p.length > 0) || !std::isfinite(p.length)) throw InputError(where("length", "must be positive"));
+  const auto n = p.x.size();
+  if (n < 2) throw InputError(where("stations", "need at least 2"));
+  struct Col { const char* name; const VecX* v; bool required; };
+  const Col cols[] = {{"m", &p.m, true},         {"EIy", &p.EIy, true},     {"EIz", &p.EIz, true},
+                      {"GKt", &p.GKt, false},    {"jG", &p.jG, false},      {"twist", &p.twist, false},
+                      {"y0", &p.y0, false},      {"z0", &p.z0, false},      {"cgy", &p.cgy, false},
+                      {"cgz", &p.cgz, false},    {"x", &p.x, true}};
+  for (const Col& c : cols) {
+    if (c.v->size() == 0 && !c.required) continue;
+    if (c.v->size() != n) throw InputError(where(c.name, "has " + std::to_string(c.v->size()) + " values, stations have " + std::to_string(n)));
+    for (Eigen::Index i = 0; i < n; ++i)
+      if (!std::isfinite((*c.v)(i))) throw InputError(where(c.name, "value " + std::to_string(i + 1) + " is not a finite number"));
+  }
+  for (Eigen::Index i = 0; i < n; ++i) {
+    if (i > 0 && !(p.x(i) > p.x(i - 1))) throw InputError(where("x", "stations must increase"));
+    if (p.m(i) < 0) throw InputError(where("m", "negative mass per length at station " + std::to_string(i + 1)));
+    if (p.jG.size() && p.jG(i) < 0) throw InputError(where("jG", "negative inertia at station " + std::to_string(i + 1)));
+    if (!(p.EIy(i) > 0) || !(p.EIz(i) > 0)) throw InputError(where("EI", "bending stiffness must be positive at station " + std::to_string(i + 1)));
+    if (p.GKt.size() && p.GKt(i) < 0) throw InputError(where("GKt", "negative torsional stiffness"));
+  }
+  if (std::abs(p.x(0)) > 1e-9 * p.length || std::abs(p.x(n - 1) - p.length) > 1e-9 * p.length)
+    throw InputError(where("x", "stations must run from 0 to the length"));
+}
+
+MatX slopeProductIntegral(const std::vector<ShapePtr>& shapes, double x) {
+  const int ne = static_cast<int>(shapes.size());
+  MatX G = MatX::Zero(ne, ne);
+  if (x <= 0) return G;
+  // Composite Gauss (4 points per panel, 64 panels): exact for the polynomial shapes in use.
+  static const double gx[4] = {-0.8611363115940526, -0.3399810435848563, 0.3399810435848563, 0.8611363115940526};
+  static const double gw[4] = {0.3478548451374538, 0.6521451548625461, 0.6521451548625461, 0.3478548451374538};
+  const int panels = 64;
+  const double h = x / panels;
+  std::vector<ShapeValue> v(ne);
+  for (int p = 0; p < panels; ++p)
+    for (int k = 0; k < 4; ++k) {
+      const double xi = (p + 0.5) * h + 0.5 * h * gx[k];
+      for (int i = 0; i < ne; ++i) v[i] = shapes[i]->eval(xi);
+      for (int i = 0; i < ne; ++i)
+        for (int j = 0; j < ne; ++j) G(i, j) += 0.5 * h * gw[k] * (v[i].uy1 * v[j].uy1 + v[i].uz1 * v[j].uz1);
+    }
+  return G;
+}
+
+BeamBody buildBeamBody(const BeamProperties& p, const std::vector<ShapePtr>& shapes, const BeamOptions& opt,
+                       const std::string& body_name) {
+  validateBeam(p, body_name);
+  const int ne = static_cast<int>(shapes.size());
+  BeamBody out;
+  BodyInertia& in = out.inertia;
+  in.ne = ne;
+  in.quadratic = opt.axial_shortening && ne > 0;
+  const int nc = in.nc();
+  in.m1 = Mat3X::Zero(3, nc);
+  for (auto& s : in.S) s = MatX::Zero(nc, nc);
+  MatX K = MatX::Zero(ne, ne);
+
+  VecX xs, ws;
+  quadrature(p, opt.integration, xs, ws);
+  std::vector<ShapeValue> v(ne);
+  for (Eigen::Index k = 0; k < xs.size(); ++k) {
+    const double x = xs(k), w = ws(k);
+    const double m = interp(p.x, p.m, x), jG = interp(p.x, p.jG, x);
+    const double cgy = interp(p.x, p.cgy, x), cgz = interp(p.x, p.cgz, x);
+    for (int i = 0; i < ne; ++i) v[i] = shapes[i]->eval(x);
+    // Position field of the COG line (eq. 30 for the torsion-induced COG motion).
+    Mat3X P = Mat3X::Zero(3, nc);
+    P.col(0) << x, interp(p.x, p.y0, x) + cgy, interp(p.x, p.z0, x) + cgz;
+    for (int i = 0; i < ne; ++i) P.col(1 + i) << 0.0, v[i].uy - cgz * v[i].tx, v[i].uz + cgy * v[i].tx;
+    if (in.quadratic) shorteningColumns(P, slopeProductIntegral(shapes, x));
+    in.mass += w * m;
+    in.m1 += w * m * P;
+    for (int j = 0; j < 3; ++j)
+      for (int l = 0; l < 3; ++l) in.S[3 * j + l].noalias() += (w * m) * P.row(j).transpose() * P.row(l);
+    // Polar inertia of the section turning with the torsion (eq. 31): section points at (y, z)
+    // move by t_x (−z, y); with ∫y² = ∫z² = j_G/2 and ∫yz = 0 per unit length.
+    if (jG > 0) {
+      const double h = 0.5 * w * jG;
+      MatX& Syy = in.S[4];
+      MatX& Szz = in.S[8];
+      MatX& Syz = in.S[5];
+      MatX& Szy = in.S[7];
+      Syy(0, 0) += h;
+      Szz(0, 0) += h;
+      for (int i = 0; i < ne; ++i) {
+        Syz(0, 1 + i) += h * v[i].tx;
+        Syz(1 + i, 0) -= h * v[i].tx;
+        Szy(1 + i, 0) += h * v[i].tx;
+        Szy(0, 1 + i) -= h * v[i].tx;
+        for (int j = 0; j < ne; ++j) {
+          Syy(1 + i, 1 + j) += h * v[i].tx * v[j].tx;
+          Szz(1 + i, 1 + j) += h * v[i].tx * v[j].tx;
+        }
+      }
+    }
+    // Elastic stiffness (eq. 20): curvatures in the principal axes, rotated by the structural twist.
+    const double th = interp(p.x, p.twist, x), ct = std::cos(th), st = std::sin(th);
+    const double EIy = interp(p.x, p.EIy, x), EIz = interp(p.x, p.EIz, x), GK = interp(p.x, p.GKt, x);
+    for (int i = 0; i < ne; ++i) {
+      const double kyi = ct * v[i].uy2 + st * v[i].uz2, kzi = -st * v[i].uy2 + ct * v[i].uz2;
+      for (int j = 0; j < ne; ++j) {
+        const double kyj = ct * v[j].uy2 + st * v[j].uz2, kzj = -st * v[j].uy2 + ct * v[j].uz2;
+        K(i, j) += w * (EIy * kyi * kyj + EIz * kzi * kzj + GK * v[i].tx1 * v[j].tx1);
+      }
+    }
+  }
+  out.elastic.K = 0.5 * (K + K.transpose());
+  MatX Mee = MatX::Zero(ne, ne);
+  for (int k = 0; k < 3; ++k) Mee += in.S[4 * k].block(1, 1, ne, ne);
+  MatX D = MatX::Zero(ne, ne);
+  const BeamDamping& d = opt.damping;
+  switch (d.kind) {
+    case BeamDamping::None: break;
+    case BeamDamping::ModalRatio:
+      if (static_cast<int>(d.ratio.size()) != ne)
+        throw InputError("body '" + body_name + "': damping: one ratio per shape needed (" + std::to_string(ne) + ")");
+      for (int i = 0; i < ne; ++i) D(i, i) = 2 * d.ratio[i] * std::sqrt(out.elastic.K(i, i) * Mee(i, i));
+      break;
+    case BeamDamping::StiffnessProportional: D = d.beta * out.elastic.K; break;
+    case BeamDamping::Rayleigh: D = d.alpha * Mee + d.beta * out.elastic.K; break;
+  }
+  out.elastic.D = D;
+  return out;
+}
+
+BodyPoint beamPoint(const BeamProperties& p, const std::vector<ShapePtr>& shapes, bool axial_shortening, double x,
+                    std::string name) {
+  const int ne = static_cast<int>(shapes.size());
+  BodyInertia tmp;
+  tmp.ne = ne;
+  tmp.quadratic = axial_shortening && ne > 0;
+  BodyPoint pt;
+  pt.name = std::move(name);
+  pt.P = Mat3X::Zero(3, tmp.nc());
+  pt.theta = Mat3X::Zero(3, ne);
+  pt.P.col(0) << x, interp(p.x, p.y0, x), interp(p.x, p.z0, x);
+  for (int i = 0; i < ne; ++i) {
+    const ShapeValue v = shapes[i]->eval(x);
+    pt.P.col(1 + i) << 0.0, v.uy, v.uz;
+    pt.theta.col(i) << v.tx, -v.uz1, v.uy1;
+  }
+  if (tmp.quadratic) shorteningColumns(pt.P, slopeProductIntegral(shapes, x));
+  return pt;
+}
+
+}  // namespace whirl
