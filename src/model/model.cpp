@@ -48,14 +48,17 @@ void checkInertia(const Body& b) {
     if (s.rows() != in.nc() || s.cols() != in.nc()) throw InputError(bodyWhere(b, "shape integrals have the wrong size"));
     if (!allFinite(s)) throw InputError(bodyWhere(b, "shape integrals are not finite (NaN in a property?)"));
   }
-  // Second moment Θ = ∫ s sᵀ dm at q = 0 must be positive semi-definite (a physical mass distribution).
+  // The rigid-body mass matrix [[m 1, −m ρ̃], [m ρ̃, J_O]] is positive semi-definite iff the inertia
+  // tensor at the COG is (J_O from the second moment Θ: J = tr(Θ) 1 − Θ; parallel-axis shift to G).
   Mat3 theta;
   for (int j = 0; j < 3; ++j)
     for (int l = 0; l < 3; ++l) theta(j, l) = in.S[3 * j + l](0, 0);
-  const double scale = std::max(1.0, theta.trace());
-  if (Eigen::SelfAdjointEigenSolver<Mat3>(0.5 * (theta + theta.transpose())).eigenvalues().minCoeff() < -1e-9 * scale)
-    throw InputError(bodyWhere(b, "inertia is not positive semi-definite (check the inertia tensor: "
-                                  "each principal moment must not exceed the sum of the other two)"));
+  const Mat3 J_O = theta.trace() * Mat3::Identity() - theta;
+  const Vec3 rho = in.mass > 0 ? Vec3(in.m1.col(0) / in.mass) : Vec3::Zero();
+  const Mat3 J_G = J_O - in.mass * (rho.squaredNorm() * Mat3::Identity() - rho * rho.transpose());
+  const double scale = std::max(1.0, J_G.cwiseAbs().maxCoeff());
+  if (Eigen::SelfAdjointEigenSolver<Mat3>(0.5 * (J_G + J_G.transpose())).eigenvalues().minCoeff() < -1e-9 * scale)
+    throw InputError(bodyWhere(b, "inertia tensor at the COG is not positive semi-definite"));
   if (in.ne > 0) {
     MatX mee = MatX::Zero(in.ne, in.ne);
     for (int k = 0; k < 3; ++k) mee += in.S[4 * k].block(1, 1, in.ne, in.ne);

@@ -32,22 +32,23 @@ class DirectedShape : public Shape {
 
 class Polynomial : public DirectedShape {
  public:
-  Polynomial(double L, std::vector<double> a, double dy, double dz) : DirectedShape(dy, dz), L_(L), a_(std::move(a)) {}
+  Polynomial(double L, std::vector<double> a, double dy, double dz, double x0)
+      : DirectedShape(dy, dz), L_(L), x0_(x0), a_(std::move(a)) {}
 
  protected:
   void profile(double x, double& f, double& f1, double& f2) const override {
-    const double s = x / L_;
+    const double s = (x + x0_) / L_;
     f = f1 = f2 = 0;
     for (size_t k = 0; k < a_.size(); ++k) {
       const double kk = static_cast<double>(k);
-      f += a_[k] * std::pow(s, kk);
-      if (k >= 1) f1 += a_[k] * kk * std::pow(s, kk - 1) / L_;
-      if (k >= 2) f2 += a_[k] * kk * (kk - 1) * std::pow(s, kk - 2) / (L_ * L_);
+      f += a_[k] * (k == 0 ? 1.0 : std::pow(s, kk));
+      if (k >= 1) f1 += a_[k] * kk * (k == 1 ? 1.0 : std::pow(s, kk - 1)) / L_;
+      if (k >= 2) f2 += a_[k] * kk * (kk - 1) * (k == 2 ? 1.0 : std::pow(s, kk - 2)) / (L_ * L_);
     }
   }
 
  private:
-  double L_;
+  double L_, x0_;
   std::vector<double> a_;
 };
 
@@ -156,11 +157,12 @@ void checkLength(const std::string& name, double L) {
 
 }  // namespace
 
-ShapePtr polynomialShape(std::string name, double L, std::vector<double> a, double dy, double dz) {
+ShapePtr polynomialShape(std::string name, double L, std::vector<double> a, double dy, double dz, double x0) {
   checkLength(name, L);
   for (double c : a)
     if (!std::isfinite(c)) throw InputError("shape '" + name + "': polynomial coefficient is not finite");
-  return make<Polynomial>(std::move(name), L, std::move(a), dy, dz);
+  if (!std::isfinite(x0)) throw InputError("shape '" + name + "': polynomial offset is not finite");
+  return make<Polynomial>(std::move(name), L, std::move(a), dy, dz, x0);
 }
 
 ShapePtr oneMinusCosShape(std::string name, double L, double dy, double dz) {

@@ -26,9 +26,12 @@ class Shape {
 };
 using ShapePtr = std::shared_ptr<const Shape>;
 
-/// u = Σ_k a_k (x/L)^k along the unit direction (dy, dz) (ElastoDyn mode-shape polynomials use
-/// k = 2..6 with Σ a_k = 1). powers[k] is the coefficient of (x/L)^k.
-ShapePtr polynomialShape(std::string name, double length, std::vector<double> powers, double dy, double dz);
+/// u = Σ_k a_k ((x + x0)/L)^k along the unit direction (dy, dz) (ElastoDyn mode-shape polynomials use
+/// k = 2..6 with Σ a_k = 1 and x0 = 0). powers[k] is the coefficient of the k-th power. x0 ≠ 0
+/// evaluates the polynomial from another origin (YAMS evaluates blade shapes at r/TipRad, r measured
+/// from the rotor centre, for a blade starting at the hub radius x0).
+ShapePtr polynomialShape(std::string name, double length, std::vector<double> powers, double dy, double dz,
+                         double x0 = 0.0);
 
 /// u = 1 − cos(π x / 2L) along (dy, dz): the massless beam with top mass (seed 000 §5.1).
 ShapePtr oneMinusCosShape(std::string name, double length, double dy, double dz);

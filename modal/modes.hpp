@@ -1,0 +1,34 @@
+#pragma once
+/// \file
+/// Modes of a linear second-order model M q̈ + C q̇ + K q = 0: frequency, damped frequency, damping
+/// ratio, shape, and a name from the dominant coordinates.
+///
+/// Eigenvalues come from the generalized 2n pencil (modal/eigen.hpp, no M⁻¹). A complex pair
+/// (λ, λ̄) is one mode: f = |λ|/2π, f_d = |Im λ|/2π, ζ = −Re λ/|λ|. Real roots are paired, smallest
+/// first, into one mode each: f = √(λ₁λ₂)/2π, ζ = −(λ₁+λ₂)/(2√(λ₁λ₂)) (> 1: overdamped); a pair
+/// with a zero root is a rigid-body mode (f = 0, ζ = 0), e.g. a free azimuth or a free yaw.
+#include <string>
+#include <vector>
+
+#include "src/model/types.hpp"
+
+namespace whirl {
+
+struct Mode {
+  double freq_hz = 0;         ///< undamped natural frequency
+  double damped_freq_hz = 0;  ///< |Im λ|/2π
+  double damping_ratio = 0;
+  bool rigid_body = false;
+  std::string name;            ///< from the dominant coordinates
+  Eigen::VectorXcd shape;      ///< coordinate part of the eigenvector, dim n, largest entry = 1
+  VecX participation;          ///< energy share per coordinate |φ_i|² M_ii / Σ, sums to 1
+};
+
+/// Modes sorted by frequency. names: one per coordinate (dim n).
+std::vector<Mode> computeModes(const MatX& M, const MatX& C, const MatX& K, const std::vector<std::string>& names);
+
+/// Name from participations: the dominant coordinate, joined by " / " with the next ones that
+/// carry at least half of its share.
+std::string nameFromParticipation(const VecX& participation, const std::vector<std::string>& names);
+
+}  // namespace whirl

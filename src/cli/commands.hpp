@@ -1,0 +1,11 @@
+#pragma once
+/// \file
+/// The subcommands of `whirl`, each registered by one function.
+namespace CLI {
+class App;
+}
+
+namespace whirl::cli {
+void addLinearizeCommand(CLI::App& app);
+void addModesCommand(CLI::App& app);
+}  // namespace whirl::cli

@@ -1,0 +1,36 @@
+#pragma once
+/// \file
+/// What the subcommands share: loading a model from a case path with overrides and a rotor speed,
+/// and output folders.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "src/model/model.hpp"
+
+namespace CLI {
+class App;
+}
+
+namespace whirl::cli {
+
+/// Options every model-taking subcommand accepts.
+struct ModelOptions {
+  std::string case_path;
+  std::vector<std::string> sets;  ///< "key=value"
+  std::optional<double> rpm;
+};
+
+/// Registers CASE, --set and --rpm on a subcommand.
+void addModelOptions(CLI::App& cmd, ModelOptions& opt);
+
+/// Loads the case (YAML case file), applies --set, then --rpm to every rotating coordinate.
+Model loadModel(const ModelOptions& opt);
+
+/// Sets the rate of every rotating coordinate to rpm; InputError when the model has none.
+void setRotorSpeed(Model& model, double rpm);
+
+/// reports/<case file stem>, the default output folder of a case.
+std::string defaultOutputFolder(const std::string& case_path);
+
+}  // namespace whirl::cli

@@ -1,0 +1,47 @@
+#include "src/io/atomic_file.hpp"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+#include "src/model/error.hpp"
+
+namespace whirl {
+
+namespace fs = std::filesystem;
+
+void ensureWritableFolder(const std::string& folder) {
+  std::error_code ec;
+  if (!folder.empty()) fs::create_directories(folder, ec);
+  if (ec) throw InputError(folder + ": cannot create the output folder (" + ec.message() + ")");
+  const std::string dir = folder.empty() ? "." : folder;
+  if (::access(dir.c_str(), W_OK) != 0) throw InputError(dir + ": output folder is not writable");
+}
+
+void writeFileAtomic(const std::string& path, const std::string& content) {
+  const fs::path target(path);
+  ensureWritableFolder(target.parent_path().string());
+  const std::string tmp = path + ".tmp" + std::to_string(::getpid());
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    if (!out) throw InputError(path + ": cannot write (" + std::strerror(errno) + ")");
+    out << content;
+    out.flush();
+    if (!out) {
+      std::remove(tmp.c_str());
+      throw InputError(path + ": write failed (disk full?)");
+    }
+  }
+  std::error_code ec;
+  fs::rename(tmp, target, ec);
+  if (ec) {
+    std::remove(tmp.c_str());
+    throw InputError(path + ": cannot rename the temporary file into place (" + ec.message() + ")");
+  }
+}
+
+}  // namespace whirl
