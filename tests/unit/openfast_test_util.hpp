@@ -67,6 +67,18 @@ inline std::string replace_once(std::string text, const std::string& from, const
   return text;
 }
 
+/// Removes the whole line that contains `fragment` (the test fails when it is absent).
+inline std::string remove_line(std::string text, const std::string& fragment) {
+  const std::size_t at = text.find(fragment);
+  EXPECT_NE(at, std::string::npos) << "'" << fragment << "' not found";
+  if (at == std::string::npos) return text;
+  const std::size_t b = text.rfind('\n', at);
+  const std::size_t e = text.find('\n', at);
+  const std::size_t from = b == std::string::npos ? 0 : b + 1;
+  text.erase(from, e == std::string::npos ? std::string::npos : e - from + 1);
+  return text;
+}
+
 /// Runs `f`, expects an InputError, and returns its message ("" when nothing was thrown).
 template <class F>
 std::string input_error_message(F&& f) {
