@@ -33,9 +33,9 @@ void throw_if_any(const std::vector<std::string>& issues) {
 
 std::vector<std::string> unsupported_options(const FstInput& fst) {
   Refusals r(fst.source);
-  r.add_if(fst.CompElast == 2, "CompElast", "BeamDyn blades are not modelled; set CompElast = 1 to use the ElastoDyn blade files");
+  r.add_if(fst.CompElast == 2, "CompElast", "BeamDyn blades are not modelled, CompElast = 1 uses the ElastoDyn blade files");
   r.add_if(fst.CompElast != 1 && fst.CompElast != 2, "CompElast", "only ElastoDyn (CompElast = 1) is modelled");
-  r.add_if(fst.CompSub != 0, "CompSub", "a flexible substructure is not modelled; the tower base is clamped");
+  r.add_if(fst.CompSub != 0, "CompSub", "a flexible substructure is not modelled, the tower base is clamped");
   r.add_if(fst.MHK.value_or(0) != 0, "MHK", "marine turbines need buoyancy and added mass, not modelled");
   r.add_if(fst.NRotors.value_or(1) != 1, "NRotors", "only single-rotor turbines are modelled");
   return r.take();
@@ -49,7 +49,7 @@ std::vector<std::string> unsupported_options(const ElastoDynInput& ed) {
   r.add_if(ed.Furling, "Furling", "rotor and tail furl are not modelled");
   r.add_if(d.PitchDOF.value_or(false), "PitchDOF", "blade pitch flexibility is not modelled");
   r.add_if(ed.YawFrctMod.value_or(0) != 0, "YawFrctMod", "yaw-bearing friction is not smooth and cannot be linearized");
-  const char* platform = "platform DOFs are not modelled (no hydrostatics or mooring); the tower base is clamped";
+  const char* platform = "platform DOFs are not modelled: no hydrostatics or mooring, the tower base is clamped";
   r.add_if(d.PtfmSgDOF, "PtfmSgDOF", platform);
   r.add_if(d.PtfmSwDOF, "PtfmSwDOF", platform);
   r.add_if(d.PtfmHvDOF, "PtfmHvDOF", platform);
