@@ -31,6 +31,8 @@ struct ElastoDynBlade {
   /// >= 0; FlpStff, EdgStff (N·m²) > 0. PitchAxis (-, chord fraction) is in v1–v3 files, AeroCent in
   /// older ones, neither from OpenFAST v4 on: see pitch_axis(). Other columns (GJStff, EAStff, FlpIner,
   /// EdgIner, PrecrvRef, PreswpRef, FlpcgOf, EdgcgOf, FlpEAOf, EdgEAOf …) are kept as read.
+  /// Values are as written: ElastoDyn multiplies BMassDen by AdjBlMs, FlpStff by AdjFlSt and EdgStff by
+  /// AdjEdSt, and the flap modal stiffnesses by FlStTunr; the model builder must do the same.
   DistributedTable distributed;
 
   ModeShapeCoeffs BldFl1Sh{};  ///< flap mode 1, coefficients of x^2..x^6 (-)

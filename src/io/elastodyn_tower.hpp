@@ -30,6 +30,8 @@ struct ElastoDynTower {
   /// flexible tower height, 0 → 1 increasing; TMassDen (kg/m) >= 0; TwFAStif, TwSSStif (N·m²) > 0.
   /// Other columns of older/longer layouts are kept as read (e.g. TwGJStif, TwEAStif (N·m², N),
   /// TwFAIner, TwSSIner (kg·m), TwFAcgOf, TwSScgOf (m)); ElastoDyn does not use them.
+  /// Values are as written: ElastoDyn multiplies TMassDen by AdjTwMa, TwFAStif by AdjFASt and TwSSStif
+  /// by AdjSSSt, and the modal stiffnesses by FAStTunr/SSStTunr; the model builder must do the same.
   DistributedTable distributed;
 
   ModeShapeCoeffs TwFAM1Sh{};  ///< fore-aft mode 1, coefficients of x^2..x^6 (-)
