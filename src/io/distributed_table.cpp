@@ -1,0 +1,123 @@
+#include "src/io/distributed_table.hpp"
+
+#include <cmath>
+
+#include "src/io/elastodyn_common.hpp"
+#include "src/model/error.hpp"
+
+namespace whirl::io {
+namespace {
+
+std::string joined(const std::vector<std::string>& names) {
+  std::string s;
+  for (const std::string& n : names) s += (s.empty() ? "" : " ") + n;
+  return s;
+}
+
+int index_of(const DistributedTable& t, std::string_view name) {
+  const std::string n = to_lower(name);
+  for (std::size_t i = 0; i < t.names.size(); ++i)
+    if (to_lower(t.names[i]) == n) return static_cast<int>(i);
+  return -1;
+}
+
+/// The column's name as written in the file (for messages).
+std::string written_name(const DistributedTable& t, std::string_view name) {
+  const int i = index_of(t, name);
+  return i < 0 ? std::string(name) : t.names[static_cast<std::size_t>(i)];
+}
+
+}  // namespace
+
+const std::vector<double>* DistributedTable::find(std::string_view name) const {
+  const int i = index_of(*this, name);
+  return i < 0 ? nullptr : &values[static_cast<std::size_t>(i)];
+}
+
+const std::vector<double>& DistributedTable::column(std::string_view name) const {
+  if (const std::vector<double>* c = find(name)) return *c;
+  throw InputError(where(file, 0, std::string(name), "no such column (columns: " + joined(names) + ")"));
+}
+
+DistributedTable read_distributed_table(const OpenFastFile& f, std::string_view count_key,
+                                        std::string_view first_column,
+                                        std::initializer_list<std::string_view> required) {
+  const std::string file = f.path().string();
+  const std::string key(count_key);
+  const int count = f.get_int(count_key);
+  if (count < 2) throw InputError(f.where(count_key, "must be at least 2 (stations from 0 to 1), is " +
+                                                         std::to_string(count)));
+  const OpenFastTable* tab = f.find_table(first_column);
+  if (!tab)
+    throw InputError(f.where(count_key, "no table with a '" + std::string(first_column) +
+                                            "' column found (truncated file?)"));
+  const int rows = static_cast<int>(tab->rows.size());
+  if (rows < count) {
+    const std::string at = tab->ends_at_eof ? "the file ends" : "line " + std::to_string(tab->end_line) +
+                                                                    " is not a row of numbers";
+    throw InputError(where(file, tab->end_line, key,
+                           "table has " + std::to_string(rows) + " rows, " + std::to_string(count) +
+                               " expected: " + at + " (truncated table?)"));
+  }
+  if (rows > count)
+    throw InputError(where(file, tab->row_lines[static_cast<std::size_t>(count)], key,
+                           "table has " + std::to_string(rows) + " rows, only " + std::to_string(count) +
+                               " expected"));
+
+  DistributedTable t;
+  t.file = file;
+  t.names = tab->columns;
+  t.row_lines = tab->row_lines;
+  t.values.assign(t.names.size(), std::vector<double>(static_cast<std::size_t>(rows)));
+  for (std::size_t c = 0; c < t.names.size(); ++c) t.units.push_back(c < tab->units.size() ? tab->units[c] : "");
+  for (std::size_t r = 0; r < tab->rows.size(); ++r) {
+    const std::vector<double>& row = tab->rows[r];
+    if (row.size() != t.names.size())
+      throw InputError(where(file, tab->row_lines[r], "",
+                             "row has " + std::to_string(row.size()) + " numbers, the table has " +
+                                 std::to_string(t.names.size()) + " columns (" + joined(t.names) + ")"));
+    for (std::size_t c = 0; c < row.size(); ++c) {
+      if (!std::isfinite(row[c]))
+        throw InputError(where(file, tab->row_lines[r], t.names[c],
+                               std::isnan(row[c]) ? "value is NaN" : "value is infinite"));
+      t.values[c][r] = row[c];
+    }
+  }
+  for (std::string_view name : required)
+    if (!t.has(name))
+      throw InputError(where(file, tab->header_line, std::string(name),
+                             "column missing from the table (columns: " + joined(t.names) + ")"));
+  return t;
+}
+
+void require_fraction_column(const DistributedTable& t, std::string_view name) {
+  const std::vector<double>& x = t.column(name);
+  const std::string n = written_name(t, name);
+  if (x.front() != 0.0)
+    throw InputError(where(t.file, t.row_lines.front(), n, "must start at 0 (is " + number_text(x.front()) + ")"));
+  for (std::size_t r = 1; r < x.size(); ++r)
+    if (!(x[r] > x[r - 1]))
+      throw InputError(where(t.file, t.row_lines[r], n,
+                             "must increase from station to station (" + number_text(x[r]) + " after " +
+                                 number_text(x[r - 1]) + ")"));
+  if (x.back() != 1.0)
+    throw InputError(where(t.file, t.row_lines.back(), n, "must end at 1 (is " + number_text(x.back()) + ")"));
+}
+
+void require_nonnegative_column(const DistributedTable& t, std::string_view name) {
+  const std::vector<double>& v = t.column(name);
+  for (std::size_t r = 0; r < v.size(); ++r)
+    if (v[r] < 0.0)
+      throw InputError(where(t.file, t.row_lines[r], written_name(t, name),
+                             "must not be negative (is " + number_text(v[r]) + ")"));
+}
+
+void require_positive_column(const DistributedTable& t, std::string_view name) {
+  const std::vector<double>& v = t.column(name);
+  for (std::size_t r = 0; r < v.size(); ++r)
+    if (!(v[r] > 0.0))
+      throw InputError(where(t.file, t.row_lines[r], written_name(t, name),
+                             "must be positive (is " + number_text(v[r]) + ")"));
+}
+
+}  // namespace whirl::io

@@ -1,0 +1,50 @@
+#include "src/io/fst_input.hpp"
+
+#include "src/io/elastodyn_common.hpp"
+#include "src/io/openfast_overrides.hpp"
+#include "src/model/error.hpp"
+
+namespace whirl::io {
+namespace {
+
+/// An integer switch, or a FAST 8.0x True/False flag (1/0); `fallback` when the key is absent.
+int switch_or(const OpenFastFile& f, std::string_view key, int fallback) {
+  const OpenFastEntry* e = f.find(key);
+  if (!e) return fallback;
+  if (e->tokens.size() == 1 && !parse_fortran_double(e->tokens.front())) return f.get_bool(key) ? 1 : 0;
+  return f.get_int(key);
+}
+
+/// The path of the first of `keys` present in the file, or nullopt.
+std::optional<std::filesystem::path> path_of_first(const OpenFastFile& f, std::initializer_list<const char*> keys) {
+  for (const char* k : keys)
+    if (f.has(k)) return f.get_path(k);
+  return std::nullopt;
+}
+
+}  // namespace
+
+FstInput read_fst(const std::filesystem::path& file, OverrideSet* overrides) {
+  FstInput in;
+  in.source = OpenFastFile::read(file);
+  if (overrides) overrides->apply_to(in.source);
+  const OpenFastFile& f = in.source;
+
+  in.Gravity = f.find_double("Gravity");
+  if (in.Gravity) require_nonnegative(f, "Gravity", *in.Gravity);
+  in.CompElast = switch_or(f, "CompElast", 1);
+  in.CompInflow = switch_or(f, "CompInflow", 0);
+  in.CompAero = switch_or(f, "CompAero", 0);
+  in.CompServo = switch_or(f, "CompServo", 0);
+  in.CompHydro = switch_or(f, "CompHydro", 0);
+  in.CompSub = switch_or(f, "CompSub", 0);
+  in.CompMooring = switch_or(f, "CompMooring", 0);
+  in.MHK = f.find_int("MHK");
+  in.NRotors = f.find_int("NRotors");
+  in.EDFile = f.get_path("EDFile");
+  in.ServoFile = path_of_first(f, {"ServoFile", "SrvDFile"});
+  in.AeroFile = path_of_first(f, {"AeroFile", "ADFile"});
+  return in;
+}
+
+}  // namespace whirl::io

@@ -1,0 +1,351 @@
+#include "src/io/openfast_input.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+#include "src/model/error.hpp"
+
+namespace whirl::io {
+namespace {
+
+struct Token {
+  std::string text;
+  std::size_t begin = 0;  ///< offset in the line
+  std::size_t end = 0;    ///< one past the last character
+};
+
+bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
+bool is_alpha(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_'; }
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && is_blank(s.front())) s.remove_prefix(1);
+  while (!s.empty() && is_blank(s.back())) s.remove_suffix(1);
+  return s;
+}
+
+bool starts_with_ci(std::string_view s, std::string_view prefix) {
+  return s.size() >= prefix.size() && to_lower(s.substr(0, prefix.size())) == prefix;
+}
+
+/// Splits a line into tokens at blanks and commas; a token opening with a quote runs to the matching quote.
+std::vector<Token> tokenize(std::string_view line) {
+  std::vector<Token> out;
+  std::size_t i = 0;
+  while (i < line.size()) {
+    if (is_blank(line[i]) || line[i] == ',') {
+      ++i;
+      continue;
+    }
+    const std::size_t b = i;
+    if (line[i] == '"' || line[i] == '\'') {
+      const std::size_t close = line.find(line[i], i + 1);
+      i = close == std::string_view::npos ? line.size() : close + 1;
+    } else {
+      while (i < line.size() && !is_blank(line[i]) && line[i] != ',') ++i;
+    }
+    out.push_back({std::string(line.substr(b, i - b)), b, i});
+  }
+  return out;
+}
+
+bool is_quoted(std::string_view t) { return !t.empty() && (t.front() == '"' || t.front() == '\''); }
+
+std::string unquote(std::string_view t) {
+  if (!is_quoted(t)) return std::string(t);
+  t.remove_prefix(1);
+  if (!t.empty() && (t.back() == '"' || t.back() == '\'')) t.remove_suffix(1);
+  return std::string(t);
+}
+
+std::optional<bool> parse_bool(std::string_view t) {
+  const std::string s = to_lower(unquote(t));
+  if (s == "true" || s == "t" || s == ".true." || s == ".t.") return true;
+  if (s == "false" || s == "f" || s == ".false." || s == ".f.") return false;
+  return std::nullopt;
+}
+
+bool is_default(std::string_view t) { return to_lower(unquote(t)) == "default"; }
+
+/// A token that can be (part of) a value rather than a key.
+bool is_value_token(std::string_view t) {
+  return is_quoted(t) || parse_fortran_double(t).has_value() || parse_bool(t).has_value() || is_default(t);
+}
+
+/// A token that looks like a key or a column name: starts with a letter or '_'.
+bool is_identifier(std::string_view t) { return !t.empty() && is_alpha(t.front()); }
+
+bool is_separator(std::string_view trimmed) {
+  return trimmed.substr(0, 3) == "---" || trimmed.substr(0, 3) == "===";
+}
+
+bool is_number_row(const std::vector<Token>& toks) {
+  return !toks.empty() && std::all_of(toks.begin(), toks.end(), [](const Token& t) {
+           return parse_fortran_double(t.text).has_value();
+         });
+}
+
+bool is_table_header(const std::vector<Token>& toks) {
+  return toks.size() >= 2 && std::all_of(toks.begin(), toks.end(), [](const Token& t) {
+           return is_identifier(t.text) && !is_value_token(t.text);
+         });
+}
+
+/// "(-)  (kg/m)  (N m^2)" → {"(-)", "(kg/m)", "(N m^2)"}.
+std::vector<std::string> split_units(std::string_view line) {
+  std::vector<std::string> out;
+  std::size_t i = 0;
+  while ((i = line.find('(', i)) != std::string_view::npos) {
+    const std::size_t close = line.find(')', i);
+    const std::size_t end = close == std::string_view::npos ? line.size() : close + 1;
+    out.emplace_back(line.substr(i, end - i));
+    i = end;
+  }
+  return out;
+}
+
+std::vector<std::string_view> split_lines(std::string_view text) {
+  std::vector<std::string_view> lines;
+  std::size_t b = 0;
+  while (b < text.size()) {
+    std::size_t e = text.find('\n', b);
+    if (e == std::string_view::npos) e = text.size();
+    std::string_view l = text.substr(b, e - b);
+    if (!l.empty() && l.back() == '\r') l.remove_suffix(1);
+    lines.push_back(l);
+    b = e + 1;
+  }
+  return lines;
+}
+
+}  // namespace
+
+std::string to_lower(std::string_view s) {
+  std::string out(s);
+  for (char& c : out)
+    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+  return out;
+}
+
+std::optional<double> parse_fortran_double(std::string_view text) {
+  if (text.empty()) return std::nullopt;
+  std::string s(text);
+  if (s.front() == '+') s.erase(0, 1);
+  if (s.empty()) return std::nullopt;
+  const char c0 = s.front();
+  if ((c0 >= '0' && c0 <= '9') || c0 == '.' || c0 == '-')
+    std::replace_if(s.begin(), s.end(), [](char c) { return c == 'd' || c == 'D'; }, 'e');
+  double v = 0.0;
+  const auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (ec != std::errc() || ptr != s.data() + s.size()) return std::nullopt;
+  return v;
+}
+
+int OpenFastTable::column_index(std::string_view name) const {
+  const std::string n = to_lower(name);
+  for (std::size_t i = 0; i < columns.size(); ++i)
+    if (to_lower(columns[i]) == n) return static_cast<int>(i);
+  return -1;
+}
+
+OpenFastFile OpenFastFile::read(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in || std::filesystem::is_directory(file))
+    throw InputError(whirl::where(file.string(), 0, "", "cannot open file"));
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return parse(ss.str(), file);
+}
+
+OpenFastFile OpenFastFile::parse(std::string_view text, const std::filesystem::path& file) {
+  OpenFastFile f;
+  f.path_ = file;
+  const std::vector<std::string_view> lines = split_lines(text);
+  bool in_outlist = false;
+  bool title_seen = false;
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    const int lineno = static_cast<int>(i) + 1;
+    const std::string_view t = trim(lines[i]);
+    if (in_outlist) {
+      if (starts_with_ci(t, "end")) in_outlist = false;
+      continue;
+    }
+    if (t.empty() || is_separator(t)) continue;
+    if (!title_seen) {
+      title_seen = true;
+      if (lineno <= 3) {
+        f.title_ = std::string(t);
+        continue;
+      }
+    }
+    const std::vector<Token> toks = tokenize(lines[i]);
+    if (is_table_header(toks) && i + 1 < lines.size() && trim(lines[i + 1]).substr(0, 1) == "(") {
+      OpenFastTable tab;
+      tab.header_line = lineno;
+      for (const Token& tk : toks) tab.columns.push_back(tk.text);
+      tab.units = split_units(lines[i + 1]);
+      std::size_t r = i + 2;
+      for (; r < lines.size(); ++r) {
+        const std::vector<Token> row = tokenize(lines[r]);
+        if (!is_number_row(row)) break;
+        std::vector<double> values;
+        for (const Token& tk : row) values.push_back(*parse_fortran_double(tk.text));
+        tab.rows.push_back(std::move(values));
+        tab.row_lines.push_back(static_cast<int>(r) + 1);
+      }
+      tab.ends_at_eof = r >= lines.size();
+      tab.end_line = tab.ends_at_eof ? static_cast<int>(lines.size()) : static_cast<int>(r) + 1;
+      f.tables_.push_back(std::move(tab));
+      i = r - 1;
+      continue;
+    }
+    if (toks.empty()) continue;
+    // A key without a value, e.g. "OutList  - The next line(s) contains a list of output parameters".
+    if (is_identifier(toks[0].text) && (toks.size() == 1 || toks[1].text.front() == '-')) {
+      if (to_lower(toks[0].text) == "outlist") in_outlist = true;
+      continue;
+    }
+    // value tokens (the first always), then the key.
+    std::size_t k = 1;
+    while (k < toks.size() && is_value_token(toks[k].text)) ++k;
+    if (k >= toks.size() || !is_identifier(toks[k].text)) continue;  // no key: not a value line
+    OpenFastEntry e;
+    e.key = toks[k].text;
+    while (e.key.size() > 1 && e.key.back() == '-') e.key.pop_back();  // "Key- description"
+    e.raw = std::string(lines[i].substr(toks[0].begin, toks[k - 1].end - toks[0].begin));
+    for (std::size_t j = 0; j < k; ++j) e.tokens.push_back(toks[j].text);
+    e.line = lineno;
+    f.index_.emplace(to_lower(e.key), f.entries_.size());  // keeps the first of duplicated keys
+    f.entries_.push_back(std::move(e));
+  }
+  return f;
+}
+
+const OpenFastEntry* OpenFastFile::find(std::string_view key) const {
+  const auto it = index_.find(to_lower(key));
+  return it == index_.end() ? nullptr : &entries_[it->second];
+}
+
+const OpenFastEntry& OpenFastFile::require(std::string_view key) const {
+  const OpenFastEntry* e = find(key);
+  if (!e) throw InputError(whirl::where(path_.string(), 0, std::string(key), "key not found in this file"));
+  return *e;
+}
+
+std::string OpenFastFile::where(std::string_view key, const std::string& reason) const {
+  if (const OpenFastEntry* e = find(key)) return where(*e, reason);
+  return whirl::where(path_.string(), 0, std::string(key), reason);
+}
+
+std::string OpenFastFile::where(const OpenFastEntry& e, const std::string& reason) const {
+  return whirl::where(path_.string(), e.line, e.key, e.overridden ? reason + " (value set by override)" : reason);
+}
+
+std::string OpenFastFile::single_token(const OpenFastEntry& e, const char* what) const {
+  if (e.tokens.empty()) throw InputError(where(e, std::string("no value, expected ") + what));
+  if (e.tokens.size() > 1)
+    throw InputError(where(e, "expected one " + std::string(what) + ", found '" + e.raw + "'"));
+  return e.tokens.front();
+}
+
+namespace {
+double finite_or_throw(const OpenFastFile& f, std::string_view key, std::string_view tok) {
+  const std::optional<double> v = parse_fortran_double(tok);
+  if (!v) throw InputError(f.where(key, "'" + std::string(tok) + "' is not a number"));
+  if (std::isnan(*v)) throw InputError(f.where(key, "value is NaN"));
+  if (std::isinf(*v)) throw InputError(f.where(key, "value is infinite"));
+  return *v;
+}
+}  // namespace
+
+double OpenFastFile::get_double(std::string_view key) const {
+  return finite_or_throw(*this, key, single_token(require(key), "number"));
+}
+
+std::optional<double> OpenFastFile::get_double_or_default(std::string_view key) const {
+  const std::string tok = single_token(require(key), "number or \"default\"");
+  if (is_default(tok)) return std::nullopt;
+  return finite_or_throw(*this, key, tok);
+}
+
+int OpenFastFile::get_int(std::string_view key) const {
+  std::string tok = single_token(require(key), "integer");
+  const std::string shown = tok;
+  if (!tok.empty() && tok.front() == '+') tok.erase(0, 1);
+  long long v = 0;
+  const auto [ptr, ec] = std::from_chars(tok.data(), tok.data() + tok.size(), v);
+  if (ec != std::errc() || ptr != tok.data() + tok.size() || tok.empty())
+    throw InputError(where(key, "'" + shown + "' is not an integer"));
+  if (v < std::numeric_limits<int>::min() || v > std::numeric_limits<int>::max())
+    throw InputError(where(key, "'" + shown + "' is out of the integer range"));
+  return static_cast<int>(v);
+}
+
+bool OpenFastFile::get_bool(std::string_view key) const {
+  const std::string tok = single_token(require(key), "True/False flag");
+  const std::optional<bool> b = parse_bool(tok);
+  if (!b) throw InputError(where(key, "'" + tok + "' is not True or False"));
+  return *b;
+}
+
+std::string OpenFastFile::get_string(std::string_view key) const {
+  return unquote(single_token(require(key), "string"));
+}
+
+std::filesystem::path OpenFastFile::get_path(std::string_view key) const {
+  std::string s = get_string(key);
+  std::replace(s.begin(), s.end(), '\\', '/');
+  if (s.empty()) throw InputError(where(key, "empty file name"));
+  const std::filesystem::path p(s);
+  if (p.is_absolute()) return p.lexically_normal();
+  return (path_.parent_path() / p).lexically_normal();
+}
+
+std::filesystem::path OpenFastFile::get_existing_path(std::string_view key) const {
+  const std::filesystem::path p = get_path(key);
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(p, ec)) throw InputError(where(key, "file not found: " + p.string()));
+  return p;
+}
+
+std::vector<double> OpenFastFile::get_doubles(std::string_view key) const {
+  const OpenFastEntry& e = require(key);
+  if (e.tokens.empty()) throw InputError(where(e, "no value, expected a list of numbers"));
+  std::vector<double> out;
+  for (const std::string& tok : e.tokens) out.push_back(finite_or_throw(*this, key, tok));
+  return out;
+}
+
+std::optional<double> OpenFastFile::find_double(std::string_view key) const {
+  return has(key) ? std::optional<double>(get_double(key)) : std::nullopt;
+}
+
+std::optional<int> OpenFastFile::find_int(std::string_view key) const {
+  return has(key) ? std::optional<int>(get_int(key)) : std::nullopt;
+}
+
+std::optional<bool> OpenFastFile::find_bool(std::string_view key) const {
+  return has(key) ? std::optional<bool>(get_bool(key)) : std::nullopt;
+}
+
+const OpenFastTable* OpenFastFile::find_table(std::string_view column) const {
+  for (const OpenFastTable& t : tables_)
+    if (t.column_index(column) >= 0) return &t;
+  return nullptr;
+}
+
+void OpenFastFile::set_value(std::string_view key, const std::string& value) {
+  const auto it = index_.find(to_lower(key));
+  if (it == index_.end())
+    throw InputError(whirl::where(path_.string(), 0, std::string(key), "unknown key (not in this file)"));
+  OpenFastEntry& e = entries_[it->second];
+  e.raw = value;
+  e.tokens.clear();
+  for (const Token& t : tokenize(value)) e.tokens.push_back(t.text);
+  e.overridden = true;
+}
+
+}  // namespace whirl::io

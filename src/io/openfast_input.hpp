@@ -1,0 +1,118 @@
+#pragma once
+/// \file
+/// Generic reader for OpenFAST-style input files (`.fst`, ElastoDyn, ServoDyn, tower and blade files).
+///
+/// Such files are line based:
+/// - line 1 (and sometimes 2) is a header, the first non-separator line among the first three is the title;
+/// - separator lines start with `---` or `===`;
+/// - value lines read `value(s)  Key  - description`: the value comes first (a number, a quoted string,
+///   True/False in any case, `default`, or a list of numbers separated by blanks or commas), then the key;
+/// - an `OutList` line opens a block of output channel names that ends with a line starting with `END`
+///   (skipped: whirl does not use output lists);
+/// - a table is a header row of column names, a unit row of parenthesised units, then one row of numbers
+///   per line (the count is given by a key such as `NTwInpSt`; checking it is the typed reader's job).
+///
+/// Each key keeps its raw value and line number so that every error reads "file:line: key: reason".
+/// Keys are matched case-insensitively (as Fortran does). When a key appears twice (e.g. `EDFile` of a
+/// second rotor in OpenFAST v5), the first occurrence is the one returned and overridden.
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+namespace whirl::io {
+
+/// One `value  Key` line.
+struct OpenFastEntry {
+  std::string key;                  ///< key as written in the file, e.g. "BldFile(1)"
+  std::string raw;                  ///< value text as written (quotes kept), e.g. "\"blade.dat\"" or "10, 19, 28"
+  std::vector<std::string> tokens;  ///< value split into tokens (quotes kept on quoted tokens)
+  int line = 0;                     ///< 1-based line number in the file
+  bool overridden = false;          ///< true when the value came from an override (`--set KEY=VALUE`)
+};
+
+/// A table: header row of column names, unit row, rows of numbers.
+struct OpenFastTable {
+  std::vector<std::string> columns;       ///< column names as written
+  std::vector<std::string> units;         ///< units as written, e.g. "(kg/m)"; may be shorter than columns
+  int header_line = 0;                    ///< line of the column-name row
+  std::vector<std::vector<double>> rows;  ///< numbers as read (NaN/inf kept: validation reports them with the line)
+  std::vector<int> row_lines;             ///< line of each row
+  int end_line = 0;                       ///< first line after the table that is not a row (or last line + 1)
+  bool ends_at_eof = false;               ///< true when the file ended right after the last row
+
+  /// Index of a column by name, case-insensitive; -1 when absent.
+  int column_index(std::string_view name) const;
+};
+
+/// A parsed OpenFAST input file. Read-only apart from `set_value` (overrides).
+class OpenFastFile {
+ public:
+  /// Reads and tokenizes a file. Throws InputError("file: cannot open file") when it cannot be read.
+  static OpenFastFile read(const std::filesystem::path& file);
+  /// Tokenizes text; `file` is used for messages and to resolve relative paths.
+  static OpenFastFile parse(std::string_view text, const std::filesystem::path& file);
+
+  const std::filesystem::path& path() const { return path_; }
+  const std::string& title() const { return title_; }
+  const std::vector<OpenFastEntry>& entries() const { return entries_; }
+  const std::vector<OpenFastTable>& tables() const { return tables_; }
+
+  /// The entry of `key` (case-insensitive), or nullptr.
+  const OpenFastEntry* find(std::string_view key) const;
+  bool has(std::string_view key) const { return find(key) != nullptr; }
+
+  /// "file:line: key: reason" for `key` (line left out when the key is absent).
+  std::string where(std::string_view key, const std::string& reason) const;
+
+  // Typed getters. Each throws InputError naming file, line and key when the key is missing, when the
+  // value is not of the type asked for, or (numbers) when it is NaN or infinite.
+  double get_double(std::string_view key) const;
+  /// nullopt when the value is `default` (any case, quoted or not).
+  std::optional<double> get_double_or_default(std::string_view key) const;
+  int get_int(std::string_view key) const;
+  /// True/False, T/F, .true./.false. in any case.
+  bool get_bool(std::string_view key) const;
+  /// The value with its quotes removed.
+  std::string get_string(std::string_view key) const;
+  /// A file name, resolved against the folder of this file (backslashes read as '/').
+  std::filesystem::path get_path(std::string_view key) const;
+  /// Like get_path, but throws InputError("file:line: key: file not found: …") when it does not exist.
+  std::filesystem::path get_existing_path(std::string_view key) const;
+  /// All numbers of a list value such as `10, 19, 28`.
+  std::vector<double> get_doubles(std::string_view key) const;
+
+  // Optional variants: nullopt when the key is absent, same errors as above when it is present but bad.
+  std::optional<double> find_double(std::string_view key) const;
+  std::optional<int> find_int(std::string_view key) const;
+  std::optional<bool> find_bool(std::string_view key) const;
+
+  /// The first table that has a column `column` (case-insensitive), or nullptr.
+  const OpenFastTable* find_table(std::string_view column) const;
+
+  /// Replaces the value of an existing key (the `--set KEY=VALUE` override).
+  /// Throws InputError("file: key: unknown key") when the key is not in this file.
+  void set_value(std::string_view key, const std::string& value);
+
+ private:
+  const OpenFastEntry& require(std::string_view key) const;
+  std::string where(const OpenFastEntry& e, const std::string& reason) const;
+  std::string single_token(const OpenFastEntry& e, const char* what) const;
+
+  std::filesystem::path path_;
+  std::string title_;
+  std::vector<OpenFastEntry> entries_;
+  std::vector<OpenFastTable> tables_;
+  std::unordered_map<std::string, std::size_t> index_;  ///< lower-case key → first entry
+};
+
+/// Number parsing shared by the OpenFAST readers: accepts a leading '+' and Fortran 'D' exponents;
+/// nullopt unless the whole text is a number. NaN and inf are returned as such (callers reject them).
+std::optional<double> parse_fortran_double(std::string_view text);
+
+/// Lower-case copy (ASCII), for case-insensitive key and column names.
+std::string to_lower(std::string_view s);
+
+}  // namespace whirl::io

@@ -1,0 +1,71 @@
+#include "src/io/openfast_support.hpp"
+
+#include "src/model/error.hpp"
+
+namespace whirl::io {
+namespace {
+
+class Refusals {
+ public:
+  explicit Refusals(const OpenFastFile& f) : f_(f) {}
+  /// Adds "file:line: key: <raw value> not supported by whirl (reason)" when `refused`.
+  void add_if(bool refused, const char* key, const char* reason) {
+    if (!refused) return;
+    const OpenFastEntry* e = f_.find(key);
+    const std::string value = e ? e->raw : "?";
+    out_.push_back(f_.where(key, value + " not supported by whirl (" + reason + ")"));
+  }
+  std::vector<std::string> take() { return std::move(out_); }
+
+ private:
+  const OpenFastFile& f_;
+  std::vector<std::string> out_;
+};
+
+void throw_if_any(const std::vector<std::string>& issues) {
+  if (issues.empty()) return;
+  std::string msg;
+  for (const std::string& s : issues) msg += (msg.empty() ? "" : "; ") + s;
+  throw InputError(msg);
+}
+
+}  // namespace
+
+std::vector<std::string> unsupported_options(const FstInput& fst) {
+  Refusals r(fst.source);
+  r.add_if(fst.CompElast == 2, "CompElast", "BeamDyn blades are not modelled, CompElast = 1 uses the ElastoDyn blade files");
+  r.add_if(fst.CompElast != 1 && fst.CompElast != 2, "CompElast", "only ElastoDyn (CompElast = 1) is modelled");
+  r.add_if(fst.CompSub != 0, "CompSub", "a flexible substructure is not modelled, the tower base is clamped");
+  r.add_if(fst.MHK.value_or(0) != 0, "MHK", "marine turbines need buoyancy and added mass, not modelled");
+  r.add_if(fst.NRotors.value_or(1) != 1, "NRotors", "only single-rotor turbines are modelled");
+  return r.take();
+}
+
+std::vector<std::string> unsupported_options(const ElastoDynInput& ed) {
+  Refusals r(ed.source);
+  const ElastoDynDofs& d = ed.dof;
+  r.add_if(ed.config.NumBl != 3, "NumBl", "only 3-bladed rotors are modelled");
+  r.add_if(ed.config.NumBl != 3 && d.TeetDOF, "TeetDOF", "a teetering hub is not modelled");
+  r.add_if(ed.Furling, "Furling", "rotor and tail furl are not modelled");
+  r.add_if(d.PitchDOF.value_or(false), "PitchDOF", "blade pitch flexibility is not modelled");
+  r.add_if(ed.YawFrctMod.value_or(0) != 0, "YawFrctMod", "yaw-bearing friction is not smooth and cannot be linearized");
+  const char* platform = "platform DOFs are not modelled: no hydrostatics or mooring, the tower base is clamped";
+  r.add_if(d.PtfmSgDOF, "PtfmSgDOF", platform);
+  r.add_if(d.PtfmSwDOF, "PtfmSwDOF", platform);
+  r.add_if(d.PtfmHvDOF, "PtfmHvDOF", platform);
+  r.add_if(d.PtfmRDOF, "PtfmRDOF", platform);
+  r.add_if(d.PtfmPDOF, "PtfmPDOF", platform);
+  r.add_if(d.PtfmYDOF, "PtfmYDOF", platform);
+  r.add_if(ed.config.TwrRBHt.value_or(0.0) != 0.0, "TwrRBHt", "a rigid tower-base segment is not modelled");
+  return r.take();
+}
+
+void require_supported(const ElastoDynInput& ed) { throw_if_any(unsupported_options(ed)); }
+
+void require_supported(const OpenFastTurbine& turbine) {
+  std::vector<std::string> issues = unsupported_options(turbine.fst);
+  for (std::string& s : unsupported_options(turbine.elastodyn)) issues.push_back(std::move(s));
+  throw_if_any(issues);
+}
+
+}  // namespace whirl::io

@@ -1,0 +1,31 @@
+#pragma once
+/// \file
+/// What of an OpenFAST description whirl's structural model can represent: a clamped tower base, a
+/// flexible tower, a rigid nacelle on a yaw bearing, a drivetrain with a torsional spring, and three
+/// ElastoDyn blades. Anything else is refused here, explicitly, rather than ignored while building the
+/// model. Each message reads "file:line: key: value not supported by whirl (reason)".
+#include <string>
+#include <vector>
+
+#include "src/io/elastodyn_input.hpp"
+#include "src/io/fst_input.hpp"
+#include "src/io/openfast_turbine.hpp"
+
+namespace whirl::io {
+
+/// Options of the `.fst` whirl cannot model: CompElast != 1 (BeamDyn or Simplified-ElastoDyn blades),
+/// CompSub != 0 (flexible substructure), MHK != 0 (buoyancy, added mass), NRotors > 1.
+/// Load modules (aero, inflow, hydro, mooring, controls) are not listed: whirl's structural model leaves
+/// them out, and the platform DOFs they would act on are refused below.
+std::vector<std::string> unsupported_options(const FstInput& fst);
+
+/// Options of the ElastoDyn files whirl cannot model: NumBl != 3, TeetDOF with a 2-bladed rotor,
+/// Furling, PitchDOF (v5), YawFrctMod != 0 (yaw friction, not smooth), any platform DOF (no
+/// hydrostatics or mooring: the tower base is clamped), a rigid tower base TwrRBHt != 0 (v1.00).
+std::vector<std::string> unsupported_options(const ElastoDynInput& ed);
+
+/// Throws InputError listing every unsupported option ("; "-separated, first one first) when there is any.
+void require_supported(const ElastoDynInput& ed);
+void require_supported(const OpenFastTurbine& turbine);
+
+}  // namespace whirl::io

@@ -1,0 +1,28 @@
+#include "src/io/openfast_turbine.hpp"
+
+#include "src/model/error.hpp"
+
+namespace whirl::io {
+
+OpenFastTurbine read_openfast_turbine(const std::filesystem::path& fst, OverrideSet* overrides) {
+  OpenFastTurbine t;
+  t.fst = read_fst(fst, overrides);
+  t.elastodyn = read_elastodyn(t.fst.source.get_existing_path("EDFile"), overrides);
+  return t;
+}
+
+std::optional<ServoDynInput> read_servodyn_if_enabled(const FstInput& fst, OverrideSet* overrides) {
+  if (fst.CompServo == 0) return std::nullopt;
+  const OpenFastFile& f = fst.source;
+  const char* key = f.has("ServoFile") || !f.has("SrvDFile") ? "ServoFile" : "SrvDFile";
+  return read_servodyn(f.get_existing_path(key), overrides);
+}
+
+double gravity(const OpenFastTurbine& turbine) {
+  if (turbine.fst.Gravity) return *turbine.fst.Gravity;
+  if (turbine.elastodyn.Gravity) return *turbine.elastodyn.Gravity;
+  throw InputError(where(turbine.fst.source.path().string(), 0, "Gravity",
+                         "not in this file nor in " + turbine.elastodyn.source.path().string()));
+}
+
+}  // namespace whirl::io

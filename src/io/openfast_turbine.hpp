@@ -1,0 +1,36 @@
+#pragma once
+/// \file
+/// Reading a turbine from its OpenFAST `.fst` file: the `.fst`, then the ElastoDyn main, tower and blade
+/// files it names. ServoDyn is read separately and only on request (for the yaw spring), so a case whose
+/// ServoDyn file is absent still reads as long as nothing needs it.
+#include <filesystem>
+#include <optional>
+
+#include "src/io/elastodyn_input.hpp"
+#include "src/io/fst_input.hpp"
+#include "src/io/servodyn_input.hpp"
+
+namespace whirl::io {
+
+class OverrideSet;
+
+/// The structural inputs of a turbine as OpenFAST describes them.
+struct OpenFastTurbine {
+  FstInput fst;
+  ElastoDynInput elastodyn;
+};
+
+/// Reads `fst` and the ElastoDyn files it names. `overrides` (may be null) apply to every file read;
+/// call overrides->require_all_used() once all the files the run needs are read.
+/// Throws InputError naming file, line and key, e.g. "a.fst:33: EDFile: file not found: …".
+OpenFastTurbine read_openfast_turbine(const std::filesystem::path& fst, OverrideSet* overrides = nullptr);
+
+/// The ServoDyn file when CompServo = 1, nullopt when ServoDyn is off (no yaw spring). Throws
+/// InputError("a.fst:39: ServoFile: file not found: …") when ServoDyn is on and its file is missing.
+std::optional<ServoDynInput> read_servodyn_if_enabled(const FstInput& fst, OverrideSet* overrides = nullptr);
+
+/// Gravity (m/s²): from the `.fst` when it has it (OpenFAST v3+), else from ElastoDyn (older layouts).
+/// Throws InputError when neither file gives it.
+double gravity(const OpenFastTurbine& turbine);
+
+}  // namespace whirl::io
