@@ -25,22 +25,21 @@ void requireSquareFinite(const Eigen::MatrixXd& X, const char* what, const char*
 }
 
 /// LAPACK real-format eigenvectors → complex columns of unit norm. A complex pair (j, j+1) with
-/// imag(j) > 0 is stored as VR(:,j) ± i VR(:,j+1).
+/// imag(j) > 0 is stored as VR(:,j) ± i VR(:,j+1). (Scalar loops: GCC 12 warns falsely on Eigen's
+/// AVX-512 complex packets here.)
 Eigen::MatrixXcd unpackVectors(const Eigen::MatrixXd& VR, const Eigen::VectorXd& imag) {
-  const Eigen::Index n = VR.cols();
-  Eigen::MatrixXcd V(VR.rows(), n);
+  const Eigen::Index n = VR.cols(), m = VR.rows();
+  Eigen::MatrixXcd V(m, n);
   for (Eigen::Index j = 0; j < n; ++j) {
-    if (imag(j) != 0.0 && j + 1 < n) {
-      V.col(j) = VR.col(j).cast<std::complex<double>>() + std::complex<double>(0, 1) * VR.col(j + 1);
-      V.col(j + 1) = V.col(j).conjugate();
-      ++j;
-    } else {
-      V.col(j) = VR.col(j).cast<std::complex<double>>();
+    const bool pair = imag(j) != 0.0 && j + 1 < n;
+    const double norm = pair ? std::hypot(VR.col(j).norm(), VR.col(j + 1).norm()) : VR.col(j).norm();
+    const double s = norm > 0.0 ? 1.0 / norm : 1.0;
+    for (Eigen::Index i = 0; i < m; ++i) {
+      const std::complex<double> v(s * VR(i, j), pair ? s * VR(i, j + 1) : 0.0);
+      V(i, j) = v;
+      if (pair) V(i, j + 1) = std::conj(v);
     }
-  }
-  for (Eigen::Index j = 0; j < n; ++j) {
-    const double norm = V.col(j).norm();
-    if (norm > 0) V.col(j) /= norm;
+    if (pair) ++j;
   }
   return V;
 }
