@@ -4,42 +4,19 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <sstream>
 #include <string>
 
 #include "src/io/openfast_lin.hpp"
 #include "src/model/error.hpp"
+#include "tests/unit/test_util.hpp"
 
 namespace {
 
-namespace fs = std::filesystem;
 const std::string kData = std::string(WHIRL_SOURCE_DIR) + "/tests/data/openfast-lin/";
 
-/// A fresh temporary folder, removed at the end of the test.
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    path = fs::temp_directory_path() / ("whirl_lin_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-                                        "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~TempDir() { fs::remove_all(path); }
-  std::string write(const std::string& name, const std::string& text) const {
-    const fs::path p = path / name;
-    std::ofstream(p) << text;
-    return p.string();
-  }
-};
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using whirl::test::slurp;
+using whirl::test::TempDir;
 
 /// Message of the InputError thrown by reading `path` ("" if none).
 std::string readError(const std::string& path) {
