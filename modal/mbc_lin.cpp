@@ -1,0 +1,140 @@
+#include "modal/mbc_lin.hpp"
+
+#include <algorithm>
+#include <regex>
+
+#include "src/model/error.hpp"
+
+namespace whirl {
+namespace {
+
+struct BladeMatch {
+  int blade = 0;       ///< 1-based, 0 = none
+  std::string masked;  ///< description with the blade number replaced by '#'
+};
+
+BladeMatch matchBlade(const std::string& d) {
+  static const std::regex patterns[] = {std::regex(R"([Bb]lade\s*[Rr]oot\s*(\d+))"), std::regex(R"([Bb]lade\s*(\d+))"),
+                                        std::regex(R"(BD_(\d+))"), std::regex(R"(\b[Bb](\d+))")};
+  std::size_t pos = std::string::npos, len = 0;
+  for (const auto& re : patterns) {
+    if (std::smatch m; std::regex_search(d, m, re)) {
+      pos = static_cast<std::size_t>(m.position(1)), len = static_cast<std::size_t>(m.length(1));
+      break;
+    }
+  }
+  if (pos == std::string::npos) {  // trailing digits of the channel name: "ED RootMxc1, (kN-m)"
+    const std::size_t b = d.find_first_not_of(' ', d.find(' '));
+    if (d.find(' ') != std::string::npos && b != std::string::npos) {
+      std::size_t e = d.find_first_of(" ,", b);
+      if (e == std::string::npos) e = d.size();
+      std::size_t s = e;
+      while (s > b && std::isdigit(static_cast<unsigned char>(d[s - 1]))) --s;
+      if (s < e && s > b) pos = s, len = e - s;
+    }
+  }
+  BladeMatch r;
+  if (pos == std::string::npos) return r;
+  r.blade = std::stoi(d.substr(pos, len));
+  r.masked = d.substr(0, pos) + "#" + d.substr(pos + len);
+  // ElastoDyn repeats the blade in the internal DOF index, "DOF_BF(2,1)".
+  const std::string idx = "(" + std::to_string(r.blade) + ",";
+  for (std::size_t at = r.masked.find(idx); at != std::string::npos; at = r.masked.find(idx, at + 1))
+    r.masked.replace(at, idx.size(), "(#,");
+  return r;
+}
+
+std::string firstWord(const std::string& s) { return s.substr(0, s.find(' ')); }
+
+std::vector<int> velocityOf(const OpenFastLin& lin) {
+  const auto& x = lin.x;
+  const std::size_t n = x.size();
+  std::vector<int> vel(n, -1);
+  for (std::size_t i = 0; i < n;) {
+    std::size_t j = i;
+    while (j < n && firstWord(x[j].description) == firstWord(x[i].description)) ++j;
+    const std::size_t len = j - i, h = len / 2;
+    bool second = len % 2 == 0 && len > 0;
+    for (std::size_t k = i; second && k < j; ++k) {
+      const bool rate = x[k].description.find("First time derivative of") != std::string::npos;
+      second = x[k].derivative_order >= 0 ? x[k].derivative_order == 2 : rate == (k >= i + h);
+    }
+    if (second)
+      for (std::size_t k = 0; k < h; ++k) vel[i + h + k] = static_cast<int>(i + k);
+    i = j;
+  }
+  return vel;
+}
+
+/// Blade (0-based, −1 fixed) of each entry of a table; checks that the sets pair like entries.
+std::vector<int> bladesOf(const OpenFastLin& lin, const std::vector<LinVariable>& vars, const std::vector<int>& vel,
+                          int N, const std::string& key) {
+  std::vector<int> blade(vars.size(), -1);
+  std::vector<std::vector<std::pair<std::size_t, std::string>>> per_blade(static_cast<std::size_t>(N));
+  for (std::size_t i = 0; i < vars.size(); ++i) {
+    if (!vars[i].rotating) continue;
+    const BladeMatch m = matchBlade(vars[i].description);
+    if (m.blade < 1 || m.blade > N)
+      throw InputError(where(lin.path, vars[i].line, key,
+                             m.blade < 1 ? "rotating entry without a blade number: '" + vars[i].description + "'"
+                                         : "blade " + std::to_string(m.blade) + " of a " + std::to_string(N) +
+                                               "-bladed rotor: '" + vars[i].description + "'"));
+    blade[i] = m.blade - 1;
+    if (vel.empty() || vel[i] < 0) per_blade[static_cast<std::size_t>(m.blade - 1)].emplace_back(i, m.masked);
+  }
+  for (int b = 1; b < N; ++b) {
+    const auto& first = per_blade[0];
+    const auto& other = per_blade[static_cast<std::size_t>(b)];
+    for (std::size_t j = 0; j < std::max(first.size(), other.size()); ++j) {
+      if (j < first.size() && j < other.size() && first[j].second == other[j].second) continue;
+      const auto& [i, desc] = j < other.size() ? other[j] : first[j];
+      throw InputError(where(lin.path, vars[i].line, key,
+                             "rotating entries do not pair across blades: blade 1 has " + std::to_string(first.size()) +
+                                 " and blade " + std::to_string(b + 1) + " has " + std::to_string(other.size()) +
+                                 ", mismatch at '" + vars[i].description + "'"));
+    }
+  }
+  return blade;
+}
+
+int highestBlade(const std::vector<LinVariable>& vars) {
+  int n = 0;
+  for (const auto& v : vars)
+    if (v.rotating) n = std::max(n, matchBlade(v.description).blade);
+  return n;
+}
+
+}  // namespace
+
+int bladeNumberInDescription(const std::string& description) { return matchBlade(description).blade; }
+
+MbcLayout mbcLayoutFromLin(const OpenFastLin& lin, int num_blades) {
+  MbcLayout L;
+  L.num_blades = num_blades > 0 ? num_blades
+                                : std::max({highestBlade(lin.x), highestBlade(lin.u), highestBlade(lin.y)});
+  if (L.num_blades == 0) L.num_blades = 3;
+  L.velocity_of = velocityOf(lin);
+  L.state_blade = bladesOf(lin, lin.x, L.velocity_of, L.num_blades, "continuous states");
+  L.input_blade = bladesOf(lin, lin.u, {}, L.num_blades, "inputs");
+  L.output_blade = bladesOf(lin, lin.y, {}, L.num_blades, "outputs");
+  return L;
+}
+
+MbcSample mbcSampleFromLin(const OpenFastLin& lin) {
+  MbcSample s;
+  s.azimuth = lin.azimuth;
+  s.rotor_speed = lin.rotor_speed;
+  const std::vector<int> vel = velocityOf(lin);
+  for (std::size_t i = 0; i < lin.x.size() && i < lin.xdot.size(); ++i) {
+    const std::string& d = lin.x[i].description;
+    if (vel[i] >= 0 && (d.find("DOF_GeAz") != std::string::npos || d.find("DOF_DrTr") != std::string::npos))
+      s.rotor_acceleration += lin.xdot[i].op;
+  }
+  s.A = lin.A;
+  s.B = lin.B;
+  s.C = lin.C;
+  s.D = lin.D;
+  return s;
+}
+
+}  // namespace whirl

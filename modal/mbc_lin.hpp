@@ -1,0 +1,38 @@
+#pragma once
+/// \file
+/// Multiblade transform input from OpenFAST `.lin` files: which states, inputs and outputs are
+/// rotating and on which blade, which states are velocities, and the per-azimuth sample.
+///
+/// Rotating entries are those flagged T in the "Rotating Frame?" column. Their blade number is
+/// read from the description, first match of: "Blade root <n>", "blade <n>"/"Blade <n>", "BD_<n>"
+/// (BeamDyn instance), "B<n>" as a word start (AeroDyn "B1N3..."), else the trailing digits of the
+/// channel name (ElastoDyn outputs "RootMxc1"). Sets pair the j-th rotating entry of each blade
+/// (modal/mbc.hpp); the helper checks that their descriptions agree once the blade number is masked.
+///
+/// Second-order states: OpenFAST writes each module's states as all displacements then all their
+/// first time derivatives. A run of consecutive states of one module (first word of the
+/// description, "ED", "BD_1", …) with derivative order 2 (or, in files without that column, whose
+/// second half are "First time derivative of" states) is split in halves: state k of the second
+/// half is the rate of state k of the first.
+#include <string>
+
+#include "modal/mbc.hpp"
+#include "src/io/openfast_lin.hpp"
+
+namespace whirl {
+
+/// Blade number (1-based) named in an OpenFAST description, 0 if none is found.
+int bladeNumberInDescription(const std::string& description);
+
+/// Layout of the states, inputs and outputs of one `.lin` file.
+/// \param[in] num_blades N; 0 = the highest blade number found among rotating entries (3 if none).
+/// \throws InputError naming the file and line of a rotating entry without a blade number, of a
+///         set whose descriptions differ between blades, or of an unequal number of entries per blade.
+MbcLayout mbcLayoutFromLin(const OpenFastLin& lin, int num_blades = 0);
+
+/// The file's A, B, C, D with ψ = header azimuth, Ω = header rotor speed, and Ω̇ = the sum of the
+/// derivatives of the generator-azimuth and drivetrain rate states (DOF_GeAz, DOF_DrTr) in the
+/// state-derivative table, as MBC3 does (0 if those DOFs are absent).
+MbcSample mbcSampleFromLin(const OpenFastLin& lin);
+
+}  // namespace whirl
