@@ -31,6 +31,7 @@ struct Dof {
   double value = 0.0;   ///< initial guess, or the frozen value [m or rad]
   double rate = 0.0;    ///< prescribed rate [m/s or rad/s]; e.g. the rotor speed of an azimuth
   bool rotating = false;  ///< an azimuth: its position is given, not solved for equilibrium
+  int blade = -1;         ///< rotor blade (0-based) the coordinate belongs to, −1 = fixed frame (MBC)
 };
 
 /// One body and the joint that connects it to its parent.

@@ -1,0 +1,35 @@
+#include "linearize/periodic.hpp"
+
+#include <numbers>
+
+#include "src/model/error.hpp"
+
+namespace whirl {
+
+int findAzimuthDof(const Model& m) {
+  for (int i = 0; i < m.ndof(); ++i)
+    if (m.dofs[i].rotating) return i;
+  return -1;
+}
+
+PeriodicLinearization linearizePeriodic(const Model& m, const OperatingPoint& start, const PeriodicOptions& opt) {
+  PeriodicLinearization p;
+  p.azimuth_dof = opt.azimuth_dof >= 0 ? opt.azimuth_dof : findAzimuthDof(m);
+  if (p.azimuth_dof < 0) throw InputError("periodic linearization: the model has no rotating DOF (an azimuth)");
+  if (opt.azimuths < 1) throw InputError("--azimuths: must be at least 1");
+  p.rotor_speed = start.qd(p.azimuth_dof);
+  OperatingPoint guess = start;
+  const double psi0 = start.q(p.azimuth_dof);
+  for (int k = 0; k < opt.azimuths; ++k) {
+    const double psi = psi0 + 2 * std::numbers::pi * k / opt.azimuths;
+    guess.q(p.azimuth_dof) = psi;
+    OperatingPoint op = solveOperatingPoint(m, guess);
+    p.models.push_back(linearize(m, op));
+    p.azimuths.push_back(psi);
+    p.points.push_back(op);
+    guess = op;
+  }
+  return p;
+}
+
+}  // namespace whirl

@@ -1,0 +1,32 @@
+#pragma once
+/// \file
+/// Periodic operating point of a rotor at constant speed: the azimuth is stepped over one
+/// revolution; at each azimuth the other active coordinates are solved for equilibrium under
+/// gravity and centrifugal loads (warm-started from the previous azimuth) and the model is
+/// linearized there. These per-azimuth models feed the multiblade transform (modal/mbc.hpp).
+#include <vector>
+
+#include "linearize/linearize.hpp"
+
+namespace whirl {
+
+struct PeriodicOptions {
+  int azimuths = 36;     ///< number of equally spaced azimuths over 2π
+  int azimuth_dof = -1;  ///< the coordinate stepped; −1 = the first rotating coordinate
+};
+
+struct PeriodicLinearization {
+  int azimuth_dof = -1;
+  double rotor_speed = 0;           ///< rad/s, the rate of the azimuth coordinate
+  std::vector<double> azimuths;     ///< rad
+  std::vector<OperatingPoint> points;
+  std::vector<LinearModel> models;
+};
+
+/// The first rotating coordinate of the model, or −1.
+int findAzimuthDof(const Model& model);
+
+/// Throws InputError when the model has no rotating coordinate or azimuths < 1.
+PeriodicLinearization linearizePeriodic(const Model& model, const OperatingPoint& start, const PeriodicOptions& opt);
+
+}  // namespace whirl
