@@ -11,15 +11,15 @@ namespace {
 
 constexpr double two_pi = 2 * std::numbers::pi;
 
-Mode fromEigenvector(const Eigen::VectorXcd& v, const MatX& M, const std::vector<std::string>& names) {
-  const int n = static_cast<int>(M.rows());
+Mode fromEigenvector(const Eigen::VectorXcd& v, const VecX& w, const std::vector<std::string>& names) {
+  const int n = static_cast<int>(w.size());
   Mode mode;
   mode.shape = v.head(n);
   Eigen::Index imax = 0;
   mode.shape.cwiseAbs().maxCoeff(&imax);
   if (std::abs(mode.shape(imax)) > 0) mode.shape /= mode.shape(imax);
   mode.participation = VecX(n);
-  for (int i = 0; i < n; ++i) mode.participation(i) = std::norm(mode.shape(i)) * M(i, i);
+  for (int i = 0; i < n; ++i) mode.participation(i) = std::norm(mode.shape(i)) * w(i);
   const double total = mode.participation.sum();
   if (total > 0) mode.participation /= total;
   mode.name = nameFromParticipation(mode.participation, names);
@@ -41,10 +41,13 @@ std::string nameFromParticipation(const VecX& p, const std::vector<std::string>&
 }
 
 std::vector<Mode> computeModes(const MatX& M, const MatX& C, const MatX& K, const std::vector<std::string>& names) {
-  const int n = static_cast<int>(M.rows());
+  if (M.rows() == 0) return {};
+  return modesFromEigen(eigenSecondOrder(M, C, K), static_cast<int>(M.rows()), M.diagonal(), names);
+}
+
+std::vector<Mode> modesFromEigen(const EigenDecomposition& ed, int n, const VecX& w, const std::vector<std::string>& names) {
   std::vector<Mode> modes;
   if (n == 0) return modes;
-  const EigenDecomposition ed = eigenSecondOrder(M, C, K);
   // Scale for "zero": the largest |λ| with a floor, so rigid-body roots (numerically ~1e-8) are caught.
   const double lmax = std::max(1.0, ed.values.cwiseAbs().maxCoeff());
   const double zero = 1e-7 * lmax;
@@ -53,7 +56,7 @@ std::vector<Mode> computeModes(const MatX& M, const MatX& C, const MatX& K, cons
     const std::complex<double> l = ed.values(k);
     if (std::abs(l.imag()) > zero && std::abs(l.imag()) > 1e-9 * std::abs(l)) {
       if (l.imag() < 0) continue;  // the conjugate carries the same mode
-      Mode mode = fromEigenvector(ed.vectors.col(k), M, names);
+      Mode mode = fromEigenvector(ed.vectors.col(k), w, names);
       mode.freq_hz = std::abs(l) / two_pi;
       mode.damped_freq_hz = std::abs(l.imag()) / two_pi;
       mode.damping_ratio = -l.real() / std::abs(l);
@@ -65,7 +68,7 @@ std::vector<Mode> computeModes(const MatX& M, const MatX& C, const MatX& K, cons
   std::sort(real.begin(), real.end(), [&](int a, int b) { return std::abs(ed.values(a)) < std::abs(ed.values(b)); });
   for (size_t k = 0; k + 1 < real.size(); k += 2) {
     const double l1 = ed.values(real[k]).real(), l2 = ed.values(real[k + 1]).real();
-    Mode mode = fromEigenvector(ed.vectors.col(real[k]), M, names);
+    Mode mode = fromEigenvector(ed.vectors.col(real[k]), w, names);
     if (std::abs(l1) <= zero) {
       mode.rigid_body = true;
       mode.freq_hz = 0;

@@ -27,6 +27,12 @@ struct Mode {
 /// Modes sorted by frequency. names: one per coordinate (dim n).
 std::vector<Mode> computeModes(const MatX& M, const MatX& C, const MatX& K, const std::vector<std::string>& names);
 
+struct EigenDecomposition;
+/// Modes from the eigenpairs of a first-order system with state x = [q; q̇] (dim 2n): pairing as
+/// above, shape = q part. weights (dim n) turn |φ_i|² into energy shares (e.g. the diagonal of M).
+std::vector<Mode> modesFromEigen(const EigenDecomposition& ed, int n, const VecX& weights,
+                                 const std::vector<std::string>& names);
+
 /// Name from participations: the dominant coordinate, joined by " / " with the next ones that
 /// carry at least half of its share.
 std::string nameFromParticipation(const VecX& participation, const std::vector<std::string>& names);

@@ -1,0 +1,129 @@
+#include "modal/rotor_modes.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <map>
+
+#include "modal/eigen.hpp"
+#include "modal/mbc.hpp"
+
+namespace whirl {
+namespace {
+
+struct Coordinate {
+  std::string group;  ///< fixed coordinate name, or the blade shape's base name
+  MbcCoordinate kind;
+};
+
+// Names the mode from the coordinate group with the largest energy share.
+void nameRotorMode(Mode& mode, const std::vector<Coordinate>& coords, double rotor_speed) {
+  std::map<std::string, double> share;
+  for (size_t i = 0; i < coords.size(); ++i) share[coords[i].group] += mode.participation(i);
+  const auto best = std::max_element(share.begin(), share.end(), [](auto& a, auto& b) { return a.second < b.second; });
+  const std::string& group = best->first;
+  int collective = -1, cosine = -1, sine = -1;
+  double cyclic = 0, coll = 0;
+  bool blade = false;
+  for (size_t i = 0; i < coords.size(); ++i) {
+    if (coords[i].group != group) continue;
+    switch (coords[i].kind.kind) {
+      case MbcKind::Fixed: break;
+      case MbcKind::Collective: collective = static_cast<int>(i); coll += mode.participation(i); blade = true; break;
+      case MbcKind::Cosine:
+        if (coords[i].kind.harmonic == 1) cosine = static_cast<int>(i);
+        cyclic += mode.participation(i);
+        blade = true;
+        break;
+      case MbcKind::Sine:
+        if (coords[i].kind.harmonic == 1) sine = static_cast<int>(i);
+        cyclic += mode.participation(i);
+        blade = true;
+        break;
+      case MbcKind::Differential: cyclic += mode.participation(i); blade = true; break;
+    }
+  }
+  std::string name = group;
+  if (blade) {
+    if (coll >= cyclic || cosine < 0 || sine < 0) {
+      name += collective >= 0 && coll >= cyclic ? " collective" : " cyclic";
+    } else if (std::abs(rotor_speed) < 1e-9) {
+      // Parked: forward and backward whirl coincide; say which cyclic pattern the mode took.
+      name += std::abs(mode.shape(cosine)) >= std::abs(mode.shape(sine)) ? " cos" : " sin";
+    } else {
+      const std::complex<double> r = mode.shape(sine) / mode.shape(cosine);
+      const bool forward = (r.imag() < 0) == (rotor_speed > 0);
+      name += forward ? " FW" : " BW";
+    }
+  }
+  if (mode.rigid_body) name += " (rigid body)";
+  mode.name = name;
+}
+
+}  // namespace
+
+std::string bladeBaseName(const std::string& n) {
+  std::string lower = n;
+  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (lower.rfind("blade ", 0) == 0) {
+    size_t k = 6;
+    while (k < n.size() && std::isdigit(static_cast<unsigned char>(n[k]))) ++k;
+    if (k > 6 && k < n.size() && n[k] == ' ') return n.substr(k + 1);
+  }
+  return n;
+}
+
+RotorModes rotorModes(const Model& m, const PeriodicLinearization& p) {
+  RotorModes out;
+  const LinearModel& first = p.models.front();
+  const int n = static_cast<int>(first.dofs.size());
+  std::vector<int> blade(n);
+  int nb = 0;
+  for (int i = 0; i < n; ++i) {
+    blade[i] = m.dofs[first.dofs[i]].blade;
+    nb = std::max(nb, blade[i] + 1);
+  }
+  const VecX weights = first.M.diagonal();
+  if (nb < 3) {
+    out.coordinates = first.dof_names;
+    out.A = first.A;
+    out.modes = modesFromEigen(eigenStandard(first.A), n, weights, out.coordinates);
+    for (auto& mode : out.modes)
+      if (mode.rigid_body) mode.name += " (rigid body)";
+    return out;
+  }
+  out.num_blades = nb;
+  const MbcLayout layout = secondOrderLayout(nb, blade);
+  std::vector<MbcSample> samples;
+  for (size_t k = 0; k < p.models.size(); ++k) {
+    MbcSample s;
+    s.azimuth = p.azimuths[k];
+    s.rotor_speed = p.rotor_speed;
+    s.A = p.models[k].A;
+    samples.push_back(std::move(s));
+  }
+  const MbcResult mbc = mbcAverage(layout, samples);
+  out.A = mbc.A;
+  // Coordinate groups: the j-th coordinate of every blade forms one set named after blade 1's.
+  std::vector<std::vector<int>> per_blade(nb);
+  for (int i = 0; i < n; ++i)
+    if (blade[i] >= 0) per_blade[blade[i]].push_back(i);
+  std::vector<Coordinate> coords(n);
+  for (int i = 0; i < n; ++i) {
+    coords[i].kind = mbc.states[i];
+    if (blade[i] < 0) {
+      coords[i].group = first.dof_names[i];
+      continue;
+    }
+    const auto& list = per_blade[blade[i]];
+    const size_t j = std::find(list.begin(), list.end(), i) - list.begin();
+    coords[i].group = bladeBaseName(first.dof_names[per_blade[0].at(j)]);
+  }
+  out.coordinates.resize(n);
+  for (int i = 0; i < n; ++i)
+    out.coordinates[i] = blade[i] < 0 ? coords[i].group : coords[i].group + " " + toString(coords[i].kind);
+  out.modes = modesFromEigen(eigenStandard(mbc.A), n, weights, out.coordinates);
+  for (auto& mode : out.modes) nameRotorMode(mode, coords, p.rotor_speed);
+  return out;
+}
+
+}  // namespace whirl

@@ -1,0 +1,31 @@
+#pragma once
+/// \file
+/// Modes of a rotating turbine: the per-azimuth linear models are transformed to multiblade
+/// coordinates (modal/mbc.hpp), averaged over the revolution, and the averaged A is analysed.
+/// Blade coordinates become "<shape> collective", "<shape> cos", "<shape> sin" (…); modes are
+/// named from their dominant coordinate group, cyclic blade modes as backward (BW) or forward
+/// (FW) whirl from the phase between their cosine and sine parts:
+///   q_s / q_c = −i → the pattern turns with the rotor (FW), +i → against it (BW).
+/// Fewer than 3 blades: no multiblade transform (the transformed system stays periodic); the modes
+/// are those of the first azimuth and the names keep the blade coordinates.
+#include <string>
+#include <vector>
+
+#include "linearize/periodic.hpp"
+#include "modal/modes.hpp"
+
+namespace whirl {
+
+struct RotorModes {
+  std::vector<std::string> coordinates;  ///< names of the mode-shape coordinates (dim n)
+  std::vector<Mode> modes;               ///< sorted by frequency
+  MatX A;                                ///< the (averaged, multiblade) state matrix, 2n × 2n
+  int num_blades = 0;                    ///< 0 when no transform was applied
+};
+
+RotorModes rotorModes(const Model& model, const PeriodicLinearization& periodic);
+
+/// "blade 2 flap 1" → "flap 1": drops a leading "blade <k> " from a blade coordinate's name.
+std::string bladeBaseName(const std::string& dof_name);
+
+}  // namespace whirl
