@@ -1,0 +1,62 @@
+// readCase: load the YAML, apply the overrides, read each section, finalize.
+#include "src/io/case_file.hpp"
+
+#include <filesystem>
+#include <fstream>
+
+#include "src/io/case_reader.hpp"
+#include "src/model/error.hpp"
+
+namespace whirl {
+namespace {
+
+YAML::Node load(const std::string& path) {
+  if (std::filesystem::is_directory(path)) throw InputError(where(path, 0, "", "is a folder, not a case file"));
+  std::ifstream in(path);
+  if (!in) throw InputError(where(path, 0, "", "cannot open the case file"));
+  try {
+    return YAML::Load(in);
+  } catch (const YAML::ParserException& e) {
+    throw InputError(where(path, e.mark.is_null() ? 0 : e.mark.line + 1, "", "YAML syntax error: " + e.msg));
+  } catch (const YAML::Exception& e) {
+    throw InputError(where(path, 0, "", std::string("cannot read the YAML: ") + e.what()));
+  }
+}
+
+// Scalar g → [0, 0, −g] or a vector [gx, gy, gz].
+Vec3 readGravity(const CaseNode& g) {
+  if (g.isScalar()) return Vec3(0, 0, -g.number());
+  if (g.isList()) return g.vec3();
+  g.fail("expected g [m/s²] or a vector [gx, gy, gz]");
+}
+
+}  // namespace
+
+Model readCase(const std::string& path, const std::vector<CaseOverride>& overrides) {
+  CaseSource source;
+  source.file = path;
+  source.folder = std::filesystem::path(path).parent_path().string();
+  YAML::Node doc = load(path);
+  applyOverrides(doc, overrides, source);
+  const CaseNode top(doc, source);
+  if (!top.isMap()) top.fail("a case file is a map of keys (name, gravity, bodies, ...), this one is empty or a list");
+  top.allowKeys({"name", "description", "gravity", "inputs", "bodies", "dofs", "loads"});
+
+  CaseBuild build;
+  Model& m = build.model;
+  m.name = top.text("name", std::filesystem::path(path).stem().string());
+  if (const auto d = top.find("description")) d->text();
+  if (const auto g = top.find("gravity")) m.gravity = readGravity(*g);
+  if (const auto in = top.find("inputs")) readInputs(*in, build);
+  readBodies(top.at("bodies"), build);
+  if (const auto d = top.find("dofs")) readDofSettings(*d, build);
+  if (const auto l = top.find("loads")) readLoads(*l, build);
+  try {
+    finalize(m);
+  } catch (const InputError& e) {
+    rethrowAt(Where{path, 0, "", ""}, e);
+  }
+  return m;
+}
+
+}  // namespace whirl

@@ -1,0 +1,119 @@
+// `inputs:`, `dofs:` settings and `loads:` of a case.
+#include <numbers>
+
+#include "src/io/case_reader.hpp"
+
+namespace whirl {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180;
+constexpr double kRpm = 2 * std::numbers::pi / 60;
+
+// Value in SI from `key` or `key_suffix` (converted by `factor`), at most one of them.
+double oneOf(const CaseNode& n, const std::string& key, const std::string& alt, double factor, double fallback,
+             bool alt_allowed, const std::string& why_not) {
+  const auto a = n.find(key), b = n.find(alt);
+  if (a && b) b->fail("give " + key + " or " + alt + ", not both");
+  if (b && !alt_allowed) b->fail(why_not);
+  return a ? a->number() : b ? b->number() * factor : fallback;
+}
+
+void pointLoad(const CaseNode& n, CaseBuild& build) {
+  n.allowKeys({"type", "body", "point", "force", "moment", "frame", "input"});
+  PointLoad l;
+  const CaseNode body = n.at("body");
+  l.body = build.bodyIndex(body.text(), body.where());
+  if (const auto p = n.find("point")) l.point = build.pointIndex(l.body, p->text(), p->where());
+  l.force = n.vec3("force", Vec3::Zero());
+  l.moment = n.vec3("moment", Vec3::Zero());
+  if (const auto f = n.find("frame")) {
+    const std::string s = f->text();
+    if (s != "body" && s != "ground") f->fail("expected body or ground, got '" + s + "'");
+    l.body_frame = s == "body";
+  }
+  if (const auto u = n.find("input")) l.input = build.inputIndex(u->text(), u->where());
+  build.model.point_loads.push_back(l);
+}
+
+void dofLoad(const CaseNode& n, CaseBuild& build) {
+  n.allowKeys({"type", "dof", "value", "input"});
+  DofLoad l;
+  const CaseNode dof = n.at("dof");
+  l.dof = build.dofIndex(dof.text(), dof.where());
+  l.value = n.at("value").number();
+  if (const auto u = n.find("input")) l.input = build.inputIndex(u->text(), u->where());
+  build.model.dof_loads.push_back(l);
+}
+
+void spring(const CaseNode& n, CaseBuild& build) {
+  n.allowKeys({"type", "dof", "k", "c", "q0"});
+  DofSpring s;
+  const CaseNode dof = n.at("dof");
+  s.dof = build.dofIndex(dof.text(), dof.where());
+  if (!n.has("k") && !n.has("c")) n.fail("a spring needs k and/or c");
+  s.k = n.number("k", 0);
+  s.c = n.number("c", 0);
+  s.q0 = n.number("q0", 0);
+  build.model.springs.push_back(s);
+}
+
+void bodyMatrices(const CaseNode& n, CaseBuild& build) {
+  n.allowKeys({"type", "body", "K", "C", "A", "x0"});
+  BodyMatrices bm;
+  const CaseNode body = n.at("body");
+  bm.body = build.bodyIndex(body.text(), body.where());
+  if (build.model.bodies[bm.body].joint != JointType::Free)
+    body.fail("body '" + body.text() + "' has no free joint: 6×6 matrices act on the 6 coordinates of a free joint");
+  if (const auto k = n.find("K")) bm.K = k->matrix(6, 6);
+  if (const auto c = n.find("C")) bm.C = c->matrix(6, 6);
+  if (const auto a = n.find("A")) bm.A = a->matrix(6, 6);
+  if (const auto x = n.find("x0")) {
+    const std::vector<double> v = x->numbers();
+    if (v.size() != 6) x->fail("expected 6 numbers (surge, sway, heave, roll, pitch, yaw), got " + std::to_string(v.size()));
+    for (int i = 0; i < 6; ++i) bm.x0(i) = v[i];
+  }
+  build.model.body_matrices.push_back(bm);
+}
+
+}  // namespace
+
+void readInputs(const CaseNode& list, CaseBuild& build) {
+  for (const CaseNode& n : list.items()) {
+    n.allowKeys({"name", "value"});
+    Input in;
+    const CaseNode name = n.at("name");
+    in.name = name.text();
+    if (in.name.empty()) name.fail("an input name must not be empty");
+    if (build.model.findInput(in.name)) name.fail("input name '" + in.name + "' is used twice");
+    in.value = n.number("value", 0);
+    build.model.inputs.push_back(in);
+  }
+}
+
+void readDofSettings(const CaseNode& map, CaseBuild& build) {
+  for (const MapEntry& e : map.entries()) {
+    const int k = build.dofIndex(e.key, e.key_where);
+    const CaseNode& n = e.value;
+    n.allowKeys({"value", "value_deg", "frozen", "rotating", "rate", "rate_rpm"});
+    Dof& d = build.model.dofs[k];
+    const bool ang = build.dof_angular[k];
+    const std::string why = "DOF '" + d.name + "' is a displacement [m], not an angle";
+    d.value = oneOf(n, "value", "value_deg", kDeg, d.value, ang, why);
+    d.rate = oneOf(n, "rate", "rate_rpm", kRpm, d.rate, ang, why);
+    d.frozen = n.boolean("frozen", d.frozen);
+    d.rotating = n.boolean("rotating", d.rotating);
+  }
+}
+
+void readLoads(const CaseNode& list, CaseBuild& build) {
+  for (const CaseNode& n : list.items()) {
+    const std::string type = n.at("type").text();
+    if (type == "point") pointLoad(n, build);
+    else if (type == "dof") dofLoad(n, build);
+    else if (type == "spring") spring(n, build);
+    else if (type == "body_matrices") bodyMatrices(n, build);
+    else n.at("type").fail("unknown load type '" + type + "' (allowed: point, dof, spring, body_matrices)");
+  }
+}
+
+}  // namespace whirl

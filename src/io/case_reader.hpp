@@ -1,0 +1,62 @@
+#pragma once
+/// \file
+/// Internal to the case reader (src/io/case_*.cpp): the model under construction with where each
+/// part was written, and the readers of each section. Users call readCase() (case_file.hpp).
+#include <string>
+#include <vector>
+
+#include "src/io/case_file.hpp"
+#include "src/io/case_node.hpp"
+#include "src/model/model.hpp"
+#include "src/shapes/shape.hpp"
+
+namespace whirl {
+
+/// The model being built, with where its bodies and DOFs were written (indices as in `model`,
+/// before finalize() reorders them).
+struct CaseBuild {
+  Model model;
+  std::vector<Where> body_where;
+  std::vector<Where> dof_where;    ///< where the DOF's name was given (or its joint/shape)
+  std::vector<bool> dof_angular;   ///< an angle [rad]: `value_deg` and `rate_rpm` allowed
+
+  /// Appends a DOF; fails at `w` when the name is already used.
+  void addDof(const std::string& name, DofKind kind, int body, int local, const Where& w, bool angular);
+  /// Index of a DOF by name; fails at `w` listing the DOFs when there is none.
+  int dofIndex(const std::string& name, const Where& w) const;
+  /// Index of a body by name; fails at `w` listing the bodies when there is none.
+  int bodyIndex(const std::string& name, const Where& w) const;
+  /// Index of an input by name; fails at `w` listing the inputs when there is none.
+  int inputIndex(const std::string& name, const Where& w) const;
+  /// Index of a point of body `b` by name; fails at `w` listing its points when there is none.
+  int pointIndex(int b, const std::string& name, const Where& w) const;
+};
+
+/// Applies `--set` overrides to the parsed document (case_overrides.cpp); records them in `source`.
+void applyOverrides(YAML::Node& root, const std::vector<CaseOverride>& overrides, CaseSource& source);
+
+/// `bodies:` — every body, its joint, points and DOFs, parents resolved (case_bodies.cpp).
+void readBodies(const CaseNode& list, CaseBuild& build);
+
+/// Attachment frame → joint frame: a 3×3 matrix (rows) or a map of elementary rotations
+/// {x|y|z|x_deg|y_deg|z_deg: angle} applied in the order written, R = R_a1(θ1) R_a2(θ2) ….
+Mat3 readRotation(const CaseNode& node);
+
+/// The rigid-body keys of `node` (mass, cog, inertia, points) into `body` (case_rigid.cpp).
+void readRigidBody(const CaseNode& node, Body& body);
+
+/// The beam keys of `node` into body `index` of the build, with its elastic DOFs (case_beam.cpp).
+void readBeamBody(const CaseNode& node, int index, CaseBuild& build);
+
+/// The `shapes:` of beam `node` (length L, body `index`), each adding its elastic DOF (case_shapes.cpp).
+std::vector<ShapePtr> readShapes(const CaseNode& node, double length, int index, CaseBuild& build);
+
+/// `inputs:`, `dofs:` settings and `loads:` (case_loads.cpp).
+void readInputs(const CaseNode& list, CaseBuild& build);
+void readDofSettings(const CaseNode& map, CaseBuild& build);
+void readLoads(const CaseNode& list, CaseBuild& build);
+
+/// Re-throws an InputError from the core (buildBeamBody, shapes, finalize) prefixed with `w`.
+[[noreturn]] void rethrowAt(const Where& w, const std::exception& e);
+
+}  // namespace whirl

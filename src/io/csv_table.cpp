@@ -1,0 +1,79 @@
+#include "src/io/csv_table.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <set>
+
+#include "src/model/error.hpp"
+
+namespace whirl {
+namespace {
+
+std::string trim(const std::string& s) {
+  const auto a = s.find_first_not_of(" \t\r");
+  if (a == std::string::npos) return "";
+  const auto b = s.find_last_not_of(" \t\r");
+  return s.substr(a, b - a + 1);
+}
+
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> out;
+  size_t start = 0;
+  while (true) {
+    const size_t comma = line.find(',', start);
+    out.push_back(trim(line.substr(start, comma == std::string::npos ? std::string::npos : comma - start)));
+    if (comma == std::string::npos) return out;
+    start = comma + 1;
+  }
+}
+
+std::string unquote(const std::string& s) {
+  return s.size() >= 2 && s.front() == '"' && s.back() == '"' ? s.substr(1, s.size() - 2) : s;
+}
+
+}  // namespace
+
+CsvTable readCsv(const std::string& path) {
+  CsvTable t;
+  t.file = path;
+  std::ifstream in(path);
+  if (!in) throw InputError(where(path, 0, "", "cannot open the file"));
+  std::string raw;
+  int line = 0;
+  while (std::getline(in, raw)) {
+    ++line;
+    const std::string s = trim(raw);
+    if (s.empty() || s[0] == '#') continue;
+    const std::vector<std::string> fields = split(s);
+    if (t.names.empty()) {
+      std::set<std::string> seen;
+      for (const auto& f : fields) {
+        const std::string name = unquote(f);
+        if (name.empty()) throw InputError(where(path, line, "", "empty column name in the header row"));
+        if (!seen.insert(name).second) throw InputError(where(path, line, name, "column given twice"));
+        t.names.push_back(name);
+      }
+      t.header_line = line;
+      t.columns.assign(t.names.size(), {});
+      continue;
+    }
+    if (fields.size() != t.names.size())
+      throw InputError(where(path, line, "", std::to_string(fields.size()) + " fields, the header has " +
+                                                 std::to_string(t.names.size())));
+    for (size_t j = 0; j < fields.size(); ++j) {
+      std::string f = fields[j];
+      if (!f.empty() && f[0] == '+') f.erase(0, 1);
+      double v = 0;
+      const auto [end, ec] = std::from_chars(f.data(), f.data() + f.size(), v);
+      if (f.empty() || ec != std::errc() || end != f.data() + f.size() || !std::isfinite(v))
+        throw InputError(where(path, line, t.names[j], "expected a finite number, got '" + fields[j] + "'"));
+      t.columns[j].push_back(v);
+    }
+    t.row_lines.push_back(line);
+  }
+  if (t.names.empty()) throw InputError(where(path, 0, "", "no header row (the file is empty)"));
+  return t;
+}
+
+}  // namespace whirl
