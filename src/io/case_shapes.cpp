@@ -87,10 +87,21 @@ std::vector<ShapePtr> readShapes(const CaseNode& beam, double L, int index, Case
     const std::string name = name_node.text();
     bool angular = false;
     if (type == "polynomial") {
-      s.allowKeys({"name", "type", "direction", "coefficients"});
+      s.allowKeys({"name", "type", "direction", "coefficients", "reference_length", "offset", "normalize"});
       const auto [dy, dz] = readDirection(s);
-      const std::vector<double> a = readCoefficients(s.at("coefficients"));
-      shapes.push_back(located(s, [&] { return polynomialShape(name, L, a, dy, dz); }));
+      std::vector<double> a = readCoefficients(s.at("coefficients"));
+      // normalize: divide by Σ a_k so that u(reference_length) = 1 (seed 001 eq. 47, YAMS).
+      if (s.find("normalize") && s.at("normalize").boolean()) {
+        double sum = 0;
+        for (double c : a) sum += c;
+        if (std::abs(sum) < 1e-12) s.at("normalize").fail("the coefficients sum to zero");
+        for (double& c : a) c /= sum;
+      }
+      // u = Σ a_k ((x + offset)/reference_length)^k; defaults: offset 0, the beam length.
+      const double ref = s.find("reference_length") ? s.at("reference_length").number() : L;
+      const double x0 = s.find("offset") ? s.at("offset").number() : 0.0;
+      if (!(ref > 0)) s.at("reference_length").fail("must be positive");
+      shapes.push_back(located(s, [&] { return polynomialShape(name, ref, a, dy, dz, x0); }));
     } else if (type == "one_minus_cos") {
       s.allowKeys({"name", "type", "direction"});
       const auto [dy, dz] = readDirection(s);

@@ -89,8 +89,8 @@ TEST_F(CaseErrors, NonFiniteNumbers) {
 TEST_F(CaseErrors, NegativeMassAndBadInertia) {
   expect("mass: 2.4e5", "mass: -2.4e5", "bodies.nacelle.mass: negative mass");
   expect("{m: 5000,", "{m: -5000,", "bodies.tower.uniform.m: must not be negative");
-  expect("inertia: [1.0e6, 2.0e6, 2.0e6]", "inertia: [1.0e6, 1.0e6, 5.0e6]",
-         "bodies.nacelle.inertia: the inertia is not positive semi-definite");
+  expect("inertia: [1.0e6, 2.0e6, 2.0e6]", "inertia: [1.0e6, -1.0e6, 5.0e6]",
+         "bodies.nacelle.inertia: the inertia tensor is not positive semi-definite");
   expect("inertia: [1.0e6, 2.0e6, 2.0e6]", "inertia: [[1, 0, 0], [0.5, 1, 0], [0, 0, 1]]", "not symmetric");
   expect("rotation: {y_deg: 90}", "rotation: [[1, 0, 0], [0, 1, 0], [0, 0.1, 1]]", "bodies.nacelle.rotation: the rotation matrix is not orthonormal");
 }

@@ -1,0 +1,110 @@
+#pragma once
+// Reads a case's reference.csv (header with at least quantity, value, tolerance, source; quoted
+// fields may hold commas) and checks computed values against it, naming the source on failure.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "linearize/linearize.hpp"
+#include "src/io/case_file.hpp"
+
+namespace whirl::test {
+
+inline std::string casePath(const std::string& name) {
+  return std::string(WHIRL_SOURCE_DIR) + "/cases/" + name + "/" + name + ".yaml";
+}
+
+inline Model loadCase(const std::string& name, const std::vector<std::string>& sets = {}) {
+  std::vector<CaseOverride> o;
+  for (const auto& s : sets) o.push_back(parseOverride(s));
+  return readCase(casePath(name), o);
+}
+
+struct ReferenceRow {
+  double value = 0, tolerance = 0;
+  std::string source;
+};
+
+inline std::vector<std::string> splitCsvLine(const std::string& line) {
+  std::vector<std::string> f;
+  std::string cur;
+  bool quoted = false;
+  for (size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (quoted) {
+      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+        cur += '"';
+        ++i;
+      } else if (c == '"') {
+        quoted = false;
+      } else {
+        cur += c;
+      }
+    } else if (c == '"') {
+      quoted = true;
+    } else if (c == ',') {
+      f.push_back(cur);
+      cur.clear();
+    } else if (c != '\r') {
+      cur += c;
+    }
+  }
+  f.push_back(cur);
+  return f;
+}
+
+inline std::map<std::string, ReferenceRow> loadReference(const std::string& case_name) {
+  const std::string path = std::string(WHIRL_SOURCE_DIR) + "/cases/" + case_name + "/reference.csv";
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot open " + path);
+  std::string line;
+  std::getline(in, line);
+  const auto header = splitCsvLine(line);
+  auto col = [&](const std::string& n) {
+    for (size_t i = 0; i < header.size(); ++i)
+      if (header[i] == n) return i;
+    throw std::runtime_error(path + ": no column " + n);
+  };
+  const size_t q = col("quantity"), v = col("value"), t = col("tolerance"), s = col("source");
+  std::map<std::string, ReferenceRow> rows;
+  while (std::getline(in, line)) {
+    if (line.empty()) continue;
+    const auto f = splitCsvLine(line);
+    rows[f.at(q)] = {std::stod(f.at(v)), std::stod(f.at(t)), f.at(s)};
+  }
+  return rows;
+}
+
+/// Checks every computed quantity that the reference lists; fails for computed names it lacks.
+inline void expectMatchesReference(const std::string& case_name, const std::map<std::string, double>& computed) {
+  const auto ref = loadReference(case_name);
+  for (const auto& [name, value] : computed) {
+    const auto it = ref.find(name);
+    if (it == ref.end()) {
+      ADD_FAILURE() << case_name << ": no reference row for " << name;
+      continue;
+    }
+    EXPECT_NEAR(value, it->second.value, it->second.tolerance)
+        << case_name << " " << name << " (reference: " << it->second.source << ")";
+  }
+}
+
+/// The linear model at a given state (no equilibrium solve): q̇ from the model's rates, q̈ = 0.
+inline LinearModel linearizeAt(const Model& m, const VecX& q) {
+  OperatingPoint op = initialPoint(m);
+  op.q = q;
+  return linearize(m, op);
+}
+
+inline LinearModel linearizeAtEquilibrium(const Model& m) { return linearize(m, solveOperatingPoint(m, initialPoint(m))); }
+
+inline int dofIndex(const LinearModel& l, const std::string& name) {
+  for (size_t i = 0; i < l.dof_names.size(); ++i)
+    if (l.dof_names[i] == name) return static_cast<int>(i);
+  throw std::runtime_error("no DOF " + name);
+}
+
+}  // namespace whirl::test
