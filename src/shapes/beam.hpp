@@ -6,7 +6,8 @@
 ///
 /// Body frame: the mean line runs along +x from the root (x = 0) to the tip (x = L). Shapes
 /// displace it along y and z and twist it about x. Mass sits on the COG line (mean line + COG
-/// offset); torsion moves the COG by eq. 30 and the section's polar inertia j_G adds eq. 31.
+/// offset); torsion moves the COG by eq. 30 and the section's polar inertia j_G adds eq. 31 (rotary
+/// inertia of the sections about the beam axis only, the thin-beam convention).
 /// With axial shortening on, a bent beam's points move by −½ Σ q_i q_j ∫₀ˣ ν_i·ν_j dx' along x:
 /// the geometric stiffness of any axial load (gravity, masses carried, centrifugal, body
 /// acceleration) and the axial-inertia terms of the mass matrix (seed 000 eq. 26–29) follow.
