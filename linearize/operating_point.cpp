@@ -58,16 +58,22 @@ OperatingPoint solveOperatingPoint(const Model& m, const OperatingPoint& start, 
     const MatX J = residualJacobian(m, jw, op.q, op.qd, op.qdd, op.u, Wrt::Q, op.solved);
     MatX K(ns, ns);
     for (int r = 0; r < ns; ++r) K.row(r) = -J.row(op.solved[r]);
-    Eigen::FullPivLU<MatX> lu(K);
-    if (lu.rank() < ns) {
-      // Name a coordinate in the null space: the one with the largest component.
-      const MatX ker = lu.kernel();
-      Eigen::Index worst = 0;
-      ker.col(0).cwiseAbs().maxCoeff(&worst);
-      throw ComputeError("operating point: no stiffness on DOF '" + m.dofs[op.solved[worst]].name +
-                         "' (a free rigid-body motion): freeze it, or mark it rotating");
+    // Rigid-body coordinates (a free surge, a free yaw) have no stiffness: K is singular, and that
+    // is fine as long as nothing pushes along them. Minimum-norm step; refuse a load in the null space.
+    Eigen::CompleteOrthogonalDecomposition<MatX> cod(K);
+    const VecX dq = cod.solve(es);
+    if (cod.rank() < ns) {
+      const double unbalanced = (K * dq - es).lpNorm<Eigen::Infinity>();
+      if (unbalanced > 1e-6 * scale) {
+        Eigen::FullPivLU<MatX> lu(K);
+        const MatX ker = lu.kernel();
+        Eigen::Index worst = 0;
+        ker.col(0).cwiseAbs().maxCoeff(&worst);
+        throw ComputeError("operating point: a load acts along DOF '" + m.dofs[op.solved[worst]].name +
+                           "', which has no stiffness (a free rigid-body motion): no equilibrium; add a spring, "
+                           "freeze it, or mark it rotating");
+      }
     }
-    const VecX dq = lu.solve(es);
     for (int k = 0; k < ns; ++k) op.q(op.solved[k]) += dq(k);
     ++op.iterations;
     es = solvedResidual();

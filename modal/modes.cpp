@@ -11,15 +11,17 @@ namespace {
 
 constexpr double two_pi = 2 * std::numbers::pi;
 
-Mode fromEigenvector(const Eigen::VectorXcd& v, const VecX& w, const std::vector<std::string>& names) {
-  const int n = static_cast<int>(w.size());
+Mode fromEigenvector(const Eigen::VectorXcd& v, const MatX& M, const std::vector<std::string>& names) {
+  const int n = static_cast<int>(M.rows());
   Mode mode;
   mode.shape = v.head(n);
   Eigen::Index imax = 0;
   mode.shape.cwiseAbs().maxCoeff(&imax);
   if (std::abs(mode.shape(imax)) > 0) mode.shape /= mode.shape(imax);
   mode.participation = VecX(n);
-  for (int i = 0; i < n; ++i) mode.participation(i) = std::norm(mode.shape(i)) * w(i);
+  // Kinetic energy ½ φᴴ M φ split by coordinate; couplings (a floater's surge and pitch) count.
+  const Eigen::VectorXcd Mphi = M * mode.shape;
+  for (int i = 0; i < n; ++i) mode.participation(i) = std::abs((std::conj(mode.shape(i)) * Mphi(i)).real());
   const double total = mode.participation.sum();
   if (total > 0) mode.participation /= total;
   mode.name = nameFromParticipation(mode.participation, names);
@@ -42,10 +44,10 @@ std::string nameFromParticipation(const VecX& p, const std::vector<std::string>&
 
 std::vector<Mode> computeModes(const MatX& M, const MatX& C, const MatX& K, const std::vector<std::string>& names) {
   if (M.rows() == 0) return {};
-  return modesFromEigen(eigenSecondOrder(M, C, K), static_cast<int>(M.rows()), M.diagonal(), names);
+  return modesFromEigen(eigenSecondOrder(M, C, K), static_cast<int>(M.rows()), M, names);
 }
 
-std::vector<Mode> modesFromEigen(const EigenDecomposition& ed, int n, const VecX& w, const std::vector<std::string>& names) {
+std::vector<Mode> modesFromEigen(const EigenDecomposition& ed, int n, const MatX& w, const std::vector<std::string>& names) {
   std::vector<Mode> modes;
   if (n == 0) return modes;
   // Scale for "zero": the largest |λ| with a floor, so rigid-body roots (numerically ~1e-8) are caught.

@@ -21,7 +21,7 @@ struct Mode {
   bool rigid_body = false;
   std::string name;            ///< from the dominant coordinates
   Eigen::VectorXcd shape;      ///< coordinate part of the eigenvector, dim n, largest entry = 1
-  VecX participation;          ///< energy share per coordinate |φ_i|² M_ii / Σ, sums to 1
+  VecX participation;          ///< kinetic-energy share per coordinate |Re(φ_i* (Mφ)_i)| / Σ, sums to 1
 };
 
 /// Modes sorted by frequency. names: one per coordinate (dim n).
@@ -29,8 +29,9 @@ std::vector<Mode> computeModes(const MatX& M, const MatX& C, const MatX& K, cons
 
 struct EigenDecomposition;
 /// Modes from the eigenpairs of a first-order system with state x = [q; q̇] (dim 2n): pairing as
-/// above, shape = q part. weights (dim n) turn |φ_i|² into energy shares (e.g. the diagonal of M).
-std::vector<Mode> modesFromEigen(const EigenDecomposition& ed, int n, const VecX& weights,
+/// above, shape = q part. M (n × n) weighs the participations: the mass matrix of the shape's
+/// coordinates, or a diagonal approximation of it.
+std::vector<Mode> modesFromEigen(const EigenDecomposition& ed, int n, const MatX& M,
                                  const std::vector<std::string>& names);
 
 /// Name from participations: the dominant coordinate, joined by " / " with the next ones that

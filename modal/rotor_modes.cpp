@@ -82,7 +82,8 @@ RotorModes rotorModes(const Model& m, const PeriodicLinearization& p) {
     blade[i] = m.dofs[first.dofs[i]].blade;
     nb = std::max(nb, blade[i] + 1);
   }
-  const VecX weights = first.M.diagonal();
+  // Shapes are in multiblade coordinates: weigh them by the diagonal of M (blade entries alike).
+  const MatX weights = first.M.diagonal().asDiagonal();
   if (nb < 3) {
     out.coordinates = first.dof_names;
     out.A = first.A;

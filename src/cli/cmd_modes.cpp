@@ -1,4 +1,5 @@
 #include <CLI/CLI.hpp>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -50,7 +51,8 @@ void run(const ModesOptions& opt) {
     std::printf("%5s  %-40s %12s %14s %13s\n", "index", "name", "freq [Hz]", "damped [Hz]", "damping [-]");
     for (size_t k = 0; k < modes.size(); ++k)
       std::printf("%5zu  %-40s %12.6f %14.6f %13.6f%s\n", k + 1, modes[k].name.c_str(), modes[k].freq_hz,
-                  modes[k].damped_freq_hz, modes[k].damping_ratio + 0.0,  // + 0.0: no "-0.000000"
+                  modes[k].damped_freq_hz,
+                  std::abs(modes[k].damping_ratio) < 5e-7 ? 0.0 : modes[k].damping_ratio,  // no "-0.000000"
                   modes[k].rigid_body ? "  (rigid body)" : "");
   }
 }
