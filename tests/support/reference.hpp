@@ -3,6 +3,8 @@
 // fields may hold commas) and checks computed values against it, naming the source on failure.
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <string>
@@ -89,6 +91,9 @@ inline void expectMatchesReference(const std::string& case_name, const std::map<
     }
     EXPECT_NEAR(value, it->second.value, it->second.tolerance)
         << case_name << " " << name << " (reference: " << it->second.source << ")";
+    if (std::getenv("WHIRL_PRINT_REFERENCE"))  // for reports: whirl's value next to the reference
+      std::printf("%s,%s,%.10g,%.10g,%.3g\n", case_name.c_str(), name.c_str(), value, it->second.value,
+                  it->second.tolerance);
   }
 }
 

@@ -1,0 +1,56 @@
+// Speed of the core: one residual evaluation in double, and one full linearization (K, C, Q by
+// chunked AD, M assembled in double, A and B) at the operating point, for each validation case and
+// a 29-DOF floating turbine with every term of the residual. Run: build/bench/whirl_bench
+#include <benchmark/benchmark.h>
+
+#include "linearize/linearize.hpp"
+#include "src/dynamics/residual.hpp"
+#include "src/io/case_file.hpp"
+#include "tests/support/rich_model.hpp"
+
+namespace whirl {
+namespace {
+
+Model load(const std::string& name) {
+  if (name == "rich_29dof") return test::richModel();
+  return readCase(std::string(WHIRL_SOURCE_DIR) + "/cases/" + name + "/" + name + ".yaml");
+}
+
+void residualDouble(benchmark::State& state, const std::string& name) {
+  const Model m = load(name);
+  Workspace<double> ws(m);
+  const OperatingPoint op = initialPoint(m);
+  VecX e(m.ndof());
+  for (auto _ : state) {
+    residual(m, ws, op.q, op.qd, op.qdd, op.u, e);
+    benchmark::DoNotOptimize(e.data());
+  }
+  state.counters["dofs"] = m.ndof();
+}
+
+void linearization(benchmark::State& state, const std::string& name) {
+  const Model m = load(name);
+  // The rich model's loads are arbitrary (no equilibrium near zero): time it at its initial point.
+  const OperatingPoint op = name == "rich_29dof" ? initialPoint(m) : solveOperatingPoint(m, initialPoint(m));
+  for (auto _ : state) {
+    LinearModel l = linearize(m, op);
+    benchmark::DoNotOptimize(l.A.data());
+  }
+  state.counters["dofs"] = static_cast<double>(m.activeDofs().size());
+}
+
+#define WHIRL_CASE_BENCH(name)                                                               \
+  BENCHMARK_CAPTURE(residualDouble, name, #name)->Unit(benchmark::kMicrosecond);             \
+  BENCHMARK_CAPTURE(linearization, name, #name)->Unit(benchmark::kMicrosecond);
+
+WHIRL_CASE_BENCH(landbased_2dof)
+WHIRL_CASE_BENCH(landbased_3dof)
+WHIRL_CASE_BENCH(flex_4dof)
+WHIRL_CASE_BENCH(floating_3dof)
+WHIRL_CASE_BENCH(rotating_blade)
+WHIRL_CASE_BENCH(rich_29dof)
+
+}  // namespace
+}  // namespace whirl
+
+BENCHMARK_MAIN();
