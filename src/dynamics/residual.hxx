@@ -5,16 +5,16 @@
 namespace whirl {
 namespace detail {
 
-// y = S x for a small dense double matrix and a vector of T (no temporaries, no mixed-type GEMV).
+// y[0..rows) = S[0..rows, 0..cols) x for a small dense double matrix and a vector of T (no
+// temporaries, no mixed-type GEMV); zero entries of S are skipped.
 template <class T>
-void matvec(const MatX& S, const VecXT<T>& x, int n, VecXT<T>& y) {
-  for (int i = 0; i < n; ++i) y(i) = T(0);
-  for (int j = 0; j < n; ++j) {
+void matvec(const MatX& S, const VecXT<T>& x, int rows, int cols, VecXT<T>& y) {
+  for (int i = 0; i < rows; ++i) y(i) = T(0);
+  for (int j = 0; j < cols; ++j) {
     const T& xj = x(j);
-    for (int i = 0; i < n; ++i) {
-      const double s = S(i, j);
-      if (s != 0.0) y(i) += s * xj;
-    }
+    const double* col = S.data() + static_cast<Eigen::Index>(j) * S.rows();
+    for (int i = 0; i < rows; ++i)
+      if (col[i] != 0.0) y(i) += col[i] * xj;
   }
 }
 
@@ -41,25 +41,26 @@ void bodyInertiaForces(const BodyInertia& in, const BasisState<T>& b, const Vec3
       if (k == l)
         for (int p = 0; p < nc; ++p) u(p) += b.cdd(p);
     }
+  const std::array<int, 3>& len = in.len;
   // Force.
   for (int k = 0; k < 3; ++k) {
     T s = in.mass * ahat(k);
-    for (int l = 0; l < 3; ++l) s += dot(in.m1.data() + l, 3, ws.ukl[3 * k + l], nc);
+    for (int l = 0; l < 3; ++l) s += dot(in.m1.data() + l, 3, ws.ukl[3 * k + l], len[l]);
     F(k) = -s;
   }
   // Moment: ∫ s_j (a_P)_k dm = (m1_j·c) â_k + Σ_l (S_lj c)·u_kl.
   Mat3T<T> Q;  // Q(j,k) = ∫ s_j (a_P)_k dm
   for (int j = 0; j < 3; ++j) {
-    const T m1c = dot(in.m1.data() + j, 3, b.c, nc);
+    const T m1c = dot(in.m1.data() + j, 3, b.c, len[j]);
     for (int k = 0; k < 3; ++k) Q(j, k) = m1c * ahat(k);
   }
   for (int l = 0; l < 3; ++l)
     for (int j = 0; j < 3; ++j) {
-      matvec(in.S[3 * l + j], b.c, nc, ws.tmp);  // S_lj c
+      matvec(in.S[3 * l + j], b.c, len[l], len[j], ws.tmp);  // S_lj c
       for (int k = 0; k < 3; ++k) {
         const VecXT<T>& u = ws.ukl[3 * k + l];
         T s(0);
-        for (int p = 0; p < nc; ++p) s += ws.tmp(p) * u(p);
+        for (int p = 0; p < len[l]; ++p) s += ws.tmp(p) * u(p);
         Q(j, k) += s;
       }
     }
@@ -72,8 +73,8 @@ void bodyInertiaForces(const BodyInertia& in, const BasisState<T>& b, const Vec3
   for (int p = 0; p < nc; ++p) G(p) = in.m1(0, p) * ahat(0) + in.m1(1, p) * ahat(1) + in.m1(2, p) * ahat(2);
   for (int k = 0; k < 3; ++k)
     for (int l = 0; l < 3; ++l) {
-      matvec(in.S[3 * k + l], ws.ukl[3 * k + l], nc, ws.tmp);
-      for (int p = 0; p < nc; ++p) G(p) += ws.tmp(p);
+      matvec(in.S[3 * k + l], ws.ukl[3 * k + l], len[k], len[l], ws.tmp);
+      for (int p = 0; p < len[k]; ++p) G(p) += ws.tmp(p);
     }
   for (int j = 0; j < in.ne; ++j) {
     T s(0);

@@ -24,6 +24,9 @@ struct BodyInertia {
   double mass = 0.0;       ///< total mass [kg]
   Mat3X m1;                ///< ∫ P dm, 3 × nc [kg m]
   std::array<MatX, 9> S;   ///< S[3j+l] = ∫ P_jᵀ P_l dm, nc × nc [kg m²]
+  /// Entries of P_j beyond len[j] are zero (the axial-shortening terms live in P_x only); set by
+  /// finalize so that the hot loops skip the zero blocks of S.
+  std::array<int, 3> len = {0, 0, 0};
 
   /// Length of c: 1 + ne (+ ne(ne+1)/2 when quadratic).
   int nc() const { return 1 + ne + (quadratic ? ne * (ne + 1) / 2 : 0); }

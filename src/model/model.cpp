@@ -38,6 +38,20 @@ std::vector<int> depths(const std::vector<Body>& bodies) {
   return depth;
 }
 
+// Active length of each row of P: the last basis entry any integral of that component touches.
+void setActiveLengths(BodyInertia& in) {
+  const int nc = in.nc();
+  for (int j = 0; j < 3; ++j) {
+    int len = 1;
+    for (int i = 0; i < nc; ++i) {
+      bool used = in.m1(j, i) != 0.0;
+      for (int l = 0; l < 3 && !used; ++l) used = !in.S[3 * j + l].row(i).isZero(0) || !in.S[3 * l + j].col(i).isZero(0);
+      if (used) len = i + 1;
+    }
+    in.len[j] = len;
+  }
+}
+
 void checkInertia(const Body& b) {
   const BodyInertia& in = b.inertia;
   if (!std::isfinite(in.mass)) throw InputError(bodyWhere(b, "mass is not finite"));
@@ -208,6 +222,7 @@ void finalize(Model& m) {
   for (int i = 0; i < nb; ++i) {
     Body& b = m.bodies[i];
     checkInertia(b);
+    setActiveLengths(b.inertia);
     if (b.parent >= 0 && b.parent_point >= static_cast<int>(m.bodies[b.parent].points.size()))
       throw InputError(bodyWhere(b, "parent point index out of range"));
     if (b.parent < 0 && b.parent_point >= 0) throw InputError(bodyWhere(b, "a point on the ground is not allowed; use offset"));
