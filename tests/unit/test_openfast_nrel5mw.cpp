@@ -38,7 +38,7 @@ TEST(OpenFastNrel5mw, Fst) {
   EXPECT_EQ(f.MHK, 0);
   EXPECT_FALSE(f.NRotors.has_value());
   EXPECT_EQ(f.EDFile, in_case("NRELOffshrBsline5MW_Onshore_ElastoDyn.dat"));
-  EXPECT_EQ(f.ServoFile, in_case("onshore/ServoDyn_Simple.dat"));
+  EXPECT_EQ(f.ServoFile, in_case("NRELOffshrBsline5MW_Onshore_ServoDyn.dat"));
   EXPECT_EQ(f.AeroFile, in_case("onshore/AeroDyn.dat"));
   EXPECT_DOUBLE_EQ(whirl::io::gravity(nrel5mw()), 9.80665);
 }
@@ -200,13 +200,15 @@ TEST(OpenFastNrel5mw, Blades) {
   EXPECT_EQ(ed.blades[0].distributed.values, ed.blades[2].distributed.values);
 }
 
-TEST(OpenFastNrel5mw, SupportedAndServoDynAbsent) {
+TEST(OpenFastNrel5mw, SupportedAndServoDynYawSpring) {
   EXPECT_NO_THROW(whirl::io::require_supported(nrel5mw()));
-  // CompServo = 1 but the ServoDyn file was not shipped: an error naming the .fst line, only on request.
-  const std::string msg = whirl::test::input_error_message(
-      [] { whirl::io::read_servodyn_if_enabled(nrel5mw().fst); });
-  EXPECT_THAT(msg, HasSubstr("Main_Onshore.fst:39: ServoFile: file not found: "));
-  EXPECT_THAT(msg, HasSubstr("onshore/ServoDyn_Simple.dat"));
+  // CompServo = 1: the minimal ServoDyn file written for whirl (r-test NREL 5MW yaw spring and damper).
+  const std::optional<whirl::io::ServoDynInput> s = whirl::io::read_servodyn_if_enabled(nrel5mw().fst);
+  ASSERT_TRUE(s.has_value());
+  EXPECT_EQ(s->YCMode, 0);
+  EXPECT_DOUBLE_EQ(s->YawNeut, 0.0);
+  EXPECT_DOUBLE_EQ(s->YawSpr, 9.02832e9);
+  EXPECT_DOUBLE_EQ(s->YawDamp, 1.916e7);
 }
 
 TEST(OpenFastNrel5mw, OverridesReachEveryFile) {

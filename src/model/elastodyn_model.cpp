@@ -1,0 +1,140 @@
+// buildElastoDynModel: the parts (tower, nacelle and drivetrain, blades), inputs, springs, gravity;
+// readElastoDynModel: files and overrides.
+#include "src/model/elastodyn_model.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+
+#include "src/io/openfast_overrides.hpp"
+#include "src/io/openfast_support.hpp"
+#include "src/model/elastodyn_parts.hpp"
+#include "src/model/error.hpp"
+
+namespace whirl {
+namespace elastodyn {
+
+int Builder::addBody(Body body) {
+  model.bodies.push_back(std::move(body));
+  return static_cast<int>(model.bodies.size()) - 1;
+}
+
+int Builder::addDof(const std::string& name, int body, DofKind kind, int local, bool active, double value,
+                    double rate) {
+  Dof d;
+  d.name = name;
+  d.kind = kind;
+  d.body = body;
+  d.local = local;
+  d.frozen = !active;
+  d.value = value;
+  d.rate = rate;
+  model.dofs.push_back(d);
+  return static_cast<int>(model.dofs.size()) - 1;
+}
+
+}  // namespace elastodyn
+
+namespace {
+
+constexpr double deg = std::numbers::pi / 180.0;
+
+double gravityOf(const io::OpenFastTurbine& t, const ElastoDynModelOptions& opt) {
+  if (opt.gravity) {
+    if (!std::isfinite(*opt.gravity)) throw InputError("gravity: not a finite number");
+    return *opt.gravity;
+  }
+  if (t.fst.Gravity) return *t.fst.Gravity;
+  if (t.elastodyn.Gravity) return *t.elastodyn.Gravity;
+  if (t.fst.source.path().empty()) return 9.80665;  // an ElastoDyn file alone (OpenFAST's default)
+  return io::gravity(t);                             // throws, naming the .fst
+}
+
+// ServoDyn's yaw spring when the yaw is free and ServoDyn is on.
+std::optional<io::ServoDynInput> yawSpring(const io::OpenFastTurbine& t, const ElastoDynModelOptions& opt) {
+  if (!opt.yaw_spring_from_servodyn || !t.elastodyn.dof.YawDOF || t.fst.CompServo == 0) return std::nullopt;
+  if (opt.servodyn) return opt.servodyn;
+  return io::read_servodyn_if_enabled(t.fst);  // InputError naming the .fst line when the file is missing
+}
+
+void addInputs(elastodyn::Builder& b, const elastodyn::TowerParts& tower, const elastodyn::DrivetrainParts& dt) {
+  Model& m = b.model;
+  auto input = [&](const char* name) {
+    m.inputs.push_back({name, 0.0});
+    return m.ninput() - 1;
+  };
+  auto load = [&](int body, int point, const Vec3& force, const Vec3& moment, bool body_frame, int in) {
+    PointLoad l;
+    l.body = body;
+    l.point = point;
+    l.force = force;
+    l.moment = moment;
+    l.body_frame = body_frame;
+    l.input = in;
+    m.point_loads.push_back(l);
+  };
+  // Generator torque on the high-speed shaft, opposing the rotation: −GBRatio·u about c1 on the
+  // generator, the reaction +GBRatio·u about c1 on the nacelle (c1 in nacelle axes).
+  const double ratio = b.ed.drivetrain.GBRatio, tilt = b.ed.config.ShftTilt * deg;
+  const int gen = input("generator torque");
+  load(dt.generator, -1, Vec3::Zero(), Vec3(-ratio, 0, 0), true, gen);
+  load(dt.nacelle, -1, Vec3::Zero(), ratio * Vec3(std::cos(tilt), 0, std::sin(tilt)), true, gen);
+  const int thrust = input("rotor thrust");
+  load(dt.hub, -1, Vec3::UnitX(), Vec3::Zero(), true, thrust);
+  const int torque = input("rotor torque");
+  load(dt.hub, -1, Vec3::Zero(), Vec3::UnitX(), true, torque);
+  const int fa = input("tower-top force");
+  load(tower.body, tower.top, Vec3::UnitX(), Vec3::Zero(), false, fa);
+  const int ss = input("tower-top side force");
+  load(tower.body, tower.top, Vec3::UnitY(), Vec3::Zero(), false, ss);
+}
+
+}  // namespace
+
+Model buildElastoDynModel(const io::OpenFastTurbine& t, const ElastoDynModelOptions& opt) {
+  io::require_supported(t);
+  const io::ElastoDynInput& ed = t.elastodyn;
+  elastodyn::Builder b{ed, opt, Model{}};
+  b.model.name = ed.source.title();
+  b.model.gravity = Vec3(0, 0, -gravityOf(t, opt));
+
+  const elastodyn::TowerParts tower = elastodyn::addTower(b);
+  const elastodyn::DrivetrainParts dt = elastodyn::addNacelleAndDrivetrain(b, tower);
+  elastodyn::addBlades(b, dt.hub);
+  addInputs(b, tower, dt);
+
+  if (ed.dof.DrTrDOF) b.model.springs.push_back({dt.drivetrain, ed.drivetrain.DTTorSpr, ed.drivetrain.DTTorDmp, 0.0});
+  if (const std::optional<io::ServoDynInput> s = yawSpring(t, opt))
+    b.model.springs.push_back({dt.yaw, s->YawSpr, s->YawDamp, s->YawNeut * deg});
+
+  finalize(b.model);
+  return std::move(b.model);
+}
+
+Model readElastoDynModel(const std::string& path, const std::vector<std::string>& overrides) {
+  ElastoDynModelOptions opt;
+  std::vector<io::KeyOverride> file_overrides;
+  for (const std::string& text : overrides) {
+    io::KeyOverride o = io::parse_override(text);
+    if (io::to_lower(o.key) == "gravity") {  // a whirl option, whichever file has (or lacks) Gravity
+      const std::optional<double> g = io::parse_fortran_double(o.value);
+      if (!g || !std::isfinite(*g)) throw InputError("--set '" + text + "': gravity: not a finite number");
+      opt.gravity = *g;
+      continue;
+    }
+    file_overrides.push_back(std::move(o));
+  }
+  io::OverrideSet set(std::move(file_overrides));
+  const std::filesystem::path p(path);
+  io::OpenFastTurbine t;
+  if (io::to_lower(p.extension().string()) == ".fst")
+    t = io::read_openfast_turbine(p, &set);
+  else
+    t.elastodyn = io::read_elastodyn(p, &set);
+  if (opt.yaw_spring_from_servodyn && t.elastodyn.dof.YawDOF && t.fst.CompServo != 0)
+    opt.servodyn = io::read_servodyn_if_enabled(t.fst, &set);
+  set.require_all_used();
+  return buildElastoDynModel(t, opt);
+}
+
+}  // namespace whirl

@@ -1,0 +1,84 @@
+#pragma once
+/// \file
+/// The ElastoDyn-equivalent turbine, built from whirl's bodies and joints (no closed-form equations):
+/// the same DOFs, shapes, masses and geometry as ElastoDyn, so that linearizing it reproduces
+/// ElastoDyn's structural model.
+///
+/// Frames (all right-handed, SI units, angles in radians inside):
+/// - ground = OpenFAST's inertial frame: X downwind, Y to the left looking downwind, Z up; gravity
+///   (0, 0, −g); the tower base sits at (0, 0, TowerBsHt).
+/// - tower beam body: x up the tower axis, y = −Y (ElastoDyn's a3: side-to-side), z = X (fore-aft);
+///   "tower FA k" displaces the top along +X, "tower SS k" along −Y, as ElastoDyn's TFA/TSS DOFs.
+/// - yaw bearing (YawBrMass) and nacelle at the tower top; nacelle = ground axes turned by the yaw
+///   about Z (ElastoDyn's d1 = x, d2 = z, d3 = −y); NacMass at (NacCMxn, NacCMyn, NacCMzn), inertia
+///   NacYIner about the yaw axis only (ElastoDyn's nacelle has no other inertia).
+/// - generator: at (0, 0, Twr2Shft) of the nacelle, shaft frame x = c1 = (cos ShftTilt, 0, sin ShftTilt)
+///   (nacelle axes turned by −ShftTilt about y); turns about x by the generator azimuth.
+/// - hub: at OverHang along x from the generator (the rotor apex, ElastoDyn's point Q), turns about x by
+///   the drivetrain twist; HubMass at HubCM along x, HubIner about x.
+/// - blade k: root at HubRad along the coned axis i3, body x = i3 (ElastoDyn's j3), y = j1 (out of
+///   plane), z = j2 (in plane); azimuth offset 2π(k−1)/3 about the shaft, PreCone about the hub y,
+///   pitch (frozen joint, value BlPitch) about −x. See elastodyn_blade_shapes.hpp for the shapes.
+///
+/// DOFs (names as the field uses them; a switched-off DOF stays in the model, frozen at its value):
+///   "tower FA 1", "tower SS 1", "tower FA 2", "tower SS 2" [m, tower-top deflection];
+///   "yaw" [rad, value NacYaw]; "generator azimuth" [rad, LSS side, value Azimuth − AzimB1Up, so
+///   0 = blade 1 up; rate RotSpeed; `rotating`]; "drivetrain" [rad, rotor minus generator azimuth];
+///   "blade k pitch" [rad, always frozen]; "blade k flap 1", "blade k edge 1", "blade k flap 2"
+///   [m, tip deflection of the polynomial mode].
+/// Inputs (value 0): "generator torque" [N m, high-speed shaft, opposing the rotation: −GBRatio·u on the
+/// generator about x, +GBRatio·u on the nacelle]; "rotor thrust" [N, along the shaft on the hub];
+/// "rotor torque" [N m, about the shaft on the hub, in the direction of rotation]; "tower-top force"
+/// [N, ground X at the tower top]; "tower-top side force" [N, ground Y at the tower top].
+/// Springs: yaw (YawSpr, YawDamp about YawNeut, from ServoDyn), drivetrain (DTTorSpr, DTTorDmp).
+///
+/// ElastoDyn conventions kept on purpose: the tower top sits at the tower DOF values themselves (not at
+/// the polynomials' tip values, which need not sum to exactly 1); the blades' twisted shapes come from
+/// ElastoDyn's node rule; the nacelle has inertia about the yaw axis only; the hub about the shaft only.
+///
+/// Differences from ElastoDyn:
+/// - The generator. ElastoDyn's generator kinetic energy is ½ GenIner (ω_c + GBRatio θ̇)², whirl's, a body
+///   turning with the low-speed-shaft azimuth θ, ½ J (ω_c + θ̇)² (ω_c: nacelle angular velocity about the
+///   shaft). With GenDOF on, J = GenIner·GBRatio²: the θ̇² term is ElastoDyn's, but the nacelle-roll
+///   terms are not (J instead of GenIner on ω_c², J instead of GenIner·GBRatio on ω_c θ̇), which moves
+///   the tower side-to-side modes. With GenDOF off (θ̇ = Ω prescribed), J = GenIner: the ω_c² term is
+///   exact, the gyroscopic one GenIner·Ω instead of GenIner·GBRatio·Ω (< 0.2 % of the rotor's for the
+///   NREL 5MW). Matching ElastoDyn with GenDOF on needs a geared joint (one coordinate turning two
+///   bodies at ratios 1 and GBRatio), which the engine does not have yet.
+/// - The axial shortening ∫ ν'·ν' of tower and blades is integrated with fine Gauss quadrature of the
+///   shapes' slopes (ElastoDyn: its node rule), a difference of order ΔR².
+/// - GBoxEff is not applied to the generator torque.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "src/io/openfast_turbine.hpp"
+#include "src/model/model.hpp"
+
+namespace whirl {
+
+struct ElastoDynModelOptions {
+  /// Yaw spring and damper from ServoDyn (YawSpr, YawDamp, YawNeut) when CompServo = 1 and YawDOF is on.
+  bool yaw_spring_from_servodyn = true;
+  /// The ServoDyn input to use (e.g. read with overrides); read from the .fst's ServoFile when absent and needed.
+  std::optional<io::ServoDynInput> servodyn;
+  /// Gravity [m/s²]; default: the .fst's (or ElastoDyn v1.0x's) Gravity, 9.80665 for an ElastoDyn file alone.
+  std::optional<double> gravity;
+  /// Blade nodes when the ElastoDyn file has no BldNodes (v1.00–v1.01 took them from AeroDyn); 0 = required.
+  int blade_nodes = 0;
+  /// Axial shortening of tower and blades (the geometric stiffness of gravity and centrifugal loads).
+  bool axial_shortening = true;
+};
+
+/// Builds and finalizes the model of the turbine read from an OpenFAST .fst (or an ElastoDyn .dat alone:
+/// then `turbine.fst` is default-constructed, with an empty path and CompServo = 0).
+/// Throws InputError naming file, line and key for unsupported options (io::require_supported), a
+/// missing ServoDyn file when the yaw spring is needed, or inconsistent values.
+Model buildElastoDynModel(const io::OpenFastTurbine& turbine, const ElastoDynModelOptions& opt = {});
+
+/// Reads `fst_or_dat_path` (a `.fst`, or any other name: an ElastoDyn main file) with KEY=VALUE
+/// overrides applied to every file read; `gravity=<m/s²>` (any case) is a whirl option instead.
+/// Every override must be used by some file read. Throws InputError naming file, line and key.
+Model readElastoDynModel(const std::string& fst_or_dat_path, const std::vector<std::string>& overrides = {});
+
+}  // namespace whirl

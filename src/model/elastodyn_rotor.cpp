@@ -1,0 +1,75 @@
+// The three ElastoDyn blades on the hub (ElastoDyn `SetCoordSy`: frames g', i (cone), j (pitch)).
+#include <cmath>
+#include <numbers>
+
+#include "src/model/elastodyn_blade_shapes.hpp"
+#include "src/model/elastodyn_parts.hpp"
+#include "src/model/error.hpp"
+
+namespace whirl::elastodyn {
+namespace {
+
+constexpr double pi = std::numbers::pi;
+constexpr double deg = pi / 180.0;
+
+}  // namespace
+
+Mat3 axisRotation(int axis, double angle) { return Eigen::AngleAxisd(angle, Vec3::Unit(axis)).toRotationMatrix(); }
+
+void addBlades(Builder& b, int hub) {
+  const io::ElastoDynInput& ed = b.ed;
+  const io::ElastoDynConfiguration& c = ed.config;
+  const int nodes = ed.BldNodes.value_or(b.opt.blade_nodes);
+  if (!ed.BldNodes && nodes < 1)
+    throw InputError(b.where("BldNodes", "not in this file (ElastoDyn v1.00–v1.01 took the blade nodes from "
+                                         "AeroDyn): set ElastoDynModelOptions::blade_nodes"));
+  if (nodes < 1) throw InputError(b.where("BldNodes", "must be at least 1"));
+  const double L = c.TipRad - c.HubRad;
+  // Blade body axes in the pitched frame j: x = j3 (span), y = j1 (out of plane), z = j2 (in plane).
+  Mat3 span_first;
+  span_first.col(0) = Vec3::UnitZ();
+  span_first.col(1) = Vec3::UnitX();
+  span_first.col(2) = Vec3::UnitY();
+  const bool on[3] = {ed.dof.FlapDOF1, ed.dof.EdgeDOF, ed.dof.FlapDOF2};
+
+  for (int k = 0; k < 3; ++k) {
+    const std::string name = "blade " + std::to_string(k + 1);
+    const io::ElastoDynBlade& file = ed.blades.at(static_cast<std::size_t>(k));
+    const double tip_mass = ed.mass.TipMass[static_cast<std::size_t>(k)];
+    const ElastoDynBladeBeam beam = elastoDynBladeBeam(file, L, nodes, tip_mass);
+    BeamOptions o;
+    o.integration = {BeamIntegration::Midpoint, nodes};
+    o.axial_shortening = b.opt.axial_shortening;
+    const BeamBody bb = buildBeamBody(beam.props, beam.shapes, o, name);
+
+    // Hub frame (x = shaft, blade 1 along z at zero azimuth) → blade k's azimuth (about x) → cone
+    // (about y, ElastoDyn's i frame: i3 = sin β g1' + cos β g3') → span-first body axes; the pitch joint
+    // turns about −x (ElastoDyn: j1 = cos θ i1 − sin θ i2).
+    const Mat3 coned = axisRotation(0, 2 * pi * k / 3) * axisRotation(1, c.PreCone[static_cast<std::size_t>(k)] * deg);
+    Body bl;
+    bl.name = name;
+    bl.parent = hub;
+    bl.offset = c.HubRad * coned.col(2);
+    bl.rotation = coned * span_first;
+    bl.joint = JointType::Revolute;
+    bl.axis = -Vec3::UnitX();
+    bl.inertia = bb.inertia;
+    bl.elastic.K = applyStiffnessTuners(bb.elastic.K, beam.stiffness_tuner);
+    bl.elastic.D = elastoDynModalDamping(bl.elastic.K, beam.generalized_mass.array() - tip_mass, beam.damping_ratio);
+    bl.points.push_back(beamPoint(beam.props, beam.shapes, o.axial_shortening, L, "tip"));
+    const int body = b.addBody(std::move(bl));
+    b.addDof(name + " pitch", body, DofKind::Joint, 0, false, ed.init.BlPitch[static_cast<std::size_t>(k)] * deg);
+    for (int s = 0; s < 3; ++s) b.addDof(name + " " + beam.shapes[s]->name, body, DofKind::Elastic, s, on[s]);
+
+    if (tip_mass > 0) {
+      Body tip;
+      tip.name = name + " tip mass";
+      tip.parent = body;
+      tip.parent_point = 0;
+      tip.inertia = rigidBodyInertia(tip_mass, Vec3::Zero(), Mat3::Zero());
+      b.addBody(std::move(tip));
+    }
+  }
+}
+
+}  // namespace whirl::elastodyn

@@ -1,0 +1,92 @@
+// The ElastoDyn tower as a whirl beam body (ElastoDyn `Coeff`, tower part).
+#include <cmath>
+
+#include "src/model/elastodyn_blade_shapes.hpp"
+#include "src/model/elastodyn_parts.hpp"
+#include "src/model/error.hpp"
+#include "src/shapes/beam.hpp"
+
+namespace whirl::elastodyn {
+namespace {
+
+VecX column(const io::DistributedTable& t, const char* name, double scale) {
+  const std::vector<double>& c = t.column(name);
+  VecX v(static_cast<Eigen::Index>(c.size()));
+  for (std::size_t i = 0; i < c.size(); ++i) v(static_cast<Eigen::Index>(i)) = scale * c[i];
+  return v;
+}
+
+// Σ c_k (h/L)^k, k = 2..6, along the body direction (dy, dz).
+ShapePtr towerShape(const char* name, double L, const io::ModeShapeCoeffs& c, double dy, double dz) {
+  return polynomialShape(name, L, {0.0, 0.0, c[0], c[1], c[2], c[3], c[4]}, dy, dz);
+}
+
+}  // namespace
+
+TowerParts addTower(Builder& b) {
+  const io::ElastoDynInput& ed = b.ed;
+  const io::ElastoDynTower& tw = ed.tower;
+  const std::string file = tw.source.path().string();
+  // Tower base: TowerBsHt (OpenFAST), or −TwrDraft in ElastoDyn v1.00 files (TwrRBHt ≠ 0 is refused).
+  const double base = ed.config.TowerBsHt.value_or(-ed.config.TwrDraft.value_or(0.0));
+  const double L = ed.config.TowerHt - base;
+  if (!(L > 0))
+    throw InputError(b.where("TowerHt", "must be above the tower base (" + std::to_string(base) + " m): no flexible tower"));
+  if (ed.TwrNodes < 1) throw InputError(b.where("TwrNodes", "must be at least 1"));
+
+  BeamProperties p;
+  p.length = L;
+  p.x = column(tw.distributed, "HtFract", L);
+  p.x(p.x.size() - 1) = L;
+  p.m = column(tw.distributed, "TMassDen", tw.AdjTwMa);
+  p.EIy = column(tw.distributed, "TwSSStif", tw.AdjSSSt);  // body y = side-to-side
+  p.EIz = column(tw.distributed, "TwFAStif", tw.AdjFASt);  // body z = fore-aft
+  try {
+    validateBeam(p, "tower");
+  } catch (const InputError& e) {
+    throw InputError(file + ": " + e.what());
+  }
+  // FA shapes along body z (ground X), SS along body y (ground −Y): ElastoDyn's a1 and a3.
+  const std::vector<ShapePtr> shapes{towerShape("tower FA 1", L, tw.TwFAM1Sh, 0, 1),
+                                     towerShape("tower SS 1", L, tw.TwSSM1Sh, 1, 0),
+                                     towerShape("tower FA 2", L, tw.TwFAM2Sh, 0, 1),
+                                     towerShape("tower SS 2", L, tw.TwSSM2Sh, 1, 0)};
+  BeamOptions o;
+  o.integration = {BeamIntegration::Midpoint, ed.TwrNodes};
+  o.axial_shortening = b.opt.axial_shortening;
+  const BeamBody bb = buildBeamBody(p, shapes, o, "tower");
+
+  // ElastoDyn's tuners on the generalized stiffness, then its modal damping at the frequencies of the
+  // tower alone (generalized masses Σ m φ² ΔH, no tower-top mass).
+  VecX tuner(4), zeta(4), mass(4);
+  tuner << tw.FAStTunr[0], tw.SSStTunr[0], tw.FAStTunr[1], tw.SSStTunr[1];
+  zeta << tw.TwrFADmp[0], tw.TwrSSDmp[0], tw.TwrFADmp[1], tw.TwrSSDmp[1];
+  zeta *= 0.01;
+  for (int i = 0; i < 4; ++i) {
+    mass(i) = 0;
+    for (int k = 0; k < 3; ++k) mass(i) += bb.inertia.S[4 * k](1 + i, 1 + i);
+  }
+  Body t;
+  t.name = "tower";
+  t.offset = Vec3(0, 0, base);
+  t.rotation.col(0) = Vec3::UnitZ();   // x up the tower
+  t.rotation.col(1) = -Vec3::UnitY();  // y side-to-side (ElastoDyn a3)
+  t.rotation.col(2) = Vec3::UnitX();   // z fore-aft (downwind)
+  t.inertia = bb.inertia;
+  t.elastic.K = applyStiffnessTuners(bb.elastic.K, tuner);
+  t.elastic.D = elastoDynModalDamping(t.elastic.K, mass, zeta);
+  // ElastoDyn puts the tower top at the DOF values themselves (CalculatePositions: rZO = (q_FA1 + q_FA2) a1
+  // + (q_SS1 + q_SS2) a3 + axial shortening), not at the polynomials' tip values: the NREL 5MW SS
+  // coefficients sum to 0.9999 and 0.999. Its top rotation does use the polynomial slopes.
+  BodyPoint top = beamPoint(p, shapes, o.axial_shortening, L, "top");
+  for (int i = 0; i < 4; ++i) top.P.col(1 + i) << 0.0, i % 2 == 1 ? 1.0 : 0.0, i % 2 == 0 ? 1.0 : 0.0;
+  t.points.push_back(std::move(top));
+  TowerParts out;
+  out.body = b.addBody(std::move(t));
+  out.top = 0;
+  const bool on[4] = {ed.dof.TwFADOF1, ed.dof.TwSSDOF1, ed.dof.TwFADOF2, ed.dof.TwSSDOF2};
+  for (int i = 0; i < 4; ++i) b.addDof(shapes[i]->name, out.body, DofKind::Elastic, i, on[i]);
+  return out;
+}
+
+}  // namespace whirl::elastodyn
