@@ -1,0 +1,239 @@
+// campbell.dat and campbell.gp: the Gnuplot data and the standalone two-panel script.
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "modal/campbell_output.hpp"
+#include "src/io/csv.hpp"
+
+namespace whirl {
+
+namespace {
+
+// Colours (colour-blind friendly first, grey left for the excitation lines) and point types
+// (filled circle, square, triangle, diamond, inverted triangle, then open ones); line l uses
+// colour l mod 10 and point type l mod 9, so 90 lines are told apart.
+constexpr const char* kColours[] = {"#0072b2", "#d55e00", "#009e73", "#cc79a7", "#e69f00",
+                                    "#56b4e9", "#000000", "#8b1a1a", "#6a3d9a", "#b8a000"};
+constexpr int kPointTypes[] = {7, 5, 9, 13, 11, 6, 4, 8, 12};
+
+/// A double-quoted Gnuplot string (the terminal is noenhanced, so only \ and " need escaping).
+std::string quoted(const std::string& s) {
+  std::string q = "\"";
+  for (char c : s) {
+    if (c == '\\' || c == '"') q += '\\';
+    q += c;
+  }
+  return q + "\"";
+}
+
+/// Smallest number with two significant digits ≥ v (v > 0).
+double niceCeil(double v) {
+  const int e = static_cast<int>(std::floor(std::log10(v))) - 1;
+  const double scale = std::pow(10.0, std::abs(e));  // exact for the exponents met here
+  return e < 0 ? std::ceil(v * scale - 1e-9) / scale : std::ceil(v / scale - 1e-9) * scale;
+}
+
+double xOf(const CampbellPoint& p, const CampbellPlotOptions& opt) {
+  return opt.versus_wind_speed ? p.wind_speed.value_or(NAN) : p.rpm;
+}
+
+struct Ranges {
+  double x0 = 0, x1 = 1, fmax = 1, dmin = 0, dmax = 1;
+};
+
+Ranges ranges(const CampbellDiagram& d, const CampbellPlotOptions& opt) {
+  Ranges r;
+  double x0 = INFINITY, x1 = -INFINITY, f1 = 0, z0 = 0, z1 = 0;
+  for (const auto& p : d.points) {
+    x0 = std::min(x0, xOf(p, opt));
+    x1 = std::max(x1, xOf(p, opt));
+  }
+  for (const auto& line : d.lines)
+    for (std::size_t p = 0; p < d.points.size(); ++p) {
+      if (line.mode[p] < 0) continue;
+      const Mode& m = d.points[p].modes[line.mode[p]];
+      if (std::isfinite(m.freq_hz)) f1 = std::max(f1, m.freq_hz);
+      if (std::isfinite(m.damping_ratio)) {
+        z0 = std::min(z0, 100 * m.damping_ratio);
+        z1 = std::max(z1, 100 * m.damping_ratio);
+      }
+    }
+  if (x0 <= x1) {
+    r.x0 = x0 < x1 ? x0 : x0 - 1;
+    r.x1 = x0 < x1 ? x1 : x1 + 1;
+  }
+  r.fmax = opt.max_freq_hz > 0 ? opt.max_freq_hz : f1 > 0 ? niceCeil(1.05 * f1) : 1.0;
+  r.dmax = opt.max_damping_percent > 0 ? opt.max_damping_percent : z1 > 0 ? niceCeil(1.05 * z1) : 1.0;
+  r.dmin = z0 < 0 ? -niceCeil(-1.05 * z0) : 0.0;
+  return r;
+}
+
+/// (x, rpm) along the x axis: the axis ends versus rpm (nP lines are straight lines through 0),
+/// the operating points sorted by wind speed versus wind speed.
+std::vector<std::pair<double, double>> sweep(const CampbellDiagram& d, const CampbellPlotOptions& opt, const Ranges& r) {
+  if (!opt.versus_wind_speed) return {{r.x0, r.x0}, {r.x1, r.x1}};
+  std::vector<std::pair<double, double>> s;
+  for (const auto& p : d.points) s.emplace_back(xOf(p, opt), p.rpm);
+  std::stable_sort(s.begin(), s.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  return s;
+}
+
+/// Where the label of an nP line goes: above the frame where the line leaves it at the top, else
+/// right of the frame at the line's end. `at` is the position along that edge as a graph fraction.
+struct HarmonicLabel {
+  int n = 0;
+  bool top = false;
+  double at = 0;
+};
+
+std::optional<HarmonicLabel> harmonicLabel(int n, const std::vector<std::pair<double, double>>& s, const Ranges& r) {
+  const auto f = [&](std::size_t k) { return n * s[k].second / 60.0; };
+  const double near_top = 0.97 * r.fmax;  // a line ending this close to the top is labelled there
+  if (s.empty() || f(0) >= r.fmax) return std::nullopt;
+  for (std::size_t k = 0; k + 1 < s.size(); ++k)
+    if (f(k + 1) >= near_top && f(k) < near_top) {
+      const double x = std::min(s[k].first + (r.fmax - f(k)) / (f(k + 1) - f(k)) * (s[k + 1].first - s[k].first), r.x1);
+      return HarmonicLabel{n, true, (x - r.x0) / (r.x1 - r.x0)};
+    }
+  return HarmonicLabel{n, false, f(s.size() - 1) / r.fmax};
+}
+
+/// "set label" commands in data coordinates, labels on the same edge pushed apart (graph fraction).
+std::string harmonicLabels(std::vector<HarmonicLabel> labels, const Ranges& r) {
+  std::stable_sort(labels.begin(), labels.end(), [](const auto& a, const auto& b) { return a.at < b.at; });
+  std::string g;
+  double last_top = -1, last_right = -1;
+  for (std::size_t k = 0; k < labels.size(); ++k) {
+    auto& l = labels[k];
+    double& last = l.top ? last_top : last_right;
+    l.at = std::max(l.at, last + (l.top ? 0.035 : 0.045));
+    last = l.at;
+    const std::string text = quoted(std::to_string(l.n) + "P");
+    g += "  set label " + std::to_string(k + 1) + " " + text +
+         (l.top ? " at first " + formatNumber(r.x0 + l.at * (r.x1 - r.x0)) + ", graph 1 center offset 0, char 0.7"
+                : " at graph 1, first " + formatNumber(l.at * r.fmax) + " left offset char 0.5, 0") +
+         " tc ls 100\n";
+  }
+  return g;
+}
+
+}  // namespace
+
+std::string campbellGnuplotData(const CampbellDiagram& d) {
+  std::string s = "# Campbell diagram written by whirl, read by campbell.gp: one block per line (index 0, 1, ...)\n"
+                  "# columns: rpm, wind speed [m/s] (nan: none), frequency [Hz], damping ratio [-]\n";
+  for (std::size_t l = 0; l < d.lines.size(); ++l) {
+    const auto& line = d.lines[l];
+    s += (l ? "\n\n" : "") + std::string("# index ") + std::to_string(l) + ": " + line.name + "\n";
+    bool gap = false, any = false;
+    for (std::size_t p = 0; p < d.points.size(); ++p) {
+      if (line.mode[p] < 0) {
+        gap = any;
+        continue;
+      }
+      const auto& pt = d.points[p];
+      const Mode& m = pt.modes[line.mode[p]];
+      if (gap) s += "\n";  // one blank line: Gnuplot does not join across it
+      gap = false;
+      any = true;
+      s += formatNumber(pt.rpm) + " " + formatNumber(pt.wind_speed.value_or(NAN)) + " " + formatNumber(m.freq_hz) + " " +
+           formatNumber(m.damping_ratio) + "\n";
+    }
+  }
+  return s;
+}
+
+std::string campbellGnuplotScript(const CampbellDiagram& d, const CampbellPlotOptions& opt) {
+  const Ranges r = ranges(d, opt);
+  const auto s = sweep(d, opt, r);
+  std::string g;
+  g += "# Campbell diagram written by whirl. Run it from anywhere: gnuplot campbell.gp\n"
+       "# It reads campbell.dat next to itself and writes campbell.png and campbell.svg there\n"
+       "# (or elsewhere: gnuplot -e \"png_out='a.png'; svg_out='a.svg'\" campbell.gp).\n"
+       "# campbell.dat: one block per Campbell line, columns rpm, wind speed [m/s], frequency [Hz],\n"
+       "# damping ratio [-]; the damping panel shows it in percent.\n\n"
+       "here = ''\n"
+       "if (exists('ARG0')) { i = strlen(ARG0); while (i > 0 && ARG0[i:i] ne '/') { i = i - 1 }; "
+       "if (i > 0) { here = ARG0[1:i] } }\n"
+       "data = here.'campbell.dat'\n"
+       "if (!exists('png_out')) { png_out = here.'campbell.png' }\n"
+       "if (!exists('svg_out')) { svg_out = here.'campbell.svg' }\n\n"
+       "# Layout: page size [px], font, axes; the plots end at 'right' (screen fraction), the key follows.\n"
+       "width = 1280; height = 900; font = 'Sans,12'\n";
+  g += "xcol = " + std::string(opt.versus_wind_speed ? "2" : "1") + "   # campbell.dat column on x: 1 rotor speed, 2 wind speed\n";
+  g += "xtitle = " + quoted(opt.versus_wind_speed ? "Wind speed [m/s]" : "Rotor speed [rpm]") + "\n";
+  g += "title = " + quoted(d.title.empty() ? "Campbell diagram" : d.title) + "\n";
+  g += "# The nP labels below are placed for these ranges: move them when you change xmax or fmax.\n";
+  g += "xmin = " + formatNumber(r.x0) + "; xmax = " + formatNumber(r.x1) + "\n";
+  g += "fmax = " + formatNumber(r.fmax) + "   # top of the frequency axis [Hz]\n";
+  g += "dmin = " + formatNumber(r.dmin) + "; dmax = " + formatNumber(r.dmax) + "   # damping axis [%]\n";
+  g += "left = 0.08; right = 0.74\n\n";
+  g += "# One style per Campbell line (colour and point type); 100: excitation lines and labels.\n";
+  for (std::size_t l = 0; l < d.lines.size(); ++l)
+    g += "set style line " + std::to_string(l + 1) + " lc rgb '" + kColours[l % 10] + "' lw 2 pt " +
+         std::to_string(kPointTypes[l % 9]) + " ps 1.1   # " + d.lines[l].name + "\n";
+  g += "set style line 100 lc rgb '#777777' lw 1.2 dt (20, 12)\n\n";
+  if (opt.versus_wind_speed) {
+    g += "# Operating points (wind speed, rpm) for the nP excitation lines.\n$points << EOD\n";
+    for (const auto& [x, rpm] : s) g += formatNumber(x) + " " + formatNumber(rpm) + "\n";
+    g += "EOD\n\n";
+  }
+
+  std::string harmonics;
+  std::vector<HarmonicLabel> labels;
+  for (int n : opt.harmonics) {
+    if (d.points.empty()) break;
+    const std::string nP = std::to_string(n);
+    harmonics += (opt.versus_wind_speed ? "  $points using 1:(" + nP + "*$2/60.0)" : "  " + nP + "*x/60.0") +
+                 " with lines ls 100 notitle, \\\n";
+    if (auto l = harmonicLabel(n, s, r)) labels.push_back(*l);
+  }
+  std::string freq, damp;
+  for (std::size_t l = 0; l < d.lines.size(); ++l) {
+    const std::string idx = "data index " + std::to_string(l) + " using xcol:";
+    const std::string style = " with linespoints ls " + std::to_string(l + 1);
+    freq += "  " + idx + "3" + style + " title " + quoted(d.lines[l].name) + ", \\\n";
+    damp += "  " + idx + "(100*$4)" + style + " notitle, \\\n";
+  }
+  const auto plot = [](std::string items) {
+    if (items.empty()) return std::string("  NaN notitle\n");
+    return items.substr(0, items.size() - 4) + "\n";  // drop the last ", \"
+  };
+  g += "do for [out in 'png svg'] {\n"
+       "  if (out eq 'png') {\n"
+       "    set terminal pngcairo size width, height font font noenhanced\n"
+       "    set output png_out\n"
+       "  } else {\n"
+       "    set terminal svg size width, height font font noenhanced dynamic background rgb 'white'\n"
+       "    set output svg_out\n"
+       "  }\n"
+       "  set multiplot title title font ',15'\n"
+       "  set lmargin at screen left; set rmargin at screen right\n"
+       "  set xrange [xmin:xmax]\n"
+       "  set grid back lt 1 lc rgb '#dddddd' lw 1\n"
+       "  set border lw 1\n"
+       "  set mxtics 2\n"
+       "  # Top: natural frequencies with the nP lines, key to the right of the plots.\n"
+       "  set tmargin at screen 0.91; set bmargin at screen 0.40\n"
+       "  set format x ''; unset xlabel\n"
+       "  set ylabel 'Frequency [Hz]'\n"
+       "  set yrange [0:fmax]\n"
+       "  set key at screen right + 0.045, screen 0.91 left top Left reverse samplen 3 spacing 1.15 "
+       "title 'Mode' noautotitle\n";
+  g += harmonicLabels(labels, r);
+  g += "  plot \\\n" + plot(harmonics + freq);
+  g += "  # Bottom: damping ratio in percent.\n"
+       "  unset label; unset key\n"
+       "  set tmargin at screen 0.37; set bmargin at screen 0.08\n"
+       "  set format x '% g'; set xlabel xtitle\n"
+       "  set ylabel 'Damping ratio [%]'\n"
+       "  set yrange [dmin:dmax]\n";
+  g += "  plot \\\n" + plot(damp);
+  g += "  unset multiplot\n"
+       "  set output\n"
+       "}\n";
+  return g;
+}
+
+}  // namespace whirl
