@@ -15,10 +15,23 @@ struct Coordinate {
   MbcCoordinate kind;
 };
 
-// Names the mode from the coordinate group with the largest energy share.
-void nameRotorMode(Mode& mode, const std::vector<Coordinate>& coords, double rotor_speed) {
-  std::map<std::string, double> share;
-  for (size_t i = 0; i < coords.size(); ++i) share[coords[i].group] += mode.participation(i);
+// A mode this slow and carried by an azimuth is the rotor turning as a whole, not a vibration: the
+// multiblade average leaves it a residual frequency of order 1e-4 Hz.
+constexpr double kRigidAzimuthHz = 5e-3;
+
+// Names the mode from the coordinate group with the largest energy share. A vibration dominated
+// by an azimuth (a free generator turning against the rotor) is named after its next group, e.g.
+// "drivetrain".
+void nameRotorMode(Mode& mode, const std::vector<Coordinate>& coords, const std::vector<bool>& azimuth,
+                   double rotor_speed) {
+  std::map<std::string, double> share, azimuth_share;
+  for (size_t i = 0; i < coords.size(); ++i) (azimuth[i] ? azimuth_share : share)[coords[i].group] += mode.participation(i);
+  double az = 0;
+  for (const auto& [g, v] : azimuth_share) az += v;
+  if (share.empty() || (mode.freq_hz < kRigidAzimuthHz && az > 0.5)) {
+    mode.rigid_body = true;
+    share = azimuth_share;
+  }
   const auto best = std::max_element(share.begin(), share.end(), [](auto& a, auto& b) { return a.second < b.second; });
   const std::string& group = best->first;
   int collective = -1, cosine = -1, sine = -1;
@@ -123,7 +136,9 @@ RotorModes rotorModes(const Model& m, const PeriodicLinearization& p) {
   for (int i = 0; i < n; ++i)
     out.coordinates[i] = blade[i] < 0 ? coords[i].group : coords[i].group + " " + toString(coords[i].kind);
   out.modes = modesFromEigen(eigenStandard(mbc.A), n, weights, out.coordinates);
-  for (auto& mode : out.modes) nameRotorMode(mode, coords, p.rotor_speed);
+  std::vector<bool> azimuth(n);
+  for (int i = 0; i < n; ++i) azimuth[i] = m.dofs[first.dofs[i]].rotating;
+  for (auto& mode : out.modes) nameRotorMode(mode, coords, azimuth, p.rotor_speed);
   return out;
 }
 

@@ -8,4 +8,5 @@ class App;
 namespace whirl::cli {
 void addLinearizeCommand(CLI::App& app);
 void addModesCommand(CLI::App& app);
+void addCampbellCommand(CLI::App& app);
 }  // namespace whirl::cli

@@ -5,14 +5,17 @@
 #include <numbers>
 
 #include "src/io/case_file.hpp"
+#include "src/model/elastodyn_model.hpp"
 #include "src/model/error.hpp"
 
 namespace whirl::cli {
 
-void addModelOptions(CLI::App& cmd, ModelOptions& opt) {
-  cmd.add_option("CASE", opt.case_path, "case file (YAML)")->required();
-  cmd.add_option("--set", opt.sets, "override a scalar of the case, KEY=VALUE (repeatable)");
-  cmd.add_option("--rpm", opt.rpm, "rotor speed [rpm]: the rate of every DOF marked rotating");
+void addModelOptions(CLI::App& cmd, ModelOptions& opt, bool with_rpm) {
+  cmd.add_option("CASE", opt.case_path, "case: YAML case file, OpenFAST .fst or ElastoDyn .dat")->required();
+  cmd.add_option("--set", opt.sets,
+                 "override KEY=VALUE (repeatable): a dotted path of the YAML case, or an OpenFAST key; "
+                 "gravity=G for both");
+  if (with_rpm) cmd.add_option("--rpm", opt.rpm, "rotor speed [rpm]: the rate of every DOF marked rotating");
 }
 
 void setRotorSpeed(Model& m, double rpm) {
@@ -25,10 +28,20 @@ void setRotorSpeed(Model& m, double rpm) {
   if (!any) throw InputError("--rpm: the model has no rotating DOF (mark the azimuth with `rotating: true`)");
 }
 
+bool isYamlCase(const std::string& path) {
+  const std::string ext = std::filesystem::path(path).extension().string();
+  return ext == ".yaml" || ext == ".yml";
+}
+
 Model loadModel(const ModelOptions& opt) {
-  std::vector<CaseOverride> overrides;
-  for (const auto& s : opt.sets) overrides.push_back(parseOverride(s));
-  Model m = readCase(opt.case_path, overrides);
+  Model m;
+  if (isYamlCase(opt.case_path)) {
+    std::vector<CaseOverride> overrides;
+    for (const auto& s : opt.sets) overrides.push_back(parseOverride(s));
+    m = readCase(opt.case_path, overrides);
+  } else {
+    m = readElastoDynModel(opt.case_path, opt.sets);
+  }
   if (opt.rpm) setRotorSpeed(m, *opt.rpm);
   return m;
 }

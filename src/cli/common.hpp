@@ -21,10 +21,11 @@ struct ModelOptions {
   std::optional<double> rpm;
 };
 
-/// Registers CASE, --set and --rpm on a subcommand.
-void addModelOptions(CLI::App& cmd, ModelOptions& opt);
+/// Registers CASE, --set and (when with_rpm) --rpm on a subcommand.
+void addModelOptions(CLI::App& cmd, ModelOptions& opt, bool with_rpm = true);
 
-/// Loads the case (YAML case file), applies --set, then --rpm to every rotating coordinate.
+/// Loads the case — a YAML case file (.yaml, .yml), or an OpenFAST .fst / ElastoDyn .dat — applies
+/// --set, then --rpm to every rotating coordinate.
 Model loadModel(const ModelOptions& opt);
 
 /// Sets the rate of every rotating coordinate to rpm; InputError when the model has none.

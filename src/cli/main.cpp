@@ -11,6 +11,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", WHIRL_VERSION);
   whirl::cli::addLinearizeCommand(app);
   whirl::cli::addModesCommand(app);
+  whirl::cli::addCampbellCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -186,8 +186,13 @@ void forwardKinematics(const Model& m, Workspace<T>& ws, const VecXT<T>& q, cons
         case ChainStep::ConstRotate: f.R = f.R * st.rot.cast<T>(); break;
         case ChainStep::AxisRotate: {
           const Vec3T<T> nw = f.R * st.vec.cast<T>();
-          f.Jw.col(st.dof) += nw;
-          detail::rotate(f, st.vec, q(st.dof), qd(st.dof), qdd(st.dof));
+          if (st.ratio == 1.0) {
+            f.Jw.col(st.dof) += nw;
+            detail::rotate(f, st.vec, q(st.dof), qd(st.dof), qdd(st.dof));
+          } else {
+            f.Jw.col(st.dof) += nw * st.ratio;
+            detail::rotate(f, st.vec, T(st.ratio * q(st.dof)), T(st.ratio * qd(st.dof)), T(st.ratio * qdd(st.dof)));
+          }
           break;
         }
         case ChainStep::AxisTranslate: {

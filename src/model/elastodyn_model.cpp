@@ -73,12 +73,13 @@ void addInputs(elastodyn::Builder& b, const elastodyn::TowerParts& tower, const 
     l.input = in;
     m.point_loads.push_back(l);
   };
-  // Generator torque on the high-speed shaft, opposing the rotation: −GBRatio·u about c1 on the
-  // generator, the reaction +GBRatio·u about c1 on the nacelle (c1 in nacelle axes).
-  const double ratio = b.ed.drivetrain.GBRatio, tilt = b.ed.config.ShftTilt * deg;
+  // Generator torque u on the high-speed shaft, opposing the rotation: −u about c1 on the geared
+  // generator rotor (−GBRatio·u on the generator azimuth), +u on the stator, the nacelle (c1 in
+  // nacelle axes). The gearbox's own reaction comes through the geared joint.
+  const double tilt = b.ed.config.ShftTilt * deg;
   const int gen = input("generator torque");
-  load(dt.generator, -1, Vec3::Zero(), Vec3(-ratio, 0, 0), true, gen);
-  load(dt.nacelle, -1, Vec3::Zero(), ratio * Vec3(std::cos(tilt), 0, std::sin(tilt)), true, gen);
+  load(dt.generator, -1, Vec3::Zero(), Vec3(-1, 0, 0), true, gen);
+  load(dt.nacelle, -1, Vec3::Zero(), Vec3(std::cos(tilt), 0, std::sin(tilt)), true, gen);
   const int thrust = input("rotor thrust");
   load(dt.hub, -1, Vec3::UnitX(), Vec3::Zero(), true, thrust);
   const int torque = input("rotor torque");

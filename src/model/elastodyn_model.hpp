@@ -12,8 +12,9 @@
 /// - yaw bearing (YawBrMass) and nacelle at the tower top; nacelle = ground axes turned by the yaw
 ///   about Z (ElastoDyn's d1 = x, d2 = z, d3 = −y); NacMass at (NacCMxn, NacCMyn, NacCMzn), inertia
 ///   NacYIner about the yaw axis only (ElastoDyn's nacelle has no other inertia).
-/// - generator: at (0, 0, Twr2Shft) of the nacelle, shaft frame x = c1 = (cos ShftTilt, 0, sin ShftTilt)
-///   (nacelle axes turned by −ShftTilt about y); turns about x by the generator azimuth.
+/// - low-speed shaft: at (0, 0, Twr2Shft) of the nacelle, shaft frame x = c1 = (cos ShftTilt, 0,
+///   sin ShftTilt) (nacelle axes turned by −ShftTilt about y); turns about x by the generator azimuth.
+/// - generator: same place and axes, turns by GBRatio × the generator azimuth (geared), GenIner about x.
 /// - hub: at OverHang along x from the generator (the rotor apex, ElastoDyn's point Q), turns about x by
 ///   the drivetrain twist; HubMass at HubCM along x, HubIner about x.
 /// - blade k: root at HubRad along the coned axis i3, body x = i3 (ElastoDyn's j3), y = j1 (out of
@@ -37,14 +38,8 @@
 /// ElastoDyn's node rule; the nacelle has inertia about the yaw axis only; the hub about the shaft only.
 ///
 /// Differences from ElastoDyn:
-/// - The generator. ElastoDyn's generator kinetic energy is ½ GenIner (ω_c + GBRatio θ̇)², whirl's, a body
-///   turning with the low-speed-shaft azimuth θ, ½ J (ω_c + θ̇)² (ω_c: nacelle angular velocity about the
-///   shaft). With GenDOF on, J = GenIner·GBRatio²: the θ̇² term is ElastoDyn's, but the nacelle-roll
-///   terms are not (J instead of GenIner on ω_c², J instead of GenIner·GBRatio on ω_c θ̇), which moves
-///   the tower side-to-side modes. With GenDOF off (θ̇ = Ω prescribed), J = GenIner: the ω_c² term is
-///   exact, the gyroscopic one GenIner·Ω instead of GenIner·GBRatio·Ω (< 0.2 % of the rotor's for the
-///   NREL 5MW). Matching ElastoDyn with GenDOF on needs a geared joint (one coordinate turning two
-///   bodies at ratios 1 and GBRatio), which the engine does not have yet.
+/// - (none for the generator: it is a body geared to the generator azimuth at GBRatio, so its kinetic
+///   energy ½ GenIner (ω_c + GBRatio θ̇)² is ElastoDyn's with GenDOF on or off.)
 /// - The axial shortening ∫ ν'·ν' of tower and blades is integrated with fine Gauss quadrature of the
 ///   shapes' slopes (ElastoDyn: its node rule), a difference of order ΔR².
 /// - GBoxEff is not applied to the generator torque.

@@ -51,11 +51,23 @@ DrivetrainParts addNacelleAndDrivetrain(Builder& b, const TowerParts& tower) {
   out.nacelle = b.addBody(std::move(nac));
   out.yaw = b.addDof("yaw", out.nacelle, DofKind::Joint, 0, ed.dof.YawDOF, ed.init.NacYaw * deg);
 
-  // Generator: on the shaft axis c1 = (cos ShftTilt, 0, sin ShftTilt) where it meets the yaw axis,
-  // Twr2Shft above the tower top; turns with the low-speed-shaft azimuth (see elastodyn_model.hpp for
-  // its inertia).
-  const double ratio = ed.drivetrain.GBRatio;
-  const double Jgen = ed.dof.GenDOF ? m.GenIner * ratio * ratio : m.GenIner;
+  // Low-speed shaft: on the shaft axis c1 = (cos ShftTilt, 0, sin ShftTilt) where it meets the yaw
+  // axis, Twr2Shft above the tower top; turns with the generator azimuth (LSS side), massless.
+  Body lss;
+  lss.name = "low-speed shaft";
+  lss.parent = out.nacelle;
+  lss.offset = Vec3(0, 0, c.Twr2Shft);
+  lss.rotation = axisRotation(1, -c.ShftTilt * deg);
+  lss.joint = JointType::Revolute;
+  lss.axis = Vec3::UnitX();
+  lss.inertia = rigidBodyInertia(0.0, Vec3::Zero(), Mat3::Zero());
+  out.shaft = b.addBody(std::move(lss));
+  // Azimuth 0 = blade 1 up (ElastoDyn's internal azimuth is this minus 90°); AzimB1Up is I/O only.
+  out.generator_azimuth = b.addDof("generator azimuth", out.shaft, DofKind::Joint, 0, ed.dof.GenDOF,
+                                   (ed.init.Azimuth - c.AzimB1Up) * deg, ed.init.RotSpeed * std::numbers::pi / 30.0);
+  b.model.dofs[out.generator_azimuth].rotating = true;
+  // Generator on the high-speed shaft, geared to the generator azimuth at GBRatio: its kinetic energy
+  // ½ GenIner (ω_c + GBRatio θ̇)² is ElastoDyn's, nacelle roll and gyroscopic terms included.
   Body gen;
   gen.name = "generator";
   gen.parent = out.nacelle;
@@ -63,17 +75,15 @@ DrivetrainParts addNacelleAndDrivetrain(Builder& b, const TowerParts& tower) {
   gen.rotation = axisRotation(1, -c.ShftTilt * deg);
   gen.joint = JointType::Revolute;
   gen.axis = Vec3::UnitX();
-  gen.inertia = rigidBodyInertia(0.0, Vec3::Zero(), Mat3(Vec3(Jgen, 0, 0).asDiagonal()));
+  gen.joint_follows = out.shaft;
+  gen.joint_ratio = ed.drivetrain.GBRatio;
+  gen.inertia = rigidBodyInertia(0.0, Vec3::Zero(), Mat3(Vec3(m.GenIner, 0, 0).asDiagonal()));
   out.generator = b.addBody(std::move(gen));
-  // Azimuth 0 = blade 1 up (ElastoDyn's internal azimuth is this minus 90°); AzimB1Up is I/O only.
-  out.generator_azimuth = b.addDof("generator azimuth", out.generator, DofKind::Joint, 0, ed.dof.GenDOF,
-                                   (ed.init.Azimuth - c.AzimB1Up) * deg, ed.init.RotSpeed * std::numbers::pi / 30.0);
-  b.model.dofs[out.generator_azimuth].rotating = true;
 
   // Hub at the rotor apex (OverHang along the shaft), turning by the drivetrain twist.
   Body hub;
   hub.name = "hub";
-  hub.parent = out.generator;
+  hub.parent = out.shaft;
   hub.offset = Vec3(c.OverHang, 0, 0);
   hub.joint = JointType::Revolute;
   hub.axis = Vec3::UnitX();

@@ -35,7 +35,7 @@ struct TowerParts {
 TowerParts addTower(Builder& b);
 
 struct DrivetrainParts {
-  int nacelle = -1, generator = -1, hub = -1;  ///< bodies
+  int nacelle = -1, shaft = -1, generator = -1, hub = -1;  ///< bodies (shaft: low-speed side; generator: HSS)
   int yaw = -1, generator_azimuth = -1, drivetrain = -1;  ///< DOFs
 };
 

@@ -59,7 +59,10 @@ void addBlades(Builder& b, int hub) {
     bl.points.push_back(beamPoint(beam.props, beam.shapes, o.axial_shortening, L, "tip"));
     const int body = b.addBody(std::move(bl));
     b.addDof(name + " pitch", body, DofKind::Joint, 0, false, ed.init.BlPitch[static_cast<std::size_t>(k)] * deg);
-    for (int s = 0; s < 3; ++s) b.addDof(name + " " + beam.shapes[s]->name, body, DofKind::Elastic, s, on[s]);
+    for (int s = 0; s < 3; ++s) {
+      const int d = b.addDof(name + " " + beam.shapes[s]->name, body, DofKind::Elastic, s, on[s]);
+      b.model.dofs[d].blade = k;  // rotating frame, blade k: multiblade coordinates
+    }
 
     if (tip_mass > 0) {
       Body tip;

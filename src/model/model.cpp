@@ -138,7 +138,10 @@ std::vector<ChainStep> buildChain(const Model& m, int i) {
   };
   switch (b.joint) {
     case JointType::Fixed: break;
-    case JointType::Revolute: axisStep(ChainStep::AxisRotate, b.axis, b.joint_dof); break;
+    case JointType::Revolute:
+      axisStep(ChainStep::AxisRotate, b.axis, b.joint_dof);
+      steps.back().ratio = b.joint_ratio;
+      break;
     case JointType::Prismatic: axisStep(ChainStep::AxisTranslate, b.axis, b.joint_dof); break;
     case JointType::Free:
       // Translations along the joint-frame axes, then yaw (z), pitch (y'), roll (x'').
@@ -197,6 +200,9 @@ void finalize(Model& m) {
   for (int k = 0; k < nb; ++k) {
     sorted.push_back(std::move(m.bodies[order[k]]));
     if (sorted.back().parent >= 0) sorted.back().parent = new_index[sorted.back().parent];
+    Body& nb_ = sorted.back();
+    if (nb_.joint_follows >= nb) throw InputError(bodyWhere(nb_, "geared joint follows a body that does not exist"));
+    if (nb_.joint_follows >= 0) nb_.joint_follows = new_index[nb_.joint_follows];
   }
   m.bodies = std::move(sorted);
   for (auto& d : m.dofs) {
@@ -249,7 +255,7 @@ void finalize(Model& m) {
       dofs.push_back(d);
       return static_cast<int>(dofs.size()) - 1;
     };
-    const int nj = jointDofCount(b.joint);
+    const int nj = b.joint_follows >= 0 ? 0 : jointDofCount(b.joint);
     b.joint_dof = nj > 0 ? static_cast<int>(dofs.size()) : -1;
     for (int k = 0; k < nj; ++k) place(DofKind::Joint, k, b.name + " joint " + std::to_string(k + 1));
     b.elastic_dof = b.inertia.ne > 0 ? static_cast<int>(dofs.size()) : -1;
@@ -279,6 +285,15 @@ void finalize(Model& m) {
   for (const auto& l : m.dof_loads)
     if (l.input >= m.ninput()) throw InputError("DOF load: no such input");
 
+  // Geared joints take the coordinate of the joint they follow.
+  for (Body& b : m.bodies) {
+    if (b.joint_follows < 0) continue;
+    const Body& f = m.bodies[b.joint_follows];
+    if (b.joint != JointType::Revolute || f.joint != JointType::Revolute || f.joint_follows >= 0)
+      throw InputError(bodyWhere(b, "a geared joint must be revolute and follow a revolute joint with its own coordinate"));
+    if (!std::isfinite(b.joint_ratio)) throw InputError(bodyWhere(b, "gear ratio is not finite"));
+    b.joint_dof = f.joint_dof;
+  }
   m.chains.assign(nb, {});
   m.support.assign(nb, {});
   for (int i = 0; i < nb; ++i) {
@@ -291,7 +306,7 @@ void finalize(Model& m) {
       if (b.parent_point >= 0)
         for (int k = 0; k < p.inertia.ne; ++k) s.insert(p.elastic_dof + k);
     }
-    for (int k = 0; k < jointDofCount(b.joint); ++k) s.insert(b.joint_dof + k);
+    for (int k = 0; k < jointDofCount(b.joint); ++k) s.insert(b.joint_dof + k);  // own or geared
     m.support[i].assign(s.begin(), s.end());
   }
 }

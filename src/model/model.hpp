@@ -43,6 +43,10 @@ struct Body {
   Mat3 rotation = Mat3::Identity();   ///< attachment frame → joint frame (columns: joint axes)
   JointType joint = JointType::Fixed;
   Vec3 axis = Vec3::UnitX();          ///< revolute/prismatic axis, joint frame (unit)
+  /// Gear: a revolute joint driven by the revolute coordinate of body `joint_follows` (no coordinate
+  /// of its own): angle = joint_ratio × q, e.g. a high-speed-shaft generator at the gearbox ratio.
+  int joint_follows = -1;
+  double joint_ratio = 1.0;
   int joint_dof = -1;     ///< index of the first joint coordinate (finalize)
   int elastic_dof = -1;   ///< index of the first elastic coordinate (finalize)
   BodyInertia inertia;
@@ -99,6 +103,7 @@ struct ChainStep {
   Vec3 vec = Vec3::Zero();  ///< ConstTranslate: offset; Axis*: unit axis
   Mat3 rot = Mat3::Identity();
   int dof = -1;    ///< Axis*: the joint coordinate
+  double ratio = 1.0;  ///< AxisRotate: angle = ratio × q (gears)
 };
 
 struct Model {

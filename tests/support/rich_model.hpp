@@ -127,6 +127,18 @@ inline Model richModel(bool axial_shortening = true) {
     bl.points.push_back(beamPoint(bp, bs, axial_shortening, 61.5, "tip"));
     m.bodies.push_back(bl);
   }
+  // High-speed-shaft generator geared to the azimuth (a coordinate shared by two bodies).
+  Body gen;
+  gen.name = "generator";
+  gen.parent = 2;
+  gen.parent_point = 0;
+  gen.rotation = hub.rotation;
+  gen.joint = JointType::Revolute;
+  gen.axis = Vec3::UnitX();
+  gen.joint_follows = 3;
+  gen.joint_ratio = 97.0;
+  gen.inertia = rigidBodyInertia(100.0, Vec3(0.2, 0.01, 0), Mat3(Vec3(534.1, 300, 300).asDiagonal()));
+  m.bodies.push_back(gen);
   auto dof = [&](const std::string& name, int body, DofKind kind, int local) {
     Dof d;
     d.name = name;

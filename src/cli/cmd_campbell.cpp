@@ -1,0 +1,89 @@
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+
+#include "modal/campbell_output.hpp"
+#include "modal/campbell_sweep.hpp"
+#include "modal/tracking.hpp"
+#include "src/cli/commands.hpp"
+#include "src/cli/common.hpp"
+#include "src/io/atomic_file.hpp"
+#include "src/io/schedule.hpp"
+#include "src/model/error.hpp"
+
+namespace whirl::cli {
+namespace {
+
+struct CampbellOptions {
+  ModelOptions model;
+  std::string rpm_range, schedule, out, tracking;
+  int azimuths = 36;
+  std::string versus = "auto";
+  double max_freq = 0;
+  bool no_plot = false;
+};
+
+void run(const CampbellOptions& opt) {
+  if (opt.rpm_range.empty() == opt.schedule.empty())
+    throw InputError("campbell: give exactly one of --rpm START:STEP:STOP and --schedule FILE");
+  const std::vector<SweepPoint> points = opt.schedule.empty() ? rpmRange(opt.rpm_range) : readSchedule(opt.schedule);
+  const Model m = loadModel(opt.model);
+  const std::string dir = opt.out.empty() ? defaultOutputFolder(opt.model.case_path) : opt.out;
+  ensureWritableFolder(dir);
+
+  SweepOptions sweep;
+  sweep.azimuths = opt.azimuths;
+  const auto start = std::chrono::steady_clock::now();
+  bool printed = false;
+  sweep.progress = [&](int done, int total) {
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (s < 1.0 && !printed) return;  // short sweeps stay quiet
+    std::fprintf(stderr, "\rcampbell: %d/%d operating points (%.1f s)", done, total, s);
+    printed = true;
+    if (done == total) std::fprintf(stderr, "\n");
+  };
+  CampbellDiagram d;
+  // Title: the model's name up to its first sentence (ElastoDyn headers run long), else the file.
+  std::string name = m.name.substr(0, m.name.find(". "));
+  if (name.empty() || name.size() > 70) name = std::filesystem::path(opt.model.case_path).filename().string();
+  d.title = "Campbell diagram: " + name;
+  d.points = campbellSweep(m, points, sweep);
+  TrackingOptions track;
+  track.overrides_file = opt.tracking;
+  d.lines = trackModes(d.points, track);
+
+  CampbellPlotOptions plot;
+  plot.versus_wind_speed = opt.versus == "wind" || (opt.versus == "auto" && !opt.schedule.empty());
+  plot.max_freq_hz = opt.max_freq;
+  plot.render = !opt.no_plot;
+  const auto files = writeCampbell(d, dir, plot);
+  std::printf("wrote");
+  for (const auto& f : files) std::printf(" %s", f.c_str());
+  std::printf("\n%zu operating points, %zu lines, %d azimuths each, %.2f s\n", d.points.size(), d.lines.size(),
+              opt.azimuths, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+}
+
+}  // namespace
+
+void addCampbellCommand(CLI::App& app) {
+  auto opt = std::make_shared<CampbellOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "campbell",
+      "Campbell diagram: periodic linearization at each rotor speed, multiblade transform, modes named and "
+      "tracked; writes campbell.csv, campbell_modes.json, campbell.gp/.dat and PNG/SVG");
+  addModelOptions(*cmd, opt->model, false);
+  cmd->add_option("--rpm", opt->rpm_range, "rotor speeds START:STEP:STOP [rpm]");
+  cmd->add_option("--schedule", opt->schedule, "operating schedule CSV (wind speed, RotSpeed, BldPitch columns)");
+  cmd->add_option("--azimuths", opt->azimuths, "azimuths per revolution for the multiblade average")
+      ->check(CLI::Range(1, 3600));
+  cmd->add_option("--out", opt->out, "output folder (default reports/<case name>)");
+  cmd->add_option("--tracking", opt->tracking, "mode-tracking overrides file (rename, assign; see README)");
+  cmd->add_option("--versus", opt->versus, "x axis: rpm, wind or auto (wind with --schedule)")
+      ->check(CLI::IsMember({"rpm", "wind", "auto"}));
+  cmd->add_option("--max-freq", opt->max_freq, "top of the frequency axis [Hz] (default: automatic)");
+  cmd->add_flag("--no-plot", opt->no_plot, "write the tables and the Gnuplot script, do not run Gnuplot");
+  cmd->callback([opt]() { run(*opt); });
+}
+
+}  // namespace whirl::cli
