@@ -20,8 +20,11 @@ PeriodicLinearization linearizePeriodic(const Model& m, const OperatingPoint& st
   p.rotor_speed = start.qd(p.azimuth_dof);
   OperatingPoint guess = start;
   const double psi0 = start.q(p.azimuth_dof);
-  for (int k = 0; k < opt.azimuths; ++k) {
-    const double psi = psi0 + 2 * std::numbers::pi * k / opt.azimuths;
+  // A parked rotor is a time-invariant system at its azimuth: one linearization, whose multiblade
+  // transform is exact (averaging the azimuth-dependent parked models would blur them).
+  const int n = p.rotor_speed == 0.0 ? 1 : opt.azimuths;
+  for (int k = 0; k < n; ++k) {
+    const double psi = psi0 + 2 * std::numbers::pi * k / n;
     guess.q(p.azimuth_dof) = psi;
     OperatingPoint op = solveOperatingPoint(m, guess);
     p.models.push_back(linearize(m, op));

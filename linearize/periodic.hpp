@@ -4,6 +4,8 @@
 /// revolution; at each azimuth the other active coordinates are solved for equilibrium under
 /// gravity and centrifugal loads (warm-started from the previous azimuth) and the model is
 /// linearized there. These per-azimuth models feed the multiblade transform (modal/mbc.hpp).
+/// A parked rotor (zero rotor speed) is linearized at its own azimuth only: it is time invariant
+/// there, and the multiblade transform of that one model is exact.
 #include <vector>
 
 #include "linearize/linearize.hpp"

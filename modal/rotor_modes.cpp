@@ -86,27 +86,18 @@ std::string bladeBaseName(const std::string& n) {
 }
 
 RotorModes rotorModes(const Model& m, const PeriodicLinearization& p) {
-  RotorModes out;
   const LinearModel& first = p.models.front();
   const int n = static_cast<int>(first.dofs.size());
-  std::vector<int> blade(n);
+  RotorCoordinates c;
+  c.names = first.dof_names;
   int nb = 0;
   for (int i = 0; i < n; ++i) {
-    blade[i] = m.dofs[first.dofs[i]].blade;
-    nb = std::max(nb, blade[i] + 1);
+    c.blade.push_back(m.dofs[first.dofs[i]].blade);
+    c.azimuth.push_back(m.dofs[first.dofs[i]].rotating);
+    nb = std::max(nb, c.blade.back() + 1);
   }
   // Shapes are in multiblade coordinates: weigh them by the diagonal of M (blade entries alike).
-  const MatX weights = first.M.diagonal().asDiagonal();
-  if (nb < 3) {
-    out.coordinates = first.dof_names;
-    out.A = first.A;
-    out.modes = modesFromEigen(eigenStandard(first.A), n, weights, out.coordinates);
-    for (auto& mode : out.modes)
-      if (mode.rigid_body) mode.name += " (rigid body)";
-    return out;
-  }
-  out.num_blades = nb;
-  const MbcLayout layout = secondOrderLayout(nb, blade);
+  c.weights = first.M.diagonal().asDiagonal();
   std::vector<MbcSample> samples;
   for (size_t k = 0; k < p.models.size(); ++k) {
     MbcSample s;
@@ -115,30 +106,46 @@ RotorModes rotorModes(const Model& m, const PeriodicLinearization& p) {
     s.A = p.models[k].A;
     samples.push_back(std::move(s));
   }
-  const MbcResult mbc = mbcAverage(layout, samples);
-  out.A = mbc.A;
-  // Coordinate groups: the j-th coordinate of every blade forms one set named after blade 1's.
-  std::vector<std::vector<int>> per_blade(nb);
-  for (int i = 0; i < n; ++i)
-    if (blade[i] >= 0) per_blade[blade[i]].push_back(i);
+  return multibladeModes(c, secondOrderLayout(std::max(nb, 3), c.blade), samples);
+}
+
+RotorModes multibladeModes(const RotorCoordinates& c, const MbcLayout& layout, const std::vector<MbcSample>& samples) {
+  RotorModes out;
+  const int n = static_cast<int>(c.names.size());
+  int nb = 0;
+  for (int b : c.blade) nb = std::max(nb, b + 1);
+  const double rotor_speed = samples.front().rotor_speed;
   std::vector<Coordinate> coords(n);
-  for (int i = 0; i < n; ++i) {
-    coords[i].kind = mbc.states[i];
-    if (blade[i] < 0) {
-      coords[i].group = first.dof_names[i];
-      continue;
+  MbcResult mbc;
+  if (nb < 3) {
+    // No transform: with fewer than 3 blades the transformed system stays periodic.
+    out.A = samples.front().A;
+    for (int i = 0; i < n; ++i) coords[i].group = c.names[i];
+    out.coordinates = c.names;
+  } else {
+    out.num_blades = nb;
+    mbc = mbcAverage(layout, samples);
+    out.A = mbc.A;
+    // Coordinate groups: the j-th coordinate of every blade forms one set named after blade 1's.
+    std::vector<std::vector<int>> per_blade(nb);
+    for (int i = 0; i < n; ++i)
+      if (c.blade[i] >= 0) per_blade[c.blade[i]].push_back(i);
+    for (int i = 0; i < n; ++i) {
+      coords[i].kind = mbc.states[i];
+      if (c.blade[i] < 0) {
+        coords[i].group = c.names[i];
+        continue;
+      }
+      const auto& list = per_blade[c.blade[i]];
+      const size_t j = std::find(list.begin(), list.end(), i) - list.begin();
+      coords[i].group = bladeBaseName(c.names[per_blade[0].at(j)]);
     }
-    const auto& list = per_blade[blade[i]];
-    const size_t j = std::find(list.begin(), list.end(), i) - list.begin();
-    coords[i].group = bladeBaseName(first.dof_names[per_blade[0].at(j)]);
+    out.coordinates.resize(n);
+    for (int i = 0; i < n; ++i)
+      out.coordinates[i] = c.blade[i] < 0 ? coords[i].group : coords[i].group + " " + toString(coords[i].kind);
   }
-  out.coordinates.resize(n);
-  for (int i = 0; i < n; ++i)
-    out.coordinates[i] = blade[i] < 0 ? coords[i].group : coords[i].group + " " + toString(coords[i].kind);
-  out.modes = modesFromEigen(eigenStandard(mbc.A), n, weights, out.coordinates);
-  std::vector<bool> azimuth(n);
-  for (int i = 0; i < n; ++i) azimuth[i] = m.dofs[first.dofs[i]].rotating;
-  for (auto& mode : out.modes) nameRotorMode(mode, coords, azimuth, p.rotor_speed);
+  out.modes = modesFromEigen(eigenStandard(out.A), n, c.weights, out.coordinates);
+  for (auto& mode : out.modes) nameRotorMode(mode, coords, c.azimuth, rotor_speed);
   return out;
 }
 

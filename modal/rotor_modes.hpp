@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "linearize/periodic.hpp"
+#include "modal/mbc.hpp"
 #include "modal/modes.hpp"
 
 namespace whirl {
@@ -24,6 +25,19 @@ struct RotorModes {
 };
 
 RotorModes rotorModes(const Model& model, const PeriodicLinearization& periodic);
+
+/// What naming needs of the n displacement coordinates of a linear rotor model.
+struct RotorCoordinates {
+  std::vector<std::string> names;  ///< DOF names, e.g. "blade 2 flap 1", "tower FA 1" (dim n)
+  std::vector<int> blade;          ///< blade of each coordinate (0-based), −1 = fixed frame
+  std::vector<bool> azimuth;       ///< the rotor's azimuth coordinates (rigid rotation)
+  MatX weights;                    ///< n × n, weighs participations (a mass matrix or its diagonal)
+};
+
+/// Modes of per-azimuth models (states: the n coordinates first, their rates next, then any
+/// first-order states, as `layout` says): multiblade average when ≥ 3 blades, else the first sample.
+RotorModes multibladeModes(const RotorCoordinates& coords, const MbcLayout& layout,
+                           const std::vector<MbcSample>& samples);
 
 /// "blade 2 flap 1" → "flap 1": drops a leading "blade <k> " from a blade coordinate's name.
 std::string bladeBaseName(const std::string& dof_name);

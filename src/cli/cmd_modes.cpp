@@ -1,14 +1,10 @@
 #include <CLI/CLI.hpp>
-#include <cmath>
-#include <cstdio>
-#include <iostream>
-#include <nlohmann/json.hpp>
 
-#include "linearize/linearize.hpp"
-#include "modal/modes.hpp"
+#include "linearize/periodic.hpp"
+#include "modal/rotor_modes.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/common.hpp"
-#include "src/io/csv.hpp"
+#include "src/cli/mode_output.hpp"
 
 namespace whirl::cli {
 namespace {
@@ -16,54 +12,47 @@ namespace {
 struct ModesOptions {
   ModelOptions model;
   std::string format = "table";
+  int azimuths = 36;
 };
+
+int bladeCount(const Model& m) {
+  int nb = 0;
+  for (int i : m.activeDofs()) nb = std::max(nb, m.dofs[i].blade + 1);
+  return nb;
+}
 
 void run(const ModesOptions& opt) {
   const Model m = loadModel(opt.model);
-  const OperatingPoint op = solveOperatingPoint(m, initialPoint(m));
-  const LinearModel lin = linearize(m, op);
-  const std::vector<Mode> modes = computeModes(lin.M, lin.C, lin.K, lin.dof_names);
-  if (opt.format == "csv") {
-    std::string s = "index,name,freq_hz,damped_freq_hz,damping_ratio\n";
-    for (size_t k = 0; k < modes.size(); ++k)
-      s += std::to_string(k + 1) + "," + csvField(modes[k].name) + "," + formatNumber(modes[k].freq_hz) + "," +
-           formatNumber(modes[k].damped_freq_hz) + "," + formatNumber(modes[k].damping_ratio) + "\n";
-    std::cout << s;
-  } else if (opt.format == "json") {
-    nlohmann::json j;
-    j["case"] = opt.model.case_path;
-    j["dofs"] = lin.dof_names;
-    j["modes"] = nlohmann::json::array();
-    for (size_t k = 0; k < modes.size(); ++k) {
-      nlohmann::json mj;
-      mj["index"] = k + 1;
-      mj["name"] = modes[k].name;
-      mj["freq_hz"] = modes[k].freq_hz;
-      mj["damped_freq_hz"] = modes[k].damped_freq_hz;
-      mj["damping_ratio"] = modes[k].damping_ratio;
-      mj["rigid_body"] = modes[k].rigid_body;
-      mj["participation"] = nlohmann::json::object();
-      for (size_t i = 0; i < lin.dof_names.size(); ++i) mj["participation"][lin.dof_names[i]] = modes[k].participation(i);
-      j["modes"].push_back(mj);
-    }
-    std::cout << j.dump(2) << "\n";
-  } else {
-    std::printf("%5s  %-40s %12s %14s %13s\n", "index", "name", "freq [Hz]", "damped [Hz]", "damping [-]");
-    for (size_t k = 0; k < modes.size(); ++k)
-      std::printf("%5zu  %-40s %12.6f %14.6f %13.6f%s\n", k + 1, modes[k].name.c_str(), modes[k].freq_hz,
-                  modes[k].damped_freq_hz,
-                  std::abs(modes[k].damping_ratio) < 5e-7 ? 0.0 : modes[k].damping_ratio,  // no "-0.000000"
-                  modes[k].rigid_body ? "  (rigid body)" : "");
+  nlohmann::json header;
+  header["case"] = opt.model.case_path;
+  const int az = findAzimuthDof(m);
+  if (az >= 0 && bladeCount(m) >= 3) {
+    // A rotor: periodic operating point over the revolution, multiblade coordinates.
+    PeriodicOptions p;
+    p.azimuths = opt.azimuths;
+    const PeriodicLinearization lin = linearizePeriodic(m, initialPoint(m), p);
+    const RotorModes r = rotorModes(m, lin);
+    header["rotor_speed_rpm"] = lin.rotor_speed * 30 / 3.141592653589793;
+    header["azimuths"] = opt.azimuths;
+    header["multiblade"] = true;
+    printModes(r.modes, r.coordinates, opt.format, header);
+    return;
   }
+  const LinearModel lin = linearize(m, solveOperatingPoint(m, initialPoint(m)));
+  printModes(computeModes(lin.M, lin.C, lin.K, lin.dof_names), lin.dof_names, opt.format, header);
 }
 
 }  // namespace
 
 void addModesCommand(CLI::App& app) {
   auto opt = std::make_shared<ModesOptions>();
-  CLI::App* cmd = app.add_subcommand("modes", "solve the operating point and print the modes");
+  CLI::App* cmd = app.add_subcommand(
+      "modes", "solve the operating point and print the modes (rotors with 3+ blades: multiblade coordinates, "
+               "averaged over the azimuths)");
   addModelOptions(*cmd, opt->model);
   cmd->add_option("--format", opt->format, "table, csv or json")->check(CLI::IsMember({"table", "csv", "json"}));
+  cmd->add_option("--azimuths", opt->azimuths, "azimuths per revolution for rotors (multiblade average)")
+      ->check(CLI::Range(1, 3600));
   cmd->callback([opt]() { run(*opt); });
 }
 

@@ -9,4 +9,6 @@ namespace whirl::cli {
 void addLinearizeCommand(CLI::App& app);
 void addModesCommand(CLI::App& app);
 void addCampbellCommand(CLI::App& app);
+void addLinCommand(CLI::App& app);
+void addCompareCommand(CLI::App& app);
 }  // namespace whirl::cli

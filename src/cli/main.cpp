@@ -12,6 +12,8 @@ int main(int argc, char** argv) {
   whirl::cli::addLinearizeCommand(app);
   whirl::cli::addModesCommand(app);
   whirl::cli::addCampbellCommand(app);
+  whirl::cli::addLinCommand(app);
+  whirl::cli::addCompareCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

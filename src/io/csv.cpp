@@ -2,6 +2,9 @@
 
 #include <charconv>
 #include <cmath>
+#include <fstream>
+
+#include "src/model/error.hpp"
 
 namespace whirl {
 
@@ -21,6 +24,65 @@ std::string csvField(const std::string& s) {
     q += c;
   }
   return q + "\"";
+}
+
+std::vector<std::string> splitCsvLine(const std::string& line) {
+  std::vector<std::string> f;
+  std::string cur;
+  bool quoted = false;
+  for (size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (quoted) {
+      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+        cur += '"';
+        ++i;
+      } else if (c == '"') {
+        quoted = false;
+      } else {
+        cur += c;
+      }
+    } else if (c == '"') {
+      quoted = true;
+    } else if (c == ',') {
+      f.push_back(cur);
+      cur.clear();
+    } else if (c != '\r') {
+      cur += c;
+    }
+  }
+  f.push_back(cur);
+  return f;
+}
+
+int TextTable::column(const std::string& name) const {
+  for (size_t i = 0; i < names.size(); ++i)
+    if (names[i] == name) return static_cast<int>(i);
+  return -1;
+}
+
+TextTable readTextCsv(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open");
+  TextTable t;
+  t.file = path;
+  std::string line;
+  int n = 0;
+  while (std::getline(in, line)) {
+    ++n;
+    if (line.empty() || line == "\r") continue;
+    auto f = splitCsvLine(line);
+    if (t.names.empty()) {
+      t.names = f;
+      continue;
+    }
+    if (f.size() != t.names.size())
+      throw InputError(where(path, n, "", "expected " + std::to_string(t.names.size()) + " fields, found " +
+                                              std::to_string(f.size())));
+    t.rows.push_back(std::move(f));
+    t.lines.push_back(n);
+  }
+  if (t.names.empty()) throw InputError(path + ": empty file (no header row)");
+  return t;
 }
 
 std::string matrixCsv(const MatX& m, const std::string& corner, const std::vector<std::string>& rows,

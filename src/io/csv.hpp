@@ -15,6 +15,23 @@ std::string formatNumber(double x);
 /// A CSV field: quoted (with doubled quotes) when it holds a comma, quote or newline.
 std::string csvField(const std::string& s);
 
+/// Fields of one CSV line: quoted fields may hold commas and doubled quotes ("").
+std::vector<std::string> splitCsvLine(const std::string& line);
+
+/// A text CSV table: header names and rows of fields, with 1-based line numbers.
+struct TextTable {
+  std::string file;
+  std::vector<std::string> names;
+  std::vector<std::vector<std::string>> rows;
+  std::vector<int> lines;
+  /// Index of the column named `name`, −1 if absent.
+  int column(const std::string& name) const;
+};
+
+/// Reads a CSV with a header row; InputError naming file:line for a missing file or a row with a
+/// different number of fields.
+TextTable readTextCsv(const std::string& path);
+
 /// A labelled matrix: header "corner,col1,col2,…", then one row per row name.
 std::string matrixCsv(const MatX& m, const std::string& corner, const std::vector<std::string>& row_names,
                       const std::vector<std::string>& col_names);

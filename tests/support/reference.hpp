@@ -12,6 +12,7 @@
 
 #include "linearize/linearize.hpp"
 #include "src/io/case_file.hpp"
+#include "src/io/csv.hpp"
 
 namespace whirl::test {
 
@@ -29,34 +30,6 @@ struct ReferenceRow {
   double value = 0, tolerance = 0;
   std::string source;
 };
-
-inline std::vector<std::string> splitCsvLine(const std::string& line) {
-  std::vector<std::string> f;
-  std::string cur;
-  bool quoted = false;
-  for (size_t i = 0; i < line.size(); ++i) {
-    const char c = line[i];
-    if (quoted) {
-      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
-        cur += '"';
-        ++i;
-      } else if (c == '"') {
-        quoted = false;
-      } else {
-        cur += c;
-      }
-    } else if (c == '"') {
-      quoted = true;
-    } else if (c == ',') {
-      f.push_back(cur);
-      cur.clear();
-    } else if (c != '\r') {
-      cur += c;
-    }
-  }
-  f.push_back(cur);
-  return f;
-}
 
 inline std::map<std::string, ReferenceRow> loadReference(const std::string& case_name) {
   const std::string path = std::string(WHIRL_SOURCE_DIR) + "/cases/" + case_name + "/reference.csv";

@@ -1,0 +1,46 @@
+#include "src/cli/mode_output.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+
+#include "src/io/csv.hpp"
+
+namespace whirl::cli {
+
+void printModes(const std::vector<Mode>& modes, const std::vector<std::string>& coords, const std::string& format,
+                const nlohmann::json& header) {
+  if (format == "csv") {
+    std::string s = "index,name,freq_hz,damped_freq_hz,damping_ratio\n";
+    for (size_t k = 0; k < modes.size(); ++k)
+      s += std::to_string(k + 1) + "," + csvField(modes[k].name) + "," + formatNumber(modes[k].freq_hz) + "," +
+           formatNumber(modes[k].damped_freq_hz) + "," + formatNumber(modes[k].damping_ratio) + "\n";
+    std::cout << s;
+  } else if (format == "json") {
+    nlohmann::json j = header;
+    j["coordinates"] = coords;
+    j["modes"] = nlohmann::json::array();
+    for (size_t k = 0; k < modes.size(); ++k) {
+      nlohmann::json mj;
+      mj["index"] = k + 1;
+      mj["name"] = modes[k].name;
+      mj["freq_hz"] = modes[k].freq_hz;
+      mj["damped_freq_hz"] = modes[k].damped_freq_hz;
+      mj["damping_ratio"] = modes[k].damping_ratio;
+      mj["rigid_body"] = modes[k].rigid_body;
+      mj["participation"] = nlohmann::json::object();
+      for (size_t i = 0; i < coords.size(); ++i) mj["participation"][coords[i]] = modes[k].participation(i);
+      j["modes"].push_back(mj);
+    }
+    std::cout << j.dump(2) << "\n";
+  } else {
+    std::printf("%5s  %-40s %12s %14s %13s\n", "index", "name", "freq [Hz]", "damped [Hz]", "damping [-]");
+    for (size_t k = 0; k < modes.size(); ++k)
+      std::printf("%5zu  %-40s %12.6f %14.6f %13.6f%s\n", k + 1, modes[k].name.c_str(), modes[k].freq_hz,
+                  modes[k].damped_freq_hz,
+                  std::abs(modes[k].damping_ratio) < 5e-7 ? 0.0 : modes[k].damping_ratio,  // no "-0.000000"
+                  modes[k].rigid_body && modes[k].name.find("rigid body") == std::string::npos ? "  (rigid body)" : "");
+  }
+}
+
+}  // namespace whirl::cli
