@@ -5,7 +5,9 @@
 
 #include "linearize/linearize.hpp"
 #include "src/dynamics/residual.hpp"
+#include "modal/campbell_sweep.hpp"
 #include "src/io/case_file.hpp"
+#include "src/model/elastodyn_model.hpp"
 #include "tests/support/rich_model.hpp"
 
 namespace whirl {
@@ -13,6 +15,7 @@ namespace {
 
 Model load(const std::string& name) {
   if (name == "rich_29dof") return test::richModel();
+  if (name == "nrel5mw") return readElastoDynModel(std::string(WHIRL_SOURCE_DIR) + "/cases/nrel5mw/Main_Onshore.fst");
   return readCase(std::string(WHIRL_SOURCE_DIR) + "/cases/" + name + "/" + name + ".yaml");
 }
 
@@ -49,6 +52,22 @@ WHIRL_CASE_BENCH(flex_4dof)
 WHIRL_CASE_BENCH(floating_3dof)
 WHIRL_CASE_BENCH(rotating_blade)
 WHIRL_CASE_BENCH(rich_29dof)
+WHIRL_CASE_BENCH(nrel5mw)
+
+// The NREL 5MW Campbell diagram of the main command: 31 rotor speeds (0–15 rpm) × 36 azimuths, each
+// an equilibrium solve and a linearization, multiblade average and eigenanalysis (no output files).
+void nrel5mwCampbell(benchmark::State& state) {
+  const Model m = load("nrel5mw");
+  const std::vector<SweepPoint> pts = rpmRange("0:0.5:15");
+  SweepOptions opt;
+  opt.azimuths = 36;
+  for (auto _ : state) {
+    auto points = campbellSweep(m, pts, opt);
+    benchmark::DoNotOptimize(points.data());
+  }
+  state.counters["linearizations"] = 30 * 36 + 1;  // 0 rpm: one azimuth (parked)
+}
+BENCHMARK(nrel5mwCampbell)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace whirl

@@ -5,6 +5,7 @@
 namespace whirl {
 
 JacobianWorkspace::JacobianWorkspace(const Model& m) : ws(m) {
+  ws.derivatives_only = true;
   q.resize(m.ndof());
   qd.resize(m.ndof());
   qdd.resize(m.ndof());

@@ -8,6 +8,11 @@
 namespace whirl {
 
 LinearModel linearize(const Model& m, const OperatingPoint& op) {
+  LinearizeWorkspace lw(m);
+  return linearize(m, op, lw);
+}
+
+LinearModel linearize(const Model& m, const OperatingPoint& op, LinearizeWorkspace& lw) {
   LinearModel lin;
   lin.dofs = m.activeDofs();
   const int n = static_cast<int>(lin.dofs.size());
@@ -16,8 +21,8 @@ LinearModel linearize(const Model& m, const OperatingPoint& op) {
   std::vector<int> inputs(m.ninput());
   for (int i = 0; i < m.ninput(); ++i) inputs[i] = i;
 
-  Workspace<double> ws(m);
-  JacobianWorkspace jw(m);
+  Workspace<double>& ws = lw.ws;
+  JacobianWorkspace& jw = lw.jw;
   auto rows = [&](const MatX& J, double sign) {
     MatX out(n, J.cols());
     for (int r = 0; r < n; ++r) out.row(r) = sign * J.row(lin.dofs[r]);

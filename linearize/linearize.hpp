@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "linearize/linearize_workspace.hpp"
 #include "linearize/operating_point.hpp"
 
 namespace whirl {
@@ -23,6 +24,8 @@ struct LinearModel {
   VecX residual; ///< e at the operating point on the active coordinates (dim n)
 };
 
+LinearModel linearize(const Model& model, const OperatingPoint& op, LinearizeWorkspace& lw);
+/// Same, with buffers of its own.
 LinearModel linearize(const Model& model, const OperatingPoint& op);
 
 }  // namespace whirl

@@ -24,6 +24,12 @@ OperatingPoint initialPoint(const Model& m) {
 }
 
 OperatingPoint solveOperatingPoint(const Model& m, const OperatingPoint& start, const EquilibriumOptions& opt) {
+  LinearizeWorkspace lw(m);
+  return solveOperatingPoint(m, start, opt, lw);
+}
+
+OperatingPoint solveOperatingPoint(const Model& m, const OperatingPoint& start, const EquilibriumOptions& opt,
+                                   LinearizeWorkspace& lw) {
   OperatingPoint op = start;
   op.solved.clear();
   for (int i : m.activeDofs()) {
@@ -32,8 +38,8 @@ OperatingPoint solveOperatingPoint(const Model& m, const OperatingPoint& start, 
       throw ComputeError("DOF '" + m.dofs[i].name + "': a non-rotating coordinate has a rate; mark it rotating or freeze it");
     op.solved.push_back(i);
   }
-  Workspace<double> ws(m);
-  JacobianWorkspace jw(m);
+  Workspace<double>& ws = lw.ws;
+  JacobianWorkspace& jw = lw.jw;
   VecX e(m.ndof());
   const int ns = static_cast<int>(op.solved.size());
   auto solvedResidual = [&]() {

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "linearize/linearize_workspace.hpp"
 #include "src/model/model.hpp"
 
 namespace whirl {
@@ -31,5 +32,8 @@ OperatingPoint initialPoint(const Model& model);
 /// Solves the equilibrium of the non-rotating active coordinates starting from `start`.
 /// Throws ComputeError naming the coordinate when K is singular or Newton does not converge.
 OperatingPoint solveOperatingPoint(const Model& model, const OperatingPoint& start, const EquilibriumOptions& opt = {});
+/// Same, with reused buffers.
+OperatingPoint solveOperatingPoint(const Model& model, const OperatingPoint& start, const EquilibriumOptions& opt,
+                                   LinearizeWorkspace& lw);
 
 }  // namespace whirl

@@ -23,11 +23,12 @@ PeriodicLinearization linearizePeriodic(const Model& m, const OperatingPoint& st
   // A parked rotor is a time-invariant system at its azimuth: one linearization, whose multiblade
   // transform is exact (averaging the azimuth-dependent parked models would blur them).
   const int n = p.rotor_speed == 0.0 ? 1 : opt.azimuths;
+  LinearizeWorkspace lw(m);
   for (int k = 0; k < n; ++k) {
     const double psi = psi0 + 2 * std::numbers::pi * k / n;
     guess.q(p.azimuth_dof) = psi;
-    OperatingPoint op = solveOperatingPoint(m, guess);
-    p.models.push_back(linearize(m, op));
+    OperatingPoint op = solveOperatingPoint(m, guess, {}, lw);
+    p.models.push_back(linearize(m, op, lw));
     p.azimuths.push_back(psi);
     p.points.push_back(op);
     guess = op;

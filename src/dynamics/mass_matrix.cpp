@@ -28,9 +28,12 @@ MatX bodyMassMatrix(const BodyInertia& in, const BasisState<double>& b) {
       for (int k = 0; k < 3; ++k)
         if (eps(i, j, k) != 0) X.row(i) += eps(i, j, k) * (c.transpose() * in.S[3 * j + k] * D);
   Mb.block(3, 6, 3, ne) = X;
-  MatX Skk = MatX::Zero(nc, nc);
-  for (int k = 0; k < 3; ++k) Skk += in.S[4 * k];
-  Mb.block(6, 6, ne, ne) = D.transpose() * Skk * D;
+  if (in.Strace.rows() == nc) {
+    Mb.block(6, 6, ne, ne) = D.transpose() * in.Strace * D;
+  } else {  // a body that was never finalized
+    const MatX Skk = in.S[0] + in.S[4] + in.S[8];
+    Mb.block(6, 6, ne, ne) = D.transpose() * Skk * D;
+  }
   Mb.block(6, 0, ne, 6) = Mb.block(0, 6, 6, ne).transpose();
   return Mb;
 }

@@ -83,6 +83,25 @@ void bodyInertiaForces(const BodyInertia& in, const BasisState<T>& b, const Vec3
   }
 }
 
+inline bool seeded(double) { return true; }
+template <class T>
+bool seeded(const T& x) {
+  return !x.derivatives().isZero(0.0);
+}
+
+// Whether the inertia forces of body i depend on a seeded direction: through its frame (the
+// coordinates of its support) or its own elastic coordinates.
+template <class T>
+bool bodyVaries(const Model& m, int i, const VecXT<T>& q, const VecXT<T>& qd, const VecXT<T>& qdd) {
+  auto any = [&](int s) { return seeded(q(s)) || seeded(qd(s)) || seeded(qdd(s)); };
+  for (int s : m.support[i])
+    if (any(s)) return true;
+  const Body& b = m.bodies[i];
+  for (int j = 0; j < b.inertia.ne; ++j)
+    if (any(b.elastic_dof + j)) return true;
+  return false;
+}
+
 template <class T>
 T inputScale(const VecXT<T>& u, int input) {
   return input >= 0 ? u(input) : T(1);
@@ -100,6 +119,8 @@ void residual(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T
   T H[64];
   for (int i = 0; i < nb; ++i) {
     const Body& b = m.bodies[i];
+    if constexpr (!std::is_same_v<T, double>)
+      if (ws.derivatives_only && !detail::bodyVaries(m, i, q, qd, qdd)) continue;
     const FrameState<T>& f = ws.frames[i];
     const Mat3T<T> Rt = f.R.transpose();
     const Vec3T<T> ahat = Rt * (f.a - gravity);

@@ -37,6 +37,10 @@ struct Workspace {
   std::vector<VecXT<T>> ukl;  ///< 9 vectors u_kl = A_kl c + 2 W_kl ċ + δ_kl c̈
   VecXT<T> g;                 ///< Σ_k ∫ P_kᵀ (a_P)_k dm
   VecXT<T> tmp;
+  /// Set by AD Jacobian passes, which read only derivatives: residual() then skips the inertia
+  /// forces of bodies none of whose coordinates carries a seeded direction (their values in e are
+  /// then incomplete). Never set when the values of e are used.
+  bool derivatives_only = false;
 };
 
 }  // namespace whirl

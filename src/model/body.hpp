@@ -27,6 +27,7 @@ struct BodyInertia {
   /// Entries of P_j beyond len[j] are zero (the axial-shortening terms live in P_x only); set by
   /// finalize so that the hot loops skip the zero blocks of S.
   std::array<int, 3> len = {0, 0, 0};
+  MatX Strace;  ///< Σ_k S_kk (nc × nc): the elastic mass block; set by finalize
 
   /// Length of c: 1 + ne (+ ne(ne+1)/2 when quadratic).
   int nc() const { return 1 + ne + (quadratic ? ne * (ne + 1) / 2 : 0); }

@@ -50,6 +50,7 @@ void setActiveLengths(BodyInertia& in) {
     }
     in.len[j] = len;
   }
+  in.Strace = in.S[0] + in.S[4] + in.S[8];
 }
 
 void checkInertia(const Body& b) {
