@@ -4,6 +4,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "linearize/export_point.hpp"
 #include "linearize/periodic.hpp"
 #include "linearize/state_space.hpp"
 #include "modal/campbell_sweep.hpp"
@@ -18,7 +19,7 @@
 namespace whirl::cli {
 namespace {
 
-struct ExportOptions {
+struct CliOptions {
   ModelOptions model;
   std::string schedule, format, out, inputs, outputs;
   int azimuths = 36;
@@ -50,50 +51,7 @@ void checkNames(const Model& m, const std::vector<std::string>& inputs, const st
     if (!m.findOutput(n)) throw InputError("--outputs: unknown output '" + n + "' (outputs: " + list(m.outputs) + ")");
 }
 
-ExportPoint exportPoint(const Model& m, const SweepPoint& sp, const ExportOptions& opt, const std::vector<std::string>& in,
-                        const std::vector<std::string>& out, std::optional<OperatingPoint>& warm) {
-  ExportPoint e;
-  e.rpm = sp.rpm;
-  e.wind_speed = sp.wind_speed;
-  e.pitch_deg = sp.pitch_deg;
-  OperatingPoint start = initialPoint(m);
-  if (warm)
-    for (int i = 0; i < m.ndof(); ++i)
-      if (!m.dofs[i].rotating && !m.dofs[i].frozen) start.q(i) = warm->q(i);
-  if (findAzimuthDof(m) < 0) {
-    const OperatingPoint op = solveOperatingPoint(m, start);
-    warm = op;
-    e.model = selectInputsOutputs(stateSpace(m, op, linearize(m, op)), in, out);
-    e.model.wind_speed = sp.wind_speed;
-  } else {
-    PeriodicOptions popt;
-    popt.azimuths = opt.azimuths;
-    const PeriodicLinearization p = linearizePeriodic(m, start, popt);
-    warm = p.points.front();
-    for (size_t k = 0; k < p.models.size(); ++k) {
-      StateSpaceModel s = selectInputsOutputs(stateSpace(m, p.points[k], p.models[k]), in, out);
-      s.wind_speed = sp.wind_speed;
-      e.azimuths.push_back(std::move(s));
-    }
-    if (bladeCount(e.azimuths.front()) >= 3) {
-      try {
-        e.model = multibladeAverage(e.azimuths);
-      } catch (const InputError& err) {
-        throw InputError(std::string("multiblade transform of the chosen inputs/outputs: ") + err.what() +
-                         " (select the rotating-frame inputs/outputs of every blade)");
-      }
-    } else {
-      e.model = e.azimuths.front();  // no rotor in the rotating frame (or < 3 blades): first azimuth
-    }
-  }
-  if (opt.drop_azimuth) {
-    e.model = dropAzimuth(e.model);
-    for (auto& s : e.azimuths) s = dropAzimuth(s);
-  }
-  return e;
-}
-
-void run(const ExportOptions& opt) {
+void run(const CliOptions& opt) {
   if (opt.model.rpm && !opt.schedule.empty()) throw InputError("export: give --rpm or --schedule, not both");
   const std::vector<std::string> in = splitList(opt.inputs), out = splitList(opt.outputs);
   const Model base = loadModel(opt.model);
@@ -113,6 +71,11 @@ void run(const ExportOptions& opt) {
   StateSpaceExport e;
   e.source = opt.model.case_path;
   e.model_name = base.name;
+  ExportOptions eo;
+  eo.azimuths = opt.azimuths;
+  eo.inputs = in;
+  eo.outputs = out;
+  eo.drop_azimuth = opt.drop_azimuth;
   std::optional<OperatingPoint> warm;
   for (const SweepPoint& sp : points) {
     Model m = base;
@@ -120,7 +83,18 @@ void run(const ExportOptions& opt) {
       setRotorSpeed(m, sp.rpm);
       if (sp.pitch_deg) setCollectivePitch(m, *sp.pitch_deg);
     }
-    e.points.push_back(exportPoint(m, sp, opt, in, out, warm));
+    OperatingPoint start = initialPoint(m);
+    if (warm)  // the previous point's equilibrium: a good guess for the next
+      for (int i = 0; i < m.ndof(); ++i)
+        if (!m.dofs[i].rotating && !m.dofs[i].frozen) start.q(i) = warm->q(i);
+    ExportPoint p = exportOperatingPoint(m, start, eo);
+    p.rpm = sp.rpm;
+    p.wind_speed = sp.wind_speed;
+    p.pitch_deg = sp.pitch_deg;
+    p.model.wind_speed = sp.wind_speed;
+    for (auto& s : p.azimuths) s.wind_speed = sp.wind_speed;
+    warm = p.equilibrium;
+    e.points.push_back(std::move(p));
   }
 
   StagedFiles files;
@@ -156,7 +130,7 @@ void run(const ExportOptions& opt) {
 }  // namespace
 
 void addExportCommand(CLI::App& app) {
-  auto opt = std::make_shared<ExportOptions>();
+  auto opt = std::make_shared<CliOptions>();
   CLI::App* cmd = app.add_subcommand(
       "export", "state-space model(s) A, B, C, D with named inputs and outputs for controller design: MATLAB .mat, "
                 "OpenFAST-style .lin (one per azimuth) or JSON");

@@ -12,24 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "linearize/state_space.hpp"
+#include "linearize/export_point.hpp"
 
 namespace whirl {
-
-/// One operating point of an export.
-struct ExportPoint {
-  double rpm = 0.0;
-  std::optional<double> wind_speed;  ///< m/s (from a schedule)
-  std::optional<double> pitch_deg;   ///< collective pitch (from a schedule)
-  StateSpaceModel model;             ///< time invariant: the multiblade average, or the only model
-  std::vector<StateSpaceModel> azimuths;  ///< per azimuth, rotating frame (periodic linearization); may be empty
-};
-
-struct StateSpaceExport {
-  std::string source;      ///< case file
-  std::string model_name;
-  std::vector<ExportPoint> points;
-};
 
 /// Writes the .mat file at `path` (the caller stages it; see staged_files.hpp). InputError on failure.
 void writeStateSpaceMat(const StateSpaceExport& e, const std::string& path);
