@@ -107,7 +107,7 @@ std::string linFileText(const StateSpaceModel& m, const std::string& title) {
   char line[128];
   o << "Simulation information:\n";
   auto field = [&](const char* key, double v, const char* unit) {
-    std::snprintf(line, sizeof line, "   %-30s %16.10f %s\n", key, v, unit);
+    std::snprintf(line, sizeof line, "   %-30s %24.17g %s\n", key, v, unit);  // full precision
     o << line;
   };
   auto count = [&](const char* key, size_t n) {
