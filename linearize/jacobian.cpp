@@ -1,8 +1,45 @@
 #include "linearize/jacobian.hpp"
 
+#include "src/dynamics/outputs.hpp"
 #include "src/dynamics/residual.hpp"
 
 namespace whirl {
+namespace {
+
+// Seeds direction k of column `col` (value ±1 sets, 0 clears), with the chain rule through the
+// frozen coordinates an input drives.
+void seed(const Model& m, JacobianWorkspace& jw, Wrt wrt, int col, int k, bool on) {
+  VecXT<ADChunk>& x = wrt == Wrt::Q ? jw.q : wrt == Wrt::Qd ? jw.qd : wrt == Wrt::Qdd ? jw.qdd : jw.u;
+  x(col).derivatives()(k) = on ? 1.0 : 0.0;
+  if (wrt != Wrt::U) return;
+  for (const InputDofTarget& t : m.inputs[col].dofs) jw.q(t.dof).derivatives()(k) = on ? t.gain : 0.0;
+}
+
+template <class Eval>
+MatX jacobian(const Model& m, JacobianWorkspace& jw, const VecX& q, const VecX& qd, const VecX& qdd, const VecX& u,
+              Wrt wrt, const std::vector<int>& cols, VecXT<ADChunk>& f, Eval eval) {
+  auto load = [](VecXT<ADChunk>& dst, const VecX& src) {
+    for (Eigen::Index i = 0; i < src.size(); ++i) dst(i) = ADChunk(src(i));  // zero derivatives
+  };
+  load(jw.q, q);
+  load(jw.qd, qd);
+  load(jw.qdd, qdd);
+  load(jw.u, u);
+  const int n = static_cast<int>(f.size());
+  const int ncol = static_cast<int>(cols.size());
+  MatX J(n, ncol);
+  for (int c0 = 0; c0 < ncol; c0 += kChunk) {
+    const int w = std::min(kChunk, ncol - c0);
+    for (int k = 0; k < w; ++k) seed(m, jw, wrt, cols[c0 + k], k, true);
+    eval();
+    for (int r = 0; r < n; ++r)
+      for (int k = 0; k < w; ++k) J(r, c0 + k) = f(r).derivatives()(k);
+    for (int k = 0; k < w; ++k) seed(m, jw, wrt, cols[c0 + k], k, false);
+  }
+  return J;
+}
+
+}  // namespace
 
 JacobianWorkspace::JacobianWorkspace(const Model& m) : ws(m) {
   ws.derivatives_only = true;
@@ -11,30 +48,19 @@ JacobianWorkspace::JacobianWorkspace(const Model& m) : ws(m) {
   qdd.resize(m.ndof());
   u.resize(m.ninput());
   e.resize(m.ndof());
+  y.resize(m.noutput());
 }
 
 MatX residualJacobian(const Model& m, JacobianWorkspace& jw, const VecX& q, const VecX& qd, const VecX& qdd,
                       const VecX& u, Wrt wrt, const std::vector<int>& cols) {
-  auto load = [](VecXT<ADChunk>& dst, const VecX& src) {
-    for (Eigen::Index i = 0; i < src.size(); ++i) dst(i) = ADChunk(src(i));  // zero derivatives
-  };
-  load(jw.q, q);
-  load(jw.qd, qd);
-  load(jw.qdd, qdd);
-  load(jw.u, u);
-  VecXT<ADChunk>& x = wrt == Wrt::Q ? jw.q : wrt == Wrt::Qd ? jw.qd : wrt == Wrt::Qdd ? jw.qdd : jw.u;
-  const int n = m.ndof();
-  const int ncol = static_cast<int>(cols.size());
-  MatX J(n, ncol);
-  for (int c0 = 0; c0 < ncol; c0 += kChunk) {
-    const int w = std::min(kChunk, ncol - c0);
-    for (int k = 0; k < w; ++k) x(cols[c0 + k]).derivatives()(k) = 1.0;
-    residual(m, jw.ws, jw.q, jw.qd, jw.qdd, jw.u, jw.e);
-    for (int r = 0; r < n; ++r)
-      for (int k = 0; k < w; ++k) J(r, c0 + k) = jw.e(r).derivatives()(k);
-    for (int k = 0; k < w; ++k) x(cols[c0 + k]).derivatives()(k) = 0.0;
-  }
-  return J;
+  return jacobian(m, jw, q, qd, qdd, u, wrt, cols, jw.e,
+                  [&]() { residual(m, jw.ws, jw.q, jw.qd, jw.qdd, jw.u, jw.e); });
+}
+
+MatX outputJacobian(const Model& m, JacobianWorkspace& jw, const VecX& q, const VecX& qd, const VecX& qdd,
+                    const VecX& u, Wrt wrt, const std::vector<int>& cols) {
+  return jacobian(m, jw, q, qd, qdd, u, wrt, cols, jw.y,
+                  [&]() { evaluateOutputs(m, jw.ws, jw.q, jw.qd, jw.qdd, jw.y); });
 }
 
 }  // namespace whirl

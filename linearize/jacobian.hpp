@@ -1,7 +1,10 @@
 #pragma once
 /// \file
-/// Exact Jacobians of the residual by forward-mode AD in fixed-size chunks (GUIDE §3): seed kChunk
-/// directions per pass, evaluate, extract.
+/// Exact Jacobians of the residual (and of the outputs) by forward-mode AD in fixed-size chunks
+/// (GUIDE §3): seed kChunk directions per pass, evaluate, extract.
+///
+/// Inputs that drive frozen coordinates (Input::dofs, q_d = value + gain · u) are differentiated
+/// through them: the direction of u_i also seeds q_d with gain, so ∂/∂u is the total derivative.
 #include <vector>
 
 #include "src/dynamics/scalar.hpp"
@@ -16,11 +19,15 @@ enum class Wrt { Q, Qd, Qdd, U };
 struct JacobianWorkspace {
   explicit JacobianWorkspace(const Model& m);
   Workspace<ADChunk> ws;
-  VecXT<ADChunk> q, qd, qdd, u, e;
+  VecXT<ADChunk> q, qd, qdd, u, e, y;
 };
 
 /// ∂e/∂(wrt)[:, cols] for all ndof rows, at (q, qd, qdd, u) (dims as in residual()).
 MatX residualJacobian(const Model& model, JacobianWorkspace& jw, const VecX& q, const VecX& qd, const VecX& qdd,
                       const VecX& u, Wrt wrt, const std::vector<int>& cols);
+
+/// ∂y/∂(wrt)[:, cols] for all noutput rows (y = evaluateOutputs, src/dynamics/outputs.hpp).
+MatX outputJacobian(const Model& model, JacobianWorkspace& jw, const VecX& q, const VecX& qd, const VecX& qdd,
+                    const VecX& u, Wrt wrt, const std::vector<int>& cols);
 
 }  // namespace whirl

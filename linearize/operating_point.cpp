@@ -19,7 +19,10 @@ OperatingPoint initialPoint(const Model& m) {
     op.qd(i) = m.dofs[i].rate;
   }
   op.u = VecX::Zero(m.ninput());
-  for (int i = 0; i < m.ninput(); ++i) op.u(i) = m.inputs[i].value;
+  for (int i = 0; i < m.ninput(); ++i) {
+    op.u(i) = m.inputs[i].value;
+    for (const InputDofTarget& t : m.inputs[i].dofs) op.q(t.dof) += t.gain * op.u(i);
+  }
   return op;
 }
 

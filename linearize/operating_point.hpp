@@ -26,7 +26,7 @@ struct EquilibriumOptions {
 };
 
 /// Starting point from the model: each coordinate at its value, each rate at its rate, q̈ = 0,
-/// inputs at their values.
+/// inputs at their values; a frozen coordinate driven by inputs at value + Σ gain · u.
 OperatingPoint initialPoint(const Model& model);
 
 /// Solves the equilibrium of the non-rotating active coordinates starting from `start`.

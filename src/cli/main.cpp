@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   whirl::cli::addCampbellCommand(app);
   whirl::cli::addLinCommand(app);
   whirl::cli::addCompareCommand(app);
+  whirl::cli::addExportCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -130,6 +130,7 @@ void readBeamBody(const CaseNode& n, int index, CaseBuild& build) {
   if (const auto q = n.find("integration")) opt.integration = readIntegration(*q);
   if (const auto d = n.find("damping")) opt.damping = readDamping(*d, static_cast<int>(shapes.size()));
   opt.axial_shortening = n.boolean("axial_shortening", true);
+  build.beams.push_back({index, p, shapes});
   Body& b = build.model.bodies[index];
   try {
     const BeamBody bb = buildBeamBody(p, shapes, opt, b.name);

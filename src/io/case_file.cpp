@@ -40,7 +40,7 @@ Model readCase(const std::string& path, const std::vector<CaseOverride>& overrid
   applyOverrides(doc, overrides, source);
   const CaseNode top(doc, source);
   if (!top.isMap()) top.fail("a case file is a map of keys (name, gravity, bodies, ...), this one is empty or a list");
-  top.allowKeys({"name", "description", "gravity", "inputs", "bodies", "dofs", "loads"});
+  top.allowKeys({"name", "description", "gravity", "inputs", "bodies", "dofs", "loads", "outputs"});
 
   CaseBuild build;
   Model& m = build.model;
@@ -51,6 +51,8 @@ Model readCase(const std::string& path, const std::vector<CaseOverride>& overrid
   readBodies(top.at("bodies"), build);
   if (const auto d = top.find("dofs")) readDofSettings(*d, build);
   if (const auto l = top.find("loads")) readLoads(*l, build);
+  if (const auto in = top.find("inputs")) readInputTargets(*in, build);
+  if (const auto o = top.find("outputs")) readOutputs(*o, build);
   try {
     finalize(m);
   } catch (const InputError& e) {

@@ -79,13 +79,18 @@ void bodyMatrices(const CaseNode& n, CaseBuild& build) {
 
 void readInputs(const CaseNode& list, CaseBuild& build) {
   for (const CaseNode& n : list.items()) {
-    n.allowKeys({"name", "value"});
+    n.allowKeys({"name", "value", "unit", "dofs", "blade"});
     Input in;
     const CaseNode name = n.at("name");
     in.name = name.text();
     if (in.name.empty()) name.fail("an input name must not be empty");
     if (build.model.findInput(in.name)) name.fail("input name '" + in.name + "' is used twice");
     in.value = n.number("value", 0);
+    in.unit = n.text("unit", "");
+    if (const auto b = n.find("blade")) {
+      in.blade = b->integer() - 1;
+      if (in.blade < 0) b->fail("blades are numbered from 1");
+    }
     build.model.inputs.push_back(in);
   }
 }

@@ -8,6 +8,7 @@
 #include "src/io/case_file.hpp"
 #include "src/io/case_node.hpp"
 #include "src/model/model.hpp"
+#include "src/shapes/beam.hpp"
 #include "src/shapes/shape.hpp"
 
 namespace whirl {
@@ -15,7 +16,14 @@ namespace whirl {
 /// The model being built, with where its bodies and DOFs were written (indices as in `model`,
 /// before finalize() reorders them).
 struct CaseBuild {
+  /// A beam body's properties and shapes, kept for its bending-moment outputs.
+  struct Beam {
+    int body = -1;
+    BeamProperties props;
+    std::vector<ShapePtr> shapes;
+  };
   Model model;
+  std::vector<Beam> beams;
   std::vector<Where> body_where;
   std::vector<Where> dof_where;    ///< where the DOF's name was given (or its joint/shape)
   std::vector<bool> dof_angular;   ///< an angle [rad]: `value_deg` and `rate_rpm` allowed
@@ -55,6 +63,10 @@ std::vector<ShapePtr> readShapes(const CaseNode& node, double length, int index,
 void readInputs(const CaseNode& list, CaseBuild& build);
 void readDofSettings(const CaseNode& map, CaseBuild& build);
 void readLoads(const CaseNode& list, CaseBuild& build);
+/// The `dofs:` (frozen coordinates driven) of each input, once the DOFs exist (case_outputs.cpp).
+void readInputTargets(const CaseNode& list, CaseBuild& build);
+/// `outputs:` (case_outputs.cpp).
+void readOutputs(const CaseNode& list, CaseBuild& build);
 
 /// Re-throws an InputError from the core (buildBeamBody, shapes, finalize) prefixed with `w`.
 [[noreturn]] void rethrowAt(const Where& w, const std::exception& e);

@@ -1,4 +1,4 @@
-// buildElastoDynModel: the parts (tower, nacelle and drivetrain, blades), inputs, springs, gravity;
+// buildElastoDynModel: the parts (tower, nacelle and drivetrain, blades), inputs and outputs, springs, gravity;
 // readElastoDynModel: files and overrides.
 #include "src/model/elastodyn_model.hpp"
 
@@ -57,39 +57,6 @@ std::optional<io::ServoDynInput> yawSpring(const io::OpenFastTurbine& t, const E
   return io::read_servodyn_if_enabled(t.fst);  // InputError naming the .fst line when the file is missing
 }
 
-void addInputs(elastodyn::Builder& b, const elastodyn::TowerParts& tower, const elastodyn::DrivetrainParts& dt) {
-  Model& m = b.model;
-  auto input = [&](const char* name) {
-    m.inputs.push_back({name, 0.0});
-    return m.ninput() - 1;
-  };
-  auto load = [&](int body, int point, const Vec3& force, const Vec3& moment, bool body_frame, int in) {
-    PointLoad l;
-    l.body = body;
-    l.point = point;
-    l.force = force;
-    l.moment = moment;
-    l.body_frame = body_frame;
-    l.input = in;
-    m.point_loads.push_back(l);
-  };
-  // Generator torque u on the high-speed shaft, opposing the rotation: −u about c1 on the geared
-  // generator rotor (−GBRatio·u on the generator azimuth), +u on the stator, the nacelle (c1 in
-  // nacelle axes). The gearbox's own reaction comes through the geared joint.
-  const double tilt = b.ed.config.ShftTilt * deg;
-  const int gen = input("generator torque");
-  load(dt.generator, -1, Vec3::Zero(), Vec3(-1, 0, 0), true, gen);
-  load(dt.nacelle, -1, Vec3::Zero(), Vec3(std::cos(tilt), 0, std::sin(tilt)), true, gen);
-  const int thrust = input("rotor thrust");
-  load(dt.hub, -1, Vec3::UnitX(), Vec3::Zero(), true, thrust);
-  const int torque = input("rotor torque");
-  load(dt.hub, -1, Vec3::Zero(), Vec3::UnitX(), true, torque);
-  const int fa = input("tower-top force");
-  load(tower.body, tower.top, Vec3::UnitX(), Vec3::Zero(), false, fa);
-  const int ss = input("tower-top side force");
-  load(tower.body, tower.top, Vec3::UnitY(), Vec3::Zero(), false, ss);
-}
-
 }  // namespace
 
 Model buildElastoDynModel(const io::OpenFastTurbine& t, const ElastoDynModelOptions& opt) {
@@ -101,8 +68,8 @@ Model buildElastoDynModel(const io::OpenFastTurbine& t, const ElastoDynModelOpti
 
   const elastodyn::TowerParts tower = elastodyn::addTower(b);
   const elastodyn::DrivetrainParts dt = elastodyn::addNacelleAndDrivetrain(b, tower);
-  elastodyn::addBlades(b, dt.hub);
-  addInputs(b, tower, dt);
+  const elastodyn::RotorParts rotor = elastodyn::addBlades(b, dt.hub);
+  elastodyn::addInputsAndOutputs(b, tower, dt, rotor);
 
   if (ed.dof.DrTrDOF) b.model.springs.push_back({dt.drivetrain, ed.drivetrain.DTTorSpr, ed.drivetrain.DTTorDmp, 0.0});
   if (const std::optional<io::ServoDynInput> s = yawSpring(t, opt))

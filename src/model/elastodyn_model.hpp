@@ -30,7 +30,17 @@
 /// Inputs (value 0): "generator torque" [N m, high-speed shaft, opposing the rotation: −GBRatio·u on the
 /// generator about x, +GBRatio·u on the nacelle]; "rotor thrust" [N, along the shaft on the hub];
 /// "rotor torque" [N m, about the shaft on the hub, in the direction of rotation]; "tower-top force"
-/// [N, ground X at the tower top]; "tower-top side force" [N, ground Y at the tower top].
+/// [N, ground X at the tower top]; "tower-top side force" [N, ground Y at the tower top]; "collective
+/// pitch" [rad, added to the three frozen "blade k pitch" joints] and "blade k pitch" [rad, one joint,
+/// rotating frame]; their operating point is the pitch angle (BlPitch or the schedule's).
+/// Outputs (SI units; OpenFAST-like names, whirl definitions): "GenSpeed" [rad/s, GBRatio × generator
+/// azimuth rate]; "RotSpeed" [rad/s, generator azimuth + drivetrain rates]; "NacYaw" [rad]; "TTDspFA",
+/// "TTDspSS" [m, tower-top (yaw bearing origin) position along ground X, Y]; "YawBrTAxp", "YawBrTAyp"
+/// [m/s², its inertial acceleration along the yaw bearing's x, y axes, which tilt with the tower top];
+/// "TwrBsMFA", "TwrBsMSS" [N m, tower-base moments from the curvature, bending the top towards +X, +Y];
+/// "RootMFlp k", "RootMEdg k" (no space) [N m, blade-root moments from the curvature, bending the blade
+/// towards its body +y (out of plane) and +z (in plane), both turning with the pitch; rotating frame]
+/// (src/shapes/beam_moment.hpp; stiffness tuners are not applied to them).
 /// Springs: yaw (YawSpr, YawDamp about YawNeut, from ServoDyn), drivetrain (DTTorSpr, DTTorDmp).
 ///
 /// ElastoDyn conventions kept on purpose: the tower top sits at the tower DOF values themselves (not at

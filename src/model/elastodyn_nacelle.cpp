@@ -31,7 +31,7 @@ DrivetrainParts addNacelleAndDrivetrain(Builder& b, const TowerParts& tower) {
   bearing.parent_point = tower.top;
   bearing.rotation = to_ground;
   bearing.inertia = rigidBodyInertia(m.YawBrMass, Vec3::Zero(), Mat3::Zero());
-  b.addBody(std::move(bearing));
+  out.bearing = b.addBody(std::move(bearing));
 
   // Nacelle: ElastoDyn keeps only its inertia about the yaw axis d2, taken at the nacelle CM.
   const Vec3 cm(c.NacCMxn, c.NacCMyn, c.NacCMzn);

@@ -3,7 +3,9 @@
 /// Internal pieces of buildElastoDynModel: each function adds the bodies and DOFs of one part of the
 /// turbine to a model under construction (frames and units: see elastodyn_model.hpp). Body and DOF
 /// indices are those of the unfinalized model; finalize() renumbers them.
+#include <array>
 #include <string>
+#include <vector>
 
 #include "src/io/elastodyn_input.hpp"
 #include "src/model/elastodyn_model.hpp"
@@ -29,21 +31,33 @@ struct Builder {
 struct TowerParts {
   int body = -1;
   int top = -1;  ///< index of the tower-top point
+  std::array<int, 4> dofs{};  ///< FA 1, SS 1, FA 2, SS 2
+  MatX base_moment_gains;     ///< 2 × 4: (m_y, m_z) at the base from the curvature (beam_moment.hpp)
 };
 
 /// The flexible tower (TwrNodes equal elements, FA/SS polynomial shapes, tuners, modal damping).
 TowerParts addTower(Builder& b);
 
 struct DrivetrainParts {
-  int nacelle = -1, shaft = -1, generator = -1, hub = -1;  ///< bodies (shaft: low-speed side; generator: HSS)
+  int bearing = -1, nacelle = -1, shaft = -1, generator = -1, hub = -1;  ///< bodies (shaft: low-speed side; generator: HSS)
   int yaw = -1, generator_azimuth = -1, drivetrain = -1;  ///< DOFs
 };
 
 /// Yaw bearing, nacelle (yaw joint), generator (generator azimuth) and hub (drivetrain twist).
 DrivetrainParts addNacelleAndDrivetrain(Builder& b, const TowerParts& tower);
 
+struct RotorParts {
+  std::vector<int> pitch;                     ///< pitch DOF of each blade
+  std::vector<std::array<int, 3>> shape_dofs; ///< flap 1, edge 1, flap 2 DOFs of each blade
+  std::vector<MatX> root_moment_gains;        ///< per blade, 2 × 3: (m_y flap, m_z edge) at the root
+};
+
 /// The three blades on the hub (pitch joints frozen at BlPitch, twisted ElastoDyn shapes, tip masses).
-void addBlades(Builder& b, int hub);
+RotorParts addBlades(Builder& b, int hub);
+
+/// Inputs (generator torque, rotor thrust and torque, tower-top forces, collective and individual
+/// pitch) and the default outputs (elastodyn_outputs.cpp; names and definitions in elastodyn_model.hpp).
+void addInputsAndOutputs(Builder& b, const TowerParts& tower, const DrivetrainParts& dt, const RotorParts& rotor);
 
 /// Shorthand for an elementary rotation about a body axis (0 = x, 1 = y, 2 = z) by `angle` [rad].
 Mat3 axisRotation(int axis, double angle);

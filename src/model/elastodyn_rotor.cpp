@@ -5,6 +5,7 @@
 #include "src/model/elastodyn_blade_shapes.hpp"
 #include "src/model/elastodyn_parts.hpp"
 #include "src/model/error.hpp"
+#include "src/shapes/beam_moment.hpp"
 
 namespace whirl::elastodyn {
 namespace {
@@ -16,7 +17,8 @@ constexpr double deg = pi / 180.0;
 
 Mat3 axisRotation(int axis, double angle) { return Eigen::AngleAxisd(angle, Vec3::Unit(axis)).toRotationMatrix(); }
 
-void addBlades(Builder& b, int hub) {
+RotorParts addBlades(Builder& b, int hub) {
+  RotorParts out;
   const io::ElastoDynInput& ed = b.ed;
   const io::ElastoDynConfiguration& c = ed.config;
   const int nodes = ed.BldNodes.value_or(b.opt.blade_nodes);
@@ -58,11 +60,16 @@ void addBlades(Builder& b, int hub) {
     bl.elastic.D = elastoDynModalDamping(bl.elastic.K, beam.generalized_mass.array() - tip_mass, beam.damping_ratio);
     bl.points.push_back(beamPoint(beam.props, beam.shapes, o.axial_shortening, L, "tip"));
     const int body = b.addBody(std::move(bl));
-    b.addDof(name + " pitch", body, DofKind::Joint, 0, false, ed.init.BlPitch[static_cast<std::size_t>(k)] * deg);
+    out.pitch.push_back(
+        b.addDof(name + " pitch", body, DofKind::Joint, 0, false, ed.init.BlPitch[static_cast<std::size_t>(k)] * deg));
+    std::array<int, 3> dofs{};
     for (int s = 0; s < 3; ++s) {
       const int d = b.addDof(name + " " + beam.shapes[s]->name, body, DofKind::Elastic, s, on[s]);
       b.model.dofs[d].blade = k;  // rotating frame, blade k: multiblade coordinates
+      dofs[s] = d;
     }
+    out.shape_dofs.push_back(dofs);
+    out.root_moment_gains.push_back(beamMomentGains(beam.props, beam.shapes, 0.0));
 
     if (tip_mass > 0) {
       Body tip;
@@ -73,6 +80,7 @@ void addBlades(Builder& b, int hub) {
       b.addBody(std::move(tip));
     }
   }
+  return out;
 }
 
 }  // namespace whirl::elastodyn

@@ -5,6 +5,7 @@
 #include "src/model/elastodyn_parts.hpp"
 #include "src/model/error.hpp"
 #include "src/shapes/beam.hpp"
+#include "src/shapes/beam_moment.hpp"
 
 namespace whirl::elastodyn {
 namespace {
@@ -85,7 +86,8 @@ TowerParts addTower(Builder& b) {
   out.body = b.addBody(std::move(t));
   out.top = 0;
   const bool on[4] = {ed.dof.TwFADOF1, ed.dof.TwSSDOF1, ed.dof.TwFADOF2, ed.dof.TwSSDOF2};
-  for (int i = 0; i < 4; ++i) b.addDof(shapes[i]->name, out.body, DofKind::Elastic, i, on[i]);
+  for (int i = 0; i < 4; ++i) out.dofs[i] = b.addDof(shapes[i]->name, out.body, DofKind::Elastic, i, on[i]);
+  out.base_moment_gains = beamMomentGains(p, shapes, 0.0);
   return out;
 }
 

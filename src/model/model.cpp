@@ -170,6 +170,7 @@ int jointDofCount(JointType t) {
 std::optional<int> Model::findBody(const std::string& n) const { return findByName(bodies, n); }
 std::optional<int> Model::findDof(const std::string& n) const { return findByName(dofs, n); }
 std::optional<int> Model::findInput(const std::string& n) const { return findByName(inputs, n); }
+std::optional<int> Model::findOutput(const std::string& n) const { return findByName(outputs, n); }
 
 std::vector<int> Model::activeDofs() const {
   std::vector<int> a;
@@ -177,6 +178,52 @@ std::vector<int> Model::activeDofs() const {
     if (!dofs[i].frozen) a.push_back(i);
   return a;
 }
+
+namespace {
+
+// Input DOF targets and outputs: DOF indices renumbered, names unique, values checked.
+void finalizeInputsAndOutputs(Model& m, const std::vector<int>& new_dof) {
+  auto remap = [&](int& d, const std::string& what) {
+    if (d < 0 || d >= static_cast<int>(new_dof.size())) throw InputError(what + ": no such DOF");
+    d = new_dof[d];
+  };
+  std::set<std::string> names;
+  for (Input& in : m.inputs) {
+    if (!names.insert(in.name).second) throw InputError("input '" + in.name + "': name used twice");
+    if (!std::isfinite(in.value)) throw InputError("input '" + in.name + "': value not finite");
+    for (InputDofTarget& t : in.dofs) {
+      remap(t.dof, "input '" + in.name + "'");
+      if (!m.dofs[t.dof].frozen)
+        throw InputError("input '" + in.name + "': DOF '" + m.dofs[t.dof].name +
+                         "' is not frozen (an input sets the value of frozen coordinates only)");
+      if (!std::isfinite(t.gain)) throw InputError("input '" + in.name + "': gain not finite");
+    }
+  }
+  names.clear();
+  for (Output& o : m.outputs) {
+    const std::string what = "output '" + o.name + "'";
+    if (o.name.empty()) throw InputError("an output has no name");
+    if (!names.insert(o.name).second) throw InputError(what + ": name used twice");
+    if (o.order < 0 || o.order > 2) throw InputError(what + ": order must be 0, 1 or 2");
+    if (o.kind == OutputKind::DofCombination) {
+      if (o.terms.empty()) throw InputError(what + ": no DOF");
+      int blade = -2;
+      for (auto& [d, g] : o.terms) {
+        remap(d, what);
+        if (!std::isfinite(g)) throw InputError(what + ": gain not finite");
+        const int b = m.dofs[d].blade;
+        blade = blade == -2 || blade == b ? b : -1;
+      }
+      if (o.blade < 0) o.blade = std::max(blade, -1);
+    } else {
+      if (o.point >= static_cast<int>(m.bodies[o.body].points.size())) throw InputError(what + ": no such point");
+      if (!o.direction.allFinite() || o.direction.norm() < 1e-12) throw InputError(what + ": direction is zero");
+      o.direction.normalize();
+    }
+  }
+}
+
+}  // namespace
 
 void finalize(Model& m) {
   const int nb = static_cast<int>(m.bodies.size());
@@ -215,6 +262,11 @@ void finalize(Model& m) {
     b = new_index[b];
   };
   for (auto& l : m.point_loads) remapBody(l.body, "point load");
+  for (auto& o : m.outputs)
+    if (o.kind == OutputKind::Point) {
+      remapBody(o.body, "output '" + o.name + "'");
+      if (o.frame_body >= 0) remapBody(o.frame_body, "output '" + o.name + "' frame");
+    }
   for (auto& l : m.body_matrices) remapBody(l.body, "body matrices");
 
   // Number the DOFs body by body: joint coordinates, then elastic ones.
@@ -285,6 +337,7 @@ void finalize(Model& m) {
   }
   for (const auto& l : m.dof_loads)
     if (l.input >= m.ninput()) throw InputError("DOF load: no such input");
+  finalizeInputsAndOutputs(m, new_dof);
 
   // Geared joints take the coordinate of the joint they follow.
   for (Body& b : m.bodies) {

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "src/model/body.hpp"
+#include "src/model/output.hpp"
 #include "src/model/types.hpp"
 
 namespace whirl {
@@ -54,10 +55,21 @@ struct Body {
   std::vector<BodyPoint> points;
 };
 
-/// A named input u (thrust, generator torque, ...): loads are scaled by it.
+/// A frozen coordinate an input drives: q_dof = Dof::value + gain · u (e.g. blade pitch).
+struct InputDofTarget {
+  int dof = -1;
+  double gain = 1.0;  ///< [rad or m per unit of the input]
+};
+
+/// A named input u (thrust, generator torque, blade pitch, ...): loads are scaled by it, and the
+/// frozen coordinates it targets are offset by gain · u, so a prescribed motion (a pitch angle)
+/// reaches the equations through the kinematics and ∂/∂u comes from AD like any other input.
 struct Input {
   std::string name;
   double value = 0.0;  ///< operating-point value
+  std::vector<InputDofTarget> dofs;  ///< frozen coordinates set by this input (may be empty)
+  int blade = -1;      ///< rotor blade (0-based) of an input in the rotating frame, −1 = fixed (MBC)
+  std::string unit;    ///< for exports, e.g. "N m", "rad" (may be empty)
 };
 
 /// Force and moment at a body point; if input >= 0 they are multiplied by u[input].
@@ -116,6 +128,7 @@ struct Model {
   std::vector<DofLoad> dof_loads;
   std::vector<DofSpring> springs;
   std::vector<BodyMatrices> body_matrices;
+  std::vector<Output> outputs;           ///< measured quantities y = h(q, q̇, q̈) (output.hpp)
 
   // Derived by finalize().
   std::vector<std::vector<ChainStep>> chains;  ///< per body
@@ -126,6 +139,8 @@ struct Model {
   std::optional<int> findBody(const std::string& name) const;
   std::optional<int> findDof(const std::string& name) const;
   std::optional<int> findInput(const std::string& name) const;
+  std::optional<int> findOutput(const std::string& name) const;
+  int noutput() const { return static_cast<int>(outputs.size()); }
   /// Indices of the coordinates that are states of the linear model (not frozen).
   std::vector<int> activeDofs() const;
 };

@@ -33,9 +33,13 @@ TEST(ElastoDynModel, DofNamesAndSwitchesOfTheNrel5mwFile) {
   const Dof& az = m.dofs[*m.findDof("generator azimuth")];
   EXPECT_TRUE(az.rotating);
   EXPECT_DOUBLE_EQ(az.rate, 10.0 * pi / 30);  // RotSpeed 10 rpm
-  EXPECT_EQ(m.inputs.size(), 5u);
-  for (const char* in : {"generator torque", "rotor thrust", "rotor torque", "tower-top force", "tower-top side force"})
+  EXPECT_EQ(m.inputs.size(), 9u);
+  for (const char* in : {"generator torque", "rotor thrust", "rotor torque", "tower-top force", "tower-top side force",
+                         "collective pitch", "blade 1 pitch", "blade 2 pitch", "blade 3 pitch"})
     EXPECT_TRUE(m.findInput(in).has_value()) << in;
+  EXPECT_EQ(m.inputs[*m.findInput("collective pitch")].dofs.size(), 3u);
+  EXPECT_EQ(m.inputs[*m.findInput("blade 2 pitch")].blade, 1);
+  EXPECT_EQ(m.outputs.size(), 15u);
   ASSERT_EQ(m.springs.size(), 2u);  // drivetrain, yaw (ServoDyn)
   EXPECT_DOUBLE_EQ(m.springs[0].k, 8.67637e8);
   EXPECT_DOUBLE_EQ(m.springs[0].c, 6.215e6);

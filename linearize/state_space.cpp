@@ -1,0 +1,175 @@
+#include "linearize/state_space.hpp"
+
+#include <cmath>
+
+#include "linearize/jacobian.hpp"
+#include "src/dynamics/outputs.hpp"
+#include "src/model/error.hpp"
+
+namespace whirl {
+
+std::string dofUnit(const Model& m, int dof) {
+  const Dof& d = m.dofs[dof];
+  if (d.kind == DofKind::Elastic) return "m";
+  const Body& b = m.bodies[d.body];
+  switch (b.joint) {
+    case JointType::Revolute: return "rad";
+    case JointType::Free: return d.local < 3 ? "m" : "rad";
+    default: return "m";
+  }
+}
+
+StateSpaceModel stateSpace(const Model& m, const OperatingPoint& op, const LinearModel& lin) {
+  StateSpaceModel s;
+  const int n = static_cast<int>(lin.dofs.size());
+  for (int k = 0; k < n; ++k) {
+    const Dof& d = m.dofs[lin.dofs[k]];
+    StateSpaceVariable v;
+    v.name = d.name;
+    v.unit = dofUnit(m, lin.dofs[k]);
+    v.op = op.q(lin.dofs[k]);
+    v.blade = d.blade;
+    v.azimuth = d.rotating;
+    s.x.push_back(v);
+  }
+  for (int k = 0; k < n; ++k) {
+    StateSpaceVariable v = s.x[k];
+    v.name = "d(" + v.name + ")/dt";
+    v.unit += "/s";
+    v.op = op.qd(lin.dofs[k]);
+    v.rate_of = k;
+    v.azimuth = false;
+    s.x.push_back(v);
+  }
+  for (int i = 0; i < m.ninput(); ++i) {
+    const Input& in = m.inputs[i];
+    StateSpaceVariable v;
+    v.name = in.name;
+    v.unit = in.unit;
+    // An input that drives frozen coordinates reports their value (e.g. the pitch angle), since the
+    // model keeps the operating value there and the input is the increment.
+    v.op = in.dofs.empty() ? op.u(i) : op.q(in.dofs.front().dof) / in.dofs.front().gain;
+    v.blade = in.blade;
+    s.u.push_back(v);
+  }
+  s.A = lin.A;
+  s.B = lin.B;
+  s.xdot_op = VecX::Zero(2 * n);
+  Eigen::LDLT<MatX> ldlt(lin.M);
+  for (int k = 0; k < n; ++k) s.xdot_op(k) = op.qd(lin.dofs[k]);
+  if (n > 0) s.xdot_op.tail(n) = ldlt.solve(lin.residual);
+
+  const int ny = m.noutput();
+  VecX y(ny);
+  Workspace<double> ws(m);
+  evaluateOutputs(m, ws, op.q, op.qd, op.qdd, y);
+  for (int i = 0; i < ny; ++i) {
+    if (!std::isfinite(y(i))) throw ComputeError("output '" + m.outputs[i].name + "' is not finite at the operating point");
+    StateSpaceVariable v;
+    v.name = m.outputs[i].name;
+    v.unit = m.outputs[i].unit;
+    v.op = y(i);
+    v.blade = m.outputs[i].blade;
+    s.y.push_back(v);
+  }
+  std::vector<int> inputs(m.ninput());
+  for (int i = 0; i < m.ninput(); ++i) inputs[i] = i;
+  s.C = MatX::Zero(ny, 2 * n);
+  s.D = MatX::Zero(ny, m.ninput());
+  if (ny > 0) {
+    JacobianWorkspace jw(m);
+    const MatX Hq = outputJacobian(m, jw, op.q, op.qd, op.qdd, op.u, Wrt::Q, lin.dofs);
+    const MatX Hqd = outputJacobian(m, jw, op.q, op.qd, op.qdd, op.u, Wrt::Qd, lin.dofs);
+    const MatX Hqdd = outputJacobian(m, jw, op.q, op.qd, op.qdd, op.u, Wrt::Qdd, lin.dofs);
+    const MatX Hu = outputJacobian(m, jw, op.q, op.qd, op.qdd, op.u, Wrt::U, inputs);
+    s.C.leftCols(n) = Hq;
+    s.C.rightCols(n) = Hqd;
+    s.C += Hqdd * lin.A.bottomRows(n);
+    s.D = Hu + Hqdd * lin.B.bottomRows(n);
+  }
+  for (int k = 0; k < n; ++k)
+    if (s.x[k].azimuth) {
+      s.azimuth = op.q(lin.dofs[k]);
+      s.rotor_speed = op.qd(lin.dofs[k]);
+      break;
+    }
+  return s;
+}
+
+namespace {
+
+std::vector<int> indicesOf(const std::vector<StateSpaceVariable>& vars, const std::vector<std::string>& names,
+                           const char* what) {
+  std::vector<int> idx;
+  if (names.empty()) {
+    for (size_t i = 0; i < vars.size(); ++i) idx.push_back(static_cast<int>(i));
+    return idx;
+  }
+  for (const auto& n : names) {
+    int found = -1;
+    for (size_t i = 0; i < vars.size(); ++i)
+      if (vars[i].name == n) found = static_cast<int>(i);
+    if (found < 0) {
+      std::string all;
+      for (const auto& v : vars) all += (all.empty() ? "" : ", ") + v.name;
+      throw InputError(std::string("unknown ") + what + " '" + n + "' (" + what + "s: " + (all.empty() ? "none" : all) + ")");
+    }
+    idx.push_back(found);
+  }
+  return idx;
+}
+
+std::vector<StateSpaceVariable> pick(const std::vector<StateSpaceVariable>& v, const std::vector<int>& idx) {
+  std::vector<StateSpaceVariable> out;
+  for (int i : idx) out.push_back(v[i]);
+  return out;
+}
+
+MatX pickRows(const MatX& M, const std::vector<int>& idx) {
+  MatX out(static_cast<Eigen::Index>(idx.size()), M.cols());
+  for (size_t k = 0; k < idx.size(); ++k) out.row(k) = M.row(idx[k]);
+  return out;
+}
+
+MatX pickCols(const MatX& M, const std::vector<int>& idx) { return pickRows(M.transpose(), idx).transpose(); }
+
+}  // namespace
+
+StateSpaceModel selectInputsOutputs(const StateSpaceModel& s, const std::vector<std::string>& inputs,
+                                    const std::vector<std::string>& outputs) {
+  const std::vector<int> iu = indicesOf(s.u, inputs, "input"), iy = indicesOf(s.y, outputs, "output");
+  StateSpaceModel r = s;
+  r.u = pick(s.u, iu);
+  r.y = pick(s.y, iy);
+  r.B = pickCols(s.B, iu);
+  r.C = pickRows(s.C, iy);
+  r.D = pickCols(pickRows(s.D, iy), iu);
+  return r;
+}
+
+StateSpaceModel dropAzimuth(const StateSpaceModel& s) {
+  std::vector<int> keep, new_index(s.x.size(), -1);
+  for (size_t i = 0; i < s.x.size(); ++i)
+    if (!s.x[i].azimuth) {
+      new_index[i] = static_cast<int>(keep.size());
+      keep.push_back(static_cast<int>(i));
+    }
+  StateSpaceModel r = s;
+  r.x = pick(s.x, keep);
+  for (auto& v : r.x) v.rate_of = v.rate_of >= 0 ? new_index[v.rate_of] : -1;
+  r.xdot_op = VecX(static_cast<Eigen::Index>(keep.size()));
+  for (size_t k = 0; k < keep.size(); ++k) r.xdot_op(k) = s.xdot_op(keep[k]);
+  r.A = pickCols(pickRows(s.A, keep), keep);
+  r.B = pickRows(s.B, keep);
+  r.C = pickCols(s.C, keep);
+  return r;
+}
+
+int bladeCount(const StateSpaceModel& s) {
+  int n = 0;
+  for (const auto* vars : {&s.x, &s.u, &s.y})
+    for (const auto& v : *vars) n = std::max(n, v.blade + 1);
+  return n;
+}
+
+}  // namespace whirl

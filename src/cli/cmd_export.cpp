@@ -1,0 +1,149 @@
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <filesystem>
+#include <numbers>
+#include <sstream>
+
+#include "linearize/export_point.hpp"
+#include "linearize/periodic.hpp"
+#include "linearize/state_space.hpp"
+#include "modal/campbell_sweep.hpp"
+#include "src/cli/commands.hpp"
+#include "src/cli/common.hpp"
+#include "src/io/atomic_file.hpp"
+#include "src/io/schedule.hpp"
+#include "src/io/staged_files.hpp"
+#include "src/io/state_space_files.hpp"
+#include "src/model/error.hpp"
+
+namespace whirl::cli {
+namespace {
+
+struct CliOptions {
+  ModelOptions model;
+  std::string schedule, format, out, inputs, outputs;
+  int azimuths = 36;
+  bool drop_azimuth = false;
+};
+
+std::vector<std::string> splitList(const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream in(s);
+  for (std::string item; std::getline(in, item, ',');) {
+    const auto b = item.find_first_not_of(' '), e = item.find_last_not_of(' ');
+    if (b != std::string::npos) out.push_back(item.substr(b, e - b + 1));
+  }
+  return out;
+}
+
+// Fails before any computation when a name is unknown.
+void checkNames(const Model& m, const std::vector<std::string>& inputs, const std::vector<std::string>& outputs) {
+  auto list = [](const auto& items) {
+    std::string s;
+    for (const auto& i : items) s += (s.empty() ? "" : ", ") + i.name;
+    return s.empty() ? std::string("none") : s;
+  };
+  for (const auto& n : inputs)
+    if (!m.findInput(n)) throw InputError("--inputs: unknown input '" + n + "' (inputs: " + list(m.inputs) + ")");
+  if (!outputs.empty() && m.outputs.empty())
+    throw InputError("--outputs: the model defines no outputs (add an `outputs:` section to the case file)");
+  for (const auto& n : outputs)
+    if (!m.findOutput(n)) throw InputError("--outputs: unknown output '" + n + "' (outputs: " + list(m.outputs) + ")");
+}
+
+void run(const CliOptions& opt) {
+  if (opt.model.rpm && !opt.schedule.empty()) throw InputError("export: give --rpm or --schedule, not both");
+  const std::vector<std::string> in = splitList(opt.inputs), out = splitList(opt.outputs);
+  const Model base = loadModel(opt.model);
+  checkNames(base, in, out);
+  const std::string dir = opt.out.empty() ? defaultOutputFolder(opt.model.case_path) : opt.out;
+  ensureWritableFolder(dir);
+
+  std::vector<SweepPoint> points;
+  if (!opt.schedule.empty()) {
+    points = readSchedule(opt.schedule);
+  } else {
+    SweepPoint p;
+    const int az = findAzimuthDof(base);
+    p.rpm = az >= 0 ? base.dofs[az].rate * 30 / std::numbers::pi : 0.0;
+    points.push_back(p);
+  }
+  StateSpaceExport e;
+  e.source = opt.model.case_path;
+  e.model_name = base.name;
+  ExportOptions eo;
+  eo.azimuths = opt.azimuths;
+  eo.inputs = in;
+  eo.outputs = out;
+  eo.drop_azimuth = opt.drop_azimuth;
+  std::optional<OperatingPoint> warm;
+  for (const SweepPoint& sp : points) {
+    Model m = base;
+    if (!opt.schedule.empty()) {
+      setRotorSpeed(m, sp.rpm);
+      if (sp.pitch_deg) setCollectivePitch(m, *sp.pitch_deg);
+    }
+    OperatingPoint start = initialPoint(m);
+    if (warm)  // the previous point's equilibrium: a good guess for the next
+      for (int i = 0; i < m.ndof(); ++i)
+        if (!m.dofs[i].rotating && !m.dofs[i].frozen) start.q(i) = warm->q(i);
+    ExportPoint p = exportOperatingPoint(m, start, eo);
+    p.rpm = sp.rpm;
+    p.wind_speed = sp.wind_speed;
+    p.pitch_deg = sp.pitch_deg;
+    p.model.wind_speed = sp.wind_speed;
+    for (auto& s : p.azimuths) s.wind_speed = sp.wind_speed;
+    warm = p.equilibrium;
+    e.points.push_back(std::move(p));
+  }
+
+  StagedFiles files;
+  std::string title = e.model_name.substr(0, e.model_name.find(". "));  // ElastoDyn headers run long
+  if (title.empty()) title = opt.model.case_path;
+  if (opt.format == "mat") {
+    writeStateSpaceMat(e, files.stage(dir + "/statespace.mat"));
+  } else if (opt.format == "json") {
+    files.write(dir + "/statespace.json", stateSpaceJson(e));
+  } else {
+    for (size_t j = 0; j < e.points.size(); ++j) {
+      const ExportPoint& p = e.points[j];
+      char stem[32];
+      if (e.points.size() == 1) std::snprintf(stem, sizeof stem, "statespace");
+      else std::snprintf(stem, sizeof stem, "statespace_%02zu", j + 1);
+      if (p.azimuths.empty()) {
+        files.write(dir + "/" + stem + ".1.lin", linFileText(p.model, title));
+        continue;
+      }
+      for (size_t k = 0; k < p.azimuths.size(); ++k)
+        files.write(dir + "/" + stem + "." + std::to_string(k + 1) + ".lin", linFileText(p.azimuths[k], title));
+    }
+  }
+  files.commit();
+  const StateSpaceModel& m = e.points.front().model;
+  const std::string mbc =
+      m.multiblade ? " (multiblade average over " + std::to_string(e.points.front().azimuths.size()) + " azimuths)" : "";
+  std::printf("wrote %zu file%s in %s: %zu operating point%s, %zu states, %zu inputs, %zu outputs%s\n",
+              files.paths().size(), files.paths().size() == 1 ? "" : "s", dir.c_str(), e.points.size(),
+              e.points.size() == 1 ? "" : "s", m.x.size(), m.u.size(), m.y.size(), mbc.c_str());
+}
+
+}  // namespace
+
+void addExportCommand(CLI::App& app) {
+  auto opt = std::make_shared<CliOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "export", "state-space model(s) A, B, C, D with named inputs and outputs for controller design: MATLAB .mat, "
+                "OpenFAST-style .lin (one per azimuth) or JSON");
+  addModelOptions(*cmd, opt->model);
+  cmd->add_option("--schedule", opt->schedule, "operating schedule CSV (wind speed, RotSpeed, BldPitch columns)");
+  cmd->add_option("--azimuths", opt->azimuths, "azimuths per revolution (periodic linearization, multiblade average)")
+      ->check(CLI::Range(1, 3600));
+  cmd->add_option("--format", opt->format, "mat, lin or json")->required()->check(CLI::IsMember({"mat", "lin", "json"}));
+  cmd->add_option("--out", opt->out, "output folder (default reports/<case name>)");
+  cmd->add_option("--inputs", opt->inputs, "keep these inputs, comma-separated, in this order (default: all)");
+  cmd->add_option("--outputs", opt->outputs, "keep these outputs, comma-separated, in this order (default: all)");
+  cmd->add_flag("--drop-azimuth", opt->drop_azimuth, "remove the rotor azimuth state (keep the rotor speed)");
+  cmd->callback([opt]() { run(*opt); });
+}
+
+}  // namespace whirl::cli

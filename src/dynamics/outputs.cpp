@@ -1,0 +1,11 @@
+// Explicit instantiation of the outputs for double and the AD chunk type.
+#include "src/dynamics/outputs.hxx"
+#include "src/dynamics/scalar.hpp"
+
+namespace whirl {
+
+template void evaluateOutputs<double>(const Model&, Workspace<double>&, const VecX&, const VecX&, const VecX&, VecX&);
+template void evaluateOutputs<ADChunk>(const Model&, Workspace<ADChunk>&, const VecXT<ADChunk>&,
+                                       const VecXT<ADChunk>&, const VecXT<ADChunk>&, VecXT<ADChunk>&);
+
+}  // namespace whirl

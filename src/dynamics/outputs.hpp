@@ -1,0 +1,16 @@
+#pragma once
+/// \file
+/// The model's outputs y = h(q, q̇, q̈) (src/model/output.hpp), written once for any scalar T and
+/// instantiated for double and ADChunk in outputs.cpp, so that C and D come from AD.
+#include "src/dynamics/workspace.hpp"
+
+namespace whirl {
+
+/// Evaluates every output of the model (forward kinematics included when a point output needs it).
+/// \param[in]  q, qd, qdd  all coordinates, frozen ones included (dim model.ndof())
+/// \param[out] y           outputs (dim model.noutput()), in the units of each Output
+template <class T>
+void evaluateOutputs(const Model& model, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T>& qd,
+                     const VecXT<T>& qdd, VecXT<T>& y);
+
+}  // namespace whirl

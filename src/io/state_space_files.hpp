@@ -1,0 +1,39 @@
+#pragma once
+/// \file
+/// State-space models written for controller design tools (layouts documented in README.md,
+/// section "State-space export"):
+/// - MATLAB .mat (matio, level 5): one operating point as plain matrices and cell arrays of names;
+///   several as ROSCO's linear-model layout (1 × n cell arrays A, B, C, D, x_ops, u_ops, y_ops, the
+///   index vectors indInps/indOuts and an operating-point table).
+/// - OpenFAST-style `.lin` text, one file per azimuth (FAST_Lin layout; readable by readOpenFastLin,
+///   pyFAST's FASTLinearizationFile and MBC3).
+/// - JSON with the same content.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "linearize/export_point.hpp"
+
+namespace whirl {
+
+/// Writes the .mat file at `path` (the caller stages it; see staged_files.hpp). InputError on failure.
+void writeStateSpaceMat(const StateSpaceExport& e, const std::string& path);
+
+/// Text of one `.lin` file for model `m` (its variables must carry rotating-frame blades, i.e. not
+/// a multiblade model); `title` goes to the description line.
+std::string linFileText(const StateSpaceModel& m, const std::string& title);
+
+/// JSON text of the whole export.
+std::string stateSpaceJson(const StateSpaceExport& e);
+
+/// True when every displacement state is an ElastoDyn-equivalent DOF ("tower FA 1", "blade 2 flap 1",
+/// "generator azimuth", "drivetrain", "yaw", …).
+bool elastoDynStates(const std::vector<StateSpaceVariable>& states);
+
+/// OpenFAST description of state `x` of `all`: ElastoDyn's wording ("ED 1st tower fore-aft bending-mode
+/// DOF (internal DOF index = DOF_TFA1), m") when `elastodyn`, so OpenFAST tools (ROSCO, MBC3) recognize
+/// them; "whirl <name>, <unit>" otherwise (the azimuth marked "DOF_GeAz" as OpenFAST does). One prefix
+/// for all states keeps them one module, which is how readers pair displacements with rates.
+std::string linStateDescription(const StateSpaceVariable& x, const std::vector<StateSpaceVariable>& all, bool elastodyn);
+
+}  // namespace whirl

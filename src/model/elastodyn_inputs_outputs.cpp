@@ -1,0 +1,120 @@
+// Inputs and default outputs of the ElastoDyn turbine (definitions in elastodyn_model.hpp).
+#include <cmath>
+#include <numbers>
+
+#include "src/model/elastodyn_parts.hpp"
+
+namespace whirl::elastodyn {
+namespace {
+
+constexpr double deg = std::numbers::pi / 180.0;
+
+void addInputs(Builder& b, const TowerParts& tower, const DrivetrainParts& dt, const RotorParts& rotor) {
+  Model& m = b.model;
+  auto input = [&](const char* name, const char* unit) {
+    Input in;
+    in.name = name;
+    in.unit = unit;
+    m.inputs.push_back(in);
+    return m.ninput() - 1;
+  };
+  auto load = [&](int body, int point, const Vec3& force, const Vec3& moment, bool body_frame, int in) {
+    PointLoad l;
+    l.body = body;
+    l.point = point;
+    l.force = force;
+    l.moment = moment;
+    l.body_frame = body_frame;
+    l.input = in;
+    m.point_loads.push_back(l);
+  };
+  // Generator torque u on the high-speed shaft, opposing the rotation: −u about c1 on the geared
+  // generator rotor (−GBRatio·u on the generator azimuth), +u on the stator, the nacelle (c1 in
+  // nacelle axes). The gearbox's own reaction comes through the geared joint.
+  const double tilt = b.ed.config.ShftTilt * deg;
+  const int gen = input("generator torque", "N m");
+  load(dt.generator, -1, Vec3::Zero(), Vec3(-1, 0, 0), true, gen);
+  load(dt.nacelle, -1, Vec3::Zero(), Vec3(std::cos(tilt), 0, std::sin(tilt)), true, gen);
+  const int thrust = input("rotor thrust", "N");
+  load(dt.hub, -1, Vec3::UnitX(), Vec3::Zero(), true, thrust);
+  const int torque = input("rotor torque", "N m");
+  load(dt.hub, -1, Vec3::Zero(), Vec3::UnitX(), true, torque);
+  const int fa = input("tower-top force", "N");
+  load(tower.body, tower.top, Vec3::UnitX(), Vec3::Zero(), false, fa);
+  const int ss = input("tower-top side force", "N");
+  load(tower.body, tower.top, Vec3::UnitY(), Vec3::Zero(), false, ss);
+  // Pitch: prescribed rotations of the frozen pitch joints (positive to feather, as BlPitch).
+  const int coll = input("collective pitch", "rad");
+  for (int d : rotor.pitch) m.inputs[coll].dofs.push_back({d, 1.0});
+  for (size_t k = 0; k < rotor.pitch.size(); ++k) {
+    const std::string name = "blade " + std::to_string(k + 1) + " pitch";
+    Input in;
+    in.name = name;
+    in.unit = "rad";
+    in.dofs.push_back({rotor.pitch[k], 1.0});
+    in.blade = static_cast<int>(k);
+    m.inputs.push_back(in);
+  }
+}
+
+Output dofOutput(std::string name, std::string unit, int order, std::vector<std::pair<int, double>> terms) {
+  Output o;
+  o.name = std::move(name);
+  o.unit = std::move(unit);
+  o.order = order;
+  o.terms = std::move(terms);
+  return o;
+}
+
+Output pointOutput(std::string name, std::string unit, int order, int body, int point, int frame, const Vec3& dir) {
+  Output o;
+  o.name = std::move(name);
+  o.unit = std::move(unit);
+  o.kind = OutputKind::Point;
+  o.order = order;
+  o.body = body;
+  o.point = point;
+  o.frame_body = frame;
+  o.direction = dir;
+  return o;
+}
+
+void addOutputs(Builder& b, const TowerParts& tower, const DrivetrainParts& dt, const RotorParts& rotor) {
+  std::vector<Output>& y = b.model.outputs;
+  const double ratio = b.ed.drivetrain.GBRatio;
+  y.push_back(dofOutput("GenSpeed", "rad/s", 1, {{dt.generator_azimuth, ratio}}));
+  y.push_back(dofOutput("RotSpeed", "rad/s", 1, {{dt.generator_azimuth, 1.0}, {dt.drivetrain, 1.0}}));
+  y.push_back(dofOutput("NacYaw", "rad", 0, {{dt.yaw, 1.0}}));
+  // Tower top = the yaw bearing's origin; its axes follow the tower-top rotation (OpenFAST's xp, yp).
+  y.push_back(pointOutput("TTDspFA", "m", 0, dt.bearing, -1, -1, Vec3::UnitX()));
+  y.push_back(pointOutput("TTDspSS", "m", 0, dt.bearing, -1, -1, Vec3::UnitY()));
+  y.push_back(pointOutput("YawBrTAxp", "m/s^2", 2, dt.bearing, -1, dt.bearing, Vec3::UnitX()));
+  y.push_back(pointOutput("YawBrTAyp", "m/s^2", 2, dt.bearing, -1, dt.bearing, Vec3::UnitY()));
+  // Tower body: y = −Y (side-to-side), z = X (fore-aft); m_z bends the top downwind, −m_y to +Y.
+  std::vector<std::pair<int, double>> fa, ss;
+  for (int i = 0; i < 4; ++i) {
+    fa.push_back({tower.dofs[i], tower.base_moment_gains(1, i)});
+    ss.push_back({tower.dofs[i], -tower.base_moment_gains(0, i)});
+  }
+  y.push_back(dofOutput("TwrBsMFA", "N m", 0, fa));
+  y.push_back(dofOutput("TwrBsMSS", "N m", 0, ss));
+  // Blade body: y = out of plane (flap), z = in plane (edge), both turning with the pitch.
+  for (size_t k = 0; k < rotor.shape_dofs.size(); ++k) {
+    std::vector<std::pair<int, double>> flap, edge;
+    for (int s = 0; s < 3; ++s) {
+      flap.push_back({rotor.shape_dofs[k][s], rotor.root_moment_gains[k](0, s)});
+      edge.push_back({rotor.shape_dofs[k][s], rotor.root_moment_gains[k](1, s)});
+    }
+    y.push_back(dofOutput("RootMFlp" + std::to_string(k + 1), "N m", 0, flap));
+    y.push_back(dofOutput("RootMEdg" + std::to_string(k + 1), "N m", 0, edge));
+  }
+}
+
+}  // namespace
+
+void addInputsAndOutputs(Builder& b, const TowerParts& tower, const DrivetrainParts& dt, const RotorParts& rotor) {
+  addInputs(b, tower, dt, rotor);
+  addOutputs(b, tower, dt, rotor);
+}
+
+}  // namespace whirl::elastodyn

@@ -1,0 +1,40 @@
+#pragma once
+/// \file
+/// Outputs of a model: named measured quantities y = h(q, q̇, q̈) for state-space export (y = C x + D u).
+/// Plain data inside the Model (indices are renumbered by finalize()); evaluated by
+/// evaluateOutputs() (src/dynamics/outputs.hpp) and differentiated by AD (linearize/state_space.hpp).
+///
+/// Two kinds, each at a derivative order (0 value, 1 rate, 2 acceleration):
+/// - DofCombination: Σ_k gain_k q_k^(order), e.g. a DOF value/rate/acceleration (one term), the
+///   rotor speed (generator azimuth + drivetrain rates), the generator speed (gear ratio × rate), or
+///   an elastic bending moment EI·Σ φ''(x) q (gains from the shapes' curvature, see beamMomentGains).
+/// - Point: position, velocity or acceleration of a body point (body origin when point = −1), ground
+///   (inertial) motion, projected on `direction` given in the axes of `frame_body` (−1 = ground):
+///   y = direction · R_Fᵀ p^(order). With frame_body = the carrying body this is what a body-fixed
+///   sensor (an IMU without gravity) measures along one axis.
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "src/model/types.hpp"
+
+namespace whirl {
+
+enum class OutputKind { DofCombination, Point };
+
+struct Output {
+  std::string name;
+  std::string unit;  ///< e.g. "rad/s", "m/s^2", "N m" (for exports)
+  OutputKind kind = OutputKind::DofCombination;
+  int order = 0;     ///< 0 = value, 1 = rate, 2 = acceleration
+  std::vector<std::pair<int, double>> terms;  ///< DofCombination: (DOF, gain)
+  int body = -1;        ///< Point: the body carrying the point
+  int point = -1;       ///< Point: point index of `body`, −1 = body origin
+  int frame_body = -1;  ///< Point: axes of `direction`, −1 = ground
+  Vec3 direction = Vec3::UnitX();  ///< Point: unit vector in those axes
+  /// Rotor blade (0-based) of an output in the rotating frame, −1 = fixed frame (MBC, `.lin` flag).
+  /// finalize() sets it for a DofCombination whose DOFs all belong to one blade, when left at −1.
+  int blade = -1;
+};
+
+}  // namespace whirl
