@@ -37,6 +37,7 @@ struct Workspace {
   std::vector<VecXT<T>> ukl;  ///< 9 vectors u_kl = A_kl c + 2 W_kl ċ + δ_kl c̈
   VecXT<T> g;                 ///< Σ_k ∫ P_kᵀ (a_P)_k dm
   VecXT<T> tmp;
+  VecXT<T> h;                 ///< elastic generalized inertia forces of one body (largest ne)
 };
 
 }  // namespace whirl
