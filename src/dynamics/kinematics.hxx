@@ -8,7 +8,7 @@ namespace whirl {
 template <class T>
 Workspace<T>::Workspace(const Model& m) {
   const int n = m.ndof();
-  int ncmax = 1;
+  int ncmax = 1, nemax = 1;
   frames.resize(m.bodies.size());
   basis.resize(m.bodies.size());
   for (size_t i = 0; i < m.bodies.size(); ++i) {
@@ -20,10 +20,12 @@ Workspace<T>::Workspace(const Model& m) {
     basis[i].cdd = VecXT<T>::Zero(in.nc());
     basis[i].D = MatXT<T>::Zero(in.nc(), in.ne);
     ncmax = std::max(ncmax, in.nc());
+    nemax = std::max(nemax, in.ne);
   }
   ukl.assign(9, VecXT<T>::Zero(ncmax));
   g = VecXT<T>::Zero(ncmax);
   tmp = VecXT<T>::Zero(ncmax);
+  h = VecXT<T>::Zero(nemax);
 }
 
 template <class T>

@@ -116,7 +116,7 @@ void residual(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T
   const int nb = static_cast<int>(m.bodies.size());
   for (int k = 0; k < m.ndof(); ++k) e(k) = T(0);
   const Vec3T<T> gravity = m.gravity.cast<T>();
-  T H[64];
+  T* H = ws.h.data();  // elastic forces of one body (sized to the largest ne)
   for (int i = 0; i < nb; ++i) {
     const Body& b = m.bodies[i];
     if constexpr (!std::is_same_v<T, double>)

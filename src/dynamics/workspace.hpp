@@ -41,6 +41,7 @@ struct Workspace {
   /// forces of bodies none of whose coordinates carries a seeded direction (their values in e are
   /// then incomplete). Never set when the values of e are used.
   bool derivatives_only = false;
+  VecXT<T> h;                 ///< elastic generalized inertia forces of one body (largest ne)
 };
 
 }  // namespace whirl

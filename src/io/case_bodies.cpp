@@ -13,6 +13,9 @@ const std::vector<std::string> kCommonKeys = {"name", "type", "parent", "at", "o
 const std::vector<std::string> kRigidKeys = {"mass", "cog", "inertia"};
 const std::vector<std::string> kBeamKeys = {"length",      "uniform",          "properties", "shapes",
                                             "integration", "axial_shortening", "damping"};
+const std::vector<std::string> kFemKeys = {"length",   "elements", "uniform",  "properties", "timoshenko",
+                                           "dofs",     "clamped",  "supports", "soil",       "masses",
+                                           "reduction", "damping", "geometric_stiffness"};
 
 Mat3 elementary(char axis, double angle) {
   const double c = std::cos(angle), s = std::sin(angle);
@@ -95,7 +98,8 @@ void readBodies(const CaseNode& list, CaseBuild& build) {
     std::vector<std::string> keys = kCommonKeys;
     if (type == "rigid") keys.insert(keys.end(), kRigidKeys.begin(), kRigidKeys.end());
     else if (type == "beam") keys.insert(keys.end(), kBeamKeys.begin(), kBeamKeys.end());
-    else n.at("type").fail("unknown body type '" + type + "' (allowed: rigid, beam)");
+    else if (type == "fem_beam") keys.insert(keys.end(), kFemKeys.begin(), kFemKeys.end());
+    else n.at("type").fail("unknown body type '" + type + "' (allowed: rigid, beam, fem_beam)");
     n.allowKeys(keys);
     Body b;
     const CaseNode name = n.at("name");
@@ -111,7 +115,8 @@ void readBodies(const CaseNode& list, CaseBuild& build) {
     links.push_back({n.find("parent"), n.find("at")});
     readJoint(n, index, build);
     if (type == "rigid") readRigidBody(n, m.bodies[index]);
-    else readBeamBody(n, index, build);
+    else if (type == "beam") readBeamBody(n, index, build);
+    else readFemBody(n, index, build);
   }
   for (size_t i = 0; i < items.size(); ++i) {
     Body& b = m.bodies[i];

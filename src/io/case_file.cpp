@@ -58,6 +58,7 @@ Model readCase(const std::string& path, const std::vector<CaseOverride>& overrid
   } catch (const InputError& e) {
     rethrowAt(Where{path, 0, "", ""}, e);
   }
+  addFemGeometricStiffness(m, build.fem);
   return m;
 }
 

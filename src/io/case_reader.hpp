@@ -2,6 +2,7 @@
 /// \file
 /// Internal to the case reader (src/io/case_*.cpp): the model under construction with where each
 /// part was written, and the readers of each section. Users call readCase() (case_file.hpp).
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,8 @@
 #include "src/shapes/shape.hpp"
 
 namespace whirl {
+
+struct FemPending;
 
 /// The model being built, with where its bodies and DOFs were written (indices as in `model`,
 /// before finalize() reorders them).
@@ -27,6 +30,7 @@ struct CaseBuild {
   std::vector<Where> body_where;
   std::vector<Where> dof_where;    ///< where the DOF's name was given (or its joint/shape)
   std::vector<bool> dof_angular;   ///< an angle [rad]: `value_deg` and `rate_rpm` allowed
+  std::vector<std::shared_ptr<FemPending>> fem;  ///< FE bodies awaiting their geometric stiffness
 
   /// Appends a DOF; fails at `w` when the name is already used.
   void addDof(const std::string& name, DofKind kind, int body, int local, const Where& w, bool angular);
@@ -55,6 +59,13 @@ void readRigidBody(const CaseNode& node, Body& body);
 
 /// The beam keys of `node` into body `index` of the build, with its elastic DOFs (case_beam.cpp).
 void readBeamBody(const CaseNode& node, int index, CaseBuild& build);
+
+/// The keys of a `fem_beam` body into body `index`, with its elastic DOFs (case_fem.cpp).
+void readFemBody(const CaseNode& node, int index, CaseBuild& build);
+
+/// After finalize(): adds to each FE body the geometric stiffness of the gravity loads it carries
+/// (its own weight and that of the bodies attached at its nodes), at the initial DOF values.
+void addFemGeometricStiffness(Model& model, const std::vector<std::shared_ptr<FemPending>>& pending);
 
 /// The `shapes:` of beam `node` (length L, body `index`), each adding its elastic DOF (case_shapes.cpp).
 std::vector<ShapePtr> readShapes(const CaseNode& node, double length, int index, CaseBuild& build);

@@ -1,0 +1,66 @@
+#include "src/fem/fem_body.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include <Eigen/SparseCholesky>
+
+#include "src/model/error.hpp"
+
+namespace whirl::fem {
+
+FemBody buildFemBody(const FemBodySpec& spec, const std::string& name, const ModalSolver& solver) {
+  validate(spec.model, name);
+  FemBody fb;
+  fb.assembly = assemble(spec.model, true);
+  fb.map = freeDofs(spec.model);
+  if (fb.map.nfree() == 0) throw InputError("FE body '" + name + "': every DOF is fixed");
+  fb.K = restrictTo(fb.assembly.K, fb.map);
+  fb.M = restrictTo(fb.assembly.M, fb.map);
+  const int n = fb.map.nfree();
+  if (spec.reduction == ReductionKind::None) {
+    fb.basis = MatX::Identity(n, n);
+    for (int f : fb.map.free) fb.dof_names.push_back(dofName(f));
+  } else {
+    std::vector<int> interface;
+    for (int node : spec.interface_nodes)
+      for (int k = 0; k < kNodeDofs; ++k) {
+        const int f = fb.map.index[kNodeDofs * node + k];
+        if (f < 0) continue;
+        interface.push_back(f);
+        fb.dof_names.push_back(dofName(kNodeDofs * node + k));
+      }
+    if (interface.empty()) throw InputError("FE body '" + name + "': the interface has no free DOF");
+    const int modes = spec.reduction == ReductionKind::CraigBampton ? spec.modes : 0;
+    const Reduction r = modes > 0 ? craigBampton(fb.K, fb.M, interface, modes, solver) : guyan(fb.K, interface);
+    fb.basis = r.basis;
+    fb.fixed_interface_hz = r.fixed_interface_omega2.cwiseMax(0.0).cwiseSqrt() / (2 * std::numbers::pi);
+    for (int j = 0; j < modes; ++j) fb.dof_names.push_back("CB " + std::to_string(j + 1));
+  }
+  fb.body = ritzBody(spec.model, fb.assembly, fb.map, fb.basis, fb.K, spec.points);
+  return fb;
+}
+
+MatX gravityGeometricStiffness(const FemBody& fb, const BeamModel& model, const Vec3& g,
+                               const std::vector<CarriedMass>& carried, VecX* axial_force) {
+  const DofMap& map = fb.map;
+  // Generalized gravity force on the full DOFs: ∫ gᵀ P dm over columns 1.. (work g·s per DOF).
+  const Mat3X& m1 = fb.assembly.integrals.m1;
+  VecX f = (g.transpose() * m1.rightCols(map.nfull)).transpose();
+  for (const CarriedMass& c : carried) f.segment<3>(kNodeDofs * c.node) += c.mass * g;
+  VecX ff(map.nfree());
+  for (int i = 0; i < map.nfree(); ++i) ff(i) = f(map.free[i]);
+  Eigen::SimplicialLDLT<SpMat> ldlt(fb.K);
+  if (ldlt.info() != Eigen::Success)
+    throw ComputeError("geometric stiffness: the FE body is not held (singular stiffness); fix or support it");
+  const VecX uf = ldlt.solve(ff);
+  VecX u = VecX::Zero(map.nfull);
+  for (int i = 0; i < map.nfree(); ++i) u(map.free[i]) = uf(i);
+  const VecX N = axialForces(model, u);
+  if (axial_force) *axial_force = N;
+  const SpMat G = restrictTo(geometricStiffness(model, N), map);
+  const MatX KG = fb.basis.transpose() * (G * fb.basis);
+  return 0.5 * (KG + KG.transpose());
+}
+
+}  // namespace whirl::fem
