@@ -38,6 +38,15 @@ double xOf(const CampbellPoint& p, const CampbellPlotOptions& opt) {
   return opt.versus_wind_speed ? p.wind_speed.value_or(NAN) : p.rpm;
 }
 
+// A line entirely above the frequency axis (--max-freq) is left out of both panels and the key; its
+// data stay in campbell.dat and the tables.
+bool shown(const CampbellDiagram& d, const CampbellLine& line, const CampbellPlotOptions& opt) {
+  if (opt.max_freq_hz <= 0) return true;
+  for (std::size_t p = 0; p < d.points.size(); ++p)
+    if (line.mode[p] >= 0 && d.points[p].modes[line.mode[p]].freq_hz <= opt.max_freq_hz) return true;
+  return false;
+}
+
 struct Ranges {
   double x0 = 0, x1 = 1, fmax = 1, dmin = 0, dmax = 1;
 };
@@ -51,7 +60,7 @@ Ranges ranges(const CampbellDiagram& d, const CampbellPlotOptions& opt) {
   }
   for (const auto& line : d.lines)
     for (std::size_t p = 0; p < d.points.size(); ++p) {
-      if (line.mode[p] < 0) continue;
+      if (line.mode[p] < 0 || !shown(d, line, opt)) continue;
       const Mode& m = d.points[p].modes[line.mode[p]];
       if (std::isfinite(m.freq_hz)) f1 = std::max(f1, m.freq_hz);
       if (std::isfinite(m.damping_ratio)) {
@@ -191,6 +200,7 @@ std::string campbellGnuplotScript(const CampbellDiagram& d, const CampbellPlotOp
   }
   std::string freq, damp;
   for (std::size_t l = 0; l < d.lines.size(); ++l) {
+    if (!shown(d, d.lines[l], opt)) continue;
     const std::string idx = "data index " + std::to_string(l) + " using xcol:";
     const std::string style = " with linespoints ls " + std::to_string(l + 1);
     freq += "  " + idx + "3" + style + " title " + quoted(d.lines[l].name) + ", \\\n";
