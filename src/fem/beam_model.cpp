@@ -1,5 +1,7 @@
 #include "src/fem/beam_model.hpp"
 
+#include "src/shapes/interpolate.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -12,26 +14,17 @@ const std::array<const char*, 6> kNodeDofNames = {"ux", "uy", "uz", "rx", "ry", 
 
 namespace {
 
-double interp(const VecX& x, const VecX& v, double xi) {
-  if (v.size() == 0) return 0.0;
-  const auto n = x.size();
-  Eigen::Index i = 0;
-  while (i < n - 2 && xi > x(i + 1)) ++i;
-  const double w = std::clamp((xi - x(i)) / (x(i + 1) - x(i)), 0.0, 1.0);
-  return (1 - w) * v(i) + w * v(i + 1);
-}
-
 Section sectionAt(const BeamStations& p, double x) {
   Section s;
-  s.m = interp(p.x, p.m, x);
-  s.EA = interp(p.x, p.EA, x);
-  s.EIy = interp(p.x, p.EIy, x);
-  s.EIz = interp(p.x, p.EIz, x);
-  s.GJ = interp(p.x, p.GJ, x);
-  s.iy2 = interp(p.x, p.iy2, x);
-  s.iz2 = interp(p.x, p.iz2, x);
-  s.kGAy = interp(p.x, p.kGAy, x);
-  s.kGAz = interp(p.x, p.kGAz, x);
+  s.m = interpolateStations(p.x, p.m, x);
+  s.EA = interpolateStations(p.x, p.EA, x);
+  s.EIy = interpolateStations(p.x, p.EIy, x);
+  s.EIz = interpolateStations(p.x, p.EIz, x);
+  s.GJ = interpolateStations(p.x, p.GJ, x);
+  s.iy2 = interpolateStations(p.x, p.iy2, x);
+  s.iz2 = interpolateStations(p.x, p.iz2, x);
+  s.kGAy = interpolateStations(p.x, p.kGAy, x);
+  s.kGAz = interpolateStations(p.x, p.kGAz, x);
   return s;
 }
 
@@ -96,9 +89,9 @@ BeamModel straightBeam(const BeamStations& p, const std::vector<double>& node_x,
     e.n2 = static_cast<int>(i + 1);
     e.s1 = sectionAt(p, node_x[i]);
     e.s2 = sectionAt(p, node_x[i + 1]);
-    e.k1 = Vec3(interp(p.x, p.soil_x, node_x[i]), interp(p.x, p.soil_y, node_x[i]), interp(p.x, p.soil_z, node_x[i]));
-    e.k2 = Vec3(interp(p.x, p.soil_x, node_x[i + 1]), interp(p.x, p.soil_y, node_x[i + 1]),
-                interp(p.x, p.soil_z, node_x[i + 1]));
+    e.k1 = Vec3(interpolateStations(p.x, p.soil_x, node_x[i]), interpolateStations(p.x, p.soil_y, node_x[i]), interpolateStations(p.x, p.soil_z, node_x[i]));
+    e.k2 = Vec3(interpolateStations(p.x, p.soil_x, node_x[i + 1]), interpolateStations(p.x, p.soil_y, node_x[i + 1]),
+                interpolateStations(p.x, p.soil_z, node_x[i + 1]));
     m.elements.push_back(e);
   }
   m.fixed.assign(m.nodes.size(), {false, false, false, false, false, false});

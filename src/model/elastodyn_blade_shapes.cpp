@@ -1,5 +1,7 @@
 #include "src/model/elastodyn_blade_shapes.hpp"
 
+#include "src/shapes/interpolate.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -19,14 +21,6 @@ VecX column(const io::DistributedTable& t, const char* name, double scale) {
 }
 
 // Linear interpolation in a property table (ElastoDyn's InterpStp), clamped at the ends.
-double interp(const VecX& x, const VecX& v, double xi) {
-  const Eigen::Index n = x.size();
-  Eigen::Index i = 0;
-  while (i < n - 2 && xi > x(i + 1)) ++i;
-  const double w = std::clamp((xi - x(i)) / (x(i + 1) - x(i)), 0.0, 1.0);
-  return (1 - w) * v(i) + w * v(i + 1);
-}
-
 // ElastoDyn's SHP: d-th derivative of Σ c_k (r/L)^k, k = 2..6, with respect to r.
 double shp(double r, double L, const io::ModeShapeCoeffs& c, int d) {
   const double x = r / L;
@@ -53,7 +47,7 @@ ShapePtr twistedShape(const std::string& name, const io::ModeShapeCoeffs& c, boo
   // Curvatures: the polynomial curvature about the principal axis, rotated by the structural twist
   // θs = −twist into (j1, j2) = (y, z): flap (cos θs, −sin θs), edge (sin θs, cos θs).
   for (int j = 0; j <= n + 1; ++j) {
-    const double ths = -interp(p.x, p.twist, t.x(j)), k = shp(t.x(j), L, c, 2);
+    const double ths = -interpolateStations(p.x, p.twist, t.x(j)), k = shp(t.x(j), L, c, 2);
     t.uy2(j) = k * (flap ? std::cos(ths) : std::sin(ths));
     t.uz2(j) = k * (flap ? -std::sin(ths) : std::cos(ths));
   }
@@ -104,8 +98,8 @@ ElastoDynBladeBeam elastoDynBladeBeam(const io::ElastoDynBlade& f, double L, int
   const double dr = L / nodes;
   b.generalized_mass.setConstant(tip_mass);
   for (int j = 1; j <= nodes; ++j) {
-    const double r = (j - 0.5) * dr, m = interp(p.x, p.m, r) * dr;
-    const double EI[3] = {interp(p.x, p.EIy, r) * dr, interp(p.x, p.EIz, r) * dr, interp(p.x, p.EIy, r) * dr};
+    const double r = (j - 0.5) * dr, m = interpolateStations(p.x, p.m, r) * dr;
+    const double EI[3] = {interpolateStations(p.x, p.EIy, r) * dr, interpolateStations(p.x, p.EIz, r) * dr, interpolateStations(p.x, p.EIy, r) * dr};
     double k2[3];
     for (int a = 0; a < 3; ++a) {
       b.generalized_mass(a) += m * std::pow(shp(r, L, *coeffs[a], 0), 2);

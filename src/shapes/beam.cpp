@@ -1,21 +1,13 @@
 #include "src/shapes/beam.hpp"
 
+#include "src/shapes/interpolate.hpp"
+
 #include <cmath>
 
 #include "src/model/error.hpp"
 
 namespace whirl {
 namespace {
-
-double interp(const VecX& x, const VecX& v, double xi) {
-  if (v.size() == 0) return 0.0;
-  const int n = static_cast<int>(x.size());
-  if (n == 1) return v(0);
-  int i = 0;
-  while (i < n - 2 && xi > x(i + 1)) ++i;
-  const double w = (xi - x(i)) / (x(i + 1) - x(i));
-  return (1 - w) * v(i) + w * v(i + 1);
-}
 
 // Nodes and weights of the chosen quadrature on [0, L].
 void quadrature(const BeamProperties& p, const BeamIntegration& q, VecX& x, VecX& w) {
@@ -140,12 +132,12 @@ BeamBody buildBeamBody(const BeamProperties& p, const std::vector<ShapePtr>& sha
   std::vector<ShapeValue> v(ne);
   for (Eigen::Index k = 0; k < xs.size(); ++k) {
     const double x = xs(k), w = ws(k);
-    const double m = interp(p.x, p.m, x), jG = interp(p.x, p.jG, x);
-    const double cgy = interp(p.x, p.cgy, x), cgz = interp(p.x, p.cgz, x);
+    const double m = interpolateStations(p.x, p.m, x), jG = interpolateStations(p.x, p.jG, x);
+    const double cgy = interpolateStations(p.x, p.cgy, x), cgz = interpolateStations(p.x, p.cgz, x);
     for (int i = 0; i < ne; ++i) v[i] = shapes[i]->eval(x);
     // Position field of the COG line (eq. 30 for the torsion-induced COG motion).
     Mat3X P = Mat3X::Zero(3, nc);
-    P.col(0) << x, interp(p.x, p.y0, x) + cgy, interp(p.x, p.z0, x) + cgz;
+    P.col(0) << x, interpolateStations(p.x, p.y0, x) + cgy, interpolateStations(p.x, p.z0, x) + cgz;
     for (int i = 0; i < ne; ++i) P.col(1 + i) << 0.0, v[i].uy - cgz * v[i].tx, v[i].uz + cgy * v[i].tx;
     if (in.quadratic) shorteningColumns(P, slopeProductIntegral(shapes, x));
     in.mass += w * m;
@@ -177,8 +169,8 @@ BeamBody buildBeamBody(const BeamProperties& p, const std::vector<ShapePtr>& sha
       }
     }
     // Elastic stiffness (eq. 20): curvatures in the principal axes, rotated by the structural twist.
-    const double th = interp(p.x, p.twist, x), ct = std::cos(th), st = std::sin(th);
-    const double EIy = interp(p.x, p.EIy, x), EIz = interp(p.x, p.EIz, x), GK = interp(p.x, p.GKt, x);
+    const double th = interpolateStations(p.x, p.twist, x), ct = std::cos(th), st = std::sin(th);
+    const double EIy = interpolateStations(p.x, p.EIy, x), EIz = interpolateStations(p.x, p.EIz, x), GK = interpolateStations(p.x, p.GKt, x);
     for (int i = 0; i < ne; ++i) {
       const double kyi = ct * v[i].uy2 + st * v[i].uz2, kzi = -st * v[i].uy2 + ct * v[i].uz2;
       for (int j = 0; j < ne; ++j) {
@@ -216,7 +208,7 @@ BodyPoint beamPoint(const BeamProperties& p, const std::vector<ShapePtr>& shapes
   pt.name = std::move(name);
   pt.P = Mat3X::Zero(3, tmp.nc());
   pt.theta = Mat3X::Zero(3, ne);
-  pt.P.col(0) << x, interp(p.x, p.y0, x), interp(p.x, p.z0, x);
+  pt.P.col(0) << x, interpolateStations(p.x, p.y0, x), interpolateStations(p.x, p.z0, x);
   for (int i = 0; i < ne; ++i) {
     const ShapeValue v = shapes[i]->eval(x);
     pt.P.col(1 + i) << 0.0, v.uy, v.uz;

@@ -1,26 +1,14 @@
 #include "src/shapes/beam_moment.hpp"
 
+#include "src/shapes/interpolate.hpp"
+
 #include <cmath>
 
 namespace whirl {
-namespace {
-
-double interpolate(const VecX& x, const VecX& v, double xi) {
-  if (v.size() == 0) return 0.0;
-  const int n = static_cast<int>(x.size());
-  if (n == 1) return v(0);
-  int i = 0;
-  while (i < n - 2 && xi > x(i + 1)) ++i;
-  const double w = (xi - x(i)) / (x(i + 1) - x(i));
-  return (1 - w) * v(i) + w * v(i + 1);
-}
-
-}  // namespace
-
 MatX beamMomentGains(const BeamProperties& p, const std::vector<ShapePtr>& shapes, double x) {
   const int ne = static_cast<int>(shapes.size());
-  const double th = interpolate(p.x, p.twist, x), ct = std::cos(th), st = std::sin(th);
-  const double EIy = interpolate(p.x, p.EIy, x), EIz = interpolate(p.x, p.EIz, x);
+  const double th = interpolateStations(p.x, p.twist, x), ct = std::cos(th), st = std::sin(th);
+  const double EIy = interpolateStations(p.x, p.EIy, x), EIz = interpolateStations(p.x, p.EIz, x);
   MatX G(2, ne);
   for (int j = 0; j < ne; ++j) {
     const ShapeValue v = shapes[j]->eval(x);
