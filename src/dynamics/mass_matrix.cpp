@@ -1,5 +1,7 @@
 #include "src/dynamics/mass_matrix.hpp"
 
+#include <array>
+
 #include "src/dynamics/kinematics.hpp"
 
 namespace whirl {
@@ -12,9 +14,15 @@ MatX bodyMassMatrix(const BodyInertia& in, const BasisState<double>& b) {
   const VecX& c = b.c;
   MatX Mb = MatX::Zero(6 + ne, 6 + ne);
   const Vec3 sbar = in.m1 * c;
+  // y_jl = S_jl c serves both the rotational block (Q_jl = cᵀ y_jl) and the coupling rows
+  // cᵀ S_jk D = (S_kj c)ᵀ D (S_kj = S_jkᵀ).
+  std::array<VecX, 9> y;
   Mat3 Q;
   for (int j = 0; j < 3; ++j)
-    for (int l = 0; l < 3; ++l) Q(j, l) = c.dot(in.S[3 * j + l] * c);
+    for (int l = 0; l < 3; ++l) {
+      y[3 * j + l].noalias() = in.S[3 * j + l] * c;
+      Q(j, l) = c.dot(y[3 * j + l]);
+    }
   Mb.block<3, 3>(0, 0) = in.mass * Mat3::Identity();
   Mb.block<3, 3>(0, 3) = -skew<double>(sbar);
   Mb.block<3, 3>(3, 0) = skew<double>(sbar);
@@ -22,12 +30,10 @@ MatX bodyMassMatrix(const BodyInertia& in, const BasisState<double>& b) {
   if (ne == 0) return Mb;
   const MatX& D = b.D;
   Mb.block(0, 6, 3, ne) = in.m1 * D;
-  MatX X = MatX::Zero(3, ne);
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)
       for (int k = 0; k < 3; ++k)
-        if (eps(i, j, k) != 0) X.row(i) += eps(i, j, k) * (c.transpose() * in.S[3 * j + k] * D);
-  Mb.block(3, 6, 3, ne) = X;
+        if (eps(i, j, k) != 0) Mb.block(3 + i, 6, 1, ne) += eps(i, j, k) * (y[3 * k + j].transpose() * D);
   if (in.Strace.rows() == nc) {
     Mb.block(6, 6, ne, ne) = D.transpose() * in.Strace * D;
   } else {  // a body that was never finalized
