@@ -11,4 +11,5 @@ void addModesCommand(CLI::App& app);
 void addCampbellCommand(CLI::App& app);
 void addLinCommand(CLI::App& app);
 void addCompareCommand(CLI::App& app);
+void addStudyCommand(CLI::App& app);
 }  // namespace whirl::cli
