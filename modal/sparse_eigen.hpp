@@ -65,10 +65,13 @@ SparseEigenResult sparseGeneralizedEigen(const SparseMatrix& K, const SparseMatr
 SparseEigenResult sparseQuadraticEigen(const SparseMatrix& M, const SparseMatrix& C, const SparseMatrix& K,
                                        const SparseEigenOptions& opt);
 
-/// The automatic shift: −0.01 · min over coordinates with K_ii > 1e-10 max(K_jj/M_jj) M_ii (stiff,
-/// not round-off on a rigid coordinate) of K_ii / M_ii, in (rad/s)²
-/// (Rayleigh's quotient of a unit vector bounds the lowest ω² from above, so this is below the
-/// spectrum's scale); for PEP its sign-kept square root, −√(0.01 · min K_ii/M_ii) rad/s.
+/// The automatic shift, just below zero: σ = −1e-10 · max_i K_ii/M_ii in (rad/s)² for EPS (the
+/// largest diagonal ratio is a Rayleigh quotient, of the order of ω_max² on FE meshes), and
+/// σ = −√(1e-10 · max_i K_ii/M_ii) rad/s for PEP. Near zero, so the lowest modes are nearest and
+/// well separated after inversion; below zero, so K − σM stays non-singular (σ²M − σC + K for
+/// PEP) when rigid-body modes make K singular. A target far from the wanted eigenvalues (e.g.
+/// min K_ii/M_ii, which can exceed ω_1² by orders of magnitude on a fine mesh) clusters them after
+/// inversion and costs accuracy.
 double sparseAutoTarget(const SparseMatrix& K, const SparseMatrix& M, bool quadratic);
 
 /// Below this many coordinates `--solver auto` uses the dense LAPACK path (all eigenvalues, exact

@@ -111,7 +111,7 @@ inline SparseModel latticeTower(int side, int levels, double dx = 2.0, double dz
     R.row(1) = e2;
     R.row(2) = e3;
     Eigen::Matrix<double, 12, 12> k = Eigen::Matrix<double, 12, 12>::Zero(), T = k;
-    const double ea = E * A / L, gj = G * J / L, b = E * I / (L * L * L);
+    const double ea = E * A / L, gj = G * J / L, eil3 = E * I / (L * L * L);
     const std::array<int, 2> ax{0, 6}, tor{3, 9};
     for (int i = 0; i < 2; ++i)
       for (int j = 0; j < 2; ++j) {
@@ -128,8 +128,8 @@ inline SparseModel latticeTower(int side, int levels, double dx = 2.0, double dz
     const std::array<double, 4> sxz{1, -1, 1, -1};
     for (int i = 0; i < 4; ++i)
       for (int j = 0; j < 4; ++j) {
-        k(xy[i], xy[j]) = b * kb[i][j];
-        k(xz[i], xz[j]) = b * kb[i][j] * sxz[i] * sxz[j];
+        k(xy[i], xy[j]) = eil3 * kb[i][j];
+        k(xz[i], xz[j]) = eil3 * kb[i][j] * sxz[i] * sxz[j];
       }
     for (int blk = 0; blk < 4; ++blk) T.block<3, 3>(3 * blk, 3 * blk) = R;
     const Eigen::Matrix<double, 12, 12> kg = T.transpose() * k * T;
