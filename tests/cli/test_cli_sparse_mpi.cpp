@@ -23,8 +23,8 @@ const std::string kCase = "cases/tower_topmass/tower_topmass_eq32.yaml";
 #ifdef WHIRL_HAVE_PETSC
 
 TEST(CliSparse, SparseModesEqualDenseModes) {
-  const Run dense = whirl("modes " + kCase + " --solver dense --format csv");
-  const Run sparse = whirl("modes " + kCase + " --solver sparse --nmodes 3 --format csv");
+  const test::Run dense = whirl("modes " + kCase + " --solver dense --format csv");
+  const test::Run sparse = whirl("modes " + kCase + " --solver sparse --nmodes 3 --format csv");
   ASSERT_EQ(dense.code, 0) << dense.err;
   ASSERT_EQ(sparse.code, 0) << sparse.err;
   const auto d = csvRows(dense.out), s = csvRows(sparse.out);
@@ -41,21 +41,21 @@ TEST(CliSparse, SparseModesEqualDenseModes) {
 
 TEST(CliSparse, PetscOptionsPassThrough) {
   // after a lone "--"
-  const Run a = whirl("modes " + kCase + " --solver sparse --nmodes 2 -- -eps_type arnoldi -eps_target -1");
+  const test::Run a = whirl("modes " + kCase + " --solver sparse --nmodes 2 -- -eps_type arnoldi -eps_target -1");
   ASSERT_EQ(a.code, 0) << a.err;
   EXPECT_NE(a.err.find("EPS arnoldi"), std::string::npos) << a.err;
   EXPECT_NE(a.err.find("target -1,"), std::string::npos) << a.err;
   // and in --petsc "…"
-  const Run b = whirl("modes " + kCase + " --solver sparse --nmodes 2 --petsc '-eps_type lanczos'");
+  const test::Run b = whirl("modes " + kCase + " --solver sparse --nmodes 2 --petsc '-eps_type subspace'");
   ASSERT_EQ(b.code, 0) << b.err;
-  EXPECT_NE(b.err.find("EPS lanczos"), std::string::npos) << b.err;
+  EXPECT_NE(b.err.find("EPS subspace"), std::string::npos) << b.err;
   // a PETSc option without "--" is still CLI11's to refuse
-  const Run c = whirl("modes " + kCase + " --solver sparse -eps_type lanczos");
+  const test::Run c = whirl("modes " + kCase + " --solver sparse -eps_type lanczos");
   EXPECT_NE(c.code, 0);
 }
 
 TEST(CliSparse, RotorModelsRefuseTheSparseSolver) {
-  const Run r = whirl("modes cases/nrel5mw/Main_Onshore.fst --solver sparse");
+  const test::Run r = whirl("modes cases/nrel5mw/Main_Onshore.fst --solver sparse");
   EXPECT_NE(r.code, 0);
   EXPECT_NE(r.err.find("--solver sparse"), std::string::npos) << r.err;
 }
@@ -63,7 +63,7 @@ TEST(CliSparse, RotorModelsRefuseTheSparseSolver) {
 #else
 
 TEST(CliSparse, SparseSolverUnavailableWithoutPetsc) {
-  const Run r = whirl("modes " + kCase + " --solver sparse");
+  const test::Run r = whirl("modes " + kCase + " --solver sparse");
   EXPECT_EQ(r.code, 1);
   EXPECT_NE(r.err.find("unavailable"), std::string::npos) << r.err;
 }
@@ -78,10 +78,10 @@ TEST(CliStudy, SetsTimesPointsInOneTable) {
     f << "gravity,TwrFADmp(1)\n0,1\n9.80665,2\n";
   }
   const std::string common = " --rpm 6:3:12 --azimuths 8 ";
-  const Run st = whirl("study cases/nrel5mw/Main_Onshore.fst --params '" + (dir / "sets.csv").string() + "'" + common +
+  const test::Run st = whirl("study cases/nrel5mw/Main_Onshore.fst --params '" + (dir / "sets.csv").string() + "'" + common +
                        "--out '" + (dir / "study").string() + "'");
   ASSERT_EQ(st.code, 0) << st.err;
-  const Run c2 = whirl("campbell cases/nrel5mw/Main_Onshore.fst --set gravity=9.80665 --set 'TwrFADmp(1)=2'" + common +
+  const test::Run c2 = whirl("campbell cases/nrel5mw/Main_Onshore.fst --set gravity=9.80665 --set 'TwrFADmp(1)=2'" + common +
                        "--no-plot --out '" + (dir / "two").string() + "'");
   ASSERT_EQ(c2.code, 0) << c2.err;
   const auto study = csvRows(slurp(dir / "study" / "study.csv"));
@@ -108,7 +108,7 @@ TEST(CliStudy, BadParameterKeyNamesTheRow) {
     std::ofstream f(dir / "sets.csv");
     f << "gravity,NoSuchKey\n9.8,1\n";
   }
-  const Run r = whirl("study cases/nrel5mw/Main_Onshore.fst --params '" + (dir / "sets.csv").string() +
+  const test::Run r = whirl("study cases/nrel5mw/Main_Onshore.fst --params '" + (dir / "sets.csv").string() +
                       "' --rpm 6:3:9 --azimuths 4 --out '" + (dir / "o").string() + "'");
   EXPECT_EQ(r.code, 1);
   EXPECT_NE(r.err.find("sets.csv:2"), std::string::npos) << r.err;
