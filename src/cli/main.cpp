@@ -1,5 +1,6 @@
 // whirl: linearization and stability analysis of flexible multibody systems.
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cstdio>
 #include <exception>
 
@@ -18,6 +19,21 @@ int main(int argc, char** argv) {
     return 1;
   }
   whirl::parallel::Session session(petsc_options);
+  // Under mpirun with several ranks, only the commands that split their work run; any other
+  // command would do the same work K times and write the same files K times.
+  if (whirl::parallel::size() > 1) {
+    static const std::vector<std::string> distributed = {"campbell", "study", "modes"};
+    for (size_t i = 1; i < args.size(); ++i) {
+      if (args[i].empty() || args[i][0] == '-') continue;
+      if (std::find(distributed.begin(), distributed.end(), args[i]) == distributed.end()) {
+        if (root)
+          std::fprintf(stderr, "whirl: error: %s: does not run distributed; under mpirun use campbell, study or modes\n",
+                       args[i].c_str());
+        return 1;
+      }
+      break;
+    }
+  }
 
   CLI::App app{"whirl " WHIRL_VERSION ": linearization and stability analysis of flexible multibody systems"};
   app.require_subcommand(1);
