@@ -1,7 +1,15 @@
-# Campbell sweep on one process and on 2 MPI ranks: every output file must be byte-identical.
-# Variables: WHIRL (executable), MPIEXEC, CASE, RPM, AZIMUTHS, OUT (scratch folder).
+# Campbell sweep (or, with PARAMS, a parameter study) on one process and on 2 MPI ranks: every
+# output file must be byte-identical.
+# Variables: WHIRL (executable), MPIEXEC, CASE, RPM, AZIMUTHS, OUT (scratch folder), PARAMS (optional:
+# the CSV text of the parameter sets, rows separated by "|").
 file(REMOVE_RECURSE ${OUT})
-set(args campbell ${CASE} --rpm ${RPM} --azimuths ${AZIMUTHS} --no-plot)
+if(PARAMS)
+  string(REPLACE "|" "\n" params_text "${PARAMS}")
+  file(WRITE ${OUT}/sets.csv "${params_text}\n")
+  set(args study ${CASE} --params ${OUT}/sets.csv --rpm ${RPM} --azimuths ${AZIMUTHS})
+else()
+  set(args campbell ${CASE} --rpm ${RPM} --azimuths ${AZIMUTHS} --no-plot)
+endif()
 execute_process(COMMAND ${WHIRL} ${args} --out ${OUT}/one RESULT_VARIABLE rc1 OUTPUT_VARIABLE o1 ERROR_VARIABLE e1)
 if(NOT rc1 EQUAL 0)
   message(FATAL_ERROR "one process failed (${rc1}): ${o1} ${e1}")
@@ -16,8 +24,8 @@ if(NOT o2 MATCHES "on 2 MPI ranks")
 endif()
 file(GLOB files RELATIVE ${OUT}/one ${OUT}/one/*)
 list(LENGTH files nfiles)
-if(nfiles LESS 3)
-  message(FATAL_ERROR "expected campbell.csv, campbell_modes.json, … in ${OUT}/one, found: ${files}")
+if(nfiles LESS 1 OR (NOT PARAMS AND nfiles LESS 3))
+  message(FATAL_ERROR "expected campbell.csv, campbell_modes.json, … (or study.csv) in ${OUT}/one, found: ${files}")
 endif()
 foreach(f ${files})
   execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${OUT}/one/${f} ${OUT}/two/${f} RESULT_VARIABLE diff)
