@@ -60,6 +60,8 @@ struct SparseEigenResult {
 SparseEigenResult sparseGeneralizedEigen(const SparseMatrix& K, const SparseMatrix& M, const SparseEigenOptions& opt);
 
 /// (λ²M + λC + K) x = 0 for the `nev` eigenvalues nearest the (real) target.
+/// TOAR needs n well above its subspace size (SLEPc's default ncv = max(2·nev, nev + 15)): on
+/// tiny models (e.g. n = 20 for 12 eigenvalues) it can stagnate; those belong to the dense path.
 /// \param[in] M mass (dim n × n), non-singular; C damping + gyroscopic; K stiffness (any symmetry).
 /// \throws ComputeError as sparseGeneralizedEigen.
 SparseEigenResult sparseQuadraticEigen(const SparseMatrix& M, const SparseMatrix& C, const SparseMatrix& K,

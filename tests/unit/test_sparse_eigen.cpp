@@ -7,7 +7,9 @@
 #include <numbers>
 
 #include "modal/eigen.hpp"
+#include "modal/modes.hpp"
 #include "modal/sparse_eigen.hpp"
+#include "modal/sparse_modes.hpp"
 #include "src/model/error.hpp"
 #include "src/parallel/session.hpp"
 #include "tests/support/sparse_models.hpp"
@@ -159,6 +161,30 @@ TEST(SparseEigen, DampedGyroscopicPepEqualsDenseStateSpace) {
     bool found = false;
     for (const auto& p : r.pairs) found = found || std::abs(p.value - dense[j]) <= 1e-8 * std::abs(dense[j]);
     EXPECT_TRUE(found) << "dense eigenvalue " << dense[j] << " missing";
+  }
+}
+
+/// computeModesSparse (PEP path: C ≠ 0) against computeModes (dense): the same lowest modes, with
+/// the same frequencies, damping ratios and names, and a residual on each.
+TEST(SparseEigen, SparseModesEqualDenseModes) {
+  REQUIRE_PETSC();
+  const SparseModel b = test::cantilever(40, 1.0, 1.0, 1.0);
+  const int n = static_cast<int>(b.K.rows());
+  const Eigen::SparseMatrix<double> C = 0.05 * b.M + 2e-5 * b.K;
+  std::vector<std::string> names;
+  for (int i = 0; i < n; ++i) names.push_back((i % 2 ? "slope " : "deflection ") + std::to_string(i / 2 + 1));
+  SparseModesInfo info;
+  const std::vector<Mode> sparse = computeModesSparse(b.M, C, b.K, names, 6, {}, &info);
+  const std::vector<Mode> dense = computeModes(MatX(b.M), MatX(C), MatX(b.K), names);
+  EXPECT_EQ(info.method.rfind("PEP toar", 0), 0u) << info.method;
+  ASSERT_EQ(sparse.size(), 6u);
+  for (size_t k = 0; k < 6; ++k) {
+    EXPECT_NEAR(sparse[k].freq_hz, dense[k].freq_hz, 1e-8 * dense[k].freq_hz) << k;
+    EXPECT_NEAR(sparse[k].damping_ratio, dense[k].damping_ratio, 1e-8) << k;
+    EXPECT_EQ(sparse[k].name, dense[k].name);
+    ASSERT_TRUE(sparse[k].residual.has_value());
+    EXPECT_LT(*sparse[k].residual, 1e-10);
+    EXPECT_FALSE(dense[k].residual.has_value());
   }
 }
 
