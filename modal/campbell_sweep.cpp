@@ -5,7 +5,9 @@
 #include <regex>
 
 #include "linearize/periodic.hpp"
+#include "modal/campbell_serialize.hpp"
 #include "modal/rotor_modes.hpp"
+#include "src/parallel/parallel_map.hpp"
 #include "src/model/error.hpp"
 
 namespace whirl {
@@ -42,37 +44,32 @@ int setCollectivePitch(Model& m, double pitch_deg) {
   return count;
 }
 
-std::vector<CampbellPoint> campbellSweep(const Model& base, const std::vector<SweepPoint>& points,
-                                         const SweepOptions& opt) {
-  std::vector<CampbellPoint> out;
-  out.reserve(points.size());
+CampbellPoint campbellPoint(const Model& base, const SweepPoint& point, const SweepOptions& opt) {
+  Model m = base;
+  const double omega = point.rpm * 2 * std::numbers::pi / 60;
+  for (auto& d : m.dofs)
+    if (d.rotating) d.rate = omega;
+  if (point.pitch_deg) setCollectivePitch(m, *point.pitch_deg);
   PeriodicOptions popt;
   popt.azimuths = opt.azimuths;
-  std::optional<OperatingPoint> warm;
-  for (size_t k = 0; k < points.size(); ++k) {
-    Model m = base;
-    const double omega = points[k].rpm * 2 * std::numbers::pi / 60;
-    for (auto& d : m.dofs)
-      if (d.rotating) d.rate = omega;
-    if (points[k].pitch_deg) setCollectivePitch(m, *points[k].pitch_deg);
-    OperatingPoint start = initialPoint(m);
-    if (warm) {  // previous point's equilibrium: a good guess for the next speed
-      for (int i = 0; i < m.ndof(); ++i)
-        if (!m.dofs[i].rotating && !m.dofs[i].frozen) start.q(i) = warm->q(i);
-    }
-    const PeriodicLinearization p = linearizePeriodic(m, start, popt);
-    warm = p.points.front();
-    RotorModes r = rotorModes(m, p);
-    CampbellPoint cp;
-    cp.rpm = points[k].rpm;
-    cp.wind_speed = points[k].wind_speed;
-    cp.pitch_deg = points[k].pitch_deg;
-    cp.coordinates = std::move(r.coordinates);
-    cp.modes = std::move(r.modes);
-    out.push_back(std::move(cp));
-    if (opt.progress) opt.progress(static_cast<int>(k + 1), static_cast<int>(points.size()));
-  }
-  return out;
+  const PeriodicLinearization p = linearizePeriodic(m, initialPoint(m), popt);
+  RotorModes r = rotorModes(m, p);
+  CampbellPoint cp;
+  cp.rpm = point.rpm;
+  cp.wind_speed = point.wind_speed;
+  cp.pitch_deg = point.pitch_deg;
+  cp.coordinates = std::move(r.coordinates);
+  cp.modes = std::move(r.modes);
+  return cp;
+}
+
+std::vector<CampbellPoint> campbellSweep(const Model& base, const std::vector<SweepPoint>& points,
+                                         const SweepOptions& opt) {
+  parallel::MapOptions map;
+  map.progress = opt.progress;
+  return parallel::parallelMap<CampbellPoint>(
+      static_cast<int>(points.size()), [&](int k) { return campbellPoint(base, points[k], opt); },
+      encodeCampbellPoint, decodeCampbellPoint, map);
 }
 
 }  // namespace whirl

@@ -22,13 +22,21 @@ struct SweepPoint {
 struct SweepOptions {
   int azimuths = 36;
   /// Called after each point with (points done, points total); used for progress on stderr.
+  /// Under mpirun: rank 0 only, counting its own share of the points.
   std::function<void(int, int)> progress;
 };
 
 /// Points START:STEP:STOP (rpm), STOP included within round-off. InputError on a bad range.
 std::vector<SweepPoint> rpmRange(const std::string& spec);
 
-/// Modes at every point, sorted by frequency (lines not yet tracked).
+/// Modes at one operating point, sorted by frequency. Depends on the point only (each point starts
+/// from the model's initial point, not from a neighbour's equilibrium), so points can be computed
+/// in any order, on any rank, with the same bits.
+CampbellPoint campbellPoint(const Model& model, const SweepPoint& point, const SweepOptions& opt);
+
+/// Modes at every point (lines not yet tracked). Under mpirun the points are spread over the
+/// ranks (src/parallel/parallel_map.hpp) and gathered in order on rank 0; other ranks get an
+/// empty vector. The result on rank 0 is identical, bit for bit, to a run on one rank.
 std::vector<CampbellPoint> campbellSweep(const Model& model, const std::vector<SweepPoint>& points,
                                          const SweepOptions& opt);
 

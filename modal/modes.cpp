@@ -11,7 +11,8 @@ namespace {
 
 constexpr double two_pi = 2 * std::numbers::pi;
 
-Mode fromEigenvector(const Eigen::VectorXcd& v, const MatX& M, const std::vector<std::string>& names) {
+template <class Weights>
+Mode fromEigenvector(const Eigen::VectorXcd& v, const Weights& M, const std::vector<std::string>& names) {
   const int n = static_cast<int>(M.rows());
   Mode mode;
   mode.shape = v.head(n);
@@ -20,7 +21,9 @@ Mode fromEigenvector(const Eigen::VectorXcd& v, const MatX& M, const std::vector
   if (std::abs(mode.shape(imax)) > 0) mode.shape /= mode.shape(imax);
   mode.participation = VecX(n);
   // Kinetic energy ½ φᴴ M φ split by coordinate; couplings (a floater's surge and pitch) count.
-  const Eigen::VectorXcd Mphi = M * mode.shape;
+  const VecX Mre = M * mode.shape.real(), Mim = M * mode.shape.imag();
+  Eigen::VectorXcd Mphi(n);
+  for (int i = 0; i < n; ++i) Mphi(i) = {Mre(i), Mim(i)};
   for (int i = 0; i < n; ++i) mode.participation(i) = std::abs((std::conj(mode.shape(i)) * Mphi(i)).real());
   const double total = mode.participation.sum();
   if (total > 0) mode.participation /= total;
@@ -47,7 +50,10 @@ std::vector<Mode> computeModes(const MatX& M, const MatX& C, const MatX& K, cons
   return modesFromEigen(eigenSecondOrder(M, C, K), static_cast<int>(M.rows()), M, names);
 }
 
-std::vector<Mode> modesFromEigen(const EigenDecomposition& ed, int n, const MatX& w, const std::vector<std::string>& names) {
+template <class Weights>
+std::vector<Mode> modesFromEigenImpl(const EigenDecomposition& ed, int n, const Weights& w,
+                                     const std::vector<std::string>& names, const std::vector<double>& residuals) {
+  const bool with_res = residuals.size() == static_cast<size_t>(ed.values.size());
   std::vector<Mode> modes;
   if (n == 0) return modes;
   // Scale for "zero": the largest |λ| with a floor, so rigid-body roots (numerically ~1e-8) are caught.
@@ -62,6 +68,7 @@ std::vector<Mode> modesFromEigen(const EigenDecomposition& ed, int n, const MatX
       mode.freq_hz = std::abs(l) / two_pi;
       mode.damped_freq_hz = std::abs(l.imag()) / two_pi;
       mode.damping_ratio = -l.real() / std::abs(l);
+      if (with_res) mode.residual = residuals[k];
       modes.push_back(mode);
     } else {
       real.push_back(k);
@@ -81,10 +88,21 @@ std::vector<Mode> modesFromEigen(const EigenDecomposition& ed, int n, const MatX
       mode.damping_ratio = -(l1 + l2) / (2 * w);
     }
     mode.damped_freq_hz = 0;
+    if (with_res) mode.residual = std::max(residuals[real[k]], residuals[real[k + 1]]);
     modes.push_back(mode);
   }
   std::stable_sort(modes.begin(), modes.end(), [](const Mode& a, const Mode& b) { return a.freq_hz < b.freq_hz; });
   return modes;
+}
+
+std::vector<Mode> modesFromEigen(const EigenDecomposition& ed, int n, const MatX& M, const std::vector<std::string>& names,
+                                 const std::vector<double>& residuals) {
+  return modesFromEigenImpl(ed, n, M, names, residuals);
+}
+
+std::vector<Mode> modesFromEigen(const EigenDecomposition& ed, int n, const Eigen::SparseMatrix<double>& M,
+                                 const std::vector<std::string>& names, const std::vector<double>& residuals) {
+  return modesFromEigenImpl(ed, n, M, names, residuals);
 }
 
 }  // namespace whirl

@@ -7,6 +7,8 @@
 /// (λ, λ̄) is one mode: f = |λ|/2π, f_d = |Im λ|/2π, ζ = −Re λ/|λ|. Real roots are paired, smallest
 /// first, into one mode each: f = √(λ₁λ₂)/2π, ζ = −(λ₁+λ₂)/(2√(λ₁λ₂)) (> 1: overdamped); a pair
 /// with a zero root is a rigid-body mode (f = 0, ζ = 0), e.g. a free azimuth or a free yaw.
+#include <Eigen/Sparse>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,6 +24,9 @@ struct Mode {
   std::string name;            ///< from the dominant coordinates
   Eigen::VectorXcd shape;      ///< coordinate part of the eigenvector, dim n, largest entry = 1
   VecX participation;          ///< kinetic-energy share per coordinate |Re(φ_i* (Mφ)_i)| / Σ, sums to 1
+  /// Backward error of the eigenpair, ‖P(λ)x‖ / ((Σ|λ|ʲ‖Aⱼ‖) ‖x‖), when an iterative solver
+  /// (SLEPc, modal/sparse_eigen.hpp) computed it; empty for the direct LAPACK path.
+  std::optional<double> residual;
 };
 
 /// Modes sorted by frequency. names: one per coordinate (dim n).
@@ -31,8 +36,13 @@ struct EigenDecomposition;
 /// Modes from the eigenpairs of a first-order system with state x = [q; q̇] (dim 2n): pairing as
 /// above, shape = q part. M (n × n) weighs the participations: the mass matrix of the shape's
 /// coordinates, or a diagonal approximation of it.
+/// residuals (optional, one per eigenvalue of ed): backward errors carried into Mode::residual
+/// (the larger of the two roots for a mode made of two real roots).
 std::vector<Mode> modesFromEigen(const EigenDecomposition& ed, int n, const MatX& M,
-                                 const std::vector<std::string>& names);
+                                 const std::vector<std::string>& names, const std::vector<double>& residuals = {});
+/// The same with a sparse weighting matrix (large finite-element models, modal/sparse_modes.hpp).
+std::vector<Mode> modesFromEigen(const EigenDecomposition& ed, int n, const Eigen::SparseMatrix<double>& M,
+                                 const std::vector<std::string>& names, const std::vector<double>& residuals = {});
 
 /// Name from participations: the dominant coordinate, joined by " / " with the next ones that
 /// carry at least half of its share.

@@ -11,6 +11,7 @@
 #include "src/io/atomic_file.hpp"
 #include "src/io/schedule.hpp"
 #include "src/model/error.hpp"
+#include "src/parallel/session.hpp"
 
 namespace whirl::cli {
 namespace {
@@ -32,6 +33,7 @@ void run(const CampbellOptions& opt) {
   const std::string dir = opt.out.empty() ? defaultOutputFolder(opt.model.case_path) : opt.out;
   ensureWritableFolder(dir);
 
+  if (parallel::launchedByMpi()) parallel::requirePetsc("mpirun");  // start-up outside the timing
   SweepOptions sweep;
   sweep.azimuths = opt.azimuths;
   const auto start = std::chrono::steady_clock::now();
@@ -39,7 +41,11 @@ void run(const CampbellOptions& opt) {
   sweep.progress = [&](int done, int total) {
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (s < 1.0 && !printed) return;  // short sweeps stay quiet
-    std::fprintf(stderr, "\rcampbell: %d/%d operating points (%.1f s)", done, total, s);
+    if (parallel::size() > 1)
+      std::fprintf(stderr, "\rcampbell: %d/%d operating points on rank 0 of %d (%.1f s)", done, total,
+                   parallel::size(), s);
+    else
+      std::fprintf(stderr, "\rcampbell: %d/%d operating points (%.1f s)", done, total, s);
     printed = true;
     if (done == total) std::fprintf(stderr, "\n");
   };
@@ -49,6 +55,7 @@ void run(const CampbellOptions& opt) {
   if (name.empty() || name.size() > 70) name = std::filesystem::path(opt.model.case_path).filename().string();
   d.title = "Campbell diagram: " + name;
   d.points = campbellSweep(m, points, sweep);
+  if (parallel::rank() != 0) return;  // under mpirun: rank 0 tracks and writes
   TrackingOptions track;
   track.overrides_file = opt.tracking;
   d.lines = trackModes(d.points, track);
@@ -60,8 +67,10 @@ void run(const CampbellOptions& opt) {
   const auto files = writeCampbell(d, dir, plot);
   std::printf("wrote");
   for (const auto& f : files) std::printf(" %s", f.c_str());
-  std::printf("\n%zu operating points, %zu lines, %d azimuths each, %.2f s\n", d.points.size(), d.lines.size(),
+  std::printf("\n%zu operating points, %zu lines, %d azimuths each, %.2f s", d.points.size(), d.lines.size(),
               opt.azimuths, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  if (parallel::size() > 1) std::printf(" on %d MPI ranks", parallel::size());
+  std::printf("\n");
 }
 
 }  // namespace

@@ -1,10 +1,15 @@
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cstdio>
 
 #include "linearize/periodic.hpp"
 #include "modal/rotor_modes.hpp"
+#include "modal/sparse_modes.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/common.hpp"
 #include "src/cli/mode_output.hpp"
+#include "src/model/error.hpp"
+#include "src/parallel/session.hpp"
 
 namespace whirl::cli {
 namespace {
@@ -13,6 +18,8 @@ struct ModesOptions {
   ModelOptions model;
   std::string format = "table";
   int azimuths = 36;
+  std::string solver = "auto";
+  int nmodes = 20;
 };
 
 int bladeCount(const Model& m) {
@@ -27,6 +34,9 @@ void run(const ModesOptions& opt) {
   header["case"] = opt.model.case_path;
   const int az = findAzimuthDof(m);
   if (az >= 0 && bladeCount(m) >= 3) {
+    if (opt.solver == "sparse")
+      throw InputError("--solver sparse: a rotor's multiblade model is a small averaged state matrix, solved dense; "
+                       "use --solver dense or auto");
     // A rotor: periodic operating point over the revolution, multiblade coordinates.
     PeriodicOptions p;
     p.azimuths = opt.azimuths;
@@ -39,7 +49,22 @@ void run(const ModesOptions& opt) {
     return;
   }
   const LinearModel lin = linearize(m, solveOperatingPoint(m, initialPoint(m)));
-  printModes(computeModes(lin.M, lin.C, lin.K, lin.dof_names), lin.dof_names, opt.format, header);
+  const int n = static_cast<int>(lin.M.rows());
+  if (!useSparseSolver(opt.solver, n)) {
+    printModes(computeModes(lin.M, lin.C, lin.K, lin.dof_names), lin.dof_names, opt.format, header);
+    return;
+  }
+  // SLEPc: the lowest --nmodes modes; under mpirun the solve is spread over the ranks.
+  SparseEigenOptions so;
+  so.distributed = true;
+  SparseModesInfo info;
+  const std::vector<Mode> modes = computeModesSparse(lin.M.sparseView(), lin.C.sparseView(), lin.K.sparseView(),
+                                                     lin.dof_names, std::min(opt.nmodes, n), so, &info);
+  if (parallel::rank() != 0) return;
+  std::fprintf(stderr, "modes: %s, target %.6g, %d iterations, %zu modes of %d coordinates\n", info.method.c_str(),
+               info.target, info.iterations, modes.size(), n);
+  header["solver"] = {{"method", info.method}, {"target", info.target}, {"iterations", info.iterations}};
+  printModes(modes, lin.dof_names, opt.format, header);
 }
 
 }  // namespace
@@ -53,6 +78,12 @@ void addModesCommand(CLI::App& app) {
   cmd->add_option("--format", opt->format, "table, csv or json")->check(CLI::IsMember({"table", "csv", "json"}));
   cmd->add_option("--azimuths", opt->azimuths, "azimuths per revolution for rotors (multiblade average)")
       ->check(CLI::Range(1, 3600));
+  cmd->add_option("--solver", opt->solver,
+                  "eigensolver: dense (LAPACK, all modes), sparse (SLEPc, the lowest --nmodes, each with its "
+                  "residual) or auto (sparse from " + std::to_string(kSparseSolverThreshold) + " coordinates)")
+      ->check(CLI::IsMember({"auto", "dense", "sparse"}));
+  cmd->add_option("--nmodes", opt->nmodes, "modes computed by the sparse solver (lowest frequencies)")
+      ->check(CLI::Range(1, 100000));
   cmd->callback([opt]() { run(*opt); });
 }
 

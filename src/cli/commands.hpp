@@ -12,4 +12,5 @@ void addCampbellCommand(CLI::App& app);
 void addLinCommand(CLI::App& app);
 void addCompareCommand(CLI::App& app);
 void addExportCommand(CLI::App& app);
+void addStudyCommand(CLI::App& app);
 }  // namespace whirl::cli

@@ -10,11 +10,15 @@ namespace whirl::cli {
 
 void printModes(const std::vector<Mode>& modes, const std::vector<std::string>& coords, const std::string& format,
                 const nlohmann::json& header) {
+  // An iterative (sparse) solve reports each pair's backward error; the dense path has none.
+  bool residuals = !modes.empty();
+  for (const auto& m : modes) residuals = residuals && m.residual.has_value();
   if (format == "csv") {
-    std::string s = "index,name,freq_hz,damped_freq_hz,damping_ratio\n";
+    std::string s = std::string("index,name,freq_hz,damped_freq_hz,damping_ratio") + (residuals ? ",residual" : "") + "\n";
     for (size_t k = 0; k < modes.size(); ++k)
       s += std::to_string(k + 1) + "," + csvField(modes[k].name) + "," + formatNumber(modes[k].freq_hz) + "," +
-           formatNumber(modes[k].damped_freq_hz) + "," + formatNumber(modes[k].damping_ratio) + "\n";
+           formatNumber(modes[k].damped_freq_hz) + "," + formatNumber(modes[k].damping_ratio) +
+           (residuals ? "," + formatNumber(*modes[k].residual) : std::string()) + "\n";
     std::cout << s;
   } else if (format == "json") {
     nlohmann::json j = header;
@@ -28,18 +32,24 @@ void printModes(const std::vector<Mode>& modes, const std::vector<std::string>& 
       mj["damped_freq_hz"] = modes[k].damped_freq_hz;
       mj["damping_ratio"] = modes[k].damping_ratio;
       mj["rigid_body"] = modes[k].rigid_body;
+      if (modes[k].residual) mj["residual"] = *modes[k].residual;
       mj["participation"] = nlohmann::json::object();
       for (size_t i = 0; i < coords.size(); ++i) mj["participation"][coords[i]] = modes[k].participation(i);
       j["modes"].push_back(mj);
     }
     std::cout << j.dump(2) << "\n";
   } else {
-    std::printf("%5s  %-40s %12s %14s %13s\n", "index", "name", "freq [Hz]", "damped [Hz]", "damping [-]");
-    for (size_t k = 0; k < modes.size(); ++k)
-      std::printf("%5zu  %-40s %12.6f %14.6f %13.6f%s\n", k + 1, modes[k].name.c_str(), modes[k].freq_hz,
+    std::printf("%5s  %-40s %12s %14s %13s%s\n", "index", "name", "freq [Hz]", "damped [Hz]", "damping [-]",
+                residuals ? "   residual" : "");
+    for (size_t k = 0; k < modes.size(); ++k) {
+      char res[32] = "";
+      if (residuals) std::snprintf(res, sizeof res, " %10.1e", *modes[k].residual);
+      std::printf("%5zu  %-40s %12.6f %14.6f %13.6f%s%s\n", k + 1, modes[k].name.c_str(), modes[k].freq_hz,
                   modes[k].damped_freq_hz,
                   std::abs(modes[k].damping_ratio) < 5e-7 ? 0.0 : modes[k].damping_ratio,  // no "-0.000000"
+                  res,
                   modes[k].rigid_body && modes[k].name.find("rigid body") == std::string::npos ? "  (rigid body)" : "");
+    }
   }
 }
 

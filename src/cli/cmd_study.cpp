@@ -1,0 +1,119 @@
+// whirl study: parameter sets (a CSV of --set columns) × operating points, one table.
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <cstdio>
+#include <map>
+
+#include "modal/campbell_output.hpp"
+#include "modal/campbell_serialize.hpp"
+#include "modal/campbell_sweep.hpp"
+#include "modal/tracking.hpp"
+#include "src/cli/commands.hpp"
+#include "src/cli/common.hpp"
+#include "src/io/atomic_file.hpp"
+#include "src/io/csv.hpp"
+#include "src/io/schedule.hpp"
+#include "src/model/error.hpp"
+#include "src/parallel/parallel_map.hpp"
+#include "src/parallel/session.hpp"
+
+namespace whirl::cli {
+namespace {
+
+struct StudyOptions {
+  ModelOptions model;
+  std::string params, rpm_range, schedule, out, tracking;
+  int azimuths = 36;
+};
+
+/// The model of parameter set s: the case's own --set first, then the row's values.
+Model loadSet(const StudyOptions& opt, const TextTable& sets, size_t s) {
+  ModelOptions mo = opt.model;
+  for (size_t c = 0; c < sets.names.size(); ++c) mo.sets.push_back(sets.names[c] + "=" + sets.rows[s][c]);
+  try {
+    return loadModel(mo);
+  } catch (const InputError& e) {
+    throw InputError(where(sets.file, sets.lines[s], "parameter set " + std::to_string(s + 1), e.what()));
+  }
+}
+
+void run(const StudyOptions& opt) {
+  if (opt.rpm_range.empty() == opt.schedule.empty())
+    throw InputError("study: give exactly one of --rpm START:STEP:STOP and --schedule FILE");
+  const std::vector<SweepPoint> points = opt.schedule.empty() ? rpmRange(opt.rpm_range) : readSchedule(opt.schedule);
+  const TextTable sets = readTextCsv(opt.params);
+  if (sets.names.empty() || sets.rows.empty())
+    throw InputError(where(opt.params, 1, "", "needs a header of --set keys and at least one row of values"));
+  for (const auto& n : sets.names)
+    if (n.empty() || n.find('=') != std::string::npos)
+      throw InputError(where(opt.params, 1, n, "not a --set key"));
+  const std::string dir = opt.out.empty() ? defaultOutputFolder(opt.model.case_path) : opt.out;
+  ensureWritableFolder(dir);
+
+  if (parallel::launchedByMpi()) parallel::requirePetsc("mpirun");  // start-up outside the timing
+  const auto start = std::chrono::steady_clock::now();
+  const size_t S = sets.rows.size(), P = points.size();
+  SweepOptions sweep;
+  sweep.azimuths = opt.azimuths;
+  std::map<size_t, Model> models;  // this rank's models, built when its first point of a set comes
+  const std::vector<CampbellPoint> all = parallel::parallelMap<CampbellPoint>(
+      static_cast<int>(S * P),
+      [&](int k) {
+        const size_t s = static_cast<size_t>(k) / P;
+        auto it = models.find(s);
+        if (it == models.end()) it = models.emplace(s, loadSet(opt, sets, s)).first;
+        return campbellPoint(it->second, points[static_cast<size_t>(k) % P], sweep);
+      },
+      encodeCampbellPoint, decodeCampbellPoint);
+  if (parallel::rank() != 0) return;
+
+  // Each set is its own Campbell diagram: tracked on its own, its rows prefixed by the set.
+  std::string head = "set";
+  for (const auto& n : sets.names) head += "," + csvField(n);
+  std::string csv;
+  TrackingOptions track;
+  track.overrides_file = opt.tracking;
+  for (size_t s = 0; s < S; ++s) {
+    CampbellDiagram d;
+    d.points.assign(all.begin() + static_cast<long>(s * P), all.begin() + static_cast<long>((s + 1) * P));
+    d.lines = trackModes(d.points, track);
+    const std::string table = campbellCsv(d);
+    const size_t eol = table.find('\n');
+    if (s == 0) csv = head + "," + table.substr(0, eol + 1);
+    std::string prefix = std::to_string(s + 1);
+    for (const auto& v : sets.rows[s]) prefix += "," + csvField(v);
+    for (size_t a = eol + 1; a < table.size();) {
+      const size_t b = table.find('\n', a);
+      csv += prefix + "," + table.substr(a, b - a + 1);
+      a = b + 1;
+    }
+  }
+  const std::string path = dir + "/study.csv";
+  writeFileAtomic(path, csv);
+  std::printf("wrote %s\n%zu parameter sets x %zu operating points, %.2f s", path.c_str(), S, P,
+              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  if (parallel::size() > 1) std::printf(" on %d MPI ranks", parallel::size());
+  std::printf("\n");
+}
+
+}  // namespace
+
+void addStudyCommand(CLI::App& app) {
+  auto opt = std::make_shared<StudyOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "study",
+      "parameter study: every parameter set of --params (a CSV whose columns are --set keys, one row per set) "
+      "at every operating point; writes study.csv (set, its values, then the campbell.csv columns)");
+  addModelOptions(*cmd, opt->model, false);
+  cmd->add_option("--params", opt->params, "CSV of parameter sets: header of --set keys, one row per set")
+      ->required();
+  cmd->add_option("--rpm", opt->rpm_range, "rotor speeds START:STEP:STOP [rpm]");
+  cmd->add_option("--schedule", opt->schedule, "operating schedule CSV (wind speed, RotSpeed, BldPitch columns)");
+  cmd->add_option("--azimuths", opt->azimuths, "azimuths per revolution for the multiblade average")
+      ->check(CLI::Range(1, 3600));
+  cmd->add_option("--out", opt->out, "output folder (default reports/<case name>)");
+  cmd->add_option("--tracking", opt->tracking, "mode-tracking overrides file, applied to every set");
+  cmd->callback([opt]() { run(*opt); });
+}
+
+}  // namespace whirl::cli

@@ -1,0 +1,40 @@
+#pragma once
+/// \file
+/// Independent tasks spread over MPI ranks, results gathered on rank 0 in task order — the one
+/// layer through which sweeps (Campbell points, exported operating points, parameter sets) use
+/// MPI. Without mpirun (or built without PETSc) it is a plain loop in this process.
+///
+/// Task k runs on rank k mod size (cyclic: neighbouring operating points cost alike, so every
+/// rank gets a similar share). A task's result travels as bytes (the caller serializes, e.g. CBOR,
+/// which keeps every double exact), so what rank 0 assembles is bit for bit what one rank would
+/// have computed, as long as each task depends on its index only (no state carried between tasks).
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace whirl::parallel {
+
+struct MapOptions {
+  /// Called on rank 0 after each of its own tasks with (tasks done here, tasks assigned here).
+  std::function<void(int, int)> progress;
+};
+
+/// Runs task(k) for k = 0 … n−1 over the ranks; returns the n results on rank 0 (index k = task
+/// k) and an empty vector on the other ranks.
+/// Errors: a rank stops at its first failing task; afterwards every rank throws the error of the
+/// lowest failing task index, with its type (InputError, ComputeError, else std::runtime_error)
+/// and message — the error one rank would have stopped on.
+std::vector<std::string> parallelMapBytes(int n, const std::function<std::string(int)>& task,
+                                          const MapOptions& opt = {});
+
+/// Typed form: `task(k)` returns a T; `encode(const T&)` → bytes, `decode(bytes)` → T.
+template <class T, class Task, class Encode, class Decode>
+std::vector<T> parallelMap(int n, Task&& task, Encode&& encode, Decode&& decode, const MapOptions& opt = {}) {
+  const std::vector<std::string> bytes = parallelMapBytes(n, [&](int k) { return encode(task(k)); }, opt);
+  std::vector<T> out;
+  out.reserve(bytes.size());
+  for (const auto& b : bytes) out.push_back(decode(b));
+  return out;
+}
+
+}  // namespace whirl::parallel
