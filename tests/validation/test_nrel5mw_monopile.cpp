@@ -16,7 +16,7 @@ std::vector<Mode> modesOf(const std::vector<std::string>& sets) {
   return computeModes(l.M, l.C, l.K, l.dof_names);
 }
 
-TEST(Nrel5mwMonopile, CraigBamptonWithinHalfPercentOfFullFem) {
+TEST(Nrel5mwMonopileSlow, CraigBamptonWithinHalfPercentOfFullFem) {
   const std::vector<Mode> cb = modesOf({}), full = modesOf({"bodies.monopile.reduction={type: none}"});
   ASSERT_GE(cb.size(), 6u);
   ASSERT_GT(full.size(), 400u);  // the full FE DOFs are coordinates of the coupled model
