@@ -1,12 +1,32 @@
 #include "linearize/operating_point.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "linearize/jacobian.hpp"
+#include "linearize/linearize.hpp"
 #include "src/dynamics/residual.hpp"
 #include "src/model/error.hpp"
 
 namespace whirl {
+namespace {
+
+/// K of `lm` on the solved coordinates, or an empty matrix when one of them is not a state of `lm`.
+MatX chordMatrix(const LinearModel& lm, const std::vector<int>& solved) {
+  std::vector<int> at;
+  for (int i : solved) {
+    const auto it = std::find(lm.dofs.begin(), lm.dofs.end(), i);
+    if (it == lm.dofs.end()) return {};
+    at.push_back(static_cast<int>(it - lm.dofs.begin()));
+  }
+  const int ns = static_cast<int>(at.size());
+  MatX K(ns, ns);
+  for (int r = 0; r < ns; ++r)
+    for (int c = 0; c < ns; ++c) K(r, c) = lm.K(at[r], at[c]);
+  return K;
+}
+
+}  // namespace
 
 OperatingPoint initialPoint(const Model& m) {
   OperatingPoint op;
@@ -54,8 +74,32 @@ OperatingPoint solveOperatingPoint(const Model& m, const OperatingPoint& start, 
   VecX es = solvedResidual();
   if (!e.allFinite()) throw ComputeError("operating point: the residual is not finite (NaN in the model or inputs)");
   // Load scale: the residual at the undeflected start, or the gravity/centrifugal loads it holds.
-  const double scale = std::max(1.0, es.lpNorm<Eigen::Infinity>());
+  const double scale = opt.load_scale > 0 ? opt.load_scale : std::max(1.0, es.lpNorm<Eigen::Infinity>());
+  op.load_scale = scale;
   op.iterations = 0;
+  const double target = opt.tolerance * scale;
+  if (opt.chord && ns > 0 && es.lpNorm<Eigen::Infinity>() > target) {
+    // Chord steps are a residual and a back-substitution each, a fifth of a Newton step (which
+    // needs the AD stiffness); a step that gains less than 4× is undone and Newton goes on.
+    const MatX Kc = chordMatrix(*opt.chord, op.solved);
+    if (Kc.size() > 0) {
+      const Eigen::CompleteOrthogonalDecomposition<MatX> cod(Kc);
+      double prev = es.lpNorm<Eigen::Infinity>();
+      while (op.iterations < 8 && prev > target) {
+        const VecX dq = cod.solve(es);
+        for (int k = 0; k < ns; ++k) op.q(op.solved[k]) += dq(k);
+        const VecX next = solvedResidual();
+        const double now = next.lpNorm<Eigen::Infinity>();
+        if (!(now < 0.25 * prev)) {
+          for (int k = 0; k < ns; ++k) op.q(op.solved[k]) -= dq(k);
+          break;
+        }
+        es = next;
+        prev = now;
+        ++op.iterations;
+      }
+    }
+  }
   while (ns > 0 && es.lpNorm<Eigen::Infinity>() > opt.tolerance * scale) {
     if (op.iterations >= opt.max_iterations) {
       Eigen::Index worst;

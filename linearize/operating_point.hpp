@@ -11,11 +11,14 @@
 
 namespace whirl {
 
+struct LinearModel;
+
 struct OperatingPoint {
   VecX q, qd, qdd, u;        ///< all coordinates (ndof) and inputs (ninput)
   std::vector<int> solved;   ///< coordinates solved for equilibrium
   int iterations = 0;
   double residual_norm = 0;  ///< ‖e‖ over the solved coordinates at the solution [N, N m]
+  double load_scale = 1;     ///< what the tolerance was relative to [N, N m]
   double residual_max_active = 0;  ///< max |e| over all active coordinates (rotating ones included)
   std::string residual_max_dof;    ///< where that maximum sits
 };
@@ -23,6 +26,13 @@ struct OperatingPoint {
 struct EquilibriumOptions {
   int max_iterations = 50;
   double tolerance = 1e-10;  ///< on ‖e_solved‖ relative to the generalized gravity/centrifugal load scale
+  /// A linearization at a nearby point (the previous azimuth of a periodic sweep): its K is used
+  /// as the Newton matrix (chord iterations, no Jacobian) while the residual falls at least 4× per
+  /// step; full Newton takes over otherwise. Must outlive the call.
+  const LinearModel* chord = nullptr;
+  /// The tolerance's reference [N, N m]; 0: max(1, ‖e_solved‖∞ at the start). A warm start (a
+  /// neighbouring point's equilibrium) passes the scale of the cold start it continues.
+  double load_scale = 0;
 };
 
 /// Starting point from the model: each coordinate at its value, each rate at its rate, q̈ = 0,
