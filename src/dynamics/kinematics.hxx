@@ -1,12 +1,22 @@
 #pragma once
+#include <algorithm>
 #include <cmath>
 
 #include "src/dynamics/kinematics.hpp"
 
 namespace whirl {
 
+namespace detail {
+inline int maxBasisSize(const Model& m) {
+  int ncmax = 1;
+  for (const Body& b : m.bodies) ncmax = std::max(ncmax, b.inertia.nc());
+  return ncmax;
+}
+}  // namespace detail
+
 template <class T>
-Workspace<T>::Workspace(const Model& m) {
+Workspace<T>::Workspace(const Model& m)
+    : prod(detail::maxBasisSize(m)), prod_dt(detail::maxBasisSize(m)), prod_dd(detail::maxBasisSize(m)) {
   const int n = m.ndof();
   int ncmax = 1, nemax = 1;
   frames.resize(m.bodies.size());
@@ -22,9 +32,11 @@ Workspace<T>::Workspace(const Model& m) {
     ncmax = std::max(ncmax, in.nc());
     nemax = std::max(nemax, in.ne);
   }
-  ukl.assign(9, VecXT<T>::Zero(ncmax));
   g = VecXT<T>::Zero(ncmax);
-  tmp = VecXT<T>::Zero(ncmax);
+  basis_value.c = VecX::Zero(ncmax);
+  basis_value.cd = VecX::Zero(ncmax);
+  basis_value.cdd = VecX::Zero(ncmax);
+  basis_value.D = MatX::Zero(ncmax, nemax);
   h = VecXT<T>::Zero(nemax);
 }
 

@@ -20,7 +20,7 @@ MatX bodyMassMatrix(const BodyInertia& in, const BasisState<double>& b) {
   Mat3 Q;
   for (int j = 0; j < 3; ++j)
     for (int l = 0; l < 3; ++l) {
-      y[3 * j + l].noalias() = in.S[3 * j + l] * c;
+      y[3 * j + l].noalias() = in.S[3 * j + l].lazyProduct(c);
       Q(j, l) = c.dot(y[3 * j + l]);
     }
   Mb.block<3, 3>(0, 0) = in.mass * Mat3::Identity();
@@ -29,13 +29,13 @@ MatX bodyMassMatrix(const BodyInertia& in, const BasisState<double>& b) {
   Mb.block<3, 3>(3, 3) = Q.trace() * Mat3::Identity() - Q;
   if (ne == 0) return Mb;
   const MatX& D = b.D;
-  Mb.block(0, 6, 3, ne) = in.m1 * D;
+  Mb.block(0, 6, 3, ne) = in.m1.lazyProduct(D);
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)
       for (int k = 0; k < 3; ++k)
-        if (eps(i, j, k) != 0) Mb.block(3 + i, 6, 1, ne) += eps(i, j, k) * (y[3 * k + j].transpose() * D);
+        if (eps(i, j, k) != 0) Mb.block(3 + i, 6, 1, ne) += eps(i, j, k) * y[3 * k + j].transpose().lazyProduct(D);
   if (in.Strace.rows() == nc) {
-    Mb.block(6, 6, ne, ne) = D.transpose() * in.Strace * D;
+    Mb.block(6, 6, ne, ne) = D.transpose().lazyProduct(in.Strace.lazyProduct(D).eval());
   } else {  // a body that was never finalized
     const MatX Skk = in.S[0] + in.S[4] + in.S[8];
     Mb.block(6, 6, ne, ne) = D.transpose() * Skk * D;
@@ -63,7 +63,8 @@ void massMatrix(const Model& m, Workspace<double>& ws, const VecX& q, MatX& M) {
       B.block<3, 1>(3, c) = f.R.transpose() * f.Jw.col(sup[c]);
     }
     for (int k = 0; k < ne; ++k) B(6 + k, sup.size() + k) = 1.0;
-    const MatX Mq = B.transpose() * bodyMassMatrix(b.inertia, ws.basis[i]) * B;
+    const MatX Mb = bodyMassMatrix(b.inertia, ws.basis[i]);
+    const MatX Mq = B.transpose().lazyProduct(Mb.lazyProduct(B).eval());
     for (size_t r = 0; r < cols.size(); ++r)
       for (size_t c = 0; c < cols.size(); ++c) M(cols[r], cols[c]) += Mq(r, c);
   }

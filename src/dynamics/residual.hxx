@@ -1,87 +1,10 @@
 #pragma once
+#include "src/dynamics/body_forces.hxx"
 #include "src/dynamics/kinematics.hxx"
 #include "src/dynamics/residual.hpp"
 
 namespace whirl {
 namespace detail {
-
-// y[0..rows) = S[0..rows, 0..cols) x for a small dense double matrix and a vector of T (no
-// temporaries, no mixed-type GEMV); zero entries of S are skipped.
-template <class T>
-void matvec(const MatX& S, const VecXT<T>& x, int rows, int cols, VecXT<T>& y) {
-  for (int i = 0; i < rows; ++i) y(i) = T(0);
-  for (int j = 0; j < cols; ++j) {
-    const T& xj = x(j);
-    const double* col = S.data() + static_cast<Eigen::Index>(j) * S.rows();
-    for (int i = 0; i < rows; ++i)
-      if (col[i] != 0.0) y(i) += col[i] * xj;
-  }
-}
-
-template <class T>
-T dot(const double* a, int stride, const VecXT<T>& x, int n) {
-  T s(0);
-  for (int k = 0; k < n; ++k) s += a[k * stride] * x(k);
-  return s;
-}
-
-// Inertia and gravity forces of one body on its own virtual motions, body-frame components:
-//   F = −∫ a_P dm,  T = −∫ s × a_P dm (about the origin),  H = −Dᵀ ∫ Pᵀ a_P dm,
-// with a_P = â + A s + 2 W ṡ + s̈, â = a − g, A = α̃ + ω̃ω̃, W = ω̃, s = P c (seed 001 eq. 13–15, A1–A19).
-template <class T>
-void bodyInertiaForces(const BodyInertia& in, const BasisState<T>& b, const Vec3T<T>& ahat, const Vec3T<T>& alpha,
-                       const Vec3T<T>& omega, Workspace<T>& ws, Vec3T<T>& F, Vec3T<T>& Tq, T* H) {
-  const int nc = in.nc();
-  const Mat3T<T> W = skew(omega);
-  const Mat3T<T> A = skew(alpha) + W * W;
-  for (int k = 0; k < 3; ++k)
-    for (int l = 0; l < 3; ++l) {
-      VecXT<T>& u = ws.ukl[3 * k + l];
-      for (int p = 0; p < nc; ++p) u(p) = A(k, l) * b.c(p) + T(2) * W(k, l) * b.cd(p);
-      if (k == l)
-        for (int p = 0; p < nc; ++p) u(p) += b.cdd(p);
-    }
-  const std::array<int, 3>& len = in.len;
-  // Force.
-  for (int k = 0; k < 3; ++k) {
-    T s = in.mass * ahat(k);
-    for (int l = 0; l < 3; ++l) s += dot(in.m1.data() + l, 3, ws.ukl[3 * k + l], len[l]);
-    F(k) = -s;
-  }
-  // Moment: ∫ s_j (a_P)_k dm = (m1_j·c) â_k + Σ_l (S_lj c)·u_kl.
-  Mat3T<T> Q;  // Q(j,k) = ∫ s_j (a_P)_k dm
-  for (int j = 0; j < 3; ++j) {
-    const T m1c = dot(in.m1.data() + j, 3, b.c, len[j]);
-    for (int k = 0; k < 3; ++k) Q(j, k) = m1c * ahat(k);
-  }
-  for (int l = 0; l < 3; ++l)
-    for (int j = 0; j < 3; ++j) {
-      matvec(in.S[3 * l + j], b.c, len[l], len[j], ws.tmp);  // S_lj c
-      for (int k = 0; k < 3; ++k) {
-        const VecXT<T>& u = ws.ukl[3 * k + l];
-        T s(0);
-        for (int p = 0; p < len[l]; ++p) s += ws.tmp(p) * u(p);
-        Q(j, k) += s;
-      }
-    }
-  Tq(0) = -(Q(1, 2) - Q(2, 1));
-  Tq(1) = -(Q(2, 0) - Q(0, 2));
-  Tq(2) = -(Q(0, 1) - Q(1, 0));
-  if (in.ne == 0) return;
-  // Elastic: G = Σ_k [m1_kᵀ â_k + Σ_l S_kl u_kl],  H = −Dᵀ G.
-  VecXT<T>& G = ws.g;
-  for (int p = 0; p < nc; ++p) G(p) = in.m1(0, p) * ahat(0) + in.m1(1, p) * ahat(1) + in.m1(2, p) * ahat(2);
-  for (int k = 0; k < 3; ++k)
-    for (int l = 0; l < 3; ++l) {
-      matvec(in.S[3 * k + l], ws.ukl[3 * k + l], len[k], len[l], ws.tmp);
-      for (int p = 0; p < len[k]; ++p) G(p) += ws.tmp(p);
-    }
-  for (int j = 0; j < in.ne; ++j) {
-    T s(0);
-    for (int p = 0; p < nc; ++p) s += b.D(p, j) * G(p);
-    H[j] = -s;
-  }
-}
 
 inline bool seeded(double) { return true; }
 template <class T>
@@ -107,6 +30,52 @@ T inputScale(const VecXT<T>& u, int input) {
   return input >= 0 ? u(input) : T(1);
 }
 
+// Whether any of the body's own elastic coordinates carries a seeded direction in x.
+template <class T>
+bool elasticSeeded(const Body& b, const VecXT<T>& x) {
+  for (int j = 0; j < b.inertia.ne; ++j)
+    if (seeded(x(b.elastic_dof + j))) return true;
+  return false;
+}
+
+// Inertia forces of body i (body_forces.hxx) from its frame's â, α, ω. In an AD pass, the basis
+// products are formed in double when the body's own coordinates are not seeded (c, ċ, c̈ and D
+// then carry zero derivatives), and c-only products in double when only q̇ or q̈ are seeded.
+template <class T>
+void bodyInertiaForces(const Model& m, int i, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T>& qd,
+                       const VecXT<T>& qdd, const Vec3T<T>& ahat, const Vec3T<T>& alpha, const Vec3T<T>& omega,
+                       Vec3T<T>& F, Vec3T<T>& Tq, T* H) {
+  const Body& b = m.bodies[i];
+  const BodyInertia& in = b.inertia;
+  const BasisState<T>& bs = ws.basis[i];
+  if constexpr (std::is_same_v<T, double>) {
+    basisProducts(in, bs.c, bs.cd, bs.cdd, ws.prod);
+    frameForces(in, ws.prod, bs.D, ahat, alpha, omega, ws.g, F, Tq, H);
+  } else {
+    if (elasticSeeded(b, q)) {
+      basisProducts(in, bs.c, bs.cd, bs.cdd, ws.prod);
+      frameForces(in, ws.prod, bs.D, ahat, alpha, omega, ws.g, F, Tq, H);
+      return;
+    }
+    BasisState<double>& bv = ws.basis_value;
+    const int nc = in.nc();
+    for (int r = 0; r < nc; ++r) bv.c(r) = bs.c(r).value();
+    for (int j = 0; j < in.ne; ++j)
+      for (int r = 0; r < nc; ++r) bv.D(r, j) = bs.D(r, j).value();
+    if (elasticSeeded(b, qd) || elasticSeeded(b, qdd)) {
+      basisProducts(in, bv.c, bs.cd, bs.cdd, ws.prod_dt);
+      frameForces(in, ws.prod_dt, bv.D, ahat, alpha, omega, ws.g, F, Tq, H);
+      return;
+    }
+    for (int r = 0; r < nc; ++r) {
+      bv.cd(r) = bs.cd(r).value();
+      bv.cdd(r) = bs.cdd(r).value();
+    }
+    basisProducts(in, bv.c, bv.cd, bv.cdd, ws.prod_dd);
+    frameForces(in, ws.prod_dd, bv.D, ahat, alpha, omega, ws.g, F, Tq, H);
+  }
+}
+
 }  // namespace detail
 
 template <class T>
@@ -127,7 +96,7 @@ void residual(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T
     const Vec3T<T> alpha = Rt * f.dw;
     const Vec3T<T> omega = Rt * f.w;
     Vec3T<T> F, Tq;
-    detail::bodyInertiaForces(b.inertia, ws.basis[i], ahat, alpha, omega, ws, F, Tq, H);
+    detail::bodyInertiaForces(m, i, ws, q, qd, qdd, ahat, alpha, omega, F, Tq, H);
     const Vec3T<T> Fw = f.R * F, Tw = f.R * Tq;
     for (int s : m.support[i]) e(s) += f.Jv.col(s).dot(Fw) + f.Jw.col(s).dot(Tw);
     if (b.inertia.ne > 0) {

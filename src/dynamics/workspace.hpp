@@ -2,6 +2,7 @@
 /// \file
 /// Per-evaluation buffers (Pinocchio's Data): sized once from a Model, reused by every call so the
 /// hot path does not allocate.
+#include <array>
 #include <vector>
 
 #include "src/model/model.hpp"
@@ -28,15 +29,36 @@ struct BasisState {
   MatXT<T> D;           ///< nc × ne
 };
 
+/// The shape integrals of one body contracted with its basis (body_forces.hxx, stage 1): TQ for the
+/// terms in c only, TR for those with ċ or c̈. Buffers sized to the largest nc.
+template <class TQ, class TR>
+struct BasisProducts {
+  explicit BasisProducts(int ncmax) {
+    for (auto& v : y) v = VecXT<TQ>::Zero(ncmax);
+    for (auto& v : z) v = VecXT<TR>::Zero(ncmax);
+    scdd = VecXT<TR>::Zero(ncmax);
+  }
+  std::array<VecXT<TQ>, 9> y;  ///< y_kl = S_kl c
+  std::array<VecXT<TR>, 9> z;  ///< z_kl = S_kl ċ (k ≠ l)
+  VecXT<TR> scdd;              ///< Σ_k S_kk c̈
+  Mat3T<TQ> Pc;                ///< Pc(l,j) = c·y_lj
+  Mat3T<TR> Pcd, Pcdd;         ///< ċ·y_lj, c̈·y_lj
+  Vec3T<TQ> m1c;               ///< m1 c
+  Vec3T<TR> m1cd, m1cdd;       ///< m1 ċ, m1 c̈
+};
+
 template <class T>
 struct Workspace {
   explicit Workspace(const Model& m);
   std::vector<FrameState<T>> frames;  ///< per body
   std::vector<BasisState<T>> basis;   ///< per body
-  // Scratch for the body inertia forces (sized to the largest nc).
-  std::vector<VecXT<T>> ukl;  ///< 9 vectors u_kl = A_kl c + 2 W_kl ċ + δ_kl c̈
+  // Scratch for the body inertia forces (sized to the largest nc). An AD pass uses the double
+  // products for bodies whose own elastic coordinates are not seeded (body_forces.hxx).
+  BasisProducts<T, T> prod;
+  BasisProducts<double, T> prod_dt;          ///< c double, ċ and c̈ of type T (C columns)
+  BasisProducts<double, double> prod_dd;     ///< all double
+  BasisState<double> basis_value;            ///< values of one body's basis state
   VecXT<T> g;                 ///< Σ_k ∫ P_kᵀ (a_P)_k dm
-  VecXT<T> tmp;
   /// Set by AD Jacobian passes, which read only derivatives: residual() then skips the inertia
   /// forces of bodies none of whose coordinates carries a seeded direction (their values in e are
   /// then incomplete). Never set when the values of e are used.
