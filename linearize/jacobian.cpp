@@ -1,5 +1,6 @@
 #include "linearize/jacobian.hpp"
 
+#include "src/dynamics/kinematics.hpp"
 #include "src/dynamics/outputs.hpp"
 #include "src/dynamics/residual.hpp"
 
@@ -41,7 +42,7 @@ MatX jacobian(const Model& m, JacobianWorkspace& jw, const VecX& q, const VecX& 
 
 }  // namespace
 
-JacobianWorkspace::JacobianWorkspace(const Model& m) : ws(m) {
+JacobianWorkspace::JacobianWorkspace(const Model& m) : ws(m), kin(m) {
   ws.derivatives_only = true;
   q.resize(m.ndof());
   qd.resize(m.ndof());
@@ -53,8 +54,29 @@ JacobianWorkspace::JacobianWorkspace(const Model& m) : ws(m) {
 
 MatX residualJacobian(const Model& m, JacobianWorkspace& jw, const VecX& q, const VecX& qd, const VecX& qdd,
                       const VecX& u, Wrt wrt, const std::vector<int>& cols) {
-  return jacobian(m, jw, q, qd, qdd, u, wrt, cols, jw.e,
-                  [&]() { residual(m, jw.ws, jw.q, jw.qd, jw.qdd, jw.u, jw.e); });
+  auto full = [&]() { residual(m, jw.ws, jw.q, jw.qd, jw.qdd, jw.u, jw.e); };
+  if (wrt != Wrt::U) return jacobian(m, jw, q, qd, qdd, u, wrt, cols, jw.e, full);
+  // Inputs that move coordinates (pitch) need the whole residual; load inputs only the load terms.
+  std::vector<int> kin_cols, load_cols, kin_at, load_at;
+  for (int c = 0; c < static_cast<int>(cols.size()); ++c) {
+    const bool moves = !m.inputs[cols[c]].dofs.empty();
+    (moves ? kin_cols : load_cols).push_back(cols[c]);
+    (moves ? kin_at : load_at).push_back(c);
+  }
+  MatX J(m.ndof(), cols.size());
+  if (!kin_cols.empty()) {
+    const MatX Jk = jacobian(m, jw, q, qd, qdd, u, wrt, kin_cols, jw.e, full);
+    for (size_t c = 0; c < kin_at.size(); ++c) J.col(kin_at[c]) = Jk.col(c);
+  }
+  if (!load_cols.empty()) {
+    forwardKinematics(m, jw.kin, q, qd, qdd);
+    const MatX Jl = jacobian(m, jw, q, qd, qdd, u, wrt, load_cols, jw.e, [&]() {
+      for (int k = 0; k < m.ndof(); ++k) jw.e(k) = ADChunk(0.0);
+      addInputLoads(m, jw.kin, jw.u, jw.e);
+    });
+    for (size_t c = 0; c < load_at.size(); ++c) J.col(load_at[c]) = Jl.col(c);
+  }
+  return J;
 }
 
 MatX outputJacobian(const Model& m, JacobianWorkspace& jw, const VecX& q, const VecX& qd, const VecX& qdd,

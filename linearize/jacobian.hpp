@@ -19,10 +19,13 @@ enum class Wrt { Q, Qd, Qdd, U };
 struct JacobianWorkspace {
   explicit JacobianWorkspace(const Model& m);
   Workspace<ADChunk> ws;
+  Workspace<double> kin;  ///< double kinematics for the columns of load inputs
   VecXT<ADChunk> q, qd, qdd, u, e, y;
 };
 
 /// ∂e/∂(wrt)[:, cols] for all ndof rows, at (q, qd, qdd, u) (dims as in residual()).
+/// Columns of inputs that drive no coordinate (loads) differentiate only the load terms
+/// (addInputLoads), with the kinematics in double: e is affine in those inputs.
 MatX residualJacobian(const Model& model, JacobianWorkspace& jw, const VecX& q, const VecX& qd, const VecX& qdd,
                       const VecX& u, Wrt wrt, const std::vector<int>& cols);
 

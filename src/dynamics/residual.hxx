@@ -78,6 +78,47 @@ void bodyInertiaForces(const Model& m, int i, Workspace<T>& ws, const VecXT<T>& 
 
 }  // namespace detail
 
+template <class TK, class T>
+void addInputLoads(const Model& m, const Workspace<TK>& ws, const VecXT<T>& u, VecXT<T>& e) {
+  for (const PointLoad& l : m.point_loads) {
+    // The load scaled by its input (or 1): its generalized force is scale × that of the unit load,
+    // formed in TK; only the final products carry the scalar of u.
+    const Body& b = m.bodies[l.body];
+    const FrameState<TK>& f = ws.frames[l.body];
+    const BasisState<TK>& bs = ws.basis[l.body];
+    const T scale = detail::inputScale(u, l.input);
+    Vec3T<TK> s = Vec3T<TK>::Zero();
+    if (l.point >= 0) {
+      const Mat3X& P = b.points[l.point].P;
+      for (int k = 0; k < P.cols(); ++k) s += P.col(k) * bs.c(k);
+    }
+    Vec3T<TK> Fb, Mb;
+    if (l.body_frame) {
+      Fb = l.force.cast<TK>();
+      Mb = l.moment.cast<TK>();
+    } else {
+      Fb = f.R.transpose() * l.force.cast<TK>();
+      Mb = f.R.transpose() * l.moment.cast<TK>();
+    }
+    const Vec3T<TK> Fw = f.R * Fb;
+    const Vec3T<TK> Mw = f.R * Vec3T<TK>(Mb + s.cross(Fb));
+    for (int sd : m.support[l.body]) {
+      const TK g = f.Jv.col(sd).dot(Fw) + f.Jw.col(sd).dot(Mw);
+      e(sd) += scale * g;
+    }
+    if (l.point >= 0 && b.inertia.ne > 0) {
+      const BodyPoint& pt = b.points[l.point];
+      for (int j = 0; j < b.inertia.ne; ++j) {
+        Vec3T<TK> col = Vec3T<TK>::Zero();
+        for (int k = 0; k < pt.P.cols(); ++k) col += pt.P.col(k) * bs.D(k, j);
+        const TK g = col.dot(Fb) + pt.theta.col(j).cast<TK>().dot(Mb);
+        e(b.elastic_dof + j) += scale * g;
+      }
+    }
+  }
+  for (const DofLoad& l : m.dof_loads) e(l.dof) += l.value * detail::inputScale(u, l.input);
+}
+
 template <class T>
 void residual(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T>& qd, const VecXT<T>& qdd,
               const VecXT<T>& u, VecXT<T>& e) {
@@ -108,37 +149,7 @@ void residual(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T
       }
     }
   }
-  for (const PointLoad& l : m.point_loads) {
-    const Body& b = m.bodies[l.body];
-    const FrameState<T>& f = ws.frames[l.body];
-    const BasisState<T>& bs = ws.basis[l.body];
-    const T scale = detail::inputScale(u, l.input);
-    Vec3T<T> s = Vec3T<T>::Zero();
-    if (l.point >= 0) {
-      const Mat3X& P = b.points[l.point].P;
-      for (int k = 0; k < P.cols(); ++k) s += P.col(k) * bs.c(k);
-    }
-    Vec3T<T> Fb, Mb;
-    if (l.body_frame) {
-      Fb = l.force.cast<T>() * scale;
-      Mb = l.moment.cast<T>() * scale;
-    } else {
-      Fb = f.R.transpose() * (l.force.cast<T>() * scale);
-      Mb = f.R.transpose() * (l.moment.cast<T>() * scale);
-    }
-    const Vec3T<T> Fw = f.R * Fb;
-    const Vec3T<T> Mw = f.R * (Mb + s.cross(Fb));
-    for (int sd : m.support[l.body]) e(sd) += f.Jv.col(sd).dot(Fw) + f.Jw.col(sd).dot(Mw);
-    if (l.point >= 0 && b.inertia.ne > 0) {
-      const BodyPoint& pt = b.points[l.point];
-      for (int j = 0; j < b.inertia.ne; ++j) {
-        Vec3T<T> col = Vec3T<T>::Zero();
-        for (int k = 0; k < pt.P.cols(); ++k) col += pt.P.col(k) * bs.D(k, j);
-        e(b.elastic_dof + j) += col.dot(Fb) + pt.theta.col(j).cast<T>().dot(Mb);
-      }
-    }
-  }
-  for (const DofLoad& l : m.dof_loads) e(l.dof) += l.value * detail::inputScale(u, l.input);
+  addInputLoads(m, ws, u, e);
   for (const DofSpring& s : m.springs) e(s.dof) -= s.k * (q(s.dof) - s.q0) + s.c * qd(s.dof);
   for (const BodyMatrices& bm : m.body_matrices) {
     const int d0 = m.bodies[bm.body].joint_dof;
