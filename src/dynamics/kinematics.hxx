@@ -33,6 +33,14 @@ Workspace<T>::Workspace(const Model& m)
     nemax = std::max(nemax, in.ne);
   }
   g = VecXT<T>::Zero(ncmax);
+  size_t supmax = 0;
+  for (const auto& sup : m.support) supmax = std::max(supmax, sup.size());
+  const int nsup = static_cast<int>(supmax);
+  for (VecX& y : mass.y) y = VecX::Zero(ncmax);
+  mass.Mb = MatX::Zero(6 + nemax, 6 + nemax);
+  mass.Jb = MatX::Zero(6, nsup);
+  mass.MJ = MatX::Zero(6, nsup);
+  mass.zero = VecX::Zero(n);
   basis_value.c = VecX::Zero(ncmax);
   basis_value.cd = VecX::Zero(ncmax);
   basis_value.cdd = VecX::Zero(ncmax);

@@ -47,6 +47,15 @@ struct BasisProducts {
   Vec3T<TR> m1cd, m1cdd;       ///< m1 ċ, m1 c̈
 };
 
+/// Buffers of the double mass-matrix assembly (mass_matrix.cpp), sized to the largest body.
+struct MassScratch {
+  std::array<VecX, 9> y;  ///< S_jl c (largest nc)
+  MatX Mb;                ///< body mass matrix (6 + ne)²
+  MatX Jb;                ///< [Rᵀ Jv; Rᵀ Jω] on the support, 6 × nsup
+  MatX MJ;                ///< M_b,66 Jb
+  VecX zero;              ///< ndof zeros (q̇ = q̈ = 0)
+};
+
 template <class T>
 struct Workspace {
   explicit Workspace(const Model& m);
@@ -58,6 +67,7 @@ struct Workspace {
   BasisProducts<double, T> prod_dt;          ///< c double, ċ and c̈ of type T (C columns)
   BasisProducts<double, double> prod_dd;     ///< all double
   BasisState<double> basis_value;            ///< values of one body's basis state
+  MassScratch mass;                          ///< mass-matrix assembly (double)
   VecXT<T> g;                 ///< Σ_k ∫ P_kᵀ (a_P)_k dm
   /// Set by AD Jacobian passes, which read only derivatives: residual() then skips the inertia
   /// forces of bodies none of whose coordinates carries a seeded direction (their values in e are
