@@ -45,31 +45,42 @@ T dot(const double* a, int stride, const VecXT<T>& x, int n) {
 /// Stage 1: with S_kl = ∫ P_kᵀ P_l dm and m1 = ∫ P dm (entries beyond len[k] are zero),
 ///   y_kl = S_kl c, z_kl = S_kl ċ (k ≠ l; W has a zero diagonal), s = Σ_k S_kk c̈,
 ///   Pc(l,j) = c·y_lj, Pcd(l,j) = ċ·y_lj, Pcdd(l,j) = c̈·y_lj, m1c = m1 c, m1cd = m1 ċ, m1cdd = m1 c̈.
+/// Position part: y, Pc, m1c.
 template <class TQ, class TR>
-void basisProducts(const BodyInertia& in, const VecXT<TQ>& c, const VecXT<TR>& cd, const VecXT<TR>& cdd,
-                   BasisProducts<TQ, TR>& p) {
+void basisPositionProducts(const BodyInertia& in, const VecXT<TQ>& c, BasisProducts<TQ, TR>& p) {
   const std::array<int, 3>& len = in.len;
   for (int k = 0; k < 3; ++k)
-    for (int l = 0; l < 3; ++l) {
-      detail::matvec(in.S[3 * k + l], c, len[k], len[l], p.y[3 * k + l]);
-      if (k != l && in.ne > 0) detail::matvec(in.S[3 * k + l], cd, len[k], len[l], p.z[3 * k + l]);
-    }
+    for (int l = 0; l < 3; ++l) detail::matvec(in.S[3 * k + l], c, len[k], len[l], p.y[3 * k + l]);
   for (int l = 0; l < 3; ++l)
     for (int j = 0; j < 3; ++j) {
       const VecXT<TQ>& y = p.y[3 * l + j];
       TQ a(0);
+      for (int r = 0; r < len[l]; ++r) a += c(r) * y(r);
+      p.Pc(l, j) = a;
+    }
+  for (int k = 0; k < 3; ++k) p.m1c(k) = detail::dot(in.m1.data() + k, 3, c, len[k]);
+}
+
+/// Rate part: z, Pcd, Pcdd, m1cd, m1cdd, s (needs the position part's y).
+template <class TQ, class TR>
+void basisRateProducts(const BodyInertia& in, const VecXT<TR>& cd, const VecXT<TR>& cdd, BasisProducts<TQ, TR>& p) {
+  const std::array<int, 3>& len = in.len;
+  if (in.ne > 0)
+    for (int k = 0; k < 3; ++k)
+      for (int l = 0; l < 3; ++l)
+        if (k != l) detail::matvec(in.S[3 * k + l], cd, len[k], len[l], p.z[3 * k + l]);
+  for (int l = 0; l < 3; ++l)
+    for (int j = 0; j < 3; ++j) {
+      const VecXT<TQ>& y = p.y[3 * l + j];
       TR b(0), d(0);
       for (int r = 0; r < len[l]; ++r) {
-        a += c(r) * y(r);
         b += cd(r) * y(r);
         d += cdd(r) * y(r);
       }
-      p.Pc(l, j) = a;
       p.Pcd(l, j) = b;
       p.Pcdd(l, j) = d;
     }
   for (int k = 0; k < 3; ++k) {
-    p.m1c(k) = detail::dot(in.m1.data() + k, 3, c, len[k]);
     p.m1cd(k) = detail::dot(in.m1.data() + k, 3, cd, len[k]);
     p.m1cdd(k) = detail::dot(in.m1.data() + k, 3, cdd, len[k]);
   }
@@ -84,6 +95,14 @@ void basisProducts(const BodyInertia& in, const VecXT<TQ>& c, const VecXT<TR>& c
       for (int r = 0; r < len[k]; ++r) p.scdd(r) += p.z[4 * k](r);
     }
   }
+}
+
+/// Both parts.
+template <class TQ, class TR>
+void basisProducts(const BodyInertia& in, const VecXT<TQ>& c, const VecXT<TR>& cd, const VecXT<TR>& cdd,
+                   BasisProducts<TQ, TR>& p) {
+  basisPositionProducts(in, c, p);
+  basisRateProducts(in, cd, cdd, p);
 }
 
 /// Stage 2: F = −(m â + A m1c + 2 W m1ċ + m1c̈), T_i = −ε_ijk Q(j,k) with

@@ -16,7 +16,7 @@ inline int maxBasisSize(const Model& m) {
 
 template <class T>
 Workspace<T>::Workspace(const Model& m)
-    : prod(detail::maxBasisSize(m)), prod_dt(detail::maxBasisSize(m)), prod_dd(detail::maxBasisSize(m)) {
+    : prod(detail::maxBasisSize(m)), prod_dt(detail::maxBasisSize(m)) {
   const int n = m.ndof();
   int ncmax = 1, nemax = 1;
   frames.resize(m.bodies.size());
@@ -41,10 +41,8 @@ Workspace<T>::Workspace(const Model& m)
   mass.Jb = MatX::Zero(6, nsup);
   mass.MJ = MatX::Zero(6, nsup);
   mass.zero = VecX::Zero(n);
-  basis_value.c = VecX::Zero(ncmax);
-  basis_value.cd = VecX::Zero(ncmax);
-  basis_value.cdd = VecX::Zero(ncmax);
-  basis_value.D = MatX::Zero(ncmax, nemax);
+  if constexpr (!std::is_same_v<T, double>)
+    for (const Body& b : m.bodies) constant_basis.emplace_back(b.inertia.nc(), b.inertia.ne);
   h = VecXT<T>::Zero(nemax);
 }
 

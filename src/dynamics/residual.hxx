@@ -30,6 +30,13 @@ T inputScale(const VecXT<T>& u, int input) {
   return input >= 0 ? u(input) : T(1);
 }
 
+template <class T>
+bool anySeeded(const VecXT<T>& x) {
+  for (Eigen::Index k = 0; k < x.size(); ++k)
+    if (seeded(x(k))) return true;
+  return false;
+}
+
 // Whether any of the body's own elastic coordinates carries a seeded direction in x.
 template <class T>
 bool elasticSeeded(const Body& b, const VecXT<T>& x) {
@@ -40,7 +47,8 @@ bool elasticSeeded(const Body& b, const VecXT<T>& x) {
 
 // Inertia forces of body i (body_forces.hxx) from its frame's â, α, ω. In an AD pass, the basis
 // products are formed in double when the body's own coordinates are not seeded (c, ċ, c̈ and D
-// then carry zero derivatives), and c-only products in double when only q̇ or q̈ are seeded.
+// then carry zero derivatives; cached across passes at the same point), and the c-only products in
+// double when only q̇ or q̈ are seeded.
 template <class T>
 void bodyInertiaForces(const Model& m, int i, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T>& qd,
                        const VecXT<T>& qdd, const Vec3T<T>& ahat, const Vec3T<T>& alpha, const Vec3T<T>& omega,
@@ -57,22 +65,38 @@ void bodyInertiaForces(const Model& m, int i, Workspace<T>& ws, const VecXT<T>& 
       frameForces(in, ws.prod, bs.D, ahat, alpha, omega, ws.g, F, Tq, H);
       return;
     }
-    BasisState<double>& bv = ws.basis_value;
-    const int nc = in.nc();
-    for (int r = 0; r < nc; ++r) bv.c(r) = bs.c(r).value();
-    for (int j = 0; j < in.ne; ++j)
-      for (int r = 0; r < nc; ++r) bv.D(r, j) = bs.D(r, j).value();
-    if (elasticSeeded(b, qd) || elasticSeeded(b, qdd)) {
-      basisProducts(in, bv.c, bs.cd, bs.cdd, ws.prod_dt);
-      frameForces(in, ws.prod_dt, bv.D, ahat, alpha, omega, ws.g, F, Tq, H);
+    // c and D carry no seeded direction: double products, kept while q_e, q̇_e, q̈_e keep their values.
+    ConstantBasis& cb = ws.constant_basis[i];
+    const int ne = in.ne, e0 = b.elastic_dof, nc = in.nc();
+    bool same = cb.valid;
+    for (int j = 0; j < ne && same; ++j)
+      same = cb.key(j) == q(e0 + j).value() && cb.key(ne + j) == qd(e0 + j).value() &&
+             cb.key(2 * ne + j) == qdd(e0 + j).value();
+    if (!same) {
+      for (int j = 0; j < ne; ++j) {
+        cb.key(j) = q(e0 + j).value();
+        cb.key(ne + j) = qd(e0 + j).value();
+        cb.key(2 * ne + j) = qdd(e0 + j).value();
+      }
+      for (int r = 0; r < nc; ++r) {
+        cb.basis.c(r) = bs.c(r).value();
+        cb.basis.cd(r) = bs.cd(r).value();
+        cb.basis.cdd(r) = bs.cdd(r).value();
+        for (int j = 0; j < ne; ++j) cb.basis.D(r, j) = bs.D(r, j).value();
+      }
+      basisProducts(in, cb.basis.c, cb.basis.cd, cb.basis.cdd, cb.prod);
+      cb.valid = true;
+    }
+    if (elasticSeeded(b, qd) || elasticSeeded(b, qdd)) {  // q̇ or q̈ columns: only the rate part in AD
+      BasisProducts<double, T>& p = ws.prod_dt;
+      for (int k = 0; k < 9; ++k) p.y[k].head(in.len[k / 3]) = cb.prod.y[k].head(in.len[k / 3]);
+      p.Pc = cb.prod.Pc;
+      p.m1c = cb.prod.m1c;
+      basisRateProducts(in, bs.cd, bs.cdd, p);
+      frameForces(in, p, cb.basis.D, ahat, alpha, omega, ws.g, F, Tq, H);
       return;
     }
-    for (int r = 0; r < nc; ++r) {
-      bv.cd(r) = bs.cd(r).value();
-      bv.cdd(r) = bs.cdd(r).value();
-    }
-    basisProducts(in, bv.c, bv.cd, bv.cdd, ws.prod_dd);
-    frameForces(in, ws.prod_dd, bv.D, ahat, alpha, omega, ws.g, F, Tq, H);
+    frameForces(in, cb.prod, cb.basis.D, ahat, alpha, omega, ws.g, F, Tq, H);
   }
 }
 
@@ -149,7 +173,11 @@ void residual(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T
       }
     }
   }
-  addInputLoads(m, ws, u, e);
+  // The load terms depend on q and u only: a pass seeding neither (q̇, q̈ columns) skips them.
+  bool loads = true;
+  if constexpr (!std::is_same_v<T, double>)
+    if (ws.derivatives_only) loads = detail::anySeeded(q) || detail::anySeeded(u);
+  if (loads) addInputLoads(m, ws, u, e);
   for (const DofSpring& s : m.springs) e(s.dof) -= s.k * (q(s.dof) - s.q0) + s.c * qd(s.dof);
   for (const BodyMatrices& bm : m.body_matrices) {
     const int d0 = m.bodies[bm.body].joint_dof;

@@ -47,6 +47,22 @@ struct BasisProducts {
   Vec3T<TR> m1cd, m1cdd;       ///< m1 ċ, m1 c̈
 };
 
+/// One body's basis state and basis products in double at given values of its elastic coordinates:
+/// AD passes that seed none of them reuse these instead of recomputing them per chunk.
+struct ConstantBasis {
+  ConstantBasis(int nc, int ne) : prod(nc) {
+    basis.c = VecX::Zero(nc);
+    basis.cd = VecX::Zero(nc);
+    basis.cdd = VecX::Zero(nc);
+    basis.D = MatX::Zero(nc, ne);
+    key = VecX::Zero(3 * ne);
+  }
+  bool valid = false;
+  VecX key;  ///< [q_e; q̇_e; q̈_e] the products were formed at
+  BasisState<double> basis;
+  BasisProducts<double, double> prod;
+};
+
 /// Buffers of the double mass-matrix assembly (mass_matrix.cpp), sized to the largest body.
 struct MassScratch {
   std::array<VecX, 9> y;  ///< S_jl c (largest nc)
@@ -65,8 +81,7 @@ struct Workspace {
   // products for bodies whose own elastic coordinates are not seeded (body_forces.hxx).
   BasisProducts<T, T> prod;
   BasisProducts<double, T> prod_dt;          ///< c double, ċ and c̈ of type T (C columns)
-  BasisProducts<double, double> prod_dd;     ///< all double
-  BasisState<double> basis_value;            ///< values of one body's basis state
+  std::vector<ConstantBasis> constant_basis; ///< per body, for AD passes
   MassScratch mass;                          ///< mass-matrix assembly (double)
   VecXT<T> g;                 ///< Σ_k ∫ P_kᵀ (a_P)_k dm
   /// Set by AD Jacobian passes, which read only derivatives: residual() then skips the inertia
