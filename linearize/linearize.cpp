@@ -45,12 +45,16 @@ LinearModel linearize(const Model& m, const OperatingPoint& op, LinearizeWorkspa
   if (ldlt.info() != Eigen::Success || !ldlt.isPositive() || ldlt.vectorD().minCoeff() <= 0)
     throw ComputeError("the mass matrix is not positive definite: a coordinate without inertia? (check masses, "
                        "inertias and which DOFs are frozen)");
+  // One solve with the right-hand sides [K C Q].
+  const int nu = m.ninput();
+  MatX rhs(n, 2 * n + nu);
+  rhs << lin.K, lin.C, lin.Q;
+  ldlt.solveInPlace(rhs);
   lin.A = MatX::Zero(2 * n, 2 * n);
   lin.A.block(0, n, n, n).setIdentity();
-  lin.A.block(n, 0, n, n) = -ldlt.solve(lin.K);
-  lin.A.block(n, n, n, n) = -ldlt.solve(lin.C);
-  lin.B = MatX::Zero(2 * n, m.ninput());
-  if (m.ninput() > 0) lin.B.block(n, 0, n, m.ninput()) = ldlt.solve(lin.Q);
+  lin.A.block(n, 0, n, 2 * n) = -rhs.leftCols(2 * n);
+  lin.B = MatX::Zero(2 * n, nu);
+  if (nu > 0) lin.B.block(n, 0, n, nu) = rhs.rightCols(nu);
   return lin;
 }
 
