@@ -53,8 +53,15 @@ JacobianWorkspace::JacobianWorkspace(const Model& m) : ws(m), kin(m) {
 }
 
 MatX residualJacobian(const Model& m, JacobianWorkspace& jw, const VecX& q, const VecX& qd, const VecX& qdd,
-                      const VecX& u, Wrt wrt, const std::vector<int>& cols) {
-  auto full = [&]() { residual(m, jw.ws, jw.q, jw.qd, jw.qdd, jw.u, jw.e); };
+                      const VecX& u, Wrt wrt, const std::vector<int>& cols, VecX* value) {
+  if (value) value->resize(0);
+  auto full = [&]() {
+    residual(m, jw.ws, jw.q, jw.qd, jw.qdd, jw.u, jw.e);
+    if (value && value->size() == 0 && jw.ws.complete) {
+      value->resize(m.ndof());
+      for (int k = 0; k < m.ndof(); ++k) (*value)(k) = jw.e(k).value();
+    }
+  };
   if (wrt != Wrt::U) return jacobian(m, jw, q, qd, qdd, u, wrt, cols, jw.e, full);
   // Inputs that move coordinates (pitch) need the whole residual; load inputs only the load terms.
   std::vector<int> kin_cols, load_cols, kin_at, load_at;

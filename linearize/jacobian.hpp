@@ -26,8 +26,10 @@ struct JacobianWorkspace {
 /// ∂e/∂(wrt)[:, cols] for all ndof rows, at (q, qd, qdd, u) (dims as in residual()).
 /// Columns of inputs that drive no coordinate (loads) differentiate only the load terms
 /// (addInputLoads), with the kinematics in double: e is affine in those inputs.
+/// \param[out] value  if given: e at the point (dim ndof) when one of the passes evaluated every term
+///                    of the residual (no body skipped), else resized to 0 (evaluate it in double).
 MatX residualJacobian(const Model& model, JacobianWorkspace& jw, const VecX& q, const VecX& qd, const VecX& qdd,
-                      const VecX& u, Wrt wrt, const std::vector<int>& cols);
+                      const VecX& u, Wrt wrt, const std::vector<int>& cols, VecX* value = nullptr);
 
 /// ∂y/∂(wrt)[:, cols] for all noutput rows (y = evaluateOutputs, src/dynamics/outputs.hpp).
 MatX outputJacobian(const Model& model, JacobianWorkspace& jw, const VecX& q, const VecX& qd, const VecX& qdd,

@@ -28,7 +28,8 @@ LinearModel linearize(const Model& m, const OperatingPoint& op, LinearizeWorkspa
     for (int r = 0; r < n; ++r) out.row(r) = sign * J.row(lin.dofs[r]);
     return out;
   };
-  lin.K = rows(residualJacobian(m, jw, op.q, op.qd, op.qdd, op.u, Wrt::Q, lin.dofs), -1.0);
+  VecX e;  // e at the point, from a K pass that evaluated every term, or in double below
+  lin.K = rows(residualJacobian(m, jw, op.q, op.qd, op.qdd, op.u, Wrt::Q, lin.dofs, &e), -1.0);
   lin.C = rows(residualJacobian(m, jw, op.q, op.qd, op.qdd, op.u, Wrt::Qd, lin.dofs), -1.0);
   lin.Q = rows(residualJacobian(m, jw, op.q, op.qd, op.qdd, op.u, Wrt::U, inputs), 1.0);
   MatX Mfull;
@@ -36,8 +37,10 @@ LinearModel linearize(const Model& m, const OperatingPoint& op, LinearizeWorkspa
   lin.M.resize(n, n);
   for (int r = 0; r < n; ++r)
     for (int c = 0; c < n; ++c) lin.M(r, c) = Mfull(lin.dofs[r], lin.dofs[c]);
-  VecX e(m.ndof());
-  residual(m, ws, op.q, op.qd, op.qdd, op.u, e);
+  if (e.size() != m.ndof()) {
+    e.resize(m.ndof());
+    residual(m, ws, op.q, op.qd, op.qdd, op.u, e);
+  }
   lin.residual.resize(n);
   for (int r = 0; r < n; ++r) lin.residual(r) = e(lin.dofs[r]);
 

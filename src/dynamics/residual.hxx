@@ -147,6 +147,7 @@ template <class T>
 void residual(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T>& qd, const VecXT<T>& qdd,
               const VecXT<T>& u, VecXT<T>& e) {
   forwardKinematics(m, ws, q, qd, qdd);
+  ws.complete = true;
   const int nb = static_cast<int>(m.bodies.size());
   for (int k = 0; k < m.ndof(); ++k) e(k) = T(0);
   const Vec3T<T> gravity = m.gravity.cast<T>();
@@ -154,7 +155,10 @@ void residual(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T
   for (int i = 0; i < nb; ++i) {
     const Body& b = m.bodies[i];
     if constexpr (!std::is_same_v<T, double>)
-      if (ws.derivatives_only && !detail::bodyVaries(m, i, q, qd, qdd)) continue;
+      if (ws.derivatives_only && !detail::bodyVaries(m, i, q, qd, qdd)) {
+        ws.complete = false;
+        continue;
+      }
     const FrameState<T>& f = ws.frames[i];
     const Mat3T<T> Rt = f.R.transpose();
     const Vec3T<T> ahat = Rt * (f.a - gravity);
@@ -178,6 +182,7 @@ void residual(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T
   if constexpr (!std::is_same_v<T, double>)
     if (ws.derivatives_only) loads = detail::anySeeded(q) || detail::anySeeded(u);
   if (loads) addInputLoads(m, ws, u, e);
+  else ws.complete = false;
   for (const DofSpring& s : m.springs) e(s.dof) -= s.k * (q(s.dof) - s.q0) + s.c * qd(s.dof);
   for (const BodyMatrices& bm : m.body_matrices) {
     const int d0 = m.bodies[bm.body].joint_dof;

@@ -88,6 +88,9 @@ struct Workspace {
   /// forces of bodies none of whose coordinates carries a seeded direction (their values in e are
   /// then incomplete). Never set when the values of e are used.
   bool derivatives_only = false;
+  /// Set by residual(): whether the last evaluation computed every term (nothing skipped under
+  /// derivatives_only), so that the values of e are complete.
+  bool complete = true;
   VecXT<T> h;                 ///< elastic generalized inertia forces of one body (largest ne)
 };
 
