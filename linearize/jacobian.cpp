@@ -16,6 +16,16 @@ void seed(const Model& m, JacobianWorkspace& jw, Wrt wrt, int col, int k, bool o
   for (const InputDofTarget& t : m.inputs[col].dofs) jw.q(t.dof).derivatives()(k) = on ? t.gain : 0.0;
 }
 
+// Double kinematics at (q, q̇, q̈) in jw.kin, recomputed only when the point changed.
+void pointKinematics(const Model& m, JacobianWorkspace& jw, const VecX& q, const VecX& qd, const VecX& qdd) {
+  auto same = [](const VecX& a, const VecX& b) { return a.size() == b.size() && (a.array() == b.array()).all(); };
+  if (same(jw.kin_q, q) && same(jw.kin_qd, qd) && same(jw.kin_qdd, qdd)) return;
+  forwardKinematics(m, jw.kin, q, qd, qdd);
+  jw.kin_q = q;
+  jw.kin_qd = qd;
+  jw.kin_qdd = qdd;
+}
+
 template <class Eval>
 MatX jacobian(const Model& m, JacobianWorkspace& jw, const VecX& q, const VecX& qd, const VecX& qdd, const VecX& u,
               Wrt wrt, const std::vector<int>& cols, VecXT<ADChunk>& f, Eval eval) {
@@ -26,6 +36,8 @@ MatX jacobian(const Model& m, JacobianWorkspace& jw, const VecX& q, const VecX& 
   load(jw.qd, qd);
   load(jw.qdd, qdd);
   load(jw.u, u);
+  pointKinematics(m, jw, q, qd, qdd);
+  jw.ws.constant_frames = &jw.kin;  // set here: a copied workspace must not point at the original
   const int n = static_cast<int>(f.size());
   const int ncol = static_cast<int>(cols.size());
   MatX J(n, ncol);
@@ -76,7 +88,7 @@ MatX residualJacobian(const Model& m, JacobianWorkspace& jw, const VecX& q, cons
     for (size_t c = 0; c < kin_at.size(); ++c) J.col(kin_at[c]) = Jk.col(c);
   }
   if (!load_cols.empty()) {
-    forwardKinematics(m, jw.kin, q, qd, qdd);
+    pointKinematics(m, jw, q, qd, qdd);
     const MatX Jl = jacobian(m, jw, q, qd, qdd, u, wrt, load_cols, jw.e, [&]() {
       for (int k = 0; k < m.ndof(); ++k) jw.e(k) = ADChunk(0.0);
       addInputLoads(m, jw.kin, jw.u, jw.e);

@@ -19,7 +19,8 @@ enum class Wrt { Q, Qd, Qdd, U };
 struct JacobianWorkspace {
   explicit JacobianWorkspace(const Model& m);
   Workspace<ADChunk> ws;
-  Workspace<double> kin;  ///< double kinematics for the columns of load inputs
+  Workspace<double> kin;  ///< double kinematics at the point (constant frames, load-input columns)
+  VecX kin_q, kin_qd, kin_qdd;  ///< the point kin was computed at (empty: not yet)
   VecXT<ADChunk> q, qd, qdd, u, e, y;
 };
 

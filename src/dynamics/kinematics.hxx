@@ -72,6 +72,20 @@ Mat3T<T> axisRotation(const Vec3& n, const T& phi) {
 
 namespace detail {
 
+inline bool seeded(double) { return true; }
+template <class T>
+bool seeded(const T& x) {
+  return !x.derivatives().isZero(0.0);
+}
+
+// Whether a coordinate the frame of body i depends on carries a seeded direction.
+template <class T>
+bool supportSeeded(const Model& m, int i, const VecXT<T>& q, const VecXT<T>& qd, const VecXT<T>& qdd) {
+  for (int s : m.support[i])
+    if (seeded(q(s)) || seeded(qd(s)) || seeded(qdd(s))) return true;
+  return false;
+}
+
 // c = [1; q; q_i q_j (i<=j)], its first two time derivatives and D = ∂c/∂q.
 template <class T>
 void evalBasis(const BodyInertia& in, const T* q, const T* qd, const T* qdd, BasisState<T>& b) {
@@ -146,6 +160,19 @@ void forwardKinematics(const Model& m, Workspace<T>& ws, const VecXT<T>& q, cons
     const Body& b = m.bodies[i];
     FrameState<T>& f = ws.frames[i];
     const std::vector<int>& sup = m.support[i];
+    if constexpr (!std::is_same_v<T, double>) {
+      // Under derivatives_only, a frame no seeded coordinate moves is the double frame.
+      if (ws.derivatives_only && ws.constant_frames && !detail::supportSeeded(m, i, q, qd, qdd)) {
+        const FrameState<double>& c = ws.constant_frames->frames[i];
+        f.R = c.R.template cast<T>(); f.r = c.r.template cast<T>(); f.v = c.v.template cast<T>();
+        f.a = c.a.template cast<T>(); f.w = c.w.template cast<T>(); f.dw = c.dw.template cast<T>();
+        for (int s : sup) {
+          f.Jv.col(s) = c.Jv.col(s).template cast<T>();
+          f.Jw.col(s) = c.Jw.col(s).template cast<T>();
+        }
+        continue;
+      }
+    }
     if (b.parent >= 0) {
       const FrameState<T>& p = ws.frames[b.parent];
       f.R = p.R; f.r = p.r; f.v = p.v; f.a = p.a; f.w = p.w; f.dw = p.dw;

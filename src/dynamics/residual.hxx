@@ -6,12 +6,6 @@
 namespace whirl {
 namespace detail {
 
-inline bool seeded(double) { return true; }
-template <class T>
-bool seeded(const T& x) {
-  return !x.derivatives().isZero(0.0);
-}
-
 // Whether the inertia forces of body i depend on a seeded direction: through its frame (the
 // coordinates of its support) or its own elastic coordinates.
 template <class T>

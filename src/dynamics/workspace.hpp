@@ -88,6 +88,10 @@ struct Workspace {
   /// forces of bodies none of whose coordinates carries a seeded direction (their values in e are
   /// then incomplete). Never set when the values of e are used.
   bool derivatives_only = false;
+  /// AD passes under derivatives_only: the frames of bodies whose support carries no seeded
+  /// direction are copied from here — the double kinematics at the same (q, q̇, q̈), which the caller
+  /// keeps current — instead of recomputed.
+  const Workspace<double>* constant_frames = nullptr;
   /// Set by residual(): whether the last evaluation computed every term (nothing skipped under
   /// derivatives_only), so that the values of e are complete.
   bool complete = true;
