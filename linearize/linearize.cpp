@@ -6,6 +6,24 @@
 #include "src/model/error.hpp"
 
 namespace whirl {
+namespace {
+
+// X ← M⁻¹ X with M = Pᵀ L D Lᵀ P from Eigen's LDLT: substitutions on whole rows of X (row-major,
+// each step an axpy over all right-hand sides), several times faster than Eigen's blocked triangular
+// solves at the sizes of a linear turbine model.
+void ldltSolveInPlace(const Eigen::LDLT<MatX>& ldlt, MatX& X) {
+  const int n = static_cast<int>(X.rows());
+  const MatX& LD = ldlt.matrixLDLT();  // strict lower part: L (unit diagonal); diagonal: D
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> Y = ldlt.transpositionsP() * X;
+  for (int i = 0; i < n; ++i)
+    for (int k = 0; k < i; ++k) Y.row(i) -= LD(i, k) * Y.row(k);
+  for (int i = 0; i < n; ++i) Y.row(i) /= LD(i, i);
+  for (int i = n - 1; i >= 0; --i)
+    for (int k = i + 1; k < n; ++k) Y.row(i) -= LD(k, i) * Y.row(k);
+  X = ldlt.transpositionsP().transpose() * Y;
+}
+
+}  // namespace
 
 LinearModel linearize(const Model& m, const OperatingPoint& op) {
   LinearizeWorkspace lw(m);
@@ -52,7 +70,7 @@ LinearModel linearize(const Model& m, const OperatingPoint& op, LinearizeWorkspa
   const int nu = m.ninput();
   MatX rhs(n, 2 * n + nu);
   rhs << lin.K, lin.C, lin.Q;
-  ldlt.solveInPlace(rhs);
+  ldltSolveInPlace(ldlt, rhs);
   lin.A = MatX::Zero(2 * n, 2 * n);
   lin.A.block(0, n, n, n).setIdentity();
   lin.A.block(n, 0, n, 2 * n) = -rhs.leftCols(2 * n);
