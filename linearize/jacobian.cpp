@@ -49,6 +49,7 @@ MatX jacobian(const Model& m, JacobianWorkspace& jw, const VecX& q, const VecX& 
       for (int k = 0; k < w; ++k) J(r, c0 + k) = f(r).derivatives()(k);
     for (int k = 0; k < w; ++k) seed(m, jw, wrt, cols[c0 + k], k, false);
   }
+  jw.ws.constant_frames = nullptr;  // valid during these passes only
   return J;
 }
 
