@@ -3,7 +3,10 @@
 // a 29-DOF floating turbine with every term of the residual. Run: build/bench/whirl_bench
 #include <benchmark/benchmark.h>
 
+#include <numbers>
+
 #include "linearize/linearize.hpp"
+#include "linearize/periodic.hpp"
 #include "src/dynamics/residual.hpp"
 #include "modal/campbell_sweep.hpp"
 #include "src/io/case_file.hpp"
@@ -54,6 +57,27 @@ WHIRL_CASE_BENCH(floating_3dof)
 WHIRL_CASE_BENCH(rotating_blade)
 WHIRL_CASE_BENCH(rich_29dof)
 WHIRL_CASE_BENCH(nrel5mw)
+
+// One linearization per azimuth of the 5MW turning at 12 rpm (36 azimuths, each its own equilibrium),
+// as in a Campbell sweep: every call sees a new point, so nothing cached per point is reused.
+// Reported: time per linearization (per_linearization).
+void nrel5mwAzimuths(benchmark::State& state) {
+  const Model m = load("nrel5mw");
+  OperatingPoint start = initialPoint(m);
+  start.qd(findAzimuthDof(m)) = 12.0 * 2 * std::numbers::pi / 60;
+  PeriodicOptions opt;
+  opt.azimuths = 36;
+  const std::vector<OperatingPoint> points = linearizePeriodic(m, start, opt).points;
+  LinearizeWorkspace lw(m);
+  for (auto _ : state)
+    for (const OperatingPoint& op : points) {
+      LinearModel l = linearize(m, op, lw);
+      benchmark::DoNotOptimize(l.A.data());
+    }
+  state.counters["per_linearization"] = benchmark::Counter(
+      static_cast<double>(points.size()), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(nrel5mwAzimuths)->Unit(benchmark::kMicrosecond);
 
 // The NREL 5MW Campbell diagram of the main command: 31 rotor speeds (0–15 rpm) × 36 azimuths, each
 // an equilibrium solve and a linearization, multiblade average and eigenanalysis (no output files).

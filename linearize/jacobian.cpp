@@ -1,5 +1,6 @@
 #include "linearize/jacobian.hpp"
 
+#include "src/dynamics/kinematics.hpp"
 #include "src/dynamics/outputs.hpp"
 #include "src/dynamics/residual.hpp"
 
@@ -15,6 +16,16 @@ void seed(const Model& m, JacobianWorkspace& jw, Wrt wrt, int col, int k, bool o
   for (const InputDofTarget& t : m.inputs[col].dofs) jw.q(t.dof).derivatives()(k) = on ? t.gain : 0.0;
 }
 
+// Double kinematics at (q, q̇, q̈) in jw.kin, recomputed only when the point changed.
+void pointKinematics(const Model& m, JacobianWorkspace& jw, const VecX& q, const VecX& qd, const VecX& qdd) {
+  auto same = [](const VecX& a, const VecX& b) { return a.size() == b.size() && (a.array() == b.array()).all(); };
+  if (same(jw.kin_q, q) && same(jw.kin_qd, qd) && same(jw.kin_qdd, qdd)) return;
+  forwardKinematics(m, jw.kin, q, qd, qdd);
+  jw.kin_q = q;
+  jw.kin_qd = qd;
+  jw.kin_qdd = qdd;
+}
+
 template <class Eval>
 MatX jacobian(const Model& m, JacobianWorkspace& jw, const VecX& q, const VecX& qd, const VecX& qdd, const VecX& u,
               Wrt wrt, const std::vector<int>& cols, VecXT<ADChunk>& f, Eval eval) {
@@ -25,6 +36,8 @@ MatX jacobian(const Model& m, JacobianWorkspace& jw, const VecX& q, const VecX& 
   load(jw.qd, qd);
   load(jw.qdd, qdd);
   load(jw.u, u);
+  pointKinematics(m, jw, q, qd, qdd);
+  jw.ws.constant_frames = &jw.kin;  // set here: a copied workspace must not point at the original
   const int n = static_cast<int>(f.size());
   const int ncol = static_cast<int>(cols.size());
   MatX J(n, ncol);
@@ -36,12 +49,13 @@ MatX jacobian(const Model& m, JacobianWorkspace& jw, const VecX& q, const VecX& 
       for (int k = 0; k < w; ++k) J(r, c0 + k) = f(r).derivatives()(k);
     for (int k = 0; k < w; ++k) seed(m, jw, wrt, cols[c0 + k], k, false);
   }
+  jw.ws.constant_frames = nullptr;  // valid during these passes only
   return J;
 }
 
 }  // namespace
 
-JacobianWorkspace::JacobianWorkspace(const Model& m) : ws(m) {
+JacobianWorkspace::JacobianWorkspace(const Model& m) : ws(m), kin(m) {
   ws.derivatives_only = true;
   q.resize(m.ndof());
   qd.resize(m.ndof());
@@ -52,9 +66,37 @@ JacobianWorkspace::JacobianWorkspace(const Model& m) : ws(m) {
 }
 
 MatX residualJacobian(const Model& m, JacobianWorkspace& jw, const VecX& q, const VecX& qd, const VecX& qdd,
-                      const VecX& u, Wrt wrt, const std::vector<int>& cols) {
-  return jacobian(m, jw, q, qd, qdd, u, wrt, cols, jw.e,
-                  [&]() { residual(m, jw.ws, jw.q, jw.qd, jw.qdd, jw.u, jw.e); });
+                      const VecX& u, Wrt wrt, const std::vector<int>& cols, VecX* value) {
+  if (value) value->resize(0);
+  auto full = [&]() {
+    residual(m, jw.ws, jw.q, jw.qd, jw.qdd, jw.u, jw.e);
+    if (value && value->size() == 0 && jw.ws.complete) {
+      value->resize(m.ndof());
+      for (int k = 0; k < m.ndof(); ++k) (*value)(k) = jw.e(k).value();
+    }
+  };
+  if (wrt != Wrt::U) return jacobian(m, jw, q, qd, qdd, u, wrt, cols, jw.e, full);
+  // Inputs that move coordinates (pitch) need the whole residual; load inputs only the load terms.
+  std::vector<int> kin_cols, load_cols, kin_at, load_at;
+  for (int c = 0; c < static_cast<int>(cols.size()); ++c) {
+    const bool moves = !m.inputs[cols[c]].dofs.empty();
+    (moves ? kin_cols : load_cols).push_back(cols[c]);
+    (moves ? kin_at : load_at).push_back(c);
+  }
+  MatX J(m.ndof(), cols.size());
+  if (!kin_cols.empty()) {
+    const MatX Jk = jacobian(m, jw, q, qd, qdd, u, wrt, kin_cols, jw.e, full);
+    for (size_t c = 0; c < kin_at.size(); ++c) J.col(kin_at[c]) = Jk.col(c);
+  }
+  if (!load_cols.empty()) {
+    pointKinematics(m, jw, q, qd, qdd);
+    const MatX Jl = jacobian(m, jw, q, qd, qdd, u, wrt, load_cols, jw.e, [&]() {
+      for (int k = 0; k < m.ndof(); ++k) jw.e(k) = ADChunk(0.0);
+      addInputLoads(m, jw.kin, jw.u, jw.e);
+    });
+    for (size_t c = 0; c < load_at.size(); ++c) J.col(load_at[c]) = Jl.col(c);
+  }
+  return J;
 }
 
 MatX outputJacobian(const Model& m, JacobianWorkspace& jw, const VecX& q, const VecX& qd, const VecX& qdd,

@@ -19,12 +19,18 @@ enum class Wrt { Q, Qd, Qdd, U };
 struct JacobianWorkspace {
   explicit JacobianWorkspace(const Model& m);
   Workspace<ADChunk> ws;
+  Workspace<double> kin;  ///< double kinematics at the point (constant frames, load-input columns)
+  VecX kin_q, kin_qd, kin_qdd;  ///< the point kin was computed at (empty: not yet)
   VecXT<ADChunk> q, qd, qdd, u, e, y;
 };
 
 /// ∂e/∂(wrt)[:, cols] for all ndof rows, at (q, qd, qdd, u) (dims as in residual()).
+/// Columns of inputs that drive no coordinate (loads) differentiate only the load terms
+/// (addInputLoads), with the kinematics in double: e is affine in those inputs.
+/// \param[out] value  if given: e at the point (dim ndof) when one of the passes evaluated every term
+///                    of the residual (no body skipped), else resized to 0 (evaluate it in double).
 MatX residualJacobian(const Model& model, JacobianWorkspace& jw, const VecX& q, const VecX& qd, const VecX& qdd,
-                      const VecX& u, Wrt wrt, const std::vector<int>& cols);
+                      const VecX& u, Wrt wrt, const std::vector<int>& cols, VecX* value = nullptr);
 
 /// ∂y/∂(wrt)[:, cols] for all noutput rows (y = evaluateOutputs, src/dynamics/outputs.hpp).
 MatX outputJacobian(const Model& model, JacobianWorkspace& jw, const VecX& q, const VecX& qd, const VecX& qdd,

@@ -1,12 +1,22 @@
 #pragma once
+#include <algorithm>
 #include <cmath>
 
 #include "src/dynamics/kinematics.hpp"
 
 namespace whirl {
 
+namespace detail {
+inline int maxBasisSize(const Model& m) {
+  int ncmax = 1;
+  for (const Body& b : m.bodies) ncmax = std::max(ncmax, b.inertia.nc());
+  return ncmax;
+}
+}  // namespace detail
+
 template <class T>
-Workspace<T>::Workspace(const Model& m) {
+Workspace<T>::Workspace(const Model& m)
+    : prod(detail::maxBasisSize(m)), prod_dt(detail::maxBasisSize(m)) {
   const int n = m.ndof();
   int ncmax = 1, nemax = 1;
   frames.resize(m.bodies.size());
@@ -22,9 +32,17 @@ Workspace<T>::Workspace(const Model& m) {
     ncmax = std::max(ncmax, in.nc());
     nemax = std::max(nemax, in.ne);
   }
-  ukl.assign(9, VecXT<T>::Zero(ncmax));
   g = VecXT<T>::Zero(ncmax);
-  tmp = VecXT<T>::Zero(ncmax);
+  size_t supmax = 0;
+  for (const auto& sup : m.support) supmax = std::max(supmax, sup.size());
+  const int nsup = static_cast<int>(supmax);
+  for (VecX& y : mass.y) y = VecX::Zero(ncmax);
+  mass.Mb = MatX::Zero(6 + nemax, 6 + nemax);
+  mass.Jb = MatX::Zero(6, nsup);
+  mass.MJ = MatX::Zero(6, nsup);
+  mass.zero = VecX::Zero(n);
+  if constexpr (!std::is_same_v<T, double>)
+    for (const Body& b : m.bodies) constant_basis.emplace_back(b.inertia.nc(), b.inertia.ne);
   h = VecXT<T>::Zero(nemax);
 }
 
@@ -53,6 +71,20 @@ Mat3T<T> axisRotation(const Vec3& n, const T& phi) {
 }
 
 namespace detail {
+
+inline bool seeded(double) { return true; }
+template <class T>
+bool seeded(const T& x) {
+  return !x.derivatives().isZero(0.0);
+}
+
+// Whether a coordinate the frame of body i depends on carries a seeded direction.
+template <class T>
+bool supportSeeded(const Model& m, int i, const VecXT<T>& q, const VecXT<T>& qd, const VecXT<T>& qdd) {
+  for (int s : m.support[i])
+    if (seeded(q(s)) || seeded(qd(s)) || seeded(qdd(s))) return true;
+  return false;
+}
 
 // c = [1; q; q_i q_j (i<=j)], its first two time derivatives and D = ∂c/∂q.
 template <class T>
@@ -128,6 +160,19 @@ void forwardKinematics(const Model& m, Workspace<T>& ws, const VecXT<T>& q, cons
     const Body& b = m.bodies[i];
     FrameState<T>& f = ws.frames[i];
     const std::vector<int>& sup = m.support[i];
+    if constexpr (!std::is_same_v<T, double>) {
+      // Under derivatives_only, a frame no seeded coordinate moves is the double frame.
+      if (ws.derivatives_only && ws.constant_frames && !detail::supportSeeded(m, i, q, qd, qdd)) {
+        const FrameState<double>& c = ws.constant_frames->frames[i];
+        f.R = c.R.template cast<T>(); f.r = c.r.template cast<T>(); f.v = c.v.template cast<T>();
+        f.a = c.a.template cast<T>(); f.w = c.w.template cast<T>(); f.dw = c.dw.template cast<T>();
+        for (int s : sup) {
+          f.Jv.col(s) = c.Jv.col(s).template cast<T>();
+          f.Jw.col(s) = c.Jw.col(s).template cast<T>();
+        }
+        continue;
+      }
+    }
     if (b.parent >= 0) {
       const FrameState<T>& p = ws.frames[b.parent];
       f.R = p.R; f.r = p.r; f.v = p.v; f.a = p.a; f.w = p.w; f.dw = p.dw;

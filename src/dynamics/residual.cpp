@@ -13,6 +13,11 @@ template void residual<double>(const Model&, Workspace<double>&, const VecX&, co
                                VecX&);
 template void residual<ADChunk>(const Model&, Workspace<ADChunk>&, const VecXT<ADChunk>&, const VecXT<ADChunk>&,
                                 const VecXT<ADChunk>&, const VecXT<ADChunk>&, VecXT<ADChunk>&);
+template void addInputLoads<double, double>(const Model&, const Workspace<double>&, const VecX&, VecX&);
+template void addInputLoads<ADChunk, ADChunk>(const Model&, const Workspace<ADChunk>&, const VecXT<ADChunk>&,
+                                              VecXT<ADChunk>&);
+template void addInputLoads<double, ADChunk>(const Model&, const Workspace<double>&, const VecXT<ADChunk>&,
+                                             VecXT<ADChunk>&);
 template Mat3T<double> axisRotation<double>(const Vec3&, const double&);
 
 }  // namespace whirl

@@ -15,4 +15,11 @@ template <class T>
 void residual(const Model& model, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T>& qd, const VecXT<T>& qdd,
               const VecXT<T>& u, VecXT<T>& e);
 
+/// Adds the terms of e that inputs scale (point loads and DOF loads, dim model.ndof()) at the
+/// kinematics already in ws (forwardKinematics): e += Σ_l u_l g_l(q). The kinematics scalar TK and
+/// the input scalar T may differ: ∂e/∂u of a load input (one that drives no coordinate) is an AD pass
+/// over this function alone with double kinematics.
+template <class TK, class T>
+void addInputLoads(const Model& model, const Workspace<TK>& ws, const VecXT<T>& u, VecXT<T>& e);
+
 }  // namespace whirl

@@ -1,93 +1,10 @@
 #pragma once
+#include "src/dynamics/body_forces.hxx"
 #include "src/dynamics/kinematics.hxx"
 #include "src/dynamics/residual.hpp"
 
 namespace whirl {
 namespace detail {
-
-// y[0..rows) = S[0..rows, 0..cols) x for a small dense double matrix and a vector of T (no
-// temporaries, no mixed-type GEMV); zero entries of S are skipped.
-template <class T>
-void matvec(const MatX& S, const VecXT<T>& x, int rows, int cols, VecXT<T>& y) {
-  for (int i = 0; i < rows; ++i) y(i) = T(0);
-  for (int j = 0; j < cols; ++j) {
-    const T& xj = x(j);
-    const double* col = S.data() + static_cast<Eigen::Index>(j) * S.rows();
-    for (int i = 0; i < rows; ++i)
-      if (col[i] != 0.0) y(i) += col[i] * xj;
-  }
-}
-
-template <class T>
-T dot(const double* a, int stride, const VecXT<T>& x, int n) {
-  T s(0);
-  for (int k = 0; k < n; ++k) s += a[k * stride] * x(k);
-  return s;
-}
-
-// Inertia and gravity forces of one body on its own virtual motions, body-frame components:
-//   F = −∫ a_P dm,  T = −∫ s × a_P dm (about the origin),  H = −Dᵀ ∫ Pᵀ a_P dm,
-// with a_P = â + A s + 2 W ṡ + s̈, â = a − g, A = α̃ + ω̃ω̃, W = ω̃, s = P c (seed 001 eq. 13–15, A1–A19).
-template <class T>
-void bodyInertiaForces(const BodyInertia& in, const BasisState<T>& b, const Vec3T<T>& ahat, const Vec3T<T>& alpha,
-                       const Vec3T<T>& omega, Workspace<T>& ws, Vec3T<T>& F, Vec3T<T>& Tq, T* H) {
-  const int nc = in.nc();
-  const Mat3T<T> W = skew(omega);
-  const Mat3T<T> A = skew(alpha) + W * W;
-  for (int k = 0; k < 3; ++k)
-    for (int l = 0; l < 3; ++l) {
-      VecXT<T>& u = ws.ukl[3 * k + l];
-      for (int p = 0; p < nc; ++p) u(p) = A(k, l) * b.c(p) + T(2) * W(k, l) * b.cd(p);
-      if (k == l)
-        for (int p = 0; p < nc; ++p) u(p) += b.cdd(p);
-    }
-  const std::array<int, 3>& len = in.len;
-  // Force.
-  for (int k = 0; k < 3; ++k) {
-    T s = in.mass * ahat(k);
-    for (int l = 0; l < 3; ++l) s += dot(in.m1.data() + l, 3, ws.ukl[3 * k + l], len[l]);
-    F(k) = -s;
-  }
-  // Moment: ∫ s_j (a_P)_k dm = (m1_j·c) â_k + Σ_l (S_lj c)·u_kl.
-  Mat3T<T> Q;  // Q(j,k) = ∫ s_j (a_P)_k dm
-  for (int j = 0; j < 3; ++j) {
-    const T m1c = dot(in.m1.data() + j, 3, b.c, len[j]);
-    for (int k = 0; k < 3; ++k) Q(j, k) = m1c * ahat(k);
-  }
-  for (int l = 0; l < 3; ++l)
-    for (int j = 0; j < 3; ++j) {
-      matvec(in.S[3 * l + j], b.c, len[l], len[j], ws.tmp);  // S_lj c
-      for (int k = 0; k < 3; ++k) {
-        const VecXT<T>& u = ws.ukl[3 * k + l];
-        T s(0);
-        for (int p = 0; p < len[l]; ++p) s += ws.tmp(p) * u(p);
-        Q(j, k) += s;
-      }
-    }
-  Tq(0) = -(Q(1, 2) - Q(2, 1));
-  Tq(1) = -(Q(2, 0) - Q(0, 2));
-  Tq(2) = -(Q(0, 1) - Q(1, 0));
-  if (in.ne == 0) return;
-  // Elastic: G = Σ_k [m1_kᵀ â_k + Σ_l S_kl u_kl],  H = −Dᵀ G.
-  VecXT<T>& G = ws.g;
-  for (int p = 0; p < nc; ++p) G(p) = in.m1(0, p) * ahat(0) + in.m1(1, p) * ahat(1) + in.m1(2, p) * ahat(2);
-  for (int k = 0; k < 3; ++k)
-    for (int l = 0; l < 3; ++l) {
-      matvec(in.S[3 * k + l], ws.ukl[3 * k + l], len[k], len[l], ws.tmp);
-      for (int p = 0; p < len[k]; ++p) G(p) += ws.tmp(p);
-    }
-  for (int j = 0; j < in.ne; ++j) {
-    T s(0);
-    for (int p = 0; p < nc; ++p) s += b.D(p, j) * G(p);
-    H[j] = -s;
-  }
-}
-
-inline bool seeded(double) { return true; }
-template <class T>
-bool seeded(const T& x) {
-  return !x.derivatives().isZero(0.0);
-}
 
 // Whether the inertia forces of body i depend on a seeded direction: through its frame (the
 // coordinates of its support) or its own elastic coordinates.
@@ -107,12 +24,124 @@ T inputScale(const VecXT<T>& u, int input) {
   return input >= 0 ? u(input) : T(1);
 }
 
+template <class T>
+bool anySeeded(const VecXT<T>& x) {
+  for (Eigen::Index k = 0; k < x.size(); ++k)
+    if (seeded(x(k))) return true;
+  return false;
+}
+
+// Whether any of the body's own elastic coordinates carries a seeded direction in x.
+template <class T>
+bool elasticSeeded(const Body& b, const VecXT<T>& x) {
+  for (int j = 0; j < b.inertia.ne; ++j)
+    if (seeded(x(b.elastic_dof + j))) return true;
+  return false;
+}
+
+// Inertia forces of body i (body_forces.hxx) from its frame's â, α, ω. In an AD pass, the basis
+// products are formed in double when the body's own coordinates are not seeded (c, ċ, c̈ and D
+// then carry zero derivatives; cached across passes at the same point), and the c-only products in
+// double when only q̇ or q̈ are seeded.
+template <class T>
+void bodyInertiaForces(const Model& m, int i, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T>& qd,
+                       const VecXT<T>& qdd, const Vec3T<T>& ahat, const Vec3T<T>& alpha, const Vec3T<T>& omega,
+                       Vec3T<T>& F, Vec3T<T>& Tq, T* H) {
+  const Body& b = m.bodies[i];
+  const BodyInertia& in = b.inertia;
+  const BasisState<T>& bs = ws.basis[i];
+  if constexpr (std::is_same_v<T, double>) {
+    basisProducts(in, bs.c, bs.cd, bs.cdd, ws.prod);
+    frameForces(in, ws.prod, bs.D, ahat, alpha, omega, ws.g, F, Tq, H);
+  } else {
+    if (elasticSeeded(b, q)) {
+      basisProducts(in, bs.c, bs.cd, bs.cdd, ws.prod);
+      frameForces(in, ws.prod, bs.D, ahat, alpha, omega, ws.g, F, Tq, H);
+      return;
+    }
+    // c and D carry no seeded direction: double products, kept while q_e, q̇_e, q̈_e keep their values.
+    ConstantBasis& cb = ws.constant_basis[i];
+    const int ne = in.ne, e0 = b.elastic_dof, nc = in.nc();
+    bool same = cb.valid;
+    for (int j = 0; j < ne && same; ++j)
+      same = cb.key(j) == q(e0 + j).value() && cb.key(ne + j) == qd(e0 + j).value() &&
+             cb.key(2 * ne + j) == qdd(e0 + j).value();
+    if (!same) {
+      for (int j = 0; j < ne; ++j) {
+        cb.key(j) = q(e0 + j).value();
+        cb.key(ne + j) = qd(e0 + j).value();
+        cb.key(2 * ne + j) = qdd(e0 + j).value();
+      }
+      for (int r = 0; r < nc; ++r) {
+        cb.basis.c(r) = bs.c(r).value();
+        cb.basis.cd(r) = bs.cd(r).value();
+        cb.basis.cdd(r) = bs.cdd(r).value();
+        for (int j = 0; j < ne; ++j) cb.basis.D(r, j) = bs.D(r, j).value();
+      }
+      basisProducts(in, cb.basis.c, cb.basis.cd, cb.basis.cdd, cb.prod);
+      cb.valid = true;
+    }
+    if (elasticSeeded(b, qd) || elasticSeeded(b, qdd)) {  // q̇ or q̈ columns: only the rate part in AD
+      BasisProducts<double, T>& p = ws.prod_dt;
+      for (int k = 0; k < 9; ++k) p.y[k].head(in.len[k / 3]) = cb.prod.y[k].head(in.len[k / 3]);
+      p.Pc = cb.prod.Pc;
+      p.m1c = cb.prod.m1c;
+      basisRateProducts(in, bs.cd, bs.cdd, p);
+      frameForces(in, p, cb.basis.D, ahat, alpha, omega, ws.g, F, Tq, H);
+      return;
+    }
+    frameForces(in, cb.prod, cb.basis.D, ahat, alpha, omega, ws.g, F, Tq, H);
+  }
+}
+
 }  // namespace detail
+
+template <class TK, class T>
+void addInputLoads(const Model& m, const Workspace<TK>& ws, const VecXT<T>& u, VecXT<T>& e) {
+  for (const PointLoad& l : m.point_loads) {
+    // The load scaled by its input (or 1): its generalized force is scale × that of the unit load,
+    // formed in TK; only the final products carry the scalar of u.
+    const Body& b = m.bodies[l.body];
+    const FrameState<TK>& f = ws.frames[l.body];
+    const BasisState<TK>& bs = ws.basis[l.body];
+    const T scale = detail::inputScale(u, l.input);
+    Vec3T<TK> s = Vec3T<TK>::Zero();
+    if (l.point >= 0) {
+      const Mat3X& P = b.points[l.point].P;
+      for (int k = 0; k < P.cols(); ++k) s += P.col(k) * bs.c(k);
+    }
+    Vec3T<TK> Fb, Mb;
+    if (l.body_frame) {
+      Fb = l.force.cast<TK>();
+      Mb = l.moment.cast<TK>();
+    } else {
+      Fb = f.R.transpose() * l.force.cast<TK>();
+      Mb = f.R.transpose() * l.moment.cast<TK>();
+    }
+    const Vec3T<TK> Fw = f.R * Fb;
+    const Vec3T<TK> Mw = f.R * Vec3T<TK>(Mb + s.cross(Fb));
+    for (int sd : m.support[l.body]) {
+      const TK g = f.Jv.col(sd).dot(Fw) + f.Jw.col(sd).dot(Mw);
+      e(sd) += scale * g;
+    }
+    if (l.point >= 0 && b.inertia.ne > 0) {
+      const BodyPoint& pt = b.points[l.point];
+      for (int j = 0; j < b.inertia.ne; ++j) {
+        Vec3T<TK> col = Vec3T<TK>::Zero();
+        for (int k = 0; k < pt.P.cols(); ++k) col += pt.P.col(k) * bs.D(k, j);
+        const TK g = col.dot(Fb) + pt.theta.col(j).cast<TK>().dot(Mb);
+        e(b.elastic_dof + j) += scale * g;
+      }
+    }
+  }
+  for (const DofLoad& l : m.dof_loads) e(l.dof) += l.value * detail::inputScale(u, l.input);
+}
 
 template <class T>
 void residual(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T>& qd, const VecXT<T>& qdd,
               const VecXT<T>& u, VecXT<T>& e) {
   forwardKinematics(m, ws, q, qd, qdd);
+  ws.complete = true;
   const int nb = static_cast<int>(m.bodies.size());
   for (int k = 0; k < m.ndof(); ++k) e(k) = T(0);
   const Vec3T<T> gravity = m.gravity.cast<T>();
@@ -120,14 +149,17 @@ void residual(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T
   for (int i = 0; i < nb; ++i) {
     const Body& b = m.bodies[i];
     if constexpr (!std::is_same_v<T, double>)
-      if (ws.derivatives_only && !detail::bodyVaries(m, i, q, qd, qdd)) continue;
+      if (ws.derivatives_only && !detail::bodyVaries(m, i, q, qd, qdd)) {
+        ws.complete = false;
+        continue;
+      }
     const FrameState<T>& f = ws.frames[i];
     const Mat3T<T> Rt = f.R.transpose();
     const Vec3T<T> ahat = Rt * (f.a - gravity);
     const Vec3T<T> alpha = Rt * f.dw;
     const Vec3T<T> omega = Rt * f.w;
     Vec3T<T> F, Tq;
-    detail::bodyInertiaForces(b.inertia, ws.basis[i], ahat, alpha, omega, ws, F, Tq, H);
+    detail::bodyInertiaForces(m, i, ws, q, qd, qdd, ahat, alpha, omega, F, Tq, H);
     const Vec3T<T> Fw = f.R * F, Tw = f.R * Tq;
     for (int s : m.support[i]) e(s) += f.Jv.col(s).dot(Fw) + f.Jw.col(s).dot(Tw);
     if (b.inertia.ne > 0) {
@@ -139,37 +171,12 @@ void residual(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T
       }
     }
   }
-  for (const PointLoad& l : m.point_loads) {
-    const Body& b = m.bodies[l.body];
-    const FrameState<T>& f = ws.frames[l.body];
-    const BasisState<T>& bs = ws.basis[l.body];
-    const T scale = detail::inputScale(u, l.input);
-    Vec3T<T> s = Vec3T<T>::Zero();
-    if (l.point >= 0) {
-      const Mat3X& P = b.points[l.point].P;
-      for (int k = 0; k < P.cols(); ++k) s += P.col(k) * bs.c(k);
-    }
-    Vec3T<T> Fb, Mb;
-    if (l.body_frame) {
-      Fb = l.force.cast<T>() * scale;
-      Mb = l.moment.cast<T>() * scale;
-    } else {
-      Fb = f.R.transpose() * (l.force.cast<T>() * scale);
-      Mb = f.R.transpose() * (l.moment.cast<T>() * scale);
-    }
-    const Vec3T<T> Fw = f.R * Fb;
-    const Vec3T<T> Mw = f.R * (Mb + s.cross(Fb));
-    for (int sd : m.support[l.body]) e(sd) += f.Jv.col(sd).dot(Fw) + f.Jw.col(sd).dot(Mw);
-    if (l.point >= 0 && b.inertia.ne > 0) {
-      const BodyPoint& pt = b.points[l.point];
-      for (int j = 0; j < b.inertia.ne; ++j) {
-        Vec3T<T> col = Vec3T<T>::Zero();
-        for (int k = 0; k < pt.P.cols(); ++k) col += pt.P.col(k) * bs.D(k, j);
-        e(b.elastic_dof + j) += col.dot(Fb) + pt.theta.col(j).cast<T>().dot(Mb);
-      }
-    }
-  }
-  for (const DofLoad& l : m.dof_loads) e(l.dof) += l.value * detail::inputScale(u, l.input);
+  // The load terms depend on q and u only: a pass seeding neither (q̇, q̈ columns) skips them.
+  bool loads = true;
+  if constexpr (!std::is_same_v<T, double>)
+    if (ws.derivatives_only) loads = detail::anySeeded(q) || detail::anySeeded(u);
+  if (loads) addInputLoads(m, ws, u, e);
+  else ws.complete = false;
   for (const DofSpring& s : m.springs) e(s.dof) -= s.k * (q(s.dof) - s.q0) + s.c * qd(s.dof);
   for (const BodyMatrices& bm : m.body_matrices) {
     const int d0 = m.bodies[bm.body].joint_dof;

@@ -2,6 +2,7 @@
 /// \file
 /// Per-evaluation buffers (Pinocchio's Data): sized once from a Model, reused by every call so the
 /// hot path does not allocate.
+#include <array>
 #include <vector>
 
 #include "src/model/model.hpp"
@@ -28,19 +29,72 @@ struct BasisState {
   MatXT<T> D;           ///< nc × ne
 };
 
+/// The shape integrals of one body contracted with its basis (body_forces.hxx, stage 1): TQ for the
+/// terms in c only, TR for those with ċ or c̈. Buffers sized to the largest nc.
+template <class TQ, class TR>
+struct BasisProducts {
+  explicit BasisProducts(int ncmax) {
+    for (auto& v : y) v = VecXT<TQ>::Zero(ncmax);
+    for (auto& v : z) v = VecXT<TR>::Zero(ncmax);
+    scdd = VecXT<TR>::Zero(ncmax);
+  }
+  std::array<VecXT<TQ>, 9> y;  ///< y_kl = S_kl c
+  std::array<VecXT<TR>, 9> z;  ///< z_kl = S_kl ċ (k ≠ l)
+  VecXT<TR> scdd;              ///< Σ_k S_kk c̈
+  Mat3T<TQ> Pc;                ///< Pc(l,j) = c·y_lj
+  Mat3T<TR> Pcd, Pcdd;         ///< ċ·y_lj, c̈·y_lj
+  Vec3T<TQ> m1c;               ///< m1 c
+  Vec3T<TR> m1cd, m1cdd;       ///< m1 ċ, m1 c̈
+};
+
+/// One body's basis state and basis products in double at given values of its elastic coordinates:
+/// AD passes that seed none of them reuse these instead of recomputing them per chunk.
+struct ConstantBasis {
+  ConstantBasis(int nc, int ne) : prod(nc) {
+    basis.c = VecX::Zero(nc);
+    basis.cd = VecX::Zero(nc);
+    basis.cdd = VecX::Zero(nc);
+    basis.D = MatX::Zero(nc, ne);
+    key = VecX::Zero(3 * ne);
+  }
+  bool valid = false;
+  VecX key;  ///< [q_e; q̇_e; q̈_e] the products were formed at
+  BasisState<double> basis;
+  BasisProducts<double, double> prod;
+};
+
+/// Buffers of the double mass-matrix assembly (mass_matrix.cpp), sized to the largest body.
+struct MassScratch {
+  std::array<VecX, 9> y;  ///< S_jl c (largest nc)
+  MatX Mb;                ///< body mass matrix (6 + ne)²
+  MatX Jb;                ///< [Rᵀ Jv; Rᵀ Jω] on the support, 6 × nsup
+  MatX MJ;                ///< M_b,66 Jb
+  VecX zero;              ///< ndof zeros (q̇ = q̈ = 0)
+};
+
 template <class T>
 struct Workspace {
   explicit Workspace(const Model& m);
   std::vector<FrameState<T>> frames;  ///< per body
   std::vector<BasisState<T>> basis;   ///< per body
-  // Scratch for the body inertia forces (sized to the largest nc).
-  std::vector<VecXT<T>> ukl;  ///< 9 vectors u_kl = A_kl c + 2 W_kl ċ + δ_kl c̈
+  // Scratch for the body inertia forces (sized to the largest nc). An AD pass uses the double
+  // products for bodies whose own elastic coordinates are not seeded (body_forces.hxx).
+  BasisProducts<T, T> prod;
+  BasisProducts<double, T> prod_dt;          ///< c double, ċ and c̈ of type T (C columns)
+  std::vector<ConstantBasis> constant_basis; ///< per body, for AD passes
+  MassScratch mass;                          ///< mass-matrix assembly (double)
   VecXT<T> g;                 ///< Σ_k ∫ P_kᵀ (a_P)_k dm
-  VecXT<T> tmp;
   /// Set by AD Jacobian passes, which read only derivatives: residual() then skips the inertia
   /// forces of bodies none of whose coordinates carries a seeded direction (their values in e are
   /// then incomplete). Never set when the values of e are used.
   bool derivatives_only = false;
+  /// AD passes under derivatives_only: the frames of bodies whose support carries no seeded
+  /// direction are copied from here — the double kinematics at the same (q, q̇, q̈), which the caller
+  /// keeps current — instead of recomputed.
+  const Workspace<double>* constant_frames = nullptr;
+  /// Set by residual(): whether the last evaluation computed every term (nothing skipped under
+  /// derivatives_only), so that the values of e are complete.
+  bool complete = true;
   VecXT<T> h;                 ///< elastic generalized inertia forces of one body (largest ne)
 };
 

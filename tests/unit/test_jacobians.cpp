@@ -1,7 +1,9 @@
 // Cross-checks of independent paths (GUIDE §3, principle 4):
 //  - the AD Jacobians ∂e/∂q, ∂e/∂q̇, ∂e/∂u equal central finite differences;
 //  - ∂e/∂q̈ (AD) equals the mass matrix assembled in double, to round-off;
-//  - the assembled mass matrix is symmetric.
+//  - the assembled mass matrix is symmetric;
+//  - the residual values a K pass returns equal the double residual;
+//  - a reused workspace (values cached per point) gives what a fresh one gives at a new point.
 #include <gtest/gtest.h>
 
 #include <random>
@@ -93,6 +95,46 @@ TEST_P(Jacobians, AdMassEqualsAssembledMassMatrix) {
     const double scale = M.cwiseAbs().maxCoeff();
     EXPECT_LT((M + dedqdd).cwiseAbs().maxCoeff(), 1e-12 * scale) << "seed " << seed;
     EXPECT_LT((M - M.transpose()).cwiseAbs().maxCoeff(), 1e-12 * scale);
+  }
+}
+
+TEST_P(Jacobians, ValuesOfAKPassEqualTheDoubleResidual) {
+  const Model m = test::richModel(GetParam());
+  JacobianWorkspace jw(m);
+  Workspace<double> ws(m);
+  for (unsigned seed : {6u, 7u}) {
+    const State s = randomState(m, seed);
+    VecX value;
+    residualJacobian(m, jw, s.q, s.qd, s.qdd, s.u, Wrt::Q, allColumns(m.ndof()), &value);
+    ASSERT_EQ(value.size(), m.ndof()) << "the first K chunk seeds the root coordinates: every body varies";
+    VecX e(m.ndof());
+    residual(m, ws, s.q, s.qd, s.qdd, s.u, e);
+    EXPECT_LT((value - e).cwiseAbs().maxCoeff(), 1e-12 * e.cwiseAbs().maxCoeff()) << "seed " << seed;
+    // A q̇ pass skips the load terms: its values are incomplete and not returned.
+    residualJacobian(m, jw, s.q, s.qd, s.qdd, s.u, Wrt::Qd, allColumns(m.ndof()), &value);
+    if (value.size() > 0) EXPECT_LT((value - e).cwiseAbs().maxCoeff(), 1e-12 * e.cwiseAbs().maxCoeff());
+  }
+}
+
+TEST_P(Jacobians, ReusedWorkspaceEqualsFreshAtANewPoint) {
+  const Model m = test::richModel(GetParam());
+  JacobianWorkspace reused(m);
+  const State a = randomState(m, 8);
+  State b = a;
+  // Move one elastic coordinate only (its body's cached basis products must be refreshed), then all.
+  int elastic = 0;
+  while (m.dofs[elastic].kind != DofKind::Elastic) ++elastic;
+  b.q(elastic) += 1e-3;
+  const State c = randomState(m, 9);
+  for (Wrt wrt : {Wrt::Q, Wrt::Qd, Wrt::U}) {
+    const int ncol = wrt == Wrt::U ? m.ninput() : m.ndof();
+    residualJacobian(m, reused, a.q, a.qd, a.qdd, a.u, wrt, allColumns(ncol));
+    for (const State* s : {static_cast<const State*>(&b), &c}) {
+      JacobianWorkspace fresh(m);
+      const MatX J1 = residualJacobian(m, reused, s->q, s->qd, s->qdd, s->u, wrt, allColumns(ncol));
+      const MatX J2 = residualJacobian(m, fresh, s->q, s->qd, s->qdd, s->u, wrt, allColumns(ncol));
+      EXPECT_LE((J1 - J2).cwiseAbs().maxCoeff(), 1e-14 * J2.cwiseAbs().maxCoeff()) << "wrt " << static_cast<int>(wrt);
+    }
   }
 }
 

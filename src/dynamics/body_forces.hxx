@@ -1,0 +1,168 @@
+#pragma once
+/// \file
+/// Inertia and gravity forces of one body on its own virtual motions, body-frame components
+/// (seed 001 eq. 13–15, A1–A19):
+///   F = −∫ a_P dm,  T = −∫ s × a_P dm (about the origin),  H = −Dᵀ ∫ Pᵀ a_P dm,
+/// with a_P = â + A s + 2 W ṡ + s̈, â = a − g, A = α̃ + ω̃ω̃, W = ω̃, s = P c.
+///
+/// Evaluated in two stages so an AD pass differentiates only what varies:
+///  1. basisProducts: the shape integrals contracted with c, ċ, c̈ (the O(nc²) part);
+///  2. frameForces: the products combined with â, α, ω (3 × 3 algebra and O(nc ne)).
+/// Stage 1 has two scalar types: TQ for what depends on c (position level) and TR for what involves
+/// ċ or c̈. An AD pass instantiates them as double when the body's own elastic coordinates carry no
+/// seeded direction (K columns of another body, every C column for TQ, the pitch columns of Q):
+/// the derivatives are the same, the work is that of a double evaluation.
+#include <array>
+
+#include "src/dynamics/kinematics.hpp"
+
+namespace whirl {
+namespace detail {
+
+// y[0..rows) = S[0..rows, 0..cols) x for a small dense double matrix and a vector of T (no
+// temporaries, no mixed-type GEMV); zero entries of S are skipped.
+template <class T>
+void matvec(const MatX& S, const VecXT<T>& x, int rows, int cols, VecXT<T>& y) {
+  for (int i = 0; i < rows; ++i) y(i) = T(0);
+  for (int j = 0; j < cols; ++j) {
+    const T& xj = x(j);
+    const double* col = S.data() + static_cast<Eigen::Index>(j) * S.rows();
+    for (int i = 0; i < rows; ++i)
+      if (col[i] != 0.0) y(i) += col[i] * xj;
+  }
+}
+
+// Σ_k a[k·stride] x(k), k < n.
+template <class T>
+T dot(const double* a, int stride, const VecXT<T>& x, int n) {
+  T s(0);
+  for (int k = 0; k < n; ++k) s += a[k * stride] * x(k);
+  return s;
+}
+
+}  // namespace detail
+
+/// Stage 1: with S_kl = ∫ P_kᵀ P_l dm and m1 = ∫ P dm (entries beyond len[k] are zero),
+///   y_kl = S_kl c, z_kl = S_kl ċ (k ≠ l; W has a zero diagonal), s = Σ_k S_kk c̈,
+///   Pc(l,j) = c·y_lj, Pcd(l,j) = ċ·y_lj, Pcdd(l,j) = c̈·y_lj, m1c = m1 c, m1cd = m1 ċ, m1cdd = m1 c̈.
+/// Position part: y, Pc, m1c.
+template <class TQ, class TR>
+void basisPositionProducts(const BodyInertia& in, const VecXT<TQ>& c, BasisProducts<TQ, TR>& p) {
+  const std::array<int, 3>& len = in.len;
+  for (int k = 0; k < 3; ++k)
+    for (int l = 0; l < 3; ++l) detail::matvec(in.S[3 * k + l], c, len[k], len[l], p.y[3 * k + l]);
+  for (int l = 0; l < 3; ++l)
+    for (int j = 0; j < 3; ++j) {
+      const VecXT<TQ>& y = p.y[3 * l + j];
+      TQ a(0);
+      for (int r = 0; r < len[l]; ++r) a += c(r) * y(r);
+      p.Pc(l, j) = a;
+    }
+  for (int k = 0; k < 3; ++k) p.m1c(k) = detail::dot(in.m1.data() + k, 3, c, len[k]);
+}
+
+/// Rate part: z, Pcd, Pcdd, m1cd, m1cdd, s (needs the position part's y).
+template <class TQ, class TR>
+void basisRateProducts(const BodyInertia& in, const VecXT<TR>& cd, const VecXT<TR>& cdd, BasisProducts<TQ, TR>& p) {
+  const std::array<int, 3>& len = in.len;
+  if (in.ne > 0)
+    for (int k = 0; k < 3; ++k)
+      for (int l = 0; l < 3; ++l)
+        if (k != l) detail::matvec(in.S[3 * k + l], cd, len[k], len[l], p.z[3 * k + l]);
+  for (int l = 0; l < 3; ++l)
+    for (int j = 0; j < 3; ++j) {
+      const VecXT<TQ>& y = p.y[3 * l + j];
+      TR b(0), d(0);
+      for (int r = 0; r < len[l]; ++r) {
+        b += cd(r) * y(r);
+        d += cdd(r) * y(r);
+      }
+      p.Pcd(l, j) = b;
+      p.Pcdd(l, j) = d;
+    }
+  for (int k = 0; k < 3; ++k) {
+    p.m1cd(k) = detail::dot(in.m1.data() + k, 3, cd, len[k]);
+    p.m1cdd(k) = detail::dot(in.m1.data() + k, 3, cdd, len[k]);
+  }
+  if (in.ne == 0) return;
+  const int nc = in.nc();
+  if (in.Strace.rows() == nc) {
+    detail::matvec(in.Strace, cdd, nc, nc, p.scdd);
+  } else {  // a body that was never finalized
+    for (int r = 0; r < nc; ++r) p.scdd(r) = TR(0);
+    for (int k = 0; k < 3; ++k) {
+      detail::matvec(in.S[4 * k], cdd, len[k], len[k], p.z[4 * k]);  // z_kk as scratch
+      for (int r = 0; r < len[k]; ++r) p.scdd(r) += p.z[4 * k](r);
+    }
+  }
+}
+
+/// Both parts.
+template <class TQ, class TR>
+void basisProducts(const BodyInertia& in, const VecXT<TQ>& c, const VecXT<TR>& cd, const VecXT<TR>& cdd,
+                   BasisProducts<TQ, TR>& p) {
+  basisPositionProducts(in, c, p);
+  basisRateProducts(in, cd, cdd, p);
+}
+
+/// Stage 2: F = −(m â + A m1c + 2 W m1ċ + m1c̈), T_i = −ε_ijk Q(j,k) with
+/// Qᵀ = A Pc + 2 W Pcd + Pcdd + â m1cᵀ, and H = −Dᵀ G, G = m1ᵀ â + Σ_kl (A_kl y_kl + 2 W_kl z_kl) + s.
+/// \param[in]  D  ∂c/∂q_e (nc × ne), scalar TQ
+/// \param      G  scratch (dim ≥ nc)
+/// \param[out] H  ne elastic forces
+template <class T, class TQ, class TR>
+void frameForces(const BodyInertia& in, const BasisProducts<TQ, TR>& p, const MatXT<TQ>& D, const Vec3T<T>& ahat,
+                 const Vec3T<T>& alpha, const Vec3T<T>& omega, VecXT<T>& G, Vec3T<T>& F, Vec3T<T>& Tq, T* H) {
+  const Mat3T<T> W = skew(omega);
+  const Mat3T<T> A = skew(alpha) + W * W;
+  for (int k = 0; k < 3; ++k) {
+    T s = in.mass * ahat(k);
+    s += p.m1cdd(k);
+    for (int l = 0; l < 3; ++l) {
+      s += A(k, l) * p.m1c(l);
+      s += 2.0 * W(k, l) * p.m1cd(l);
+    }
+    F(k) = -s;
+  }
+  Mat3T<T> Qt;  // Qt(k, j) = ∫ s_j (a_P)_k dm
+  for (int k = 0; k < 3; ++k)
+    for (int j = 0; j < 3; ++j) {
+      T s = ahat(k) * p.m1c(j);
+      s += p.Pcdd(k, j);
+      for (int l = 0; l < 3; ++l) {
+        s += A(k, l) * p.Pc(l, j);
+        s += 2.0 * W(k, l) * p.Pcd(l, j);
+      }
+      Qt(k, j) = s;
+    }
+  Tq(0) = -(Qt(2, 1) - Qt(1, 2));
+  Tq(1) = -(Qt(0, 2) - Qt(2, 0));
+  Tq(2) = -(Qt(1, 0) - Qt(0, 1));
+  if (in.ne == 0) return;
+  const int nc = in.nc();
+  const std::array<int, 3>& len = in.len;
+  for (int r = 0; r < nc; ++r) {
+    T s = in.m1(0, r) * ahat(0);
+    s += in.m1(1, r) * ahat(1);
+    s += in.m1(2, r) * ahat(2);
+    s += p.scdd(r);
+    G(r) = s;
+  }
+  for (int k = 0; k < 3; ++k)
+    for (int l = 0; l < 3; ++l) {
+      const VecXT<TQ>& y = p.y[3 * k + l];
+      const T& a = A(k, l);
+      for (int r = 0; r < len[k]; ++r) G(r) += a * y(r);
+      if (k == l) continue;
+      const T w2 = 2.0 * W(k, l);
+      const VecXT<TR>& z = p.z[3 * k + l];
+      for (int r = 0; r < len[k]; ++r) G(r) += w2 * z(r);
+    }
+  for (int j = 0; j < in.ne; ++j) {
+    T s(0);
+    for (int r = 0; r < nc; ++r) s += D(r, j) * G(r);
+    H[j] = -s;
+  }
+}
+
+}  // namespace whirl
