@@ -37,18 +37,7 @@ void run(const CampbellOptions& opt) {
   SweepOptions sweep;
   sweep.azimuths = opt.azimuths;
   const auto start = std::chrono::steady_clock::now();
-  bool printed = false;
-  sweep.progress = [&](int done, int total) {
-    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (s < 1.0 && !printed) return;  // short sweeps stay quiet
-    if (parallel::size() > 1)
-      std::fprintf(stderr, "\rcampbell: %d/%d operating points on rank 0 of %d (%.1f s)", done, total,
-                   parallel::size(), s);
-    else
-      std::fprintf(stderr, "\rcampbell: %d/%d operating points (%.1f s)", done, total, s);
-    printed = true;
-    if (done == total) std::fprintf(stderr, "\n");
-  };
+  sweep.progress = sweepProgress("campbell");
   CampbellDiagram d;
   // Title: the model's name up to its first sentence (ElastoDyn headers run long), else the file.
   std::string name = m.name.substr(0, m.name.find(". "));

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "linearize/export_point.hpp"
+#include "linearize/export_serialize.hpp"
 #include "linearize/periodic.hpp"
 #include "linearize/state_space.hpp"
 #include "modal/campbell_sweep.hpp"
@@ -15,6 +16,8 @@
 #include "src/io/staged_files.hpp"
 #include "src/io/state_space_files.hpp"
 #include "src/model/error.hpp"
+#include "src/parallel/parallel_map.hpp"
+#include "src/parallel/session.hpp"
 
 namespace whirl::cli {
 namespace {
@@ -51,6 +54,22 @@ void checkNames(const Model& m, const std::vector<std::string>& inputs, const st
     if (!m.findOutput(n)) throw InputError("--outputs: unknown output '" + n + "' (outputs: " + list(m.outputs) + ")");
 }
 
+// f(), its errors naming the schedule row (whichever rank runs it, the user sees which point failed).
+template <class F>
+ExportPoint onSchedulePoint(const std::string& schedule, int k, const SweepPoint& sp, F&& f) {
+  if (schedule.empty()) return f();
+  char rpm[32];
+  std::snprintf(rpm, sizeof rpm, "%g", sp.rpm);
+  const std::string at = schedule + ": operating point " + std::to_string(k + 1) + " (" + rpm + " rpm): ";
+  try {
+    return f();
+  } catch (const InputError& e) {
+    throw InputError(at + e.what());
+  } catch (const ComputeError& e) {
+    throw ComputeError(at + e.what());
+  }
+}
+
 void run(const CliOptions& opt) {
   if (opt.model.rpm && !opt.schedule.empty()) throw InputError("export: give --rpm or --schedule, not both");
   const std::vector<std::string> in = splitList(opt.inputs), out = splitList(opt.outputs);
@@ -76,26 +95,32 @@ void run(const CliOptions& opt) {
   eo.inputs = in;
   eo.outputs = out;
   eo.drop_azimuth = opt.drop_azimuth;
-  std::optional<OperatingPoint> warm;
-  for (const SweepPoint& sp : points) {
-    Model m = base;
-    if (!opt.schedule.empty()) {
-      setRotorSpeed(m, sp.rpm);
-      if (sp.pitch_deg) setCollectivePitch(m, *sp.pitch_deg);
-    }
-    OperatingPoint start = initialPoint(m);
-    if (warm)  // the previous point's equilibrium: a good guess for the next
-      for (int i = 0; i < m.ndof(); ++i)
-        if (!m.dofs[i].rotating && !m.dofs[i].frozen) start.q(i) = warm->q(i);
-    ExportPoint p = exportOperatingPoint(m, start, eo);
-    p.rpm = sp.rpm;
-    p.wind_speed = sp.wind_speed;
-    p.pitch_deg = sp.pitch_deg;
-    p.model.wind_speed = sp.wind_speed;
-    for (auto& s : p.azimuths) s.wind_speed = sp.wind_speed;
-    warm = p.equilibrium;
-    e.points.push_back(std::move(p));
-  }
+  // One task per operating point, spread over the ranks under mpirun. Each point starts from the
+  // model's own initial point, never from its neighbour's equilibrium: the result then depends on
+  // the point alone, so K ranks write the same bytes as one process.
+  if (parallel::launchedByMpi()) parallel::requirePetsc("mpirun");  // start-up before the progress clock
+  parallel::MapOptions map;
+  map.progress = sweepProgress("export");
+  e.points = parallel::parallelMap<ExportPoint>(
+      static_cast<int>(points.size()),
+      [&](int k) {
+        const SweepPoint& sp = points[k];
+        Model m = base;
+        if (!opt.schedule.empty()) {
+          setRotorSpeed(m, sp.rpm);
+          if (sp.pitch_deg) setCollectivePitch(m, *sp.pitch_deg);
+        }
+        ExportPoint p =
+            onSchedulePoint(opt.schedule, k, sp, [&] { return exportOperatingPoint(m, initialPoint(m), eo); });
+        p.rpm = sp.rpm;
+        p.wind_speed = sp.wind_speed;
+        p.pitch_deg = sp.pitch_deg;
+        p.model.wind_speed = sp.wind_speed;
+        for (auto& s : p.azimuths) s.wind_speed = sp.wind_speed;
+        return p;
+      },
+      encodeExportPoint, decodeExportPoint, map);
+  if (parallel::rank() != 0) return;  // under mpirun: rank 0 writes
 
   StagedFiles files;
   std::string title = e.model_name.substr(0, e.model_name.find(". "));  // ElastoDyn headers run long
@@ -122,9 +147,11 @@ void run(const CliOptions& opt) {
   const StateSpaceModel& m = e.points.front().model;
   const std::string mbc =
       m.multiblade ? " (multiblade average over " + std::to_string(e.points.front().azimuths.size()) + " azimuths)" : "";
-  std::printf("wrote %zu file%s in %s: %zu operating point%s, %zu states, %zu inputs, %zu outputs%s\n",
+  const std::string ranks = parallel::size() > 1 ? ", on " + std::to_string(parallel::size()) + " MPI ranks" : "";
+  std::printf("wrote %zu file%s in %s: %zu operating point%s, %zu states, %zu inputs, %zu outputs%s%s\n",
               files.paths().size(), files.paths().size() == 1 ? "" : "s", dir.c_str(), e.points.size(),
-              e.points.size() == 1 ? "" : "s", m.x.size(), m.u.size(), m.y.size(), mbc.c_str());
+              e.points.size() == 1 ? "" : "s", m.x.size(), m.u.size(), m.y.size(), mbc.c_str(),
+              ranks.c_str());
 }
 
 }  // namespace

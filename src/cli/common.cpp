@@ -1,12 +1,16 @@
 #include "src/cli/common.hpp"
 
 #include <CLI/CLI.hpp>
+#include <chrono>
+#include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <numbers>
 
 #include "src/io/case_file.hpp"
 #include "src/model/elastodyn_model.hpp"
 #include "src/model/error.hpp"
+#include "src/parallel/session.hpp"
 
 namespace whirl::cli {
 
@@ -44,6 +48,22 @@ Model loadModel(const ModelOptions& opt) {
   }
   if (opt.rpm) setRotorSpeed(m, *opt.rpm);
   return m;
+}
+
+std::function<void(int, int)> sweepProgress(const std::string& command) {
+  const auto start = std::chrono::steady_clock::now();
+  auto printed = std::make_shared<bool>(false);
+  return [=](int done, int total) {
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (s < 1.0 && !*printed) return;
+    if (parallel::size() > 1)
+      std::fprintf(stderr, "\r%s: %d/%d operating points on rank 0 of %d (%.1f s)", command.c_str(), done, total,
+                   parallel::size(), s);
+    else
+      std::fprintf(stderr, "\r%s: %d/%d operating points (%.1f s)", command.c_str(), done, total, s);
+    *printed = true;
+    if (done == total) std::fprintf(stderr, "\n");
+  };
 }
 
 std::string defaultOutputFolder(const std::string& case_path) {

@@ -2,6 +2,7 @@
 /// \file
 /// What the subcommands share: loading a model from a case path with overrides and a rotor speed,
 /// and output folders.
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -30,6 +31,11 @@ Model loadModel(const ModelOptions& opt);
 
 /// Sets the rate of every rotating coordinate to rpm; InputError when the model has none.
 void setRotorSpeed(Model& model, double rpm);
+
+/// Progress of a sweep for MapOptions::progress, on stderr: "<command>: 3/10 operating points (1.2 s)"
+/// (under mpirun: rank 0's share, "on rank 0 of K"). Sweeps shorter than a second stay quiet; the
+/// clock starts when this is called.
+std::function<void(int, int)> sweepProgress(const std::string& command);
 
 /// reports/<case file stem>, the default output folder of a case.
 std::string defaultOutputFolder(const std::string& case_path);
