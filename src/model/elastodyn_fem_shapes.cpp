@@ -55,7 +55,8 @@ std::vector<ShapePtr> ordered(const std::vector<fem::BeamMode>& modes, const std
 
 }  // namespace
 
-fem::ModeShapeInput elastoDynTowerModeInput(const io::ElastoDynInput& ed, const BeamProperties& props, double gravity) {
+fem::ModeShapeInput elastoDynTowerModeInput(const io::ElastoDynInput& ed, const BeamProperties& props, double gravity,
+                                            bool top_inertia) {
   const io::ElastoDynConfiguration& c = ed.config;
   const io::ElastoDynMassInertia& mi = ed.mass;
   // Ground axes at the tower top (X downwind, Y left, Z up), zero yaw; ElastoDyn's positions.
@@ -111,7 +112,7 @@ fem::ModeShapeInput elastoDynTowerModeInput(const io::ElastoDynInput& ed, const 
   in.props = props;
   in.tip.mass = top.m;
   in.tip.cm = G.transpose() * top.cm();
-  in.tip.inertia = G.transpose() * top.aboutCm() * G;
+  if (top_inertia) in.tip.inertia = G.transpose() * top.aboutCm() * G;
   in.axial_gravity = gravity;
   return in;
 }

@@ -5,8 +5,8 @@
 /// boundary conditions BModes users give, instead of the polynomials of the input files.
 ///
 /// - Tower (body frame of elastodyn_tower.cpp: x up, y side-to-side = −Y, z fore-aft = X): clamped at
-///   the base, the nacelle, hub and rotor as one rigid tip body at the tower top (mass, centre of
-///   mass, inertia about it at zero yaw, azimuth-averaged rotor inertia), gravity as an axial load.
+///   the base, the nacelle, hub and rotor as one tip body at the tower top (mass, centre of mass at
+///   zero yaw; optionally the rigid top's inertia, azimuth-averaged for the rotor), gravity as an axial load.
 /// - Blade (body frame of elastodyn_blade_shapes.hpp: x span, y = j1 out of plane, z = j2 in plane):
 ///   clamped at the root, structural twist, tip-brake mass, centrifugal stiffening at the rotor speed
 ///   (hub radius HubRad, rotation axis along y: out of plane at zero pitch and cone) with the in-plane
@@ -19,9 +19,16 @@
 
 namespace whirl {
 
-/// The tower's FE input: `props` as built for the tower body (SI, adjusted), rigid top from `ed`.
+/// The tower's FE input: `props` as built for the tower body (SI, adjusted), the tower-top mass and its
+/// centre of mass from `ed` (yaw bearing, nacelle, hub, blades).
+/// The top's rotary inertia is left out unless `top_inertia`: in the turbine's coupled modes the rotor
+/// is not rigid (blades bend, the drivetrain twists), and a rigid rotor's 2·10⁷–4·10⁷ kg m² at the tower
+/// top pulls the second tower modes to 1.95–2.24 Hz instead of the ~2.9 Hz of the coupled turbine.
+/// Without it the FE modes match the NREL 5MW file polynomials (BModes) to MAC 0.999 for all four
+/// tower modes and give tower-alone second modes of 2.92 Hz (tests/validation/test_nrel5mw_fem_shapes.cpp).
 /// \param[in] gravity [m/s²] (axial compression from the tower's own weight and the top mass)
-fem::ModeShapeInput elastoDynTowerModeInput(const io::ElastoDynInput& ed, const BeamProperties& props, double gravity);
+fem::ModeShapeInput elastoDynTowerModeInput(const io::ElastoDynInput& ed, const BeamProperties& props, double gravity,
+                                            bool top_inertia = false);
 
 /// A blade's FE input at rotor speed `rotor_speed` [rad/s].
 fem::ModeShapeInput elastoDynBladeModeInput(const ElastoDynBladeBeam& blade, double hub_radius, double rotor_speed);

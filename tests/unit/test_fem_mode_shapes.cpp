@@ -42,21 +42,23 @@ TEST(FemModeShapes, UniformCantileverMatchesBetaL) {
     const double EI = b.direction == 'y' ? 1e7 : 4e7;
     EXPECT_NEAR(b.freq_hz, bendingHz(beta[b.index - 1], EI), 1e-4 * bendingHz(beta[b.index - 1], EI))
         << b.direction << b.index;
-    // Unit tip displacement in its direction, none in the other (no twist: planes uncoupled).
+    // Unit tip displacement in its direction, none in the other (no twist: planes uncoupled) but the
+    // dense eigensolver's round-off, ε κ(K) with κ ~ 1e9 for 80 elements.
     const Eigen::Index n = b.table.x.size() - 1;
     EXPECT_DOUBLE_EQ(b.direction == 'y' ? b.table.uy(n) : b.table.uz(n), 1.0);
-    EXPECT_LT((b.direction == 'y' ? b.table.uz : b.table.uy).cwiseAbs().maxCoeff(), 1e-9);
+    EXPECT_LT((b.direction == 'y' ? b.table.uz : b.table.uy).cwiseAbs().maxCoeff(), 1e-6);
   }
 }
 
-// The FE shapes and slopes against the exact clamped-free shapes, and the tabulated curvatures
-// (nodal means of the cubic elements) against the exact curvature.
+// The FE shapes and slopes against the exact clamped-free shapes at the 81 nodes (between nodes the
+// table interpolates linearly, an h²/8 u'' error of its own), and the tabulated curvatures (nodal
+// means of the cubic elements) against the exact curvature.
 TEST(FemModeShapes, UniformCantileverShapesMatchExactModes) {
   const std::vector<BeamMode> modes = beamModes(uniform(), 3, 0);
   for (const BeamMode& b : modes) {
     const ShapePtr exact = clampedTopMassShape("exact", 10, b.index, 0.0, 1, 0);
-    EXPECT_GT(shapeMac(*b.shape, *exact, 10), 1 - 1e-8) << b.index;
-    EXPECT_LT(shapeMaxDeviation(*b.shape, *exact, 10), 1e-5) << b.index;
+    EXPECT_GT(shapeMac(*b.shape, *exact, 10, 81), 1 - 1e-10) << b.index;
+    EXPECT_LT(shapeMaxDeviation(*b.shape, *exact, 10, 81), 1e-6) << b.index;
     const double k2 = std::abs(exact->eval(0).uy2);
     for (double x : {0.0, 2.5, 5.0, 7.5}) {
       EXPECT_NEAR(b.shape->eval(x).uy1, exact->eval(x).uy1, 1e-6) << b.index << " at " << x;
@@ -76,7 +78,7 @@ TEST(FemModeShapes, TipMassMatchesSeedEquation32) {
       const double f = bendingHz(clampedTopMassBeta(b.index, ratio), 1e7);
       EXPECT_NEAR(b.freq_hz, f, 1e-5 * f) << "Mt/M " << ratio << " mode " << b.index;
       const ShapePtr exact = clampedTopMassShape("exact", 10, b.index, ratio, 1, 0);
-      EXPECT_GT(shapeMac(*b.shape, *exact, 10), 1 - 1e-8);
+      EXPECT_GT(shapeMac(*b.shape, *exact, 10, 81), 1 - 1e-10);  // at the 81 nodes
     }
   }
 }
@@ -98,7 +100,7 @@ TEST(FemModeShapes, TipInertiaAndOffsetLowerTheFrequencies) {
 // Rotating uniform beam, hub radius 0 (Hodges & Rutkowski, AIAA J. 19(11) 1981, Table 1, also
 // Wright et al. 1982): first flap ω̄ = ω √(mL⁴/EI) = 3.6816, 5.5850, 11.2018 at Ω̄ = 1, 4, 10
 // (5 significant digits: 1e-4). In plane (softening −Ω² m): ω_edge² = ω_flap² − Ω² exactly when
-// EIy = EIz, the same eigenproblem shifted.
+// EIy = EIz, the same eigenproblem shifted; checked to the dense eigensolver's ε κ(K) ~ 1e-7.
 TEST(FemModeShapes, RotatingUniformBeamMatchesHodgesRutkowski) {
   ModeShapeInput in = uniform();
   in.props.EIz = in.props.EIy;
@@ -112,7 +114,7 @@ TEST(FemModeShapes, RotatingUniformBeamMatchesHodgesRutkowski) {
     const BeamMode& edge = modes[0].direction == 'y' ? modes[1] : modes[0];
     const double wf = 2 * pi * flap.freq_hz, we = 2 * pi * edge.freq_hz;
     EXPECT_NEAR(wf / scale, reference[k], 1e-4 * reference[k]) << "Omega bar " << speeds[k];
-    EXPECT_NEAR(we * we, wf * wf - in.rotor_speed * in.rotor_speed, 1e-8 * wf * wf);
+    EXPECT_NEAR(we * we, wf * wf - in.rotor_speed * in.rotor_speed, 1e-6 * wf * wf);
   }
 }
 
