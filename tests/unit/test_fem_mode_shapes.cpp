@@ -118,6 +118,33 @@ TEST(FemModeShapes, RotatingUniformBeamMatchesHodgesRutkowski) {
   }
 }
 
+// Axial gravity buckles the cantilever where the Rayleigh quotient of mode 1 reaches zero:
+// - under its own weight at q L³/EI = 7.837 (Greenhill 1881; Timoshenko & Gere, Theory of Elastic
+//   Stability, §2.10: 4 digits, so ±1e-3 either side is outside the printed precision);
+// - under a tip load P = M_t g at P_cr = π² EI / (4 L²) (Euler), with a light beam (0.1 kg against a
+//   1000 kg tip: its own weight moves the critical load by ~3e-5, lighter still would leave M too
+//   ill-conditioned for the dense eigensolver near ω² = 0), checked ±1e-3 either side.
+TEST(FemModeShapes, AxialGravityBucklesAtGreenhillAndEulerLoads) {
+  ModeShapeInput in = uniform();
+  const double qcr = 7.837 * 1e7 / std::pow(10.0, 3);  // [N/m]
+  for (double s : {0.999, 1.001}) {
+    in.axial_gravity = s * qcr / 100;  // q = m g, m = 100 kg/m
+    const double f = beamModes(in, 1, 0).at(0).freq_hz;
+    if (s < 1) EXPECT_GT(f, 0.0);
+    else EXPECT_EQ(f, 0.0);  // negative ω²: reported as 0 Hz
+  }
+  ModeShapeInput tip = uniform();
+  tip.props.m = VecX::Constant(2, 1e-2);
+  tip.tip.mass = 1000;
+  const double Pcr = pi * pi * 1e7 / (4 * 100);
+  for (double s : {0.999, 1.001}) {
+    tip.axial_gravity = s * Pcr / 1000;
+    const double f = beamModes(tip, 1, 0).at(0).freq_hz;
+    if (s < 1) EXPECT_GT(f, 0.0);
+    else EXPECT_EQ(f, 0.0);
+  }
+}
+
 // Structural twist couples the planes: a 90° twist swaps EIy and EIz.
 TEST(FemModeShapes, NinetyDegreeTwistSwapsThePlanes) {
   ModeShapeInput in = uniform();

@@ -59,7 +59,8 @@ TEST(TowerTopMass, ExactTipMassModesGiveBetaSquaredFrequencies) {
 // (tests/cli/test_cli_shapes.cpp); what remains is the `table` shape's linear interpolation between
 // the nodes, an O(h²) error: measured 3e-7, 1e-4, 3e-4, 8e-4 (modes 1–4) with the case's 100
 // elements, four times less with 200 — both checked, so the error is shown to be the discretization.
-TEST(TowerTopMass, FemShapesConvergeToEquation32Frequencies) {
+// Two model builds and linearizations with 100 and 200 table stations: ~2 s, hence a *Slow suite.
+TEST(TowerTopMassSlow, FemShapesConvergeToEquation32Frequencies) {
   const double ratio = 0.5;  // Mt/M of the case
   const std::string path = std::string(WHIRL_SOURCE_DIR) + "/cases/tower_topmass/tower_topmass_fem.yaml";
   auto errors = [&](int elements) {
