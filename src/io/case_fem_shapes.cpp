@@ -31,6 +31,7 @@ fem::ModeShapeInput readFemShapeSettings(const CaseNode& s, const BeamProperties
   if (const auto a = s.find("rotation_axis")) {
     if (a->isScalar() && a->text() == "y") in.rotation_axis = Vec3::UnitY();
     else if (a->isScalar() && a->text() == "z") in.rotation_axis = Vec3::UnitZ();
+    else if (a->isScalar()) a->fail("expected y, z or [x, y, z], got '" + a->text() + "'");
     else in.rotation_axis = a->vec3();
     if (Vec3(0, in.rotation_axis(1), in.rotation_axis(2)).norm() == 0)
       a->fail("the rotation axis must not be along the beam (give y, z or [x, y, z])");
