@@ -222,7 +222,9 @@ std::vector<BeamMode> beamModes(const ModeShapeInput& in, int count_y, int count
     bm.freq_hz = std::sqrt(std::max(0.0, modes.omega2(k))) / (2 * std::numbers::pi);
     bm.table = modeTable(model, u, torsion);
     const double tipval = dir == 'y' ? bm.table.uy(bm.table.x.size() - 1) : bm.table.uz(bm.table.x.size() - 1);
-    if (!(std::abs(tipval) > 1e-12 * bm.table.uy.cwiseAbs().maxCoeff() + 1e-300))
+    const double largest = std::max(bm.table.uy.cwiseAbs().maxCoeff(), bm.table.uz.cwiseAbs().maxCoeff());
+    // A clamped-free mode moves its tip; only a near-infinite tip body holds it (then no unit-tip scaling).
+    if (!(std::abs(tipval) > 1e-9 * largest))
       throw ComputeError("mode shapes: mode " + std::to_string(bm.index) + " along " + dir + " has no tip displacement");
     scale(bm.table, 1.0 / tipval);
     out.push_back(std::move(bm));

@@ -45,7 +45,7 @@ struct ModeShapeInput {
 struct BeamMode {
   char direction = 'y';             ///< dominant bending direction: 'y' or 'z'
   int index = 1;                    ///< 1-based within its direction
-  double freq_hz = 0;               ///< FE natural frequency [Hz]
+  double freq_hz = 0;               ///< FE natural frequency [Hz]; 0 when ω² < 0 (buckled by the axial load)
   ShapeTable table;                 ///< at the FE nodes; scaled to unit tip displacement along `direction`
   ShapePtr shape;                   ///< tableShape(table)
 };
