@@ -13,4 +13,5 @@ void addLinCommand(CLI::App& app);
 void addCompareCommand(CLI::App& app);
 void addExportCommand(CLI::App& app);
 void addStudyCommand(CLI::App& app);
+void addShapesCommand(CLI::App& app);
 }  // namespace whirl::cli

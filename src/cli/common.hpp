@@ -29,6 +29,9 @@ void addModelOptions(CLI::App& cmd, ModelOptions& opt, bool with_rpm = true);
 /// --set, then --rpm to every rotating coordinate.
 Model loadModel(const ModelOptions& opt);
 
+/// True for a YAML case path (.yaml, .yml), false for OpenFAST / ElastoDyn files.
+bool isYamlCase(const std::string& path);
+
 /// Sets the rate of every rotating coordinate to rpm; InputError when the model has none.
 void setRotorSpeed(Model& model, double rpm);
 

@@ -49,6 +49,7 @@ int main(int argc, char** argv) {
   whirl::cli::addCompareCommand(app);
   whirl::cli::addExportCommand(app);
   whirl::cli::addStudyCommand(app);
+  whirl::cli::addShapesCommand(app);
   std::vector<char*> cargv;
   for (auto& a : args) cargv.push_back(a.data());
   cargv.push_back(nullptr);

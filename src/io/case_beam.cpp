@@ -125,12 +125,16 @@ void readBeamBody(const CaseNode& n, int index, CaseBuild& build) {
   if (uni && tab) tab->fail("give uniform or properties, not both");
   if (!uni && !tab) n.fail("a beam needs uniform or properties");
   const BeamProperties p = uni ? uniformProperties(*uni, L) : tabulatedProperties(*tab, L);
-  const std::vector<ShapePtr> shapes = readShapes(n, L, index, build);
+  const std::vector<ShapePtr> shapes = readShapes(n, p, index, build);
   BeamOptions opt;
   if (const auto q = n.find("integration")) opt.integration = readIntegration(*q);
   if (const auto d = n.find("damping")) opt.damping = readDamping(*d, static_cast<int>(shapes.size()));
   opt.axial_shortening = n.boolean("axial_shortening", true);
-  build.beams.push_back({index, p, shapes});
+  const auto sh = n.find("shapes");
+  fem::ModeShapeInput fe;
+  fe.props = p;
+  if (sh && sh->isMap()) fe = readFemShapeSettings(*sh, p);
+  build.beams.push_back({index, p, shapes, fe});
   Body& b = build.model.bodies[index];
   try {
     const BeamBody bb = buildBeamBody(p, shapes, opt, b.name);

@@ -32,7 +32,8 @@ Vec3 readGravity(const CaseNode& g) {
 
 }  // namespace
 
-Model readCase(const std::string& path, const std::vector<CaseOverride>& overrides) {
+Model readCase(const std::string& path, const std::vector<CaseOverride>& overrides,
+               std::vector<fem::FlexibleBeam>* beams) {
   CaseSource source;
   source.file = path;
   source.folder = std::filesystem::path(path).parent_path().string();
@@ -53,6 +54,9 @@ Model readCase(const std::string& path, const std::vector<CaseOverride>& overrid
   if (const auto l = top.find("loads")) readLoads(*l, build);
   if (const auto in = top.find("inputs")) readInputTargets(*in, build);
   if (const auto o = top.find("outputs")) readOutputs(*o, build);
+  // Body indices of build.beams are those before finalize() sorts the bodies.
+  if (beams)
+    for (const CaseBuild::Beam& b : build.beams) beams->push_back({m.bodies[b.body].name, b.fem, b.shapes});
   try {
     finalize(m);
   } catch (const InputError& e) {

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "src/fem/shape_comparison.hpp"
 #include "src/model/model.hpp"
 
 namespace whirl {
@@ -33,6 +34,8 @@ CaseOverride parseOverride(const std::string& text);
 ///                       in the file; a list entry that does not exist is an error.
 /// \return the finalized model.
 /// \throws InputError "file:line: key: reason" for anything wrong in the file or the overrides.
-Model readCase(const std::string& path, const std::vector<CaseOverride>& overrides = {});
+/// \param[out] beams    when given, the case's `beam` bodies as FE inputs with their shapes (`whirl shapes`).
+Model readCase(const std::string& path, const std::vector<CaseOverride>& overrides = {},
+               std::vector<fem::FlexibleBeam>* beams = nullptr);
 
 }  // namespace whirl

@@ -8,6 +8,7 @@
 
 #include "src/io/case_file.hpp"
 #include "src/io/case_node.hpp"
+#include "src/fem/mode_shapes.hpp"
 #include "src/model/model.hpp"
 #include "src/shapes/beam.hpp"
 #include "src/shapes/shape.hpp"
@@ -19,11 +20,12 @@ struct FemPending;
 /// The model being built, with where its bodies and DOFs were written (indices as in `model`,
 /// before finalize() reorders them).
 struct CaseBuild {
-  /// A beam body's properties and shapes, kept for its bending-moment outputs.
+  /// A beam body's properties and shapes, kept for its bending-moment outputs and `whirl shapes`.
   struct Beam {
     int body = -1;
     BeamProperties props;
     std::vector<ShapePtr> shapes;
+    fem::ModeShapeInput fem;  ///< FE input for `whirl shapes`: the `{from: fem}` settings, else properties only
   };
   Model model;
   std::vector<Beam> beams;
@@ -67,8 +69,15 @@ void readFemBody(const CaseNode& node, int index, CaseBuild& build);
 /// (its own weight and that of the bodies attached at its nodes), at the initial DOF values.
 void addFemGeometricStiffness(Model& model, const std::vector<std::shared_ptr<FemPending>>& pending);
 
-/// The `shapes:` of beam `node` (length L, body `index`), each adding its elastic DOF (case_shapes.cpp).
-std::vector<ShapePtr> readShapes(const CaseNode& node, double length, int index, CaseBuild& build);
+/// The `shapes:` of beam `node` (properties `props`, body `index`), each adding its elastic DOF
+/// (case_shapes.cpp): a list of shapes, or a map `{from: fem, …}` (case_fem_shapes.cpp).
+std::vector<ShapePtr> readShapes(const CaseNode& node, const BeamProperties& props, int index, CaseBuild& build);
+
+/// `shapes: {from: fem, …}`: the FE modes of the beam's properties as table shapes (case_fem_shapes.cpp).
+std::vector<ShapePtr> readFemShapes(const CaseNode& shapes, const BeamProperties& props, int index, CaseBuild& build);
+
+/// The FE settings of a `{from: fem}` shapes map (tip mass, axial loads, elements), modes not read.
+fem::ModeShapeInput readFemShapeSettings(const CaseNode& shapes, const BeamProperties& props);
 
 /// `inputs:`, `dofs:` settings and `loads:` (case_loads.cpp).
 void readInputs(const CaseNode& list, CaseBuild& build);

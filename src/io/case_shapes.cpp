@@ -1,5 +1,5 @@
 // Shape functions of a beam in a case (`shapes:`): polynomial, one_minus_cos, clamped_topmass,
-// torsion_sine and table. Each shape is one elastic DOF named after the shape.
+// torsion_sine and table; or a map {from: fem} (case_fem_shapes.cpp). Each shape is one elastic DOF named after the shape.
 #include <charconv>
 #include <cmath>
 
@@ -77,10 +77,12 @@ void requireFinite(const CaseNode& s, const Shape& shape, double L) {
 
 }  // namespace
 
-std::vector<ShapePtr> readShapes(const CaseNode& beam, double L, int index, CaseBuild& build) {
+std::vector<ShapePtr> readShapes(const CaseNode& beam, const BeamProperties& props, int index, CaseBuild& build) {
   std::vector<ShapePtr> shapes;
   const auto list = beam.find("shapes");
   if (!list) return shapes;
+  if (list->isMap()) return readFemShapes(*list, props, index, build);
+  const double L = props.length;
   for (const CaseNode& s : list->items()) {
     const std::string type = s.at("type").text();
     const CaseNode name_node = s.at("name");

@@ -1,5 +1,5 @@
 // buildElastoDynModel: the parts (tower, nacelle and drivetrain, blades), inputs and outputs, springs, gravity;
-// readElastoDynModel: files and overrides.
+// readElastoDynModel: files and overrides; readElastoDynFlexibleBeams: tower and blades for `whirl shapes`.
 #include "src/model/elastodyn_model.hpp"
 
 #include <cmath>
@@ -8,7 +8,9 @@
 
 #include "src/io/openfast_overrides.hpp"
 #include "src/io/openfast_support.hpp"
+#include "src/model/elastodyn_fem_shapes.hpp"
 #include "src/model/elastodyn_parts.hpp"
+#include "src/model/elastodyn_tower_beam.hpp"
 #include "src/model/error.hpp"
 
 namespace whirl {
@@ -79,8 +81,8 @@ Model buildElastoDynModel(const io::OpenFastTurbine& t, const ElastoDynModelOpti
   return std::move(b.model);
 }
 
-Model readElastoDynModel(const std::string& path, const std::vector<std::string>& overrides) {
-  ElastoDynModelOptions opt;
+io::OpenFastTurbine readElastoDynTurbine(const std::string& path, const std::vector<std::string>& overrides,
+                                         ElastoDynModelOptions& opt) {
   std::vector<io::KeyOverride> file_overrides;
   for (const std::string& text : overrides) {
     io::KeyOverride o = io::parse_override(text);
@@ -88,6 +90,13 @@ Model readElastoDynModel(const std::string& path, const std::vector<std::string>
       const std::optional<double> g = io::parse_fortran_double(o.value);
       if (!g || !std::isfinite(*g)) throw InputError("--set '" + text + "': gravity: not a finite number");
       opt.gravity = *g;
+      continue;
+    }
+    if (io::to_lower(o.key) == "shapes") {  // a whirl option: the tower and blade shape functions
+      const std::string v = io::to_lower(o.value);
+      if (v != "fem" && v != "polynomial")
+        throw InputError("--set '" + text + "': shapes: expected polynomial (the files' mode-shape polynomials) or fem");
+      opt.fem_shapes = v == "fem";
       continue;
     }
     file_overrides.push_back(std::move(o));
@@ -102,7 +111,41 @@ Model readElastoDynModel(const std::string& path, const std::vector<std::string>
   if (opt.yaw_spring_from_servodyn && t.elastodyn.dof.YawDOF && t.fst.CompServo != 0)
     opt.servodyn = io::read_servodyn_if_enabled(t.fst, &set);
   set.require_all_used();
+  return t;
+}
+
+Model readElastoDynModel(const std::string& path, const std::vector<std::string>& overrides) {
+  ElastoDynModelOptions opt;
+  const io::OpenFastTurbine t = readElastoDynTurbine(path, overrides, opt);
   return buildElastoDynModel(t, opt);
+}
+
+std::vector<fem::FlexibleBeam> readElastoDynFlexibleBeams(const std::string& path,
+                                                          const std::vector<std::string>& overrides,
+                                                          std::optional<double> rpm) {
+  ElastoDynModelOptions opt;
+  const io::OpenFastTurbine t = readElastoDynTurbine(path, overrides, opt);
+  io::require_supported(t);
+  const io::ElastoDynInput& ed = t.elastodyn;
+  std::vector<fem::FlexibleBeam> out;
+  // Tower: the FE input of shapes=fem; current shapes as the model would have them.
+  const ElastoDynTowerBeam tower = elastoDynTowerBeam(ed);
+  fem::FlexibleBeam tw{"tower", elastoDynTowerModeInput(ed, tower.props, gravityOf(t, opt)), tower.shapes};
+  if (opt.fem_shapes) tw.shapes = elastoDynTowerFemShapes(tw.input);
+  out.push_back(std::move(tw));
+  const int nodes = ed.BldNodes.value_or(opt.blade_nodes > 0 ? opt.blade_nodes : 17);
+  const double speed = rpm.value_or(ed.init.RotSpeed) * std::numbers::pi / 30.0;
+  for (std::size_t k = 0; k < ed.blades.size(); ++k) {
+    const ElastoDynBladeBeam blade =
+        elastoDynBladeBeam(ed.blades[k], ed.config.TipRad - ed.config.HubRad, nodes, ed.mass.TipMass[k]);
+    fem::FlexibleBeam b{"blade " + std::to_string(k + 1), elastoDynBladeModeInput(blade, ed.config.HubRad, speed),
+                        blade.shapes};
+    // shapes=fem builds the model's blades at RotSpeed; --rpm only changes the FE modes compared.
+    if (opt.fem_shapes)
+      b.shapes = elastoDynBladeFemShapes(elastoDynBladeModeInput(blade, ed.config.HubRad, ed.init.RotSpeed * std::numbers::pi / 30.0));
+    out.push_back(std::move(b));
+  }
+  return out;
 }
 
 }  // namespace whirl

@@ -57,6 +57,7 @@
 #include <string>
 #include <vector>
 
+#include "src/fem/shape_comparison.hpp"
 #include "src/io/openfast_turbine.hpp"
 #include "src/model/model.hpp"
 
@@ -73,6 +74,9 @@ struct ElastoDynModelOptions {
   int blade_nodes = 0;
   /// Axial shortening of tower and blades (the geometric stiffness of gravity and centrifugal loads).
   bool axial_shortening = true;
+  /// Tower and blade shapes from the beam FE (elastodyn_fem_shapes.hpp) instead of the files' polynomials:
+  /// tower with the rotor-nacelle top mass and gravity, blades at the initial rotor speed RotSpeed.
+  bool fem_shapes = false;
 };
 
 /// Builds and finalizes the model of the turbine read from an OpenFAST .fst (or an ElastoDyn .dat alone:
@@ -82,8 +86,19 @@ struct ElastoDynModelOptions {
 Model buildElastoDynModel(const io::OpenFastTurbine& turbine, const ElastoDynModelOptions& opt = {});
 
 /// Reads `fst_or_dat_path` (a `.fst`, or any other name: an ElastoDyn main file) with KEY=VALUE
-/// overrides applied to every file read; `gravity=<m/s²>` (any case) is a whirl option instead.
+/// overrides applied to every file read; `gravity=<m/s²>` and `shapes=polynomial|fem` (any case) are whirl
+/// options instead (ElastoDynModelOptions::gravity, fem_shapes).
 /// Every override must be used by some file read. Throws InputError naming file, line and key.
 Model readElastoDynModel(const std::string& fst_or_dat_path, const std::vector<std::string>& overrides = {});
+
+/// The files of readElastoDynModel with the overrides applied; the whirl options go to `opt`.
+io::OpenFastTurbine readElastoDynTurbine(const std::string& fst_or_dat_path, const std::vector<std::string>& overrides,
+                                         ElastoDynModelOptions& opt);
+
+/// Tower and blades of the turbine as FE inputs (elastodyn_fem_shapes.hpp) with the shapes the model
+/// would use (polynomials, or FE with shapes=fem). Blades at `rpm` [rpm] (default: RotSpeed).
+std::vector<fem::FlexibleBeam> readElastoDynFlexibleBeams(const std::string& fst_or_dat_path,
+                                                          const std::vector<std::string>& overrides,
+                                                          std::optional<double> rpm = std::nullopt);
 
 }  // namespace whirl

@@ -3,6 +3,7 @@
 #include <numbers>
 
 #include "src/model/elastodyn_blade_shapes.hpp"
+#include "src/model/elastodyn_fem_shapes.hpp"
 #include "src/model/elastodyn_parts.hpp"
 #include "src/model/error.hpp"
 #include "src/shapes/beam_moment.hpp"
@@ -38,7 +39,10 @@ RotorParts addBlades(Builder& b, int hub) {
     const std::string name = "blade " + std::to_string(k + 1);
     const io::ElastoDynBlade& file = ed.blades.at(static_cast<std::size_t>(k));
     const double tip_mass = ed.mass.TipMass[static_cast<std::size_t>(k)];
-    const ElastoDynBladeBeam beam = elastoDynBladeBeam(file, L, nodes, tip_mass);
+    ElastoDynBladeBeam beam = elastoDynBladeBeam(file, L, nodes, tip_mass);
+    // shapes=fem: the FE modes of the blade's properties at the initial rotor speed RotSpeed.
+    if (b.opt.fem_shapes)
+      beam.shapes = elastoDynBladeFemShapes(elastoDynBladeModeInput(beam, c.HubRad, ed.init.RotSpeed * pi / 30));
     BeamOptions o;
     o.integration = {BeamIntegration::Midpoint, nodes};
     o.axial_shortening = b.opt.axial_shortening;

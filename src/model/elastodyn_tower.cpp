@@ -2,12 +2,14 @@
 #include <cmath>
 
 #include "src/model/elastodyn_blade_shapes.hpp"
+#include "src/model/elastodyn_fem_shapes.hpp"
 #include "src/model/elastodyn_parts.hpp"
+#include "src/model/elastodyn_tower_beam.hpp"
 #include "src/model/error.hpp"
 #include "src/shapes/beam.hpp"
 #include "src/shapes/beam_moment.hpp"
 
-namespace whirl::elastodyn {
+namespace whirl {
 namespace {
 
 VecX column(const io::DistributedTable& t, const char* name, double scale) {
@@ -24,18 +26,17 @@ ShapePtr towerShape(const char* name, double L, const io::ModeShapeCoeffs& c, do
 
 }  // namespace
 
-TowerParts addTower(Builder& b) {
-  const io::ElastoDynInput& ed = b.ed;
+ElastoDynTowerBeam elastoDynTowerBeam(const io::ElastoDynInput& ed) {
   const io::ElastoDynTower& tw = ed.tower;
   const std::string file = tw.source.path().string();
   // Tower base: TowerBsHt (OpenFAST), or −TwrDraft in ElastoDyn v1.00 files (TwrRBHt ≠ 0 is refused).
-  const double base = ed.config.TowerBsHt.value_or(-ed.config.TwrDraft.value_or(0.0));
-  const double L = ed.config.TowerHt - base;
+  ElastoDynTowerBeam t;
+  t.base = ed.config.TowerBsHt.value_or(-ed.config.TwrDraft.value_or(0.0));
+  const double L = ed.config.TowerHt - t.base;
   if (!(L > 0))
-    throw InputError(b.where("TowerHt", "must be above the tower base (" + std::to_string(base) + " m): no flexible tower"));
-  if (ed.TwrNodes < 1) throw InputError(b.where("TwrNodes", "must be at least 1"));
-
-  BeamProperties p;
+    throw InputError(ed.source.where("TowerHt", "must be above the tower base (" + std::to_string(t.base) +
+                                                    " m): no flexible tower"));
+  BeamProperties& p = t.props;
   p.length = L;
   p.x = column(tw.distributed, "HtFract", L);
   p.x(p.x.size() - 1) = L;
@@ -48,10 +49,23 @@ TowerParts addTower(Builder& b) {
     throw InputError(file + ": " + e.what());
   }
   // FA shapes along body z (ground X), SS along body y (ground −Y): ElastoDyn's a1 and a3.
-  const std::vector<ShapePtr> shapes{towerShape("tower FA 1", L, tw.TwFAM1Sh, 0, 1),
-                                     towerShape("tower SS 1", L, tw.TwSSM1Sh, 1, 0),
-                                     towerShape("tower FA 2", L, tw.TwFAM2Sh, 0, 1),
-                                     towerShape("tower SS 2", L, tw.TwSSM2Sh, 1, 0)};
+  t.shapes = {towerShape("tower FA 1", L, tw.TwFAM1Sh, 0, 1), towerShape("tower SS 1", L, tw.TwSSM1Sh, 1, 0),
+              towerShape("tower FA 2", L, tw.TwFAM2Sh, 0, 1), towerShape("tower SS 2", L, tw.TwSSM2Sh, 1, 0)};
+  return t;
+}
+
+namespace elastodyn {
+
+TowerParts addTower(Builder& b) {
+  const io::ElastoDynInput& ed = b.ed;
+  const io::ElastoDynTower& tw = ed.tower;
+  if (ed.TwrNodes < 1) throw InputError(b.where("TwrNodes", "must be at least 1"));
+  ElastoDynTowerBeam beam = elastoDynTowerBeam(ed);
+  const BeamProperties& p = beam.props;
+  const double L = p.length, base = beam.base;
+  // Or (shapes=fem) the FE modes of the same properties with the rotor-nacelle top mass and gravity.
+  if (b.opt.fem_shapes) beam.shapes = elastoDynTowerFemShapes(elastoDynTowerModeInput(ed, p, -b.model.gravity(2)));
+  const std::vector<ShapePtr>& shapes = beam.shapes;
   BeamOptions o;
   o.integration = {BeamIntegration::Midpoint, ed.TwrNodes};
   o.axial_shortening = b.opt.axial_shortening;
@@ -91,4 +105,5 @@ TowerParts addTower(Builder& b) {
   return out;
 }
 
-}  // namespace whirl::elastodyn
+}  // namespace elastodyn
+}  // namespace whirl

@@ -167,5 +167,36 @@ TEST_F(CaseErrors, ShapesThatOverflowAreRefusedAtTheirLine) {
          "bodies.tower.shapes.tower FA 1: the shape is not finite");
 }
 
+// `shapes: {from: fem}`: unknown keys, bad values and FE failures name the key and line.
+TEST_F(CaseErrors, FemShapes) {
+  const std::string fa = "      - {name: tower FA 1, type: one_minus_cos, direction: z}";
+  auto fem = [&](const std::string& settings, const std::string& mode) {
+    return "      from: fem\n" + settings + "      modes:\n        - " + mode;
+  };
+  const std::string ok = "{name: tower FA 1, direction: z, mode: 1}";
+  // Lines: 12 `from: fem`, 13 the setting (or `modes:`), then `modes:` and its entry.
+  expect(fa, fem("      tip_mas: {mass: 1}\n", ok), "shapes.tip_mas: unknown key 'tip_mas'", 13);
+  expect(fa, fem("      from_file: x\n", ok), "unknown key 'from_file'", 13);
+  expect(fa, fem("", "{name: tower FA 1, direction: x, mode: 1}"), "direction: expected y or z", 14);
+  expect(fa, fem("", "{name: tower FA 1, direction: z, mode: 0}"), "mode: the mode number must be from 1 to 50", 14);
+  expect(fa, fem("      tip_mass: {mass: -5}\n", ok), "tip_mass.mass: negative mass", 13);
+  expect(fa, fem("      elements: 0\n", ok), "elements: the number of elements must be from 1 to 5000", 13);
+  expect(fa, fem("      rotation_axis: x\n", ok), "rotation_axis: expected y, z or [x, y, z], got 'x'", 13);
+  expect(fa, "      from: beamdyn\n      modes: []", "unknown shape source 'beamdyn' (allowed: fem)", 12);
+  expect(fa, "      from: fem\n      modes: []", "list at least one mode", 13);
+  // 2 elements hold 4 bending modes per direction: mode 5 fails in the FE, re-thrown at the shapes.
+  const std::string text = replaced(smallTurbineCase(), fa, fem("      elements: 2\n", "{name: tower FA 1, direction: z, mode: 5}"));
+  expectText(text, lineOf(text, "      from: fem"), "only");
+}
+
+TEST_F(CaseErrors, FemShapesValidCaseReads) {
+  const std::string fa = "      - {name: tower FA 1, type: one_minus_cos, direction: z}";
+  const std::string text = replaced(smallTurbineCase(), fa,
+                                    "      from: fem\n      axial_gravity: 9.81\n      modes:\n"
+                                    "        - {name: tower FA 1, direction: z, mode: 1}\n"
+                                    "        - {name: tower SS 1, direction: y, mode: 1}");
+  EXPECT_EQ(readCase(tmp.write("fem.yaml", text)).ndof(), 3);
+}
+
 }  // namespace
 }  // namespace whirl

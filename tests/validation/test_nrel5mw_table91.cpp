@@ -36,6 +36,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "linearize/linearize.hpp"
@@ -91,9 +92,11 @@ struct ModelModes {
   std::vector<std::string> labels;
 };
 
-ModelModes parkedNrel5mwModes() {
+ModelModes parkedNrel5mwModes(const std::vector<std::string>& extra = {}) {
   const std::string fst = std::string(WHIRL_SOURCE_DIR) + "/cases/nrel5mw/Main_Onshore.fst";
-  const Model m = readElastoDynModel(fst, {"RotSpeed=0", "GenDOF=False"});
+  std::vector<std::string> sets = {"RotSpeed=0", "GenDOF=False"};
+  sets.insert(sets.end(), extra.begin(), extra.end());
+  const Model m = readElastoDynModel(fst, sets);
   const OperatingPoint op = solveOperatingPoint(m, initialPoint(m));
   const LinearModel lin = linearize(m, op);
   EXPECT_LT(lin.residual.lpNorm<Eigen::Infinity>(), 1e-3) << "not an equilibrium";
@@ -104,10 +107,13 @@ ModelModes parkedNrel5mwModes() {
   return out;
 }
 
-TEST(Nrel5mwTable91, EveryModeWithinOnePointFivePercentOfFast) {
+// Every Table 9-1 row against the matching whirl mode of `mm`, within tolerance(row, key prefix) [relative].
+// Returns the whirl frequency of each row (pairs: the set, sorted) by row name.
+template <class Tol>
+std::map<std::string, double> compareWithTable91(const ModelModes& mm, Tol&& tolerance) {
+  std::map<std::string, double> out;
   const std::vector<RefRow> ref = readReference(std::string(WHIRL_SOURCE_DIR) + "/cases/nrel5mw/table9_1.csv");
-  ASSERT_EQ(ref.size(), 13u);
-  const ModelModes mm = parkedNrel5mwModes();
+  EXPECT_EQ(ref.size(), 13u);
   for (std::size_t i = 0; i < mm.modes.size(); ++i)
     std::printf("whirl mode %2zu  %8.4f Hz  %-28s (%s)\n", i + 1, mm.modes[i].freq_hz, mm.labels[i].c_str(),
                 mm.modes[i].name.c_str());
@@ -128,22 +134,59 @@ TEST(Nrel5mwTable91, EveryModeWithinOnePointFivePercentOfFast) {
       set_refs[k.prefix].push_back(r.freq_hz);
       continue;
     }
-    ASSERT_GE(static_cast<int>(f.size()), k.nth) << "no whirl mode for " << r.mode;
+    if (static_cast<int>(f.size()) < k.nth) {
+      ADD_FAILURE() << "no whirl mode for " << r.mode;
+      continue;
+    }
     const double w = f[static_cast<std::size_t>(k.nth - 1)], d = (w - r.freq_hz) / r.freq_hz;
     std::printf("%-46s %8.4f %8.4f %+7.2f%%\n", r.mode.c_str(), r.freq_hz, w, 100 * d);
-    EXPECT_NEAR(w, r.freq_hz, 0.015 * r.freq_hz) << r.mode;
+    EXPECT_NEAR(w, r.freq_hz, tolerance(r.mode) * r.freq_hz) << r.mode;
+    out[r.mode] = w;
   }
   for (auto& [prefix, fr] : set_refs) {
     std::vector<double> f = modesOf(prefix);
-    ASSERT_GE(f.size(), fr.size()) << "not enough whirl modes for " << prefix;
+    if (f.size() < fr.size()) {
+      ADD_FAILURE() << "not enough whirl modes for " << prefix;
+      continue;
+    }
     f.resize(fr.size());
     std::sort(fr.begin(), fr.end());
     for (std::size_t i = 0; i < fr.size(); ++i) {
       std::printf("%-46s %8.4f %8.4f %+7.2f%%\n", (prefix + " (pair, as a set)").c_str(), fr[i], f[i],
                   100 * (f[i] - fr[i]) / fr[i]);
-      EXPECT_NEAR(f[i], fr[i], 0.015 * fr[i]) << prefix << " #" << i + 1;
+      EXPECT_NEAR(f[i], fr[i], tolerance(prefix) * fr[i]) << prefix << " #" << i + 1;
+      out[prefix + " #" + std::to_string(i + 1)] = f[i];
     }
   }
+  return out;
+}
+
+TEST(Nrel5mwTable91, EveryModeWithinOnePointFivePercentOfFast) {
+  compareWithTable91(parkedNrel5mwModes(), [](const std::string&) { return 0.015; });
+}
+
+// The same turbine with the tower and blade polynomials replaced by FE modes of the same properties
+// (--set shapes=fem; cases/nrel5mw/README.md, "With FE shapes"). FAST's numbers come from the
+// polynomials, so two groups of modes move away from them by more than 1.5 %, both downwards, where the
+// FE basis is better than the polynomials: the first tower fore-aft mode (0.3140 Hz, −3.09 %; the
+// tower alone with its top mass has its exact first mode at 0.3200 Hz, below the polynomial turbine's
+// 0.3244 Hz) and the second flap modes (1.8774, 1.8816, 1.9588 Hz: −2.33, −2.69, −3.05 %; ElastoDyn's
+// twisted flap 2 shape has MAC 0.956 with the coupled FE mode). Those get 3.5 % and must lie below
+// the polynomial model's values; every other mode keeps the 1.5 % of the polynomial model (measured
+// within −0.40 … +0.20 %).
+TEST(Nrel5mwTable91, FemShapesAgainstFastAndThePolynomialModel) {
+  auto wide = [](const std::string& row) {
+    return row == "1st tower fore-aft" || row.find("2nd blade") == 0 || row.rfind("flap 2", 0) == 0;
+  };
+  const auto fem = compareWithTable91(parkedNrel5mwModes({"shapes=fem"}),
+                                      [&](const std::string& row) { return wide(row) ? 0.035 : 0.015; });
+  std::map<std::string, double> poly;
+  {
+    ::testing::ScopedTrace t(__FILE__, __LINE__, "polynomial model (already checked above)");
+    poly = compareWithTable91(parkedNrel5mwModes(), [](const std::string&) { return 0.015; });
+  }
+  for (const auto& [row, f] : fem)
+    if (wide(row)) EXPECT_LT(f, poly.at(row)) << row;
 }
 
 }  // namespace
