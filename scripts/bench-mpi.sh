@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Times a 200-point NREL 5MW Campbell sweep on 1 and on 2 MPI ranks and prints the speed-up.
-# Usage: bash scripts/bench-mpi.sh [RANKS (default 2)] [RPM range (default 0.06:0.06:12, 200 points)]
+# Usage: [BENCH_REPEATS=N] bash scripts/bench-mpi.sh [RANKS (default 2)] [RPM range (default 0.06:0.06:12, 200 points)]
 # Both runs write their tables (no plot) under a temporary folder and are checked identical.
 set -euo pipefail
 cd "$(dirname "$0")/.."
