@@ -1,0 +1,464 @@
+#include "src/aero/bem.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cfloat>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <sstream>
+
+#include "src/dynamics/scalar.hpp"
+#include "src/model/error.hpp"
+
+namespace whirl::aero {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kInductionLimit = 1e6;  // AeroDyn InductionLimit (inductionFactors0, getTangentialInduction)
+constexpr double kMinF = 1e-4;           // BEMTU_InductionWithResidual: F = max(F, 0.0001)
+// BEMTUncoupled BEMT_MaxInduction / BEMT_MinInduction (limitInductionFactors).
+constexpr double kMaxA = 1.5, kMinA = -1.0, kMaxAp = 1.0, kMinAp = -1.0;
+// BEMT_epsilon2 = 10 sqrt(epsilon) for double precision (ReKi = R8Ki in OpenFAST's default double build): the
+// distance kept from the singular angles 0, ±π/2, ±π by the brackets.
+const double kEps2 = 10.0 * std::sqrt(DBL_EPSILON);
+
+/// NWTC EqualRealNos for double: |a − b| ≤ max(|a + b|, 1) · 100 ε / 2.
+bool equal(double a, double b) { return std::abs(a - b) <= std::max(std::abs(a + b), 1.0) * 50.0 * DBL_EPSILON; }
+/// BEMTUncoupled VelocityIsZero: |v| < 1e-3 m/s.
+bool velocityIsZero(double v) { return std::abs(v) < 1e-3; }
+/// Fortran SIGN(a, b): |a| with the sign of b (b = 0 → +).
+double fsign(double a, double b) { return b >= 0 ? std::abs(a) : -std::abs(a); }
+
+template <class T>
+T absT(const T& x) {
+  return valueOf(x) < 0 ? T(-x) : x;
+}
+
+double atan2T(double y, double x) { return std::atan2(y, x); }
+/// atan2 for the fixed-size AD type (Eigen's overload goes through a dynamic-size derivative vector).
+ADChunk atan2T(const ADChunk& y, const ADChunk& x) {
+  const double xv = x.value(), yv = y.value(), h = xv * xv + yv * yv;
+  ADChunk::DerType d = (xv * y.derivatives() - yv * x.derivatives()) / h;
+  return ADChunk(std::atan2(yv, xv), d);
+}
+
+std::string num(double v) {
+  std::ostringstream s;
+  s.precision(6);
+  s << v;
+  return s.str();
+}
+std::string deg(double rad) { return num(rad * 180.0 / kPi); }
+
+double stationZ(const BemStation& s) { return s.z > 0 ? s.z : s.r; }
+
+/// AeroDyn p%FixedInductions: a loss constant of exactly 0 (the tip node, or a node at the blade root) with that
+/// loss on → a = 1, a' = 0 and a zero residual whatever φ.
+bool fixedInductions(const BemStation& s, const BemOptions& o) {
+  return (o.tip_loss && equal(tipLossConstant(s), 0.0)) || (o.hub_loss && equal(hubLossConstant(s), 0.0));
+}
+
+/// Prandtl factor, getHubTipLossCorrection with BEM_Mod = 1 (BEMMod_2D):
+///   F = (2/π) acos(min(1, exp(−c_tip/|sin φ|))) · (2/π) acos(min(1, exp(−c_hub/|sin φ|))), 1 when sin φ = 0.
+template <class T>
+T lossFactor(const BemStation& s, const T& sphi, const BemOptions& o) {
+  using std::acos;
+  using std::exp;
+  T F(1.0);
+  const double sv = std::abs(valueOf(sphi));
+  if (equal(sv, 0.0)) return F;
+  const T sabs = absT(sphi);
+  auto part = [&](double c) -> T {
+    const double e = std::exp(-c / sv);
+    if (!(e < 1.0)) return T(0.0);  // min(1, e) = 1 → acos(1) = 0 (station at or beyond the tip/root)
+    if (e == 0.0) return T(1.0);    // acos(0)·2/π = 1, constant (huge or infinite constant, e.g. zHub = 0)
+    return T((2.0 / kPi) * acos(exp(-c / sabs)));
+  };
+  if (o.tip_loss) F = F * part(tipLossConstant(s));
+  if (o.hub_loss) F = F * part(hubLossConstant(s));
+  return F;
+}
+
+/// Relative flow (x, y) = (Vx(1−a), Vy(1+a')) → φ, α, W, coefficients and loads (AeroDyn
+/// ComputePhiWithInduction, SetInputs_for_UA, BEMT_CalcOutput with AIDrag = TIDrag = true, SetOutputsFromBEMT).
+template <class T>
+SectionLoads<T> loadsFromFlow(const BemStation& s, const T& x, const T& y, const T& theta, double rho) {
+  using std::cos;
+  using std::sin;
+  using std::sqrt;
+  SectionLoads<T> L;
+  const double xv = valueOf(x), yv = valueOf(y);
+  L.phi = (equal(yv, 0.0) && equal(xv, 0.0)) ? T(0.0) : atan2T(x, y);
+  L.alpha = L.phi - theta;
+  const T W2 = x * x + y * y;
+  L.W = valueOf(W2) > 0 ? T(sqrt(W2)) : T(0.0);
+  const Coefficients<T> c = evaluate(*s.polar, L.alpha);
+  L.cl = c.cl;
+  L.cd = c.cd;
+  L.cm = c.cm;
+  const T sphi = sin(L.phi), cphi = cos(L.phi);
+  L.cx = c.cl * cphi + c.cd * sphi;
+  L.cy = c.cl * sphi - c.cd * cphi;
+  const T q = 0.5 * rho * W2;
+  L.fx = L.cx * q * s.chord;
+  L.fy = -L.cy * q * s.chord;
+  L.mz = c.cm * q * (s.chord * s.chord);
+  return L;
+}
+
+void checkStation(const BemStation& s) {
+  auto fail = [&](const std::string& why) { throw InputError("BEM station at r = " + num(s.r) + " m: " + why); };
+  if (s.polar == nullptr) fail("no airfoil polar");
+  if (!(s.r > 0) || !std::isfinite(s.r)) fail("the radius must be positive");
+  if (!(s.chord > 0) || !std::isfinite(s.chord)) fail("the chord must be positive");
+  if (s.blades < 1) fail("the number of blades must be at least 1");
+  if (!std::isfinite(s.theta) || !std::isfinite(s.z) || !std::isfinite(s.hub_radius) || !std::isfinite(s.tip_radius))
+    fail("non-finite geometry");
+  if (!(s.tip_radius > 0)) fail("the tip radius must be positive");
+}
+
+/// AeroDyn GetSolveRegionOrdering: the three brackets [lower, upper] in the order they are tried.
+std::array<std::array<double, 2>, 3> solveRegions(double Vx, double phiIn) {
+  const double e = kEps2, h = kPi / 2, q = kPi / 4;
+  const bool small = phiIn < q && phiIn > -q;
+  if (Vx > 0) {
+    std::array<double, 2> b2{-q, -e}, b3{h + e, kPi - e};
+    return {{{e, h - e}, small ? b2 : b3, small ? b3 : b2}};
+  }
+  std::array<double, 2> b2{q, e}, b3{-h - e, -kPi + e};
+  return {{{-e, -h + e}, small ? b2 : b3, small ? b3 : b2}};
+}
+
+struct BrentResult {
+  double x, fx;
+  int evals;
+  bool converged;
+};
+
+/// Brent's method (Brent 1973, "Algorithms for Minimization without Derivatives", ch. 4) on a bracket [a, b]
+/// whose end residuals fa, fb differ in sign. Stops when |f| < ftol or the bracket half-width falls below
+/// 2 ε |b| + xtol.
+template <class F>
+BrentResult brent(F&& f, double a, double b, double fa, double fb, double ftol, double xtol, int maxit) {
+  double c = a, fc = fa, d = b - a, e = d;
+  int evals = 0;
+  for (int it = 0; it < maxit; ++it) {
+    if ((fb > 0) == (fc > 0)) {  // b and c on the same side: the bracket is [a, b]
+      c = a;
+      fc = fa;
+      d = e = b - a;
+    }
+    if (std::abs(fc) < std::abs(fb)) {  // keep b the best guess
+      a = b;
+      b = c;
+      c = a;
+      fa = fb;
+      fb = fc;
+      fc = fa;
+    }
+    const double tol = 2.0 * DBL_EPSILON * std::abs(b) + xtol;
+    const double m = 0.5 * (c - b);
+    if (std::abs(m) <= tol || fb == 0.0) return {b, fb, evals, true};
+    if (std::abs(e) >= tol && std::abs(fa) > std::abs(fb)) {
+      double p, q;
+      const double s = fb / fa;
+      if (a == c) {  // secant
+        p = 2.0 * m * s;
+        q = 1.0 - s;
+      } else {  // inverse quadratic interpolation
+        const double qq = fa / fc, r = fb / fc;
+        p = s * (2.0 * m * qq * (qq - r) - (b - a) * (r - 1.0));
+        q = (qq - 1.0) * (r - 1.0) * (s - 1.0);
+      }
+      if (p > 0) q = -q;
+      else p = -p;
+      if (2.0 * p < std::min(3.0 * m * q - std::abs(tol * q), std::abs(e * q))) {
+        e = d;
+        d = p / q;
+      } else {  // interpolation rejected: bisect
+        d = m;
+        e = m;
+      }
+    } else {
+      d = m;
+      e = m;
+    }
+    a = b;
+    fa = fb;
+    b += std::abs(d) > tol ? d : (m > 0 ? tol : -tol);
+    fb = f(b);
+    ++evals;
+    if (std::abs(fb) < ftol) return {b, fb, evals, true};
+  }
+  return {b, fb, evals, false};
+}
+
+}  // namespace
+
+double tipLossConstant(const BemStation& s) {
+  const double z = stationZ(s);
+  return s.blades * (s.tip_radius - z) / (2.0 * z);
+}
+
+double hubLossConstant(const BemStation& s) {
+  if (!(s.hub_radius > 0)) return std::numeric_limits<double>::infinity();  // Fortran: x/0 = +Inf → F_hub = 1
+  const double z = stationZ(s);
+  return s.blades * (z - s.hub_radius) / (2.0 * s.hub_radius);
+}
+
+template <class T>
+Induction<T> inductions(const BemStation& s, const T& phi, const T& Vx, const T& Vy, const T& theta,
+                        const BemOptions& o) {
+  using std::cos;
+  using std::sin;
+  using std::sqrt;
+  Induction<T> r{T(0.0), T(0.0), T(1.0), T(0.0), T(0.0), T(0.0), true, false};
+  const double phiv = valueOf(phi), vxv = valueOf(Vx), vyv = valueOf(Vy);
+  // Special cases of BEMTU_InductionWithResidual, in its order.
+  if (fixedInductions(s, o)) {
+    r.a = T(1.0);
+    r.fixed = true;
+    return r;
+  }
+  if (equal(phiv, 0.0) || velocityIsZero(vxv) || velocityIsZero(vyv)) {
+    r.fixed = true;
+    return r;
+  }
+  const T alpha = phi - theta;  // computeAirfoilOperatingAOA, BEMMod_2D
+  const Coefficients<T> c = evaluate(*s.polar, alpha);
+  const T sphi = sin(phi), cphi = cos(phi);
+  // Transform_ClCd_to_CxCy honouring AIDrag / TIDrag (only for the inductions).
+  const T cx = o.ai_drag ? T(c.cl * cphi + c.cd * sphi) : T(c.cl * cphi);
+  const T cy = o.ti_drag ? T(c.cl * sphi - c.cd * cphi) : T(c.cl * sphi);
+  T F = lossFactor(s, sphi, o);
+  if (valueOf(F) < kMinF) F = T(kMinF);
+  r.F = F;
+
+  // inductionFactors0 (Ning 2014, with Buhl 2005 for the high-thrust momentum state).
+  const double sigma = s.blades * s.chord / (2.0 * kPi * s.r);  // local solidity
+  const T k = sigma * cx / (4.0 * F * sphi * sphi);
+  const double kv = valueOf(k);
+  const bool momentum = (phiv > 0 && vxv >= 0) || (phiv < 0 && vxv < 0);
+  T a(0.0);
+  if (momentum) {
+    if (kv <= 2.0 / 3.0) {  // momentum state, a ≤ 0.4
+      if (equal(kv, -1.0)) a = T(-fsign(kInductionLimit, 1.0 + kv));
+      else a = k / (1.0 + k);
+      if (kv < -1.0) r.valid = false;  // equivalent to a > 1: no momentum-region solution
+    } else {  // Buhl 2005 empirical (Glauert) correction for 0.4 < a < 1, with the loss factor
+      const T temp = 2.0 * F * k;
+      const T g1 = temp - (10.0 / 9.0 - F);
+      const T g2 = temp - (4.0 / 3.0 - F) * F;
+      const T g3 = temp - (25.0 / 9.0 - 2.0 * F);
+      if (std::abs(valueOf(g3)) < 1e-6) a = 1.0 - 0.5 / sqrt(g2);  // avoid the singularity
+      else a = (g1 - sqrt(absT(g2))) / g3;
+    }
+  } else {  // propeller brake region
+    if (equal(kv, 1.0)) {
+      r.valid = false;
+      a = T(kInductionLimit);
+    } else {
+      a = k / (k - 1.0);
+    }
+    if (kv <= 1.0) r.valid = false;  // equivalent to a < 1
+  }
+
+  T ap(0.0), kp(0.0);
+  if (o.tan_ind) {  // getTangentialInduction with kpCorrectionFactor = H = 1, no momentum correction
+    if (equal(valueOf(cphi), 0.0)) {
+      ap = T(-1.0);
+      kp = T(fsign(kInductionLimit, valueOf(cy) * valueOf(sphi)) * fsign(1.0, vxv));
+    } else {
+      kp = sigma * cy / (4.0 * F * sphi * cphi);
+      if (vxv < 0) kp = -kp;
+      const double kpv = valueOf(kp);
+      if (equal(kpv, 1.0)) ap = T(fsign(kInductionLimit, 1.0 - kpv));
+      else ap = kp / (1.0 - kp);
+    }
+  }
+
+  // Residual (Ning 2014 eq. for the momentum and propeller-brake regions), λ_r = Vy/Vx.
+  const T lambda = Vy / Vx;
+  T R;
+  if (momentum) {
+    if (equal(valueOf(a), 1.0)) R = -cphi / lambda * (1.0 - kp);
+    else R = sphi / (1.0 - a) - cphi / lambda * (1.0 - kp);
+  } else {
+    R = sphi * (1.0 - k) - cphi / lambda * (1.0 - kp);
+  }
+  r.a = a;
+  r.ap = ap;
+  r.k = k;
+  r.kp = kp;
+  r.residual = R;
+  return r;
+}
+
+template <class T>
+Induction<T> inductions(const BemStation& s, const T& phi, const T& Vx, const T& Vy, const BemOptions& o) {
+  return inductions<T>(s, phi, Vx, Vy, T(s.theta), o);
+}
+
+template <class T>
+T bemResidual(const BemStation& s, const T& phi, const T& Vx, const T& Vy, const T& theta, const BemOptions& o) {
+  return inductions<T>(s, phi, Vx, Vy, theta, o).residual;
+}
+
+template <class T>
+T bemResidual(const BemStation& s, const T& phi, const T& Vx, const T& Vy, const BemOptions& o) {
+  return inductions<T>(s, phi, Vx, Vy, T(s.theta), o).residual;
+}
+
+BemSolution solveInflow(const BemStation& s, double Vx, double Vy, const BemOptions& o) {
+  checkStation(s);
+  if (!std::isfinite(Vx) || !std::isfinite(Vy))
+    throw ComputeError("BEM at r = " + num(s.r) + " m: non-finite velocity (Vx = " + num(Vx) + " m/s, Vy = " +
+                       num(Vy) + " m/s)");
+  BemSolution out;
+  double phi = 0.0;
+  auto R = [&](double p) { return inductions<double>(s, p, Vx, Vy, s.theta, o); };
+
+  if (velocityIsZero(Vx)) {  // BEMT_UnCoupledSolve special cases
+    phi = 0.0;
+  } else if (velocityIsZero(Vy)) {
+    phi = Vx > 0 ? kPi / 2 : -kPi / 2;
+  } else {
+    const auto regions = solveRegions(Vx, o.phi_guess);
+    std::ostringstream tried;
+    bool found = false;
+    for (int i = 0; i < 3 && !found; ++i) {
+      const double lo = regions[i][0], hi = regions[i][1];
+      const Induction<double> il = R(lo), ih = R(hi);
+      out.iterations += 2;
+      const double f1 = il.residual, f2 = ih.residual;
+      if (i > 0) tried << "; ";
+      tried << "[" << deg(lo) << ", " << deg(hi) << "] deg: R = " << num(f1) << ", " << num(f2);
+      // FindTestRegion
+      if (equal(f1, 0.0) && equal(f2, 0.0) && il.valid && ih.valid) {
+        phi = lo > 0 ? lo : hi;
+        found = true;
+      } else if (std::abs(f1) < o.tolerance && ((std::abs(f2) < std::abs(f1) && ih.valid) || il.valid)) {
+        phi = (std::abs(f2) < std::abs(f1) && ih.valid) ? hi : lo;
+        found = true;
+      } else if (std::abs(f2) < o.tolerance && ih.valid) {
+        phi = hi;
+        found = true;
+      } else if ((f1 >= 0) != (f2 >= 0)) {
+        const BrentResult b = brent([&](double p) { return R(p).residual; }, lo, hi, f1, f2, o.tolerance,
+                                    o.phi_tolerance, o.max_iter);
+        out.iterations += b.evals;
+        if (!b.converged)
+          throw ComputeError("BEM at r = " + num(s.r) + " m, Vx = " + num(Vx) + " m/s, Vy = " + num(Vy) +
+                             " m/s, theta = " + deg(s.theta) + " deg: the root finder did not converge in " +
+                             std::to_string(o.max_iter) + " iterations in [" + deg(lo) + ", " + deg(hi) +
+                             "] deg (last phi = " + deg(b.x) + " deg, R = " + num(b.fx) + ")");
+        const Induction<double> ib = R(b.x);
+        if (ib.valid) {
+          phi = b.x;
+          found = true;
+        } else {
+          tried << ": root at " << deg(b.x) << " deg is not a valid BEM solution (k = " << num(ib.k) << ")";
+        }
+      } else {
+        tried << ": no sign change";
+      }
+      if (found) out.bracket = i;
+    }
+    if (!found) {
+      const double geo = std::atan2(Vx, Vy);
+      if (!o.geometric_fallback)
+        throw ComputeError("no valid BEM inflow angle at r = " + num(s.r) + " m, Vx = " + num(Vx) + " m/s, Vy = " +
+                           num(Vy) + " m/s, theta = " + deg(s.theta) + " deg; brackets tried: " + tried.str() +
+                           "; geometric phi = " + deg(geo) + " deg");
+      phi = geo;
+      out.valid = false;
+    }
+  }
+
+  out.phi = phi;
+  // calculate_Inductions_from_BEMT: invalid → 0, else limitInductionFactors.
+  const Induction<double> ind = R(phi);
+  out.F = ind.F;
+  out.k = ind.k;
+  out.kp = ind.kp;
+  out.residual = out.valid ? ind.residual : 0.0;
+  if (out.valid && ind.valid) {
+    out.a = std::clamp(ind.a, kMinA, kMaxA);
+    out.ap = std::clamp(ind.ap, kMinAp, kMaxAp);
+  }
+  const SectionLoads<double> L = loadsFromFlow<double>(s, Vx * (1.0 - out.a), Vy * (1.0 + out.ap), s.theta, 1.0);
+  out.phi_out = L.phi;
+  out.alpha = L.alpha;
+  out.W = L.W;
+  out.cl = L.cl;
+  out.cd = L.cd;
+  out.cm = L.cm;
+  out.ax_ind_vel = -Vx * out.a;
+  out.tan_ind_vel = Vy * out.ap;
+  return out;
+}
+
+template <class T>
+T inflowAngle(const BemStation& s, const T& Vx, const T& Vy, const T& theta, double phi0, const BemOptions& o) {
+  ADChunk p(phi0);
+  p.derivatives()[0] = 1.0;
+  const Induction<ADChunk> d =
+      inductions<ADChunk>(s, p, ADChunk(valueOf(Vx)), ADChunk(valueOf(Vy)), ADChunk(valueOf(theta)), o);
+  if (d.fixed) return T(phi0);
+  const double Rphi = d.residual.derivatives()[0];
+  if (!(std::abs(Rphi) > 0) || !std::isfinite(Rphi))
+    throw ComputeError("BEM at r = " + num(s.r) + " m, Vx = " + num(valueOf(Vx)) + " m/s, Vy = " +
+                       num(valueOf(Vy)) + " m/s, theta = " + deg(valueOf(theta)) + " deg: dR/dphi = " + num(Rphi) +
+                       " at phi = " + deg(phi0) + " deg, the inflow angle is not differentiable there");
+  const T R = bemResidual<T>(s, T(phi0), Vx, Vy, theta, o);
+  return T(phi0 - R / Rphi);
+}
+
+template <class T>
+SectionLoads<T> frozenLoads(const BemStation& s, const T& Vx, const T& Vy, const T& theta, double ax_ind_vel,
+                            double tan_ind_vel, double rho, const BemOptions& /*o*/) {
+  // BEMT_CalcOutput_Inductions with UseFrozenWake: a = −AxInd_op/Vx, a' = TnInd_op/Vy (0 when Vx, Vy = 0),
+  // hence Vx(1−a) = Vx + AxInd_op and Vy(1+a') = Vy + TnInd_op.
+  const T x = equal(valueOf(Vx), 0.0) ? Vx : T(Vx + ax_ind_vel);
+  const T y = equal(valueOf(Vy), 0.0) ? Vy : T(Vy + tan_ind_vel);
+  return loadsFromFlow<T>(s, x, y, theta, rho);
+}
+
+template <class T>
+SectionLoads<T> quasiSteadyLoads(const BemStation& s, const T& Vx, const T& Vy, const T& theta, double phi0,
+                                 double rho, const BemOptions& o) {
+  const T phi = inflowAngle<T>(s, Vx, Vy, theta, phi0, o);
+  const Induction<T> ind = inductions<T>(s, phi, Vx, Vy, theta, o);
+  T a = ind.a, ap = ind.ap;
+  if (!ind.valid) {
+    a = T(0.0);
+    ap = T(0.0);
+  } else {  // limitInductionFactors: a clamped value has no derivative
+    if (valueOf(a) < kMinA) a = T(kMinA);
+    if (valueOf(a) > kMaxA) a = T(kMaxA);
+    if (valueOf(ap) < kMinAp) ap = T(kMinAp);
+    if (valueOf(ap) > kMaxAp) ap = T(kMaxAp);
+  }
+  const T x = Vx * (1.0 - a), y = Vy * (1.0 + ap);
+  return loadsFromFlow<T>(s, x, y, theta, rho);
+}
+
+#define WHIRL_BEM_INSTANTIATE(T)                                                                                 \
+  template Induction<T> inductions<T>(const BemStation&, const T&, const T&, const T&, const T&,               \
+                                      const BemOptions&);                                                       \
+  template Induction<T> inductions<T>(const BemStation&, const T&, const T&, const T&, const BemOptions&);      \
+  template T bemResidual<T>(const BemStation&, const T&, const T&, const T&, const T&, const BemOptions&);      \
+  template T bemResidual<T>(const BemStation&, const T&, const T&, const T&, const BemOptions&);                \
+  template T inflowAngle<T>(const BemStation&, const T&, const T&, const T&, double, const BemOptions&);       \
+  template SectionLoads<T> frozenLoads<T>(const BemStation&, const T&, const T&, const T&, double, double,     \
+                                          double, const BemOptions&);                                           \
+  template SectionLoads<T> quasiSteadyLoads<T>(const BemStation&, const T&, const T&, const T&, double, double, \
+                                               const BemOptions&);
+
+WHIRL_BEM_INSTANTIATE(double)
+WHIRL_BEM_INSTANTIATE(ADChunk)
+#undef WHIRL_BEM_INSTANTIATE
+
+}  // namespace whirl::aero
