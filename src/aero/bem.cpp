@@ -56,8 +56,12 @@ double stationZ(const BemStation& s) { return s.z > 0 ? s.z : s.r; }
 
 /// AeroDyn p%FixedInductions: a loss constant of exactly 0 (the tip node, or a node at the blade root) with that
 /// loss on → a = 1, a' = 0 and a zero residual whatever φ.
+/// A zero hub radius (infinite hub-loss constant, F_hub = 1) never fixes the inductions here; in AeroDyn,
+/// EqualRealNos(+Inf, 0) is true (its tolerance scales with |a + b| = Inf), so zHub = 0 with HubLoss on would fix
+/// a = 1 at every node — not reproduced.
 bool fixedInductions(const BemStation& s, const BemOptions& o) {
-  return (o.tip_loss && equal(tipLossConstant(s), 0.0)) || (o.hub_loss && equal(hubLossConstant(s), 0.0));
+  return (o.tip_loss && equal(tipLossConstant(s), 0.0)) ||
+         (o.hub_loss && s.hub_radius > 0 && equal(hubLossConstant(s), 0.0));
 }
 
 /// Prandtl factor, getHubTipLossCorrection with BEM_Mod = 1 (BEMMod_2D):

@@ -41,7 +41,8 @@ struct BemStation {
   double r = 0;           ///< distance from the rotor axis (AeroDyn rLocal), used in the solidity [m]
   double z = 0;           ///< distance along the blade from the hub centre (AeroDyn zLocal), used in the loss
                           ///< constants; 0 → r [m]
-  double hub_radius = 0;  ///< AeroDyn zHub: distance from the hub centre to the blade root along the blade [m]
+  double hub_radius = 0;  ///< AeroDyn zHub: distance from the hub centre to the blade root along the blade [m];
+                          ///< 0 → no hub loss (F_hub = 1)
   double tip_radius = 0;  ///< AeroDyn zTip: zLocal of the last blade node [m]
   int blades = 3;         ///< number of blades B
   double chord = 0;       ///< [m]

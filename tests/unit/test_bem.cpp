@@ -304,6 +304,15 @@ TEST(Bem, NegativeVxZeroVyAndOtherSpecialCasesDoNotThrow) {
   const auto tl = quasiSteadyLoads<ADChunk>(tip, seed(8.0, 0), seed(60.0, 1), seed(0.002, 2), t.phi, 1.225, o);
   EXPECT_EQ(tl.phi.derivatives()[0], 0.0);  // Vx(1−a) = 0 whatever Vx
   EXPECT_EQ(tl.alpha.derivatives()[2], -1.0);
+  // Zero hub radius: infinite hub-loss constant, F_hub = 1, inductions not fixed.
+  BemStation noHub = station(30.0, 3.5, 0.1, P[6]);
+  noHub.hub_radius = 0.0;
+  BemOptions hubOnly;
+  hubOnly.tip_loss = false;
+  const BemSolution nh = solveInflow(noHub, 8.0, 30.0, hubOnly);
+  EXPECT_EQ(nh.F, 1.0);
+  EXPECT_GT(nh.a, 0.0);
+  EXPECT_LT(nh.a, 0.5);
   // Invalid station.
   BemStation bad = s;
   bad.polar = nullptr;
