@@ -1,5 +1,6 @@
 #include "linearize/jacobian.hpp"
 
+#include "src/dynamics/aero_loads.hpp"
 #include "src/dynamics/kinematics.hpp"
 #include "src/dynamics/outputs.hpp"
 #include "src/dynamics/residual.hpp"
@@ -66,10 +67,10 @@ JacobianWorkspace::JacobianWorkspace(const Model& m) : ws(m), kin(m) {
 }
 
 MatX residualJacobian(const Model& m, JacobianWorkspace& jw, const VecX& q, const VecX& qd, const VecX& qdd,
-                      const VecX& u, Wrt wrt, const std::vector<int>& cols, VecX* value) {
+                      const VecX& u, Wrt wrt, const std::vector<int>& cols, VecX* value, const AeroInflow* frozen) {
   if (value) value->resize(0);
   auto full = [&]() {
-    residual(m, jw.ws, jw.q, jw.qd, jw.qdd, jw.u, jw.e);
+    residual(m, jw.ws, jw.q, jw.qd, jw.qdd, jw.u, jw.e, frozen);
     if (value && value->size() == 0 && jw.ws.complete) {
       value->resize(m.ndof());
       for (int k = 0; k < m.ndof(); ++k) (*value)(k) = jw.e(k).value();
@@ -92,7 +93,8 @@ MatX residualJacobian(const Model& m, JacobianWorkspace& jw, const VecX& q, cons
     pointKinematics(m, jw, q, qd, qdd);
     const MatX Jl = jacobian(m, jw, q, qd, qdd, u, wrt, load_cols, jw.e, [&]() {
       for (int k = 0; k < m.ndof(); ++k) jw.e(k) = ADChunk(0.0);
-      addInputLoads(m, jw.kin, jw.u, jw.e);
+      addInputLoads(m, jw.kin, jw.kin_qd, jw.u, jw.e);
+      addAeroLoads(m, jw.kin, jw.kin_q, jw.u, frozen, nullptr, jw.e);
     });
     for (size_t c = 0; c < load_at.size(); ++c) J.col(load_at[c]) = Jl.col(c);
   }

@@ -7,6 +7,7 @@
 /// through them: the direction of u_i also seeds q_d with gain, so ∂/∂u is the total derivative.
 #include <vector>
 
+#include "src/dynamics/aero_inflow.hpp"
 #include "src/dynamics/scalar.hpp"
 #include "src/dynamics/workspace.hpp"
 
@@ -29,8 +30,11 @@ struct JacobianWorkspace {
 /// (addInputLoads), with the kinematics in double: e is affine in those inputs.
 /// \param[out] value  if given: e at the point (dim ndof) when one of the passes evaluated every term
 ///                    of the residual (no body skipped), else resized to 0 (evaluate it in double).
+/// \param[in]  frozen aerodynamic induced velocities held fixed (frozen wake); null: the induction
+///                    responds (quasi-steady BEM, src/dynamics/aero_loads.hpp)
 MatX residualJacobian(const Model& model, JacobianWorkspace& jw, const VecX& q, const VecX& qd, const VecX& qdd,
-                      const VecX& u, Wrt wrt, const std::vector<int>& cols, VecX* value = nullptr);
+                      const VecX& u, Wrt wrt, const std::vector<int>& cols, VecX* value = nullptr,
+                      const AeroInflow* frozen = nullptr);
 
 /// ∂y/∂(wrt)[:, cols] for all noutput rows (y = evaluateOutputs, src/dynamics/outputs.hpp).
 MatX outputJacobian(const Model& model, JacobianWorkspace& jw, const VecX& q, const VecX& qd, const VecX& qdd,

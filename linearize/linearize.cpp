@@ -25,12 +25,12 @@ void ldltSolveInPlace(const Eigen::LDLT<MatX>& ldlt, MatX& X) {
 
 }  // namespace
 
-LinearModel linearize(const Model& m, const OperatingPoint& op) {
+LinearModel linearize(const Model& m, const OperatingPoint& op, const LinearizeOptions& opt) {
   LinearizeWorkspace lw(m);
-  return linearize(m, op, lw);
+  return linearize(m, op, lw, opt);
 }
 
-LinearModel linearize(const Model& m, const OperatingPoint& op, LinearizeWorkspace& lw) {
+LinearModel linearize(const Model& m, const OperatingPoint& op, LinearizeWorkspace& lw, const LinearizeOptions& opt) {
   LinearModel lin;
   lin.dofs = m.activeDofs();
   const int n = static_cast<int>(lin.dofs.size());
@@ -46,10 +46,14 @@ LinearModel linearize(const Model& m, const OperatingPoint& op, LinearizeWorkspa
     for (int r = 0; r < n; ++r) out.row(r) = sign * J.row(lin.dofs[r]);
     return out;
   };
+  const AeroInflow* frozen = m.aero.active() && opt.frozen_wake ? &op.inflow : nullptr;
+  if (frozen && static_cast<int>(frozen->axial.size()) != m.aero.nstations())
+    throw ComputeError("frozen-wake linearization: the operating point carries no induction of the blade elements "
+                       "(solve it with solveOperatingPoint)");
   VecX e;  // e at the point, from a K pass that evaluated every term, or in double below
-  lin.K = rows(residualJacobian(m, jw, op.q, op.qd, op.qdd, op.u, Wrt::Q, lin.dofs, &e), -1.0);
-  lin.C = rows(residualJacobian(m, jw, op.q, op.qd, op.qdd, op.u, Wrt::Qd, lin.dofs), -1.0);
-  lin.Q = rows(residualJacobian(m, jw, op.q, op.qd, op.qdd, op.u, Wrt::U, inputs), 1.0);
+  lin.K = rows(residualJacobian(m, jw, op.q, op.qd, op.qdd, op.u, Wrt::Q, lin.dofs, &e, frozen), -1.0);
+  lin.C = rows(residualJacobian(m, jw, op.q, op.qd, op.qdd, op.u, Wrt::Qd, lin.dofs, nullptr, frozen), -1.0);
+  lin.Q = rows(residualJacobian(m, jw, op.q, op.qd, op.qdd, op.u, Wrt::U, inputs, nullptr, frozen), 1.0);
   MatX Mfull;
   massMatrix(m, ws, op.q, Mfull);
   lin.M.resize(n, n);
@@ -57,7 +61,7 @@ LinearModel linearize(const Model& m, const OperatingPoint& op, LinearizeWorkspa
     for (int c = 0; c < n; ++c) lin.M(r, c) = Mfull(lin.dofs[r], lin.dofs[c]);
   if (e.size() != m.ndof()) {
     e.resize(m.ndof());
-    residual(m, ws, op.q, op.qd, op.qdd, op.u, e);
+    residual(m, ws, op.q, op.qd, op.qdd, op.u, e, frozen);
   }
   lin.residual.resize(n);
   for (int r = 0; r < n; ++r) lin.residual(r) = e(lin.dofs[r]);

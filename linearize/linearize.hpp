@@ -24,8 +24,16 @@ struct LinearModel {
   VecX residual; ///< e at the operating point on the active coordinates (dim n)
 };
 
-LinearModel linearize(const Model& model, const OperatingPoint& op, LinearizeWorkspace& lw);
+struct LinearizeOptions {
+  /// Aerodynamics: hold the induced velocities of the operating point fixed (AeroDyn's frozen wake, as
+  /// OpenFAST linearizes) or let the induction follow each perturbation at once (quasi-steady BEM:
+  /// its derivative by the implicit-function theorem). No effect without aerodynamics.
+  bool frozen_wake = true;
+};
+
+LinearModel linearize(const Model& model, const OperatingPoint& op, LinearizeWorkspace& lw,
+                      const LinearizeOptions& opt = {});
 /// Same, with buffers of its own.
-LinearModel linearize(const Model& model, const OperatingPoint& op);
+LinearModel linearize(const Model& model, const OperatingPoint& op, const LinearizeOptions& opt = {});
 
 }  // namespace whirl

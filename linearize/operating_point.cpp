@@ -134,7 +134,9 @@ OperatingPoint solveOperatingPoint(const Model& m, const OperatingPoint& start, 
     if (dq.lpNorm<Eigen::Infinity>() < 1e-14 * (1.0 + op.q.lpNorm<Eigen::Infinity>())) break;
   }
   op.residual_norm = es.norm();
-  residual(m, ws, op.q, op.qd, op.qdd, op.u, e);
+  op.aero = AeroRecord{};
+  residual(m, ws, op.q, op.qd, op.qdd, op.u, e, nullptr, m.aero.active() ? &op.aero : nullptr);
+  op.inflow = op.aero.inflow();
   op.residual_max_active = 0;
   for (int i : m.activeDofs())
     if (std::abs(e(i)) >= op.residual_max_active) {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "linearize/linearize_workspace.hpp"
+#include "src/dynamics/aero_inflow.hpp"
 #include "src/model/model.hpp"
 
 namespace whirl {
@@ -21,6 +22,10 @@ struct OperatingPoint {
   double load_scale = 1;     ///< what the tolerance was relative to [N, N m]
   double residual_max_active = 0;  ///< max |e| over all active coordinates (rotating ones included)
   std::string residual_max_dof;    ///< where that maximum sits
+  /// Aerodynamics: every blade element at the solution (induction solved on the deflected geometry) and
+  /// its induced velocities, which a frozen-wake linearization holds fixed. Empty without aerodynamics.
+  AeroRecord aero;
+  AeroInflow inflow;
 };
 
 struct EquilibriumOptions {

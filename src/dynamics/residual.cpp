@@ -10,14 +10,17 @@ template void forwardKinematics<double>(const Model&, Workspace<double>&, const 
 template void forwardKinematics<ADChunk>(const Model&, Workspace<ADChunk>&, const VecXT<ADChunk>&,
                                          const VecXT<ADChunk>&, const VecXT<ADChunk>&);
 template void residual<double>(const Model&, Workspace<double>&, const VecX&, const VecX&, const VecX&, const VecX&,
-                               VecX&);
+                               VecX&, const AeroInflow*, AeroRecord*);
 template void residual<ADChunk>(const Model&, Workspace<ADChunk>&, const VecXT<ADChunk>&, const VecXT<ADChunk>&,
-                                const VecXT<ADChunk>&, const VecXT<ADChunk>&, VecXT<ADChunk>&);
-template void addInputLoads<double, double>(const Model&, const Workspace<double>&, const VecX&, VecX&);
+                                const VecXT<ADChunk>&, const VecXT<ADChunk>&, VecXT<ADChunk>&, const AeroInflow*,
+                                AeroRecord*);
+template void addInputLoads<double, double>(const Model&, const Workspace<double>&, const VecX&, const VecX&, VecX&);
 template void addInputLoads<ADChunk, ADChunk>(const Model&, const Workspace<ADChunk>&, const VecXT<ADChunk>&,
-                                              VecXT<ADChunk>&);
-template void addInputLoads<double, ADChunk>(const Model&, const Workspace<double>&, const VecXT<ADChunk>&,
-                                             VecXT<ADChunk>&);
+                                              const VecXT<ADChunk>&, VecXT<ADChunk>&);
+template void addInputLoads<double, ADChunk>(const Model&, const Workspace<double>&, const VecX&,
+                                             const VecXT<ADChunk>&, VecXT<ADChunk>&);
+template void addAeroLoads<double, ADChunk>(const Model&, const Workspace<double>&, const VecX&,
+                                            const VecXT<ADChunk>&, const AeroInflow*, AeroRecord*, VecXT<ADChunk>&);
 template Mat3T<double> axisRotation<double>(const Vec3&, const double&);
 
 }  // namespace whirl

@@ -1,6 +1,9 @@
 #pragma once
+#include "src/dynamics/aero_loads.hxx"
 #include "src/dynamics/body_forces.hxx"
+#include "src/dynamics/generator_torque.hpp"
 #include "src/dynamics/kinematics.hxx"
+#include "src/dynamics/point_force.hxx"
 #include "src/dynamics/residual.hpp"
 
 namespace whirl {
@@ -97,19 +100,19 @@ void bodyInertiaForces(const Model& m, int i, Workspace<T>& ws, const VecXT<T>& 
 }  // namespace detail
 
 template <class TK, class T>
-void addInputLoads(const Model& m, const Workspace<TK>& ws, const VecXT<T>& u, VecXT<T>& e) {
+void addInputLoads(const Model& m, const Workspace<TK>& ws, const VecXT<TK>& qd, const VecXT<T>& u, VecXT<T>& e) {
+  // The generator torque law adds its torque at the generator speed to the generator-torque input.
+  const GeneratorTorqueLaw& gen = m.generator;
+  TK law(0);
+  if (gen.active()) {
+    TK speed(0);
+    for (const auto& [d, g] : m.outputs[gen.speed_output].terms) speed += g * qd(d);
+    law = generatorTorque(gen, speed);
+  }
   for (const PointLoad& l : m.point_loads) {
     // The load scaled by its input (or 1): its generalized force is scale × that of the unit load,
     // formed in TK; only the final products carry the scalar of u.
-    const Body& b = m.bodies[l.body];
     const FrameState<TK>& f = ws.frames[l.body];
-    const BasisState<TK>& bs = ws.basis[l.body];
-    const T scale = detail::inputScale(u, l.input);
-    Vec3T<TK> s = Vec3T<TK>::Zero();
-    if (l.point >= 0) {
-      const Mat3X& P = b.points[l.point].P;
-      for (int k = 0; k < P.cols(); ++k) s += P.col(k) * bs.c(k);
-    }
     Vec3T<TK> Fb, Mb;
     if (l.body_frame) {
       Fb = l.force.cast<TK>();
@@ -118,28 +121,16 @@ void addInputLoads(const Model& m, const Workspace<TK>& ws, const VecXT<T>& u, V
       Fb = f.R.transpose() * l.force.cast<TK>();
       Mb = f.R.transpose() * l.moment.cast<TK>();
     }
-    const Vec3T<TK> Fw = f.R * Fb;
-    const Vec3T<TK> Mw = f.R * Vec3T<TK>(Mb + s.cross(Fb));
-    for (int sd : m.support[l.body]) {
-      const TK g = f.Jv.col(sd).dot(Fw) + f.Jw.col(sd).dot(Mw);
-      e(sd) += scale * g;
-    }
-    if (l.point >= 0 && b.inertia.ne > 0) {
-      const BodyPoint& pt = b.points[l.point];
-      for (int j = 0; j < b.inertia.ne; ++j) {
-        Vec3T<TK> col = Vec3T<TK>::Zero();
-        for (int k = 0; k < pt.P.cols(); ++k) col += pt.P.col(k) * bs.D(k, j);
-        const TK g = col.dot(Fb) + pt.theta.col(j).cast<TK>().dot(Mb);
-        e(b.elastic_dof + j) += scale * g;
-      }
-    }
+    T scale = detail::inputScale(u, l.input);
+    if (gen.active() && l.input == gen.torque_input) scale += T(law);
+    detail::addPointForce(m, ws, l.body, l.point, Fb, Mb, scale, e);
   }
   for (const DofLoad& l : m.dof_loads) e(l.dof) += l.value * detail::inputScale(u, l.input);
 }
 
 template <class T>
 void residual(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T>& qd, const VecXT<T>& qdd,
-              const VecXT<T>& u, VecXT<T>& e) {
+              const VecXT<T>& u, VecXT<T>& e, const AeroInflow* frozen, AeroRecord* record) {
   forwardKinematics(m, ws, q, qd, qdd);
   ws.complete = true;
   const int nb = static_cast<int>(m.bodies.size());
@@ -171,12 +162,19 @@ void residual(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T
       }
     }
   }
-  // The load terms depend on q and u only: a pass seeding neither (q̇, q̈ columns) skips them.
+  // The load terms depend on q and u — and on q̇ with aerodynamics or a generator torque law: a pass
+  // seeding none of these (q̈ columns, or q̇ without them) skips them.
   bool loads = true;
   if constexpr (!std::is_same_v<T, double>)
-    if (ws.derivatives_only) loads = detail::anySeeded(q) || detail::anySeeded(u);
-  if (loads) addInputLoads(m, ws, u, e);
-  else ws.complete = false;
+    if (ws.derivatives_only)
+      loads = detail::anySeeded(q) || detail::anySeeded(u) ||
+              ((m.aero.active() || m.generator.active()) && detail::anySeeded(qd));
+  if (loads) {
+    addInputLoads(m, ws, qd, u, e);
+    addAeroLoads(m, ws, q, u, frozen, record, e);
+  } else {
+    ws.complete = false;
+  }
   for (const DofSpring& s : m.springs) e(s.dof) -= s.k * (q(s.dof) - s.q0) + s.c * qd(s.dof);
   for (const BodyMatrices& bm : m.body_matrices) {
     const int d0 = m.bodies[bm.body].joint_dof;

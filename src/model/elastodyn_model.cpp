@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <numbers>
 
+#include "src/io/aero_support.hpp"
 #include "src/io/openfast_overrides.hpp"
 #include "src/io/openfast_support.hpp"
 #include "src/model/elastodyn_fem_shapes.hpp"
@@ -72,6 +73,10 @@ Model buildElastoDynModel(const io::OpenFastTurbine& t, const ElastoDynModelOpti
   const elastodyn::DrivetrainParts dt = elastodyn::addNacelleAndDrivetrain(b, tower);
   const elastodyn::RotorParts rotor = elastodyn::addBlades(b, dt.hub);
   elastodyn::addInputsAndOutputs(b, tower, dt, rotor);
+  if (opt.aero) {
+    elastodyn::addAerodynamics(b, dt, rotor, *opt.aero);
+    if (opt.torque_law) elastodyn::addGeneratorTorqueLaw(b, *opt.torque_law);
+  }
 
   if (ed.dof.DrTrDOF) b.model.springs.push_back({dt.drivetrain, ed.drivetrain.DTTorSpr, ed.drivetrain.DTTorDmp, 0.0});
   if (const std::optional<io::ServoDynInput> s = yawSpring(t, opt))
@@ -110,6 +115,15 @@ io::OpenFastTurbine readElastoDynTurbine(const std::string& path, const std::vec
     t.elastodyn = io::read_elastodyn(p, &set);
   if (opt.yaw_spring_from_servodyn && t.elastodyn.dof.YawDOF && t.fst.CompServo != 0)
     opt.servodyn = io::read_servodyn_if_enabled(t.fst, &set);
+  // Aerodynamics follows the deck: CompAero = 2 reads AeroDyn, its blades and airfoils and InflowWind
+  // (`--set CompAero=0` gives the structural model of the same deck).
+  if (t.fst.CompAero != 0) {
+    io::AeroDeckInput deck = io::readAeroDeck(t.fst, &set);
+    io::require_supported(deck.aerodyn);
+    io::require_supported(deck.inflow);
+    opt.aero = std::move(deck);
+    opt.torque_law = io::read_servodyn_if_enabled(t.fst, &set);
+  }
   set.require_all_used();
   return t;
 }

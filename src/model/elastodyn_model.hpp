@@ -58,6 +58,7 @@
 #include <vector>
 
 #include "src/fem/shape_comparison.hpp"
+#include "src/io/aero_deck.hpp"
 #include "src/io/openfast_turbine.hpp"
 #include "src/model/model.hpp"
 
@@ -77,6 +78,11 @@ struct ElastoDynModelOptions {
   /// Tower and blade shapes from the beam FE (elastodyn_fem_shapes.hpp) instead of the files' polynomials:
   /// tower with the rotor-nacelle top mass and gravity, blades at the initial rotor speed RotSpeed.
   bool fem_shapes = false;
+  /// Aerodynamics (AeroDyn, InflowWind) when the .fst has CompAero = 2: read by readElastoDynTurbine.
+  /// Absent: a structural model. (elastodyn_aero.cpp; frames and conventions in src/model/aero_model.hpp.)
+  std::optional<io::AeroDeckInput> aero;
+  /// ServoDyn's generator torque law for an aerodynamic model (VSContrl = 1), when ServoDyn is on.
+  std::optional<io::ServoDynInput> torque_law;
 };
 
 /// Builds and finalizes the model of the turbine read from an OpenFAST .fst (or an ElastoDyn .dat alone:

@@ -7,7 +7,10 @@
 #include <string>
 #include <vector>
 
+#include "src/io/aero_deck.hpp"
 #include "src/io/elastodyn_input.hpp"
+#include "src/io/servodyn_input.hpp"
+#include "src/model/elastodyn_blade_shapes.hpp"
 #include "src/model/elastodyn_model.hpp"
 
 namespace whirl::elastodyn {
@@ -46,7 +49,15 @@ struct DrivetrainParts {
 /// Yaw bearing, nacelle (yaw joint), generator (generator azimuth) and hub (drivetrain twist).
 DrivetrainParts addNacelleAndDrivetrain(Builder& b, const TowerParts& tower);
 
+/// One blade: its body, pitch coordinate and beam (for points added later, e.g. blade elements).
+struct BladeParts {
+  int body = -1;
+  int pitch = -1;
+  ElastoDynBladeBeam beam;
+};
+
 struct RotorParts {
+  std::vector<BladeParts> blades;
   std::vector<int> pitch;                     ///< pitch DOF of each blade
   std::vector<std::array<int, 3>> shape_dofs; ///< flap 1, edge 1, flap 2 DOFs of each blade
   std::vector<MatX> root_moment_gains;        ///< per blade, 2 × 3: (m_y flap, m_z edge) at the root
@@ -58,6 +69,14 @@ RotorParts addBlades(Builder& b, int hub);
 /// Inputs (generator torque, rotor thrust and torque, tower-top forces, collective and individual
 /// pitch) and the default outputs (elastodyn_outputs.cpp; names and definitions in elastodyn_model.hpp).
 void addInputsAndOutputs(Builder& b, const TowerParts& tower, const DrivetrainParts& dt, const RotorParts& rotor);
+
+/// AeroDyn's blade elements and airfoils on the blades, InflowWind's steady wind, and the input
+/// "wind speed" (m/s, value HWindSpeed) (elastodyn_aero.cpp).
+void addAerodynamics(Builder& b, const DrivetrainParts& dt, const RotorParts& rotor, const io::AeroDeckInput& deck);
+
+/// ServoDyn's simple variable-speed torque law (VSContrl = 1) on the "generator torque" input at the
+/// "GenSpeed" output; nothing for VSContrl = 0.
+void addGeneratorTorqueLaw(Builder& b, const io::ServoDynInput& servo);
 
 /// Shorthand for an elementary rotation about a body axis (0 = x, 1 = y, 2 = z) by `angle` [rad].
 Mat3 axisRotation(int axis, double angle);

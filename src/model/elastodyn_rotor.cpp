@@ -66,6 +66,7 @@ RotorParts addBlades(Builder& b, int hub) {
     const int body = b.addBody(std::move(bl));
     out.pitch.push_back(
         b.addDof(name + " pitch", body, DofKind::Joint, 0, false, ed.init.BlPitch[static_cast<std::size_t>(k)] * deg));
+    out.blades.push_back({body, out.pitch.back(), beam});
     std::array<int, 3> dofs{};
     for (int s = 0; s < 3; ++s) {
       const int d = b.addDof(name + " " + beam.shapes[s]->name, body, DofKind::Elastic, s, on[s]);

@@ -338,6 +338,7 @@ void finalize(Model& m) {
   for (const auto& l : m.dof_loads)
     if (l.input >= m.ninput()) throw InputError("DOF load: no such input");
   finalizeInputsAndOutputs(m, new_dof);
+  finalizeAero(m, new_index, new_dof);
 
   // Geared joints take the coordinate of the joint they follow.
   for (Body& b : m.bodies) {

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "src/model/aero_model.hpp"
 #include "src/model/body.hpp"
 #include "src/model/output.hpp"
 #include "src/model/types.hpp"
@@ -128,6 +129,8 @@ struct Model {
   std::vector<DofLoad> dof_loads;
   std::vector<DofSpring> springs;
   std::vector<BodyMatrices> body_matrices;
+  AeroModel aero;                        ///< blade elements, polars, wind (empty: no aerodynamics)
+  GeneratorTorqueLaw generator;          ///< generator torque against speed (inactive: torque = its input)
   std::vector<Output> outputs;           ///< measured quantities y = h(q, q̇, q̈) (output.hpp)
 
   // Derived by finalize().
@@ -153,5 +156,9 @@ int jointDofCount(JointType t);
 /// semi-definite, everything finite. Bodies must carry their DOFs in `dofs` with `body`/`local`
 /// set; DOFs are renumbered. Throws InputError naming the body/DOF and the reason.
 void finalize(Model& model);
+
+/// Part of finalize: renumbers the bodies and DOFs the aerodynamic model and the generator torque law
+/// refer to (old → new index) and checks them.
+void finalizeAero(Model& model, const std::vector<int>& new_body, const std::vector<int>& new_dof);
 
 }  // namespace whirl

@@ -1,0 +1,122 @@
+#pragma once
+#include <cmath>
+#include <string>
+
+#include "src/dynamics/aero_loads.hpp"
+#include "src/dynamics/aero_section.hxx"
+#include "src/dynamics/kinematics.hpp"
+#include "src/dynamics/point_force.hxx"
+#include "src/dynamics/scalar.hpp"
+#include "src/model/error.hpp"
+
+namespace whirl {
+namespace detail {
+
+/// Wind velocity at height z (ground frame): U (z / z_ref)^α along the propagation direction, tilted
+/// by the upflow angle (InflowWind's steady wind, WindType = 1).
+template <class TK, class T>
+Vec3T<T> steadyWind(const SteadyWind& w, const T& speed, const TK& z) {
+  T U = speed;
+  if (w.shear_exponent != 0.0) {
+    using std::pow;
+    const TK ratio = z / w.reference_height;
+    if (valueOf(ratio) > 0) U = U * T(TK(pow(ratio, w.shear_exponent)));
+    else U = T(0);
+  }
+  const double cu = std::cos(w.upflow), su = std::sin(w.upflow);
+  return Vec3T<T>(U * (cu * std::cos(w.direction)), U * (-cu * std::sin(w.direction)), U * su);
+}
+
+}  // namespace detail
+
+template <class TK, class T>
+void addAeroLoads(const Model& m, const Workspace<TK>& ws, const VecXT<TK>& q, const VecXT<T>& u,
+                  const AeroInflow* frozen, AeroRecord* record, VecXT<T>& e) {
+  const AeroModel& am = m.aero;
+  if (!am.active()) return;
+  using std::atan2;
+  using std::cos;
+  using std::sin;
+  using std::sqrt;
+  const FrameState<TK>& hub = ws.frames[am.hub_body];
+  const Vec3T<TK> disk = hub.R.col(0);
+  const T speed = am.wind.speed_input >= 0 ? u(am.wind.speed_input) : T(0);
+  if (record) *record = AeroRecord{};
+  int index = 0;  // element over all blades
+  for (std::size_t bi = 0; bi < am.blades.size(); ++bi) {
+    const AeroBlade& blade = am.blades[bi];
+    const Body& body = m.bodies[blade.body];
+    const FrameState<TK>& f = ws.frames[blade.body];
+    const BasisState<TK>& bs = ws.basis[blade.body];
+    const TK pitch = blade.pitch_dof >= 0 ? q(blade.pitch_dof) : TK(0);
+    // The body turned back by its pitch: AeroDyn's blade frame without pitch (aero_model.hpp).
+    const Mat3T<TK> Rnp = f.R * axisRotation(body.axis, TK(-pitch));
+    const Vec3T<TK> xa = Rnp.col(1), ya = Rnp.col(2), za = Rnp.col(0);
+    for (std::size_t si = 0; si < blade.stations.size(); ++si, ++index) {
+      const AeroStation& st = blade.stations[si];
+      const BodyPoint& pt = body.points[st.point];
+      Vec3T<TK> s = Vec3T<TK>::Zero(), sd = Vec3T<TK>::Zero();
+      for (int k = 0; k < pt.P.cols(); ++k) {
+        s += pt.P.col(k) * bs.c(k);
+        sd += pt.P.col(k) * bs.cd(k);
+      }
+      Vec3T<TK> rot = Vec3T<TK>::Zero();  // small rotations of the section about body x, y, z
+      for (int j = 0; j < body.inertia.ne; ++j) rot += pt.theta.col(j) * q(body.elastic_dof + j);
+      const Vec3T<TK> Rs = f.R * s;
+      const Vec3T<TK> pos = f.r + Rs;
+      const Vec3T<TK> vel = f.v + f.w.cross(Rs) + f.R * sd;
+      // Out-of-plane slope of the deflected span axis (1, θz, −θy): the annulus frame's tilt.
+      const Vec3T<TK> span = f.R * Vec3T<TK>(TK(1), rot(2), -rot(1));
+      const TK slope = atan2(span.dot(xa), span.dot(za));
+      const TK cs = cos(slope), ss = sin(slope);
+      const Vec3T<TK> xn = cs * xa - ss * za, zn = ss * xa + cs * za;
+      const Vec3T<T> rel = detail::steadyWind(am.wind, speed, pos(2)) - vel.template cast<T>();
+      const T vx = rel.dot(xn.template cast<T>()), vy = rel.dot(ya.template cast<T>());
+      const Vec3T<TK> d = pos - hub.r;
+      const Vec3T<TK> dr = d - d.dot(disk) * disk;
+      const TK r = sqrt(dr.dot(dr));
+      // Positive twist and pitch turn the leading edge into the wind, about −x; an elastic
+      // rotation about +x is the opposite.
+      const T theta = T(st.twist) + T(pitch - rot(0));
+      detail::SectionState<T> sec;
+      try {
+        sec = frozen ? detail::frozenSection(am, st, vx, vy, theta, valueOf(r), frozen->axial(index),
+                                             frozen->tangential(index))
+                     : detail::bemSection(am, st, vx, vy, theta, valueOf(r));
+      } catch (const ComputeError& err) {
+        throw ComputeError(body.name + " aero element " + std::to_string(si + 1) + " (span " +
+                           std::to_string(st.span) + " m): " + err.what());
+      }
+      const aero::SectionLoads<T>& L = sec.loads;
+      const Vec3T<T> Fg = L.fx * xn.template cast<T>() + L.fy * ya.template cast<T>();
+      const Vec3T<T> Mg = L.mz * zn.template cast<T>();
+      const Mat3T<T> Rt = f.R.transpose().template cast<T>();
+      const Vec3T<T> Fb = Rt * Fg, Mb = Rt * Mg;
+      detail::addPointForce(m, ws, blade.body, st.point, Fb, Mb, T(st.weight), e);
+      if constexpr (std::is_same_v<T, double> && std::is_same_v<TK, double>) {
+        if (record) {
+          AeroElementState es;
+          es.vx = vx;
+          es.vy = vy;
+          es.r = r;
+          es.phi = L.phi;
+          es.alpha = L.alpha;
+          es.a = sec.a;
+          es.ap = sec.ap;
+          es.w = L.W;
+          es.cl = L.cl;
+          es.cd = L.cd;
+          es.cm = L.cm;
+          es.fx = L.fx;
+          es.fy = L.fy;
+          es.m = L.mz;
+          record->elements.push_back(es);
+          record->thrust += st.weight * Fg.dot(disk);
+          record->torque += st.weight * (d.cross(Fg) + Mg).dot(disk);
+        }
+      }
+    }
+  }
+}
+
+}  // namespace whirl

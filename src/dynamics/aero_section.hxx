@@ -1,0 +1,60 @@
+#pragma once
+/// \file
+/// One blade element's loads per unit span from its relative velocity: AeroDyn's BEMT
+/// (src/aero/bem.hpp) with the frozen wake of an operating point, or with the induction solved for
+/// the current inflow (quasi-steady, its derivative by the implicit-function theorem).
+#include "src/aero/bem.hpp"
+#include "src/dynamics/scalar.hpp"
+#include "src/model/aero_model.hpp"
+
+namespace whirl::detail {
+
+/// The BEM description of element st at distance r [m] from the rotor axis.
+inline aero::BemStation bemStation(const AeroModel& am, const AeroStation& st, double r) {
+  aero::BemStation b;
+  b.r = r;
+  b.z = st.z;
+  b.hub_radius = am.hub_radius;
+  b.tip_radius = am.tip_radius;
+  b.blades = static_cast<int>(am.blades.size());
+  b.chord = st.chord;
+  b.polar = &am.polars[st.polar];
+  return b;
+}
+
+template <class T>
+struct SectionState {
+  aero::SectionLoads<T> loads;
+  double a = 0, ap = 0;  ///< induction factors (values)
+};
+
+/// Loads with the induced velocities held fixed (AeroDyn `computeFrozenWake`).
+template <class T>
+SectionState<T> frozenSection(const AeroModel& am, const AeroStation& st, const T& vx, const T& vy, const T& theta,
+                              double r, double ax_ind, double tn_ind) {
+  SectionState<T> s;
+  s.loads = aero::frozenLoads(bemStation(am, st, r), vx, vy, theta, ax_ind, tn_ind, am.air_density, am.bem);
+  const double vxv = valueOf(vx), vyv = valueOf(vy);
+  s.a = vxv != 0 ? -ax_ind / vxv : 0;
+  s.ap = vyv != 0 ? tn_ind / vyv : 0;
+  return s;
+}
+
+/// Loads with the induction of the current inflow: BEM solved at the values, the inflow angle's
+/// derivatives by the implicit-function theorem. Without induction (AeroDyn WakeMod = 0): φ is the
+/// geometric inflow angle.
+template <class T>
+SectionState<T> bemSection(const AeroModel& am, const AeroStation& st, const T& vx, const T& vy, const T& theta,
+                           double r) {
+  if (!am.induction) return frozenSection(am, st, vx, vy, theta, r, 0.0, 0.0);
+  aero::BemStation b = bemStation(am, st, r);
+  b.theta = valueOf(theta);
+  const aero::BemSolution sol = aero::solveInflow(b, valueOf(vx), valueOf(vy), am.bem);
+  SectionState<T> s;
+  s.loads = aero::quasiSteadyLoads(b, vx, vy, theta, sol.phi, am.air_density, am.bem);
+  s.a = sol.a;
+  s.ap = sol.ap;
+  return s;
+}
+
+}  // namespace whirl::detail

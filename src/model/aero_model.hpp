@@ -1,0 +1,86 @@
+#pragma once
+/// \file
+/// The aerodynamic part of a model: blade elements on beam bodies, their airfoil polars, the steady
+/// wind and the BEM options. Plain data like the rest of the Model: the wind speed is an input
+/// (u), so the operating condition sets it and ∂e/∂u gives the wind column of Q.
+///
+/// Frames: a blade body's frame is pitched (its pitch coordinate turns it about −x, x = span). The
+/// element's "no-pitch" frame is the body frame turned back by the pitch angle; its axes in the
+/// order of AeroDyn's blade frame are (x_a, y_a, z_a) = (body y, body z, body x): x_a out of the
+/// rotor plane (downwind), y_a in the plane against the direction of rotation, z_a along the span.
+/// The element's annulus frame is that frame turned about y_a by the out-of-plane slope of the
+/// deflected span axis — AeroDyn's "orientationAnnulus" without sweep, pitch and twist
+/// (Calculate_MeshOrientation_NoSweepPitchTwist, AeroDyn v15 / OpenFAST 3.x).
+#include <string>
+#include <vector>
+
+#include "src/aero/bem.hpp"
+#include "src/aero/polar.hpp"
+#include "src/model/types.hpp"
+
+namespace whirl {
+
+/// One blade element: a node of AeroDyn's blade mesh.
+struct AeroStation {
+  int point = -1;      ///< body point at the aerodynamic centre (shape values at the station's span)
+  double span = 0;     ///< distance from the blade root along the undeflected span axis [m]
+  double z = 0;        ///< distance from the rotor apex along the blade (AeroDyn zLocal, loss constants) [m]
+  double chord = 0;    ///< [m]
+  double twist = 0;    ///< aerodynamic twist, positive towards feather [rad]
+  int polar = -1;      ///< index into AeroModel::polars
+  double weight = 0;   ///< length the element's load per unit length acts over (trapezoid rule) [m]
+};
+
+/// The elements of one blade.
+struct AeroBlade {
+  int body = -1;       ///< the beam body the elements sit on
+  int pitch_dof = -1;  ///< the coordinate that pitches the body (−1: none, pitch 0)
+  std::vector<AeroStation> stations;
+};
+
+/// Steady wind (InflowWind WindType = 1): horizontal speed U at the reference height, power-law shear
+/// U (z/z_ref)^α, propagation direction and upflow. The speed is the value of input `speed_input`.
+struct SteadyWind {
+  int speed_input = -1;         ///< input holding the hub-height horizontal wind speed [m/s]
+  double reference_height = 0;  ///< z_ref above the ground frame origin [m]
+  double shear_exponent = 0;    ///< α [-]
+  double direction = 0;         ///< propagation direction, positive turning the wind towards −Y [rad]
+  double upflow = 0;            ///< upflow angle, positive upwards [rad]
+};
+
+struct AeroModel {
+  std::vector<aero::Polar> polars;
+  std::vector<AeroBlade> blades;
+  int hub_body = -1;            ///< its frame: origin at the rotor apex, x along the rotor axis (disk normal)
+  double air_density = 1.225;   ///< [kg/m³]
+  double hub_radius = 0;        ///< AeroDyn zHub: apex to blade root along the blade (hub loss) [m]
+  double tip_radius = 0;        ///< AeroDyn zTip: apex to the last element along the blade (tip loss) [m]
+  bool induction = true;        ///< BEM induction (AeroDyn WakeMod = 1); false: geometric inflow (WakeMod = 0)
+  aero::BemOptions bem;
+  SteadyWind wind;
+
+  bool active() const { return !blades.empty(); }
+  /// Number of elements over all blades (the length of an AeroInflow).
+  int nstations() const {
+    int n = 0;
+    for (const AeroBlade& b : blades) n += static_cast<int>(b.stations.size());
+    return n;
+  }
+};
+
+/// ServoDyn's simple variable-speed torque law (VSContrl = 1): region 2 k ω², the linear region 2½
+/// up to rated speed, constant torque above. Generator speed ω_g (high-speed shaft) is the output
+/// `speed_output`; the torque is added to the value of input `torque_input` (the trim or controller
+/// offset), whose loads apply it to the structure.
+struct GeneratorTorqueLaw {
+  int torque_input = -1;   ///< the "generator torque" input [N m, high-speed shaft]
+  int speed_output = -1;   ///< the "GenSpeed" output [rad/s], a combination of coordinate rates
+  double rated_speed = 0;  ///< VS_RtGnSp [rad/s]
+  double rated_torque = 0; ///< VS_RtTq [N m]
+  double k2 = 0;           ///< VS_Rgn2K [N m s²/rad²]
+  double slip = 0;         ///< VS_SlPc / 100 [-]
+  double efficiency = 1;   ///< GenEff / 100: electrical over mechanical power [-]
+  bool active() const { return torque_input >= 0 && speed_output >= 0; }
+};
+
+}  // namespace whirl

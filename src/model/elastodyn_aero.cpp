@@ -1,0 +1,142 @@
+// AeroDyn's blade elements, airfoils and InflowWind's steady wind on the ElastoDyn turbine, and
+// ServoDyn's simple variable-speed torque law on its generator.
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "src/model/elastodyn_parts.hpp"
+#include "src/model/error.hpp"
+#include "src/shapes/beam.hpp"
+
+namespace whirl::elastodyn {
+namespace {
+
+constexpr double deg = std::numbers::pi / 180.0;
+
+int inputIndex(const Model& m, const std::string& name) {
+  for (int i = 0; i < m.ninput(); ++i)
+    if (m.inputs[i].name == name) return i;
+  return -1;
+}
+
+int outputIndex(const Model& m, const std::string& name) {
+  for (int i = 0; i < m.noutput(); ++i)
+    if (m.outputs[i].name == name) return i;
+  return -1;
+}
+
+// The polar of an airfoil file's first table (AFTabMod = 1), angles in rad.
+aero::Polar polarOf(const io::AirfoilInput& af, bool use_cm) {
+  if (af.tables.empty()) throw InputError(af.path.string() + ": no airfoil table");
+  const io::AirfoilTable& t = af.tables.front();
+  std::vector<double> alpha(t.alpha_deg.size());
+  for (std::size_t k = 0; k < alpha.size(); ++k) alpha[k] = t.alpha_deg[k] * deg;
+  std::vector<double> cm = t.cm.empty() || !use_cm ? std::vector<double>(alpha.size(), 0.0) : t.cm;
+  const aero::PolarInterp interp = af.interp_order == 3 ? aero::PolarInterp::CubicSpline : aero::PolarInterp::Linear;
+  return aero::makePolar(af.name, alpha, t.cl, t.cd, cm, interp,
+                         af.path.string() + ":" + std::to_string(t.first_row_line));
+}
+
+// One blade's elements at the AeroDyn nodes: points on the blade body at the aerodynamic centre,
+// trapezoid weights along the span, AeroDyn's curvilinear distance from the apex (loss constants).
+AeroBlade bladeElements(Builder& b, const BladeParts& blade, const io::AeroDynBladeInput& file, double hub_radius,
+                        double length) {
+  AeroBlade out;
+  out.body = blade.body;
+  out.pitch_dof = blade.pitch;
+  Body& body = b.model.bodies[blade.body];
+  const int n = file.NumBlNds;
+  double z = hub_radius;
+  Vec3 previous = Vec3::Zero();
+  for (int j = 0; j < n; ++j) {
+    const double span = file.BlSpn[j];
+    if (span > length * (1 + 1e-9) || span < 0)
+      throw InputError(file.source.path().string() + ":" + std::to_string(file.row_lines[j]) + ": BlSpn: " +
+                       std::to_string(span) + " m lies outside the blade (0 to TipRad − HubRad = " +
+                       std::to_string(length) + " m)");
+    BodyPoint pt = beamPoint(blade.beam.props, blade.beam.shapes, b.opt.axial_shortening, std::min(span, length),
+                             "aero " + std::to_string(j + 1));
+    // AeroDyn's (x, y) offsets of the aerodynamic centre are body (y, z): aero_model.hpp.
+    pt.P(1, 0) += file.BlCrvAC[j];
+    pt.P(2, 0) += file.BlSwpAC[j];
+    const Vec3 node(span, file.BlCrvAC[j], file.BlSwpAC[j]);
+    z += (node - previous).norm();
+    previous = node;
+    AeroStation st;
+    st.point = static_cast<int>(body.points.size());
+    body.points.push_back(std::move(pt));
+    st.span = span;
+    st.z = z;
+    st.chord = file.BlChord[j];
+    st.twist = file.BlTwist[j] * deg;
+    st.polar = file.BlAFID[j] - 1;
+    const double lo = j > 0 ? file.BlSpn[j - 1] : span, hi = j + 1 < n ? file.BlSpn[j + 1] : span;
+    st.weight = 0.5 * (hi - lo);
+    out.stations.push_back(st);
+  }
+  return out;
+}
+
+}  // namespace
+
+void addAerodynamics(Builder& b, const DrivetrainParts& dt, const RotorParts& rotor, const io::AeroDeckInput& deck) {
+  const io::ElastoDynConfiguration& c = b.ed.config;
+  Model& m = b.model;
+  AeroModel& am = m.aero;
+  for (const io::AirfoilInput& af : deck.airfoils) am.polars.push_back(polarOf(af, deck.aerodyn.UseBlCm));
+  const double length = c.TipRad - c.HubRad;
+  for (std::size_t k = 0; k < rotor.blades.size(); ++k) {
+    const io::AeroDynBladeInput& file = deck.blades.at(k);
+    for (int j = 0; j < file.NumBlNds; ++j)
+      if (file.BlAFID[j] < 1 || file.BlAFID[j] > static_cast<int>(am.polars.size()))
+        throw InputError(file.source.path().string() + ":" + std::to_string(file.row_lines[j]) + ": BlAFID: " +
+                         std::to_string(file.BlAFID[j]) + " is not an airfoil of the AeroDyn file (1 to " +
+                         std::to_string(am.polars.size()) + ")");
+    am.blades.push_back(bladeElements(b, rotor.blades[k], file, c.HubRad, length));
+  }
+  am.hub_body = dt.hub;
+  am.hub_radius = c.HubRad;
+  am.tip_radius = 0;
+  for (const AeroBlade& bl : am.blades) am.tip_radius = std::max(am.tip_radius, bl.stations.back().z);
+  const io::AeroDynInput& ad = deck.aerodyn;
+  am.air_density = ad.AirDens;
+  am.induction = ad.Wake_Mod == 1;
+  am.bem.tip_loss = ad.TipLoss;
+  am.bem.hub_loss = ad.HubLoss;
+  am.bem.tan_ind = ad.TanInd;
+  am.bem.ai_drag = ad.AIDrag;
+  am.bem.ti_drag = ad.TIDrag;
+  am.bem.max_iter = std::max(ad.MaxIter, 100);
+
+  const io::InflowWindInput& w = deck.inflow;
+  Input wind;
+  wind.name = "wind speed";
+  wind.unit = "m/s";
+  wind.value = w.HWindSpeed;
+  m.inputs.push_back(wind);
+  am.wind.speed_input = m.ninput() - 1;
+  am.wind.reference_height = w.RefHt;
+  am.wind.shear_exponent = w.PLExp;
+  am.wind.direction = w.PropagationDir * deg;
+  am.wind.upflow = w.VFlowAng * deg;
+}
+
+void addGeneratorTorqueLaw(Builder& b, const io::ServoDynInput& servo) {
+  if (servo.VSContrl.value_or(0) == 0 && servo.GenModel.value_or(1) == 1 && !servo.SIG_SySp) return;
+  const io::GeneratorTorqueLaw law = io::generator_torque_law(servo);  // refuses controllers in user code
+  if (law.mode != io::TorqueControl::SimpleVariableSpeed)
+    throw InputError(servo.source.where("VSContrl", "0 (simple induction generator): whirl models only the simple "
+                                                    "variable-speed law (VSContrl = 1) in an aerodynamic model"));
+  GeneratorTorqueLaw& g = b.model.generator;
+  g.torque_input = inputIndex(b.model, "generator torque");
+  g.speed_output = outputIndex(b.model, "GenSpeed");
+  if (!g.active()) throw InputError("ServoDyn torque law: the model has no generator torque input or GenSpeed output");
+  const double rpm = std::numbers::pi / 30.0;  // rad/s per rpm
+  g.rated_speed = law.VS_RtGnSp * rpm;
+  g.rated_torque = law.VS_RtTq;
+  g.k2 = law.VS_Rgn2K / (rpm * rpm);
+  g.slip = law.VS_SlPc / 100.0;
+  g.efficiency = law.GenEff / 100.0;
+}
+
+}  // namespace whirl::elastodyn

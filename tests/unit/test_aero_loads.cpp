@@ -1,0 +1,141 @@
+// Aerodynamic loads in the equations: AD Jacobians against central differences (frozen wake and
+// quasi-steady induction), the frozen-wake induction of a solved point, and the flap damping of
+// blade elements in attached flow against its closed form.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "linearize/jacobian.hpp"
+#include "linearize/linearize.hpp"
+#include "linearize/operating_point.hpp"
+#include "src/dynamics/residual.hpp"
+#include "tests/support/aero_rotor_model.hpp"
+
+namespace whirl {
+namespace {
+
+using test::AeroRotorOptions;
+using test::aeroRotorModel;
+
+// A deflected, moving point near equilibrium: every coordinate and rate non-zero.
+OperatingPoint perturbedPoint(const Model& m) {
+  OperatingPoint op = initialPoint(m);
+  for (int i = 0; i < m.ndof(); ++i)
+    if (m.dofs[i].kind == DofKind::Elastic) {
+      op.q(i) = 0.3 + 0.05 * i;
+      op.qd(i) = 0.2 - 0.03 * i;
+    }
+  op.q(*m.findDof("azimuth")) = 0.4;
+  return op;
+}
+
+// Central differences of e with respect to one argument; the residual is evaluated with `frozen`.
+MatX centralDifferences(const Model& m, const OperatingPoint& op, Wrt wrt, const std::vector<int>& cols,
+                        const AeroInflow* frozen) {
+  Workspace<double> ws(m);
+  MatX J(m.ndof(), cols.size());
+  VecX ep(m.ndof()), em(m.ndof());
+  for (size_t c = 0; c < cols.size(); ++c) {
+    const double h = 1e-6;
+    auto eval = [&](double step, VecX& e) {
+      OperatingPoint p = op;
+      VecX& x = wrt == Wrt::Q ? p.q : wrt == Wrt::Qd ? p.qd : p.u;
+      x(cols[c]) += step;
+      if (wrt == Wrt::U)
+        for (const InputDofTarget& t : m.inputs[cols[c]].dofs) p.q(t.dof) += t.gain * step;
+      residual(m, ws, p.q, p.qd, p.qdd, p.u, e, frozen);
+    };
+    eval(h, ep);
+    eval(-h, em);
+    J.col(c) = (ep - em) / (2 * h);
+  }
+  return J;
+}
+
+void expectJacobiansMatch(const Model& m, const OperatingPoint& op, const AeroInflow* frozen) {
+  JacobianWorkspace jw(m);
+  std::vector<int> all(m.ndof()), inputs(m.ninput());
+  for (int i = 0; i < m.ndof(); ++i) all[i] = i;
+  for (int i = 0; i < m.ninput(); ++i) inputs[i] = i;
+  for (Wrt w : {Wrt::Q, Wrt::Qd, Wrt::U}) {
+    const std::vector<int>& cols = w == Wrt::U ? inputs : all;
+    const MatX ad = residualJacobian(m, jw, op.q, op.qd, op.qdd, op.u, w, cols, nullptr, frozen);
+    const MatX fd = centralDifferences(m, op, w, cols, frozen);
+    const double scale = std::max(1.0, fd.cwiseAbs().maxCoeff());
+    // Central differences with h = 1e-6 on loads of ~1e5: truncation and round-off ~1e-7 relative.
+    EXPECT_LT((ad - fd).cwiseAbs().maxCoeff(), 2e-6 * scale) << "wrt " << static_cast<int>(w);
+    EXPECT_GT(ad.cwiseAbs().maxCoeff(), 0.0);
+  }
+}
+
+TEST(AeroLoads, FrozenWakeJacobiansEqualCentralDifferences) {
+  const Model m = aeroRotorModel();
+  const OperatingPoint op = perturbedPoint(m);
+  // The induction of the point, then held fixed.
+  Workspace<double> ws(m);
+  VecX e(m.ndof());
+  AeroRecord rec;
+  residual(m, ws, op.q, op.qd, op.qdd, op.u, e, nullptr, &rec);
+  const AeroInflow frozen = rec.inflow();
+  ASSERT_EQ(frozen.axial.size(), 36);
+  EXPECT_GT(frozen.axial.cwiseAbs().maxCoeff(), 0.5);  // real induction: ~a U
+  expectJacobiansMatch(m, op, &frozen);
+}
+
+TEST(AeroLoads, QuasiSteadyJacobiansEqualCentralDifferences) {
+  const Model m = aeroRotorModel();
+  expectJacobiansMatch(m, perturbedPoint(m), nullptr);
+}
+
+TEST(AeroLoads, FrozenInductionReproducesTheSolvedPoint) {
+  // At the point it was taken from, the frozen wake gives the same residual as the BEM solution.
+  const Model m = aeroRotorModel();
+  const OperatingPoint op = perturbedPoint(m);
+  Workspace<double> ws(m);
+  VecX e1(m.ndof()), e2(m.ndof());
+  AeroRecord rec;
+  residual(m, ws, op.q, op.qd, op.qdd, op.u, e1, nullptr, &rec);
+  const AeroInflow frozen = rec.inflow();
+  residual(m, ws, op.q, op.qd, op.qdd, op.u, e2, &frozen);
+  EXPECT_LT((e1 - e2).cwiseAbs().maxCoeff(), 1e-9 * e1.cwiseAbs().maxCoeff());
+}
+
+TEST(AeroLoads, FlapDampingOfAttachedFlowEqualsClosedForm) {
+  // Without induction, Cl = 2π α and Cd = 0: an element's normal force per span is
+  //   Fx = ½ ρ c W² 2π (φ − θ) cos φ,  W² = Vx² + Vy², φ = atan2(Vx, Vy),
+  // and a flap velocity ẇ (out of plane, downwind) lowers Vx by ẇ cos(slope). The damping of the
+  // flap coordinate is Σ w_s φ_s² ∂Fx/∂Vx (Hansen 2004, quasi-steady aerodynamic damping), with
+  //   ∂Fx/∂Vx = ½ ρ c 2π [2 Vx (φ − θ) cos φ + (Vy cos φ − (φ − θ) sin φ Vy)].
+  AeroRotorOptions o;
+  o.induction = false;
+  o.cd = 0;
+  o.precone_deg = 0;
+  const Model m = aeroRotorModel(o);
+  OperatingPoint op = initialPoint(m);
+  const LinearModel lin = linearize(m, op);
+  const int flap = *m.findDof("blade 1 flap 1");
+  int row = -1;
+  for (size_t k = 0; k < lin.dofs.size(); ++k)
+    if (lin.dofs[k] == flap) row = static_cast<int>(k);
+  ASSERT_GE(row, 0);
+  const double omega = o.rpm * std::numbers::pi / 30, rho = m.aero.air_density;
+  double c = 0;
+  const Body& blade = m.bodies[m.aero.blades[0].body];
+  for (const AeroStation& st : m.aero.blades[0].stations) {
+    const double r = st.z, vx = o.wind, vy = omega * r;
+    const double phi = std::atan2(vx, vy), w2 = vx * vx + vy * vy;
+    const double th = st.twist + o.pitch_deg * std::numbers::pi / 180;
+    const double dphi = vy / w2;
+    const double dFx = 0.5 * rho * st.chord * 2 * std::numbers::pi *
+                       (2 * vx * (phi - th) * std::cos(phi) + w2 * dphi * (std::cos(phi) - (phi - th) * std::sin(phi)));
+    const double shape = blade.points[st.point].P(1, 1);  // flap shape value at the element (body y)
+    c += st.weight * dFx * shape * shape;
+  }
+  // Exact up to the structural damping of the shapes (none here) and round-off.
+  EXPECT_NEAR(lin.C(row, row), c, 1e-9 * c);
+  EXPECT_GT(c, 1e3);
+}
+
+}  // namespace
+}  // namespace whirl
