@@ -110,6 +110,30 @@ TEST(AeroDynInput, OpenFast5Layout) {
   EXPECT_TRUE(whirl::io::unsupported_options(a).empty());
 }
 
+TEST(AeroDynInput, AeroDyn1503LayoutOfTheCertificationTests) {
+  // AeroDyn v15.03 (FAST 8 certification tests, OpenFAST v1): TwrShadow a flag, no FrozenWake,
+  // CavitCheck, Buoyancy, CompAA, Patm/Pvap, DBEMT, OLAF, AFTabMod, hub/nacelle/tail-fin sections.
+  AeroScratch s;
+  std::string text = whirl::test::read_text(s.path(kV3));
+  for (const char* key : {"FrozenWake", "CavitCheck", "Buoyancy", "CompAA", "AA_InputFile", "Patm", "Pvap",
+                          "SkewModFactor", "DBEMT_Mod", "tau1_const", "OLAFInputFileName", "UAStartRad", "UAEndRad",
+                          "AFTabMod", "VolHub", "HubCenBx", "VolNac", "NacCenB", "TFinAero", "TFinFile"})
+    text = whirl::test::remove_line(text, key);
+  text = whirl::test::replace_once(text, "          0   TwrShadow", "False         TwrShadow");
+  const AeroDynInput a = read_aerodyn(s.write(kV3, text));
+  EXPECT_EQ(a.layout, AeroDynLayout::V15);
+  EXPECT_EQ(a.Wake_Mod, 1);
+  EXPECT_FALSE(a.frozen_wake);  // no FrozenWake key: quasi-steady BEMT
+  EXPECT_EQ(a.DBEMT_Mod, 0);
+  EXPECT_EQ(a.TwrShadow, 0);
+  EXPECT_EQ(a.AFTabMod, 1);
+  EXPECT_DOUBLE_EQ(a.Patm, 103500.0);
+  EXPECT_DOUBLE_EQ(a.SkewModFactor, 15.0 * kPi / 32.0);
+  EXPECT_EQ(a.AFNames.size(), 8u);
+  EXPECT_EQ(a.tower.rows(), 12u);
+  EXPECT_TRUE(whirl::io::unsupported_options(a).empty());
+}
+
 TEST(AeroDynInput, DefaultEnvironmentFromTheFstAndExplicitValues) {
   AeroDynEnvironment env;
   env.AirDens = 1.1;
