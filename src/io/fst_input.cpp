@@ -41,9 +41,17 @@ FstInput read_fst(const std::filesystem::path& file, OverrideSet* overrides) {
   in.CompMooring = switch_or(f, "CompMooring", 0);
   in.MHK = f.find_int("MHK");
   in.NRotors = f.find_int("NRotors");
+  in.AirDens = f.find_double("AirDens");
+  in.KinVisc = f.find_double("KinVisc");
+  in.SpdSound = f.find_double("SpdSound");
+  in.Patm = f.find_double("Patm");
+  in.Pvap = f.find_double("Pvap");
+  if (in.AirDens) require_positive(f, "AirDens", *in.AirDens);
+  if (in.KinVisc) require_positive(f, "KinVisc", *in.KinVisc);
   in.EDFile = f.get_path("EDFile");
   in.ServoFile = path_of_first(f, {"ServoFile", "SrvDFile"});
   in.AeroFile = path_of_first(f, {"AeroFile", "ADFile"});
+  in.InflowFile = path_of_first(f, {"InflowFile"});
   return in;
 }
 

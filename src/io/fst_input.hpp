@@ -1,7 +1,8 @@
 #pragma once
 /// \file
-/// OpenFAST main input file (`.fst`): only what whirl needs to build a structural model — gravity,
-/// the module switches and the names of the ElastoDyn and ServoDyn files.
+/// OpenFAST main input file (`.fst`): only what whirl needs to build a model — gravity, the
+/// environment of the aerodynamics, the module switches and the names of the ElastoDyn, ServoDyn,
+/// InflowWind and AeroDyn files.
 #include <filesystem>
 #include <optional>
 
@@ -27,9 +28,17 @@ struct FstInput {
   std::optional<int> MHK;      ///< marine turbine {0 no, 1 fixed, 2 floating}; OpenFAST v3.1+
   std::optional<int> NRotors;  ///< number of rotors; OpenFAST v5+
 
+  // Environmental conditions, OpenFAST v3+ (before, each module had its own); what AeroDyn's "default" means.
+  std::optional<double> AirDens;   ///< air density (kg/m³)
+  std::optional<double> KinVisc;   ///< kinematic viscosity of the working fluid (m²/s)
+  std::optional<double> SpdSound;  ///< speed of sound in the working fluid (m/s)
+  std::optional<double> Patm;      ///< atmospheric pressure (Pa)
+  std::optional<double> Pvap;      ///< vapour pressure of the working fluid (Pa)
+
   std::filesystem::path EDFile;                   ///< ElastoDyn main file
   std::optional<std::filesystem::path> ServoFile; ///< ServoDyn file (key `SrvDFile` in FAST 8.0x)
-  std::optional<std::filesystem::path> AeroFile;  ///< AeroDyn file (key `ADFile` in FAST 8.0x); not read
+  std::optional<std::filesystem::path> AeroFile;  ///< AeroDyn file (key `ADFile` in FAST 8.0x); read by readAeroDeck
+  std::optional<std::filesystem::path> InflowFile;  ///< InflowWind file (key `InflowFile` in every layout); read by readAeroDeck
 };
 
 /// Reads a `.fst` file. Switches absent from a layout read as 0 (CompElast as 1: ElastoDyn was the only

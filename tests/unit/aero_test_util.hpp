@@ -1,72 +1,50 @@
 #pragma once
-// Test-only readers for the NREL 5MW aerodynamic data copied under tests/data/aero/ (see the headers of
-// nrel5mw_polars.txt and nrel5mw_blade.txt for their origin).
-#include <cmath>
-#include <fstream>
-#include <numbers>
-#include <sstream>
-#include <stdexcept>
+// Helpers for the aerodynamic-input tests: the copied decks under tests/data/openfast/aero/ (an OpenFAST
+// v3 toolbox deck in toolbox/, an OpenFAST v5 deck in v5/, the NREL 5MW blade and airfoil files both name
+// as "../5MW_Baseline/…"), and a scratch copy of that tree to edit.
+#include <filesystem>
 #include <string>
-#include <vector>
 
-#include "src/aero/polar.hpp"
+#include "tests/unit/openfast_test_util.hpp"
 
 namespace whirl::test {
 
-inline std::string aeroDataDir() { return std::string(WHIRL_SOURCE_DIR) + "/tests/data/aero/"; }
+inline std::filesystem::path aero_dir() { return openfast_data_dir() / "aero"; }
+inline std::filesystem::path airfoil_dir() { return aero_dir() / "5MW_Baseline" / "Airfoils"; }
+inline std::filesystem::path aero_blade_file() { return aero_dir() / "5MW_Baseline" / "NRELOffshrBsline5MW_AeroDyn_blade.dat"; }
 
-/// Reads every airfoil of nrel5mw_polars.txt, in file order (AeroDyn BlAFID 1..8).
-inline std::vector<aero::Polar> readNrel5mwPolars(aero::PolarInterp interp = aero::PolarInterp::Linear) {
-  const std::string path = aeroDataDir() + "nrel5mw_polars.txt";
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot open " + path);
-  std::vector<aero::Polar> polars;
-  std::string line;
-  int lineNo = 0;
-  while (std::getline(in, line)) {
-    ++lineNo;
-    if (line.empty() || line[0] == '#') continue;
-    std::istringstream head(line);
-    std::string word, name;
-    int rows = 0;
-    head >> word >> name >> rows;
-    if (word != "airfoil") throw std::runtime_error(path + ":" + std::to_string(lineNo) + ": expected 'airfoil'");
-    const int first = lineNo + 1;
-    std::vector<double> a, cl, cd, cm;
-    for (int i = 0; i < rows && std::getline(in, line); ++i) {
-      ++lineNo;
-      std::istringstream row(line);
-      double x[4];
-      row >> x[0] >> x[1] >> x[2] >> x[3];
-      a.push_back(x[0] * std::numbers::pi / 180.0);
-      cl.push_back(x[1]);
-      cd.push_back(x[2]);
-      cm.push_back(x[3]);
-    }
-    polars.push_back(aero::makePolar(name, a, cl, cd, cm, interp, path + ":" + std::to_string(first)));
-  }
-  return polars;
+/// `message` with every occurrence of `file`'s path replaced by "<file>" (scratch paths differ per run).
+inline std::string with_file_placeholder(std::string message, const std::filesystem::path& file) {
+  const std::string p = file.string();
+  for (std::size_t at = message.find(p); at != std::string::npos; at = message.find(p, at + 6))
+    message.replace(at, p.size(), "<file>");
+  return message;
 }
 
-struct BladeRow {
-  double span, twist_deg, chord;
-  int afid;
+/// The whole aero tree copied into a scratch folder; edit a file (path relative to the tree), then read.
+class AeroScratch {
+ public:
+  AeroScratch() {
+    for (const auto& e : std::filesystem::recursive_directory_iterator(aero_dir()))
+      if (e.is_regular_file()) dir_.copy(e.path(), std::filesystem::relative(e.path(), aero_dir()).string());
+  }
+  std::filesystem::path path(const std::string& rel) const { return dir_.path() / rel; }
+  /// Replaces `from` by `to` (first occurrence) in file `rel`.
+  void edit(const std::string& rel, const std::string& from, const std::string& to) const {
+    dir_.write(rel, replace_once(read_text(path(rel)), from, to));
+  }
+  /// Keeps the first `n` lines of file `rel`.
+  void truncate(const std::string& rel, int n) const {
+    const std::string text = read_text(path(rel));
+    std::size_t at = 0;
+    for (int i = 0; i < n; ++i) at = text.find('\n', at) + 1;
+    dir_.write(rel, text.substr(0, at));
+  }
+  void remove(const std::string& rel) const { std::filesystem::remove(path(rel)); }
+  std::filesystem::path write(const std::string& rel, const std::string& text) const { return dir_.write(rel, text); }
+
+ private:
+  ScratchDir dir_;
 };
-
-inline std::vector<BladeRow> readNrel5mwBlade() {
-  const std::string path = aeroDataDir() + "nrel5mw_blade.txt";
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot open " + path);
-  std::vector<BladeRow> rows;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::istringstream s(line);
-    BladeRow r{};
-    s >> r.span >> r.twist_deg >> r.chord >> r.afid;
-    rows.push_back(r);
-  }
-  return rows;
-}
 
 }  // namespace whirl::test

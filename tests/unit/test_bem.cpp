@@ -8,7 +8,7 @@
 #include "src/aero/bem.hpp"
 #include "src/dynamics/scalar.hpp"
 #include "src/model/error.hpp"
-#include "tests/unit/aero_test_util.hpp"
+#include "tests/unit/aero_data_util.hpp"
 
 using namespace whirl;
 using namespace whirl::aero;

@@ -1,0 +1,51 @@
+#include "src/io/aerodyn_blade_input.hpp"
+
+#include <cmath>
+
+#include "src/io/distributed_table.hpp"
+#include "src/io/elastodyn_common.hpp"
+#include "src/io/openfast_overrides.hpp"
+#include "src/model/error.hpp"
+
+namespace whirl::io {
+
+AeroDynBladeInput read_aerodyn_blade(const std::filesystem::path& file, OverrideSet* overrides) {
+  AeroDynBladeInput b;
+  b.source = OpenFastFile::read(file);
+  if (overrides) overrides->apply_to(b.source);
+  const OpenFastFile& f = b.source;
+
+  b.NumBlNds = f.get_int("NumBlNds");
+  if (b.NumBlNds < 2)
+    throw InputError(f.where("NumBlNds", "must be at least 2 (is " + std::to_string(b.NumBlNds) + ")"));
+  const DistributedTable t = read_distributed_table(f, "NumBlNds", "BlSpn",
+                                                    {"BlSpn", "BlCrvAC", "BlSwpAC", "BlTwist", "BlChord", "BlAFID"});
+  b.row_lines = t.row_lines;
+  b.BlSpn = t.column("BlSpn");
+  b.BlCrvAC = t.column("BlCrvAC");
+  b.BlSwpAC = t.column("BlSwpAC");
+  b.BlTwist = t.column("BlTwist");
+  b.BlChord = t.column("BlChord");
+  b.has_BlCrvAng = t.has("BlCrvAng");
+  b.BlCrvAng = b.has_BlCrvAng ? t.column("BlCrvAng") : std::vector<double>(t.rows(), 0.0);
+
+  const std::string name = f.path().string();
+  if (b.BlSpn.front() != 0.0)
+    throw InputError(where(name, t.row_lines.front(), "BlSpn", "must start at 0 (is " + number_text(b.BlSpn.front()) + ")"));
+  for (std::size_t r = 1; r < t.rows(); ++r)
+    if (!(b.BlSpn[r] > b.BlSpn[r - 1]))
+      throw InputError(where(name, t.row_lines[r], "BlSpn",
+                             "must increase from node to node (" + number_text(b.BlSpn[r]) + " after " +
+                                 number_text(b.BlSpn[r - 1]) + ")"));
+  require_positive_column(t, "BlChord");
+  for (std::size_t r = 0; r < t.rows(); ++r) {
+    const double id = t.column("BlAFID")[r];
+    if (id != std::floor(id) || id < 1.0 || id > 1.0e6)
+      throw InputError(where(name, t.row_lines[r], "BlAFID",
+                             "must be a whole number >= 1 (an index into AFNames), is " + number_text(id)));
+    b.BlAFID.push_back(static_cast<int>(id));
+  }
+  return b;
+}
+
+}  // namespace whirl::io

@@ -1,0 +1,191 @@
+#include "src/io/airfoil_input.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "src/io/elastodyn_common.hpp"
+#include "src/io/openfast_input.hpp"
+#include "src/io/openfast_lines.hpp"
+#include "src/model/error.hpp"
+
+namespace whirl::io {
+namespace {
+
+/// The file's text for OpenFastFile::parse: comment lines and lines outside [from, to] blanked (line
+/// numbers unchanged). With `title`, line 1 becomes a placeholder title so that the tokenizer does not
+/// take the first value line for the file's title.
+std::string keep_lines(const OpenFastLines& lines, int from, int to, bool title) {
+  std::string out;
+  for (int n = 1; n <= lines.count(); ++n) {
+    const std::string& l = lines.line(n);
+    if (n == 1 && title && (is_comment_line(l) || is_blank_line(l)))
+      out += "AirfoilInfo";
+    else if (n >= from && n <= to && !is_comment_line(l))
+      out += l;
+    out += '\n';
+  }
+  return out;
+}
+
+/// Entry `key` (case-insensitive) after line `after`, first in file order; nullptr when none.
+const OpenFastEntry* entry_after(const OpenFastFile& f, std::string_view key, int after) {
+  const std::string k = to_lower(key);
+  for (const OpenFastEntry& e : f.entries())
+    if (e.line > after && to_lower(e.key) == k) return &e;
+  return nullptr;
+}
+
+void read_ua(const OpenFastFile& t, AirfoilUAData& ua) {
+  struct Field {
+    const char* key;
+    std::optional<double> AirfoilUAData::*member;
+  };
+  static const Field fields[] = {
+      {"alpha0", &AirfoilUAData::alpha0},       {"alpha1", &AirfoilUAData::alpha1},
+      {"alpha2", &AirfoilUAData::alpha2},       {"alphaUpper", &AirfoilUAData::alphaUpper},
+      {"alphaLower", &AirfoilUAData::alphaLower}, {"eta_e", &AirfoilUAData::eta_e},
+      {"C_nalpha", &AirfoilUAData::C_nalpha},   {"C_lalpha", &AirfoilUAData::C_lalpha},
+      {"T_f0", &AirfoilUAData::T_f0},           {"T_V0", &AirfoilUAData::T_V0},
+      {"T_p", &AirfoilUAData::T_p},             {"T_VL", &AirfoilUAData::T_VL},
+      {"b1", &AirfoilUAData::b1},               {"b2", &AirfoilUAData::b2},
+      {"b5", &AirfoilUAData::b5},               {"A1", &AirfoilUAData::A1},
+      {"A2", &AirfoilUAData::A2},               {"A5", &AirfoilUAData::A5},
+      {"S1", &AirfoilUAData::S1},               {"S2", &AirfoilUAData::S2},
+      {"S3", &AirfoilUAData::S3},               {"S4", &AirfoilUAData::S4},
+      {"Cn1", &AirfoilUAData::Cn1},             {"Cn2", &AirfoilUAData::Cn2},
+      {"St_sh", &AirfoilUAData::St_sh},         {"Cd0", &AirfoilUAData::Cd0},
+      {"Cm0", &AirfoilUAData::Cm0},             {"k0", &AirfoilUAData::k0},
+      {"k1", &AirfoilUAData::k1},               {"k2", &AirfoilUAData::k2},
+      {"k3", &AirfoilUAData::k3},               {"k1_hat", &AirfoilUAData::k1_hat},
+      {"x_cp_bar", &AirfoilUAData::x_cp_bar},   {"UACutout", &AirfoilUAData::UACutout},
+      {"UACutout_delta", &AirfoilUAData::UACutout_delta}, {"filtCutOff", &AirfoilUAData::filtCutOff},
+  };
+  for (const Field& fd : fields)
+    if (t.has(fd.key)) ua.*fd.member = t.get_double_or_default(fd.key);
+}
+
+/// Reads the NumAlf rows after line `num_alf_line` into `tab`.
+void read_rows(const OpenFastLines& lines, const OpenFastFile& t, int num_alf, int num_alf_line,
+               const AirfoilColumns& col, AirfoilTable& tab) {
+  const std::string file = lines.path().string();
+  const int needed = std::max({col.alpha, col.cl, col.cd, col.cm});
+  int at = num_alf_line;
+  for (int r = 0; r < num_alf; ++r) {
+    const std::optional<int> next = lines.next_content_line(at);
+    const std::string got = "table has " + std::to_string(r) + " rows, " + std::to_string(num_alf) + " expected: ";
+    if (!next)
+      throw InputError(t.where("NumAlf", got + "the file ends at line " + std::to_string(lines.count()) +
+                                             " (truncated table?)"));
+    const std::optional<std::vector<double>> row = parse_number_row(lines.line(*next));
+    if (!row)
+      throw InputError(t.where("NumAlf", got + "line " + std::to_string(*next) +
+                                             " is not a row of numbers (truncated table?)"));
+    if (static_cast<int>(row->size()) < needed)
+      throw InputError(whirl::where(file, *next, "",
+                                    "row has " + std::to_string(row->size()) + " numbers, the columns asked for "
+                                    "(InCol_Alfa/Cl/Cd/Cm = " + std::to_string(col.alpha) + "/" +
+                                        std::to_string(col.cl) + "/" + std::to_string(col.cd) + "/" +
+                                        std::to_string(col.cm) + ") need " + std::to_string(needed)));
+    struct Pick {
+      int column;
+      const char* name;
+      std::vector<double>* into;
+    };
+    const Pick picks[] = {{col.alpha, "Alpha", &tab.alpha_deg}, {col.cl, "Cl", &tab.cl}, {col.cd, "Cd", &tab.cd},
+                          {col.cm, "Cm", &tab.cm}};
+    for (const Pick& p : picks) {
+      if (p.column <= 0) continue;
+      const double v = (*row)[static_cast<std::size_t>(p.column - 1)];
+      if (!std::isfinite(v))
+        throw InputError(whirl::where(file, *next, p.name, std::isnan(v) ? "value is NaN" : "value is infinite"));
+      p.into->push_back(v);
+    }
+    const std::size_t n = tab.alpha_deg.size();
+    if (n >= 2 && !(tab.alpha_deg[n - 1] > tab.alpha_deg[n - 2]))
+      throw InputError(whirl::where(file, *next, "Alpha",
+                                    "must increase from row to row (" + number_text(tab.alpha_deg[n - 1]) +
+                                        " after " + number_text(tab.alpha_deg[n - 2]) + ")"));
+    tab.row_lines.push_back(*next);
+    at = *next;
+  }
+  tab.first_row_line = tab.row_lines.empty() ? 0 : tab.row_lines.front();
+}
+
+AirfoilTable read_table(const OpenFastLines& lines, int re_line, int num_alf_line, const AirfoilColumns& col) {
+  const OpenFastFile t = OpenFastFile::parse(keep_lines(lines, re_line, num_alf_line, false), lines.path());
+  AirfoilTable tab;
+  tab.re_line = re_line;
+  tab.num_alf_line = num_alf_line;
+  tab.re = t.get_double("Re");
+  require_positive(t, "Re", tab.re);
+  tab.user_prop = t.has("UserProp") || !t.has("Ctrl") ? t.get_double("UserProp") : t.get_double("Ctrl");
+  tab.ua.included = t.find_bool("InclUAdata").value_or(false);
+  if (tab.ua.included) read_ua(t, tab.ua);
+  const int num_alf = t.get_int("NumAlf");
+  if (num_alf < 1) throw InputError(t.where("NumAlf", "must be at least 1 (is " + std::to_string(num_alf) + ")"));
+  read_rows(lines, t, num_alf, num_alf_line, col, tab);
+  return tab;
+}
+
+void check_columns(const std::filesystem::path& file, const AirfoilColumns& c) {
+  if (c.alpha < 1 || c.cl < 1 || c.cd < 1 || c.cm < 0)
+    throw InputError(whirl::where(file.string(), 0, "InCol_*",
+                                  "airfoil table columns must be >= 1 (InCol_Cm >= 0), are " + std::to_string(c.alpha) +
+                                      "/" + std::to_string(c.cl) + "/" + std::to_string(c.cd) + "/" +
+                                      std::to_string(c.cm)));
+}
+
+}  // namespace
+
+AirfoilInput read_airfoil(const std::filesystem::path& file, const AirfoilColumns& columns) {
+  check_columns(file, columns);
+  const OpenFastLines lines = OpenFastLines::read(file);
+  if (lines.count() > 0 && !is_comment_line(lines.line(1)) && !is_blank_line(lines.line(1)))
+    throw InputError(whirl::where(file.string(), 1, "",
+                                  "the first line of an airfoil file must be a comment (starting with '!')"));
+  const OpenFastFile f = OpenFastFile::parse(keep_lines(lines, 1, lines.count(), true), file);
+
+  AirfoilInput a;
+  a.path = file;
+  a.name = file.stem().string();
+  const std::optional<double> order = f.get_double_or_default("InterpOrd");
+  a.interp_order_default = !order;
+  if (order) {
+    if (*order != 1.0 && *order != 3.0)
+      throw InputError(f.where("InterpOrd", "must be 1 (linear) or 3 (cubic spline) or \"default\" (is " +
+                                                number_text(*order) + ")"));
+    a.interp_order = static_cast<int>(*order);
+  }
+  if (f.has("RelThickness")) a.rel_thickness = f.get_double_or_default("RelThickness");
+  a.non_dim_area = f.get_double("NonDimArea");
+  const OpenFastEntry* coords = f.find("NumCoords");
+  if (coords && coords->tokens.size() == 1 && coords->tokens.front().rfind('@', 0) == 0) {
+    std::string name = unquoted(coords->tokens.front().substr(1));
+    std::replace(name.begin(), name.end(), '\\', '/');
+    a.coords_file = (file.parent_path() / name).lexically_normal();
+  } else {
+    a.num_coords = f.get_int("NumCoords");
+    require_nonnegative(f, "NumCoords", *a.num_coords);
+  }
+  if (f.has("BL_file")) a.bl_file = f.get_string("BL_file");
+
+  const int num_tabs = f.get_int("NumTabs");
+  if (num_tabs < 1) throw InputError(f.where("NumTabs", "must be at least 1 (is " + std::to_string(num_tabs) + ")"));
+  int cursor = f.find("NumTabs")->line;
+  for (int t = 1; t <= num_tabs; ++t) {
+    const OpenFastEntry* re = entry_after(f, "Re", cursor);
+    const std::string announced = std::to_string(num_tabs) + " tables announced, ";
+    if (!re)
+      throw InputError(f.where("NumTabs", announced + "no 'Re' line for table " + std::to_string(t) +
+                                              " after line " + std::to_string(cursor) + " (truncated file?)"));
+    const OpenFastEntry* num_alf = entry_after(f, "NumAlf", re->line);
+    if (!num_alf)
+      throw InputError(whirl::where(file.string(), re->line, "NumAlf",
+                                    "key not found after 'Re' of table " + std::to_string(t) + " (truncated file?)"));
+    a.tables.push_back(read_table(lines, re->line, num_alf->line, columns));
+    cursor = a.tables.back().row_lines.back();
+  }
+  return a;
+}
+
+}  // namespace whirl::io
