@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// Root-to-leaf kinematics of the body tree (seed 000 §3.2–3.3, seed 001 eq. 1–3), written once
+/// Root-to-leaf kinematics of the body tree [Branlard2019, §3.2–3.3; BranlardGeisler2022, eq. 1–3], written once
 /// for any scalar type T (double or ADChunk) and instantiated in kinematics.cpp.
 #include "src/dynamics/workspace.hpp"
 

@@ -1,5 +1,5 @@
 // FE mode shapes for Rayleigh–Ritz beams (src/fem/mode_shapes.hpp) against closed forms: the uniform
-// cantilever, the cantilever with a tip mass (seed 000 eq. 32), the rotating uniform beam, and the
+// cantilever, the cantilever with a tip mass [Branlard2019, eq. 32], the rotating uniform beam, and the
 // ElastoDyn polynomial fit.
 #include <gtest/gtest.h>
 
@@ -67,7 +67,7 @@ TEST(FemModeShapes, UniformCantileverShapesMatchExactModes) {
   }
 }
 
-// Seed 000 eq. 32 (Branlard 2019 §5.1): clamped-free uniform beam with a tip point mass Mt/M,
+// [Branlard2019, §5.1, eq. 32]: clamped-free uniform beam with a tip point mass Mt/M,
 // frequencies (β_j/L)² √(EI/m) with β_j the roots of the frequency equation (clampedTopMassBeta).
 TEST(FemModeShapes, TipMassMatchesSeedEquation32) {
   for (double ratio : {0.5, 2.0}) {
