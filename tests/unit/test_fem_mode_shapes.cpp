@@ -97,8 +97,8 @@ TEST(FemModeShapes, TipInertiaAndOffsetLowerTheFrequencies) {
   EXPECT_LT(fd, fJ);  // the offset mass also moves with the tip rotation
 }
 
-// Rotating uniform beam, hub radius 0 (Hodges & Rutkowski, AIAA J. 19(11) 1981, Table 1, also
-// Wright et al. 1982): first flap ω̄ = ω √(mL⁴/EI) = 3.6816, 5.5850, 11.2018 at Ω̄ = 1, 4, 10
+// Rotating uniform beam, hub radius 0 ([HodgesRutkowski1981, Table 1], also [Wright1982]):
+// first flap ω̄ = ω √(mL⁴/EI) = 3.6816, 5.5850, 11.2018 at Ω̄ = 1, 4, 10
 // (5 significant digits: 1e-4). In plane (softening −Ω² m): ω_edge² = ω_flap² − Ω² exactly when
 // EIy = EIz, the same eigenproblem shifted; checked to the dense eigensolver's ε κ(K) ~ 1e-7.
 TEST(FemModeShapes, RotatingUniformBeamMatchesHodgesRutkowski) {

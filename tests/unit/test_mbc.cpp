@@ -37,7 +37,7 @@ void expectSameEigenvalues(const Eigen::MatrixXd& A, std::vector<cd> expected) {
 // its pitch input) plus a first-order lag state ẋ_b = −x_b/τ; a tower DOF in the fixed frame; outputs
 // tower displacement and root moments k q_b + d u_b. In the rotating frame A is constant; seen from
 // the fixed frame the cyclic modes split by ±Ω (BW: ω_d − Ω, FW: ω_d + Ω), the k-th harmonic
-// coordinates (N ≥ 5) by ±kΩ, while collective and differential modes keep λ (Bir 2008, §3).
+// coordinates (N ≥ 5) by ±kΩ, while collective and differential modes keep λ [Bir2008, §3].
 struct IsotropicRotor {
   int N;
   double w = 4.0, zeta = 0.05, tau = 0.5, wt = 2.0, zt = 0.01, g = 3.0, k = 7.0, d = 0.25, Omega = 1.2;
