@@ -1,10 +1,10 @@
 #pragma once
 /// \file
-/// Linearization at an operating point (seed 001 eq. 25–26):
+/// Linearization at an operating point [BranlardGeisler2022, eq. 25–26]:
 ///   M δq̈ + C δq̇ + K δq = Q δu,  M = −∂e/∂q̈, C = −∂e/∂q̇, K = −∂e/∂q, Q = ∂e/∂u,
 /// on the active (non-frozen) coordinates; C, K, Q by chunked forward AD, M from the double
 /// assembly. State space x = [δq; δq̇]: A = [[0, I], [−M⁻¹K, −M⁻¹C]], B = [[0], [M⁻¹Q]] (solved
-/// with an LU of M, never inverted).
+/// with an LDLᵀ factorization of M, never inverted; ComputeError if M is not positive definite).
 #include <string>
 #include <vector>
 

@@ -3,7 +3,7 @@
 /// State-space model for controller design: ẋ = A x + B u, y = C x + D u around an operating point,
 /// with named states, inputs and outputs (units, operating-point values, rotating-frame blade).
 ///
-/// States x = [q; q̇] of the active coordinates (GUIDE §4), A and B from linearize(). Outputs
+/// States x = [q; q̇] of the active coordinates (notation, docs/architecture.md), A and B from linearize(). Outputs
 /// y = h(q, q̇, q̈) (Model::outputs) are differentiated by AD: with H_• = ∂h/∂• on the active
 /// coordinates and q̈ taken from the equations of motion, q̈ = A_q̈ x + B_q̈ u (the lower halves of A, B),
 ///   C = [H_q, H_q̇] + H_q̈ A_q̈,   D = H_u + H_q̈ B_q̈.

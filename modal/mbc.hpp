@@ -1,8 +1,8 @@
 #pragma once
 /// \file
-/// Multiblade coordinate (Coleman) transform of a linear time-periodic rotor model, after Bir,
+/// Multiblade coordinate (Coleman) transform of a linear time-periodic rotor model, after [Bir2008]:
 /// "Multi-Blade Coordinate Transformation and its Application to Wind Turbine Analysis"
-/// (NREL/CP-500-42553, 2008) and the MBC3 user's guide (NREL/TP-500-44327).
+/// (NREL/CP-500-42553, 2008) and the MBC3 user's guide [Bir2010] (NREL/TP-500-44327).
 ///
 /// Frames. Rotating-frame quantities q_b belong to blade b = 0 … N−1 (blade 1 is b = 0), whose
 /// azimuth is ψ_b = ψ + 2πb/N, ψ being the azimuth of blade 1. Each set of N "same" rotating
@@ -10,7 +10,7 @@
 ///   q_b = q_0 + Σ_{k=1}^{K} (q_kc cos kψ_b + q_ks sin kψ_b) [+ q_d (−1)^(b+1) for even N],
 ///   K = (N−1)/2 (integer division), i.e.
 ///   q_0 = (1/N) Σ_b q_b, q_kc = (2/N) Σ_b q_b cos kψ_b, q_ks = (2/N) Σ_b q_b sin kψ_b,
-///   q_d = (1/N) Σ_b (−1)^(b+1) q_b (GUIDE §4, blades numbered from 1).
+///   q_d = (1/N) Σ_b (−1)^(b+1) q_b ([Bir2008]; docs/architecture.md, notation; blades numbered from 1).
 /// In matrix form q = T1(ψ) q_NR. The transformed coordinates of a set take the slots of the set in
 /// the original vector: blade 1's slot holds q_0, blade 2's q_1c, blade 3's q_1s, then q_2c, q_2s, …
 /// and q_d last for even N (as MBC3 does for N = 3).
@@ -48,8 +48,8 @@ struct MbcLayout {
   std::vector<int> output_blade;   ///< (dim ny, or empty = all outputs fixed) blade of each output
 };
 
-/// Layout for x = [q (dim n); q̇ (dim n); x1 (first-order states)], whirl's own ordering (GUIDE §4)
-/// and that of an OpenFAST model with ElastoDyn states only.
+/// Layout for x = [q (dim n); q̇ (dim n); x1 (first-order states)], whirl's own ordering
+/// (docs/architecture.md, notation) and that of an OpenFAST model with ElastoDyn states only.
 /// \param[in] dof_blade blade of each DOF q (dim n), −1 = fixed frame.
 /// \param[in] first_order_blade blade of each first-order state (dim nx − 2n).
 MbcLayout secondOrderLayout(int num_blades, const std::vector<int>& dof_blade,

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// Inertia and gravity forces of one body on its own virtual motions, body-frame components
-/// (seed 001 eq. 13–15, A1–A19):
+/// [BranlardGeisler2022, eq. 13–15, A1–A19]:
 ///   F = −∫ a_P dm,  T = −∫ s × a_P dm (about the origin),  H = −Dᵀ ∫ Pᵀ a_P dm,
 /// with a_P = â + A s + 2 W ṡ + s̈, â = a − g, A = α̃ + ω̃ω̃, W = ω̃, s = P c.
 ///

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
-/// Root-to-leaf kinematics of the body tree (seed 000 §3.2–3.3, seed 001 eq. 1–3), written once
-/// for any scalar type T (double or ADChunk) and instantiated in kinematics.cpp.
+/// Root-to-leaf kinematics of the body tree [Branlard2019, §3.2–3.3; BranlardGeisler2022, eq. 1–3], written once
+/// for any scalar type T (double or ADChunk); body in kinematics.hxx, instantiated in residual.cpp.
 #include "src/dynamics/workspace.hpp"
 
 namespace whirl {

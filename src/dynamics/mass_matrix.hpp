@@ -1,9 +1,9 @@
 #pragma once
 /// \file
-/// Generalized mass matrix assembled in double: M(q) = Σ_b Bᵀ M_b B (seed 000 eq. 8), with
+/// Generalized mass matrix assembled in double: M(q) = Σ_b Bᵀ M_b B [Branlard2019, eq. 8], with
 /// B = [Rᵀ Jv; Rᵀ Jω; E_b] mapping q̈ to the body-frame accelerations and the body's q̈_e, and M_b
-/// the body mass matrix from its shape integrals (seed 000 eq. 2, seed 001 A2–A7). Independent of
-/// the residual's q̈ path: tests check M = −∂e/∂q̈.
+/// the body mass matrix from its shape integrals [Branlard2019, eq. 2; BranlardGeisler2022, eq. A2–A7].
+/// Independent of the residual's q̈ path: tests check M = −∂e/∂q̈.
 #include "src/dynamics/workspace.hpp"
 
 namespace whirl {

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
-/// The nonlinear equations of motion as a residual (seed 001 eq. 22):
-///   e(q, q̇, q̈, u) = F(q, q̇, u) − M(q) q̈ = f + f*   (Kane's method, seed 001 eq. 4–21)
+/// The nonlinear equations of motion as a residual [BranlardGeisler2022, eq. 22]:
+///   e(q, q̇, q̈, u) = F(q, q̇, u) − M(q) q̈ = f + f*   (Kane's method [BranlardGeisler2022, eq. 4–21])
 /// written once for any scalar T and instantiated for double and ADChunk in residual.cpp.
 #include "src/dynamics/aero_inflow.hpp"
 #include "src/dynamics/workspace.hpp"

@@ -1,7 +1,8 @@
 #pragma once
 /// \file
 /// Scalar types the equations are instantiated for: double, and forward-mode AD with a fixed-size
-/// chunk of derivative directions (GUIDE §3: no heap allocation per operation, 8 directions a pass).
+/// chunk of derivative directions: no heap allocation per operation, 8 directions a pass (AD
+/// performance recipe, docs/architecture.md).
 #include <Eigen/Core>
 #include <unsupported/Eigen/AutoDiff>
 

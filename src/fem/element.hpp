@@ -55,7 +55,7 @@ ShearParameters shearParameters(double L, const Section& a, const Section& b, bo
 Mat12 elementStiffness(double L, const Section& a, const Section& b, const ShearParameters& phi);
 
 /// Geometric stiffness per unit axial force (tension positive) [1/m]: ∫ (v'ᵀv' + w'ᵀw') dx.
-/// The element's contribution to K is N × this (seed 000 eq. 26 in finite-element form).
+/// The element's contribution to K is N × this ([Branlard2019, eq. 26] in finite-element form).
 Mat12 elementGeometricStiffness(double L, const ShearParameters& phi);
 
 /// Distributed (Winkler) springs per unit length k = (k_x, k_y, k_z) [N/m²] at both ends, linear

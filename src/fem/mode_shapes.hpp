@@ -31,7 +31,7 @@ struct ModeShapeInput {
   TipBody tip;
   /// Rotor speed Ω [rad/s] about `rotation_axis` through the point x = −hub_radius of the body x axis
   /// (a blade on a hub): centrifugal tension N(x) = Ω² ∫ₓᴸ m (r_h + s) ds (+ tip body) stiffens bending
-  /// (seed 000 eq. 21–27), and the in-plane direction softens by −Ω² m (the centrifugal field grows
+  /// [Branlard2019, eq. 21–27], and the in-plane direction softens by −Ω² m (the centrifugal field grows
   /// with the distance from the axis).
   double rotor_speed = 0;
   double hub_radius = 0;            ///< [m]

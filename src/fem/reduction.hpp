@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// Superelement reduction of a free FE model (seed 000 §3.4): a basis Φ (n × r) with u = Φ p.
+/// Superelement reduction of a free FE model [Branlard2019, §3.4]: a basis Φ (n × r) with u = Φ p.
 /// - Guyan: p = interface DOFs u_b; Φ = [I; −K_ii⁻¹ K_ib] (static constraint modes).
 /// - Craig–Bampton: p = [u_b; η]; Φ = [[I, 0], [−K_ii⁻¹ K_ib, Φ_i]] with Φ_i the lowest
 ///   fixed-interface modes (K_ii − ω² M_ii) φ = 0.

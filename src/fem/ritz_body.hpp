@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// An FE model (full or reduced) as a whirl body (seed 000 §3.4, eq. 19): a Ritz body whose shape
+/// An FE model (full or reduced) as a whirl body [Branlard2019, §3.4, eq. 19]: a Ritz body whose shape
 /// "functions" are discrete vectors, the columns of a basis Φ over the free DOFs (identity for the
 /// full model, Guyan or Craig–Bampton for a reduced one). With u = Φ p and c = [1; p]:
 ///   m1 = ∫ P dm · T,  S_jl = Tᵀ (∫ P_jᵀ P_l dm) T,  T = blockdiag(1, Φ)  (direction-wise, so the

@@ -24,7 +24,7 @@ Mat3 readInertia(const CaseNode& n) {
     if ((J - J.transpose()).norm() > 1e-9 * std::max(1.0, J.norm())) n.fail("the inertia matrix is not symmetric");
   }
   // The rigid-body mass matrix needs J positive semi-definite. Lumped models (ElastoDyn's nacelle
-  // with only a yaw inertia, the nacelle of seed 000 §6) may break the triangle inequality of a
+  // with only a yaw inertia, the nacelle of [Branlard2019, §6]) may break the triangle inequality of a
   // real mass distribution; that is accepted.
   const Vec3 pm = Eigen::SelfAdjointEigenSolver<Mat3>(J).eigenvalues();
   if (pm.minCoeff() < -1e-9 * std::max(1.0, J.trace()))

@@ -92,7 +92,7 @@ std::vector<ShapePtr> readShapes(const CaseNode& beam, const BeamProperties& pro
       s.allowKeys({"name", "type", "direction", "coefficients", "reference_length", "offset", "normalize"});
       const auto [dy, dz] = readDirection(s);
       std::vector<double> a = readCoefficients(s.at("coefficients"));
-      // normalize: divide by Σ a_k so that u(reference_length) = 1 (seed 001 eq. 47, YAMS).
+      // normalize: divide by Σ a_k so that u(reference_length) = 1 ([BranlardGeisler2022, eq. 47], YAMS).
       if (s.find("normalize") && s.at("normalize").boolean()) {
         double sum = 0;
         for (double c : a) sum += c;

@@ -6,8 +6,8 @@
 ///   c = [1; q_e; q_i q_j (i <= j)]   (dim nc)
 /// collects the constant, the ne elastic coordinates q_e and, when axial shortening is on, their
 /// pairwise products (the radial shortening of a bent beam, -1/2 ∫ ν·ν dx, as in ElastoDyn).
-/// All inertia terms of Kane's equations (seed 001 eq. 12–21, App. A) are bilinear in c, so the
-/// body carries only the shape integrals m1 = ∫ P dm and S_jl = ∫ P_jᵀ P_l dm (seed 000 App. A
+/// All inertia terms of Kane's equations [BranlardGeisler2022, eq. 12–21, App. A] are bilinear in c, so the
+/// body carries only the shape integrals m1 = ∫ P dm and S_jl = ∫ P_jᵀ P_l dm ([Branlard2019, App. A]
 /// with the quadratic terms appended). A rigid body is the case ne = 0, nc = 1, P = [ρ].
 #include <array>
 #include <string>

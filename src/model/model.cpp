@@ -107,7 +107,7 @@ std::vector<ChainStep> buildChain(const Model& m, int i) {
       s.point = b.parent_point;
       steps.push_back(s);
     }
-    // Small rotations of the point, applied in the order y, z, x (seed 000 §4.1: R_y R_z R_x).
+    // Small rotations of the point, applied in the order y, z, x ([Branlard2019, §4.1]: R_y R_z R_x).
     for (int axis : {1, 2, 0}) {
       if (p.inertia.ne == 0 || pt.theta.row(axis).isZero(0)) continue;
       ChainStep s;

@@ -7,7 +7,7 @@
 /// parent's frame through the attachment chain
 ///   parent point (elastic displacement P c and small rotations θ = Θ q_e, applied y, z, x)
 ///   → constant offset (attachment frame) → constant rotation → joint.
-/// DOF order (seed 000 §3.1): bodies by depth in the tree, for each body its joint coordinates
+/// DOF order [Branlard2019, §3.1]: bodies by depth in the tree, for each body its joint coordinates
 /// then its elastic coordinates.
 #include <optional>
 #include <string>
@@ -151,7 +151,7 @@ struct Model {
 /// Number of coordinates a joint type carries.
 int jointDofCount(JointType t);
 
-/// Orders bodies parents-first (by depth), numbers the DOFs (seed 000 §3.1), builds the chains and
+/// Orders bodies parents-first (by depth), numbers the DOFs [Branlard2019, §3.1], builds the chains and
 /// checks the data: names unique, parents and points exist, masses ≥ 0, inertia positive
 /// semi-definite, everything finite. Bodies must carry their DOFs in `dofs` with `body`/`local`
 /// set; DOFs are renumbered. Throws InputError naming the body/DOF and the reason.

@@ -146,7 +146,7 @@ BeamBody buildBeamBody(const BeamProperties& p, const std::vector<ShapePtr>& sha
       for (int l = 0; l < 3; ++l) in.S[3 * j + l].noalias() += (w * m) * P.row(j).transpose() * P.row(l);
     // Polar inertia of the section turning with the torsion (eq. 31): section points at (y, z)
     // move by t_x (−z, y); with ∫y² = ∫z² = j_G/2 and ∫yz = 0 per unit length. Thin-beam
-    // convention (seed 000 eq. 31, ElastoDyn): sections have rotary inertia about the beam axis
+    // convention ([Branlard2019, eq. 31], ElastoDyn): sections have rotary inertia about the beam axis
     // only, so S_xx gets −j_G/2, which cancels the j_G/2 of S_yy, S_zz in J_yy and J_zz.
     if (jG > 0) {
       const double h = 0.5 * w * jG;

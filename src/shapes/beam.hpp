@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// A thin flexible beam (seed 000 §4) turned into a whirl body: spanwise properties and shape
+/// A thin flexible beam [Branlard2019, §4] turned into a whirl body: spanwise properties and shape
 /// functions → shape integrals (mass, first moments, S_jl), elastic stiffness (eq. 20), damping,
 /// and points (mean-line positions and small rotations) for children and loads.
 ///
@@ -10,7 +10,7 @@
 /// inertia of the sections about the beam axis only, the thin-beam convention).
 /// With axial shortening on, a bent beam's points move by −½ Σ q_i q_j ∫₀ˣ ν_i·ν_j dx' along x:
 /// the geometric stiffness of any axial load (gravity, masses carried, centrifugal, body
-/// acceleration) and the axial-inertia terms of the mass matrix (seed 000 eq. 26–29) follow.
+/// acceleration) and the axial-inertia terms of the mass matrix [Branlard2019, eq. 26–29] follow.
 #include <string>
 #include <vector>
 

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// Bending moments of a Rayleigh–Ritz beam from its elastic curvature (Euler–Bernoulli), consistent
-/// with the stiffness of eq. 20 (seed 000): at station x, with the curvatures rotated into the
+/// with the stiffness of [Branlard2019, eq. 20]: at station x, with the curvatures rotated into the
 /// principal axes by the structural twist θ,
 ///   κ1 = cos θ u_y'' + sin θ u_z'',  κ2 = −sin θ u_y'' + cos θ u_z'',  m1 = EIy κ1,  m2 = EIz κ2,
 /// and back to body axes: m_y = cos θ m1 − sin θ m2, m_z = sin θ m1 + cos θ m2, u'' = Σ_j φ_j''(x) q_j.

@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// Shape functions of a thin beam along its body x axis (seed 000 §4.1): displacement of the mean
+/// Shape functions of a thin beam along its body x axis [Branlard2019, §4.1]: displacement of the mean
 /// line along y and z, torsion about x, and their derivatives along x. One concept: a function of
 /// the spanwise coordinate x ∈ [0, L] that can be evaluated anywhere.
 #include <memory>
@@ -33,19 +33,19 @@ using ShapePtr = std::shared_ptr<const Shape>;
 ShapePtr polynomialShape(std::string name, double length, std::vector<double> powers, double dy, double dz,
                          double x0 = 0.0);
 
-/// u = 1 − cos(π x / 2L) along (dy, dz): the massless beam with top mass (seed 000 §5.1).
+/// u = 1 − cos(π x / 2L) along (dy, dz): the massless beam with top mass [Branlard2019, §5.1].
 ShapePtr oneMinusCosShape(std::string name, double length, double dy, double dz);
 
-/// Mode j (1-based) of a uniform clamped-free beam with tip mass ratio Mt/M (seed 000 eq. 32),
+/// Mode j (1-based) of a uniform clamped-free beam with tip mass ratio Mt/M [Branlard2019, eq. 32],
 /// along (dy, dz), scaled to unit tip displacement.
 ShapePtr clampedTopMassShape(std::string name, double length, int j, double tip_mass_ratio, double dy, double dz);
 
-/// β_j of seed 000 eq. 32: root of 1 + cosh β cos β − β Mt/M (sin β cosh β − cos β sinh β) = 0
+/// β_j of [Branlard2019, eq. 32]: root of 1 + cosh β cos β − β Mt/M (sin β cosh β − cos β sinh β) = 0
 /// closest to (2j−1)π/2.
 double clampedTopMassBeta(int j, double tip_mass_ratio);
 
 /// Torsion mode j (1-based) of a uniform clamped-free shaft: t_x = sin(β_j x/L), β_j = π/2 + (j−1)π
-/// (seed 000 §5.3).
+/// [Branlard2019, §5.3].
 ShapePtr torsionSineShape(std::string name, double length, int j);
 
 /// Tabulated shape: columns at increasing stations x (m). Missing derivatives (empty vectors) are

@@ -25,7 +25,7 @@ TEST(CliModes, TowerForeAftOfTheTwoDofCaseAsCsv) {
     if (line.find(",tower FA 1,") == std::string::npos) continue;
     found = true;
     const double f = std::stod(line.substr(line.find(",tower FA 1,") + 12));
-    EXPECT_NEAR(f, 0.3272, 0.00005);  // seed 001 §4.4, 4 printed digits
+    EXPECT_NEAR(f, 0.3272, 0.00005);  // [BranlardGeisler2022, §4.4], 4 printed digits
   }
   EXPECT_TRUE(found) << r.out;
   EXPECT_THAT(r.out, HasSubstr("1,azimuth,0,0,0"));  // the rigid-body mode at frequency 0, sorted first

@@ -17,7 +17,7 @@ using ::testing::HasSubstr;
 namespace fs = std::filesystem;
 
 // cases/tower_topmass/tower_topmass_fem.yaml: FE frequencies of the case's FE settings are the exact
-// eq. 32 values of seed 000 (uniform beam, Mt/M = 0.5); its current shapes are those same FE modes.
+// [Branlard2019, eq. 32] values (uniform beam, Mt/M = 0.5); its current shapes are those same FE modes.
 TEST(CliShapes, TowerTopMassCaseAsJson) {
   const auto r = test::whirl("shapes cases/tower_topmass/tower_topmass_fem.yaml --format json");
   ASSERT_EQ(r.code, 0) << r.err;

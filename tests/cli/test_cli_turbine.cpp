@@ -62,7 +62,7 @@ TEST(CliCompare, ParkedNrel5mwWithinOnePointFivePercentOfTable91) {
   const auto modes = test::whirl("modes " + kFst + " --set RotSpeed=0 --set GenDOF=False --format csv");
   ASSERT_EQ(modes.code, 0) << modes.err;
   std::ofstream(dir / "parked.csv") << modes.out;
-  // Jonkman et al. 2009 (NREL/TP-500-38060) Table 9-1, FAST column; tolerance of the issue: 1.5 %.
+  // [Jonkman2009, Table 9-1], FAST column (cases/nrel5mw/table9_1.csv); tolerance of the issue: 1.5 %.
   const auto ok = test::whirl("compare '" + (dir / "parked.csv").string() + "' cases/nrel5mw/table9_1.csv --tol-rel 0.015");
   EXPECT_EQ(ok.code, 0) << ok.out << ok.err;
   EXPECT_THAT(ok.out, HasSubstr("13 modes compared, 0 beyond"));
@@ -75,7 +75,8 @@ TEST(CliLin, OpenFast9rpmMatchesMbc3Names) {
   const std::string d = "tests/data/openfast-lin/rotating-9rpm/";
   const auto r = test::whirl("lin " + d + "Main.1.lin " + d + "Main.12.lin " + d + "Main.24.lin --format csv");
   ASSERT_EQ(r.code, 0) << r.err;
-  // ../shared/ref/openfast_rotating_9rpm_mbc.csv (MBC3 of these files), 4 printed digits.
+  // MBC3 [Bir2010] of these three files, averaged over their azimuths (as OpenFAST's python toolbox
+  // stores it for them; the same values as tests/unit/test_mbc_openfast.cpp), 4 printed digits.
   const std::vector<std::pair<std::string, double>> ref = {
       {"flap 1 BW", 0.5878}, {"flap 1 collective", 0.7225}, {"flap 1 FW", 0.8416}, {"edge 1 BW", 0.9371},
       {"edge 1 FW", 1.2371}, {"flap 2 BW", 1.8373},         {"flap 2 collective", 1.9870}, {"flap 2 FW", 2.1337}};

@@ -1,5 +1,5 @@
 // readCase builds the models it should: a rigid pendulum (closed form), the tower with top mass of
-// cases/README.md (seed 000 §5.1, same numbers as test_tower_topmass_engine.cpp), tabulated and CSV
+// cases/README.md ([Branlard2019, §5.1], same numbers as test_tower_topmass_engine.cpp), tabulated and CSV
 // properties, shapes, rotations, joints, DOF settings and loads.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -79,13 +79,13 @@ TEST(CaseFile, ReadmeTowerExampleReproducesSeed000Sec51) {
   const std::string path = tmp.write("tower.yaml", readmeExample());
   constexpr double L = 100, EI = 2e12, mpl = 9e3, g = 9.81, Mt = 5e5;
   const double Mq = mpl * L * (3 * pi - 8) / (2 * pi), Kq = EI * pow(pi, 4) / (32 * pow(L, 3));
-  // Beam alone, no gravity: Mq = m L (3π − 8)/(2π), Kq = EI π⁴/(32 L³) (seed 000 §5.1, exact).
+  // Beam alone, no gravity: Mq = m L (3π − 8)/(2π), Kq = EI π⁴/(32 L³) ([Branlard2019, §5.1], exact).
   const LinearModel a = lin(readCase(path, {{"gravity", "0"}, {"bodies.top mass.mass", "0"}}));
   ASSERT_EQ(a.dof_names, std::vector<std::string>{"tower FA 1"});
   EXPECT_NEAR(a.M(0, 0), Mq, 1e-9 * Mq);
   EXPECT_NEAR(a.K(0, 0), Kq, 1e-9 * Kq);
   // As written (top mass 5e5 kg, g = 9.81): the top mass adds Mt (unit tip displacement) and the
-  // geometric stiffness K_T/Kq = −Mt g/Pcr − (M g/Pcr)(1/2 − 2/π²), seed 000 §5.1 (exact).
+  // geometric stiffness K_T/Kq = −Mt g/Pcr − (M g/Pcr)(1/2 − 2/π²), [Branlard2019, §5.1] (exact).
   const LinearModel b = lin(readCase(path));
   const double Pcr = pi * pi * EI / (4 * L * L), M = mpl * L;
   EXPECT_NEAR(b.M(0, 0), Mq + Mt, 1e-9 * (Mq + Mt));

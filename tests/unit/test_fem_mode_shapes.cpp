@@ -1,5 +1,5 @@
 // FE mode shapes for Rayleigh–Ritz beams (src/fem/mode_shapes.hpp) against closed forms: the uniform
-// cantilever, the cantilever with a tip mass (seed 000 eq. 32), the rotating uniform beam, and the
+// cantilever, the cantilever with a tip mass [Branlard2019, eq. 32], the rotating uniform beam, and the
 // ElastoDyn polynomial fit.
 #include <gtest/gtest.h>
 
@@ -67,7 +67,7 @@ TEST(FemModeShapes, UniformCantileverShapesMatchExactModes) {
   }
 }
 
-// Seed 000 eq. 32 (Branlard 2019 §5.1): clamped-free uniform beam with a tip point mass Mt/M,
+// [Branlard2019, §5.1, eq. 32]: clamped-free uniform beam with a tip point mass Mt/M,
 // frequencies (β_j/L)² √(EI/m) with β_j the roots of the frequency equation (clampedTopMassBeta).
 TEST(FemModeShapes, TipMassMatchesSeedEquation32) {
   for (double ratio : {0.5, 2.0}) {
@@ -97,8 +97,8 @@ TEST(FemModeShapes, TipInertiaAndOffsetLowerTheFrequencies) {
   EXPECT_LT(fd, fJ);  // the offset mass also moves with the tip rotation
 }
 
-// Rotating uniform beam, hub radius 0 (Hodges & Rutkowski, AIAA J. 19(11) 1981, Table 1, also
-// Wright et al. 1982): first flap ω̄ = ω √(mL⁴/EI) = 3.6816, 5.5850, 11.2018 at Ω̄ = 1, 4, 10
+// Rotating uniform beam, hub radius 0 ([HodgesRutkowski1981, Table 1], also [Wright1982]):
+// first flap ω̄ = ω √(mL⁴/EI) = 3.6816, 5.5850, 11.2018 at Ω̄ = 1, 4, 10
 // (5 significant digits: 1e-4). In plane (softening −Ω² m): ω_edge² = ω_flap² − Ω² exactly when
 // EIy = EIz, the same eigenproblem shifted; checked to the dense eigensolver's ε κ(K) ~ 1e-7.
 TEST(FemModeShapes, RotatingUniformBeamMatchesHodgesRutkowski) {

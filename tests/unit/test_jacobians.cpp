@@ -1,4 +1,4 @@
-// Cross-checks of independent paths (GUIDE §3, principle 4):
+// Cross-checks of independent paths (CONTRIBUTING.md, tests: cross-check independent paths):
 //  - the AD Jacobians ∂e/∂q, ∂e/∂q̇, ∂e/∂u equal central finite differences;
 //  - ∂e/∂q̈ (AD) equals the mass matrix assembled in double, to round-off;
 //  - the assembled mass matrix is symmetric;

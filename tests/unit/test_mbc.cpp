@@ -37,7 +37,7 @@ void expectSameEigenvalues(const Eigen::MatrixXd& A, std::vector<cd> expected) {
 // its pitch input) plus a first-order lag state ẋ_b = −x_b/τ; a tower DOF in the fixed frame; outputs
 // tower displacement and root moments k q_b + d u_b. In the rotating frame A is constant; seen from
 // the fixed frame the cyclic modes split by ±Ω (BW: ω_d − Ω, FW: ω_d + Ω), the k-th harmonic
-// coordinates (N ≥ 5) by ±kΩ, while collective and differential modes keep λ (Bir 2008, §3).
+// coordinates (N ≥ 5) by ±kΩ, while collective and differential modes keep λ [Bir2008, §3].
 struct IsotropicRotor {
   int N;
   double w = 4.0, zeta = 0.05, tau = 0.5, wt = 2.0, zt = 0.01, g = 3.0, k = 7.0, d = 0.25, Omega = 1.2;
@@ -133,7 +133,8 @@ TEST_P(IsotropicRotorTest, WhirlSplitAndTimeInvariance) {
 INSTANTIATE_TEST_SUITE_P(Blades, IsotropicRotorTest, ::testing::Values(3, 4, 5));
 
 // Blade values from multiblade coordinates, row b of T1 for 4 blades: q_b = q0 + qc cos ψ_b +
-// qs sin ψ_b + qd (−1)^b (GUIDE §4, b = 1 … 4), read through C_NR = C T1 of a fixed output y = q_1.
+// qs sin ψ_b + qd (−1)^b ([Bir2008]; docs/architecture.md, notation; b = 1 … 4), read through
+// C_NR = C T1 of a fixed output y = q_1.
 TEST(Mbc, FourBladeBasisRows) {
   whirl::MbcLayout L;
   L.num_blades = 4;

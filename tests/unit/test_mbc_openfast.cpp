@@ -1,5 +1,5 @@
-// Multiblade transform of OpenFAST .lin files (tests/data/openfast-lin, copied from
-// shared/data/openfast-lin) against the MBC3 result of the same files.
+// Multiblade transform of OpenFAST .lin files (tests/data/openfast-lin, see tests/data/openfast/README.md)
+// against the MBC3 [Bir2010] result of the same files.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -44,8 +44,8 @@ Point campbellPoint(const std::vector<std::string>& files) {
   return p;
 }
 
-// Source: shared/ref/openfast_rotating_9rpm_mbc.csv — MBC3 of rotating-9rpm/Main.{1,12,24}.lin
-// averaged over the 3 azimuths (OpenFAST python toolbox), printed with 4 decimals. Tolerance: half
+// Source: MBC3 [Bir2010] of tests/data/openfast-lin/rotating-9rpm/Main.{1,12,24}.lin averaged over
+// the 3 azimuths, as stored by OpenFAST's python toolbox for these files, printed with 4 decimals. Tolerance: half
 // a unit of the 4th decimal, the rounding of the printed values.
 TEST(MbcOpenFast, Rotating9rpmMatchesMbc3) {
   struct Row {

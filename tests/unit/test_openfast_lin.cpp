@@ -1,5 +1,5 @@
-// OpenFAST .lin reader: the example files of tests/data/openfast-lin (copied from
-// shared/data/openfast-lin), a synthetic v5-style file with inputs, outputs and B, C, D, and
+// OpenFAST .lin reader: the example files of tests/data/openfast-lin (OpenFAST output, see
+// tests/data/openfast/README.md), a synthetic v5-style file with inputs, outputs and B, C, D, and
 // broken files (missing, truncated, non-numeric) written at test time.
 #include <gtest/gtest.h>
 

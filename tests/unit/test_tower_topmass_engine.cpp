@@ -1,4 +1,4 @@
-// The general engine on the uniform tower with a top mass (seed 000 §5.1), built in code:
+// The general engine on the uniform tower with a top mass [Branlard2019, §5.1], built in code:
 // analytic Mq, Kq and geometric-stiffness ratios for u0 = 1 − cos(πx/2L).
 #include <gtest/gtest.h>
 
@@ -53,7 +53,7 @@ LinearModel lin(const Model& m) { return linearize(m, solveOperatingPoint(m, ini
 TEST(TowerTopMass, MassAndStiffnessMatchSeed000Sec51) {
   const double Mt = 0;  // beam alone
   const LinearModel l = lin(tower(Mt, 0.0));
-  // Seed 000 §5.1: Mq = m L (3π − 8)/(2π), Kq = EI π⁴/(32 L³) (exact).
+  // [Branlard2019, §5.1]: Mq = m L (3π − 8)/(2π), Kq = EI π⁴/(32 L³) (exact).
   EXPECT_NEAR(l.M(0, 0), mpl * L * (3 * pi - 8) / (2 * pi), 1e-9 * l.M(0, 0));
   EXPECT_NEAR(l.K(0, 0), EI * pow(pi, 4) / (32 * pow(L, 3)), 1e-9 * l.K(0, 0));
 }
@@ -65,7 +65,7 @@ TEST(TowerTopMass, GeometricStiffnessRatiosMatchSeed000Sec51) {
   for (double ratio : {0.1, 0.5, 1.0, 2.0}) {
     const double Mt = ratio * M;
     const double Kg = lin(tower(Mt, g)).K(0, 0) - lin(tower(Mt, 0.0)).K(0, 0);
-    // K_T/Kq = −Mt g/Pcr (top mass) − (M g/Pcr)(1/2 − 2/π²) (self weight), seed 000 §5.1 (exact).
+    // K_T/Kq = −Mt g/Pcr (top mass) − (M g/Pcr)(1/2 − 2/π²) (self weight), [Branlard2019, §5.1] (exact).
     const double expected = -Mt * g / Pcr - (M * g / Pcr) * (0.5 - 2 / (pi * pi));
     EXPECT_NEAR(Kg / Kq, expected, 1e-9) << "Mt/M = " << ratio;
   }

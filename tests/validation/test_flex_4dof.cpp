@@ -1,4 +1,4 @@
-// Seed 000 §6 (Branlard 2019): four-DOF turbine (tower fore-aft, shaft rotation, two blade flaps).
+// [Branlard2019, §6]: four-DOF turbine (tower fore-aft, shaft rotation, two blade flaps).
 // Mq and Kq at q = [1 1 1 1] (eq. 36, the shaft angle is 1 rad), the tower and blade body mass
 // matrices at unit deflection, and the tower's geometric stiffness from the overhead mass and its
 // own weight.
@@ -35,7 +35,7 @@ TEST(Flex4Dof, MassAndStiffnessAtUnitCoordinates) {
   std::map<std::string, double> c = {{"Mq_11", M(0, 0)}, {"Mq_13", M(0, 2)}, {"Mq_14", M(0, 3)}, {"Mq_22", M(1, 1)},
                                      {"Mq_33", M(2, 2)}, {"Mq_44", M(3, 3)}, {"Kq_11", K(0, 0)}, {"Kq_33", K(2, 2)},
                                      {"Kq_44", K(3, 3)}};
-  // Body matrices, 1-based (i, j) as printed in the seed: rows/columns x, y, z, θx, θy, θz, shape.
+  // Body matrices, 1-based (i, j) as printed in the paper: rows/columns x, y, z, θx, θy, θz, shape.
   const MatX Mt = bodyMatrixAt(m, "tower", q), Mb = bodyMatrixAt(m, "blade 1", q);
   for (auto [i, j] : std::vector<std::pair<int, int>>{{1, 1}, {1, 5}, {2, 4}, {2, 6}, {3, 5}, {3, 7},
                                                       {4, 4}, {4, 6}, {5, 5}, {5, 7}, {6, 6}})

@@ -1,5 +1,5 @@
-// Seed 001 §4.6 and App. E3 (Branlard & Geisler 2022): three-DOF floating turbine (surge x, pitch
-// φ, tower fore-aft q_T) as a case of the general engine. The seed gives no floater data; the case
+// [BranlardGeisler2022, §4.6 and App. E3]: three-DOF floating turbine (surge x, pitch
+// φ, tower fore-aft q_T) as a case of the general engine. The paper gives no floater data; the case
 // uses those of the public YAMS script (cases/floating_3dof/floating_3dof.yaml). Checked against
 // the closed form: the linear mass and stiffness at q = 0 (E27–E45 linearized, as the YAMS
 // generated code gives them) and the legible nonlinear mass terms E27, E29, E30, E32 at several
@@ -105,7 +105,7 @@ TEST(Floating3Dof, LinearMassAndStiffnessMatchAppendixE3) {
       EXPECT_NEAR(-J(dofs[r], c), expected, tol) << "K" << r + 1 << c + 1;
     }
   // Pitch and fore-aft frequencies: the engine at q = 0 against the closed form with the
-  // conservative (symmetric) K23. The seed prints 0.099 Hz and 0.799 Hz for its YAMS model
+  // conservative (symmetric) K23. The paper prints 0.099 Hz and 0.799 Hz for its YAMS model
   // (OpenFAST: 0.095, 0.795) without giving the floater data; with the YAMS script's data these
   // come out 0.1006 and 0.7984 (README), 0.7981 with E3's non-symmetric K23.
   Kc(1, 2) = Kc(2, 1);

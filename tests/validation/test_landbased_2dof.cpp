@@ -1,4 +1,4 @@
-// Seed 001 §4.4 (Branlard & Geisler 2022): two-DOF land-based NREL 5MW (tower fore-aft + azimuth).
+// [BranlardGeisler2022, §4.4]: two-DOF land-based NREL 5MW (tower fore-aft + azimuth).
 // ν_y, Me, Ke, the two geometric stiffnesses, ω_e, Mq, Kq and the fore-aft frequency, each from the
 // general engine (the closed form of eq. 37–46 is not used).
 #include <numbers>

@@ -1,4 +1,4 @@
-// Seed 001 §4.5 and App. E2 (Branlard & Geisler 2022): the three-DOF land-based turbine (tower
+// [BranlardGeisler2022, §4.5 and App. E2]: the three-DOF land-based turbine (tower
 // fore-aft q1, side-side q2, azimuth ψ) built as a case of the general engine, checked against the
 // closed-form mass matrix (E13–E21) and forcing (E22–E26) at several states. The closed form keeps
 // the tilt θ_t to first order and the tower-top slopes ν to second order; the tolerances below

@@ -1,4 +1,4 @@
-// Seed 000 §5.5, Table 1 (Branlard 2019): the uniform beam of §5.1 (L = 100 m, EI = 2e12 N m²,
+// [Branlard2019, §5.5, Table 1]: the uniform beam of §5.1 (L = 100 m, EI = 2e12 N m²,
 // m = 9 t/m, no top mass, gravity off) split into a lower FE body (50 Euler–Bernoulli elements, full,
 // Guyan or Craig–Bampton) and an upper Rayleigh–Ritz beam (analytic clamped-free modes of its own
 // length, 50 trapezoid sections); relative errors of modes 2 and 4 against eq. 32.
@@ -14,7 +14,7 @@
 //   CB2+2-RR4         -0.0102   -0.01     0.1566    0.11
 // The values printed to 2 decimals that whirl reproduces at that precision are in reference.csv; the
 // pattern of the table (Guyan fails on mode 4, Craig–Bampton matches the full FE model) is checked
-// below for every case, and the FE–RR coupling (seed 000 eq. 19) against an independent assembly.
+// below for every case, and the FE–RR coupling [Branlard2019, eq. 19] against an independent assembly.
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -84,7 +84,7 @@ TEST(MixedFemRR, Table1Pattern) {
   EXPECT_LT(std::abs(cb.df2 - fem4.df2), 0.01);
 }
 
-// Independent path for seed 000 eq. 19: the planar beam as one global Rayleigh–Ritz model. Lower part
+// Independent path for [Branlard2019, eq. 19]: the planar beam as one global Rayleigh–Ritz model. Lower part
 // [0, a]: Hermite cubics of `nel` equal elements clamped at the root (one element = the Guyan static
 // modes, exact for a uniform cantilever); upper part: rigid motion of B (w_B, slope −θ_B) plus the
 // clamped-free modes of length L − a. M = ∫ m N Nᵀ, K = ∫ EI N''ᵀ N''.

@@ -66,8 +66,8 @@ const std::vector<fem::FlexibleBeam>& parked() {
   return b;
 }
 
-// The tower-top body of shapes=fem is the rotor-nacelle assembly: 350,000 kg (Jonkman et al. 2009,
-// NREL/TP-500-38060, Table 1-1: rotor 110,000 kg, nacelle 240,000 kg), checked to 0.2 % (the blade
+// The tower-top body of shapes=fem is the rotor-nacelle assembly: 350,000 kg ([Jonkman2009,
+// Table 1-1]: rotor 110,000 kg, nacelle 240,000 kg), checked to 0.2 % (the blade
 // mass integrates the piecewise-linear BMassDen exactly, FAST 2009 on AeroDyn's 17 elements), and the
 // same as the ElastoDyn model's bodies above the tower to 0.5 % (those use BldNodes = 17 midpoints).
 TEST(Nrel5mwFemShapes, TowerTopMassIsTheRotorNacelleAssembly) {

@@ -1,5 +1,5 @@
-// NREL 5MW full-system natural frequencies against the FAST column of Table 9-1 of Jonkman et al.
-// (2009), NREL/TP-500-38060 (cases/nrel5mw/table9_1.csv, a copy of ../shared/ref/nrel5mw_table9_1.csv):
+// NREL 5MW full-system natural frequencies against the FAST column of [Jonkman2009, Table 9-1]
+// (NREL/TP-500-38060; values and their sources in cases/nrel5mw/table9_1.csv):
 // land-based turbine, parked rotor (RotSpeed = 0), generator locked (GenDOF = False), gravity on,
 // ServoDyn's yaw spring (YawSpr 9.02832e9 N m/rad, YawDamp 1.916e7 N m s/rad) present.
 //

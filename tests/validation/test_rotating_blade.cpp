@@ -1,4 +1,4 @@
-// Seed 001 §4.3 (Branlard & Geisler 2022): NREL 5MW blade rotating in vacuum, three uncoupled
+// [BranlardGeisler2022, §4.3]: NREL 5MW blade rotating in vacuum, three uncoupled
 // shapes. diag Me, diag Ke, Southwell coefficients k_Ω, and the frequencies against rotor speed
 // following ω² = ω0² + k_Ω Ω² (flap, eq. 32) and ω² = ω0² + (k_Ω − 1) Ω² (edge, eq. 33).
 #include <numbers>
@@ -29,7 +29,7 @@ TEST(RotatingBlade, MassStiffnessAndSouthwellCoefficients) {
     key.replace(key.find(' '), 1, "");
     const double Me = l0.M(i, i), Ke = l0.K(i, i);
     // Centrifugal K of a shape: K(Ω) − K(0) = (k_Ω − [edge]) Me Ω²; the edge shape also sees
-    // the in-plane softening −Me Ω² (seed 001 eq. 33).
+    // the in-plane softening −Me Ω² [BranlardGeisler2022, eq. 33].
     const double edge = kShapes[i].rfind("edge", 0) == 0 ? 1.0 : 0.0;
     computed["Me_" + key] = Me;
     computed["Ke_" + key] = Ke;
@@ -40,7 +40,7 @@ TEST(RotatingBlade, MassStiffnessAndSouthwellCoefficients) {
 
 TEST(RotatingBlade, FrequenciesFollowSouthwellFromZeroTo15Rpm) {
   for (int i = 0; i < 3; ++i) {
-    // One shape at a time (the seed treats them uncoupled): freeze the other two.
+    // One shape at a time (the paper treats them uncoupled): freeze the other two.
     std::vector<std::string> freeze;
     for (int j = 0; j < 3; ++j)
       if (j != i) freeze.push_back("dofs." + kShapes[j] + ".frozen=true");

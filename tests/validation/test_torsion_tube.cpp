@@ -1,4 +1,4 @@
-// Seed 000 §5.3 (Branlard 2019): torsion of a clamped-free tube with four torsion shapes;
+// [Branlard2019, §5.3]: torsion of a clamped-free tube with four torsion shapes;
 // ω_j = c β_j / L exactly (the shapes are the exact modes).
 #include "modal/modes.hpp"
 #include "tests/support/reference.hpp"

@@ -1,4 +1,4 @@
-// Seed 000 §5.1 (Branlard 2019): uniform tower with a top mass.
+// [Branlard2019, §5.1]: uniform tower with a top mass.
 //  - u0 = 1 − cos: analytic Mq, Kq, frequency, and the geometric-stiffness ratios of the top mass
 //    and of the self weight at several Mt/M (exact formulas of §5.1);
 //  - the exact beam-with-tip-mass modes of eq. 32 as shapes: frequencies (β_j/L)²√(EI/m).
@@ -31,7 +31,7 @@ TEST(TowerTopMass, GeometricStiffnessRatiosAtSeveralTopMasses) {
     const std::string mt = "bodies.top mass.mass=" + std::to_string(ratio * M);
     const double K1 = test::linearizeAtEquilibrium(test::loadCase("tower_topmass", {mt})).K(0, 0);
     const double K0 = test::linearizeAtEquilibrium(test::loadCase("tower_topmass", {mt, "gravity=0"})).K(0, 0);
-    // seed 000 §5.1: K_T/Kq = −Mt g/Pcr − (M g/Pcr)(1/2 − 2/π²), exact for u0 = 1 − cos.
+    // [Branlard2019, §5.1]: K_T/Kq = −Mt g/Pcr − (M g/Pcr)(1/2 − 2/π²), exact for u0 = 1 − cos.
     EXPECT_NEAR((K1 - K0) / Kq, -ratio * M * g / Pcr - (M * g / Pcr) * (0.5 - 2 / (pi * pi)), 1e-9) << ratio;
   }
 }
@@ -44,7 +44,7 @@ TEST(TowerTopMass, ExactTipMassModesGiveBetaSquaredFrequencies) {
   ASSERT_EQ(modes.size(), 4u);
   for (int j = 1; j <= 4; ++j) {
     const double b = clampedTopMassBeta(j, ratio);
-    // β_j is a root of the characteristic equation of seed 000 eq. 32 ...
+    // β_j is a root of the characteristic equation of [Branlard2019, eq. 32] ...
     EXPECT_NEAR(1 + std::cosh(b) * std::cos(b) - b * ratio * (std::sin(b) * std::cosh(b) - std::cos(b) * std::sinh(b)),
                 0.0, 1e-9 * std::cosh(b));
     // ... and ω_j = (β_j/L)² √(EI/m) is exact: the shapes are the modes of beam + tip mass.
