@@ -46,7 +46,8 @@ LinearModel linearize(const Model& m, const OperatingPoint& op, LinearizeWorkspa
     for (int r = 0; r < n; ++r) out.row(r) = sign * J.row(lin.dofs[r]);
     return out;
   };
-  const AeroInflow* frozen = m.aero.active() && opt.frozen_wake ? &op.inflow : nullptr;
+  // Without induction (AeroDyn WakeMod = 0) there is nothing to freeze.
+  const AeroInflow* frozen = m.aero.active() && m.aero.induction && opt.frozen_wake ? &op.inflow : nullptr;
   if (frozen && static_cast<int>(frozen->axial.size()) != m.aero.nstations())
     throw ComputeError("frozen-wake linearization: the operating point carries no induction of the blade elements "
                        "(solve it with solveOperatingPoint)");

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "src/dynamics/scalar.hpp"
+#include "src/model/brent.hpp"
 #include "src/model/error.hpp"
 
 namespace whirl::aero {
@@ -135,70 +136,6 @@ std::array<std::array<double, 2>, 3> solveRegions(double Vx, double phiIn) {
   return {{{-e, -h + e}, small ? b2 : b3, small ? b3 : b2}};
 }
 
-struct BrentResult {
-  double x, fx;
-  int evals;
-  bool converged;
-};
-
-/// Brent's method (Brent 1973, "Algorithms for Minimization without Derivatives", ch. 4) on a bracket [a, b]
-/// whose end residuals fa, fb differ in sign. Stops when |f| < ftol or the bracket half-width falls below
-/// 2 ε |b| + xtol.
-template <class F>
-BrentResult brent(F&& f, double a, double b, double fa, double fb, double ftol, double xtol, int maxit) {
-  double c = a, fc = fa, d = b - a, e = d;
-  int evals = 0;
-  for (int it = 0; it < maxit; ++it) {
-    if ((fb > 0) == (fc > 0)) {  // b and c on the same side: the bracket is [a, b]
-      c = a;
-      fc = fa;
-      d = e = b - a;
-    }
-    if (std::abs(fc) < std::abs(fb)) {  // keep b the best guess
-      a = b;
-      b = c;
-      c = a;
-      fa = fb;
-      fb = fc;
-      fc = fa;
-    }
-    const double tol = 2.0 * DBL_EPSILON * std::abs(b) + xtol;
-    const double m = 0.5 * (c - b);
-    if (std::abs(m) <= tol || fb == 0.0) return {b, fb, evals, true};
-    if (std::abs(e) >= tol && std::abs(fa) > std::abs(fb)) {
-      double p, q;
-      const double s = fb / fa;
-      if (a == c) {  // secant
-        p = 2.0 * m * s;
-        q = 1.0 - s;
-      } else {  // inverse quadratic interpolation
-        const double qq = fa / fc, r = fb / fc;
-        p = s * (2.0 * m * qq * (qq - r) - (b - a) * (r - 1.0));
-        q = (qq - 1.0) * (r - 1.0) * (s - 1.0);
-      }
-      if (p > 0) q = -q;
-      else p = -p;
-      if (2.0 * p < std::min(3.0 * m * q - std::abs(tol * q), std::abs(e * q))) {
-        e = d;
-        d = p / q;
-      } else {  // interpolation rejected: bisect
-        d = m;
-        e = m;
-      }
-    } else {
-      d = m;
-      e = m;
-    }
-    a = b;
-    fa = fb;
-    b += std::abs(d) > tol ? d : (m > 0 ? tol : -tol);
-    fb = f(b);
-    ++evals;
-    if (std::abs(fb) < ftol) return {b, fb, evals, true};
-  }
-  return {b, fb, evals, false};
-}
-
 }  // namespace
 
 double tipLossConstant(const BemStation& s) {
@@ -214,7 +151,7 @@ double hubLossConstant(const BemStation& s) {
 
 template <class T>
 Induction<T> inductions(const BemStation& s, const T& phi, const T& Vx, const T& Vy, const T& theta,
-                        const BemOptions& o) {
+                        const BemOptions& o, const T* radius) {
   using std::cos;
   using std::sin;
   using std::sqrt;
@@ -241,7 +178,8 @@ Induction<T> inductions(const BemStation& s, const T& phi, const T& Vx, const T&
   r.F = F;
 
   // inductionFactors0 (Ning 2014, with Buhl 2005 for the high-thrust momentum state).
-  const double sigma = s.blades * s.chord / (2.0 * kPi * s.r);  // local solidity
+  // Local solidity; with `radius` it follows the deflected geometry in T.
+  const T sigma = radius ? T(s.blades * s.chord / (2.0 * kPi) / *radius) : T(s.blades * s.chord / (2.0 * kPi * s.r));
   const T k = sigma * cx / (4.0 * F * sphi * sphi);
   const double kv = valueOf(k);
   const bool momentum = (phiv > 0 && vxv >= 0) || (phiv < 0 && vxv < 0);
@@ -306,8 +244,9 @@ Induction<T> inductions(const BemStation& s, const T& phi, const T& Vx, const T&
 }
 
 template <class T>
-T bemResidual(const BemStation& s, const T& phi, const T& Vx, const T& Vy, const T& theta, const BemOptions& o) {
-  return inductions<T>(s, phi, Vx, Vy, theta, o).residual;
+T bemResidual(const BemStation& s, const T& phi, const T& Vx, const T& Vy, const T& theta, const BemOptions& o,
+              const T* radius) {
+  return inductions<T>(s, phi, Vx, Vy, theta, o, radius).residual;
 }
 
 template <class T>
@@ -405,7 +344,8 @@ BemSolution solveInflow(const BemStation& s, double Vx, double Vy, const BemOpti
 }
 
 template <class T>
-T inflowAngle(const BemStation& s, const T& Vx, const T& Vy, const T& theta, double phi0, const BemOptions& o) {
+T inflowAngle(const BemStation& s, const T& Vx, const T& Vy, const T& theta, double phi0, const BemOptions& o,
+              const T* radius) {
   ADChunk p(phi0);
   p.derivatives()[0] = 1.0;
   const Induction<ADChunk> d =
@@ -416,7 +356,7 @@ T inflowAngle(const BemStation& s, const T& Vx, const T& Vy, const T& theta, dou
     throw ComputeError("BEM at r = " + num(s.r) + " m, Vx = " + num(valueOf(Vx)) + " m/s, Vy = " +
                        num(valueOf(Vy)) + " m/s, theta = " + deg(valueOf(theta)) + " deg: dR/dphi = " + num(Rphi) +
                        " at phi = " + deg(phi0) + " deg, the inflow angle is not differentiable there");
-  const T R = bemResidual<T>(s, T(phi0), Vx, Vy, theta, o);
+  const T R = bemResidual<T>(s, T(phi0), Vx, Vy, theta, o, radius);
   return T(phi0 - R / Rphi);
 }
 
@@ -432,9 +372,9 @@ SectionLoads<T> frozenLoads(const BemStation& s, const T& Vx, const T& Vy, const
 
 template <class T>
 SectionLoads<T> quasiSteadyLoads(const BemStation& s, const T& Vx, const T& Vy, const T& theta, double phi0,
-                                 double rho, const BemOptions& o) {
-  const T phi = inflowAngle<T>(s, Vx, Vy, theta, phi0, o);
-  const Induction<T> ind = inductions<T>(s, phi, Vx, Vy, theta, o);
+                                 double rho, const BemOptions& o, const T* radius) {
+  const T phi = inflowAngle<T>(s, Vx, Vy, theta, phi0, o, radius);
+  const Induction<T> ind = inductions<T>(s, phi, Vx, Vy, theta, o, radius);
   T a = ind.a, ap = ind.ap;
   if (!ind.valid) {
     a = T(0.0);
@@ -451,15 +391,17 @@ SectionLoads<T> quasiSteadyLoads(const BemStation& s, const T& Vx, const T& Vy, 
 
 #define WHIRL_BEM_INSTANTIATE(T)                                                                                 \
   template Induction<T> inductions<T>(const BemStation&, const T&, const T&, const T&, const T&,               \
-                                      const BemOptions&);                                                       \
+                                      const BemOptions&, const T*);                                             \
   template Induction<T> inductions<T>(const BemStation&, const T&, const T&, const T&, const BemOptions&);      \
-  template T bemResidual<T>(const BemStation&, const T&, const T&, const T&, const T&, const BemOptions&);      \
+  template T bemResidual<T>(const BemStation&, const T&, const T&, const T&, const T&, const BemOptions&,       \
+                            const T*);                                                                          \
   template T bemResidual<T>(const BemStation&, const T&, const T&, const T&, const BemOptions&);                \
-  template T inflowAngle<T>(const BemStation&, const T&, const T&, const T&, double, const BemOptions&);       \
+  template T inflowAngle<T>(const BemStation&, const T&, const T&, const T&, double, const BemOptions&,        \
+                            const T*);                                                                          \
   template SectionLoads<T> frozenLoads<T>(const BemStation&, const T&, const T&, const T&, double, double,     \
                                           double, const BemOptions&);                                           \
   template SectionLoads<T> quasiSteadyLoads<T>(const BemStation&, const T&, const T&, const T&, double, double, \
-                                               const BemOptions&);
+                                               const BemOptions&, const T*);
 
 WHIRL_BEM_INSTANTIATE(double)
 WHIRL_BEM_INSTANTIATE(ADChunk)

@@ -124,12 +124,14 @@ struct SectionLoads {
 double tipLossConstant(const BemStation& s);
 double hubLossConstant(const BemStation& s);
 
+/// `radius` (optional, in T): the distance from the rotor axis [m] the solidity is formed with, so that
+/// its derivative reaches the result (a deflecting blade); absent: s.r.
 /// Inductions and residual at inflow angle phi [rad] for inputs Vx, Vy [m/s] and theta [rad], as
 /// BEMTU_InductionWithResidual with BEM_Mod = 1. Branches (momentum or propeller-brake region, Buhl, special
 /// cases) are chosen from the values; formulas are evaluated in T (double or ADChunk).
 template <class T>
 Induction<T> inductions(const BemStation& s, const T& phi, const T& Vx, const T& Vy, const T& theta,
-                        const BemOptions& o);
+                        const BemOptions& o, const T* radius = nullptr);
 /// Same with θ = s.theta.
 template <class T>
 Induction<T> inductions(const BemStation& s, const T& phi, const T& Vx, const T& Vy, const BemOptions& o);
@@ -138,7 +140,8 @@ Induction<T> inductions(const BemStation& s, const T& phi, const T& Vx, const T&
 ///   momentum region (φ > 0, Vx ≥ 0 or φ < 0, Vx < 0): R = sin φ/(1−a) − cos φ (Vx/Vy)(1−k'),
 ///   propeller-brake region:                             R = sin φ (1−k) − cos φ (Vx/Vy)(1−k').
 template <class T>
-T bemResidual(const BemStation& s, const T& phi, const T& Vx, const T& Vy, const T& theta, const BemOptions& o);
+T bemResidual(const BemStation& s, const T& phi, const T& Vx, const T& Vy, const T& theta, const BemOptions& o,
+              const T* radius = nullptr);
 template <class T>
 T bemResidual(const BemStation& s, const T& phi, const T& Vx, const T& Vy, const BemOptions& o);
 
@@ -153,7 +156,8 @@ BemSolution solveInflow(const BemStation& s, double Vx, double Vy, const BemOpti
 /// residual) and the derivatives are −R_x/R_φ (implicit-function theorem). In the φ-independent special
 /// cases (Induction::fixed) φ does not influence AeroDyn's outputs and phi0 is returned with zero derivatives.
 template <class T>
-T inflowAngle(const BemStation& s, const T& Vx, const T& Vy, const T& theta, double phi0, const BemOptions& o);
+T inflowAngle(const BemStation& s, const T& Vx, const T& Vy, const T& theta, double phi0, const BemOptions& o,
+              const T* radius = nullptr);
 
 /// Loads with AeroDyn's frozen wake (DBEMT_Mod = −1 / FrozenWake): the induced velocities at the operating point,
 /// ax_ind_vel = −Vx₀ a₀ and tan_ind_vel = Vy₀ a'₀ (AeroDyn computeFrozenWake, BEMT.f90), are held; at the
@@ -169,6 +173,6 @@ SectionLoads<T> frozenLoads(const BemStation& s, const T& Vx, const T& Vy, const
 /// output φ = atan2(Vx(1−a), Vy(1+a')), α, W and loads as frozenLoads.
 template <class T>
 SectionLoads<T> quasiSteadyLoads(const BemStation& s, const T& Vx, const T& Vy, const T& theta, double phi0,
-                                 double rho, const BemOptions& o);
+                                 double rho, const BemOptions& o, const T* radius = nullptr);
 
 }  // namespace whirl::aero

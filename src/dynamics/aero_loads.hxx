@@ -82,7 +82,7 @@ void addAeroLoads(const Model& m, const Workspace<TK>& ws, const VecXT<TK>& q, c
       try {
         sec = frozen ? detail::frozenSection(am, st, vx, vy, theta, valueOf(r), frozen->axial(index),
                                              frozen->tangential(index))
-                     : detail::bemSection(am, st, vx, vy, theta, valueOf(r));
+                     : detail::bemSection(am, st, vx, vy, theta, T(r));
       } catch (const ComputeError& err) {
         throw ComputeError(body.name + " aero element " + std::to_string(si + 1) + " (span " +
                            std::to_string(st.span) + " m): " + err.what());

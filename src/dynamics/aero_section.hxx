@@ -45,13 +45,13 @@ SectionState<T> frozenSection(const AeroModel& am, const AeroStation& st, const 
 /// geometric inflow angle.
 template <class T>
 SectionState<T> bemSection(const AeroModel& am, const AeroStation& st, const T& vx, const T& vy, const T& theta,
-                           double r) {
-  if (!am.induction) return frozenSection(am, st, vx, vy, theta, r, 0.0, 0.0);
-  aero::BemStation b = bemStation(am, st, r);
+                           const T& r) {
+  if (!am.induction) return frozenSection(am, st, vx, vy, theta, valueOf(r), 0.0, 0.0);
+  aero::BemStation b = bemStation(am, st, valueOf(r));
   b.theta = valueOf(theta);
   const aero::BemSolution sol = aero::solveInflow(b, valueOf(vx), valueOf(vy), am.bem);
   SectionState<T> s;
-  s.loads = aero::quasiSteadyLoads(b, vx, vy, theta, sol.phi, am.air_density, am.bem);
+  s.loads = aero::quasiSteadyLoads(b, vx, vy, theta, sol.phi, am.air_density, am.bem, &r);
   s.a = sol.a;
   s.ap = sol.ap;
   return s;

@@ -56,7 +56,8 @@ inline Model aeroRotorModel(const AeroRotorOptions& o = {}) {
   opt.integration = {BeamIntegration::Gauss, 40};
   const BeamBody bb = buildBeamBody(p, shapes, opt, "blade");
 
-  std::vector<double> alpha{-pi, pi}, cl{-2 * pi * pi, 2 * pi * pi}, cd{o.cd, o.cd}, cm{0.0, 0.0};
+  // Three rows: AeroDyn takes a table of fewer than 3 rows as constant.
+  std::vector<double> alpha{-pi, 0.0, pi}, cl{-2 * pi * pi, 0.0, 2 * pi * pi}, cd{o.cd, o.cd, o.cd}, cm{0.0, 0.0, 0.0};
   m.aero.polars.push_back(aero::makePolar("thin", alpha, cl, cd, cm, aero::PolarInterp::Linear, "test"));
   m.aero.hub_body = 0;
   m.aero.hub_radius = hub_radius;
@@ -85,12 +86,13 @@ inline Model aeroRotorModel(const AeroRotorOptions& o = {}) {
     bl.axis = -Vec3::UnitX();
     bl.inertia = bb.inertia;
     bl.elastic = bb.elastic;
+    bl.elastic.D.setZero();  // no structural damping: what damps is aerodynamic
     AeroBlade ab;
     for (int s = 0; s < o.elements; ++s) {
       const double x = length * s / (o.elements - 1);
       AeroStation st;
       st.point = static_cast<int>(bl.points.size());
-      bl.points.push_back(beamPoint(p, shapes, false, x, "aero " + std::to_string(s + 1)));
+      bl.points.push_back(beamPoint(p, shapes, opt.axial_shortening, x, "aero " + std::to_string(s + 1)));
       st.span = x;
       st.z = hub_radius + x;
       st.chord = 3.5 - 2.0 * x / length;

@@ -64,7 +64,11 @@ void expectJacobiansMatch(const Model& m, const OperatingPoint& op, const AeroIn
     const MatX fd = centralDifferences(m, op, w, cols, frozen);
     const double scale = std::max(1.0, fd.cwiseAbs().maxCoeff());
     // Central differences with h = 1e-6 on loads of ~1e5: truncation and round-off ~1e-7 relative.
-    EXPECT_LT((ad - fd).cwiseAbs().maxCoeff(), 2e-6 * scale) << "wrt " << static_cast<int>(w);
+    Eigen::Index wr = 0, wc = 0;
+    (ad - fd).cwiseAbs().maxCoeff(&wr, &wc);
+    EXPECT_LT((ad - fd).cwiseAbs().maxCoeff(), 2e-6 * scale)
+        << "wrt " << static_cast<int>(w) << ": row " << m.dofs[wr].name << ", column " << cols[wc] << ": AD " << ad(wr, wc)
+        << ", central differences " << fd(wr, wc);
     EXPECT_GT(ad.cwiseAbs().maxCoeff(), 0.0);
   }
 }
@@ -106,11 +110,12 @@ TEST(AeroLoads, FlapDampingOfAttachedFlowEqualsClosedForm) {
   //   Fx = ½ ρ c W² 2π (φ − θ) cos φ,  W² = Vx² + Vy², φ = atan2(Vx, Vy),
   // and a flap velocity ẇ (out of plane, downwind) lowers Vx by ẇ cos(slope). The damping of the
   // flap coordinate is Σ w_s φ_s² ∂Fx/∂Vx (Hansen 2004, quasi-steady aerodynamic damping), with
-  //   ∂Fx/∂Vx = ½ ρ c 2π [2 Vx (φ − θ) cos φ + (Vy cos φ − (φ − θ) sin φ Vy)].
+  //   ∂Fx/∂Vx = ½ ρ c 2π [2 Vx (φ − θ) cos φ + W² ∂φ/∂Vx (cos φ − (φ − θ) sin φ)],  ∂φ/∂Vx = Vy / W².
   AeroRotorOptions o;
   o.induction = false;
   o.cd = 0;
   o.precone_deg = 0;
+  o.pitch_deg = 0;  // the flap shape (body y) then lies along the annulus x: no in-plane component
   const Model m = aeroRotorModel(o);
   OperatingPoint op = initialPoint(m);
   const LinearModel lin = linearize(m, op);
@@ -125,7 +130,7 @@ TEST(AeroLoads, FlapDampingOfAttachedFlowEqualsClosedForm) {
   for (const AeroStation& st : m.aero.blades[0].stations) {
     const double r = st.z, vx = o.wind, vy = omega * r;
     const double phi = std::atan2(vx, vy), w2 = vx * vx + vy * vy;
-    const double th = st.twist + o.pitch_deg * std::numbers::pi / 180;
+    const double th = st.twist;
     const double dphi = vy / w2;
     const double dFx = 0.5 * rho * st.chord * 2 * std::numbers::pi *
                        (2 * vx * (phi - th) * std::cos(phi) + w2 * dphi * (std::cos(phi) - (phi - th) * std::sin(phi)));
