@@ -151,7 +151,8 @@ int jointDofCount(JointType t);
 /// Orders bodies parents-first (by depth), numbers the DOFs (seed 000 §3.1), builds the chains and
 /// checks the data: names unique, parents and points exist, masses ≥ 0, inertia positive
 /// semi-definite, everything finite. Bodies must carry their DOFs in `dofs` with `body`/`local`
-/// set; DOFs are renumbered. Throws InputError naming the body/DOF and the reason.
+/// set; DOFs are renumbered. Names and units must be printable text on one line (src/model/text.hpp).
+/// Throws InputError naming the body/DOF and the reason.
 void finalize(Model& model);
 
 }  // namespace whirl
