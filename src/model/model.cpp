@@ -173,6 +173,13 @@ std::optional<int> Model::findDof(const std::string& n) const { return findByNam
 std::optional<int> Model::findInput(const std::string& n) const { return findByName(inputs, n); }
 std::optional<int> Model::findOutput(const std::string& n) const { return findByName(outputs, n); }
 
+void requireActiveDof(const Model& model, const std::string& what) {
+  for (const Dof& d : model.dofs)
+    if (!d.frozen) return;
+  throw InputError(where("", 0, what,
+                         "the model has no active degree of freedom (all frozen or none defined): nothing to linearize"));
+}
+
 std::vector<int> Model::activeDofs() const {
   std::vector<int> a;
   for (int i = 0; i < ndof(); ++i)

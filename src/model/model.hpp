@@ -155,4 +155,9 @@ int jointDofCount(JointType t);
 /// Throws InputError naming the body/DOF and the reason.
 void finalize(Model& model);
 
+/// \throws InputError "<what>: the model has no active degree of freedom (all frozen or none defined):
+///         nothing to linearize" when every coordinate is frozen or there is none. A finalized model
+///         may be so (a rigid structure is a valid model); linearizing it is not.
+void requireActiveDof(const Model& model, const std::string& what);
+
 }  // namespace whirl
