@@ -31,6 +31,7 @@ LinearModel linearize(const Model& m, const OperatingPoint& op, const LinearizeO
 }
 
 LinearModel linearize(const Model& m, const OperatingPoint& op, LinearizeWorkspace& lw, const LinearizeOptions& opt) {
+  requireActiveDof(m, m.name);  // an empty mass matrix has no LDLᵀ to check (vectorD().minCoeff())
   LinearModel lin;
   lin.dofs = m.activeDofs();
   const int n = static_cast<int>(lin.dofs.size());

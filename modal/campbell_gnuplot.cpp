@@ -5,6 +5,7 @@
 
 #include "modal/campbell_output.hpp"
 #include "src/io/csv.hpp"
+#include "src/model/text.hpp"
 
 namespace whirl {
 
@@ -17,14 +18,26 @@ constexpr const char* kColours[] = {"#0072b2", "#d55e00", "#009e73", "#cc79a7", 
                                     "#56b4e9", "#000000", "#8b1a1a", "#6a3d9a", "#b8a000"};
 constexpr int kPointTypes[] = {7, 5, 9, 13, 11, 6, 4, 8, 12};
 
-/// A double-quoted Gnuplot string (the terminal is noenhanced, so only \ and " need escaping).
+/// A single-quoted Gnuplot string: Gnuplot 5 reads it verbatim (no backslash escapes, no `…`
+/// command substitution, which double-quoted strings do run; no @macro expansion) up to the next
+/// lone ', and '' stands for one quote. A newline would end the command and let the next line run
+/// as one (`!cmd` is a shell command): control characters become spaces. The terminals are
+/// noenhanced, so no character has a meaning in the rendered text either.
 std::string quoted(const std::string& s) {
-  std::string q = "\"";
-  for (char c : s) {
-    if (c == '\\' || c == '"') q += '\\';
+  std::string q = "'";
+  for (char c : withoutControlCharacters(s)) {
+    if (c == '\'') q += '\'';
     q += c;
   }
-  return q + "\"";
+  return q + "'";
+}
+
+/// Text for a `#` comment: one line, and no trailing backslash (Gnuplot continues a comment ending
+/// in \ onto the next line, which would swallow that line).
+std::string comment(const std::string& s) {
+  std::string t = withoutControlCharacters(s);
+  while (!t.empty() && (t.back() == '\\' || t.back() == ' ')) t.pop_back();
+  return t;
 }
 
 /// Smallest number with two significant digits ≥ v (v > 0).
@@ -134,7 +147,7 @@ std::string campbellGnuplotData(const CampbellDiagram& d) {
                   "# columns: rpm, wind speed [m/s] (nan: none), frequency [Hz], damping ratio [-]\n";
   for (std::size_t l = 0; l < d.lines.size(); ++l) {
     const auto& line = d.lines[l];
-    s += (l ? "\n\n" : "") + std::string("# index ") + std::to_string(l) + ": " + line.name + "\n";
+    s += (l ? "\n\n" : "") + std::string("# index ") + std::to_string(l) + ": " + comment(line.name) + "\n";
     bool gap = false, any = false;
     for (std::size_t p = 0; p < d.points.size(); ++p) {
       if (line.mode[p] < 0) {
@@ -181,7 +194,7 @@ std::string campbellGnuplotScript(const CampbellDiagram& d, const CampbellPlotOp
   g += "# One style per Campbell line (colour and point type); 100: excitation lines and labels.\n";
   for (std::size_t l = 0; l < d.lines.size(); ++l)
     g += "set style line " + std::to_string(l + 1) + " lc rgb '" + kColours[l % 10] + "' lw 2 pt " +
-         std::to_string(kPointTypes[l % 9]) + " ps 1.1   # " + d.lines[l].name + "\n";
+         std::to_string(kPointTypes[l % 9]) + " ps 1.1   # " + comment(d.lines[l].name) + "\n";
   g += "set style line 100 lc rgb '#777777' lw 1.2 dt (20, 12)\n\n";
   if (opt.versus_wind_speed) {
     g += "# Operating points (wind speed, rpm) for the nP excitation lines.\n$points << EOD\n";

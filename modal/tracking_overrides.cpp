@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "src/model/error.hpp"
+#include "src/model/text.hpp"
 
 namespace whirl {
 
@@ -119,6 +120,7 @@ void applyTrackingOverridesText(const std::string& text, const std::string& file
   for (int line_no = 1; std::getline(in, row); ++line_no) {
     const std::string t = trim(row);
     if (t.empty() || t[0] == '#') continue;
+    requirePrintable(t, file, line_no, "");  // new names go into campbell.gp and the tables
     try {
       applyRow(splitFields(t), points, lines);
     } catch (const RowError& e) {

@@ -46,6 +46,8 @@ Model loadModel(const ModelOptions& opt) {
   } else {
     m = readElastoDynModel(opt.case_path, opt.sets);
   }
+  // Every command that takes a model linearizes it: refuse an empty state before any work or output.
+  requireActiveDof(m, opt.case_path);
   if (opt.rpm) setRotorSpeed(m, *opt.rpm);
   return m;
 }

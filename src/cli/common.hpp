@@ -26,7 +26,7 @@ struct ModelOptions {
 void addModelOptions(CLI::App& cmd, ModelOptions& opt, bool with_rpm = true);
 
 /// Loads the case — a YAML case file (.yaml, .yml), or an OpenFAST .fst / ElastoDyn .dat — applies
-/// --set, then --rpm to every rotating coordinate.
+/// --set, then --rpm to every rotating coordinate. InputError when no DOF is active (nothing to linearize).
 Model loadModel(const ModelOptions& opt);
 
 /// True for a YAML case path (.yaml, .yml), false for OpenFAST / ElastoDyn files.

@@ -5,6 +5,7 @@
 #include <exception>
 
 #include "src/cli/commands.hpp"
+#include "src/model/text.hpp"
 #include "src/parallel/session.hpp"
 
 int main(int argc, char** argv) {
@@ -15,7 +16,7 @@ int main(int argc, char** argv) {
   try {
     whirl::parallel::splitCommandLine(argc, argv, args, petsc_options);
   } catch (const std::exception& e) {
-    if (root) std::fprintf(stderr, "whirl: error: %s\n", e.what());
+    if (root) std::fprintf(stderr, "whirl: error: %s\n", whirl::escapeControlCharacters(e.what()).c_str());
     return 1;
   }
   whirl::parallel::Session session(petsc_options);
@@ -28,7 +29,7 @@ int main(int argc, char** argv) {
       if (std::find(distributed.begin(), distributed.end(), args[i]) == distributed.end()) {
         if (root)
           std::fprintf(stderr, "whirl: error: %s: does not run distributed; under mpirun use campbell, study, export or modes\n",
-                       args[i].c_str());
+                       whirl::escapeControlCharacters(args[i]).c_str());
         return 1;
       }
       break;
@@ -59,7 +60,7 @@ int main(int argc, char** argv) {
     if (!root) return e.get_exit_code();
     return app.exit(e);
   } catch (const std::exception& e) {
-    if (root) std::fprintf(stderr, "whirl: error: %s\n", e.what());
+    if (root) std::fprintf(stderr, "whirl: error: %s\n", whirl::escapeControlCharacters(e.what()).c_str());
     return 1;
   }
   return 0;

@@ -6,6 +6,7 @@
 
 #include "src/io/case_reader.hpp"
 #include "src/model/error.hpp"
+#include "src/model/text.hpp"
 
 namespace whirl {
 namespace {
@@ -46,7 +47,8 @@ Model readCase(const std::string& path, const std::vector<CaseOverride>& overrid
   CaseBuild build;
   Model& m = build.model;
   m.name = top.text("name", std::filesystem::path(path).stem().string());
-  if (const auto d = top.find("description")) d->text();
+  if (!top.has("name")) requirePrintable(m.name, path, 0, "name (the case file's name)");
+  if (const auto d = top.find("description")) d->freeText();
   if (const auto g = top.find("gravity")) m.gravity = readGravity(*g);
   if (const auto in = top.find("inputs")) readInputs(*in, build);
   readBodies(top.at("bodies"), build);

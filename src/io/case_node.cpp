@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "src/model/error.hpp"
+#include "src/model/text.hpp"
 
 namespace whirl {
 namespace {
@@ -171,6 +172,13 @@ bool CaseNode::boolean() const {
 }
 
 std::string CaseNode::text() const {
+  const std::string s = freeText();
+  // Names end up inside generated scripts and tables (campbell.gp, .lin): one printable line only.
+  if (const std::string reason = controlCharacterReason(s); !reason.empty()) fail(reason);
+  return s;
+}
+
+std::string CaseNode::freeText() const {
   if (!isScalar()) fail("expected a text value, got " + shown(node_));
   return node_.Scalar();
 }

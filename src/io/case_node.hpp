@@ -83,7 +83,10 @@ class CaseNode {
   double number() const;  ///< a finite number
   int integer() const;
   bool boolean() const;   ///< true or false
+  /// Text on one printable line (names, units, file names): fails on a control character.
   std::string text() const;
+  /// Text that may span lines (a description, never written into generated files).
+  std::string freeText() const;
   std::vector<double> numbers() const;  ///< a list of finite numbers
   Vec3 vec3() const;
   /// rows × cols matrix written as a list of rows.

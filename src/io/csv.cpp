@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "src/model/error.hpp"
+#include "src/model/text.hpp"
 
 namespace whirl {
 
@@ -71,6 +72,9 @@ TextTable readTextCsv(const std::string& path) {
     ++n;
     if (line.empty() || line == "\r") continue;
     auto f = splitCsvLine(line);
+    // Fields become mode names, --set keys and values: one printable line each.
+    for (size_t c = 0; c < f.size(); ++c)
+      requirePrintable(f[c], path, n, t.names.empty() || c >= t.names.size() ? "" : t.names[c]);
     if (t.names.empty()) {
       t.names = f;
       continue;

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "src/model/error.hpp"
+#include "src/model/text.hpp"
 
 namespace whirl::io {
 namespace {
@@ -177,7 +178,8 @@ OpenFastFile OpenFastFile::parse(std::string_view text, const std::filesystem::p
     if (!title_seen) {
       title_seen = true;
       if (lineno <= 3) {
-        f.title_ = std::string(t);
+        f.title_ = tabsToSpaces(t);
+        f.title_line_ = lineno;
         continue;
       }
     }

@@ -56,7 +56,9 @@ class OpenFastFile {
   static OpenFastFile parse(std::string_view text, const std::filesystem::path& file);
 
   const std::filesystem::path& path() const { return path_; }
+  /// The title line, tabs turned into spaces (it may hold other control characters: check before use).
   const std::string& title() const { return title_; }
+  int title_line() const { return title_line_; }  ///< 1-based, 0 without a title
   const std::vector<OpenFastEntry>& entries() const { return entries_; }
   const std::vector<OpenFastTable>& tables() const { return tables_; }
 
@@ -103,6 +105,7 @@ class OpenFastFile {
 
   std::filesystem::path path_;
   std::string title_;
+  int title_line_ = 0;
   std::vector<OpenFastEntry> entries_;
   std::vector<OpenFastTable> tables_;
   std::unordered_map<std::string, std::size_t> index_;  ///< lower-case key → first entry

@@ -9,6 +9,7 @@
 #include <string_view>
 
 #include "src/model/error.hpp"
+#include "src/model/text.hpp"
 
 namespace whirl {
 namespace {
@@ -168,7 +169,9 @@ std::vector<LinVariable> LinParser::table(std::size_t& i, int n, const std::stri
     else if (!(flag == "F" || flag == "False" || flag == "FALSE"))
       fail(i, key, "rotating-frame flag '" + std::string(flag) + "' is not T or F");
     if (has_order) v.derivative_order = integer(nextToken(l, pos), i, key);
-    v.description = std::string(trim(l.substr(std::min(pos, l.size()))));
+    // Descriptions become DOF and mode names: tabs are spacing, other control characters an error.
+    v.description = tabsToSpaces(trim(l.substr(std::min(pos, l.size()))));
+    requirePrintable(v.description, path_, static_cast<int>(i + 1), key + " description");
   }
   return rows;
 }

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "src/io/state_space_files.hpp"
+#include "src/model/text.hpp"
 
 namespace whirl {
 namespace {
@@ -51,7 +52,7 @@ void table(std::ostringstream& o, const char* title, const std::vector<std::stri
     char head[96];
     std::snprintf(head, sizeof head, "%13zu %s %16s %16d         ", i + 1, number(op[i]).c_str(), flag(blade[i]).c_str(),
                   order);
-    o << head << desc[i] << "\n";
+    o << head << withoutControlCharacters(desc[i]) << "\n";  // a newline would start a fake row
   }
   o << "\n";
 }
@@ -103,7 +104,8 @@ std::string linFileText(const StateSpaceModel& m, const std::string& title) {
   o << "\nLinearized model: Predictions were generated on " << date << " using whirl " << WHIRL_VERSION
     << ", double precision\n linked with whirl structural model (exact Jacobians by automatic differentiation; no "
        "aerodynamics)\n\n";
-  o << "Description from the FAST input file: " << title << "\n\n";
+  // A newline in the title could fake a header line ("Rotor Speed: …") for the readers.
+  o << "Description from the FAST input file: " << withoutControlCharacters(title) << "\n\n";
   char line[128];
   o << "Simulation information:\n";
   auto field = [&](const char* key, double v, const char* unit) {

@@ -34,7 +34,8 @@ Var column(const char* name, const std::vector<double>& v) { return doubles(name
 Var text(const char* name, const std::string& s) {
   std::string ascii = s;
   for (char& c : ascii)
-    if (static_cast<unsigned char>(c) > 127) c = '?';  // MATLAB char from bytes: keep ASCII
+    if (static_cast<unsigned char>(c) > 127 || static_cast<unsigned char>(c) < 32 || c == 127)
+      c = '?';  // MATLAB char from bytes: printable ASCII, one line
   size_t dims[2] = {ascii.empty() ? 0u : 1u, ascii.size()};
   Var v = Mat_VarCreate(name, MAT_C_CHAR, MAT_T_UINT8, 2, dims, ascii.empty() ? nullptr : ascii.data(), 0);
   if (!v) throw ComputeError(".mat: cannot create a string");

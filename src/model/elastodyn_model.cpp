@@ -13,6 +13,7 @@
 #include "src/model/elastodyn_parts.hpp"
 #include "src/model/elastodyn_tower_beam.hpp"
 #include "src/model/error.hpp"
+#include "src/model/text.hpp"
 
 namespace whirl {
 namespace elastodyn {
@@ -66,6 +67,8 @@ Model buildElastoDynModel(const io::OpenFastTurbine& t, const ElastoDynModelOpti
   io::require_supported(t);
   const io::ElastoDynInput& ed = t.elastodyn;
   elastodyn::Builder b{ed, opt, Model{}};
+  // The title names the model and titles the Campbell plot.
+  requirePrintable(ed.source.title(), ed.source.path().string(), ed.source.title_line(), "title");
   b.model.name = ed.source.title();
   b.model.gravity = Vec3(0, 0, -gravityOf(t, opt));
 

@@ -1,5 +1,7 @@
 #include "src/model/error.hpp"
 
+#include "src/model/text.hpp"
+
 namespace whirl {
 
 std::string where(const std::string& file, int line, const std::string& key, const std::string& reason) {
@@ -8,7 +10,8 @@ std::string where(const std::string& file, int line, const std::string& key, con
   if (line > 0) s += ":" + std::to_string(line);
   if (!s.empty()) s += ": ";
   if (!key.empty()) s += key + ": ";
-  return s + reason;
+  // A quoted name or value with a newline would split the one-line message: written as \n.
+  return escapeControlCharacters(s + reason);
 }
 
 }  // namespace whirl

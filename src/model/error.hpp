@@ -19,7 +19,7 @@ class ComputeError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// "file:line: key: reason" with the empty parts left out.
+/// "file:line: key: reason" with the empty parts left out; control characters written as escapes (\n).
 std::string where(const std::string& file, int line, const std::string& key, const std::string& reason);
 
 }  // namespace whirl

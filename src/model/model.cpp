@@ -7,6 +7,7 @@
 #include <set>
 
 #include "src/model/error.hpp"
+#include "src/model/text.hpp"
 
 namespace whirl {
 namespace {
@@ -172,6 +173,13 @@ std::optional<int> Model::findDof(const std::string& n) const { return findByNam
 std::optional<int> Model::findInput(const std::string& n) const { return findByName(inputs, n); }
 std::optional<int> Model::findOutput(const std::string& n) const { return findByName(outputs, n); }
 
+void requireActiveDof(const Model& model, const std::string& what) {
+  for (const Dof& d : model.dofs)
+    if (!d.frozen) return;
+  throw InputError(where("", 0, what,
+                         "the model has no active degree of freedom (all frozen or none defined): nothing to linearize"));
+}
+
 std::vector<int> Model::activeDofs() const {
   std::vector<int> a;
   for (int i = 0; i < ndof(); ++i)
@@ -223,9 +231,29 @@ void finalizeInputsAndOutputs(Model& m, const std::vector<int>& new_dof) {
   }
 }
 
+// Names and units go into generated scripts and tables; the readers check them with file and line,
+// this catches models built otherwise.
+void requirePrintableNames(const Model& m) {
+  requirePrintable(m.name, "", 0, "model name");
+  for (const Body& b : m.bodies) {
+    requirePrintable(b.name, "", 0, "body '" + b.name + "'");
+    for (const auto& p : b.points) requirePrintable(p.name, "", 0, "body '" + b.name + "': point '" + p.name + "'");
+  }
+  for (const Dof& d : m.dofs) requirePrintable(d.name, "", 0, "DOF '" + d.name + "'");
+  for (const Input& in : m.inputs) {
+    requirePrintable(in.name, "", 0, "input '" + in.name + "'");
+    requirePrintable(in.unit, "", 0, "input '" + in.name + "': unit");
+  }
+  for (const Output& o : m.outputs) {
+    requirePrintable(o.name, "", 0, "output '" + o.name + "'");
+    requirePrintable(o.unit, "", 0, "output '" + o.name + "': unit");
+  }
+}
+
 }  // namespace
 
 void finalize(Model& m) {
+  requirePrintableNames(m);
   const int nb = static_cast<int>(m.bodies.size());
   {
     std::set<std::string> names;

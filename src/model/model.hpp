@@ -154,11 +154,17 @@ int jointDofCount(JointType t);
 /// Orders bodies parents-first (by depth), numbers the DOFs [Branlard2019, §3.1], builds the chains and
 /// checks the data: names unique, parents and points exist, masses ≥ 0, inertia positive
 /// semi-definite, everything finite. Bodies must carry their DOFs in `dofs` with `body`/`local`
-/// set; DOFs are renumbered. Throws InputError naming the body/DOF and the reason.
+/// set; DOFs are renumbered. Names and units must be printable text on one line (src/model/text.hpp).
+/// Throws InputError naming the body/DOF and the reason.
 void finalize(Model& model);
 
 /// Part of finalize: renumbers the bodies and DOFs the aerodynamic model and the generator torque law
 /// refer to (old → new index) and checks them.
 void finalizeAero(Model& model, const std::vector<int>& new_body, const std::vector<int>& new_dof);
+
+/// \throws InputError "<what>: the model has no active degree of freedom (all frozen or none defined):
+///         nothing to linearize" when every coordinate is frozen or there is none. A finalized model
+///         may be so (a rigid structure is a valid model); linearizing it is not.
+void requireActiveDof(const Model& model, const std::string& what);
 
 }  // namespace whirl

@@ -96,10 +96,11 @@ TEST(CampbellOutput, ScriptLabelsTheExcitationLines) {
   const auto d = test::syntheticTurbineCampbell(false);  // 0–14 rpm, up to 1.33 Hz → axis to 1.4 Hz
   const auto gp = campbellGnuplotScript(d);
   EXPECT_NE(gp.find("fmax = 1.4 "), std::string::npos);
-  EXPECT_NE(gp.find("\"1P\" at graph 1, first 0.23333333333333334 left"), std::string::npos);  // right end
-  EXPECT_NE(gp.find("\"9P\" at first 9.333333333333332, graph 1 center"), std::string::npos);  // top: 9·rpm/60 = 1.4
-  for (const auto& l : d.lines) EXPECT_NE(gp.find("title \"" + l.name + "\""), std::string::npos) << l.name;
-  EXPECT_NE(campbellGnuplotScript(small()).find("title = \"small \\\"quoted\\\" case\""), std::string::npos);
+  EXPECT_NE(gp.find("'1P' at graph 1, first 0.23333333333333334 left"), std::string::npos);  // right end
+  EXPECT_NE(gp.find("'9P' at first 9.333333333333332, graph 1 center"), std::string::npos);  // top: 9·rpm/60 = 1.4
+  for (const auto& l : d.lines) EXPECT_NE(gp.find("title '" + l.name + "'"), std::string::npos) << l.name;
+  // Single-quoted Gnuplot strings are read verbatim: a double quote is itself, a single one doubled.
+  EXPECT_NE(campbellGnuplotScript(small()).find("title = 'small \"quoted\" case'"), std::string::npos);
 }
 
 TEST(CampbellOutput, SyntheticTurbineIsTrackedThroughItsCrossings) {

@@ -1,0 +1,39 @@
+#pragma once
+/// \file
+/// Names and other text that whirl takes from input files and writes into generated files (plot
+/// scripts, tables, .lin, .mat). A control character in such text — a newline above all — would end
+/// a quoted string in a generated script and turn the rest into commands (a Gnuplot line starting
+/// with `!` runs a shell), or break a table's line structure. So input text is checked once, where
+/// it is read, and the writers of each format escape or replace what remains on their own.
+#include <string>
+#include <string_view>
+
+namespace whirl {
+
+/// True for the ASCII control characters: below 0x20 (newline, carriage return, tab, escape, …) and 0x7F.
+constexpr bool isControlCharacter(char c) {
+  const auto u = static_cast<unsigned char>(c);
+  return u < 0x20 || u == 0x7F;
+}
+
+/// Why `s` cannot be a name: "contains a control character (line feed, 0x0A) at character 3: names
+/// are printable text on one line"; empty when it has no control character. The message does not
+/// repeat `s` (it would carry the character into the message).
+std::string controlCharacterReason(std::string_view s);
+
+/// \throws InputError "file:line: key: <controlCharacterReason(s)>" when `s` holds a control character.
+void requirePrintable(std::string_view s, const std::string& file, int line, const std::string& key);
+
+/// `s` with tabs turned into spaces: free-text columns of other tools' files (an OpenFAST title,
+/// a .lin description) may use tabs as spacing; any other control character stays an error.
+std::string tabsToSpaces(std::string_view s);
+
+/// `s` with every control character replaced by a space, for writers of line-based formats (a .lin
+/// column, a comment in a script): the last line of defence when a name did not come through a reader.
+std::string withoutControlCharacters(std::string_view s);
+
+/// `s` with control characters written as C escapes (\n, \t, \r, \x1B; other text unchanged): error
+/// messages stay one line whatever name they quote.
+std::string escapeControlCharacters(std::string_view s);
+
+}  // namespace whirl
