@@ -8,6 +8,7 @@
 
 #include "case_file_test_util.hpp"
 #include "linearize/operating_point.hpp"
+#include "linearize/sweep.hpp"
 #include "state_space_test_util.hpp"
 
 namespace whirl {
@@ -64,6 +65,11 @@ TEST(OperatingCondition, EachFieldSetsItsCoordinateOrInput) {
     EXPECT_EQ(m.dofs[i].value, before.dofs[i].value);
     EXPECT_EQ(m.dofs[i].rate, before.dofs[i].rate);
   }
+  // Pitch from a schedule's degrees, as the old per-point model copy set it.
+  const SweepPoint p = sweepPoint(9, 11.4, 6.5);
+  EXPECT_EQ(initialPoint(m, sweepCondition(m, p)).q(r.blade_pitch[1]), 6.5 * std::numbers::pi / 180);
+  EXPECT_EQ(p.condition.rotor_speed, 9 * 2 * std::numbers::pi / 60);
+  EXPECT_FALSE(sweepCondition(m, p).wind_speed);  // no wind input: the wind speed only labels the point
 }
 
 TEST(OperatingCondition, FieldsTheModelCannotHonourAreNamed) {
