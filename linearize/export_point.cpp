@@ -40,4 +40,8 @@ ExportPoint exportOperatingPoint(const Model& m, const OperatingPoint& start, co
   return e;
 }
 
+ExportPoint exportOperatingPoint(const Model& m, const OperatingCondition& c, const ExportOptions& opt) {
+  return exportOperatingPoint(m, initialPoint(m, c), opt);
+}
+
 }  // namespace whirl

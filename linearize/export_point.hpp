@@ -38,5 +38,7 @@ struct ExportOptions {
 /// builds its state-space models. Rotor speed, wind speed and pitch are copied into the result as given.
 /// \throws InputError for unknown input/output names or selections that break the multiblade sets.
 ExportPoint exportOperatingPoint(const Model& model, const OperatingPoint& start, const ExportOptions& opt);
+/// The same from the model's starting point at an operating condition (initialPoint(model, condition)).
+ExportPoint exportOperatingPoint(const Model& model, const OperatingCondition& condition, const ExportOptions& opt);
 
 }  // namespace whirl

@@ -46,6 +46,78 @@ OperatingPoint initialPoint(const Model& m) {
   return op;
 }
 
+OperatingPoint initialPoint(const Model& m, const OperatingCondition& c) {
+  const ModelRoles& r = m.roles;
+  auto finite = [](double v, const char* field) {
+    if (!std::isfinite(v)) throw InputError(std::string("operating condition: ") + field + ": not a finite number");
+  };
+  auto need = [](bool has, const char* field, const char* what) {
+    if (!has) throw InputError(std::string("operating condition: ") + field + ": the model has no " + what);
+  };
+  finite(c.rotor_speed, "rotor_speed");
+  OperatingPoint op;
+  const int n = m.ndof();
+  op.q = VecX::Zero(n);
+  op.qd = VecX::Zero(n);
+  op.qdd = VecX::Zero(n);
+  for (int i = 0; i < n; ++i) {
+    op.q(i) = m.dofs[i].value;
+    op.qd(i) = m.dofs[i].rate;
+  }
+  op.u = VecX::Zero(m.ninput());
+  for (int i = 0; i < m.ninput(); ++i) op.u(i) = m.inputs[i].value;
+  if (c.wind_speed) {
+    finite(*c.wind_speed, "wind_speed");
+    need(r.wind_speed_input >= 0, "wind_speed", "wind-speed input");
+    op.u(r.wind_speed_input) = *c.wind_speed;
+  }
+  if (c.generator_torque) {
+    finite(*c.generator_torque, "generator_torque");
+    need(r.generator_torque_input >= 0, "generator_torque", "generator-torque input");
+    op.u(r.generator_torque_input) = *c.generator_torque;
+  }
+  for (int i = 0; i < m.ninput(); ++i)
+    for (const InputDofTarget& t : m.inputs[i].dofs) op.q(t.dof) += t.gain * op.u(i);
+  if (r.azimuth.empty()) {
+    if (c.rotor_speed != 0.0)
+      throw InputError("operating condition: rotor_speed: the model has no rotating coordinate (an azimuth)");
+    need(!c.azimuth, "azimuth", "rotating coordinate (an azimuth)");
+  }
+  for (int a : r.azimuth) {
+    op.qd(a) = c.rotor_speed;
+    if (c.azimuth) {
+      finite(*c.azimuth, "azimuth");
+      op.q(a) = *c.azimuth;
+    }
+  }
+  if (c.collective_pitch || !c.blade_pitch_offsets.empty()) {
+    const char* field = c.collective_pitch ? "collective_pitch" : "blade_pitch_offsets";
+    need(!r.blade_pitch.empty(), field, "blade pitch coordinates");
+    if (!c.blade_pitch_offsets.empty() && c.blade_pitch_offsets.size() != r.blade_pitch.size())
+      throw InputError("operating condition: blade_pitch_offsets: " + std::to_string(c.blade_pitch_offsets.size()) +
+                       " values for " + std::to_string(r.blade_pitch.size()) + " blades");
+    if (c.collective_pitch) finite(*c.collective_pitch, "collective_pitch");
+    for (size_t k = 0; k < r.blade_pitch.size(); ++k) {
+      double& pitch = op.q(r.blade_pitch[k]);
+      if (c.collective_pitch) pitch = *c.collective_pitch;
+      if (!c.blade_pitch_offsets.empty()) {
+        finite(c.blade_pitch_offsets[k], "blade_pitch_offsets");
+        pitch += c.blade_pitch_offsets[k];
+      }
+    }
+  }
+  if (c.yaw) {
+    finite(*c.yaw, "yaw");
+    need(r.yaw_dof >= 0, "yaw", "yaw coordinate");
+    op.q(r.yaw_dof) = *c.yaw;
+  }
+  return op;
+}
+
+OperatingPoint solveOperatingPoint(const Model& m, const OperatingCondition& c, const EquilibriumOptions& opt) {
+  return solveOperatingPoint(m, initialPoint(m, c), opt);
+}
+
 OperatingPoint solveOperatingPoint(const Model& m, const OperatingPoint& start, const EquilibriumOptions& opt) {
   LinearizeWorkspace lw(m);
   return solveOperatingPoint(m, start, opt, lw);

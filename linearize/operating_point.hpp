@@ -9,6 +9,7 @@
 #include "linearize/linearize_workspace.hpp"
 #include "src/dynamics/aero_inflow.hpp"
 #include "src/model/model.hpp"
+#include "src/model/operating_condition.hpp"
 
 namespace whirl {
 
@@ -44,11 +45,26 @@ struct EquilibriumOptions {
 /// inputs at their values; a frozen coordinate driven by inputs at value + Σ gain · u.
 OperatingPoint initialPoint(const Model& model);
 
+/// Starting point of the model at an operating condition (src/model/operating_condition.hpp),
+/// through the model's roles (ModelRoles): the model's initial point with
+/// - the wind-speed and generator-torque inputs at the condition's values (before the inputs move
+///   the frozen coordinates they drive),
+/// - every rotating coordinate at the rotor speed (its rate) and, if given, at the azimuth,
+/// - each blade's pitch coordinate at the collective pitch plus the blade's offset,
+/// - the yaw coordinate at the yaw.
+/// The model itself is not changed: one model serves every operating point.
+/// \throws InputError naming the field the model cannot honour (e.g. "wind_speed: the model has no
+/// wind-speed input"), or a value that is not finite.
+OperatingPoint initialPoint(const Model& model, const OperatingCondition& condition);
+
 /// Solves the equilibrium of the non-rotating active coordinates starting from `start`.
 /// Throws ComputeError naming the coordinate when K is singular or Newton does not converge.
 OperatingPoint solveOperatingPoint(const Model& model, const OperatingPoint& start, const EquilibriumOptions& opt = {});
 /// Same, with reused buffers.
 OperatingPoint solveOperatingPoint(const Model& model, const OperatingPoint& start, const EquilibriumOptions& opt,
                                    LinearizeWorkspace& lw);
+/// The equilibrium at an operating condition: solveOperatingPoint(model, initialPoint(model, condition), opt).
+OperatingPoint solveOperatingPoint(const Model& model, const OperatingCondition& condition,
+                                   const EquilibriumOptions& opt = {});
 
 }  // namespace whirl

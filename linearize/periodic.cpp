@@ -45,4 +45,8 @@ PeriodicLinearization linearizePeriodic(const Model& m, const OperatingPoint& st
   return p;
 }
 
+PeriodicLinearization linearizePeriodic(const Model& m, const OperatingCondition& c, const PeriodicOptions& opt) {
+  return linearizePeriodic(m, initialPoint(m, c), opt);
+}
+
 }  // namespace whirl

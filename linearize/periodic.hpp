@@ -30,5 +30,9 @@ int findAzimuthDof(const Model& model);
 
 /// Throws InputError when the model has no rotating coordinate or azimuths < 1.
 PeriodicLinearization linearizePeriodic(const Model& model, const OperatingPoint& start, const PeriodicOptions& opt);
+/// The same from the model's starting point at an operating condition (initialPoint(model, condition)):
+/// the revolution at the condition's rotor speed, from its azimuth (or the model's).
+PeriodicLinearization linearizePeriodic(const Model& model, const OperatingCondition& condition,
+                                        const PeriodicOptions& opt);
 
 }  // namespace whirl

@@ -55,6 +55,7 @@ Model readCase(const std::string& path, const std::vector<CaseOverride>& overrid
   if (const auto d = top.find("dofs")) readDofSettings(*d, build);
   if (const auto l = top.find("loads")) readLoads(*l, build);
   if (const auto in = top.find("inputs")) readInputTargets(*in, build);
+  assignRoles(build);
   if (const auto o = top.find("outputs")) readOutputs(*o, build);
   // Body indices of build.beams are those before finalize() sorts the bodies.
   if (beams)

@@ -1,4 +1,6 @@
 // `outputs:` of a case, and the frozen coordinates an input drives (`inputs: - dofs:`).
+#include <algorithm>
+
 #include "src/io/case_reader.hpp"
 #include "src/shapes/beam_moment.hpp"
 
@@ -102,6 +104,39 @@ void readInputTargets(const CaseNode& list, CaseBuild& build) {
         d->fail("DOF '" + build.model.dofs[dof].name + "' is not frozen: an input sets frozen coordinates only " +
                 "(add `frozen: true` under dofs:)");
       in.dofs.push_back({dof, gain});
+    }
+  }
+}
+
+void assignRoles(CaseBuild& build) {
+  Model& m = build.model;
+  std::vector<int> pitch, inputs;  // per blade
+  for (int i = 0; i < m.ninput(); ++i) {
+    const Input& in = m.inputs[i];
+    if (in.blade < 0 || in.dofs.size() != 1 || !build.dof_angular[in.dofs.front().dof]) continue;
+    const size_t b = static_cast<size_t>(in.blade);
+    if (pitch.size() <= b) {
+      pitch.resize(b + 1, -1);
+      inputs.resize(b + 1, -1);
+    }
+    if (pitch[b] >= 0) return;  // two candidates for one blade: no pitch roles
+    pitch[b] = in.dofs.front().dof;
+    inputs[b] = i;
+  }
+  if (pitch.empty() || std::find(pitch.begin(), pitch.end(), -1) != pitch.end()) return;
+  m.roles.blade_pitch = pitch;
+  m.roles.blade_pitch_inputs = inputs;
+  std::vector<int> all = pitch;
+  std::sort(all.begin(), all.end());
+  for (int i = 0; i < m.ninput(); ++i) {
+    const Input& in = m.inputs[i];
+    if (in.blade >= 0 || in.dofs.size() != all.size()) continue;
+    std::vector<int> targets;
+    for (const InputDofTarget& t : in.dofs) targets.push_back(t.dof);
+    std::sort(targets.begin(), targets.end());
+    if (targets == all) {
+      m.roles.collective_pitch_input = i;
+      break;
     }
   }
 }

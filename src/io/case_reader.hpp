@@ -85,6 +85,12 @@ void readDofSettings(const CaseNode& map, CaseBuild& build);
 void readLoads(const CaseNode& list, CaseBuild& build);
 /// The `dofs:` (frozen coordinates driven) of each input, once the DOFs exist (case_outputs.cpp).
 void readInputTargets(const CaseNode& list, CaseBuild& build);
+/// The model roles a case gives by its structure (case_outputs.cpp), for operating conditions:
+/// blade k's pitch coordinate and pitch input = the input with `blade: k` that drives exactly one
+/// frozen angular coordinate (every blade 1…N needs one, else the case has no pitch roles); the
+/// collective pitch input = the first fixed-frame input that drives exactly those N coordinates.
+/// The rotating coordinates (`rotating: true`) become the azimuth in finalize().
+void assignRoles(CaseBuild& build);
 /// `outputs:` (case_outputs.cpp).
 void readOutputs(const CaseNode& list, CaseBuild& build);
 

@@ -46,6 +46,7 @@ void addInputs(Builder& b, const TowerParts& tower, const DrivetrainParts& dt, c
   // Pitch: prescribed rotations of the frozen pitch joints (positive to feather, as BlPitch).
   const int coll = input("collective pitch", "rad");
   for (int d : rotor.pitch) m.inputs[coll].dofs.push_back({d, 1.0});
+  m.roles.collective_pitch_input = coll;
   for (size_t k = 0; k < rotor.pitch.size(); ++k) {
     const std::string name = "blade " + std::to_string(k + 1) + " pitch";
     Input in;
@@ -54,7 +55,12 @@ void addInputs(Builder& b, const TowerParts& tower, const DrivetrainParts& dt, c
     in.dofs.push_back({rotor.pitch[k], 1.0});
     in.blade = static_cast<int>(k);
     m.inputs.push_back(in);
+    m.roles.blade_pitch_inputs.push_back(m.ninput() - 1);
   }
+  // What an operating condition sets (src/model/operating_condition.hpp); no wind input (no aerodynamics).
+  m.roles.blade_pitch = rotor.pitch;
+  m.roles.generator_torque_input = gen;
+  m.roles.yaw_dof = dt.yaw;
 }
 
 Output dofOutput(std::string name, std::string unit, int order, std::vector<std::pair<int, double>> terms) {

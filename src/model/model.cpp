@@ -250,6 +250,32 @@ void requirePrintableNames(const Model& m) {
   }
 }
 
+// Roles: DOF indices renumbered, input indices checked, the azimuth = the rotating coordinates.
+void finalizeRoles(Model& m, const std::vector<int>& new_dof) {
+  ModelRoles& r = m.roles;
+  auto dof = [&](int& d, const char* what) {
+    if (d < 0) return;
+    if (d >= static_cast<int>(new_dof.size())) throw InputError(std::string("model roles: ") + what + ": no such DOF");
+    d = new_dof[d];
+  };
+  auto input = [&](int i, const char* what) {
+    if (i >= m.ninput()) throw InputError(std::string("model roles: ") + what + ": no such input");
+  };
+  for (int& d : r.blade_pitch) {
+    if (d < 0) throw InputError("model roles: blade pitch: every blade needs its pitch coordinate");
+    dof(d, "blade pitch");
+    if (!m.dofs[d].frozen) throw InputError("model roles: blade pitch: DOF '" + m.dofs[d].name + "' is not frozen");
+  }
+  dof(r.yaw_dof, "yaw");
+  input(r.collective_pitch_input, "collective pitch");
+  for (int i : r.blade_pitch_inputs) input(i, "blade pitch");
+  input(r.wind_speed_input, "wind speed");
+  input(r.generator_torque_input, "generator torque");
+  r.azimuth.clear();
+  for (int i = 0; i < m.ndof(); ++i)
+    if (m.dofs[i].rotating) r.azimuth.push_back(i);
+}
+
 }  // namespace
 
 void finalize(Model& m) {
@@ -367,6 +393,7 @@ void finalize(Model& m) {
     if (l.input >= m.ninput()) throw InputError("DOF load: no such input");
   finalizeInputsAndOutputs(m, new_dof);
   finalizeAero(m, new_index, new_dof);
+  finalizeRoles(m, new_dof);
 
   // Geared joints take the coordinate of the joint they follow.
   for (Body& b : m.bodies) {

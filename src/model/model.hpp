@@ -119,6 +119,21 @@ struct ChainStep {
   double ratio = 1.0;  ///< AxisRotate: angle = ratio × q (gears)
 };
 
+/// Which coordinates and inputs play which part in an operating condition
+/// (src/model/operating_condition.hpp), so that rotor speed, pitch, wind speed, … are applied by
+/// role, never by matching names. Filled by the builders (ElastoDyn, YAML cases) with the indices of
+/// the model they build; finalize() renumbers the DOF indices, fills `azimuth` and checks them all.
+/// −1 / empty = the model has no such coordinate or input.
+struct ModelRoles {
+  std::vector<int> azimuth;      ///< the rotating coordinates (Dof::rotating; set by finalize)
+  std::vector<int> blade_pitch;  ///< pitch coordinate of each blade (frozen joint, [rad]), index = blade
+  int collective_pitch_input = -1;       ///< input adding to every blade's pitch [rad]
+  std::vector<int> blade_pitch_inputs;   ///< per blade: the input adding to that blade's pitch [rad] (−1: none)
+  int wind_speed_input = -1;             ///< hub-height wind speed [m/s] (none before the aerodynamics)
+  int generator_torque_input = -1;       ///< generator torque [N m, high-speed shaft]
+  int yaw_dof = -1;                      ///< nacelle yaw coordinate [rad]
+};
+
 struct Model {
   std::string name;
   Vec3 gravity = Vec3(0, 0, -9.80665);  ///< ground frame [m/s²]
@@ -132,6 +147,7 @@ struct Model {
   AeroModel aero;                        ///< blade elements, polars, wind (empty: no aerodynamics)
   GeneratorTorqueLaw generator;          ///< generator torque against speed (inactive: torque = its input)
   std::vector<Output> outputs;           ///< measured quantities y = h(q, q̇, q̈) (output.hpp)
+  ModelRoles roles;                      ///< what plays rotor azimuth, pitch, wind speed, … (above)
 
   // Derived by finalize().
   std::vector<std::vector<ChainStep>> chains;  ///< per body
@@ -154,7 +170,8 @@ int jointDofCount(JointType t);
 /// Orders bodies parents-first (by depth), numbers the DOFs [Branlard2019, §3.1], builds the chains and
 /// checks the data: names unique, parents and points exist, masses ≥ 0, inertia positive
 /// semi-definite, everything finite. Bodies must carry their DOFs in `dofs` with `body`/`local`
-/// set; DOFs are renumbered. Names and units must be printable text on one line (src/model/text.hpp).
+/// set; DOFs are renumbered (and with them the DOF indices of `roles`, whose `azimuth` becomes the
+/// rotating coordinates). Names and units must be printable text on one line (src/model/text.hpp).
 /// Throws InputError naming the body/DOF and the reason.
 void finalize(Model& model);
 

@@ -1,0 +1,21 @@
+#include "src/model/operating_condition.hpp"
+
+#include <numbers>
+
+#include "src/model/model.hpp"
+
+namespace whirl {
+
+OperatingCondition modelCondition(const Model& m) {
+  OperatingCondition c;
+  for (const Dof& d : m.dofs)
+    if (d.rotating) {
+      c.rotor_speed = d.rate;
+      break;
+    }
+  return c;
+}
+
+double rpmToRadPerSec(double rpm) { return rpm * 2 * std::numbers::pi / 60; }
+
+}  // namespace whirl
