@@ -16,25 +16,30 @@ SweepPoint sweepPoint(double rpm, std::optional<double> wind_speed, std::optiona
   return p;
 }
 
-std::vector<SweepPoint> rpmRange(const std::string& spec) {
+std::vector<double> parseRange(const std::string& spec, const std::string& option) {
   static const std::regex re(R"(\s*([-+0-9.eE]+)\s*:\s*([-+0-9.eE]+)\s*:\s*([-+0-9.eE]+)\s*)");
   std::smatch mt;
-  if (!std::regex_match(spec, mt, re)) throw InputError("--rpm: expected START:STEP:STOP, got '" + spec + "'");
+  if (!std::regex_match(spec, mt, re)) throw InputError(option + ": expected START:STEP:STOP, got '" + spec + "'");
   double a, s, b;
   try {
     a = std::stod(mt[1]);
     s = std::stod(mt[2]);
     b = std::stod(mt[3]);
   } catch (const std::exception&) {
-    throw InputError("--rpm: not a number in '" + spec + "'");
+    throw InputError(option + ": not a number in '" + spec + "'");
   }
   if (!(s > 0) || !(b >= a) || !std::isfinite(a) || !std::isfinite(b))
-    throw InputError("--rpm: need STEP > 0 and STOP >= START in '" + spec + "'");
+    throw InputError(option + ": need STEP > 0 and STOP >= START in '" + spec + "'");
   const int n = static_cast<int>(std::floor((b - a) / s + 1e-9)) + 1;
-  if (n > 100000) throw InputError("--rpm: more than 100000 points in '" + spec + "'");
+  if (n > 100000) throw InputError(option + ": more than 100000 points in '" + spec + "'");
+  std::vector<double> values(static_cast<size_t>(n));
+  for (int k = 0; k < n; ++k) values[static_cast<size_t>(k)] = a + k * s;
+  return values;
+}
+
+std::vector<SweepPoint> rpmRange(const std::string& spec) {
   std::vector<SweepPoint> pts;
-  pts.reserve(static_cast<size_t>(n));
-  for (int k = 0; k < n; ++k) pts.push_back(sweepPoint(a + k * s));
+  for (double rpm : parseRange(spec, "--rpm")) pts.push_back(sweepPoint(rpm));
   return pts;
 }
 

@@ -36,6 +36,9 @@ struct SweepPoint {
 SweepPoint sweepPoint(double rpm, std::optional<double> wind_speed = std::nullopt,
                       std::optional<double> pitch_deg = std::nullopt);
 
+/// Values START:STEP:STOP, STOP included within round-off; InputError naming `option` on a bad range.
+std::vector<double> parseRange(const std::string& spec, const std::string& option);
+
 /// Points START:STEP:STOP (rpm), STOP included within round-off. InputError on a bad range.
 std::vector<SweepPoint> rpmRange(const std::string& spec);
 

@@ -5,6 +5,7 @@
 
 #include "modal/campbell_output.hpp"
 #include "src/io/csv.hpp"
+#include "src/io/gnuplot.hpp"
 #include "src/model/text.hpp"
 
 namespace whirl {
@@ -17,28 +18,6 @@ namespace {
 constexpr const char* kColours[] = {"#0072b2", "#d55e00", "#009e73", "#cc79a7", "#e69f00",
                                     "#56b4e9", "#000000", "#8b1a1a", "#6a3d9a", "#b8a000"};
 constexpr int kPointTypes[] = {7, 5, 9, 13, 11, 6, 4, 8, 12};
-
-/// A single-quoted Gnuplot string: Gnuplot 5 reads it verbatim (no backslash escapes, no `…`
-/// command substitution, which double-quoted strings do run; no @macro expansion) up to the next
-/// lone ', and '' stands for one quote. A newline would end the command and let the next line run
-/// as one (`!cmd` is a shell command): control characters become spaces. The terminals are
-/// noenhanced, so no character has a meaning in the rendered text either.
-std::string quoted(const std::string& s) {
-  std::string q = "'";
-  for (char c : withoutControlCharacters(s)) {
-    if (c == '\'') q += '\'';
-    q += c;
-  }
-  return q + "'";
-}
-
-/// Text for a `#` comment: one line, and no trailing backslash (Gnuplot continues a comment ending
-/// in \ onto the next line, which would swallow that line).
-std::string comment(const std::string& s) {
-  std::string t = withoutControlCharacters(s);
-  while (!t.empty() && (t.back() == '\\' || t.back() == ' ')) t.pop_back();
-  return t;
-}
 
 /// Smallest number with two significant digits ≥ v (v > 0).
 double niceCeil(double v) {
@@ -131,7 +110,7 @@ std::string harmonicLabels(std::vector<HarmonicLabel> labels, const Ranges& r) {
     double& last = l.top ? last_top : last_right;
     l.at = std::max(l.at, last + (l.top ? 0.035 : 0.045));
     last = l.at;
-    const std::string text = quoted(std::to_string(l.n) + "P");
+    const std::string text = gnuplotQuoted(std::to_string(l.n) + "P");
     g += "  set label " + std::to_string(k + 1) + " " + text +
          (l.top ? " at first " + formatNumber(r.x0 + l.at * (r.x1 - r.x0)) + ", graph 1 center offset 0, char 0.7"
                 : " at graph 1, first " + formatNumber(l.at * r.fmax) + " left offset char 0.5, 0") +
@@ -147,7 +126,7 @@ std::string campbellGnuplotData(const CampbellDiagram& d) {
                   "# columns: rpm, wind speed [m/s] (nan: none), frequency [Hz], damping ratio [-]\n";
   for (std::size_t l = 0; l < d.lines.size(); ++l) {
     const auto& line = d.lines[l];
-    s += (l ? "\n\n" : "") + std::string("# index ") + std::to_string(l) + ": " + comment(line.name) + "\n";
+    s += (l ? "\n\n" : "") + std::string("# index ") + std::to_string(l) + ": " + gnuplotComment(line.name) + "\n";
     bool gap = false, any = false;
     for (std::size_t p = 0; p < d.points.size(); ++p) {
       if (line.mode[p] < 0) {
@@ -184,8 +163,8 @@ std::string campbellGnuplotScript(const CampbellDiagram& d, const CampbellPlotOp
        "# Layout: page size [px], font, axes; the plots end at 'right' (screen fraction), the key follows.\n"
        "width = 1280; height = 900; font = 'Sans,12'\n";
   g += "xcol = " + std::string(opt.versus_wind_speed ? "2" : "1") + "   # campbell.dat column on x: 1 rotor speed, 2 wind speed\n";
-  g += "xtitle = " + quoted(opt.versus_wind_speed ? "Wind speed [m/s]" : "Rotor speed [rpm]") + "\n";
-  g += "title = " + quoted(d.title.empty() ? "Campbell diagram" : d.title) + "\n";
+  g += "xtitle = " + gnuplotQuoted(opt.versus_wind_speed ? "Wind speed [m/s]" : "Rotor speed [rpm]") + "\n";
+  g += "title = " + gnuplotQuoted(d.title.empty() ? "Campbell diagram" : d.title) + "\n";
   g += "# The nP labels below are placed for these ranges: move them when you change xmax or fmax.\n";
   g += "xmin = " + formatNumber(r.x0) + "; xmax = " + formatNumber(r.x1) + "\n";
   g += "fmax = " + formatNumber(r.fmax) + "   # top of the frequency axis [Hz]\n";
@@ -194,7 +173,7 @@ std::string campbellGnuplotScript(const CampbellDiagram& d, const CampbellPlotOp
   g += "# One style per Campbell line (colour and point type); 100: excitation lines and labels.\n";
   for (std::size_t l = 0; l < d.lines.size(); ++l)
     g += "set style line " + std::to_string(l + 1) + " lc rgb '" + kColours[l % 10] + "' lw 2 pt " +
-         std::to_string(kPointTypes[l % 9]) + " ps 1.1   # " + comment(d.lines[l].name) + "\n";
+         std::to_string(kPointTypes[l % 9]) + " ps 1.1   # " + gnuplotComment(d.lines[l].name) + "\n";
   g += "set style line 100 lc rgb '#777777' lw 1.2 dt (20, 12)\n\n";
   if (opt.versus_wind_speed) {
     g += "# Operating points (wind speed, rpm) for the nP excitation lines.\n$points << EOD\n";
@@ -216,7 +195,7 @@ std::string campbellGnuplotScript(const CampbellDiagram& d, const CampbellPlotOp
     if (!shown(d, d.lines[l], opt)) continue;
     const std::string idx = "data index " + std::to_string(l) + " using xcol:";
     const std::string style = " with linespoints ls " + std::to_string(l + 1);
-    freq += "  " + idx + "3" + style + " title " + quoted(d.lines[l].name) + ", \\\n";
+    freq += "  " + idx + "3" + style + " title " + gnuplotQuoted(d.lines[l].name) + ", \\\n";
     damp += "  " + idx + "(100*$4)" + style + " notitle, \\\n";
   }
   const auto plot = [](std::string items) {

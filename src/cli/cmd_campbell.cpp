@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "linearize/trim.hpp"
 #include "modal/campbell_output.hpp"
 #include "modal/campbell_sweep.hpp"
 #include "modal/tracking.hpp"
@@ -18,7 +19,7 @@ namespace {
 
 struct CampbellOptions {
   ModelOptions model;
-  std::string rpm_range, schedule, out, tracking;
+  std::string rpm_range, schedule, wind_range, out, tracking;
   int azimuths = 36;
   std::string versus = "auto";
   double max_freq = 0;
@@ -26,10 +27,13 @@ struct CampbellOptions {
 };
 
 void run(const CampbellOptions& opt) {
-  if (opt.rpm_range.empty() == opt.schedule.empty())
-    throw InputError("campbell: give exactly one of --rpm START:STEP:STOP and --schedule FILE");
-  const std::vector<SweepPoint> points = opt.schedule.empty() ? rpmRange(opt.rpm_range) : readSchedule(opt.schedule);
+  if (opt.rpm_range.empty() + opt.schedule.empty() + opt.wind_range.empty() != 2)
+    throw InputError(
+        "campbell: give exactly one of --rpm START:STEP:STOP, --schedule FILE and --wind START:STEP:STOP");
   const Model m = loadModel(opt.model);
+  const std::vector<SweepPoint> points = !opt.rpm_range.empty()  ? rpmRange(opt.rpm_range)
+                                         : !opt.schedule.empty() ? readSchedule(opt.schedule)
+                                                                 : trimmedPoints(m, opt.wind_range);
   const std::string dir = opt.out.empty() ? defaultOutputFolder(opt.model.case_path) : opt.out;
   ensureWritableFolder(dir);
 
@@ -50,7 +54,7 @@ void run(const CampbellOptions& opt) {
   d.lines = trackModes(d.points, track);
 
   CampbellPlotOptions plot;
-  plot.versus_wind_speed = opt.versus == "wind" || (opt.versus == "auto" && !opt.schedule.empty());
+  plot.versus_wind_speed = opt.versus == "wind" || (opt.versus == "auto" && opt.rpm_range.empty());
   plot.max_freq_hz = opt.max_freq;
   plot.render = !opt.no_plot;
   const auto files = writeCampbell(d, dir, plot);
@@ -73,11 +77,14 @@ void addCampbellCommand(CLI::App& app) {
   addModelOptions(*cmd, opt->model, false);
   cmd->add_option("--rpm", opt->rpm_range, "rotor speeds START:STEP:STOP [rpm]");
   cmd->add_option("--schedule", opt->schedule, "operating schedule CSV (wind speed, RotSpeed, BldPitch columns)");
+  cmd->add_option("--wind", opt->wind_range,
+                  "wind speeds START:STEP:STOP [m/s], each trimmed (rotor speed below rated, pitch above; needs "
+                  "aerodynamics and a generator torque law)");
   cmd->add_option("--azimuths", opt->azimuths, "azimuths per revolution for the multiblade average")
       ->check(CLI::Range(1, 3600));
   cmd->add_option("--out", opt->out, "output folder (default reports/<case name>)");
   cmd->add_option("--tracking", opt->tracking, "mode-tracking overrides file (rename, assign; see README)");
-  cmd->add_option("--versus", opt->versus, "x axis: rpm, wind or auto (wind with --schedule)")
+  cmd->add_option("--versus", opt->versus, "x axis: rpm, wind or auto (wind with --schedule or --wind)")
       ->check(CLI::IsMember({"rpm", "wind", "auto"}));
   cmd->add_option("--max-freq", opt->max_freq, "top of the frequency axis [Hz] (default: automatic)");
   cmd->add_flag("--no-plot", opt->no_plot, "write the tables and the Gnuplot script, do not run Gnuplot");

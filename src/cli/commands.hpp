@@ -14,4 +14,5 @@ void addCompareCommand(CLI::App& app);
 void addExportCommand(CLI::App& app);
 void addStudyCommand(CLI::App& app);
 void addShapesCommand(CLI::App& app);
+void addSteadyCommand(CLI::App& app);
 }  // namespace whirl::cli

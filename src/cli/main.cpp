@@ -51,6 +51,7 @@ int main(int argc, char** argv) {
   whirl::cli::addExportCommand(app);
   whirl::cli::addStudyCommand(app);
   whirl::cli::addShapesCommand(app);
+  whirl::cli::addSteadyCommand(app);
   std::vector<char*> cargv;
   for (auto& a : args) cargv.push_back(a.data());
   cargv.push_back(nullptr);

@@ -40,7 +40,7 @@ void addAeroLoads(const Model& m, const Workspace<TK>& ws, const VecXT<TK>& q, c
   using std::sqrt;
   const FrameState<TK>& hub = ws.frames[am.hub_body];
   const Vec3T<TK> disk = hub.R.col(0);
-  const T speed = am.wind.speed_input >= 0 ? u(am.wind.speed_input) : T(0);
+  const T speed = m.roles.wind_speed_input >= 0 ? u(m.roles.wind_speed_input) : T(0);
   if (record) *record = AeroRecord{};
   int index = 0;  // element over all blades
   for (std::size_t bi = 0; bi < am.blades.size(); ++bi) {

@@ -122,7 +122,7 @@ void addInputLoads(const Model& m, const Workspace<TK>& ws, const VecXT<TK>& qd,
       Mb = f.R.transpose() * l.moment.cast<TK>();
     }
     T scale = detail::inputScale(u, l.input);
-    if (gen.active() && l.input == gen.torque_input) scale += T(law);
+    if (gen.active() && l.input == m.roles.generator_torque_input) scale += T(law);
     detail::addPointForce(m, ws, l.body, l.point, Fb, Mb, scale, e);
   }
   for (const DofLoad& l : m.dof_loads) e(l.dof) += l.value * detail::inputScale(u, l.input);

@@ -22,7 +22,8 @@ void finalizeAero(Model& m, const std::vector<int>& new_body, const std::vector<
     if (!(a.tip_radius > a.hub_radius) || !(a.hub_radius >= 0))
       throw InputError("aerodynamics: need 0 <= hub radius < tip radius");
     const SteadyWind& w = a.wind;
-    if (w.speed_input < 0 || w.speed_input >= m.ninput()) throw InputError("aerodynamics: no wind-speed input");
+    if (m.roles.wind_speed_input < 0 || m.roles.wind_speed_input >= m.ninput())
+      throw InputError("aerodynamics: the model has no wind-speed input (ModelRoles::wind_speed_input)");
     if (w.shear_exponent != 0 && !(w.reference_height > 0))
       throw InputError("wind: a shear exponent needs a positive reference height");
     if (!std::isfinite(w.shear_exponent) || !std::isfinite(w.direction) || !std::isfinite(w.upflow))
@@ -51,7 +52,8 @@ void finalizeAero(Model& m, const std::vector<int>& new_body, const std::vector<
     }
   }
   GeneratorTorqueLaw& g = m.generator;
-  if (g.torque_input >= m.ninput()) throw InputError("generator torque law: no such input");
+  if (g.active() && (m.roles.generator_torque_input < 0 || m.roles.generator_torque_input >= m.ninput()))
+    throw InputError("generator torque law: the model has no generator-torque input (ModelRoles)");
   if (g.speed_output >= m.noutput()) throw InputError("generator torque law: no such output");
   if (g.speed_output >= 0 && m.outputs[g.speed_output].kind != OutputKind::DofCombination)
     throw InputError("generator torque law: the speed output must be a combination of coordinate rates");

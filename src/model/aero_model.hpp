@@ -39,9 +39,9 @@ struct AeroBlade {
 };
 
 /// Steady wind (InflowWind WindType = 1): horizontal speed U at the reference height, power-law shear
-/// U (z/z_ref)^α, propagation direction and upflow. The speed is the value of input `speed_input`.
+/// U (z/z_ref)^α, propagation direction and upflow. U is the value of the model's wind-speed input
+/// (ModelRoles::wind_speed_input).
 struct SteadyWind {
-  int speed_input = -1;         ///< input holding the hub-height horizontal wind speed [m/s]
   double reference_height = 0;  ///< z_ref above the ground frame origin [m]
   double shear_exponent = 0;    ///< α [-]
   double direction = 0;         ///< propagation direction, positive turning the wind towards −Y [rad]
@@ -55,6 +55,7 @@ struct AeroModel {
   double air_density = 1.225;   ///< [kg/m³]
   double hub_radius = 0;        ///< AeroDyn zHub: apex to blade root along the blade (hub loss) [m]
   double tip_radius = 0;        ///< AeroDyn zTip: apex to the last element along the blade (tip loss) [m]
+  double rotor_radius = 0;      ///< radius of the swept disk (AeroDyn rTipFix: coned tip) for Cp, Ct, TSR [m]
   bool induction = true;        ///< BEM induction (AeroDyn WakeMod = 1); false: geometric inflow (WakeMod = 0)
   aero::BemOptions bem;
   SteadyWind wind;
@@ -70,17 +71,16 @@ struct AeroModel {
 
 /// ServoDyn's simple variable-speed torque law (VSContrl = 1): region 2 k ω², the linear region 2½
 /// up to rated speed, constant torque above. Generator speed ω_g (high-speed shaft) is the output
-/// `speed_output`; the torque is added to the value of input `torque_input` (the trim or controller
-/// offset), whose loads apply it to the structure.
+/// `speed_output`; the torque is added to the value of the generator-torque input
+/// (ModelRoles::generator_torque_input: the trim or controller offset), whose loads apply it.
 struct GeneratorTorqueLaw {
-  int torque_input = -1;   ///< the "generator torque" input [N m, high-speed shaft]
   int speed_output = -1;   ///< the "GenSpeed" output [rad/s], a combination of coordinate rates
   double rated_speed = 0;  ///< VS_RtGnSp [rad/s]
   double rated_torque = 0; ///< VS_RtTq [N m]
   double k2 = 0;           ///< VS_Rgn2K [N m s²/rad²]
   double slip = 0;         ///< VS_SlPc / 100 [-]
   double efficiency = 1;   ///< GenEff / 100: electrical over mechanical power [-]
-  bool active() const { return torque_input >= 0 && speed_output >= 0; }
+  bool active() const { return speed_output >= 0; }
 };
 
 }  // namespace whirl

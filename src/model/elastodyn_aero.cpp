@@ -13,12 +13,6 @@ namespace {
 
 constexpr double deg = std::numbers::pi / 180.0;
 
-int inputIndex(const Model& m, const std::string& name) {
-  for (int i = 0; i < m.ninput(); ++i)
-    if (m.inputs[i].name == name) return i;
-  return -1;
-}
-
 int outputIndex(const Model& m, const std::string& name) {
   for (int i = 0; i < m.noutput(); ++i)
     if (m.outputs[i].name == name) return i;
@@ -96,6 +90,7 @@ void addAerodynamics(Builder& b, const DrivetrainParts& dt, const RotorParts& ro
   }
   am.hub_body = dt.hub;
   am.hub_radius = c.HubRad;
+  am.rotor_radius = (c.HubRad + deck.blades.front().BlSpn.back()) * std::cos(c.PreCone.front() * deg);
   am.tip_radius = 0;
   for (const AeroBlade& bl : am.blades) am.tip_radius = std::max(am.tip_radius, bl.stations.back().z);
   const io::AeroDynInput& ad = deck.aerodyn;
@@ -114,7 +109,7 @@ void addAerodynamics(Builder& b, const DrivetrainParts& dt, const RotorParts& ro
   wind.unit = "m/s";
   wind.value = w.HWindSpeed;
   m.inputs.push_back(wind);
-  am.wind.speed_input = m.ninput() - 1;
+  m.roles.wind_speed_input = m.ninput() - 1;
   am.wind.reference_height = w.RefHt;
   am.wind.shear_exponent = w.PLExp;
   am.wind.direction = w.PropagationDir * deg;
@@ -128,9 +123,9 @@ void addGeneratorTorqueLaw(Builder& b, const io::ServoDynInput& servo) {
     throw InputError(servo.source.where("VSContrl", "0 (simple induction generator): whirl models only the simple "
                                                     "variable-speed law (VSContrl = 1) in an aerodynamic model"));
   GeneratorTorqueLaw& g = b.model.generator;
-  g.torque_input = inputIndex(b.model, "generator torque");
   g.speed_output = outputIndex(b.model, "GenSpeed");
-  if (!g.active()) throw InputError("ServoDyn torque law: the model has no generator torque input or GenSpeed output");
+  if (!g.active() || b.model.roles.generator_torque_input < 0)
+    throw InputError("ServoDyn torque law: the model has no generator torque input or GenSpeed output");
   const double rpm = std::numbers::pi / 30.0;  // rad/s per rpm
   g.rated_speed = law.VS_RtGnSp * rpm;
   g.rated_torque = law.VS_RtTq;

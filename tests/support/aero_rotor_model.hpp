@@ -3,6 +3,7 @@
 // (ground X) at a prescribed speed, blades laid out as ElastoDyn's (span-first body axes, precone,
 // pitch about −x) with one flap and one edge shape, a "wind speed" input and a "collective pitch"
 // input. The polar is thin-airfoil Cl = 2π α with a constant drag, exact under linear interpolation.
+#include <cmath>
 #include <numbers>
 
 #include "src/aero/polar.hpp"
@@ -62,6 +63,7 @@ inline Model aeroRotorModel(const AeroRotorOptions& o = {}) {
   m.aero.hub_body = 0;
   m.aero.hub_radius = hub_radius;
   m.aero.tip_radius = hub_radius + length;
+  m.aero.rotor_radius = (hub_radius + length) * std::cos(o.precone_deg * pi / 180);
   m.aero.induction = o.induction;
 
   Mat3 span_first;
@@ -110,6 +112,7 @@ inline Model aeroRotorModel(const AeroRotorOptions& o = {}) {
     m.dofs.push_back(pd);
     pitch.dofs.push_back({static_cast<int>(m.dofs.size()) - 1, 1.0});
     ab.pitch_dof = static_cast<int>(m.dofs.size()) - 1;
+    m.roles.blade_pitch.push_back(ab.pitch_dof);
     for (int s = 0; s < 2; ++s) {
       Dof d;
       d.name = bl.name + " " + shapes[s]->name;
@@ -124,7 +127,8 @@ inline Model aeroRotorModel(const AeroRotorOptions& o = {}) {
   }
   m.inputs.push_back(wind);
   m.inputs.push_back(pitch);
-  m.aero.wind.speed_input = 0;
+  m.roles.wind_speed_input = 0;
+  m.roles.collective_pitch_input = 1;
   m.aero.wind.reference_height = o.hub_height;
   finalize(m);
   return m;

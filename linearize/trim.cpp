@@ -1,0 +1,204 @@
+#include "linearize/trim.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "src/dynamics/generator_torque.hpp"
+#include "src/dynamics/kinematics.hpp"
+#include "src/dynamics/outputs.hpp"
+#include "src/dynamics/residual.hpp"
+#include "src/model/brent.hpp"
+#include "src/model/error.hpp"
+
+namespace whirl {
+namespace {
+
+// Generator speed per unit rotor speed: the GenSpeed output's gain on the rotor azimuth.
+double gearRatio(const Model& m, int azimuth) {
+  double g = 0;
+  for (const auto& [d, k] : m.outputs[m.generator.speed_output].terms)
+    if (d == azimuth) g += k;
+  return g;
+}
+
+struct Balance {
+  double f = 0;       ///< azimuth-averaged generalized force on the rotor azimuth [N m]
+  double torque = 0, thrust = 0, tip = 0, tower = 0;
+};
+
+// Out-of-plane elastic displacement of the last element of blade 1 [m]: its displacement in the body
+// frame, along the body's y axis turned back by the pitch (AeroDyn's x of the blade, aero_model.hpp).
+double tipDeflection(const Model& m, const VecX& q) {
+  const AeroBlade& bl = m.aero.blades.front();
+  const Body& b = m.bodies[bl.body];
+  const BodyPoint& pt = b.points[bl.stations.back().point];
+  Vec3 s = Vec3::Zero();
+  for (int j = 0; j < b.inertia.ne; ++j) s += pt.P.col(1 + j) * q(b.elastic_dof + j);
+  const double pitch = bl.pitch_dof >= 0 ? q(bl.pitch_dof) : 0.0;
+  return s.dot(axisRotation(b.axis, -pitch) * Vec3::UnitY());
+}
+
+// Torque balance at (Ω, β): the mean of the generalized force on the rotor azimuth over equilibria at n
+// azimuths k·2π/(B n) (B blades): one blade passage, the period of the BP torque ripple of gravity,
+// tilt and shear, which the mean then removes up to its n-th harmonic.
+class TorqueBalance {
+ public:
+  TorqueBalance(const Model& m, double wind, const TrimOptions& opt)
+      : m_(m), wind_(wind), opt_(opt), lw_(m), guess_(opt.azimuths), e_(m.ndof()), y_(m.noutput()) {
+    tower_ = m.findOutput("TTDspFA").value_or(-1);
+  }
+
+  Balance operator()(double omega, double pitch) {
+    ++evaluations;
+    Balance b;
+    const int az = m_.roles.azimuth.front();
+    const int blades = std::max<int>(1, static_cast<int>(m_.aero.blades.size()));
+    for (int k = 0; k < opt_.azimuths; ++k) {
+      OperatingCondition c;
+      c.wind_speed = wind_;
+      c.rotor_speed = omega;
+      c.collective_pitch = pitch;
+      c.azimuth = 2 * std::numbers::pi * k / (blades * opt_.azimuths);
+      OperatingPoint start = initialPoint(m_, c);
+      // Warm start: the previous evaluation's deflections at this azimuth.
+      EquilibriumOptions eq;
+      if (guess_[k].size() == start.q.size()) {
+        for (int i : m_.activeDofs())
+          if (!m_.dofs[i].rotating) start.q(i) = guess_[k](i);
+        eq.load_scale = scale_[k];  // the tolerance of the cold start this continues
+      }
+      const OperatingPoint op = solveOperatingPoint(m_, start, eq, lw_);
+      guess_[k] = op.q;
+      scale_[k] = op.load_scale;
+      residual(m_, lw_.ws, op.q, op.qd, op.qdd, op.u, e_);
+      const double w = 1.0 / opt_.azimuths;
+      b.f += w * e_(az);
+      b.torque += w * op.aero.torque;
+      b.thrust += w * op.aero.thrust;
+      b.tip += w * tipDeflection(m_, op.q);
+      if (tower_ >= 0) {
+        evaluateOutputs(m_, lw_.ws, op.q, op.qd, op.qdd, y_);
+        b.tower += w * y_(tower_);
+      }
+    }
+    return b;
+  }
+
+  int evaluations = 0;
+
+ private:
+  const Model& m_;
+  double wind_;
+  const TrimOptions& opt_;
+  LinearizeWorkspace lw_;
+  std::vector<VecX> guess_;
+  std::vector<double> scale_ = std::vector<double>(static_cast<std::size_t>(opt_.azimuths), 0.0);
+  VecX e_, y_;
+  int tower_ = -1;
+};
+
+// Checks what a steady state needs; `at` starts every message.
+void requireSteadyModel(const Model& m, const std::string& at) {
+  if (!m.aero.active()) throw InputError(at + "the model has no aerodynamics");
+  if (m.roles.azimuth.empty()) throw InputError(at + "the model has no rotating coordinate");
+}
+
+SteadyState stateOf(const Model& m, const OperatingCondition& c, const Balance& b, int evaluations) {
+  SteadyState out;
+  out.condition = c;
+  out.aero_torque = b.torque;
+  out.thrust = b.thrust;
+  out.imbalance = b.f;
+  out.tip_deflection = b.tip;
+  out.tower_top_fa = b.tower;
+  out.evaluations = evaluations;
+  if (m.generator.active()) {
+    out.generator_speed = gearRatio(m, m.roles.azimuth.front()) * c.rotor_speed;
+    out.generator_torque = generatorTorque(m.generator, out.generator_speed);
+  }
+  return out;
+}
+
+std::string rpmText(double omega) { return std::to_string(omega * 30 / std::numbers::pi) + " rpm"; }
+
+}  // namespace
+
+SteadyState steadyState(const Model& m, const OperatingCondition& c, const TrimOptions& opt) {
+  requireSteadyModel(m, "steady state: ");
+  if (!c.wind_speed) throw InputError("steady state: no wind speed");
+  TorqueBalance balance(m, *c.wind_speed, opt);
+  OperatingCondition cp = c;
+  cp.collective_pitch = c.collective_pitch.value_or(opt.min_pitch);
+  const Balance b = balance(cp.rotor_speed, *cp.collective_pitch);
+  return stateOf(m, cp, b, balance.evaluations);
+}
+
+SteadyState trimAtWindSpeed(const Model& m, double wind, const TrimOptions& opt) {
+  const std::string at = "trim at " + std::to_string(wind) + " m/s: ";
+  requireSteadyModel(m, at);
+  if (!m.generator.active()) throw InputError(at + "the model has no generator torque law (ServoDyn VSContrl = 1)");
+  if (!(wind > 0) || !std::isfinite(wind)) throw InputError(at + "the wind speed must be positive");
+  const int az = m.roles.azimuth.front();
+  const double gear = gearRatio(m, az);
+  if (!(gear > 0)) throw InputError(at + "the generator speed does not follow the rotor azimuth");
+  const GeneratorTorqueLaw& law = m.generator;
+  const double rated = law.rated_speed / gear;
+  const double scale = std::max(1.0, gear * law.rated_torque);
+  const double ftol = opt.tolerance * scale;
+  TorqueBalance balance(m, wind, opt);
+
+  const Balance at_rated = balance(rated, opt.min_pitch);
+  double omega = rated, pitch = opt.min_pitch;
+  bool above = false;
+  if (at_rated.f > 0) {
+    // Above rated: pitch to feather until the excess torque is gone.
+    const Balance top = balance(rated, opt.max_pitch);
+    if (top.f > 0)
+      throw ComputeError(at + "the aerodynamic torque exceeds the rated generator torque even at " +
+                         std::to_string(opt.max_pitch * 180 / std::numbers::pi) + " deg pitch");
+    const BrentResult r = brent([&](double p) { return balance(rated, p).f; }, opt.min_pitch, opt.max_pitch, at_rated.f,
+                                top.f, ftol, 1e-10, 100);
+    if (!r.converged) throw ComputeError(at + "the pitch trim did not converge");
+    pitch = r.x;
+    above = true;
+  } else {
+    // Below rated: the rotor speed of the torque balance at fine pitch, above the tip-speed ratio
+    // opt.min_tsr (near standstill BEM has no solution on much of the blade, and AeroDyn itself
+    // blends the induction off at low tip-speed ratios).
+    const double low = std::min(0.5 * rated, opt.min_tsr * wind / m.aero.rotor_radius);
+    const Balance slow = balance(low, opt.min_pitch);
+    if (slow.f <= 0)
+      throw ComputeError(at + "no torque balance between " + rpmText(low) + " (tip-speed ratio " +
+                         std::to_string(opt.min_tsr) + ") and rated " + rpmText(rated) +
+                         ": the aerodynamic torque does not overcome the generator torque law (below cut-in?)");
+    const BrentResult r = brent([&](double w) { return balance(w, opt.min_pitch).f; }, low, rated, slow.f, at_rated.f,
+                                ftol, 1e-10, 100);
+    if (!r.converged) throw ComputeError(at + "the rotor-speed trim did not converge");
+    omega = r.x;
+  }
+  OperatingCondition c;
+  c.wind_speed = wind;
+  c.rotor_speed = omega;
+  c.collective_pitch = pitch;
+  const Balance fin = balance(omega, pitch);
+  SteadyState out = stateOf(m, c, fin, balance.evaluations);
+  out.above_rated = above;
+  return out;
+}
+
+SweepPoint sweepPointOf(const SteadyState& t) {
+  const double rpm = t.condition.rotor_speed * 30 / std::numbers::pi;
+  SweepPoint p = sweepPoint(rpm, t.condition.wind_speed, *t.condition.collective_pitch * 180 / std::numbers::pi);
+  p.condition = t.condition;  // the trimmed values, not their round trip through rpm and degrees
+  return p;
+}
+
+std::vector<SweepPoint> trimmedPoints(const Model& m, const std::string& spec, const TrimOptions& opt) {
+  std::vector<SweepPoint> points;
+  for (double w : parseRange(spec, "--wind")) points.push_back(sweepPointOf(trimAtWindSpeed(m, w, opt)));
+  return points;
+}
+
+}  // namespace whirl

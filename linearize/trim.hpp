@@ -1,0 +1,60 @@
+#pragma once
+/// \file
+/// Trimmed operating points of a turbine at a given wind speed, as HAWCStab2 computes its operational
+/// data: the rotor in torque balance between the aerodynamic torque and the generator torque law.
+/// - Below rated: the rotor speed at which the azimuth-averaged generalized force on the rotor
+///   azimuth vanishes (aero torque = gear ratio × generator torque of the law), pitch at its minimum.
+/// - Above rated (the balance at rated speed and minimum pitch has excess aerodynamic torque): rotor
+///   speed held at rated generator speed / gear ratio, the pitch that balances the torque there.
+/// Each evaluation solves the equilibrium of the structure with the induction solved on the deflected
+/// geometry (quasi-steady BEM) at a few azimuths spanning a third of a revolution, so the 3P torque
+/// ripple averages out; the scalar root is bracketed (Brent), so a trim either converges or says
+/// why not.
+#include <string>
+
+#include <vector>
+
+#include "linearize/operating_point.hpp"
+#include "linearize/sweep.hpp"
+#include "src/model/operating_condition.hpp"
+
+namespace whirl {
+
+struct TrimOptions {
+  int azimuths = 3;             ///< equilibria per torque evaluation, spread over one blade passage
+  double min_tsr = 2.0;         ///< lower end of the rotor-speed bracket, as a tip-speed ratio [-]
+  double min_pitch = 0.0;       ///< fine pitch [rad]
+  double max_pitch = 0.7;       ///< upper end of the pitch bracket [rad] (40°)
+  double tolerance = 1e-9;      ///< on the torque balance, relative to the rated generator torque × gear ratio
+};
+
+/// A steady operating point, averaged over the azimuths of one blade passage.
+struct SteadyState {
+  OperatingCondition condition;  ///< wind speed, rotor speed and pitch (at the balance, when trimmed)
+  bool above_rated = false;      ///< pitch trimmed at rated speed
+  double aero_torque = 0;        ///< azimuth average of the rotor aerodynamic torque [N m]
+  double thrust = 0;             ///< azimuth average of the rotor aerodynamic thrust [N]
+  double generator_torque = 0;   ///< of the torque law at the generator speed [N m, high-speed shaft]
+  double generator_speed = 0;    ///< [rad/s]
+  double imbalance = 0;          ///< azimuth-averaged generalized force on the rotor azimuth [N m]
+  double tip_deflection = 0;     ///< blade 1 tip, out of the (coned) rotor plane, downwind positive [m]
+  double tower_top_fa = 0;       ///< tower-top displacement downwind (output TTDspFA) [m], 0 without it
+  int evaluations = 0;           ///< torque evaluations (each: `azimuths` equilibria)
+};
+
+/// The steady state at a given condition (wind speed, rotor speed, pitch; no trim).
+SteadyState steadyState(const Model& model, const OperatingCondition& condition, const TrimOptions& opt = {});
+
+/// The trimmed point at `wind_speed` [m/s]. Needs aerodynamics, a rotating coordinate and a generator
+/// torque law (ServoDyn VSContrl = 1). Throws ComputeError saying what was tried when no balance exists
+/// (wind too low to turn the rotor, rated power not reachable below the maximum pitch).
+SteadyState trimAtWindSpeed(const Model& model, double wind_speed, const TrimOptions& opt = {});
+
+/// The sweep point of a trimmed point: its rotor speed [rpm], wind speed and pitch [deg] as labels,
+/// and its condition.
+SweepPoint sweepPointOf(const SteadyState& t);
+
+/// The trimmed sweep points at the wind speeds START:STEP:STOP of `spec` (the `--wind` option).
+std::vector<SweepPoint> trimmedPoints(const Model& model, const std::string& spec, const TrimOptions& opt = {});
+
+}  // namespace whirl

@@ -1,0 +1,152 @@
+// `whirl steady`: the steady performance table of an aeroelastic model along the wind, trimmed
+// (--wind) or at a schedule's rotor speeds and pitches (--schedule).
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <numbers>
+
+#include "linearize/trim.hpp"
+#include "src/cli/commands.hpp"
+#include "src/cli/common.hpp"
+#include "src/io/atomic_file.hpp"
+#include "src/io/csv.hpp"
+#include "src/io/gnuplot.hpp"
+#include "src/io/schedule.hpp"
+#include "src/io/staged_files.hpp"
+#include "src/model/error.hpp"
+
+namespace whirl::cli {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+struct SteadyOptions {
+  ModelOptions model;
+  std::string wind_range, schedule, out;
+  int azimuths = 3;
+  bool no_plot = false;
+};
+
+struct Row {
+  SteadyState s;
+  double cp = 0, ct = 0, tsr = 0;
+};
+
+Row rowOf(const Model& m, const SteadyState& s) {
+  Row r{s};
+  const double U = *s.condition.wind_speed, R = m.aero.rotor_radius, rho = m.aero.air_density;
+  const double area = kPi * R * R, omega = s.condition.rotor_speed;
+  r.cp = s.aero_torque * omega / (0.5 * rho * area * U * U * U);
+  r.ct = s.thrust / (0.5 * rho * area * U * U);
+  r.tsr = omega * R / U;
+  return r;
+}
+
+std::string csvOf(const Model& m, const std::vector<Row>& rows) {
+  std::string t =
+      "wind_speed_m_s,rotor_speed_rpm,pitch_deg,aero_power_kw,generator_power_kw,aero_torque_knm,thrust_kn,cp,ct,"
+      "tsr,tip_deflection_m,tower_top_fa_m,generator_torque_knm,region\n";
+  const double eff = m.generator.active() ? m.generator.efficiency : 1.0;
+  for (const Row& r : rows) {
+    const SteadyState& s = r.s;
+    const double omega = s.condition.rotor_speed;
+    const std::string region = !m.generator.active() ? "given" : s.above_rated ? "above rated" : "below rated";
+    for (double v : {*s.condition.wind_speed, omega * 30 / kPi, s.condition.collective_pitch.value_or(0) * 180 / kPi,
+                     s.aero_torque * omega / 1e3, s.generator_torque * s.generator_speed * eff / 1e3,
+                     s.aero_torque / 1e3, s.thrust / 1e3, r.cp, r.ct, r.tsr, s.tip_deflection, s.tower_top_fa,
+                     s.generator_torque / 1e3})
+      t += formatNumber(v) + ",";
+    t += region + "\n";
+  }
+  return t;
+}
+
+std::string scriptOf(const std::string& title) {
+  return "# Steady operating points written by whirl: gnuplot steady.gp (from this folder)\n"
+         "if (!exists('png_out')) png_out = 'steady.png'\n"
+         "if (!exists('svg_out')) svg_out = 'steady.svg'\n"
+         "set datafile separator ','\n"
+         "set key autotitle columnhead noenhanced top left\n"
+         "set grid\n"
+         "set xlabel 'Wind speed [m/s]' noenhanced\n"
+         "do for [out = 1:2] {\n"
+         "  if (out == 1) { set terminal pngcairo size 1200,900 noenhanced; set output png_out }\n"
+         "  else { set terminal svg size 1200,900 noenhanced; set output svg_out }\n"
+         "  set multiplot layout 2,2 title " + gnuplotQuoted(title) + "\n"
+         "  set ylabel 'Rotor speed [rpm], pitch [deg]'\n"
+         "  plot 'steady.csv' using 1:2 with linespoints, '' using 1:3 with linespoints\n"
+         "  set ylabel 'Power [kW]'\n"
+         "  plot 'steady.csv' using 1:4 with linespoints, '' using 1:5 with linespoints\n"
+         "  set ylabel 'Thrust [kN]'\n"
+         "  plot 'steady.csv' using 1:7 with linespoints\n"
+         "  set ylabel 'Cp, Ct [-]'\n"
+         "  plot 'steady.csv' using 1:8 with linespoints, '' using 1:9 with linespoints\n"
+         "  unset multiplot\n"
+         "}\n";
+}
+
+void run(const SteadyOptions& opt) {
+  if (opt.wind_range.empty() == opt.schedule.empty())
+    throw InputError("steady: give exactly one of --wind START:STEP:STOP and --schedule FILE");
+  const Model m = loadModel(opt.model);
+  if (!m.aero.active())
+    throw InputError(opt.model.case_path + ": the model has no aerodynamics (an OpenFAST deck with CompAero = 2)");
+  const std::string dir = opt.out.empty() ? defaultOutputFolder(opt.model.case_path) : opt.out;
+  ensureWritableFolder(dir);
+  TrimOptions trim;
+  trim.azimuths = opt.azimuths;
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<Row> rows;
+  if (!opt.wind_range.empty()) {
+    for (double w : parseRange(opt.wind_range, "--wind")) rows.push_back(rowOf(m, trimAtWindSpeed(m, w, trim)));
+  } else {
+    for (const SweepPoint& p : readSchedule(opt.schedule)) {
+      if (!p.wind_speed) throw InputError(opt.schedule + ": the schedule has no wind speed column");
+      OperatingCondition c = sweepCondition(m, p);
+      rows.push_back(rowOf(m, steadyState(m, c, trim)));
+    }
+  }
+  StagedFiles files;
+  const std::filesystem::path folder(dir);
+  files.write((folder / "steady.csv").string(), csvOf(m, rows));
+  files.write((folder / "steady.gp").string(), scriptOf("Steady operating points: " + m.name.substr(0, 60)));
+  files.commit();
+  std::vector<std::string> written = files.paths();
+  if (!opt.no_plot)
+    for (auto& image : renderGnuplot(dir, "gnuplot", "steady")) written.push_back(std::move(image));
+  std::printf("%8s %9s %8s %10s %10s %9s %7s %7s %6s\n", "wind", "rpm", "pitch", "P_aero kW", "P_gen kW", "T kN", "Cp",
+              "Ct", "TSR");
+  const double eff = m.generator.active() ? m.generator.efficiency : 1.0;
+  for (const Row& r : rows) {
+    const SteadyState& s = r.s;
+    std::printf("%8.2f %9.4f %8.4f %10.1f %10.1f %9.2f %7.4f %7.4f %6.3f\n", *s.condition.wind_speed,
+                s.condition.rotor_speed * 30 / kPi, s.condition.collective_pitch.value_or(0) * 180 / kPi,
+                s.aero_torque * s.condition.rotor_speed / 1e3, s.generator_torque * s.generator_speed * eff / 1e3,
+                s.thrust / 1e3, r.cp, r.ct, r.tsr);
+  }
+  std::printf("wrote");
+  for (const auto& f : written) std::printf(" %s", f.c_str());
+  std::printf("\n%zu operating points, %.2f s\n", rows.size(),
+              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+}
+
+}  // namespace
+
+void addSteadyCommand(CLI::App& app) {
+  auto opt = std::make_shared<SteadyOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "steady",
+      "Steady operating points of an aeroelastic model: trimmed along the wind (rotor speed below rated, pitch "
+      "above) or at a schedule; writes steady.csv (power, torque, thrust, Cp, Ct, TSR, deflections) and a plot");
+  addModelOptions(*cmd, opt->model, false);
+  cmd->add_option("--wind", opt->wind_range, "wind speeds START:STEP:STOP [m/s], trimmed");
+  cmd->add_option("--schedule", opt->schedule, "operating schedule CSV (WindSpeed, RotSpeed, BldPitch columns)");
+  cmd->add_option("--azimuths", opt->azimuths, "equilibria per point, over one blade passage")->check(CLI::Range(1, 360));
+  cmd->add_option("--out", opt->out, "output folder (default reports/<case name>)");
+  cmd->add_flag("--no-plot", opt->no_plot, "write the table and the Gnuplot script, do not run Gnuplot");
+  cmd->callback([opt]() { run(*opt); });
+}
+
+}  // namespace whirl::cli
