@@ -1,58 +1,16 @@
 #include "modal/campbell_sweep.hpp"
 
-#include <cmath>
-#include <numbers>
-#include <regex>
-
 #include "linearize/periodic.hpp"
 #include "modal/campbell_serialize.hpp"
 #include "modal/rotor_modes.hpp"
-#include "src/parallel/parallel_map.hpp"
-#include "src/model/error.hpp"
 
 namespace whirl {
 
-std::vector<SweepPoint> rpmRange(const std::string& spec) {
-  static const std::regex re(R"(\s*([-+0-9.eE]+)\s*:\s*([-+0-9.eE]+)\s*:\s*([-+0-9.eE]+)\s*)");
-  std::smatch mt;
-  if (!std::regex_match(spec, mt, re)) throw InputError("--rpm: expected START:STEP:STOP, got '" + spec + "'");
-  double a, s, b;
-  try {
-    a = std::stod(mt[1]);
-    s = std::stod(mt[2]);
-    b = std::stod(mt[3]);
-  } catch (const std::exception&) {
-    throw InputError("--rpm: not a number in '" + spec + "'");
-  }
-  if (!(s > 0) || !(b >= a) || !std::isfinite(a) || !std::isfinite(b))
-    throw InputError("--rpm: need STEP > 0 and STOP >= START in '" + spec + "'");
-  const int n = static_cast<int>(std::floor((b - a) / s + 1e-9)) + 1;
-  if (n > 100000) throw InputError("--rpm: more than 100000 points in '" + spec + "'");
-  std::vector<SweepPoint> pts(n);
-  for (int k = 0; k < n; ++k) pts[k].rpm = a + k * s;
-  return pts;
-}
-
-int setCollectivePitch(Model& m, double pitch_deg) {
-  int count = 0;
-  static const std::regex re(R"(blade \d+ pitch)");
-  for (auto& d : m.dofs)
-    if (std::regex_match(d.name, re)) {
-      d.value = pitch_deg * std::numbers::pi / 180;
-      ++count;
-    }
-  return count;
-}
-
-CampbellPoint campbellPoint(const Model& base, const SweepPoint& point, const SweepOptions& opt) {
-  Model m = base;
-  const double omega = point.rpm * 2 * std::numbers::pi / 60;
-  for (auto& d : m.dofs)
-    if (d.rotating) d.rate = omega;
-  if (point.pitch_deg) setCollectivePitch(m, *point.pitch_deg);
+CampbellPoint campbellPoint(const Model& m, const SweepPoint& point, const OperatingPoint& start,
+                            const SweepOptions& opt) {
   PeriodicOptions popt;
   popt.azimuths = opt.azimuths;
-  const PeriodicLinearization p = linearizePeriodic(m, initialPoint(m), popt);
+  const PeriodicLinearization p = linearizePeriodic(m, start, popt);
   RotorModes r = rotorModes(m, p);
   CampbellPoint cp;
   cp.rpm = point.rpm;
@@ -63,13 +21,23 @@ CampbellPoint campbellPoint(const Model& base, const SweepPoint& point, const Sw
   return cp;
 }
 
-std::vector<CampbellPoint> campbellSweep(const Model& base, const std::vector<SweepPoint>& points,
+CampbellPoint campbellPoint(const Model& m, const SweepPoint& point, const SweepOptions& opt) {
+  return campbellPoint(m, point, initialPoint(m, sweepCondition(m, point)), opt);
+}
+
+std::vector<CampbellPoint> campbellSweep(int sets, const std::function<const Model&(int)>& model_of,
+                                         const std::vector<SweepPoint>& points, const SweepOptions& opt) {
+  return sweepOperatingPoints<CampbellPoint>(
+      sets, model_of, points,
+      [&](const Model& m, const SweepPoint& point, const OperatingPoint& start) {
+        return campbellPoint(m, point, start, opt);
+      },
+      encodeCampbellPoint, decodeCampbellPoint, opt);
+}
+
+std::vector<CampbellPoint> campbellSweep(const Model& m, const std::vector<SweepPoint>& points,
                                          const SweepOptions& opt) {
-  parallel::MapOptions map;
-  map.progress = opt.progress;
-  return parallel::parallelMap<CampbellPoint>(
-      static_cast<int>(points.size()), [&](int k) { return campbellPoint(base, points[k], opt); },
-      encodeCampbellPoint, decodeCampbellPoint, map);
+  return campbellSweep(1, [&](int) -> const Model& { return m; }, points, opt);
 }
 
 }  // namespace whirl

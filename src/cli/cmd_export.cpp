@@ -6,9 +6,8 @@
 
 #include "linearize/export_point.hpp"
 #include "linearize/export_serialize.hpp"
-#include "linearize/periodic.hpp"
+#include "linearize/sweep.hpp"
 #include "linearize/state_space.hpp"
-#include "modal/campbell_sweep.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/common.hpp"
 #include "src/io/atomic_file.hpp"
@@ -16,7 +15,6 @@
 #include "src/io/staged_files.hpp"
 #include "src/io/state_space_files.hpp"
 #include "src/model/error.hpp"
-#include "src/parallel/parallel_map.hpp"
 #include "src/parallel/session.hpp"
 
 namespace whirl::cli {
@@ -54,20 +52,12 @@ void checkNames(const Model& m, const std::vector<std::string>& inputs, const st
     if (!m.findOutput(n)) throw InputError("--outputs: unknown output '" + n + "' (outputs: " + list(m.outputs) + ")");
 }
 
-// f(), its errors naming the schedule row (whichever rank runs it, the user sees which point failed).
-template <class F>
-ExportPoint onSchedulePoint(const std::string& schedule, int k, const SweepPoint& sp, F&& f) {
-  if (schedule.empty()) return f();
+// "<schedule>: operating point <k> (<rpm> rpm): ", what an error at schedule row k starts with
+// (whichever rank runs it, the user sees which point failed).
+std::string scheduleContext(const std::string& schedule, int k, const SweepPoint& sp) {
   char rpm[32];
   std::snprintf(rpm, sizeof rpm, "%g", sp.rpm);
-  const std::string at = schedule + ": operating point " + std::to_string(k + 1) + " (" + rpm + " rpm): ";
-  try {
-    return f();
-  } catch (const InputError& e) {
-    throw InputError(at + e.what());
-  } catch (const ComputeError& e) {
-    throw ComputeError(at + e.what());
-  }
+  return schedule + ": operating point " + std::to_string(k + 1) + " (" + rpm + " rpm): ";
 }
 
 void run(const CliOptions& opt) {
@@ -81,10 +71,12 @@ void run(const CliOptions& opt) {
   std::vector<SweepPoint> points;
   if (!opt.schedule.empty()) {
     points = readSchedule(opt.schedule);
+    if (base.roles.azimuth.empty())
+      throw InputError("--rpm: the model has no rotating DOF (mark the azimuth with `rotating: true`)");
   } else {
-    SweepPoint p;
-    const int az = findAzimuthDof(base);
-    p.rpm = az >= 0 ? base.dofs[az].rate * 30 / std::numbers::pi : 0.0;
+    SweepPoint p;  // the model's own rotor speed, or --rpm
+    p.condition = operatingCondition(base, opt.model);
+    p.rpm = p.condition.rotor_speed * 30 / std::numbers::pi;
     points.push_back(p);
   }
   StateSpaceExport e;
@@ -95,23 +87,19 @@ void run(const CliOptions& opt) {
   eo.inputs = in;
   eo.outputs = out;
   eo.drop_azimuth = opt.drop_azimuth;
-  // One task per operating point, spread over the ranks under mpirun. Each point starts from the
-  // model's own initial point, never from its neighbour's equilibrium: the result then depends on
-  // the point alone, so K ranks write the same bytes as one process.
+  // One task per operating point, spread over the ranks under mpirun (linearize/sweep.hpp). Each point
+  // starts from the model's own initial point at the point's condition, never from its neighbour's
+  // equilibrium: the result then depends on the point alone, so K ranks write the same bytes as one process.
   if (parallel::launchedByMpi()) parallel::requirePetsc("mpirun");  // start-up before the progress clock
-  parallel::MapOptions map;
-  map.progress = sweepProgress("export");
-  e.points = parallel::parallelMap<ExportPoint>(
-      static_cast<int>(points.size()),
-      [&](int k) {
-        const SweepPoint& sp = points[k];
-        Model m = base;
-        if (!opt.schedule.empty()) {
-          setRotorSpeed(m, sp.rpm);
-          if (sp.pitch_deg) setCollectivePitch(m, *sp.pitch_deg);
-        }
-        ExportPoint p =
-            onSchedulePoint(opt.schedule, k, sp, [&] { return exportOperatingPoint(m, initialPoint(m), eo); });
+  SweepOptions sweep;
+  sweep.azimuths = opt.azimuths;
+  sweep.progress = sweepProgress("export");
+  if (!opt.schedule.empty())
+    sweep.context = [&](int k) { return scheduleContext(opt.schedule, k, points[static_cast<size_t>(k)]); };
+  e.points = sweepOperatingPoints<ExportPoint>(
+      base, points,
+      [&](const Model& m, const SweepPoint& sp, const OperatingPoint& start) {
+        ExportPoint p = exportOperatingPoint(m, start, eo);
         p.rpm = sp.rpm;
         p.wind_speed = sp.wind_speed;
         p.pitch_deg = sp.pitch_deg;
@@ -119,7 +107,7 @@ void run(const CliOptions& opt) {
         for (auto& s : p.azimuths) s.wind_speed = sp.wind_speed;
         return p;
       },
-      encodeExportPoint, decodeExportPoint, map);
+      encodeExportPoint, decodeExportPoint, sweep);
   if (parallel::rank() != 0) return;  // under mpirun: rank 0 writes
 
   StagedFiles files;

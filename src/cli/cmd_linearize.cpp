@@ -30,7 +30,7 @@ nlohmann::json namedValues(const Model& m, const VecX& v) {
 
 void run(const LinearizeOptions& opt) {
   const Model m = loadModel(opt.model);
-  const OperatingPoint op = solveOperatingPoint(m, initialPoint(m));
+  const OperatingPoint op = solveOperatingPoint(m, startPoint(m, opt.model));
   const LinearModel lin = linearize(m, op);
   const std::string dir = opt.out.empty() ? defaultOutputFolder(opt.model.case_path) : opt.out;
   ensureWritableFolder(dir);

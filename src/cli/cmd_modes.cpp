@@ -40,7 +40,7 @@ void run(const ModesOptions& opt) {
     // A rotor: periodic operating point over the revolution, multiblade coordinates.
     PeriodicOptions p;
     p.azimuths = opt.azimuths;
-    const PeriodicLinearization lin = linearizePeriodic(m, initialPoint(m), p);
+    const PeriodicLinearization lin = linearizePeriodic(m, startPoint(m, opt.model), p);
     const RotorModes r = rotorModes(m, lin);
     header["rotor_speed_rpm"] = lin.rotor_speed * 30 / 3.141592653589793;
     header["azimuths"] = opt.azimuths;
@@ -48,7 +48,7 @@ void run(const ModesOptions& opt) {
     printModes(r.modes, r.coordinates, opt.format, header);
     return;
   }
-  const LinearModel lin = linearize(m, solveOperatingPoint(m, initialPoint(m)));
+  const LinearModel lin = linearize(m, solveOperatingPoint(m, startPoint(m, opt.model)));
   const int n = static_cast<int>(lin.M.rows());
   if (!useSparseSolver(opt.solver, n)) {
     printModes(computeModes(lin.M, lin.C, lin.K, lin.dof_names), lin.dof_names, opt.format, header);

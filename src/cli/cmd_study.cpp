@@ -5,7 +5,6 @@
 #include <map>
 
 #include "modal/campbell_output.hpp"
-#include "modal/campbell_serialize.hpp"
 #include "modal/campbell_sweep.hpp"
 #include "modal/tracking.hpp"
 #include "src/cli/commands.hpp"
@@ -14,7 +13,6 @@
 #include "src/io/csv.hpp"
 #include "src/io/schedule.hpp"
 #include "src/model/error.hpp"
-#include "src/parallel/parallel_map.hpp"
 #include "src/parallel/session.hpp"
 
 namespace whirl::cli {
@@ -55,16 +53,15 @@ void run(const StudyOptions& opt) {
   const size_t S = sets.rows.size(), P = points.size();
   SweepOptions sweep;
   sweep.azimuths = opt.azimuths;
-  std::map<size_t, Model> models;  // this rank's models, built when its first point of a set comes
-  const std::vector<CampbellPoint> all = parallel::parallelMap<CampbellPoint>(
-      static_cast<int>(S * P),
-      [&](int k) {
-        const size_t s = static_cast<size_t>(k) / P;
+  std::map<int, Model> models;  // this rank's models, built when its first point of a set comes
+  const std::vector<CampbellPoint> all = campbellSweep(
+      static_cast<int>(S),
+      [&](int s) -> const Model& {
         auto it = models.find(s);
-        if (it == models.end()) it = models.emplace(s, loadSet(opt, sets, s)).first;
-        return campbellPoint(it->second, points[static_cast<size_t>(k) % P], sweep);
+        if (it == models.end()) it = models.emplace(s, loadSet(opt, sets, static_cast<size_t>(s))).first;
+        return it->second;
       },
-      encodeCampbellPoint, decodeCampbellPoint);
+      points, sweep);
   if (parallel::rank() != 0) return;
 
   // Each set is its own Campbell diagram: tracked on its own, its rows prefixed by the set.

@@ -5,7 +5,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
-#include <numbers>
 
 #include "src/io/case_file.hpp"
 #include "src/model/elastodyn_model.hpp"
@@ -22,14 +21,18 @@ void addModelOptions(CLI::App& cmd, ModelOptions& opt, bool with_rpm) {
   if (with_rpm) cmd.add_option("--rpm", opt.rpm, "rotor speed [rpm]: the rate of every DOF marked rotating");
 }
 
-void setRotorSpeed(Model& m, double rpm) {
-  bool any = false;
-  for (auto& d : m.dofs)
-    if (d.rotating) {
-      d.rate = rpm * 2 * std::numbers::pi / 60;
-      any = true;
-    }
-  if (!any) throw InputError("--rpm: the model has no rotating DOF (mark the azimuth with `rotating: true`)");
+OperatingCondition operatingCondition(const Model& m, const ModelOptions& opt) {
+  OperatingCondition c = modelCondition(m);
+  if (opt.rpm) {
+    if (m.roles.azimuth.empty())
+      throw InputError("--rpm: the model has no rotating DOF (mark the azimuth with `rotating: true`)");
+    c.rotor_speed = rpmToRadPerSec(*opt.rpm);
+  }
+  return c;
+}
+
+OperatingPoint startPoint(const Model& m, const ModelOptions& opt) {
+  return opt.rpm ? initialPoint(m, operatingCondition(m, opt)) : initialPoint(m);
 }
 
 bool isYamlCase(const std::string& path) {
@@ -46,7 +49,6 @@ Model loadModel(const ModelOptions& opt) {
   } else {
     m = readElastoDynModel(opt.case_path, opt.sets);
   }
-  if (opt.rpm) setRotorSpeed(m, *opt.rpm);
   return m;
 }
 

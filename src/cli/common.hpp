@@ -7,7 +7,9 @@
 #include <string>
 #include <vector>
 
+#include "linearize/operating_point.hpp"
 #include "src/model/model.hpp"
+#include "src/model/operating_condition.hpp"
 
 namespace CLI {
 class App;
@@ -25,15 +27,21 @@ struct ModelOptions {
 /// Registers CASE, --set and (when with_rpm) --rpm on a subcommand.
 void addModelOptions(CLI::App& cmd, ModelOptions& opt, bool with_rpm = true);
 
-/// Loads the case — a YAML case file (.yaml, .yml), or an OpenFAST .fst / ElastoDyn .dat — applies
-/// --set, then --rpm to every rotating coordinate.
+/// Loads the case — a YAML case file (.yaml, .yml), or an OpenFAST .fst / ElastoDyn .dat — with
+/// --set applied before the model is built. --rpm does not change the model: see operatingCondition.
 Model loadModel(const ModelOptions& opt);
 
 /// True for a YAML case path (.yaml, .yml), false for OpenFAST / ElastoDyn files.
 bool isYamlCase(const std::string& path);
 
-/// Sets the rate of every rotating coordinate to rpm; InputError when the model has none.
-void setRotorSpeed(Model& model, double rpm);
+/// The operating condition of a single-point command: the model's own (modelCondition), with the
+/// rotor speed of --rpm when given (InputError "--rpm: the model has no rotating DOF …" when the
+/// model has none).
+OperatingCondition operatingCondition(const Model& model, const ModelOptions& opt);
+
+/// Where a single-point command starts: the model's initial point, or, with --rpm, the model at
+/// operatingCondition(model, opt).
+OperatingPoint startPoint(const Model& model, const ModelOptions& opt);
 
 /// Progress of a sweep for MapOptions::progress, on stderr: "<command>: 3/10 operating points (1.2 s)"
 /// (under mpirun: rank 0's share, "on rank 0 of K"). Sweeps shorter than a second stay quiet; the

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <optional>
 
 #include "src/io/csv_table.hpp"
 #include "src/model/error.hpp"
@@ -33,12 +34,12 @@ std::vector<SweepPoint> readSchedule(const std::string& path) {
       findColumn(t, [](const std::string& n) { return n.rfind("bldpitch", 0) == 0 || n.rfind("pitch", 0) == 0; });
   std::vector<SweepPoint> pts;
   for (size_t r = 0; r < t.columns[rpm].size(); ++r) {
-    SweepPoint p;
-    p.rpm = t.columns[rpm][r];
-    if (p.rpm < 0) throw InputError(where(path, t.row_lines[r], t.names[rpm], "negative rotor speed"));
-    if (ws >= 0) p.wind_speed = t.columns[ws][r];
-    if (pitch >= 0) p.pitch_deg = t.columns[pitch][r];
-    pts.push_back(p);
+    const double speed = t.columns[rpm][r];
+    if (speed < 0) throw InputError(where(path, t.row_lines[r], t.names[rpm], "negative rotor speed"));
+    std::optional<double> wind, pitch_deg;
+    if (ws >= 0) wind = t.columns[ws][r];
+    if (pitch >= 0) pitch_deg = t.columns[pitch][r];
+    pts.push_back(sweepPoint(speed, wind, pitch_deg));
   }
   if (pts.empty()) throw InputError(where(path, 0, "", "the schedule has no rows"));
   return pts;

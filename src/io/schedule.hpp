@@ -7,11 +7,12 @@
 #include <string>
 #include <vector>
 
-#include "modal/campbell_sweep.hpp"
+#include "linearize/sweep.hpp"
 
 namespace whirl {
 
-/// InputError naming the file (and line) when it cannot be read or has no rotor-speed column.
+/// One sweepPoint(rpm, wind speed, pitch) per row. InputError naming the file (and line) when it
+/// cannot be read or has no rotor-speed column.
 std::vector<SweepPoint> readSchedule(const std::string& path);
 
 }  // namespace whirl

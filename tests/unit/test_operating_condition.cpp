@@ -8,6 +8,7 @@
 
 #include "case_file_test_util.hpp"
 #include "linearize/operating_point.hpp"
+#include "linearize/sweep.hpp"
 #include "state_space_test_util.hpp"
 
 namespace whirl {
@@ -64,6 +65,11 @@ TEST(OperatingCondition, EachFieldSetsItsCoordinateOrInput) {
     EXPECT_EQ(m.dofs[i].value, before.dofs[i].value);
     EXPECT_EQ(m.dofs[i].rate, before.dofs[i].rate);
   }
+  // Pitch from a schedule's degrees, as the old per-point model copy set it.
+  const SweepPoint p = sweepPoint(9, 11.4, 6.5);
+  EXPECT_EQ(initialPoint(m, sweepCondition(m, p)).q(r.blade_pitch[1]), 6.5 * std::numbers::pi / 180);
+  EXPECT_EQ(p.condition.rotor_speed, 9 * 2 * std::numbers::pi / 60);
+  EXPECT_FALSE(sweepCondition(m, p).wind_speed);  // no wind input: the wind speed only labels the point
 }
 
 TEST(OperatingCondition, FieldsTheModelCannotHonourAreNamed) {
@@ -97,6 +103,15 @@ TEST(OperatingCondition, FieldsTheModelCannotHonourAreNamed) {
   spin.rotor_speed = 1.0;
   EXPECT_NE(inputErrorOf([&] { initialPoint(fixed, spin); }).find("rotor_speed"), std::string::npos);
   EXPECT_EQ(initialPoint(fixed, OperatingCondition{}).qd, initialPoint(fixed).qd);
+
+  // A schedule's pitch reaches a model only where it has pitch coordinates (as before conditions);
+  // set explicitly, it is an error.
+  SweepPoint scheduled = sweepPoint(12.1, 11.4, 6.5);
+  EXPECT_FALSE(sweepCondition(tower, scheduled).collective_pitch);
+  EXPECT_EQ(*sweepCondition(m, scheduled).collective_pitch, 6.5 * std::numbers::pi / 180);
+  scheduled.condition.collective_pitch = 0.1;
+  EXPECT_NE(inputErrorOf([&] { initialPoint(tower, sweepCondition(tower, scheduled)); }).find("collective_pitch"),
+            std::string::npos);
 }
 
 // A YAML rotor gives its pitch roles by structure: blade inputs that drive one frozen angle each,

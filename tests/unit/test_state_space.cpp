@@ -25,9 +25,11 @@ constexpr double kDeg = std::numbers::pi / 180;
 // Q's pitch columns are ∂e/∂q_pitch (chain rule through the frozen pitch joint): central differences
 // of the residual on the pitch coordinate, h = 1e-5 rad (truncation ~h² ≈ 1e-10 relative).
 TEST(StateSpace, PitchInputIsTheDerivativeThroughThePitchJoint) {
-  Model m = nrel5mw();
-  ASSERT_EQ(setCollectivePitch(m, 5.0), 3);
-  const OperatingPoint op = solveOperatingPoint(m, initialPoint(m));
+  const Model m = nrel5mw();
+  ASSERT_EQ(m.roles.blade_pitch.size(), 3u);
+  OperatingCondition at = modelCondition(m);
+  at.collective_pitch = 5.0 * std::numbers::pi / 180;
+  const OperatingPoint op = solveOperatingPoint(m, at);
   const LinearModel lin = linearize(m, op);
   const int coll = *m.findInput("collective pitch");
   VecX sum = VecX::Zero(lin.Q.rows());
@@ -57,9 +59,10 @@ TEST(StateSpace, PitchInputIsTheDerivativeThroughThePitchJoint) {
 // C and D against central differences of y(q, q̇, q̈(q, q̇, u)) with q̈ from the nonlinear equations
 // of motion: the q̈-dependent outputs (accelerations) must carry the M⁻¹ K, M⁻¹ C, M⁻¹ Q terms.
 TEST(StateSpace, OutputMatricesMatchDifferencesThroughTheEquationsOfMotion) {
-  Model m = nrel5mw();
-  setCollectivePitch(m, 3.0);
-  const OperatingPoint op = solveOperatingPoint(m, initialPoint(m));
+  const Model m = nrel5mw();
+  OperatingCondition at = modelCondition(m);
+  at.collective_pitch = 3.0 * std::numbers::pi / 180;
+  const OperatingPoint op = solveOperatingPoint(m, at);
   const LinearModel lin = linearize(m, op);
   const StateSpaceModel s = stateSpace(m, op, lin);
   ASSERT_EQ(s.y.size(), m.outputs.size());
@@ -164,16 +167,16 @@ outputs:
 // same operating point puts the modes: |G(jω)| of tower-top acceleration per tower-top force peaks
 // at the tower FA 1 and SS 1 frequencies, generator speed per generator torque at the drivetrain mode.
 TEST(StateSpace, FrequencyResponsePeaksAtTheModalFrequencies) {
-  Model m = nrel5mw();
-  for (auto& d : m.dofs)
-    if (d.rotating) d.rate = 9 * std::numbers::pi / 30;
+  const Model m = nrel5mw();
+  OperatingCondition at;
+  at.rotor_speed = 9 * std::numbers::pi / 30;
   ExportOptions opt;
   opt.azimuths = 12;
-  const ExportPoint e = exportOperatingPoint(m, initialPoint(m), opt);
+  const ExportPoint e = exportOperatingPoint(m, at, opt);
   ASSERT_TRUE(e.model.multiblade);
   PeriodicOptions popt;
   popt.azimuths = 12;
-  const RotorModes r = rotorModes(m, linearizePeriodic(m, initialPoint(m), popt));
+  const RotorModes r = rotorModes(m, linearizePeriodic(m, at, popt));
   auto modeFreq = [&](const std::string& name) {
     for (const auto& md : r.modes)
       if (md.name == name) return md.freq_hz;

@@ -23,15 +23,15 @@ namespace whirl {
 namespace {
 
 StateSpaceExport rotorExport(int azimuths, double rpm = 9) {
-  Model m = testing::nrel5mw();
-  for (auto& d : m.dofs)
-    if (d.rotating) d.rate = rpm * std::numbers::pi / 30;
+  const Model m = testing::nrel5mw();
+  OperatingCondition at;
+  at.rotor_speed = rpm * std::numbers::pi / 30;
   ExportOptions opt;
   opt.azimuths = azimuths;
   StateSpaceExport e;
   e.source = testing::kNrel5mwFst;
   e.model_name = "NREL 5MW";
-  e.points.push_back(exportOperatingPoint(m, initialPoint(m), opt));
+  e.points.push_back(exportOperatingPoint(m, at, opt));
   e.points.back().rpm = rpm;
   return e;
 }
@@ -159,12 +159,12 @@ TEST(StateSpaceFiles, LinReadsBackWithTheSameMatricesAndModes) {
   EXPECT_LE((mbc.C - avg.C).cwiseAbs().maxCoeff(), 1e-9 * avg.C.cwiseAbs().maxCoeff());
   EXPECT_LE((mbc.D - avg.D).cwiseAbs().maxCoeff(), 1e-9 * avg.D.cwiseAbs().maxCoeff());
 
-  Model m = testing::nrel5mw();
-  for (auto& d : m.dofs)
-    if (d.rotating) d.rate = 9 * std::numbers::pi / 30;
+  const Model m = testing::nrel5mw();
+  OperatingCondition at;
+  at.rotor_speed = 9 * std::numbers::pi / 30;
   PeriodicOptions popt;
   popt.azimuths = 12;
-  const RotorModes own = rotorModes(m, linearizePeriodic(m, initialPoint(m), popt));
+  const RotorModes own = rotorModes(m, linearizePeriodic(m, at, popt));
   const Eigen::EigenSolver<MatX> es(mbc.A);
   std::vector<double> f;
   for (Eigen::Index i = 0; i < es.eigenvalues().size(); ++i)

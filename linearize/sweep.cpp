@@ -1,0 +1,48 @@
+#include "linearize/sweep.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <regex>
+
+namespace whirl {
+
+SweepPoint sweepPoint(double rpm, std::optional<double> wind_speed, std::optional<double> pitch_deg) {
+  SweepPoint p;
+  p.rpm = rpm;
+  p.wind_speed = wind_speed;
+  p.pitch_deg = pitch_deg;
+  p.condition.rotor_speed = rpmToRadPerSec(rpm);
+  return p;
+}
+
+std::vector<SweepPoint> rpmRange(const std::string& spec) {
+  static const std::regex re(R"(\s*([-+0-9.eE]+)\s*:\s*([-+0-9.eE]+)\s*:\s*([-+0-9.eE]+)\s*)");
+  std::smatch mt;
+  if (!std::regex_match(spec, mt, re)) throw InputError("--rpm: expected START:STEP:STOP, got '" + spec + "'");
+  double a, s, b;
+  try {
+    a = std::stod(mt[1]);
+    s = std::stod(mt[2]);
+    b = std::stod(mt[3]);
+  } catch (const std::exception&) {
+    throw InputError("--rpm: not a number in '" + spec + "'");
+  }
+  if (!(s > 0) || !(b >= a) || !std::isfinite(a) || !std::isfinite(b))
+    throw InputError("--rpm: need STEP > 0 and STOP >= START in '" + spec + "'");
+  const int n = static_cast<int>(std::floor((b - a) / s + 1e-9)) + 1;
+  if (n > 100000) throw InputError("--rpm: more than 100000 points in '" + spec + "'");
+  std::vector<SweepPoint> pts;
+  pts.reserve(static_cast<size_t>(n));
+  for (int k = 0; k < n; ++k) pts.push_back(sweepPoint(a + k * s));
+  return pts;
+}
+
+OperatingCondition sweepCondition(const Model& m, const SweepPoint& point) {
+  OperatingCondition c = point.condition;
+  if (point.wind_speed && !c.wind_speed && m.roles.wind_speed_input >= 0) c.wind_speed = point.wind_speed;
+  if (point.pitch_deg && !c.collective_pitch && !m.roles.blade_pitch.empty())
+    c.collective_pitch = *point.pitch_deg * std::numbers::pi / 180;
+  return c;
+}
+
+}  // namespace whirl

@@ -1,0 +1,98 @@
+#pragma once
+/// \file
+/// Sweeps over operating points — the one loop behind `whirl campbell`, `whirl export` and
+/// `whirl study`. A sweep is a built model (or one model per parameter set) and a list of
+/// operating points; at each point the model's starting point comes from the point's operating
+/// condition (initialPoint(model, condition), linearize/operating_point.hpp) — the model itself is
+/// never copied or changed — and a caller's function turns it into a result (a Campbell point, an
+/// exported state-space model). Tasks are spread over MPI ranks (src/parallel/parallel_map.hpp):
+/// each depends on its own point only, so K ranks give the bits of one process.
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "linearize/operating_point.hpp"
+#include "src/model/error.hpp"
+#include "src/model/model.hpp"
+#include "src/model/operating_condition.hpp"
+#include "src/parallel/parallel_map.hpp"
+
+namespace whirl {
+
+/// One operating point of a sweep: the condition the model is put at, with the values as the user
+/// gave them (reported in tables and files as given, not converted back from SI units).
+/// A schedule's wind speed and pitch label the point and reach the model through sweepCondition
+/// where the model has the role (a wind-speed input, blade pitch coordinates); a model without
+/// them ignores them, as whirl always has. Fields set in `condition` itself are strict: a model
+/// that cannot honour one stops with an InputError naming it (initialPoint).
+struct SweepPoint {
+  double rpm = 0;                    ///< rotor speed as given [rpm]
+  std::optional<double> wind_speed;  ///< wind speed as given [m/s] (a schedule's)
+  std::optional<double> pitch_deg;   ///< collective pitch as given [deg] (a schedule's)
+  OperatingCondition condition;      ///< rotor speed [rad/s], and whatever else is set explicitly
+};
+
+/// The point at `rpm` [rpm] (condition.rotor_speed = rpmToRadPerSec(rpm)) with a schedule's
+/// optional wind speed [m/s] and collective pitch [deg].
+SweepPoint sweepPoint(double rpm, std::optional<double> wind_speed = std::nullopt,
+                      std::optional<double> pitch_deg = std::nullopt);
+
+/// Points START:STEP:STOP (rpm), STOP included within round-off. InputError on a bad range.
+std::vector<SweepPoint> rpmRange(const std::string& spec);
+
+struct SweepOptions {
+  int azimuths = 36;  ///< per revolution, for the periodic linearization of a rotating model
+  /// Called after each point with (points done, points total); used for progress on stderr.
+  /// Under mpirun: rank 0 only, counting its own share of the points.
+  std::function<void(int, int)> progress;
+  /// When set: an InputError or ComputeError at point p (its start or its computation, not the
+  /// model's construction) is re-thrown with context(p) in front of its message.
+  std::function<std::string(int)> context;
+};
+
+/// The condition `model` is put at for `point`: point.condition, plus (where the condition does not
+/// set them) point.wind_speed as the wind speed when the model has a wind-speed input
+/// (ModelRoles::wind_speed_input) and point.pitch_deg · π / 180 as the collective pitch when it has
+/// blade pitch coordinates (ModelRoles::blade_pitch).
+OperatingCondition sweepCondition(const Model& model, const SweepPoint& point);
+
+/// The sweep: task k = (set k / P, point k mod P) of sets × P tasks (P = points.size()) computes
+/// `compute(model_of(set), points[p], initialPoint(model_of(set), sweepCondition(...)))` → T.
+/// `model_of(set)` returns the set's model (built once, e.g. lazily per rank; a reference that stays
+/// valid). Results travel as `encode(T)` bytes, `decode(bytes)` → T, and come back in task order on
+/// rank 0 (an empty vector on the other ranks). Errors: parallel::parallelMap's (the lowest failing
+/// task's, on every rank).
+template <class T, class ModelOf, class Compute, class Encode, class Decode>
+std::vector<T> sweepOperatingPoints(int sets, ModelOf&& model_of, const std::vector<SweepPoint>& points,
+                                    Compute&& compute, Encode&& encode, Decode&& decode, const SweepOptions& opt) {
+  const int P = static_cast<int>(points.size());
+  parallel::MapOptions map;
+  map.progress = opt.progress;
+  return parallel::parallelMap<T>(
+      sets * P,
+      [&](int k) {
+        const Model& model = model_of(k / P);
+        const SweepPoint& point = points[static_cast<size_t>(k % P)];
+        auto run = [&]() -> T { return compute(model, point, initialPoint(model, sweepCondition(model, point))); };
+        if (!opt.context) return run();
+        try {
+          return run();
+        } catch (const InputError& e) {
+          throw InputError(opt.context(k % P) + e.what());
+        } catch (const ComputeError& e) {
+          throw ComputeError(opt.context(k % P) + e.what());
+        }
+      },
+      encode, decode, map);
+}
+
+/// One model: sweepOperatingPoints with a single set.
+template <class T, class Compute, class Encode, class Decode>
+std::vector<T> sweepOperatingPoints(const Model& model, const std::vector<SweepPoint>& points, Compute&& compute,
+                                    Encode&& encode, Decode&& decode, const SweepOptions& opt) {
+  return sweepOperatingPoints<T>(
+      1, [&](int) -> const Model& { return model; }, points, compute, encode, decode, opt);
+}
+
+}  // namespace whirl
