@@ -12,7 +12,6 @@ SweepPoint sweepPoint(double rpm, std::optional<double> wind_speed, std::optiona
   p.wind_speed = wind_speed;
   p.pitch_deg = pitch_deg;
   p.condition.rotor_speed = rpmToRadPerSec(rpm);
-  if (pitch_deg) p.condition.collective_pitch = *pitch_deg * std::numbers::pi / 180;
   return p;
 }
 
@@ -45,7 +44,9 @@ std::vector<SweepPoint> rpmRange(const std::string& spec) {
 
 OperatingCondition sweepCondition(const Model& m, const SweepPoint& point) {
   OperatingCondition c = point.condition;
-  if (point.wind_speed && m.roles.wind_speed_input >= 0) c.wind_speed = point.wind_speed;
+  if (point.wind_speed && !c.wind_speed && m.roles.wind_speed_input >= 0) c.wind_speed = point.wind_speed;
+  if (point.pitch_deg && !c.collective_pitch && !m.roles.blade_pitch.empty())
+    c.collective_pitch = *point.pitch_deg * std::numbers::pi / 180;
   return c;
 }
 

@@ -22,17 +22,19 @@ namespace whirl {
 
 /// One operating point of a sweep: the condition the model is put at, with the values as the user
 /// gave them (reported in tables and files as given, not converted back from SI units).
+/// A schedule's wind speed and pitch label the point and reach the model through sweepCondition
+/// where the model has the role (a wind-speed input, blade pitch coordinates); a model without
+/// them ignores them, as whirl always has. Fields set in `condition` itself are strict: a model
+/// that cannot honour one stops with an InputError naming it (initialPoint).
 struct SweepPoint {
   double rpm = 0;                    ///< rotor speed as given [rpm]
-  /// Wind speed [m/s] (a schedule's). It labels the point; it reaches the model (as
-  /// condition.wind_speed, see sweepCondition) only when the model has a wind-speed input.
-  std::optional<double> wind_speed;
-  std::optional<double> pitch_deg;   ///< collective pitch as given [deg]
-  OperatingCondition condition;      ///< rotor speed [rad/s], collective pitch [rad], …
+  std::optional<double> wind_speed;  ///< wind speed as given [m/s] (a schedule's)
+  std::optional<double> pitch_deg;   ///< collective pitch as given [deg] (a schedule's)
+  OperatingCondition condition;      ///< rotor speed [rad/s], and whatever else is set explicitly
 };
 
-/// The point at `rpm` [rpm] with optional wind speed [m/s] and collective pitch [deg]:
-/// condition.rotor_speed = rpmToRadPerSec(rpm), condition.collective_pitch = pitch_deg · π / 180.
+/// The point at `rpm` [rpm] (condition.rotor_speed = rpmToRadPerSec(rpm)) with a schedule's
+/// optional wind speed [m/s] and collective pitch [deg].
 SweepPoint sweepPoint(double rpm, std::optional<double> wind_speed = std::nullopt,
                       std::optional<double> pitch_deg = std::nullopt);
 
@@ -52,8 +54,10 @@ struct SweepOptions {
   std::function<std::string(int)> context;
 };
 
-/// The condition `model` is put at for `point`: point.condition, with point.wind_speed as the wind
-/// speed when the model has a wind-speed input (ModelRoles::wind_speed_input).
+/// The condition `model` is put at for `point`: point.condition, plus (where the condition does not
+/// set them) point.wind_speed as the wind speed when the model has a wind-speed input
+/// (ModelRoles::wind_speed_input) and point.pitch_deg · π / 180 as the collective pitch when it has
+/// blade pitch coordinates (ModelRoles::blade_pitch).
 OperatingCondition sweepCondition(const Model& model, const SweepPoint& point);
 
 /// The sweep: task k = (set k / P, point k mod P) of sets × P tasks (P = points.size()) computes

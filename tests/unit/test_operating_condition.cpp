@@ -103,6 +103,15 @@ TEST(OperatingCondition, FieldsTheModelCannotHonourAreNamed) {
   spin.rotor_speed = 1.0;
   EXPECT_NE(inputErrorOf([&] { initialPoint(fixed, spin); }).find("rotor_speed"), std::string::npos);
   EXPECT_EQ(initialPoint(fixed, OperatingCondition{}).qd, initialPoint(fixed).qd);
+
+  // A schedule's pitch reaches a model only where it has pitch coordinates (as before conditions);
+  // set explicitly, it is an error.
+  SweepPoint scheduled = sweepPoint(12.1, 11.4, 6.5);
+  EXPECT_FALSE(sweepCondition(tower, scheduled).collective_pitch);
+  EXPECT_EQ(*sweepCondition(m, scheduled).collective_pitch, 6.5 * std::numbers::pi / 180);
+  scheduled.condition.collective_pitch = 0.1;
+  EXPECT_NE(inputErrorOf([&] { initialPoint(tower, sweepCondition(tower, scheduled)); }).find("collective_pitch"),
+            std::string::npos);
 }
 
 // A YAML rotor gives its pitch roles by structure: blade inputs that drive one frozen angle each,
