@@ -1,7 +1,11 @@
 #!/usr/bin/env bash
-# The main job: installs what is missing, builds, and writes the NREL 5MW Campbell diagram
-# (0–15 rpm, 36 azimuths per speed, multiblade coordinates) under reports/nrel5mw/.
+# The main job: installs what is missing, builds, and writes the NREL 5MW Campbell diagrams under reports/:
+# - reports/nrel5mw/: structural, 0–15 rpm, 36 azimuths per speed, multiblade coordinates;
+# - reports/nrel5mw_aero/: aeroelastic (AeroDyn BEMT, frozen wake) along the wind, 3–25 m/s, each
+#   point trimmed (rotor speed below rated, pitch above), with the steady performance table.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/build.sh
 build/whirl campbell cases/nrel5mw/Main_Onshore.fst --rpm 0:0.5:15 --azimuths 36 --max-freq 3.2 --out reports/nrel5mw
+build/whirl steady cases/nrel5mw/Main_Aero.fst --wind 3:1:25 --out reports/nrel5mw_aero
+build/whirl campbell cases/nrel5mw/Main_Aero.fst --wind 3:1:25 --azimuths 36 --max-freq 3.2 --out reports/nrel5mw_aero

@@ -1,0 +1,46 @@
+// The aeroelastic commands end to end: steady (trimmed) and campbell along the wind on the NREL 5MW
+// aeroelastic deck; a broken aerodynamic input stops with the file and line.
+#include <gtest/gtest.h>
+
+#include "tests/cli/cli_support.hpp"
+
+namespace whirl::test {
+namespace {
+
+const std::string kAero = "cases/nrel5mw/Main_Aero.fst";
+
+TEST(CliAero, SteadyTrimsAndWritesTheTable) {
+  const auto dir = freshDir("aero_steady");
+  const Run r = whirl("steady " + kAero + " --wind 8:10:18 --no-plot --out '" + dir.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string csv = slurp(dir / "steady.csv");
+  EXPECT_EQ(csv.substr(0, csv.find('\n')),
+            "wind_speed_m_s,rotor_speed_rpm,pitch_deg,aero_power_kw,generator_power_kw,aero_torque_knm,thrust_kn,cp,ct,"
+            "tsr,tip_deflection_m,tower_top_fa_m,generator_torque_knm,region");
+  EXPECT_NE(csv.find(",below rated\n"), std::string::npos);
+  EXPECT_NE(csv.find(",above rated\n"), std::string::npos);
+}
+
+TEST(CliAero, CampbellAlongTheWind) {
+  const auto dir = freshDir("aero_campbell");
+  const Run r = whirl("campbell " + kAero + " --wind 8:4:12 --azimuths 8 --no-plot --out '" + dir.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string csv = slurp(dir / "campbell.csv");
+  EXPECT_NE(csv.find("flap 1 collective"), std::string::npos);
+  EXPECT_NE(csv.find(",8,"), std::string::npos);  // the wind-speed column is filled
+}
+
+TEST(CliAero, BrokenAirfoilListNamesTheFileAndLine) {
+  const Run r = whirl("modes " + kAero + " --set NumAFfiles=9");
+  EXPECT_NE(r.code, 0);
+  EXPECT_NE(r.err.find("AeroDyn.dat:"), std::string::npos) << r.err;
+}
+
+TEST(CliAero, SteadyNeedsAerodynamics) {
+  const Run r = whirl("steady cases/nrel5mw/Main_Onshore.fst --wind 8:1:8 --no-plot --out /tmp");
+  EXPECT_NE(r.code, 0);
+  EXPECT_NE(r.err.find("no aerodynamics"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace whirl::test
