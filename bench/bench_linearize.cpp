@@ -7,6 +7,7 @@
 
 #include "linearize/linearize.hpp"
 #include "linearize/periodic.hpp"
+#include "linearize/trim.hpp"
 #include "src/dynamics/residual.hpp"
 #include "modal/campbell_sweep.hpp"
 #include "src/io/case_file.hpp"
@@ -19,6 +20,7 @@ namespace {
 Model load(const std::string& name) {
   if (name == "rich_29dof") return test::richModel();
   if (name == "nrel5mw") return readElastoDynModel(std::string(WHIRL_SOURCE_DIR) + "/cases/nrel5mw/Main_Onshore.fst");
+  if (name == "nrel5mw_aero") return readElastoDynModel(std::string(WHIRL_SOURCE_DIR) + "/cases/nrel5mw/Main_Aero.fst");
   return readCase(std::string(WHIRL_SOURCE_DIR) + "/cases/" + name + "/" + name + ".yaml");
 }
 
@@ -57,6 +59,9 @@ WHIRL_CASE_BENCH(floating_3dof)
 WHIRL_CASE_BENCH(rotating_blade)
 WHIRL_CASE_BENCH(rich_29dof)
 WHIRL_CASE_BENCH(nrel5mw)
+// The 5MW with AeroDyn (19 elements × 3 blades, frozen wake), 10 rpm, 8 m/s; the residual is the
+// quasi-steady one (BEM solved at each of the 57 elements).
+WHIRL_CASE_BENCH(nrel5mw_aero)
 
 // One linearization per azimuth of the 5MW turning at 12 rpm (36 azimuths, each its own equilibrium),
 // as in a Campbell sweep: every call sees a new point, so nothing cached per point is reused.
@@ -93,6 +98,31 @@ void nrel5mwCampbell(benchmark::State& state) {
   state.counters["linearizations"] = 30 * 36 + 1;  // 0 rpm: one azimuth (parked)
 }
 BENCHMARK(nrel5mwCampbell)->Unit(benchmark::kMillisecond);
+
+// The aeroelastic Campbell diagram of the main command: 23 wind speeds (3–25 m/s), each trimmed (rotor
+// speed or pitch for the torque balance), then 36 azimuths of equilibrium (induction solved on the
+// deflected geometry) and frozen-wake linearization, multiblade average and eigenanalysis.
+void nrel5mwAeroCampbell(benchmark::State& state) {
+  const Model m = load("nrel5mw_aero");
+  SweepOptions opt;
+  opt.azimuths = 36;
+  for (auto _ : state) {
+    auto points = campbellSweep(m, trimmedPoints(m, "3:1:25"), opt);
+    benchmark::DoNotOptimize(points.data());
+  }
+  state.counters["linearizations"] = 23 * 36;
+}
+BENCHMARK(nrel5mwAeroCampbell)->Unit(benchmark::kMillisecond);
+
+// The trim alone (23 wind speeds).
+void nrel5mwAeroTrim(benchmark::State& state) {
+  const Model m = load("nrel5mw_aero");
+  for (auto _ : state) {
+    auto points = trimmedPoints(m, "3:1:25");
+    benchmark::DoNotOptimize(points.data());
+  }
+}
+BENCHMARK(nrel5mwAeroTrim)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace whirl

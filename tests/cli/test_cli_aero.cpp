@@ -11,7 +11,7 @@ const std::string kAero = "cases/nrel5mw/Main_Aero.fst";
 
 TEST(CliAero, SteadyTrimsAndWritesTheTable) {
   const auto dir = freshDir("aero_steady");
-  const Run r = whirl("steady " + kAero + " --wind 8:10:18 --no-plot --out '" + dir.string() + "'");
+  const auto r = whirl("steady " + kAero + " --wind 8:10:18 --no-plot --out '" + dir.string() + "'");
   ASSERT_EQ(r.code, 0) << r.err;
   const std::string csv = slurp(dir / "steady.csv");
   EXPECT_EQ(csv.substr(0, csv.find('\n')),
@@ -23,7 +23,7 @@ TEST(CliAero, SteadyTrimsAndWritesTheTable) {
 
 TEST(CliAero, CampbellAlongTheWind) {
   const auto dir = freshDir("aero_campbell");
-  const Run r = whirl("campbell " + kAero + " --wind 8:4:12 --azimuths 8 --no-plot --out '" + dir.string() + "'");
+  const auto r = whirl("campbell " + kAero + " --wind 8:4:12 --azimuths 8 --no-plot --out '" + dir.string() + "'");
   ASSERT_EQ(r.code, 0) << r.err;
   const std::string csv = slurp(dir / "campbell.csv");
   EXPECT_NE(csv.find("flap 1 collective"), std::string::npos);
@@ -31,13 +31,13 @@ TEST(CliAero, CampbellAlongTheWind) {
 }
 
 TEST(CliAero, BrokenAirfoilListNamesTheFileAndLine) {
-  const Run r = whirl("modes " + kAero + " --set NumAFfiles=9");
+  const auto r = whirl("modes " + kAero + " --set NumAFfiles=9");
   EXPECT_NE(r.code, 0);
   EXPECT_NE(r.err.find("AeroDyn.dat:"), std::string::npos) << r.err;
 }
 
 TEST(CliAero, SteadyNeedsAerodynamics) {
-  const Run r = whirl("steady cases/nrel5mw/Main_Onshore.fst --wind 8:1:8 --no-plot --out /tmp");
+  const auto r = whirl("steady cases/nrel5mw/Main_Onshore.fst --wind 8:1:8 --no-plot --out /tmp");
   EXPECT_NE(r.code, 0);
   EXPECT_NE(r.err.find("no aerodynamics"), std::string::npos) << r.err;
 }
