@@ -9,6 +9,7 @@
 #include "modal/rotor_modes.hpp"
 #include "src/parallel/parallel_map.hpp"
 #include "src/model/error.hpp"
+#include "src/model/limits.hpp"
 
 namespace whirl {
 
@@ -26,8 +27,13 @@ std::vector<SweepPoint> rpmRange(const std::string& spec) {
   }
   if (!(s > 0) || !(b >= a) || !std::isfinite(a) || !std::isfinite(b))
     throw InputError("--rpm: need STEP > 0 and STOP >= START in '" + spec + "'");
-  const int n = static_cast<int>(std::floor((b - a) / s + 1e-9)) + 1;
-  if (n > 100000) throw InputError("--rpm: more than 100000 points in '" + spec + "'");
+  if (a < 0) throw InputError("--rpm: negative rotor speed in '" + spec + "' (rotors turn in the positive sense, as in a schedule)");
+  // Count in double first: (b − a)/s can exceed the int range (0:1e-10:1).
+  const double count = std::floor((b - a) / s + 1e-9) + 1;
+  if (!(count <= limits::kMaxSweepPoints))
+    throw InputError("--rpm: more than " + std::to_string(limits::kMaxSweepPoints) + " points in '" + spec +
+                     "' (src/model/limits.hpp)");
+  const int n = static_cast<int>(count);
   std::vector<SweepPoint> pts(n);
   for (int k = 0; k < n; ++k) pts[k].rpm = a + k * s;
   return pts;

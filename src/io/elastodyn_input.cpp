@@ -3,6 +3,7 @@
 #include "src/io/elastodyn_common.hpp"
 #include "src/io/openfast_overrides.hpp"
 #include "src/model/error.hpp"
+#include "src/model/limits.hpp"
 
 namespace whirl::io {
 namespace {
@@ -192,6 +193,10 @@ ElastoDynInput read_elastodyn(const std::filesystem::path& file, OverrideSet* ov
   ed.TwrNodes = f.get_int("TwrNodes");
   require_positive(f, "TwrNodes", ed.TwrNodes);
   if (ed.BldNodes) require_positive(f, "BldNodes", *ed.BldNodes);
+  for (const char* key : {"TwrNodes", "BldNodes"})
+    if (const std::optional<int> n = f.find_int(key); n && *n > limits::kMaxElastoDynNodes)
+      throw InputError(f.where(key, "at most " + std::to_string(limits::kMaxElastoDynNodes) + " nodes (is " +
+                                        std::to_string(*n) + "; src/model/limits.hpp)"));
 
   ed.TwrFile = f.get_existing_path("TwrFile");
   ed.tower = read_elastodyn_tower(ed.TwrFile, overrides);

@@ -5,6 +5,7 @@
 
 #include "src/io/csv_table.hpp"
 #include "src/model/error.hpp"
+#include "src/model/limits.hpp"
 
 namespace whirl {
 namespace {
@@ -41,6 +42,9 @@ std::vector<SweepPoint> readSchedule(const std::string& path) {
     pts.push_back(p);
   }
   if (pts.empty()) throw InputError(where(path, 0, "", "the schedule has no rows"));
+  if (pts.size() > static_cast<size_t>(limits::kMaxSweepPoints))
+    throw InputError(where(path, t.row_lines[limits::kMaxSweepPoints], "",
+                           "more than " + std::to_string(limits::kMaxSweepPoints) + " rows (src/model/limits.hpp)"));
   return pts;
 }
 
