@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "modal/campbell.hpp"
+#include "linearize/operating_point.hpp"
 #include "src/model/model.hpp"
 
 namespace whirl {
@@ -24,6 +25,11 @@ struct SweepOptions {
   /// Called after each point with (points done, points total); used for progress on stderr.
   /// Under mpirun: rank 0 only, counting its own share of the points.
   std::function<void(int, int)> progress;
+  /// Called with each point's model and solved periodic operating points (the validity check of the
+  /// commands, linearize/point_validity.hpp); returns the problems to keep in the point's metadata,
+  /// or throws to stop the sweep.
+  std::function<std::vector<std::string>(const Model&, const std::vector<OperatingPoint>&, const SweepPoint&)>
+      check_point;
 };
 
 /// Points START:STEP:STOP (rpm), STOP included within round-off. InputError on a bad range.

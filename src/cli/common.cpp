@@ -7,7 +7,14 @@
 #include <memory>
 #include <numbers>
 
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "linearize/point_validity.hpp"
 #include "src/io/case_file.hpp"
+#include "src/model/text.hpp"
 #include "src/model/elastodyn_model.hpp"
 #include "src/model/error.hpp"
 #include "src/parallel/session.hpp"
@@ -20,9 +27,17 @@ void addModelOptions(CLI::App& cmd, ModelOptions& opt, bool with_rpm) {
                  "override KEY=VALUE (repeatable): a dotted path of the YAML case, or an OpenFAST key; "
                  "gravity=G for both");
   if (with_rpm) cmd.add_option("--rpm", opt.rpm, "rotor speed [rpm]: the rate of every DOF marked rotating");
+  cmd.add_flag("--allow-invalid-point", opt.allow_invalid_point,
+               "go on (with a warning) when the solved operating point leaves the model's range of validity "
+               "(deflection > 0.3 body length, elastic slope > 0.5 rad, residual not small)");
+  cmd.add_flag("--allow-outside-files", opt.allow_outside_files,
+               "let a YAML case's `file:` entries name files outside the case folder");
 }
 
 void setRotorSpeed(Model& m, double rpm) {
+  if (!std::isfinite(rpm) || rpm < 0)
+    throw InputError("--rpm: rotor speed must be finite and not negative (is " + fmt::format("{:g}", rpm) +
+                     "); whirl's rotors turn in the positive sense of their azimuth, as a schedule requires");
   bool any = false;
   for (auto& d : m.dofs)
     if (d.rotating) {
@@ -42,7 +57,7 @@ Model loadModel(const ModelOptions& opt) {
   if (isYamlCase(opt.case_path)) {
     std::vector<CaseOverride> overrides;
     for (const auto& s : opt.sets) overrides.push_back(parseOverride(s));
-    m = readCase(opt.case_path, overrides);
+    m = readCase(opt.case_path, overrides, nullptr, opt.allow_outside_files);
   } else {
     m = readElastoDynModel(opt.case_path, opt.sets);
   }
@@ -50,6 +65,33 @@ Model loadModel(const ModelOptions& opt) {
   requireActiveDof(m, opt.case_path);
   if (opt.rpm) setRotorSpeed(m, *opt.rpm);
   return m;
+}
+
+std::vector<std::string> checkSolvedPoints(const ModelOptions& opt, const Model& model,
+                                           const std::vector<OperatingPoint>& points, const std::string& where) {
+  std::vector<std::string> problems;
+  for (const OperatingPoint& op : points)
+    for (const std::string& p : checkPointValidity(model, op))
+      if (std::find(problems.begin(), problems.end(), p) == problems.end()) problems.push_back(p);
+  if (problems.empty()) return problems;
+  const std::string prefix = opt.case_path + ": " + (where.empty() ? "" : where + ": ");
+  if (!opt.allow_invalid_point)
+    throw ComputeError(prefix + "operating point outside the model's range of validity: " + problems.front() +
+                       " (check the inputs; --allow-invalid-point to go on anyway)");
+  if (parallel::rank() == 0)
+    for (const std::string& p : problems)
+      std::fprintf(stderr, "whirl: warning: %s%s\n", prefix.c_str(), escapeControlCharacters(p).c_str());
+  return problems;
+}
+
+void runWithCaseSource(const std::string& case_path, const std::function<void()>& run) {
+  try {
+    run();
+  } catch (const ComputeError& e) {
+    const std::string what = e.what();
+    if (what.rfind(case_path + ":", 0) == 0) throw;  // already named
+    throw ComputeError(case_path + ": " + what);
+  }
 }
 
 std::function<void(int, int)> sweepProgress(const std::string& command) {
