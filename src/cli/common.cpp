@@ -1,22 +1,21 @@
 #include "src/cli/common.hpp"
 
 #include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <numbers>
 
-#include <fmt/format.h>
-
-#include <algorithm>
-#include <cmath>
-
 #include "linearize/point_validity.hpp"
 #include "src/io/case_file.hpp"
-#include "src/model/text.hpp"
 #include "src/model/elastodyn_model.hpp"
 #include "src/model/error.hpp"
+#include "src/model/text.hpp"
 #include "src/parallel/session.hpp"
 
 namespace whirl::cli {

@@ -15,7 +15,7 @@
 /// | kMaxFemElements | 2000 | `fem_beam` `elements:` of a YAML case |
 /// | kMaxLinDimension | 100000 | `.lin` header counts (states, inputs, outputs) and matrix sizes `A: n x m` |
 /// | kMaxSweepPoints | 100000 | `--rpm START:STEP:STOP` points, `--schedule` rows |
-/// | kMaxAzimuths | 3600 | `--azimuths N` |
+/// | kMaxAzimuths | 3600 | `--azimuths N` (CLI::Range in src/cli/cmd_*.cpp) |
 namespace whirl::limits {
 
 inline constexpr int kMaxElastoDynNodes = 1000;
