@@ -218,7 +218,9 @@ void readFemBody(const CaseNode& n, int index, CaseBuild& build) {
     }
     if (spec.reduction == fem::ReductionKind::CraigBampton) {
       spec.modes = r->at("modes").integer();
-      if (spec.modes < 0) r->at("modes").fail("must not be negative");
+      if (spec.modes < 0 || spec.modes > limits::kMaxReducedModes)
+        r->at("modes").fail("must be between 0 and " + std::to_string(limits::kMaxReducedModes) +
+                            " (src/model/limits.hpp)");
     } else if (r->has("modes")) {
       r->at("modes").fail("modes only with craig_bampton");
     }

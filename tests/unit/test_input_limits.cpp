@@ -102,3 +102,33 @@ TEST(InputLimits, LinMatrixSizeOutOfIntRangeIsNamed) {
 }
 
 }  // namespace
+
+namespace {
+
+std::string caseError(const std::string& yaml) {
+  ScratchDir dir;
+  const auto path = dir.write("c.yaml", yaml);
+  return input_error_message([&] { whirl::readCase(path.string()); });
+}
+
+TEST(InputLimits, ShapeModeNumbersAndReducedModesAreBounded) {
+  const std::string topmass = read_text(whirl::test::source_dir() / "cases/tower_topmass/tower_topmass_eq32.yaml");
+  EXPECT_THAT(caseError(replace_once(topmass, "type: clamped_topmass, mode: 4,", "type: clamped_topmass, mode: 1001,")),
+              HasSubstr("c.yaml:17: bodies.tower.shapes.tower FA 4.mode: the mode number must be from 1 to 1000"));
+  EXPECT_THAT(caseError(R"(name: fe
+gravity: 0
+bodies:
+  - name: pile
+    type: fem_beam
+    length: 10
+    elements: 4
+    uniform: {m: 100, EIy: 1e7, EIz: 1e7}
+    dofs: [uy, uz, ry, rz]
+    points: [{name: root, x: 0}, {name: top, x: 10}]
+    clamped: [root]
+    reduction: {type: craig_bampton, interface: [top], modes: 1001}
+)"),
+              HasSubstr("c.yaml:12: bodies.pile.reduction.modes: must be between 0 and 1000"));
+}
+
+}  // namespace
