@@ -4,6 +4,8 @@
 #include <numbers>
 #include <regex>
 
+#include "src/model/limits.hpp"
+
 namespace whirl {
 
 SweepPoint sweepPoint(double rpm, std::optional<double> wind_speed, std::optional<double> pitch_deg) {
@@ -29,8 +31,14 @@ std::vector<double> parseRange(const std::string& spec, const std::string& optio
   }
   if (!(s > 0) || !(b >= a) || !std::isfinite(a) || !std::isfinite(b))
     throw InputError(option + ": need STEP > 0 and STOP >= START in '" + spec + "'");
-  const int n = static_cast<int>(std::floor((b - a) / s + 1e-9)) + 1;
-  if (n > 100000) throw InputError(option + ": more than 100000 points in '" + spec + "'");
+  if (a < 0)
+    throw InputError(option + ": negative value in '" + spec + "' (rotors turn in the positive sense, as in a schedule)");
+  // Count in double first: (b − a)/s can exceed the int range (0:1e-10:1).
+  const double count = std::floor((b - a) / s + 1e-9) + 1;
+  if (!(count <= limits::kMaxSweepPoints))
+    throw InputError(option + ": more than " + std::to_string(limits::kMaxSweepPoints) + " points in '" + spec +
+                     "' (src/model/limits.hpp)");
+  const int n = static_cast<int>(count);
   std::vector<double> values(static_cast<size_t>(n));
   for (int k = 0; k < n; ++k) values[static_cast<size_t>(k)] = a + k * s;
   return values;

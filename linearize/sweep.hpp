@@ -52,6 +52,11 @@ struct SweepOptions {
   /// When set: an InputError or ComputeError at point p (its start or its computation, not the
   /// model's construction) is re-thrown with context(p) in front of its message.
   std::function<std::string(int)> context;
+  /// Called with each point's model and solved periodic operating points (the validity check of the
+  /// commands, linearize/point_validity.hpp); returns the problems to keep in the point's metadata,
+  /// or throws to stop the sweep.
+  std::function<std::vector<std::string>(const Model&, const std::vector<OperatingPoint>&, const SweepPoint&)>
+      check_point;
 };
 
 /// The condition `model` is put at for `point`: point.condition, plus (where the condition does not

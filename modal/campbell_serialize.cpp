@@ -52,6 +52,7 @@ std::string encodeCampbellPoint(const CampbellPoint& pt) {
   if (pt.wind_speed) j["ws"] = *pt.wind_speed;
   if (pt.pitch_deg) j["pitch"] = *pt.pitch_deg;
   j["coords"] = pt.coordinates;
+  if (!pt.validity_problems.empty()) j["invalid"] = pt.validity_problems;
   j["modes"] = json::array();
   for (const auto& m : pt.modes) j["modes"].push_back(encodeMode(m));
   const std::vector<std::uint8_t> bytes = json::to_cbor(j);
@@ -66,6 +67,7 @@ CampbellPoint decodeCampbellPoint(const std::string& bytes) {
     if (j.contains("ws")) pt.wind_speed = j["ws"].get<double>();
     if (j.contains("pitch")) pt.pitch_deg = j["pitch"].get<double>();
     pt.coordinates = j.at("coords").get<std::vector<std::string>>();
+    if (j.contains("invalid")) pt.validity_problems = j["invalid"].get<std::vector<std::string>>();
     for (const auto& m : j.at("modes")) pt.modes.push_back(decodeMode(m));
     return pt;
   } catch (const json::exception& e) {

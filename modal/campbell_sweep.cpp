@@ -11,8 +11,11 @@ CampbellPoint campbellPoint(const Model& m, const SweepPoint& point, const Opera
   PeriodicOptions popt;
   popt.azimuths = opt.azimuths;
   const PeriodicLinearization p = linearizePeriodic(m, start, popt);
+  std::vector<std::string> problems;
+  if (opt.check_point) problems = opt.check_point(m, p.points, point);
   RotorModes r = rotorModes(m, p);
   CampbellPoint cp;
+  cp.validity_problems = std::move(problems);
   cp.rpm = point.rpm;
   cp.wind_speed = point.wind_speed;
   cp.pitch_deg = point.pitch_deg;

@@ -6,6 +6,7 @@
 /// shared sweep of linearize/sweep.hpp (SweepPoint, SweepOptions, rpmRange are declared there).
 #include "linearize/sweep.hpp"
 #include "modal/campbell.hpp"
+#include "linearize/operating_point.hpp"
 #include "src/model/model.hpp"
 
 namespace whirl {

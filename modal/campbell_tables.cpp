@@ -58,6 +58,7 @@ std::string campbellModesJson(const CampbellDiagram& d) {
     jp["wind_speed"] = pt.wind_speed ? number(*pt.wind_speed) : json(nullptr);
     jp["pitch_deg"] = pt.pitch_deg ? number(*pt.pitch_deg) : json(nullptr);
     jp["coordinates"] = pt.coordinates;
+    if (!pt.validity_problems.empty()) jp["validity"] = {{"valid", false}, {"problems", pt.validity_problems}};
     jp["modes"] = json::array();
     for (std::size_t k = 0; k < pt.modes.size(); ++k) {
       const Mode& m = pt.modes[k];

@@ -122,6 +122,9 @@ MbcLayout mbcLayoutFromLin(const OpenFastLin& lin, int num_blades) {
 
 MbcSample mbcSampleFromLin(const OpenFastLin& lin) {
   MbcSample s;
+  if (const auto nf = lin.first_non_finite.find("A"); nf != lin.first_non_finite.end())
+    throw InputError(where(lin.path, nf->second, "A",
+                           "value is not finite (NaN, Infinity or ****): the state matrix cannot be analysed"));
   s.azimuth = lin.azimuth;
   s.rotor_speed = lin.rotor_speed;
   const std::vector<int> vel = velocityOf(lin);

@@ -33,6 +33,7 @@ MbcLayout mbcLayoutFromLin(const OpenFastLin& lin, int num_blades = 0);
 /// The file's A, B, C, D with ψ = header azimuth, Ω = header rotor speed, and Ω̇ = the sum of the
 /// derivatives of the generator-azimuth and drivetrain rate states (DOF_GeAz, DOF_DrTr) in the
 /// state-derivative table, as MBC3 does (0 if those DOFs are absent).
+/// \throws InputError("file:line: A: value is not finite …") when A holds NaN, Infinity or `****`.
 MbcSample mbcSampleFromLin(const OpenFastLin& lin);
 
 }  // namespace whirl

@@ -1,4 +1,5 @@
 #include <CLI/CLI.hpp>
+#include <fmt/format.h>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -40,6 +41,9 @@ void run(const CampbellOptions& opt) {
   if (parallel::launchedByMpi()) parallel::requirePetsc("mpirun");  // start-up outside the timing
   SweepOptions sweep;
   sweep.azimuths = opt.azimuths;
+  sweep.check_point = [&opt](const Model& pm, const std::vector<OperatingPoint>& ops, const SweepPoint& sp) {
+    return checkSolvedPoints(opt.model, pm, ops, fmt::format("{:g} rpm", sp.rpm));
+  };
   const auto start = std::chrono::steady_clock::now();
   sweep.progress = sweepProgress("campbell");
   CampbellDiagram d;
@@ -88,7 +92,7 @@ void addCampbellCommand(CLI::App& app) {
       ->check(CLI::IsMember({"rpm", "wind", "auto"}));
   cmd->add_option("--max-freq", opt->max_freq, "top of the frequency axis [Hz] (default: automatic)");
   cmd->add_flag("--no-plot", opt->no_plot, "write the tables and the Gnuplot script, do not run Gnuplot");
-  cmd->callback([opt]() { run(*opt); });
+  cmd->callback([opt]() { runWithCaseSource(opt->model.case_path, [&] { run(*opt); }); });
 }
 
 }  // namespace whirl::cli

@@ -43,6 +43,9 @@ std::vector<std::string> splitSet(const std::string& s) {
 }
 
 void run(const CompareOptions& opt) {
+  if (!std::isfinite(opt.tol_rel) || opt.tol_rel < 0)
+    throw InputError("--tol-rel: must be a finite number >= 0 (is " + std::to_string(opt.tol_rel) + ")");
+  if (opt.rpm && !std::isfinite(*opt.rpm)) throw InputError("--rpm: must be a finite number");
   const TextTable res = readTextCsv(opt.result), ref = readTextCsv(opt.reference);
   const int rname = res.column("name") >= 0 ? res.column("name") : res.column("mode");
   const int rfreq = res.column("freq_hz"), rrpm = res.column("rpm");

@@ -1,4 +1,5 @@
 #include <CLI/CLI.hpp>
+#include <fmt/format.h>
 #include <cstdio>
 #include <filesystem>
 #include <numbers>
@@ -100,6 +101,7 @@ void run(const CliOptions& opt) {
       base, points,
       [&](const Model& m, const SweepPoint& sp, const OperatingPoint& start) {
         ExportPoint p = exportOperatingPoint(m, start, eo);
+        checkSolvedPoints(opt.model, m, {p.equilibrium}, opt.schedule.empty() ? "" : fmt::format("{:g} rpm", sp.rpm));
         p.rpm = sp.rpm;
         p.wind_speed = sp.wind_speed;
         p.pitch_deg = sp.pitch_deg;
@@ -158,7 +160,7 @@ void addExportCommand(CLI::App& app) {
   cmd->add_option("--inputs", opt->inputs, "keep these inputs, comma-separated, in this order (default: all)");
   cmd->add_option("--outputs", opt->outputs, "keep these outputs, comma-separated, in this order (default: all)");
   cmd->add_flag("--drop-azimuth", opt->drop_azimuth, "remove the rotor azimuth state (keep the rotor speed)");
-  cmd->callback([opt]() { run(*opt); });
+  cmd->callback([opt]() { runWithCaseSource(opt->model.case_path, [&] { run(*opt); }); });
 }
 
 }  // namespace whirl::cli

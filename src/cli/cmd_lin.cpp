@@ -69,6 +69,11 @@ void run(const LinOptions& opt) {
     OpenFastLin lin = readOpenFastLin(f);
     if (lin.A.size() == 0) throw InputError(f + ": no A matrix (no continuous states)");
     const long long w = std::llround(1e6 * lin.rotor_speed), v = std::llround(1e4 * lin.wind_speed.value_or(-1));
+    // The same azimuth twice (a file given twice) would weigh it double in the multiblade average.
+    for (const OpenFastLin& other : groups[{w, v}])
+      if (std::abs(std::remainder(lin.azimuth - other.azimuth, 2 * M_PI)) < 1e-6)
+        throw InputError(f + ": same operating point and azimuth as " + other.path +
+                         " (a repeated azimuth would bias the multiblade average; give each file once)");
     groups[{w, v}].push_back(std::move(lin));
   }
   CampbellDiagram d;
@@ -100,7 +105,8 @@ void addLinCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "lin", "modes from OpenFAST .lin files: grouped by operating point, multiblade transform over each group's "
              "azimuths, named; one operating point prints like `modes`, several write a Campbell diagram");
-  cmd->add_option("FILE", opt->files, "OpenFAST .lin files")->required()->check(CLI::ExistingFile);
+  // No CLI::ExistingFile: a missing file is the reader's "FILE: cannot open file" (exit 1), as elsewhere.
+  cmd->add_option("FILE", opt->files, "OpenFAST .lin files")->required();
   cmd->add_option("--format", opt->format, "one operating point: table, csv or json")
       ->check(CLI::IsMember({"table", "csv", "json"}));
   cmd->add_option("--out", opt->out, "several operating points: output folder (default reports/lin)");

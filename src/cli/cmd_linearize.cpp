@@ -31,6 +31,7 @@ nlohmann::json namedValues(const Model& m, const VecX& v) {
 void run(const LinearizeOptions& opt) {
   const Model m = loadModel(opt.model);
   const OperatingPoint op = solveOperatingPoint(m, startPoint(m, opt.model));
+  const std::vector<std::string> problems = checkSolvedPoints(opt.model, m, {op});
   const LinearModel lin = linearize(m, op);
   const std::string dir = opt.out.empty() ? defaultOutputFolder(opt.model.case_path) : opt.out;
   ensureWritableFolder(dir);
@@ -60,6 +61,7 @@ void run(const LinearizeOptions& opt) {
   j["equilibrium"]["residual_norm"] = op.residual_norm;
   j["equilibrium"]["max_abs_residual_active"] = op.residual_max_active;
   j["equilibrium"]["max_abs_residual_dof"] = op.residual_max_dof;
+  j["validity"] = {{"valid", problems.empty()}, {"problems", problems}};
   j["residual"] = nlohmann::json::object();
   for (size_t k = 0; k < lin.dof_names.size(); ++k) j["residual"][lin.dof_names[k]] = lin.residual(k);
   j["files"] = {"M.csv", "C.csv", "K.csv", "Q.csv", "A.csv", "B.csv"};
@@ -77,7 +79,7 @@ void addLinearizeCommand(CLI::App& app) {
       "linearize", "solve the operating point and write M, C, K, Q, A, B (CSV) and linearization.json");
   addModelOptions(*cmd, opt->model);
   cmd->add_option("--out", opt->out, "output folder (default reports/<case name>)");
-  cmd->callback([opt]() { run(*opt); });
+  cmd->callback([opt]() { runWithCaseSource(opt->model.case_path, [&] { run(*opt); }); });
 }
 
 }  // namespace whirl::cli

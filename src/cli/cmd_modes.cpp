@@ -41,6 +41,8 @@ void run(const ModesOptions& opt) {
     PeriodicOptions p;
     p.azimuths = opt.azimuths;
     const PeriodicLinearization lin = linearizePeriodic(m, startPoint(m, opt.model), p);
+    const std::vector<std::string> problems = checkSolvedPoints(opt.model, m, lin.points);
+    header["validity"] = {{"valid", problems.empty()}, {"problems", problems}};
     const RotorModes r = rotorModes(m, lin);
     header["rotor_speed_rpm"] = lin.rotor_speed * 30 / 3.141592653589793;
     header["azimuths"] = opt.azimuths;
@@ -48,7 +50,10 @@ void run(const ModesOptions& opt) {
     printModes(r.modes, r.coordinates, opt.format, header);
     return;
   }
-  const LinearModel lin = linearize(m, solveOperatingPoint(m, startPoint(m, opt.model)));
+  const OperatingPoint op = solveOperatingPoint(m, startPoint(m, opt.model));
+  const std::vector<std::string> problems = checkSolvedPoints(opt.model, m, {op});
+  header["validity"] = {{"valid", problems.empty()}, {"problems", problems}};
+  const LinearModel lin = linearize(m, op);
   const int n = static_cast<int>(lin.M.rows());
   if (!useSparseSolver(opt.solver, n)) {
     printModes(computeModes(lin.M, lin.C, lin.K, lin.dof_names), lin.dof_names, opt.format, header);
@@ -84,7 +89,7 @@ void addModesCommand(CLI::App& app) {
       ->check(CLI::IsMember({"auto", "dense", "sparse"}));
   cmd->add_option("--nmodes", opt->nmodes, "modes computed by the sparse solver (lowest frequencies)")
       ->check(CLI::Range(1, 100000));
-  cmd->callback([opt]() { run(*opt); });
+  cmd->callback([opt]() { runWithCaseSource(opt->model.case_path, [&] { run(*opt); }); });
 }
 
 }  // namespace whirl::cli

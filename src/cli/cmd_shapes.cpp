@@ -34,7 +34,7 @@ std::vector<fem::FlexibleBeam> loadBeams(const ModelOptions& opt) {
                        "--set bodies.<beam>.shapes.rotor_speed_rpm=R");
     std::vector<CaseOverride> overrides;
     for (const auto& s : opt.sets) overrides.push_back(parseOverride(s));
-    readCase(opt.case_path, overrides, &beams);
+    readCase(opt.case_path, overrides, &beams, opt.allow_outside_files);
   } else {
     beams = readElastoDynFlexibleBeams(opt.case_path, opt.sets, opt.rpm);
   }
@@ -140,7 +140,7 @@ void addShapesCommand(CLI::App& app) {
   cmd->add_option("--format", opt->format, "table, csv or json")->check(CLI::IsMember({"table", "csv", "json"}));
   cmd->add_option("--out", opt->out,
                   "also write shapes.csv, shapes.json and one table per FE mode (x, uy, uz, slopes, curvatures) here");
-  cmd->callback([opt]() { run(*opt); });
+  cmd->callback([opt]() { runWithCaseSource(opt->model.case_path, [&] { run(*opt); }); });
 }
 
 }  // namespace whirl::cli

@@ -1,5 +1,6 @@
 // whirl study: parameter sets (a CSV of --set columns) × operating points, one table.
 #include <CLI/CLI.hpp>
+#include <fmt/format.h>
 #include <chrono>
 #include <cstdio>
 #include <map>
@@ -53,6 +54,9 @@ void run(const StudyOptions& opt) {
   const size_t S = sets.rows.size(), P = points.size();
   SweepOptions sweep;
   sweep.azimuths = opt.azimuths;
+  sweep.check_point = [&opt](const Model& pm, const std::vector<OperatingPoint>& ops, const SweepPoint& sp) {
+    return checkSolvedPoints(opt.model, pm, ops, fmt::format("{:g} rpm", sp.rpm));
+  };
   std::map<int, Model> models;  // this rank's models, built when its first point of a set comes
   const std::vector<CampbellPoint> all = campbellSweep(
       static_cast<int>(S),
@@ -110,7 +114,7 @@ void addStudyCommand(CLI::App& app) {
       ->check(CLI::Range(1, 3600));
   cmd->add_option("--out", opt->out, "output folder (default reports/<case name>)");
   cmd->add_option("--tracking", opt->tracking, "mode-tracking overrides file, applied to every set");
-  cmd->callback([opt]() { run(*opt); });
+  cmd->callback([opt]() { runWithCaseSource(opt->model.case_path, [&] { run(*opt); }); });
 }
 
 }  // namespace whirl::cli

@@ -1,14 +1,20 @@
 #include "src/cli/common.hpp"
 
 #include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
 
+#include "linearize/point_validity.hpp"
 #include "src/io/case_file.hpp"
 #include "src/model/elastodyn_model.hpp"
 #include "src/model/error.hpp"
+#include "src/model/text.hpp"
 #include "src/parallel/session.hpp"
 
 namespace whirl::cli {
@@ -19,11 +25,19 @@ void addModelOptions(CLI::App& cmd, ModelOptions& opt, bool with_rpm) {
                  "override KEY=VALUE (repeatable): a dotted path of the YAML case, or an OpenFAST key; "
                  "gravity=G for both");
   if (with_rpm) cmd.add_option("--rpm", opt.rpm, "rotor speed [rpm]: the rate of every DOF marked rotating");
+  cmd.add_flag("--allow-invalid-point", opt.allow_invalid_point,
+               "go on (with a warning) when the solved operating point leaves the model's range of validity "
+               "(deflection > 0.3 body length, elastic slope > 0.5 rad, residual not small)");
+  cmd.add_flag("--allow-outside-files", opt.allow_outside_files,
+               "let a YAML case's `file:` entries name files outside the case folder");
 }
 
 OperatingCondition operatingCondition(const Model& m, const ModelOptions& opt) {
   OperatingCondition c = modelCondition(m);
   if (opt.rpm) {
+    if (!std::isfinite(*opt.rpm) || *opt.rpm < 0)
+      throw InputError("--rpm: rotor speed must be finite and not negative (is " + fmt::format("{:g}", *opt.rpm) +
+                       "); whirl's rotors turn in the positive sense of their azimuth, as a schedule requires");
     if (m.roles.azimuth.empty())
       throw InputError("--rpm: the model has no rotating DOF (mark the azimuth with `rotating: true`)");
     c.rotor_speed = rpmToRadPerSec(*opt.rpm);
@@ -45,13 +59,40 @@ Model loadModel(const ModelOptions& opt) {
   if (isYamlCase(opt.case_path)) {
     std::vector<CaseOverride> overrides;
     for (const auto& s : opt.sets) overrides.push_back(parseOverride(s));
-    m = readCase(opt.case_path, overrides);
+    m = readCase(opt.case_path, overrides, nullptr, opt.allow_outside_files);
   } else {
     m = readElastoDynModel(opt.case_path, opt.sets);
   }
   // Every command that takes a model linearizes it: refuse an empty state before any work or output.
   requireActiveDof(m, opt.case_path);
   return m;
+}
+
+std::vector<std::string> checkSolvedPoints(const ModelOptions& opt, const Model& model,
+                                           const std::vector<OperatingPoint>& points, const std::string& where) {
+  std::vector<std::string> problems;
+  for (const OperatingPoint& op : points)
+    for (const std::string& p : checkPointValidity(model, op))
+      if (std::find(problems.begin(), problems.end(), p) == problems.end()) problems.push_back(p);
+  if (problems.empty()) return problems;
+  const std::string prefix = opt.case_path + ": " + (where.empty() ? "" : where + ": ");
+  if (!opt.allow_invalid_point)
+    throw ComputeError(prefix + "operating point outside the model's range of validity: " + problems.front() +
+                       " (check the inputs; --allow-invalid-point to go on anyway)");
+  if (parallel::rank() == 0)
+    for (const std::string& p : problems)
+      std::fprintf(stderr, "whirl: warning: %s%s\n", prefix.c_str(), escapeControlCharacters(p).c_str());
+  return problems;
+}
+
+void runWithCaseSource(const std::string& case_path, const std::function<void()>& run) {
+  try {
+    run();
+  } catch (const ComputeError& e) {
+    const std::string what = e.what();
+    if (what.rfind(case_path + ":", 0) == 0) throw;  // already named
+    throw ComputeError(case_path + ": " + what);
+  }
 }
 
 std::function<void(int, int)> sweepProgress(const std::string& command) {

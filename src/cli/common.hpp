@@ -22,14 +22,28 @@ struct ModelOptions {
   std::string case_path;
   std::vector<std::string> sets;  ///< "key=value"
   std::optional<double> rpm;
+  bool allow_invalid_point = false;  ///< --allow-invalid-point: warn instead of stopping (point_validity.hpp)
+  bool allow_outside_files = false;  ///< --allow-outside-files: a YAML case's `file:` may leave its folder
 };
 
-/// Registers CASE, --set and (when with_rpm) --rpm on a subcommand.
+/// Registers CASE, --set, --allow-invalid-point, --allow-outside-files and (when with_rpm) --rpm.
 void addModelOptions(CLI::App& cmd, ModelOptions& opt, bool with_rpm = true);
 
 /// Loads the case — a YAML case file (.yaml, .yml), or an OpenFAST .fst / ElastoDyn .dat — with
 /// --set applied before the model is built. --rpm does not change the model: see operatingCondition.
 Model loadModel(const ModelOptions& opt);
+
+/// Checks solved operating points against the model's range of validity (checkPointValidity).
+/// Problems are printed on stderr as "whirl: warning: CASE: <where>: <problem>" and returned (for
+/// the metadata of the outputs) when --allow-invalid-point is given; otherwise the first one is a
+/// ComputeError "CASE: <where>: operating point outside the model's range of validity: …".
+/// \param[in] where  the point, e.g. "" or "12 rpm"
+std::vector<std::string> checkSolvedPoints(const ModelOptions& opt, const Model& model,
+                                           const std::vector<OperatingPoint>& points, const std::string& where = "");
+
+/// Runs a model command; a ComputeError (no equilibrium, singular matrix, …) is rethrown prefixed
+/// with the case file it came from: "CASE: operating point did not converge …".
+void runWithCaseSource(const std::string& case_path, const std::function<void()>& run);
 
 /// True for a YAML case path (.yaml, .yml), false for OpenFAST / ElastoDyn files.
 bool isYamlCase(const std::string& path);

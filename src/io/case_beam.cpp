@@ -7,6 +7,7 @@
 #include "src/io/case_columns.hpp"
 #include "src/io/case_reader.hpp"
 #include "src/model/error.hpp"
+#include "src/model/limits.hpp"
 #include "src/shapes/beam.hpp"
 
 namespace whirl {
@@ -77,7 +78,8 @@ BeamIntegration readIntegration(const CaseNode& n) {
   if (const auto k = n.find("n")) {
     if (q.method == BeamIntegration::Stations) k->fail("n has no meaning with method stations (the property stations are used)");
     q.n = k->integer();
-    if (q.n < 1 || q.n > 100000) k->fail("must be between 1 and 100000");
+    if (q.n < 1 || q.n > limits::kMaxIntegrationPoints)
+      k->fail("must be between 1 and " + std::to_string(limits::kMaxIntegrationPoints) + " (src/model/limits.hpp)");
   }
   return q;
 }

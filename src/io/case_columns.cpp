@@ -21,6 +21,7 @@ std::string join(const std::vector<std::string>& v) {
 
 Columns fromCsv(const CaseNode& file_node, const std::vector<std::string>& allowed) {
   const std::string path = file_node.source().resolve(file_node.text());
+  if (const std::string outside = file_node.source().outsideReason(path); !outside.empty()) file_node.fail(outside);
   if (!std::ifstream(path)) file_node.fail("cannot open '" + path + "' (relative paths start at the case folder)");
   const CsvTable t = readCsv(path);
   Columns cols;

@@ -10,6 +10,7 @@
 #include "src/io/case_columns.hpp"
 #include "src/io/case_reader.hpp"
 #include "src/model/error.hpp"
+#include "src/model/limits.hpp"
 
 namespace whirl {
 
@@ -100,7 +101,8 @@ void readFemBody(const CaseNode& n, int index, CaseBuild& build) {
   int elements = 20;
   if (const auto e = n.find("elements")) {
     elements = e->integer();
-    if (elements < 1 || elements > 1000000) e->fail("must be between 1 and 1000000");
+    if (elements < 1 || elements > limits::kMaxFemElements)
+      e->fail("must be between 1 and " + std::to_string(limits::kMaxFemElements) + " (src/model/limits.hpp)");
   }
   const auto uni = n.find("uniform"), tab = n.find("properties");
   if (uni && tab) tab->fail("give uniform or properties, not both");
@@ -216,7 +218,9 @@ void readFemBody(const CaseNode& n, int index, CaseBuild& build) {
     }
     if (spec.reduction == fem::ReductionKind::CraigBampton) {
       spec.modes = r->at("modes").integer();
-      if (spec.modes < 0) r->at("modes").fail("must not be negative");
+      if (spec.modes < 0 || spec.modes > limits::kMaxReducedModes)
+        r->at("modes").fail("must be between 0 and " + std::to_string(limits::kMaxReducedModes) +
+                            " (src/model/limits.hpp)");
     } else if (r->has("modes")) {
       r->at("modes").fail("modes only with craig_bampton");
     }

@@ -5,6 +5,7 @@
 
 #include "src/io/case_reader.hpp"
 #include "src/model/error.hpp"
+#include "src/model/limits.hpp"
 
 namespace whirl {
 
@@ -14,7 +15,9 @@ fem::ModeShapeInput readFemShapeSettings(const CaseNode& s, const BeamProperties
   in.props = props;
   if (const auto e = s.find("elements")) {
     in.elements = e->integer();
-    if (in.elements < 1 || in.elements > 5000) e->fail("the number of elements must be from 1 to 5000");
+    if (in.elements < 1 || in.elements > limits::kMaxFemShapeElements)
+      e->fail("the number of elements must be from 1 to " + std::to_string(limits::kMaxFemShapeElements) +
+              " (src/model/limits.hpp)");
   }
   if (const auto t = s.find("tip_mass")) {
     t->allowKeys({"mass", "cog", "inertia"});
@@ -51,7 +54,9 @@ std::vector<ShapePtr> readFemShapes(const CaseNode& s, const BeamProperties& pro
     const std::string d = m.at("direction").text();
     if (d != "y" && d != "z") m.at("direction").fail("expected y or z, got '" + d + "'");
     const int j = m.at("mode").integer();
-    if (j < 1 || j > 50) m.at("mode").fail("the mode number must be from 1 to 50");
+    if (j < 1 || j > limits::kMaxFemShapeMode)
+      m.at("mode").fail("the mode number must be from 1 to " + std::to_string(limits::kMaxFemShapeMode) +
+                        " (src/model/limits.hpp)");
     (d == "y" ? ny : nz) = std::max(d == "y" ? ny : nz, j);
     req.push_back({m.at("name").text(), d[0], j, m});
   }

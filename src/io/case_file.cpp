@@ -34,9 +34,10 @@ Vec3 readGravity(const CaseNode& g) {
 }  // namespace
 
 Model readCase(const std::string& path, const std::vector<CaseOverride>& overrides,
-               std::vector<fem::FlexibleBeam>* beams) {
+               std::vector<fem::FlexibleBeam>* beams, bool allow_outside_files) {
   CaseSource source;
   source.file = path;
+  source.allow_outside_files = allow_outside_files;
   source.folder = std::filesystem::path(path).parent_path().string();
   YAML::Node doc = load(path);
   applyOverrides(doc, overrides, source);

@@ -35,7 +35,9 @@ CaseOverride parseOverride(const std::string& text);
 /// \return the finalized model.
 /// \throws InputError "file:line: key: reason" for anything wrong in the file or the overrides.
 /// \param[out] beams    when given, the case's `beam` bodies as FE inputs with their shapes (`whirl shapes`).
+/// \param[in] allow_outside_files  false (default): a `file:` entry must name a file under the case
+///                       folder (no absolute path, no `..` or symbolic link leading out of it).
 Model readCase(const std::string& path, const std::vector<CaseOverride>& overrides = {},
-               std::vector<fem::FlexibleBeam>* beams = nullptr);
+               std::vector<fem::FlexibleBeam>* beams = nullptr, bool allow_outside_files = false);
 
 }  // namespace whirl

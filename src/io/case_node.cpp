@@ -45,6 +45,18 @@ std::string CaseSource::resolve(const std::string& relative) const {
   return (std::filesystem::path(folder) / p).string();
 }
 
+std::string CaseSource::outsideReason(const std::string& resolved) const {
+  if (allow_outside_files) return "";
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path base = fs::weakly_canonical(fs::absolute(folder.empty() ? fs::path(".") : fs::path(folder)), ec);
+  const fs::path target = fs::weakly_canonical(fs::absolute(resolved), ec);
+  const fs::path rel = target.lexically_relative(base);
+  if (!ec && !rel.empty() && *rel.begin() != ".." && !rel.is_absolute()) return "";
+  return "the file is outside the case folder (" + (base.empty() ? std::string(".") : base.string()) +
+         "); only files under it are read unless --allow-outside-files is given";
+}
+
 std::string num(double v) { return fmt::format("{:g}", v); }
 
 std::string mapChildPath(const std::string& parent, const std::string& key) {

@@ -36,8 +36,12 @@ struct CaseSource {
     int line = 0;      ///< line of the value (or of its closest existing parent) in the file
   };
   std::vector<Set> sets;
+  bool allow_outside_files = false;  ///< `file:` entries may name files outside the case folder
   /// The file a path inside the case names, relative to the case folder unless absolute.
   std::string resolve(const std::string& relative) const;
+  /// Empty when `resolved` (from resolve) may be read, else the reason: outside the case folder
+  /// (absolute, or `..`/a symbolic link leading out) while allow_outside_files is false.
+  std::string outsideReason(const std::string& resolved) const;
 };
 
 /// A number for messages, shortest form ("2.4e+05", "80").

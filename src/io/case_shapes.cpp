@@ -6,6 +6,7 @@
 #include "src/io/case_columns.hpp"
 #include "src/io/case_reader.hpp"
 #include "src/model/error.hpp"
+#include "src/model/limits.hpp"
 
 namespace whirl {
 namespace {
@@ -113,13 +114,17 @@ std::vector<ShapePtr> readShapes(const CaseNode& beam, const BeamProperties& pro
       const auto [dy, dz] = readDirection(s);
       const int mode = s.at("mode").integer();
       const double ratio = s.at("tip_mass_ratio").number();
-      if (mode < 1) s.at("mode").fail("the mode number must be ≥ 1");
+      if (mode < 1 || mode > limits::kMaxAnalyticShapeMode)
+        s.at("mode").fail("the mode number must be from 1 to " + std::to_string(limits::kMaxAnalyticShapeMode) +
+                          " (src/model/limits.hpp)");
       if (ratio < 0) s.at("tip_mass_ratio").fail("must not be negative");
       shapes.push_back(located(s, [&] { return clampedTopMassShape(name, L, mode, ratio, dy, dz); }));
     } else if (type == "torsion_sine") {
       s.allowKeys({"name", "type", "mode"});
       const int mode = s.at("mode").integer();
-      if (mode < 1) s.at("mode").fail("the mode number must be ≥ 1");
+      if (mode < 1 || mode > limits::kMaxAnalyticShapeMode)
+        s.at("mode").fail("the mode number must be from 1 to " + std::to_string(limits::kMaxAnalyticShapeMode) +
+                          " (src/model/limits.hpp)");
       shapes.push_back(located(s, [&] { return torsionSineShape(name, L, mode); }));
       angular = true;
     } else if (type == "table") {

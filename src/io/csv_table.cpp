@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <set>
 
@@ -32,12 +33,17 @@ std::string unquote(const std::string& s) {
   return s.size() >= 2 && s.front() == '"' && s.back() == '"' ? s.substr(1, s.size() - 2) : s;
 }
 
+/// At most 40 characters of a cell, for messages (the file may not be a CSV file at all).
+std::string excerpt(const std::string& s) { return s.size() <= 40 ? s : s.substr(0, 40) + "..."; }
+
 }  // namespace
 
 CsvTable readCsv(const std::string& path) {
   CsvTable t;
   t.file = path;
   std::ifstream in(path);
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw InputError(where(path, 0, "", "is a folder, not a CSV file"));
   if (!in) throw InputError(where(path, 0, "", "cannot open the file"));
   std::string raw;
   int line = 0;
@@ -51,7 +57,7 @@ CsvTable readCsv(const std::string& path) {
       for (const auto& f : fields) {
         const std::string name = unquote(f);
         if (name.empty()) throw InputError(where(path, line, "", "empty column name in the header row"));
-        if (!seen.insert(name).second) throw InputError(where(path, line, name, "column given twice"));
+        if (!seen.insert(name).second) throw InputError(where(path, line, excerpt(name), "column given twice"));
         t.names.push_back(name);
       }
       t.header_line = line;
@@ -67,7 +73,7 @@ CsvTable readCsv(const std::string& path) {
       double v = 0;
       const auto [end, ec] = std::from_chars(f.data(), f.data() + f.size(), v);
       if (f.empty() || ec != std::errc() || end != f.data() + f.size() || !std::isfinite(v))
-        throw InputError(where(path, line, t.names[j], "expected a finite number, got '" + fields[j] + "'"));
+        throw InputError(where(path, line, excerpt(t.names[j]), "expected a finite number, got '" + excerpt(fields[j]) + "'"));
       t.columns[j].push_back(v);
     }
     t.row_lines.push_back(line);

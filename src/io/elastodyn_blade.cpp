@@ -3,6 +3,20 @@
 #include "src/io/openfast_overrides.hpp"
 
 namespace whirl::io {
+namespace {
+
+/// Keys of ElastoDyn blade files, all versions whirl reads (FAST 8 ElastoDyn v1.00 to OpenFAST v5), indices left out.
+const OpenFastLayout& layout() {
+  static const OpenFastLayout l{
+      "ElastoDyn blade",
+      {
+      "NBlInpSt", "CalcBMode", "BldFlDmp", "BldEdDmp", "FlStTunr", "AdjBlMs", "AdjFlSt", "AdjEdSt", "BldFl1Sh",
+      "BldFl2Sh", "BldEdgSh"},
+      {}};
+  return l;
+}
+
+}  // namespace
 
 const std::vector<double>* ElastoDynBlade::pitch_axis() const {
   if (const std::vector<double>* c = distributed.find("PitchAxis")) return c;
@@ -12,6 +26,7 @@ const std::vector<double>* ElastoDynBlade::pitch_axis() const {
 ElastoDynBlade read_elastodyn_blade(const std::filesystem::path& file, OverrideSet* overrides) {
   ElastoDynBlade b;
   b.source = OpenFastFile::read(file);
+  b.source.check_layout(layout());
   if (overrides) overrides->apply_to(b.source);
   const OpenFastFile& f = b.source;
 

@@ -3,9 +3,33 @@
 #include "src/io/elastodyn_common.hpp"
 #include "src/io/openfast_overrides.hpp"
 #include "src/model/error.hpp"
+#include "src/model/limits.hpp"
 
 namespace whirl::io {
 namespace {
+
+/// Keys of ElastoDyn files, all versions whirl reads (FAST 8 ElastoDyn v1.00 to OpenFAST v5), indices left out.
+const OpenFastLayout& layout() {
+  static const OpenFastLayout l{
+      "ElastoDyn",
+      {
+      "Echo", "Method", "DT", "Gravity", "FlapDOF1", "FlapDOF2", "EdgeDOF", "PitchDOF", "TeetDOF", "DrTrDOF",
+      "GenDOF", "YawDOF", "TwFADOF1", "TwFADOF2", "TwSSDOF1", "TwSSDOF2", "PtfmSgDOF", "PtfmSwDOF", "PtfmHvDOF",
+      "PtfmRDOF", "PtfmPDOF", "PtfmYDOF", "OoPDefl", "IPDefl", "BlPitch", "TeetDefl", "Azimuth", "RotSpeed",
+      "NacYaw", "TTDspFA", "TTDspSS", "PtfmSurge", "PtfmSway", "PtfmHeave", "PtfmRoll", "PtfmPitch", "PtfmYaw",
+      "NumBl", "TipRad", "HubRad", "PreCone", "HubCM", "UndSling", "Delta3", "AzimB1Up", "OverHang", "ShftGagL",
+      "ShftTilt", "NacCMxn", "NacCMyn", "NacCMzn", "NcIMUxn", "NcIMUyn", "NcIMUzn", "Twr2Shft", "TowerHt",
+      "TowerBsHt", "TwrRBHt", "TwrDraft", "PtfmCMxt", "PtfmCMyt", "PtfmCMzt", "PtfmRefxt", "PtfmRefyt",
+      "PtfmRefzt", "PtfmRef", "TipMass", "PBrIner", "BlPIner", "HubMass", "HubIner", "HubIner_Teeter", "GenIner",
+      "NacMass", "NacYIner", "YawBrMass", "PtfmMass", "PtfmRIner", "PtfmPIner", "PtfmYIner", "PtfmXYIner",
+      "PtfmYZIner", "PtfmXZIner", "BldNodes", "BldFile", "TeetMod", "TeetDmpP", "TeetDmp", "TeetCDmp", "TeetSStP",
+      "TeetHStP", "TeetSSSp", "TeetHSSp", "YawFrctMod", "M_CSmax", "M_CD", "sig_v", "sig_v2", "OmgCut", "M_FCSmax",
+      "M_MCSmax", "M_FCD", "M_MCD", "GBoxEff", "GBRatio", "DTTorSpr", "DTTorDmp", "Furling", "FurlFile",
+      "TwrNodes", "TwrFile", "SumPrint", "OutFile", "TabDelim", "OutFmt", "TStart", "DecFact", "NTwGages",
+      "TwrGagNd", "NBlGages", "BldGagNd", "BldNd_BladesOut", "BldNd_BlOutNd"},
+      {}};
+  return l;
+}
 
 ElastoDynDofs read_dofs(const OpenFastFile& f) {
   ElastoDynDofs d;
@@ -150,6 +174,7 @@ ElastoDynDrivetrain read_drivetrain(const OpenFastFile& f) {
 ElastoDynInput read_elastodyn(const std::filesystem::path& file, OverrideSet* overrides) {
   ElastoDynInput ed;
   ed.source = OpenFastFile::read(file);
+  ed.source.check_layout(layout());
   if (overrides) overrides->apply_to(ed.source);
   const OpenFastFile& f = ed.source;
 
@@ -168,6 +193,10 @@ ElastoDynInput read_elastodyn(const std::filesystem::path& file, OverrideSet* ov
   ed.TwrNodes = f.get_int("TwrNodes");
   require_positive(f, "TwrNodes", ed.TwrNodes);
   if (ed.BldNodes) require_positive(f, "BldNodes", *ed.BldNodes);
+  for (const char* key : {"TwrNodes", "BldNodes"})
+    if (const std::optional<int> n = f.find_int(key); n && *n > limits::kMaxElastoDynNodes)
+      throw InputError(f.where(key, "at most " + std::to_string(limits::kMaxElastoDynNodes) + " nodes (is " +
+                                        std::to_string(*n) + "; src/model/limits.hpp)"));
 
   ed.TwrFile = f.get_existing_path("TwrFile");
   ed.tower = read_elastodyn_tower(ed.TwrFile, overrides);

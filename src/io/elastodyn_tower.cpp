@@ -3,10 +3,25 @@
 #include "src/io/openfast_overrides.hpp"
 
 namespace whirl::io {
+namespace {
+
+/// Keys of ElastoDyn tower files, all versions whirl reads (FAST 8 ElastoDyn v1.00 to OpenFAST v5), indices left out.
+const OpenFastLayout& layout() {
+  static const OpenFastLayout l{
+      "ElastoDyn tower",
+      {
+      "NTwInpSt", "CalcTMode", "TwrFADmp", "TwrSSDmp", "FAStTunr", "SSStTunr", "AdjTwMa", "AdjFASt", "AdjSSSt",
+      "TwFAM1Sh", "TwFAM2Sh", "TwSSM1Sh", "TwSSM2Sh"},
+      {}};
+  return l;
+}
+
+}  // namespace
 
 ElastoDynTower read_elastodyn_tower(const std::filesystem::path& file, OverrideSet* overrides) {
   ElastoDynTower t;
   t.source = OpenFastFile::read(file);
+  t.source.check_layout(layout());
   if (overrides) overrides->apply_to(t.source);
   const OpenFastFile& f = t.source;
 

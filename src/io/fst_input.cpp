@@ -22,11 +22,19 @@ std::optional<std::filesystem::path> path_of_first(const OpenFastFile& f, std::i
   return std::nullopt;
 }
 
+/// Duplicates only (the .fst has many keys across versions, none of which whirl reads by position):
+/// OpenFAST v5 repeats the per-rotor lines for a second rotor.
+const OpenFastLayout& layout() {
+  static const OpenFastLayout l{".fst", {}, {"EDFile", "BDBldFile", "ServoFile", "SrvDFile"}};
+  return l;
+}
+
 }  // namespace
 
 FstInput read_fst(const std::filesystem::path& file, OverrideSet* overrides) {
   FstInput in;
   in.source = OpenFastFile::read(file);
+  in.source.check_layout(layout());
   if (overrides) overrides->apply_to(in.source);
   const OpenFastFile& f = in.source;
 

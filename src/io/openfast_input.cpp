@@ -207,7 +207,8 @@ OpenFastFile OpenFastFile::parse(std::string_view text, const std::filesystem::p
     if (toks.empty()) continue;
     // A key without a value, e.g. "OutList  - The next line(s) contains a list of output parameters".
     if (is_identifier(toks[0].text) && (toks.size() == 1 || toks[1].text.front() == '-')) {
-      if (to_lower(toks[0].text) == "outlist") in_outlist = true;
+      // "OutList", and the nodal "OutListED"/"OutList_Nodes" blocks of OpenFAST v3+, run to "END".
+      if (starts_with_ci(toks[0].text, "outlist")) in_outlist = true;
       continue;
     }
     // value tokens (the first always), then the key.
@@ -331,6 +332,28 @@ std::optional<int> OpenFastFile::find_int(std::string_view key) const {
 
 std::optional<bool> OpenFastFile::find_bool(std::string_view key) const {
   return has(key) ? std::optional<bool>(get_bool(key)) : std::nullopt;
+}
+
+void OpenFastFile::check_layout(const OpenFastLayout& layout) const {
+  auto base = [](const std::string& key) { return to_lower(std::string_view(key).substr(0, key.find('('))); };
+  auto listed = [&](const std::vector<std::string_view>& keys, const std::string& key) {
+    const std::string b = base(key);
+    return std::any_of(keys.begin(), keys.end(), [&](std::string_view k) { return to_lower(k) == b; });
+  };
+  std::unordered_map<std::string, int> first_line;
+  for (const OpenFastEntry& e : entries_) {
+    if (!layout.keys.empty() && !listed(layout.keys, e.key))
+      throw InputError(whirl::where(path_.string(), e.line, e.key,
+                                    std::string("not a key of an OpenFAST ") + layout.name +
+                                        " file: OpenFAST reads by position, so an extra line shifts every later "
+                                        "value; remove it (or check the file type)"));
+    const auto [it, inserted] = first_line.emplace(to_lower(e.key), e.line);
+    if (!inserted && !listed(layout.repeatable, e.key))
+      throw InputError(whirl::where(path_.string(), e.line, e.key,
+                                    "given twice (first on line " + std::to_string(it->second) +
+                                        "): OpenFAST reads by position and would take this line for another "
+                                        "value; remove one"));
+  }
 }
 
 const OpenFastTable* OpenFastFile::find_table(std::string_view column) const {

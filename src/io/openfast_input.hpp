@@ -14,7 +14,10 @@
 ///
 /// Each key keeps its raw value and line number so that every error reads "file:line: key: reason".
 /// Keys are matched case-insensitively (as Fortran does). When a key appears twice (e.g. `EDFile` of a
-/// second rotor in OpenFAST v5), the first occurrence is the one returned and overridden.
+/// second rotor in OpenFAST v5), the first occurrence is the one returned and overridden; the typed
+/// readers call `check_layout` first, which refuses keys given twice (except those a layout repeats)
+/// and keys the layout does not have: OpenFAST reads these files by position, so an extra or repeated
+/// line shifts every later value, and whirl, reading by key, would silently disagree with OpenFAST.
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -45,6 +48,13 @@ struct OpenFastTable {
 
   /// Index of a column by name, case-insensitive; -1 when absent.
   int column_index(std::string_view name) const;
+};
+
+/// The keys of one OpenFAST file type, over the versions whirl reads (for OpenFastFile::check_layout).
+struct OpenFastLayout {
+  const char* name = "";                     ///< file type for messages, e.g. "ElastoDyn"
+  std::vector<std::string_view> keys;        ///< every key, without "(n)" indices; empty: any key accepted
+  std::vector<std::string_view> repeatable;  ///< keys that may appear more than once (with the same index)
 };
 
 /// A parsed OpenFAST input file. Read-only apart from `set_value` (overrides).
@@ -90,6 +100,10 @@ class OpenFastFile {
   std::optional<double> find_double(std::string_view key) const;
   std::optional<int> find_int(std::string_view key) const;
   std::optional<bool> find_bool(std::string_view key) const;
+
+  /// Refuses a key given twice ("file:line: key: given twice (first on line N) …") unless the layout
+  /// lists it as repeatable, and a key the layout does not have ("file:line: key: not a key of a … file").
+  void check_layout(const OpenFastLayout& layout) const;
 
   /// The first table that has a column `column` (case-insensitive), or nullptr.
   const OpenFastTable* find_table(std::string_view column) const;

@@ -3,12 +3,15 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <regex>
 #include <string_view>
 
 #include "src/model/error.hpp"
+#include "src/model/limits.hpp"
 #include "src/model/text.hpp"
 
 namespace whirl {
@@ -41,7 +44,8 @@ class LinParser {
  public:
   explicit LinParser(const std::string& path) : path_(path) {
     std::ifstream in(path);
-    if (!in) throw InputError(where(path, 0, "", "cannot open file"));
+    std::error_code ec;
+    if (!in || std::filesystem::is_directory(path, ec)) throw InputError(where(path, 0, "", "cannot open file"));
     for (std::string l; std::getline(in, l);) {
       if (!l.empty() && l.back() == '\r') l.pop_back();
       lines_.push_back(std::move(l));
@@ -65,7 +69,7 @@ class LinParser {
   double number(std::string_view t, std::size_t i, const std::string& key) {
     double v = 0.0;
     if (!t.empty() && t.find_first_not_of('*') == std::string_view::npos) {
-      ++non_finite_;
+      nonFinite(i, key);
       return std::numeric_limits<double>::quiet_NaN();
     }
     if (!fullParse(t, v)) {
@@ -74,19 +78,42 @@ class LinParser {
       double mant = 0.0, expo = 0.0;
       if (e == 0 || e == std::string_view::npos || !fullParse(t.substr(0, e), mant) ||
           !fullParse(t.substr(e), expo))
-        fail(i, key, "'" + std::string(t) + "' is not a number");
+        fail(i, key, "'" + excerpt(t) + "' is not a number");
       v = mant * std::pow(10.0, expo);
     }
-    if (!std::isfinite(v)) ++non_finite_;
+    if (!std::isfinite(v)) nonFinite(i, key);
     return v;
+  }
+
+  /// Counts a non-finite value and keeps "file:line: key" of the first one for messages.
+  void nonFinite(std::size_t i, const std::string& key) {
+    ++non_finite_;
+    first_non_finite_.emplace(key, static_cast<int>(i + 1));  // keeps the first line of each key
   }
 
   int integer(std::string_view t, std::size_t i, const std::string& key) const {
     int v = 0;
     const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
+    if (ec == std::errc::result_out_of_range && end == t.data() + t.size())
+      fail(i, key, "'" + excerpt(t) + "' is out of the integer range");
     if (t.empty() || ec != std::errc() || end != t.data() + t.size())
-      fail(i, key, "'" + std::string(t) + "' is not an integer");
+      fail(i, key, "'" + excerpt(t) + "' is not an integer");
     return v;
+  }
+
+  /// A count or matrix dimension: an integer from 0 to limits::kMaxLinDimension.
+  int dimension(std::string_view t, std::size_t i, const std::string& key) const {
+    const int v = integer(t, i, key);
+    if (v < 0) fail(i, key, "negative count");
+    if (v > limits::kMaxLinDimension)
+      fail(i, key, std::to_string(v) + " is above the limit of " + std::to_string(limits::kMaxLinDimension) +
+                       " (src/model/limits.hpp)");
+    return v;
+  }
+
+  /// At most 40 characters of a token, for messages.
+  static std::string excerpt(std::string_view t) {
+    return t.size() <= 40 ? std::string(t) : std::string(t.substr(0, 40)) + "...";
   }
 
   void header(OpenFastLin& f, std::size_t& i);
@@ -96,6 +123,7 @@ class LinParser {
   std::string path_;
   std::vector<std::string> lines_;
   int non_finite_ = 0;
+  std::map<std::string, int> first_non_finite_;  ///< key → line of its first non-finite value
 };
 
 /// Header up to the first table or matrix. Keys are recognized at the start of a trimmed line only,
@@ -122,8 +150,8 @@ void LinParser::header(OpenFastLin& f, std::size_t& i) {
     for (int k = 0; k < 5; ++k) {
       if (!startsWith(l, count_keys[k])) continue;
       std::size_t pos = std::string_view(count_keys[k]).size();
-      *counts[k] = integer(nextToken(l, pos), i, count_keys[k]);
-      if (*counts[k] < 0) fail(i, count_keys[k], "negative count");
+      const std::string_view key(count_keys[k]);
+      *counts[k] = dimension(nextToken(l, pos), i, std::string(key.substr(0, key.size() - 1)));
       have_counts[k] = true;
     }
     if (startsWith(l, "Jacobians included in this file?")) f.has_jacobians = l.find("Yes") != std::string_view::npos;
@@ -145,7 +173,7 @@ std::vector<LinVariable> LinParser::table(std::size_t& i, int n, const std::stri
     fail(i + 1, key, "expected the column titles (Row/Column, Operating Point, ...)");
   const bool has_order = columns.find("Derivative Order") != std::string_view::npos;
   i += 2;  // dashed line
-  std::vector<LinVariable> rows(static_cast<std::size_t>(n));
+  std::vector<LinVariable> rows;  // grows with the rows read, not with the header's claim
   for (int r = 0; r < n; ++r) {
     ++i;
     if (i >= lines_.size() || trim(lines_[i]).empty())
@@ -153,7 +181,7 @@ std::vector<LinVariable> LinParser::table(std::size_t& i, int n, const std::stri
     const std::string_view l = lines_[i];
     std::size_t pos = 0;
     if (integer(nextToken(l, pos), i, key) != r + 1) fail(i, key, "row " + std::to_string(r + 1) + " expected");
-    LinVariable& v = rows[static_cast<std::size_t>(r)];
+    LinVariable& v = rows.emplace_back();
     v.line = static_cast<int>(i + 1);
     for (std::string_view t = nextToken(l, pos);; t = nextToken(l, pos)) {  // "1.0E+00, 2.0E+00, 3.0E+00"
       if (t.empty()) fail(i, key, "operating point missing");
@@ -178,7 +206,7 @@ std::vector<LinVariable> LinParser::table(std::size_t& i, int n, const std::stri
 
 /// Matrix rows after its title line `i` ("A: 20 x 20"). On return `i` is the last row.
 Eigen::MatrixXd LinParser::matrix(std::size_t& i, int rows, int cols, const std::string& key) {
-  Eigen::MatrixXd m(rows, cols);
+  std::vector<double> values;  // grows with the rows read, not with the title's claim
   for (int r = 0; r < rows; ++r) {
     ++i;
     if (i >= lines_.size() || trim(lines_[i]).empty())
@@ -188,12 +216,13 @@ Eigen::MatrixXd LinParser::matrix(std::size_t& i, int rows, int cols, const std:
     int c = 0;
     for (std::string_view t = nextToken(l, pos); !t.empty(); t = nextToken(l, pos), ++c) {
       if (c == cols) fail(i, key, "more than " + std::to_string(cols) + " values in row " + std::to_string(r + 1));
-      m(r, c) = number(t, i, key);
+      values.push_back(number(t, i, key));
     }
     if (c != cols)
       fail(i, key, std::to_string(c) + " values in row " + std::to_string(r + 1) + ", expected " + std::to_string(cols));
   }
-  return m;
+  return Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(values.data(), rows,
+                                                                                                  cols);
 }
 
 OpenFastLin LinParser::parse() {
@@ -215,7 +244,7 @@ OpenFastLin LinParser::parse() {
     else if (std::smatch m; l.find(" x ") != std::string_view::npos &&
                             std::regex_match(lines_[i], m, mat_title)) {
       const std::string name = m[1];
-      const int rows = std::stoi(m[2]), cols = std::stoi(m[3]);
+      const int rows = dimension(m[2].str(), i, m[1].str() + " rows"), cols = dimension(m[3].str(), i, m[1].str() + " columns");
       const std::size_t title = i;
       Eigen::MatrixXd mat = matrix(i, rows, cols, name);
       auto expect = [&](int r, int c) {
@@ -244,6 +273,7 @@ OpenFastLin LinParser::parse() {
   if (f.n_y > 0 && f.n_x > 0) require(f.C.size() > 0, "matrix C");
   if (f.n_y > 0 && f.n_u > 0) require(f.D.size() > 0, "matrix D");
   f.non_finite_values = non_finite_;
+  f.first_non_finite = first_non_finite_;
   return f;
 }
 

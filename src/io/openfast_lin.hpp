@@ -19,6 +19,7 @@
 /// operating-point values per row: the first goes to `op`, all three to `op_values`.
 /// Units are as in the file: SI, angles in rad.
 #include <Eigen/Dense>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -56,11 +57,13 @@ struct OpenFastLin {
   Eigen::MatrixXd C;                ///< ∂y/∂x (n_y × n_x), empty if absent
   Eigen::MatrixXd D;                ///< ∂y/∂u (n_y × n_u), empty if absent
   int non_finite_values = 0;        ///< values printed as ****, NaN or Infinity anywhere in the file
+  std::map<std::string, int> first_non_finite;  ///< matrix ("A") or table key → 1-based line of its first non-finite value
 };
 
 /// Reads one `.lin` file.
 /// \throws InputError naming file, line and reason: missing file, missing header key, table or
-///         matrix shorter than declared (truncated file), non-numeric value, wrong matrix size.
+///         matrix shorter than declared (truncated file), non-numeric value, wrong matrix size, a count
+///         or matrix size above limits::kMaxLinDimension. Memory follows the rows actually read.
 OpenFastLin readOpenFastLin(const std::string& path);
 
 }  // namespace whirl

@@ -6,6 +6,7 @@
 
 #include "src/io/csv_table.hpp"
 #include "src/model/error.hpp"
+#include "src/model/limits.hpp"
 
 namespace whirl {
 namespace {
@@ -42,6 +43,9 @@ std::vector<SweepPoint> readSchedule(const std::string& path) {
     pts.push_back(sweepPoint(speed, wind, pitch_deg));
   }
   if (pts.empty()) throw InputError(where(path, 0, "", "the schedule has no rows"));
+  if (pts.size() > static_cast<size_t>(limits::kMaxSweepPoints))
+    throw InputError(where(path, t.row_lines[limits::kMaxSweepPoints], "",
+                           "more than " + std::to_string(limits::kMaxSweepPoints) + " rows (src/model/limits.hpp)"));
   return pts;
 }
 

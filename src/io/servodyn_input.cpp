@@ -19,6 +19,7 @@ InputError refusal(const OpenFastFile& f, const char* key, const std::string& wh
 ServoDynInput read_servodyn(const std::filesystem::path& file, OverrideSet* overrides) {
   ServoDynInput s;
   s.source = OpenFastFile::read(file);
+  s.source.check_layout(OpenFastLayout{"ServoDyn", {}, {}});  // duplicates only: many keys across versions
   if (overrides) overrides->apply_to(s.source);
   const OpenFastFile& f = s.source;
   s.YCMode = f.get_int("YCMode");

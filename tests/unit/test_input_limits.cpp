@@ -1,0 +1,134 @@
+// Counts read from input files are bounded (src/model/limits.hpp) with an error naming file, line and
+// key, and allocation follows the data actually read (issue 14, item 4).
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "src/io/case_file.hpp"
+#include "src/io/elastodyn_blade.hpp"
+#include "src/io/elastodyn_tower.hpp"
+#include "src/io/openfast_lin.hpp"
+#include "src/io/openfast_turbine.hpp"
+#include "tests/unit/openfast_test_util.hpp"
+
+namespace {
+
+using testing::HasSubstr;
+using whirl::test::input_error_message;
+using whirl::test::nrel5mw_dir;
+using whirl::test::read_text;
+using whirl::test::replace_once;
+using whirl::test::ScratchDir;
+
+const char* kEd = "NRELOffshrBsline5MW_Onshore_ElastoDyn.dat";
+const char* kTower = "NRELOffshrBsline5MW_Onshore_ElastoDyn_Tower.dat";
+const char* kBlade = "NRELOffshrBsline5MW_Blade.dat";
+
+/// The NREL 5MW case in a scratch folder with the ElastoDyn main file replaced by `ed`; returns the .fst.
+std::filesystem::path nrelWith(const ScratchDir& dir, const std::string& ed) {
+  dir.copy(nrel5mw_dir() / kTower);
+  dir.copy(nrel5mw_dir() / kBlade);
+  dir.write(kEd, ed);
+  return dir.copy(nrel5mw_dir() / "Main_Onshore.fst");
+}
+
+std::string nrelEd() { return read_text(nrel5mw_dir() / kEd); }
+
+std::string turbineError(const std::string& ed) {
+  ScratchDir dir;
+  const auto fst = nrelWith(dir, ed);
+  return input_error_message([&] { whirl::io::read_openfast_turbine(fst); });
+}
+
+// --- bounds -----------------------------------------------------------------------------------
+
+TEST(InputLimits, ElastoDynNodeCountsAreBounded) {
+  const std::string msg =
+      turbineError(replace_once(nrelEd(), "         20   TwrNodes", "  100000000   TwrNodes"));
+  EXPECT_THAT(msg, HasSubstr(std::string(kEd) + ":107: TwrNodes: at most 1000 nodes (is 100000000"));
+}
+
+TEST(InputLimits, FemBeamElementsAreBounded) {
+  ScratchDir dir;
+  const auto path = dir.write("fe.yaml", R"(name: fe
+gravity: 0
+bodies:
+  - name: pile
+    type: fem_beam
+    length: 10
+    elements: 1000000
+    uniform: {m: 100, EIy: 1e7, EIz: 1e7}
+    dofs: [uy, uz, ry, rz]
+    points: [{name: root, x: 0}, {name: top, x: 10}]
+    clamped: [root]
+    reduction: {type: craig_bampton, interface: [top], modes: 2}
+)");
+  EXPECT_THAT(input_error_message([&] { whirl::readCase(path.string()); }),
+              HasSubstr("fe.yaml:7: bodies.pile.elements: must be between 1 and 2000"));
+}
+
+std::string lin(const std::string& name) {
+  return read_text(whirl::test::source_dir() / "tests/data/openfast-lin/rotating-9rpm" / name);
+}
+
+TEST(InputLimits, LinHeaderCountsAreBoundedAndNamed) {
+  ScratchDir dir;
+  const auto p = dir.write("x.lin", replace_once(lin("Main.1.lin"), "Number of inputs:", "Number of inputs: 2000000000 "));
+  EXPECT_THAT(input_error_message([&] { whirl::readOpenFastLin(p.string()); }),
+              HasSubstr("Number of inputs: 2000000000 is above the limit of 100000"));
+}
+
+TEST(InputLimits, LinAllocationFollowsTheRowsRead) {
+  // A header claiming 90000 states (under the bound) on a file with 20: the reader fails at the
+  // first missing row instead of allocating for 90000 (and a 90000 × 90000 A, 65 GB).
+  ScratchDir dir;
+  std::string text = lin("Main.1.lin");
+  const auto at = text.find("Number of continuous states:");
+  ASSERT_NE(at, std::string::npos);
+  const auto end = text.find('\n', at);
+  text.replace(at, end - at, "Number of continuous states: 90000");
+  const auto p = dir.write("x.lin", text);
+  EXPECT_THAT(input_error_message([&] { whirl::readOpenFastLin(p.string()); }),
+              HasSubstr("continuous states: truncated: 20 rows where the header declares 90000"));
+}
+
+TEST(InputLimits, LinMatrixSizeOutOfIntRangeIsNamed) {
+  ScratchDir dir;
+  const auto p = dir.write("x.lin", replace_once(lin("Main.1.lin"), "\nA: 20 x", "\nA: 123456789012 x"));
+  const std::string msg = input_error_message([&] { whirl::readOpenFastLin(p.string()); });
+  EXPECT_THAT(msg, HasSubstr("x.lin:"));
+  EXPECT_THAT(msg, HasSubstr("A rows: '123456789012' is out of the integer range"));
+}
+
+}  // namespace
+
+namespace {
+
+std::string caseError(const std::string& yaml) {
+  ScratchDir dir;
+  const auto path = dir.write("c.yaml", yaml);
+  return input_error_message([&] { whirl::readCase(path.string()); });
+}
+
+TEST(InputLimits, ShapeModeNumbersAndReducedModesAreBounded) {
+  const std::string topmass = read_text(whirl::test::source_dir() / "cases/tower_topmass/tower_topmass_eq32.yaml");
+  EXPECT_THAT(caseError(replace_once(topmass, "type: clamped_topmass, mode: 4,", "type: clamped_topmass, mode: 1001,")),
+              HasSubstr("c.yaml:17: bodies.tower.shapes.tower FA 4.mode: the mode number must be from 1 to 1000"));
+  EXPECT_THAT(caseError(R"(name: fe
+gravity: 0
+bodies:
+  - name: pile
+    type: fem_beam
+    length: 10
+    elements: 4
+    uniform: {m: 100, EIy: 1e7, EIz: 1e7}
+    dofs: [uy, uz, ry, rz]
+    points: [{name: root, x: 0}, {name: top, x: 10}]
+    clamped: [root]
+    reduction: {type: craig_bampton, interface: [top], modes: 1001}
+)"),
+              HasSubstr("c.yaml:12: bodies.pile.reduction.modes: must be between 0 and 1000"));
+}
+
+}  // namespace
