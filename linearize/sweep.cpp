@@ -32,7 +32,8 @@ std::vector<double> parseRange(const std::string& spec, const std::string& optio
   if (!(s > 0) || !(b >= a) || !std::isfinite(a) || !std::isfinite(b))
     throw InputError(option + ": need STEP > 0 and STOP >= START in '" + spec + "'");
   if (a < 0)
-    throw InputError(option + ": negative value in '" + spec + "' (rotors turn in the positive sense, as in a schedule)");
+    throw InputError(option + (option == "--rpm" ? ": negative rotor speed in '" : ": negative value in '") + spec +
+                     "' (rotors turn in the positive sense, as in a schedule)");
   // Count in double first: (b − a)/s can exceed the int range (0:1e-10:1).
   const double count = std::floor((b - a) / s + 1e-9) + 1;
   if (!(count <= limits::kMaxSweepPoints))

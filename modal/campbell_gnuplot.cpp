@@ -230,7 +230,11 @@ std::string campbellGnuplotScript(const CampbellDiagram& d, const CampbellPlotOp
        "  set tmargin at screen 0.37; set bmargin at screen 0.08\n"
        "  set format x '% g'; set xlabel xtitle\n"
        "  set ylabel 'Damping ratio [%]'\n"
-       "  set yrange [dmin:dmax]\n";
+       "  set yrange [dmin:dmax]\n"
+       "  # Negative damping is an instability: that band is shaded and labelled.\n"
+       "  if (dmin < 0) { set object 1 rect from graph 0, first dmin to graph 1, first 0 fc rgb '#ffd8d8' "
+       "fs solid noborder behind; set label 1 'unstable (negative damping)' at graph 0.01, first dmin / 2 "
+       "tc rgb '#a00000' front }\n";
   g += "  plot \\\n" + plot(damp);
   g += "  unset multiplot\n"
        "  set output\n"

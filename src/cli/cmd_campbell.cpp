@@ -56,6 +56,30 @@ void run(const CampbellOptions& opt) {
   TrackingOptions track;
   track.overrides_file = opt.tracking;
   d.lines = trackModes(d.points, track);
+  // Negative damping is an instability: say where, one line per tracked mode.
+  for (const CampbellLine& line : d.lines) {
+    int count = 0;
+    double worst = 0;
+    std::size_t at = 0;
+    for (std::size_t p = 0; p < d.points.size(); ++p) {
+      if (line.mode[p] < 0) continue;
+      const Mode& md = d.points[p].modes[static_cast<std::size_t>(line.mode[p])];
+      if (md.rigid_body || !(md.damping_ratio < 0)) continue;
+      ++count;
+      if (md.damping_ratio < worst) {
+        worst = md.damping_ratio;
+        at = p;
+      }
+    }
+    if (count > 0) {
+      const CampbellPoint& p = d.points[at];
+      char where[64];
+      if (p.wind_speed) std::snprintf(where, sizeof where, "%g m/s", *p.wind_speed);
+      else std::snprintf(where, sizeof where, "%g rpm", p.rpm);
+      std::fprintf(stderr, "whirl: warning: %s is unstable (negative damping) at %d of %zu points; lowest %.3g %% at %s\n",
+                   line.name.c_str(), count, d.points.size(), 100 * worst, where);
+    }
+  }
 
   CampbellPlotOptions plot;
   plot.versus_wind_speed = opt.versus == "wind" || (opt.versus == "auto" && opt.rpm_range.empty());

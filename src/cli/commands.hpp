@@ -15,4 +15,5 @@ void addExportCommand(CLI::App& app);
 void addStudyCommand(CLI::App& app);
 void addShapesCommand(CLI::App& app);
 void addSteadyCommand(CLI::App& app);
+void addBodeCommand(CLI::App& app);
 }  // namespace whirl::cli

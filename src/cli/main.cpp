@@ -52,6 +52,7 @@ int main(int argc, char** argv) {
   whirl::cli::addStudyCommand(app);
   whirl::cli::addShapesCommand(app);
   whirl::cli::addSteadyCommand(app);
+  whirl::cli::addBodeCommand(app);
   std::vector<char*> cargv;
   for (auto& a : args) cargv.push_back(a.data());
   cargv.push_back(nullptr);

@@ -1,0 +1,146 @@
+// `whirl bode`: the frequency response of the linear model at one operating point — for a controller
+// designer, how the chosen outputs (generator speed, tower-top acceleration, …) answer the inputs
+// (wind speed, collective pitch, generator torque, …).
+#include <CLI/CLI.hpp>
+#include <cmath>
+#include <complex>
+#include <cstdio>
+#include <filesystem>
+#include <numbers>
+#include <sstream>
+
+#include "linearize/export_point.hpp"
+#include "linearize/frequency_response.hpp"
+#include "linearize/trim.hpp"
+#include "src/cli/commands.hpp"
+#include "src/cli/common.hpp"
+#include "src/io/atomic_file.hpp"
+#include "src/io/csv.hpp"
+#include "src/io/gnuplot.hpp"
+#include "src/io/staged_files.hpp"
+#include "src/model/error.hpp"
+
+namespace whirl::cli {
+namespace {
+
+struct BodeOptions {
+  ModelOptions model;
+  std::optional<double> wind;
+  std::string inputs, outputs, out;
+  double f0 = 0.01, f1 = 10;
+  int points = 400, azimuths = 36;
+  bool no_plot = false;
+};
+
+std::vector<std::string> split(const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream in(s);
+  for (std::string item; std::getline(in, item, ',');) {
+    const auto b = item.find_first_not_of(' '), e = item.find_last_not_of(' ');
+    if (b != std::string::npos) out.push_back(item.substr(b, e - b + 1));
+  }
+  return out;
+}
+
+std::string scriptOf(const std::string& title, int pairs) {
+  std::string g =
+      "# Bode diagram written by whirl: gnuplot bode.gp (from this folder)\n"
+      "if (!exists('png_out')) png_out = 'bode.png'\n"
+      "if (!exists('svg_out')) svg_out = 'bode.svg'\n"
+      "set datafile separator ','\n"
+      "set key noenhanced top right\n"
+      "set logscale x\nset grid\n"
+      "do for [out = 1:2] {\n"
+      "  if (out == 1) { set terminal pngcairo size 1200,800 noenhanced; set output png_out }\n"
+      "  else { set terminal svg size 1200,800 noenhanced; set output svg_out }\n"
+      "  set multiplot layout 2,1 title " + gnuplotQuoted(title) + "\n"
+      "  set ylabel 'Magnitude [dB of SI units]'\n  set format x ''\n  unset xlabel\n"
+      "  plot for [k = 0:" + std::to_string(pairs - 1) + "] 'bode.csv' using 1:(column(2 + 2*k)) with lines lw 2 title columnhead(2 + 2*k)\n"
+      "  set ylabel 'Phase [deg]'\n  set format x '%g'\n  set xlabel 'Frequency [Hz]'\n"
+      "  plot for [k = 0:" + std::to_string(pairs - 1) + "] 'bode.csv' using 1:(column(3 + 2*k)) with lines lw 2 notitle\n"
+      "  unset multiplot\n"
+      "}\n";
+  return g;
+}
+
+void run(const BodeOptions& opt) {
+  const Model m = loadModel(opt.model);
+  const std::string dir = opt.out.empty() ? defaultOutputFolder(opt.model.case_path) : opt.out;
+  ensureWritableFolder(dir);
+  ExportOptions eo;
+  eo.azimuths = opt.azimuths;
+  eo.inputs = split(opt.inputs);
+  eo.outputs = split(opt.outputs);
+  eo.drop_azimuth = true;  // the rigid azimuth is a pure integrator of the rotor speed
+  if (eo.inputs.empty() || eo.outputs.empty()) throw InputError("bode: give --inputs and --outputs");
+  OperatingCondition c = operatingCondition(m, opt.model);
+  std::string where;
+  if (opt.wind) {
+    if (opt.model.rpm) throw InputError("bode: give --wind (trimmed) or --rpm, not both");
+    c = trimAtWindSpeed(m, *opt.wind).condition;
+    char text[96];
+    std::snprintf(text, sizeof text, "%g m/s, %.3f rpm, pitch %.2f deg", *opt.wind, c.rotor_speed * 30 / std::numbers::pi,
+                  c.collective_pitch.value_or(0) * 180 / std::numbers::pi);
+    where = text;
+  }
+  const ExportPoint p = exportOperatingPoint(m, initialPoint(m, c), eo);
+  checkSolvedPoints(opt.model, m, {p.equilibrium});
+  const std::vector<double> f = logFrequencies(opt.f0, opt.f1, opt.points);
+  const std::vector<Eigen::MatrixXcd> G = frequencyResponse(p.model, f);
+  std::string csv = "freq_hz";
+  for (const auto& y : p.model.y)
+    for (const auto& u : p.model.u) csv += "," + y.name + " / " + u.name + " dB," + y.name + " / " + u.name + " deg";
+  csv += "\n";
+  for (std::size_t k = 0; k < f.size(); ++k) {
+    csv += formatNumber(f[k]);
+    for (Eigen::Index i = 0; i < G[k].rows(); ++i)
+      for (Eigen::Index j = 0; j < G[k].cols(); ++j)
+        csv += "," + formatNumber(20 * std::log10(std::abs(G[k](i, j)))) + "," +
+               formatNumber(std::arg(G[k](i, j)) * 180 / std::numbers::pi);
+    csv += "\n";
+  }
+  const int pairs = static_cast<int>(p.model.y.size() * p.model.u.size());
+  StagedFiles files;
+  const std::filesystem::path folder(dir);
+  files.write((folder / "bode.csv").string(), csv);
+  files.write((folder / "bode.gp").string(),
+              scriptOf("Frequency response" + (where.empty() ? std::string() : ": " + where), pairs));
+  files.commit();
+  std::vector<std::string> written = files.paths();
+  if (!opt.no_plot)
+    for (auto& image : renderGnuplot(dir, "gnuplot", "bode")) written.push_back(std::move(image));
+  // The static gain, signed: G(0) = D − C A⁻¹ B (at 0 Hz, whether or not the plot starts there).
+  const Eigen::MatrixXcd G0 = frequencyResponse(p.model, {1e-9}).front();
+  std::printf("static gain (SI units):\n");
+  for (Eigen::Index i = 0; i < G0.rows(); ++i)
+    for (Eigen::Index j = 0; j < G0.cols(); ++j)
+      std::printf("  %s / %s: %.6g\n", p.model.y[static_cast<std::size_t>(i)].name.c_str(),
+                  p.model.u[static_cast<std::size_t>(j)].name.c_str(), G0(i, j).real());
+  std::printf("wrote");
+  for (const auto& w : written) std::printf(" %s", w.c_str());
+  std::printf("\n");
+}
+
+}  // namespace
+
+void addBodeCommand(CLI::App& app) {
+  auto opt = std::make_shared<BodeOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "bode",
+      "Frequency response (Bode diagram) of the linear model at one operating point, azimuth-averaged in multiblade "
+      "coordinates without the azimuth integrator: writes bode.csv, bode.gp and PNG/SVG");
+  addModelOptions(*cmd, opt->model, true);
+  cmd->add_option("--wind", opt->wind, "trimmed operating point at this wind speed [m/s] (aerodynamic models)");
+  cmd->add_option("--inputs", opt->inputs, "inputs, comma-separated (e.g. 'wind speed,collective pitch')")->required();
+  cmd->add_option("--outputs", opt->outputs, "outputs, comma-separated (e.g. GenSpeed)")->required();
+  cmd->add_option("--from", opt->f0, "lowest frequency [Hz]")->check(CLI::PositiveNumber);
+  cmd->add_option("--to", opt->f1, "highest frequency [Hz]")->check(CLI::PositiveNumber);
+  cmd->add_option("--points", opt->points, "number of frequencies")->check(CLI::Range(2, 100000));
+  cmd->add_option("--azimuths", opt->azimuths, "azimuths per revolution for the multiblade average")
+      ->check(CLI::Range(1, 3600));
+  cmd->add_option("--out", opt->out, "output folder (default reports/<case name>)");
+  cmd->add_flag("--no-plot", opt->no_plot, "write the table and the Gnuplot script, do not run Gnuplot");
+  cmd->callback([opt]() { run(*opt); });
+}
+
+}  // namespace whirl::cli
