@@ -13,6 +13,8 @@
 /// (Cx q c, −Cy q c, 0) and moment (0, 0, Cm q c²) in the annulus frame, Cx = Cl cos φ + Cd sin φ,
 /// Cy = Cl sin φ − Cd cos φ, q = ½ ρ W² (AeroDyn `SetOutputsFromBEMT`), times the element's span
 /// weight, applied at the point.
+#include <cstdint>
+
 #include "src/dynamics/aero_inflow.hpp"
 #include "src/dynamics/workspace.hpp"
 
@@ -23,9 +25,10 @@ namespace whirl {
 /// \param[in] u       inputs (dim ninput), for the wind speed
 /// \param[in] frozen  induced velocities to hold fixed (frozen wake); null: solve BEM per element
 /// \param[out] record if not null (double evaluations): each element's state
+/// \param[in]  skip   bit b set: leave out blade b (an AD pass in which nothing it depends on is seeded)
 /// Throws ComputeError naming the blade and element when BEM has no solution.
 template <class TK, class T>
 void addAeroLoads(const Model& model, const Workspace<TK>& ws, const VecXT<TK>& q, const VecXT<T>& u,
-                  const AeroInflow* frozen, AeroRecord* record, VecXT<T>& e);
+                  const AeroInflow* frozen, AeroRecord* record, VecXT<T>& e, std::uint64_t skip = 0);
 
 }  // namespace whirl

@@ -31,7 +31,7 @@ Vec3T<T> steadyWind(const SteadyWind& w, const T& speed, const TK& z) {
 
 template <class TK, class T>
 void addAeroLoads(const Model& m, const Workspace<TK>& ws, const VecXT<TK>& q, const VecXT<T>& u,
-                  const AeroInflow* frozen, AeroRecord* record, VecXT<T>& e) {
+                  const AeroInflow* frozen, AeroRecord* record, VecXT<T>& e, std::uint64_t skip) {
   const AeroModel& am = m.aero;
   if (!am.active()) return;
   using std::atan2;
@@ -45,6 +45,10 @@ void addAeroLoads(const Model& m, const Workspace<TK>& ws, const VecXT<TK>& q, c
   int index = 0;  // element over all blades
   for (std::size_t bi = 0; bi < am.blades.size(); ++bi) {
     const AeroBlade& blade = am.blades[bi];
+    if (bi < 64 && (skip >> bi & 1u)) {
+      index += static_cast<int>(blade.stations.size());
+      continue;
+    }
     const Body& body = m.bodies[blade.body];
     const FrameState<TK>& f = ws.frames[blade.body];
     const BasisState<TK>& bs = ws.basis[blade.body];

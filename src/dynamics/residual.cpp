@@ -20,7 +20,8 @@ template void addInputLoads<ADChunk, ADChunk>(const Model&, const Workspace<ADCh
 template void addInputLoads<double, ADChunk>(const Model&, const Workspace<double>&, const VecX&,
                                              const VecXT<ADChunk>&, VecXT<ADChunk>&);
 template void addAeroLoads<double, ADChunk>(const Model&, const Workspace<double>&, const VecX&,
-                                            const VecXT<ADChunk>&, const AeroInflow*, AeroRecord*, VecXT<ADChunk>&);
+                                            const VecXT<ADChunk>&, const AeroInflow*, AeroRecord*, VecXT<ADChunk>&,
+                                            std::uint64_t);
 template Mat3T<double> axisRotation<double>(const Vec3&, const double&);
 
 }  // namespace whirl

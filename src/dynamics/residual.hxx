@@ -171,7 +171,15 @@ void residual(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T
               ((m.aero.active() || m.generator.active()) && detail::anySeeded(qd));
   if (loads) {
     addInputLoads(m, ws, qd, u, e);
-    addAeroLoads(m, ws, q, u, frozen, record, e);
+    // An AD pass that seeds nothing a blade's elements depend on (its frame, its own coordinates, the
+    // inputs) leaves that blade out, as the inertia forces of an unseeded body are left out above.
+    std::uint64_t skip = 0;
+    if constexpr (!std::is_same_v<T, double>)
+      if (ws.derivatives_only && !detail::anySeeded(u))
+        for (std::size_t b = 0; b < m.aero.blades.size() && b < 64; ++b)
+          if (!detail::bodyVaries(m, m.aero.blades[b].body, q, qd, qdd)) skip |= std::uint64_t{1} << b;
+    if (skip) ws.complete = false;
+    addAeroLoads(m, ws, q, u, frozen, record, e, skip);
   } else {
     ws.complete = false;
   }
