@@ -2,17 +2,11 @@
 
 #include "src/io/aero_support.hpp"
 #include "src/io/elastodyn_common.hpp"
+#include "src/io/refusals.hpp"
 #include "src/model/error.hpp"
 
 namespace whirl::io {
 namespace {
-
-void throw_if_any(const std::vector<std::string>& issues) {
-  if (issues.empty()) return;
-  std::string msg;
-  for (const std::string& s : issues) msg += (msg.empty() ? "" : "; ") + s;
-  throw InputError(msg);
-}
 
 std::vector<AirfoilInput> read_airfoils(const AeroDynInput& ad) {
   std::vector<AirfoilInput> out;

@@ -1,33 +1,10 @@
 #include "src/io/aero_support.hpp"
 
+#include "src/io/refusals.hpp"
 #include "src/model/error.hpp"
 
 namespace whirl::io {
 namespace {
-
-/// Collects "file:line: key: <raw value> not supported by whirl (<what>; whirl supports only <supported>)".
-class Refusals {
- public:
-  explicit Refusals(const OpenFastFile& f) : f_(f) {}
-  void add_if(bool refused, const std::string& key, const std::string& what, const std::string& supported) {
-    if (!refused) return;
-    const OpenFastEntry* e = f_.find(key);
-    const std::string value = e ? e->raw : "?";
-    out_.push_back(f_.where(key, value + " not supported by whirl (" + what + "; whirl supports only " + supported + ")"));
-  }
-  std::vector<std::string> take() { return std::move(out_); }
-
- private:
-  const OpenFastFile& f_;
-  std::vector<std::string> out_;
-};
-
-void throw_if_any(const std::vector<std::string>& issues) {
-  if (issues.empty()) return;
-  std::string msg;
-  for (const std::string& s : issues) msg += (msg.empty() ? "" : "; ") + s;
-  throw InputError(msg);
-}
 
 std::string wake_model_name(int m) {
   switch (m) {

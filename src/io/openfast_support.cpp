@@ -1,35 +1,9 @@
 #include "src/io/openfast_support.hpp"
 
+#include "src/io/refusals.hpp"
 #include "src/model/error.hpp"
 
 namespace whirl::io {
-namespace {
-
-class Refusals {
- public:
-  explicit Refusals(const OpenFastFile& f) : f_(f) {}
-  /// Adds "file:line: key: <raw value> not supported by whirl (reason)" when `refused`.
-  void add_if(bool refused, const char* key, const char* reason) {
-    if (!refused) return;
-    const OpenFastEntry* e = f_.find(key);
-    const std::string value = e ? e->raw : "?";
-    out_.push_back(f_.where(key, value + " not supported by whirl (" + reason + ")"));
-  }
-  std::vector<std::string> take() { return std::move(out_); }
-
- private:
-  const OpenFastFile& f_;
-  std::vector<std::string> out_;
-};
-
-void throw_if_any(const std::vector<std::string>& issues) {
-  if (issues.empty()) return;
-  std::string msg;
-  for (const std::string& s : issues) msg += (msg.empty() ? "" : "; ") + s;
-  throw InputError(msg);
-}
-
-}  // namespace
 
 std::vector<std::string> unsupported_options(const FstInput& fst) {
   Refusals r(fst.source);

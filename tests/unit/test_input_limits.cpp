@@ -10,6 +10,7 @@
 #include "src/io/elastodyn_tower.hpp"
 #include "src/io/openfast_lin.hpp"
 #include "src/io/openfast_turbine.hpp"
+#include "tests/unit/nrel5mw_scratch.hpp"
 #include "tests/unit/openfast_test_util.hpp"
 
 namespace {
@@ -21,25 +22,10 @@ using whirl::test::read_text;
 using whirl::test::replace_once;
 using whirl::test::ScratchDir;
 
-const char* kEd = "NRELOffshrBsline5MW_Onshore_ElastoDyn.dat";
-const char* kTower = "NRELOffshrBsline5MW_Onshore_ElastoDyn_Tower.dat";
-const char* kBlade = "NRELOffshrBsline5MW_Blade.dat";
-
-/// The NREL 5MW case in a scratch folder with the ElastoDyn main file replaced by `ed`; returns the .fst.
-std::filesystem::path nrelWith(const ScratchDir& dir, const std::string& ed) {
-  dir.copy(nrel5mw_dir() / kTower);
-  dir.copy(nrel5mw_dir() / kBlade);
-  dir.write(kEd, ed);
-  return dir.copy(nrel5mw_dir() / "Main_Onshore.fst");
-}
-
-std::string nrelEd() { return read_text(nrel5mw_dir() / kEd); }
-
-std::string turbineError(const std::string& ed) {
-  ScratchDir dir;
-  const auto fst = nrelWith(dir, ed);
-  return input_error_message([&] { whirl::io::read_openfast_turbine(fst); });
-}
+using whirl::test::nrelEd;
+using whirl::test::nrelWith;
+using whirl::test::turbineError;
+const char* kEd = whirl::test::kNrelEd;
 
 // --- bounds -----------------------------------------------------------------------------------
 
