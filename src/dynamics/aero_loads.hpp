@@ -25,10 +25,12 @@ namespace whirl {
 /// \param[in] u       inputs (dim ninput), for the wind speed
 /// \param[in] frozen  induced velocities to hold fixed (frozen wake); null: solve BEM per element
 /// \param[out] record if not null (double evaluations): each element's state
+/// ws: the kinematics, and the BEM roots it keeps per element (Workspace::bem) for evaluations at the
+/// same inputs.
 /// \param[in]  skip   bit b set: leave out blade b (an AD pass in which nothing it depends on is seeded)
 /// Throws ComputeError naming the blade and element when BEM has no solution.
 template <class TK, class T>
-void addAeroLoads(const Model& model, const Workspace<TK>& ws, const VecXT<TK>& q, const VecXT<T>& u,
+void addAeroLoads(const Model& model, Workspace<TK>& ws, const VecXT<TK>& q, const VecXT<T>& u,
                   const AeroInflow* frozen, AeroRecord* record, VecXT<T>& e, std::uint64_t skip = 0);
 
 }  // namespace whirl

@@ -30,7 +30,7 @@ Vec3T<T> steadyWind(const SteadyWind& w, const T& speed, const TK& z) {
 }  // namespace detail
 
 template <class TK, class T>
-void addAeroLoads(const Model& m, const Workspace<TK>& ws, const VecXT<TK>& q, const VecXT<T>& u,
+void addAeroLoads(const Model& m, Workspace<TK>& ws, const VecXT<TK>& q, const VecXT<T>& u,
                   const AeroInflow* frozen, AeroRecord* record, VecXT<T>& e, std::uint64_t skip) {
   const AeroModel& am = m.aero;
   if (!am.active()) return;
@@ -86,7 +86,7 @@ void addAeroLoads(const Model& m, const Workspace<TK>& ws, const VecXT<TK>& q, c
       try {
         sec = frozen ? detail::frozenSection(am, st, vx, vy, theta, valueOf(r), frozen->axial(index),
                                              frozen->tangential(index))
-                     : detail::bemSection(am, st, vx, vy, theta, T(r));
+                     : detail::bemSection(am, st, vx, vy, theta, T(r), ws.bem[static_cast<std::size_t>(index)]);
       } catch (const ComputeError& err) {
         throw ComputeError(body.name + " aero element " + std::to_string(si + 1) + " (span " +
                            std::to_string(st.span) + " m): " + err.what());

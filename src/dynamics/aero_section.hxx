@@ -5,6 +5,7 @@
 /// the current inflow (quasi-steady, its derivative by the implicit-function theorem).
 #include "src/aero/bem.hpp"
 #include "src/dynamics/scalar.hpp"
+#include "src/dynamics/workspace.hpp"
 #include "src/model/aero_model.hpp"
 
 namespace whirl::detail {
@@ -45,15 +46,21 @@ SectionState<T> frozenSection(const AeroModel& am, const AeroStation& st, const 
 /// geometric inflow angle.
 template <class T>
 SectionState<T> bemSection(const AeroModel& am, const AeroStation& st, const T& vx, const T& vy, const T& theta,
-                           const T& r) {
+                           const T& r, BemRoot& root) {
   if (!am.induction) return frozenSection(am, st, vx, vy, theta, valueOf(r), 0.0, 0.0);
   aero::BemStation b = bemStation(am, st, valueOf(r));
   b.theta = valueOf(theta);
-  const aero::BemSolution sol = aero::solveInflow(b, valueOf(vx), valueOf(vy), am.bem);
+  const double x = valueOf(vx), y = valueOf(vy);
+  // The root depends on the values only: reuse it when they are the same bits (the AD chunks of one
+  // point), solve otherwise.
+  if (!(root.valid && root.vx == x && root.vy == y && root.theta == b.theta && root.r == b.r)) {
+    const aero::BemSolution sol = aero::solveInflow(b, x, y, am.bem);
+    root = BemRoot{true, x, y, b.theta, b.r, sol.phi, sol.a, sol.ap};
+  }
   SectionState<T> s;
-  s.loads = aero::quasiSteadyLoads(b, vx, vy, theta, sol.phi, am.air_density, am.bem, &r);
-  s.a = sol.a;
-  s.ap = sol.ap;
+  s.loads = aero::quasiSteadyLoads(b, vx, vy, theta, root.phi, am.air_density, am.bem, &r);
+  s.a = root.a;
+  s.ap = root.ap;
   return s;
 }
 

@@ -16,7 +16,9 @@ inline int maxBasisSize(const Model& m) {
 
 template <class T>
 Workspace<T>::Workspace(const Model& m)
-    : prod(detail::maxBasisSize(m)), prod_dt(detail::maxBasisSize(m)) {
+    : bem(static_cast<std::size_t>(m.aero.nstations())),
+      prod(detail::maxBasisSize(m)),
+      prod_dt(detail::maxBasisSize(m)) {
   const int n = m.ndof();
   int ncmax = 1, nemax = 1;
   frames.resize(m.bodies.size());

@@ -19,7 +19,7 @@ template void addInputLoads<ADChunk, ADChunk>(const Model&, const Workspace<ADCh
                                               const VecXT<ADChunk>&, VecXT<ADChunk>&);
 template void addInputLoads<double, ADChunk>(const Model&, const Workspace<double>&, const VecX&,
                                              const VecXT<ADChunk>&, VecXT<ADChunk>&);
-template void addAeroLoads<double, ADChunk>(const Model&, const Workspace<double>&, const VecX&,
+template void addAeroLoads<double, ADChunk>(const Model&, Workspace<double>&, const VecX&,
                                             const VecXT<ADChunk>&, const AeroInflow*, AeroRecord*, VecXT<ADChunk>&,
                                             std::uint64_t);
 template Mat3T<double> axisRotation<double>(const Vec3&, const double&);

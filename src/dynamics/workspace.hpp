@@ -72,9 +72,18 @@ struct MassScratch {
   VecX zero;              ///< ndof zeros (q̇ = q̈ = 0)
 };
 
+/// The BEM solution of one blade element at given values of its inputs (aero_section.hxx): AD passes
+/// at one point see the same values chunk after chunk and reuse the root instead of solving again.
+struct BemRoot {
+  bool valid = false;
+  double vx = 0, vy = 0, theta = 0, r = 0;  ///< the values it was solved at
+  double phi = 0, a = 0, ap = 0;
+};
+
 template <class T>
 struct Workspace {
   explicit Workspace(const Model& m);
+  std::vector<BemRoot> bem;           ///< per blade element (AeroModel::nstations())
   std::vector<FrameState<T>> frames;  ///< per body
   std::vector<BasisState<T>> basis;   ///< per body
   // Scratch for the body inertia forces (sized to the largest nc). An AD pass uses the double
