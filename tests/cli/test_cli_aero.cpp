@@ -30,6 +30,15 @@ TEST(CliAero, CampbellAlongTheWind) {
   EXPECT_NE(csv.find(",8,"), std::string::npos);  // the wind-speed column is filled
 }
 
+TEST(CliAero, ParkedAndFeatheredRotorsInWind) {
+  // 0 rpm in 8 m/s: the elements see the wind alone (BEM's Vy ≈ 0 cases), fine pitch and feathered.
+  const auto parked = whirl("modes " + kAero + " --rpm 0 --format csv");
+  ASSERT_EQ(parked.code, 0) << parked.err;
+  EXPECT_NE(parked.out.find("tower FA 1"), std::string::npos);
+  const auto feathered = whirl("modes " + kAero + " --rpm 0 --set BlPitch(1)=90 --set BlPitch(2)=90 --set BlPitch(3)=90");
+  EXPECT_EQ(feathered.code, 0) << feathered.err;
+}
+
 TEST(CliAero, BrokenAirfoilListNamesTheFileAndLine) {
   const auto r = whirl("modes " + kAero + " --set NumAFfiles=9");
   EXPECT_NE(r.code, 0);
