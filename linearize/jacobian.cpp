@@ -102,9 +102,9 @@ MatX residualJacobian(const Model& m, JacobianWorkspace& jw, const VecX& q, cons
 }
 
 MatX outputJacobian(const Model& m, JacobianWorkspace& jw, const VecX& q, const VecX& qd, const VecX& qdd,
-                    const VecX& u, Wrt wrt, const std::vector<int>& cols) {
+                    const VecX& u, Wrt wrt, const std::vector<int>& cols, const AeroInflow* frozen) {
   return jacobian(m, jw, q, qd, qdd, u, wrt, cols, jw.y,
-                  [&]() { evaluateOutputs(m, jw.ws, jw.q, jw.qd, jw.qdd, jw.y); });
+                  [&]() { evaluateOutputs(m, jw.ws, jw.q, jw.qd, jw.qdd, jw.y, &jw.u, frozen); });
 }
 
 }  // namespace whirl

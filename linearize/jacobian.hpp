@@ -37,7 +37,8 @@ MatX residualJacobian(const Model& model, JacobianWorkspace& jw, const VecX& q, 
                       const AeroInflow* frozen = nullptr);
 
 /// ∂y/∂(wrt)[:, cols] for all noutput rows (y = evaluateOutputs, src/dynamics/outputs.hpp).
+/// `frozen`: the induced velocities the aerodynamic rotor outputs hold (frozen wake), as for residualJacobian.
 MatX outputJacobian(const Model& model, JacobianWorkspace& jw, const VecX& q, const VecX& qd, const VecX& qdd,
-                    const VecX& u, Wrt wrt, const std::vector<int>& cols);
+                    const VecX& u, Wrt wrt, const std::vector<int>& cols, const AeroInflow* frozen = nullptr);
 
 }  // namespace whirl

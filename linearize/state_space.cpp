@@ -62,7 +62,9 @@ StateSpaceModel stateSpace(const Model& m, const OperatingPoint& op, const Linea
   const int ny = m.noutput();
   VecX y(ny);
   Workspace<double> ws(m);
-  evaluateOutputs(m, ws, op.q, op.qd, op.qdd, y);
+  // The rotor outputs with the frozen wake of the point, as the linearization (linearize.cpp).
+  const AeroInflow* frozen = m.aero.active() && m.aero.induction && !op.inflow.empty() ? &op.inflow : nullptr;
+  evaluateOutputs(m, ws, op.q, op.qd, op.qdd, y, &op.u, frozen);
   for (int i = 0; i < ny; ++i) {
     if (!std::isfinite(y(i))) throw ComputeError("output '" + m.outputs[i].name + "' is not finite at the operating point");
     StateSpaceVariable v;
@@ -78,10 +80,10 @@ StateSpaceModel stateSpace(const Model& m, const OperatingPoint& op, const Linea
   s.D = MatX::Zero(ny, m.ninput());
   if (ny > 0) {
     JacobianWorkspace jw(m);
-    const MatX Hq = outputJacobian(m, jw, op.q, op.qd, op.qdd, op.u, Wrt::Q, lin.dofs);
-    const MatX Hqd = outputJacobian(m, jw, op.q, op.qd, op.qdd, op.u, Wrt::Qd, lin.dofs);
-    const MatX Hqdd = outputJacobian(m, jw, op.q, op.qd, op.qdd, op.u, Wrt::Qdd, lin.dofs);
-    const MatX Hu = outputJacobian(m, jw, op.q, op.qd, op.qdd, op.u, Wrt::U, inputs);
+    const MatX Hq = outputJacobian(m, jw, op.q, op.qd, op.qdd, op.u, Wrt::Q, lin.dofs, frozen);
+    const MatX Hqd = outputJacobian(m, jw, op.q, op.qd, op.qdd, op.u, Wrt::Qd, lin.dofs, frozen);
+    const MatX Hqdd = outputJacobian(m, jw, op.q, op.qd, op.qdd, op.u, Wrt::Qdd, lin.dofs, frozen);
+    const MatX Hu = outputJacobian(m, jw, op.q, op.qd, op.qdd, op.u, Wrt::U, inputs, frozen);
     s.C.leftCols(n) = Hq;
     s.C.rightCols(n) = Hqd;
     s.C += Hqdd * lin.A.bottomRows(n);

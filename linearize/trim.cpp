@@ -79,7 +79,7 @@ class TorqueBalance {
       b.thrust += w * op.aero.thrust;
       b.tip += w * tipDeflection(m_, op.q);
       if (tower_ >= 0) {
-        evaluateOutputs(m_, lw_.ws, op.q, op.qd, op.qdd, y_);
+        evaluateOutputs(m_, lw_.ws, op.q, op.qd, op.qdd, y_, &op.u, &op.inflow);
         b.tower += w * y_(tower_);
       }
     }

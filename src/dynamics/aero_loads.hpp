@@ -20,6 +20,13 @@
 
 namespace whirl {
 
+/// Rotor thrust [N] and torque [N m] of the blade elements (about and along the rotor axis through
+/// the apex), accumulated by addAeroLoads when asked.
+template <class T>
+struct RotorTotals {
+  T thrust{0}, torque{0};
+};
+
 /// e += generalized aerodynamic forces (dim model.ndof()) at the kinematics already in ws.
 /// \param[in] q       coordinates (dim ndof), for the pitch angles; scalar of the kinematics
 /// \param[in] u       inputs (dim ninput), for the wind speed
@@ -31,6 +38,7 @@ namespace whirl {
 /// Throws ComputeError naming the blade and element when BEM has no solution.
 template <class TK, class T>
 void addAeroLoads(const Model& model, Workspace<TK>& ws, const VecXT<TK>& q, const VecXT<T>& u,
-                  const AeroInflow* frozen, AeroRecord* record, VecXT<T>& e, std::uint64_t skip = 0);
+                  const AeroInflow* frozen, AeroRecord* record, VecXT<T>& e, std::uint64_t skip = 0,
+                  RotorTotals<T>* totals = nullptr);
 
 }  // namespace whirl

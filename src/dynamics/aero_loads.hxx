@@ -31,7 +31,8 @@ Vec3T<T> steadyWind(const SteadyWind& w, const T& speed, const TK& z) {
 
 template <class TK, class T>
 void addAeroLoads(const Model& m, Workspace<TK>& ws, const VecXT<TK>& q, const VecXT<T>& u,
-                  const AeroInflow* frozen, AeroRecord* record, VecXT<T>& e, std::uint64_t skip) {
+                  const AeroInflow* frozen, AeroRecord* record, VecXT<T>& e, std::uint64_t skip,
+                  RotorTotals<T>* totals) {
   const AeroModel& am = m.aero;
   if (!am.active()) return;
   using std::atan2;
@@ -97,6 +98,11 @@ void addAeroLoads(const Model& m, Workspace<TK>& ws, const VecXT<TK>& q, const V
       const Mat3T<T> Rt = f.R.transpose().template cast<T>();
       const Vec3T<T> Fb = Rt * Fg, Mb = Rt * Mg;
       detail::addPointForce(m, ws, blade.body, st.point, Fb, Mb, T(st.weight), e);
+      if (totals) {
+        const Vec3T<T> axis = disk.template cast<T>();
+        totals->thrust += T(st.weight) * Fg.dot(axis);
+        totals->torque += T(st.weight) * (Vec3T<T>(d.template cast<T>().cross(Fg)) + Mg).dot(axis);
+      }
       if constexpr (std::is_same_v<T, double> && std::is_same_v<TK, double>) {
         if (record) {
           AeroElementState es;

@@ -20,6 +20,7 @@ Workspace<T>::Workspace(const Model& m)
       prod(detail::maxBasisSize(m)),
       prod_dt(detail::maxBasisSize(m)) {
   const int n = m.ndof();
+  scratch = VecXT<T>::Zero(n);
   int ncmax = 1, nemax = 1;
   frames.resize(m.bodies.size());
   basis.resize(m.bodies.size());

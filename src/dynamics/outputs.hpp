@@ -2,6 +2,7 @@
 /// \file
 /// The model's outputs y = h(q, q̇, q̈) (src/model/output.hpp), written once for any scalar T and
 /// instantiated for double and ADChunk in outputs.cpp, so that C and D come from AD.
+#include "src/dynamics/aero_inflow.hpp"
 #include "src/dynamics/workspace.hpp"
 
 namespace whirl {
@@ -9,8 +10,11 @@ namespace whirl {
 /// Evaluates every output of the model (forward kinematics included when a point output needs it).
 /// \param[in]  q, qd, qdd  all coordinates, frozen ones included (dim model.ndof())
 /// \param[out] y           outputs (dim model.noutput()), in the units of each Output
+/// \param[in]  u           inputs (dim model.ninput()); needed by rotor outputs (wind, generator torque)
+/// \param[in]  frozen      induced velocities held (frozen wake) for the aerodynamic rotor outputs
 template <class T>
 void evaluateOutputs(const Model& model, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T>& qd,
-                     const VecXT<T>& qdd, VecXT<T>& y);
+                     const VecXT<T>& qdd, VecXT<T>& y, const VecXT<T>* u = nullptr,
+                     const AeroInflow* frozen = nullptr);
 
 }  // namespace whirl

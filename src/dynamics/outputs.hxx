@@ -1,5 +1,8 @@
 #pragma once
+#include "src/dynamics/aero_loads.hpp"
+#include "src/dynamics/generator_torque.hpp"
 #include "src/dynamics/kinematics.hpp"
+#include "src/model/error.hpp"
 #include "src/dynamics/outputs.hpp"
 
 namespace whirl {
@@ -30,12 +33,39 @@ Vec3T<T> pointMotion(const Model& m, const Workspace<T>& ws, int b, int point, i
 
 template <class T>
 void evaluateOutputs(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T>& qd, const VecXT<T>& qdd,
-                     VecXT<T>& y) {
-  bool points = false;
-  for (const Output& o : m.outputs) points = points || o.kind == OutputKind::Point;
-  if (points) forwardKinematics(m, ws, q, qd, qdd);
+                     VecXT<T>& y, const VecXT<T>* u, const AeroInflow* frozen) {
+  bool points = false, rotor = false;
+  for (const Output& o : m.outputs) {
+    points = points || o.kind == OutputKind::Point;
+    rotor = rotor || o.kind == OutputKind::Rotor;
+  }
+  if (points || rotor) forwardKinematics(m, ws, q, qd, qdd);
+  RotorTotals<T> totals;
+  T generator_torque(0), generator_speed(0), rotor_speed(0);
+  if (rotor) {
+    if (!u) throw ComputeError("rotor outputs need the inputs (wind speed, generator torque)");
+    if (m.aero.active()) {
+      addAeroLoads(m, ws, q, *u, frozen, nullptr, ws.scratch, 0, &totals);
+      rotor_speed = ws.frames[m.aero.hub_body].w.dot(ws.frames[m.aero.hub_body].R.col(0));
+    }
+    if (m.generator.active()) {
+      for (const auto& [d, g] : m.outputs[m.generator.speed_output].terms) generator_speed += g * qd(d);
+      generator_torque = generatorTorque(m.generator, generator_speed);
+      if (m.roles.generator_torque_input >= 0) generator_torque += (*u)(m.roles.generator_torque_input);
+    }
+  }
   for (int i = 0; i < m.noutput(); ++i) {
     const Output& o = m.outputs[i];
+    if (o.kind == OutputKind::Rotor) {
+      switch (o.rotor_quantity) {
+        case RotorQuantity::AeroThrust: y(i) = totals.thrust; break;
+        case RotorQuantity::AeroTorque: y(i) = totals.torque; break;
+        case RotorQuantity::AeroPower: y(i) = totals.torque * rotor_speed; break;
+        case RotorQuantity::GeneratorTorque: y(i) = generator_torque; break;
+        case RotorQuantity::GeneratorPower: y(i) = generator_torque * generator_speed * m.generator.efficiency; break;
+      }
+      continue;
+    }
     if (o.kind == OutputKind::DofCombination) {
       const VecXT<T>& x = o.order == 0 ? q : o.order == 1 ? qd : qdd;
       T s(0);

@@ -84,6 +84,7 @@ template <class T>
 struct Workspace {
   explicit Workspace(const Model& m);
   std::vector<BemRoot> bem;           ///< per blade element (AeroModel::nstations())
+  VecXT<T> scratch;                   ///< ndof: generalized forces nobody keeps (rotor outputs)
   std::vector<FrameState<T>> frames;  ///< per body
   std::vector<BasisState<T>> basis;   ///< per body
   // Scratch for the body inertia forces (sized to the largest nc). An AD pass uses the double

@@ -51,6 +51,12 @@ void finalizeAero(Model& m, const std::vector<int>& new_body, const std::vector<
         throw InputError(at + ": span weight, twist or distance from the apex not valid");
     }
   }
+  for (const Output& o : m.outputs) {
+    if (o.kind != OutputKind::Rotor) continue;
+    const bool gen = o.rotor_quantity == RotorQuantity::GeneratorTorque || o.rotor_quantity == RotorQuantity::GeneratorPower;
+    if (gen ? !m.generator.active() : !a.active())
+      throw InputError("output '" + o.name + "': the model has no " + (gen ? "generator torque law" : "aerodynamics"));
+  }
   GeneratorTorqueLaw& g = m.generator;
   if (g.active() && (m.roles.generator_torque_input < 0 || m.roles.generator_torque_input >= m.ninput()))
     throw InputError("generator torque law: the model has no generator-torque input (ModelRoles)");

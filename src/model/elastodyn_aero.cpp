@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <tuple>
 
 #include "src/model/elastodyn_parts.hpp"
 #include "src/model/error.hpp"
@@ -114,6 +115,17 @@ void addAerodynamics(Builder& b, const DrivetrainParts& dt, const RotorParts& ro
   am.wind.shear_exponent = w.PLExp;
   am.wind.direction = w.PropagationDir * deg;
   am.wind.upflow = w.VFlowAng * deg;
+  // AeroDyn's rotor outputs (names as OpenFAST's channels, SI units).
+  for (const auto& [name, unit, quantity] : {std::tuple{"RtAeroFxh", "N", RotorQuantity::AeroThrust},
+                                             std::tuple{"RtAeroMxh", "N m", RotorQuantity::AeroTorque},
+                                             std::tuple{"RtAeroPwr", "W", RotorQuantity::AeroPower}}) {
+    Output o;
+    o.name = name;
+    o.unit = unit;
+    o.kind = OutputKind::Rotor;
+    o.rotor_quantity = quantity;
+    m.outputs.push_back(o);
+  }
 }
 
 void addGeneratorTorqueLaw(Builder& b, const io::ServoDynInput& servo) {
@@ -132,6 +144,15 @@ void addGeneratorTorqueLaw(Builder& b, const io::ServoDynInput& servo) {
   g.k2 = law.VS_Rgn2K / (rpm * rpm);
   g.slip = law.VS_SlPc / 100.0;
   g.efficiency = law.GenEff / 100.0;
+  for (const auto& [name, unit, quantity] : {std::tuple{"GenTq", "N m", RotorQuantity::GeneratorTorque},
+                                             std::tuple{"GenPwr", "W", RotorQuantity::GeneratorPower}}) {
+    Output o;
+    o.name = name;
+    o.unit = unit;
+    o.kind = OutputKind::Rotor;
+    o.rotor_quantity = quantity;
+    b.model.outputs.push_back(o);
+  }
 }
 
 }  // namespace whirl::elastodyn

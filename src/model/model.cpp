@@ -223,7 +223,7 @@ void finalizeInputsAndOutputs(Model& m, const std::vector<int>& new_dof) {
         blade = blade == -2 || blade == b ? b : -1;
       }
       if (o.blade < 0) o.blade = std::max(blade, -1);
-    } else {
+    } else if (o.kind == OutputKind::Point) {
       if (o.point >= static_cast<int>(m.bodies[o.body].points.size())) throw InputError(what + ": no such point");
       if (!o.direction.allFinite() || o.direction.norm() < 1e-12) throw InputError(what + ": direction is zero");
       o.direction.normalize();

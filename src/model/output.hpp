@@ -4,7 +4,7 @@
 /// Plain data inside the Model (indices are renumbered by finalize()); evaluated by
 /// evaluateOutputs() (src/dynamics/outputs.hpp) and differentiated by AD (linearize/state_space.hpp).
 ///
-/// Two kinds, each at a derivative order (0 value, 1 rate, 2 acceleration):
+/// Three kinds, the first two at a derivative order (0 value, 1 rate, 2 acceleration):
 /// - DofCombination: Σ_k gain_k q_k^(order), e.g. a DOF value/rate/acceleration (one term), the
 ///   rotor speed (generator azimuth + drivetrain rates), the generator speed (gear ratio × rate), or
 ///   an elastic bending moment EI·Σ φ''(x) q (gains from the shapes' curvature, see beamMomentGains).
@@ -12,6 +12,8 @@
 ///   (inertial) motion, projected on `direction` given in the axes of `frame_body` (−1 = ground):
 ///   y = direction · R_Fᵀ p^(order). With frame_body = the carrying body this is what a body-fixed
 ///   sensor (an IMU without gravity) measures along one axis.
+/// - Rotor: a rotor-level quantity (RotorQuantity: aerodynamic thrust, torque and power, generator
+///   torque and power), functions of q, q̇ and u through the blade elements and the torque law.
 #include <string>
 #include <utility>
 #include <vector>
@@ -20,7 +22,16 @@
 
 namespace whirl {
 
-enum class OutputKind { DofCombination, Point };
+enum class OutputKind { DofCombination, Point, Rotor };
+
+/// Rotor-level quantities (OutputKind::Rotor), from the aerodynamic model and the generator torque law.
+enum class RotorQuantity {
+  AeroThrust,       ///< Σ of the blade-element forces along the rotor axis [N] (AeroDyn RtAeroFxh)
+  AeroTorque,       ///< their moment about the rotor axis [N m] (RtAeroMxh)
+  AeroPower,        ///< aerodynamic torque × rotor angular velocity about the axis [W] (RtAeroPwr)
+  GeneratorTorque,  ///< torque law at the generator speed + generator-torque input [N m, HSS] (GenTq)
+  GeneratorPower,   ///< generator torque × generator speed × efficiency [W] (GenPwr)
+};
 
 struct Output {
   std::string name;
@@ -32,6 +43,7 @@ struct Output {
   int point = -1;       ///< Point: point index of `body`, −1 = body origin
   int frame_body = -1;  ///< Point: axes of `direction`, −1 = ground
   Vec3 direction = Vec3::UnitX();  ///< Point: unit vector in those axes
+  RotorQuantity rotor_quantity = RotorQuantity::AeroThrust;  ///< Rotor: which
   /// Rotor blade (0-based) of an output in the rotating frame, −1 = fixed frame (MBC, `.lin` flag).
   /// finalize() sets it for a DofCombination whose DOFs all belong to one blade, when left at −1.
   int blade = -1;

@@ -9,7 +9,9 @@
 #include "linearize/jacobian.hpp"
 #include "linearize/linearize.hpp"
 #include "linearize/operating_point.hpp"
+#include "src/dynamics/outputs.hpp"
 #include "src/dynamics/residual.hpp"
+#include "src/model/elastodyn_model.hpp"
 #include "tests/support/aero_rotor_model.hpp"
 
 namespace whirl {
@@ -140,6 +142,40 @@ TEST(AeroLoads, FlapDampingOfAttachedFlowEqualsClosedForm) {
   // Exact up to the structural damping of the shapes (none here) and round-off.
   EXPECT_NEAR(lin.C(row, row), c, 1e-9 * c);
   EXPECT_GT(c, 1e3);
+}
+
+}  // namespace
+}  // namespace whirl
+
+namespace whirl {
+namespace {
+
+// The rotor outputs of the aeroelastic NREL 5MW deck: at the operating point the thrust and torque
+// outputs equal the sums the equilibrium recorded (two paths: output evaluation vs residual record),
+// and their derivatives with respect to the wind speed equal central differences with the wake
+// frozen.
+TEST(AeroLoads, RotorOutputsEqualTheRecordedSumsAndTheirDifferences) {
+  const Model m = readElastoDynModel(std::string(WHIRL_SOURCE_DIR) + "/cases/nrel5mw/Main_Aero.fst");
+  const OperatingPoint op = solveOperatingPoint(m, initialPoint(m));
+  const int fx = *m.findOutput("RtAeroFxh"), mx = *m.findOutput("RtAeroMxh");
+  Workspace<double> ws(m);
+  VecX y(m.noutput());
+  evaluateOutputs(m, ws, op.q, op.qd, op.qdd, y, &op.u, &op.inflow);
+  EXPECT_NEAR(y(fx), op.aero.thrust, 1e-9 * op.aero.thrust);
+  EXPECT_NEAR(y(mx), op.aero.torque, 1e-9 * op.aero.torque);
+  const int wind = m.roles.wind_speed_input;
+  JacobianWorkspace jw(m);
+  const MatX H = outputJacobian(m, jw, op.q, op.qd, op.qdd, op.u, Wrt::U, {wind}, &op.inflow);
+  const double h = 1e-5;
+  VecX up = op.u, um = op.u, yp(m.noutput()), ym(m.noutput());
+  up(wind) += h;
+  um(wind) -= h;
+  evaluateOutputs(m, ws, op.q, op.qd, op.qdd, yp, &up, &op.inflow);
+  evaluateOutputs(m, ws, op.q, op.qd, op.qdd, ym, &um, &op.inflow);
+  for (int k : {fx, mx}) {
+    const double fd = (yp(k) - ym(k)) / (2 * h);
+    EXPECT_NEAR(H(k, 0), fd, 1e-6 * std::abs(fd)) << m.outputs[k].name;
+  }
 }
 
 }  // namespace
