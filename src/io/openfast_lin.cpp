@@ -1,5 +1,6 @@
 #include "src/io/openfast_lin.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -144,7 +145,10 @@ std::vector<LinVariable> LinParser::table(std::size_t& i, int n, const std::stri
     fail(i + 1, key, "expected the column titles (Row/Column, Operating Point, ...)");
   const bool has_order = columns.find("Derivative Order") != std::string_view::npos;
   i += 2;  // dashed line
-  std::vector<LinVariable> rows(static_cast<std::size_t>(n));
+  // Rows are added as they are read: the declared count alone must not size an allocation (a header
+  // claiming 2e9 states is a truncated table, not 160 GB).
+  std::vector<LinVariable> rows;
+  rows.reserve(std::min(static_cast<std::size_t>(n), lines_.size() - i));
   for (int r = 0; r < n; ++r) {
     ++i;
     if (i >= lines_.size() || trim(lines_[i]).empty())
@@ -152,7 +156,7 @@ std::vector<LinVariable> LinParser::table(std::size_t& i, int n, const std::stri
     const std::string_view l = lines_[i];
     std::size_t pos = 0;
     if (integer(nextToken(l, pos), i, key) != r + 1) fail(i, key, "row " + std::to_string(r + 1) + " expected");
-    LinVariable& v = rows[static_cast<std::size_t>(r)];
+    LinVariable& v = rows.emplace_back();
     v.line = static_cast<int>(i + 1);
     for (std::string_view t = nextToken(l, pos);; t = nextToken(l, pos)) {  // "1.0E+00, 2.0E+00, 3.0E+00"
       if (t.empty()) fail(i, key, "operating point missing");
@@ -173,9 +177,11 @@ std::vector<LinVariable> LinParser::table(std::size_t& i, int n, const std::stri
   return rows;
 }
 
-/// Matrix rows after its title line `i` ("A: 20 x 20"). On return `i` is the last row.
+/// Matrix rows after its title line `i` ("A: 20 x 20"). On return `i` is the last row. The values
+/// are collected as read and the matrix is sized at the end, so the title's dimensions alone never
+/// size an allocation ("A: 20 x 2000000000" is a row with too few values, not 320 GB).
 Eigen::MatrixXd LinParser::matrix(std::size_t& i, int rows, int cols, const std::string& key) {
-  Eigen::MatrixXd m(rows, cols);
+  std::vector<double> values;
   for (int r = 0; r < rows; ++r) {
     ++i;
     if (i >= lines_.size() || trim(lines_[i]).empty())
@@ -185,12 +191,14 @@ Eigen::MatrixXd LinParser::matrix(std::size_t& i, int rows, int cols, const std:
     int c = 0;
     for (std::string_view t = nextToken(l, pos); !t.empty(); t = nextToken(l, pos), ++c) {
       if (c == cols) fail(i, key, "more than " + std::to_string(cols) + " values in row " + std::to_string(r + 1));
-      m(r, c) = number(t, i, key);
+      values.push_back(number(t, i, key));
     }
     if (c != cols)
       fail(i, key, std::to_string(c) + " values in row " + std::to_string(r + 1) + ", expected " + std::to_string(cols));
   }
-  return m;
+  if (values.empty()) return Eigen::MatrixXd(rows, cols);  // a 0 x n or n x 0 block
+  return Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(values.data(), rows,
+                                                                                                   cols);
 }
 
 OpenFastLin LinParser::parse() {
@@ -212,7 +220,11 @@ OpenFastLin LinParser::parse() {
     else if (std::smatch m; l.find(" x ") != std::string_view::npos &&
                             std::regex_match(lines_[i], m, mat_title)) {
       const std::string name = m[1];
-      const int rows = std::stoi(m[2]), cols = std::stoi(m[3]);
+      int rows = 0, cols = 0;
+      const std::string rs = m[2], cs = m[3];
+      if (std::from_chars(rs.data(), rs.data() + rs.size(), rows).ec != std::errc() ||
+          std::from_chars(cs.data(), cs.data() + cs.size(), cols).ec != std::errc())
+        fail(i, name, "dimensions " + rs + " x " + cs + " out of range");
       const std::size_t title = i;
       Eigen::MatrixXd mat = matrix(i, rows, cols, name);
       auto expect = [&](int r, int c) {

@@ -3,9 +3,12 @@
 // -DWHIRL_SANITIZE=ON, where undefined behaviour stops the program).
 #include <gtest/gtest.h>
 
+#include <regex>
+
 #include "linearize/linearize.hpp"
 #include "linearize/operating_point.hpp"
 #include "src/io/case_file.hpp"
+#include "src/io/openfast_lin.hpp"
 #include "src/model/error.hpp"
 #include "test_util.hpp"
 
@@ -21,6 +24,43 @@ TEST(SanitizerFindings, LinearizeModelWithoutInputs) {
   EXPECT_EQ(lin.Q.rows(), lin.K.rows());
   EXPECT_EQ(lin.Q.cols(), 0);
   EXPECT_GT(lin.K.rows(), 0);
+}
+
+// The NREL 5MW .lin at 9 rpm of tests/data with one line replaced.
+std::string linWith(const test::TempDir& tmp, const std::string& from, const std::string& to) {
+  const std::string text = test::slurp(std::string(WHIRL_SOURCE_DIR) + "/tests/data/openfast-lin/rotating-9rpm/Main.1.lin");
+  const std::string changed = std::regex_replace(text, std::regex(from), to, std::regex_constants::format_first_only);
+  EXPECT_NE(changed, text) << from;
+  return tmp.write("f.lin", changed);
+}
+
+// Expects InputError whose message starts with "<path>:<line>: <key>:".
+template <class F>
+void expectInputError(F&& f, const std::string& prefix) {
+  try {
+    f();
+    ADD_FAILURE() << "no exception, expected " << prefix;
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind(prefix, 0), 0u) << e.what();
+  }
+}
+
+// fuzz_lin: a header count sized the state table before any row was read (2e9 states: 160 GB,
+// std::bad_alloc or an ASan out-of-memory report instead of "truncated").
+TEST(SanitizerFindings, LinHugeStateCountIsATruncatedTable) {
+  test::TempDir tmp;
+  const std::string f = linWith(tmp, "Number of continuous states: +20", "Number of continuous states:        2000000000");
+  expectInputError([&] { readOpenFastLin(f); }, f + ":42: continuous states: truncated");
+}
+
+// fuzz_lin: matrix dimensions were read with std::stoi (std::out_of_range escaped as "stoi") and
+// sized the matrix before its rows were read (20 x 2e9: 320 GB).
+TEST(SanitizerFindings, LinMatrixDimensionsOutOfRange) {
+  test::TempDir tmp;
+  const std::string big = linWith(tmp, "\nA: 20 x 20", "\nA: 99999999999 x 20");
+  expectInputError([&] { readOpenFastLin(big); }, big + ":70: A: dimensions 99999999999 x 20 out of range");
+  const std::string wide = linWith(tmp, "\nA: 20 x 20", "\nA: 20 x 2000000000");
+  expectInputError([&] { readOpenFastLin(wide); }, wide + ":71: A: 20 values in row 1, expected 2000000000");
 }
 
 }  // namespace
