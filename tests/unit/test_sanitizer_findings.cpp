@@ -6,6 +6,7 @@
 #include <regex>
 
 #include "linearize/linearize.hpp"
+#include "modal/mbc_lin.hpp"
 #include "linearize/operating_point.hpp"
 #include "src/io/case_file.hpp"
 #include "src/io/openfast_lin.hpp"
@@ -61,6 +62,19 @@ TEST(SanitizerFindings, LinMatrixDimensionsOutOfRange) {
   expectInputError([&] { readOpenFastLin(big); }, big + ":70: A: dimensions 99999999999 x 20 out of range");
   const std::string wide = linWith(tmp, "\nA: 20 x 20", "\nA: 20 x 2000000000");
   expectInputError([&] { readOpenFastLin(wide); }, wide + ":71: A: 20 values in row 1, expected 2000000000");
+}
+
+// fuzz_lin: blade numbers were read with std::stoi (std::out_of_range) and the highest one sized
+// the per-blade tables of the MBC layout ("blade 2000000000": 48 GB).
+TEST(SanitizerFindings, LinBladeNumberOutOfRange) {
+  test::TempDir tmp;
+  for (const std::string number : {"99999999999", "2000000000"}) {
+    const std::string f =
+        linWith(tmp, "bending-mode DOF of blade 3 \\(internal DOF index = DOF_BF\\(3,1\\)\\), m\\n",
+                "bending-mode DOF of blade " + number + " (internal DOF index = DOF_BF(3,1)), m\n");
+    const OpenFastLin lin = readOpenFastLin(f);
+    expectInputError([&] { mbcLayoutFromLin(lin); }, f + ":25: continuous states: blade number");
+  }
 }
 
 }  // namespace
