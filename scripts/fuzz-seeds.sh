@@ -16,6 +16,7 @@ add fuzz_elastodyn cases/nrel5mw/*_ElastoDyn.dat tests/data/openfast/rotating-9r
 add fuzz_servodyn cases/nrel5mw/*_ServoDyn.dat
 add fuzz_ed_tower cases/nrel5mw/*_Tower.dat tests/data/openfast/5MW_Baseline/*_Tower.dat
 add fuzz_ed_blade cases/nrel5mw/NRELOffshrBsline5MW_Blade.dat tests/data/openfast/5MW_Baseline/*_Blade.dat
+add fuzz_openfast_parse cases/nrel5mw/*.fst cases/nrel5mw/*.dat tests/data/openfast/*/*.fst tests/data/openfast/*/*.dat
 add fuzz_lin tests/data/openfast-lin/*/*.lin
 add fuzz_schedule cases/nrel5mw/NREL5MW_Oper.csv tests/mpi/*.csv fuzz/seeds/schedule/*
 add fuzz_compare cases/*/table9_1.csv cases/*/reference.csv fuzz/seeds/compare/*

@@ -18,8 +18,8 @@ cd "$(dirname "$0")/.."
 seconds=${1:-45}
 shift || true
 out=${FUZZ_BUILD_DIR:-build-fuzz}
-all=(fuzz_case_yaml fuzz_fst fuzz_elastodyn fuzz_servodyn fuzz_ed_tower fuzz_ed_blade fuzz_lin fuzz_schedule
-     fuzz_compare fuzz_tracking)
+all=(fuzz_case_yaml fuzz_openfast_parse fuzz_fst fuzz_elastodyn fuzz_servodyn fuzz_ed_tower fuzz_ed_blade fuzz_lin
+     fuzz_schedule fuzz_compare fuzz_tracking)
 harnesses=("${all[@]}")
 if [ $# -gt 0 ]; then harnesses=("$@"); fi
 
