@@ -1,6 +1,7 @@
-// Inputs the fuzzers (fuzz/, README.md *Reliability*) found to crash, hang, leak an unexpected
-// exception type or trip a sanitizer; each test failed before its fix (most of them only under
-// -DWHIRL_SANITIZE=ON, where undefined behaviour stops the program).
+// Inputs found with the fuzz harnesses (fuzz/, README.md *Reliability*: run by the fuzzer, or found
+// while writing a harness and reproduced through it) that ran out of memory, let an unexpected
+// exception type escape or tripped a sanitizer; each test failed before its fix (the first one only
+// under -DWHIRL_SANITIZE=ON, where undefined behaviour stops the program).
 #include <gtest/gtest.h>
 
 #include <regex>
