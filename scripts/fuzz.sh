@@ -47,9 +47,12 @@ for h in "${harnesses[@]}"; do
   corpus=$out/corpus/$h findings=$out/findings/$h log=$out/logs/$h.log
   mkdir -p "$corpus" "$findings" "$(dirname "$log")"
   before=$(ls "$findings" | wc -l)
+  # The tokenizer's seeds include 57 kB BeamDyn files: mutating those runs at a tenth of the speed.
+  extra=()
+  if [ "$h" = fuzz_openfast_parse ]; then extra=(-max_len=6000); fi
   set +e
   nice -n 19 "$out/fuzz/$h" "$corpus" "$out/seeds/$h" -max_total_time="$seconds" -timeout=5 -rss_limit_mb=2048 \
-    -print_final_stats=1 -artifact_prefix="$findings/" ${FUZZ_RUNS:+-runs=$FUZZ_RUNS} > "$log" 2>&1
+    -print_final_stats=1 -artifact_prefix="$findings/" ${FUZZ_RUNS:+-runs=$FUZZ_RUNS} "${extra[@]}" > "$log" 2>&1
   rc=$?
   set -e
   execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -n 1)
