@@ -44,6 +44,7 @@ LinearModel linearize(const Model& m, const OperatingPoint& op, LinearizeWorkspa
   JacobianWorkspace& jw = lw.jw;
   auto rows = [&](const MatX& J, double sign) {
     MatX out(n, J.cols());
+    if (J.cols() == 0) return out;  // no inputs: J.row(k) of an empty matrix would offset a null pointer
     for (int r = 0; r < n; ++r) out.row(r) = sign * J.row(lin.dofs[r]);
     return out;
   };

@@ -1,6 +1,8 @@
 #include "modal/mbc_lin.hpp"
 
 #include <algorithm>
+#include <charconv>
+#include <limits>
 #include <regex>
 
 #include "src/model/error.hpp"
@@ -35,7 +37,9 @@ BladeMatch matchBlade(const std::string& d) {
   }
   BladeMatch r;
   if (pos == std::string::npos) return r;
-  r.blade = std::stoi(d.substr(pos, len));
+  // A number too large for an int reads as INT_MAX: mbcLayoutFromLin rejects it with the line.
+  if (std::from_chars(d.data() + pos, d.data() + pos + len, r.blade).ec != std::errc())
+    r.blade = std::numeric_limits<int>::max();
   r.masked = d.substr(0, pos) + "#" + d.substr(pos + len);
   // ElastoDyn repeats the blade in the internal DOF index, "DOF_BF(2,1)".
   const std::string idx = "(" + std::to_string(r.blade) + ",";
@@ -97,10 +101,21 @@ std::vector<int> bladesOf(const OpenFastLin& lin, const std::vector<LinVariable>
   return blade;
 }
 
-int highestBlade(const std::vector<LinVariable>& vars) {
+/// The highest blade number of the rotating entries; InputError naming the entry beyond kMaxBlades
+/// (the blade count sizes the per-blade tables: "blade 2000000000" must not allocate them).
+int highestBlade(const OpenFastLin& lin, const std::vector<LinVariable>& vars, const std::string& key) {
+  constexpr int kMaxBlades = 100;
   int n = 0;
-  for (const auto& v : vars)
-    if (v.rotating) n = std::max(n, matchBlade(v.description).blade);
+  for (const auto& v : vars) {
+    if (!v.rotating) continue;
+    const int b = matchBlade(v.description).blade;
+    if (b > kMaxBlades)
+      throw InputError(where(lin.path, v.line, key,
+                             "blade number " + (b == std::numeric_limits<int>::max() ? std::string("too large")
+                                                                                      : std::to_string(b)) +
+                                 " in '" + v.description + "' (at most " + std::to_string(kMaxBlades) + " blades)"));
+    n = std::max(n, b);
+  }
   return n;
 }
 
@@ -111,7 +126,8 @@ int bladeNumberInDescription(const std::string& description) { return matchBlade
 MbcLayout mbcLayoutFromLin(const OpenFastLin& lin, int num_blades) {
   MbcLayout L;
   L.num_blades = num_blades > 0 ? num_blades
-                                : std::max({highestBlade(lin.x), highestBlade(lin.u), highestBlade(lin.y)});
+                                : std::max({highestBlade(lin, lin.x, "continuous states"),
+                                            highestBlade(lin, lin.u, "inputs"), highestBlade(lin, lin.y, "outputs")});
   if (L.num_blades == 0) L.num_blades = 3;
   L.velocity_of = velocityOf(lin);
   L.state_blade = bladesOf(lin, lin.x, L.velocity_of, L.num_blades, "continuous states");

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages whirl needs, only those missing. Idempotent; needs root (or sudo).
+# Extra package names as arguments are installed too (scripts/fuzz.sh: clang libclang-rt-14-dev).
 set -euo pipefail
 packages=(
   build-essential cmake pkg-config
@@ -8,6 +9,7 @@ packages=(
   gnuplot-nox libyaml-cpp-dev libcli11-dev libfmt-dev libmatio-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3-scipy  # the .mat export test loads the file with scipy.io.loadmat (skipped without it)
+  "$@"
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -104,11 +104,11 @@ std::vector<ShapePtr> readShapes(const CaseNode& beam, const BeamProperties& pro
       const double ref = s.find("reference_length") ? s.at("reference_length").number() : L;
       const double x0 = s.find("offset") ? s.at("offset").number() : 0.0;
       if (!(ref > 0)) s.at("reference_length").fail("must be positive");
-      shapes.push_back(located(s, [&] { return polynomialShape(name, ref, a, dy, dz, x0); }));
+      shapes.push_back(located(s, [&, dy = dy, dz = dz] { return polynomialShape(name, ref, a, dy, dz, x0); }));
     } else if (type == "one_minus_cos") {
       s.allowKeys({"name", "type", "direction"});
       const auto [dy, dz] = readDirection(s);
-      shapes.push_back(located(s, [&] { return oneMinusCosShape(name, L, dy, dz); }));
+      shapes.push_back(located(s, [&, dy = dy, dz = dz] { return oneMinusCosShape(name, L, dy, dz); }));
     } else if (type == "clamped_topmass") {
       s.allowKeys({"name", "type", "direction", "mode", "tip_mass_ratio"});
       const auto [dy, dz] = readDirection(s);
@@ -118,7 +118,7 @@ std::vector<ShapePtr> readShapes(const CaseNode& beam, const BeamProperties& pro
         s.at("mode").fail("the mode number must be from 1 to " + std::to_string(limits::kMaxAnalyticShapeMode) +
                           " (src/model/limits.hpp)");
       if (ratio < 0) s.at("tip_mass_ratio").fail("must not be negative");
-      shapes.push_back(located(s, [&] { return clampedTopMassShape(name, L, mode, ratio, dy, dz); }));
+      shapes.push_back(located(s, [&, dy = dy, dz = dz] { return clampedTopMassShape(name, L, mode, ratio, dy, dz); }));
     } else if (type == "torsion_sine") {
       s.allowKeys({"name", "type", "mode"});
       const int mode = s.at("mode").integer();

@@ -1,5 +1,6 @@
 #include "src/io/openfast_lin.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -173,7 +174,10 @@ std::vector<LinVariable> LinParser::table(std::size_t& i, int n, const std::stri
     fail(i + 1, key, "expected the column titles (Row/Column, Operating Point, ...)");
   const bool has_order = columns.find("Derivative Order") != std::string_view::npos;
   i += 2;  // dashed line
-  std::vector<LinVariable> rows;  // grows with the rows read, not with the header's claim
+  // Rows are added as they are read: the declared count alone must not size an allocation (a header
+  // claiming 2e9 states is a truncated table, not 160 GB).
+  std::vector<LinVariable> rows;
+  rows.reserve(std::min(static_cast<std::size_t>(n), lines_.size() - i));
   for (int r = 0; r < n; ++r) {
     ++i;
     if (i >= lines_.size() || trim(lines_[i]).empty())
@@ -204,7 +208,9 @@ std::vector<LinVariable> LinParser::table(std::size_t& i, int n, const std::stri
   return rows;
 }
 
-/// Matrix rows after its title line `i` ("A: 20 x 20"). On return `i` is the last row.
+/// Matrix rows after its title line `i` ("A: 20 x 20"). On return `i` is the last row. The values
+/// are collected as read and the matrix is sized at the end, so the title's dimensions alone never
+/// size an allocation ("A: 20 x 2000000000" is a row with too few values, not 320 GB).
 Eigen::MatrixXd LinParser::matrix(std::size_t& i, int rows, int cols, const std::string& key) {
   std::vector<double> values;  // grows with the rows read, not with the title's claim
   for (int r = 0; r < rows; ++r) {
@@ -221,8 +227,9 @@ Eigen::MatrixXd LinParser::matrix(std::size_t& i, int rows, int cols, const std:
     if (c != cols)
       fail(i, key, std::to_string(c) + " values in row " + std::to_string(r + 1) + ", expected " + std::to_string(cols));
   }
+  if (values.empty()) return Eigen::MatrixXd(rows, cols);  // a 0 x n or n x 0 block
   return Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(values.data(), rows,
-                                                                                                  cols);
+                                                                                                   cols);
 }
 
 OpenFastLin LinParser::parse() {

@@ -166,23 +166,27 @@ TEST(CaseFile, TableShapesInlineAndCsvMatchThePolynomial) {
     uz2 += (k ? ", " : "") + std::string("2e-4");
   }
   tmp.write("shape.csv", csv);
-  const std::string path = tmp.write("t.yaml", R"(
+  // One body per shape: three identical shapes on one body have a singular elastic mass matrix,
+  // which finalize() rejects or not depending on round-off (it failed with clang, passed with gcc).
+  auto stiffness = [&](const std::string& file, const std::string& shape) {
+    const Model m = readCase(tmp.write(file, R"(
 bodies:
   - name: blade
     type: beam
     length: 100
     uniform: {m: 10, EIy: 1e9, EIz: 1e9}
     shapes:
-      - {name: flap csv, type: table, file: shape.csv}
-      - {name: flap inline, type: table, x: [)" + xs + "], uz: [" + uz + "], uz1: [" + uz1 + "], uz2: [" + uz2 + R"(]}
-      - {name: flap poly, type: polynomial, direction: z, coefficients: {2: 1}}
-)");
-  const Model m = readCase(path);
-  ASSERT_EQ(m.ndof(), 3);
-  const MatX& K = m.bodies[0].elastic.K;
-  EXPECT_NEAR(K(0, 0), 4e9 / 1e6, 1e-9);
-  EXPECT_NEAR(K(1, 1), K(2, 2), 1e-9);
-  EXPECT_EQ(m.dofs[0].name, "flap csv");
+      - )" + shape + "\n"));
+    EXPECT_EQ(m.ndof(), 1);
+    return m.bodies[0].elastic.K(0, 0);
+  };
+  const double csv_k = stiffness("csv.yaml", "{name: flap csv, type: table, file: shape.csv}");
+  const double inline_k = stiffness("inline.yaml", "{name: flap inline, type: table, x: [" + xs + "], uz: [" + uz +
+                                                       "], uz1: [" + uz1 + "], uz2: [" + uz2 + "]}");
+  const double poly_k = stiffness("poly.yaml", "{name: flap poly, type: polynomial, direction: z, coefficients: {2: 1}}");
+  EXPECT_NEAR(csv_k, 4e9 / 1e6, 1e-9);
+  EXPECT_NEAR(inline_k, poly_k, 1e-9);
+  EXPECT_NEAR(csv_k, poly_k, 1e-9);
 }
 
 TEST(CaseFile, OtherShapesDampingAndIntegration) {

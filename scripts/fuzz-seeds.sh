@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Collects the seed corpus of every fuzz harness from cases/, tests/data/ and fuzz/seeds/ into
+# DIR/<harness>/ (default build-fuzz/seeds). Copies, not committed: the inputs live where they are.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+out=${1:-build-fuzz/seeds}
+rm -rf "$out"
+add() {  # add HARNESS FILE...
+  local h=$1; shift
+  mkdir -p "$out/$h"
+  for f in "$@"; do [ -f "$f" ] && cp "$f" "$out/$h/$(echo "$f" | tr / _)"; done
+}
+add fuzz_case_yaml cases/*/*.yaml
+add fuzz_fst cases/nrel5mw/*.fst tests/data/openfast/*/*.fst
+add fuzz_elastodyn cases/nrel5mw/*_ElastoDyn.dat tests/data/openfast/rotating-9rpm/ElastoDyn.dat tests/data/openfast/ws03/*_ED.dat
+add fuzz_servodyn cases/nrel5mw/*_ServoDyn.dat
+add fuzz_ed_tower cases/nrel5mw/*_Tower.dat tests/data/openfast/5MW_Baseline/*_Tower.dat
+add fuzz_ed_blade cases/nrel5mw/NRELOffshrBsline5MW_Blade.dat tests/data/openfast/5MW_Baseline/*_Blade.dat
+add fuzz_openfast_parse cases/nrel5mw/*.fst cases/nrel5mw/*.dat tests/data/openfast/*/*.fst tests/data/openfast/*/*.dat
+add fuzz_lin tests/data/openfast-lin/*/*.lin
+add fuzz_schedule cases/nrel5mw/NREL5MW_Oper.csv tests/mpi/*.csv fuzz/seeds/schedule/*
+add fuzz_compare cases/*/table9_1.csv cases/*/reference.csv fuzz/seeds/compare/*
+add fuzz_tracking fuzz/seeds/tracking/*
+for d in "$out"/*; do echo "$(basename "$d"): $(ls "$d" | wc -l) seeds"; done

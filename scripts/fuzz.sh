@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer harnesses (fuzz/, clang, ASan + UBSan) into build-fuzz/ and runs each for
+# SECONDS (default 45) from its seed corpus (scripts/fuzz-seeds.sh: cases/, tests/data/, fuzz/seeds/).
+#
+#   bash scripts/fuzz.sh [SECONDS] [HARNESS...]     # default: every harness, one after the other
+#
+# Per harness it prints executions, new findings (crash, timeout = a hang over 5 s, out-of-memory
+# over 2 GB, leak) and libFuzzer's exit status; it exits non-zero when any harness found something,
+# naming the reproducer (build-fuzz/findings/<harness>/crash-…). Re-run one with
+#   build-fuzz/fuzz/<harness> build-fuzz/findings/<harness>/crash-…
+# The corpus each run grows is kept in build-fuzz/corpus/<harness> for the next run.
+# Everything runs under `nice -n 19`; the build uses FUZZ_BUILD_JOBS (default 2) jobs.
+# FUZZ_RUNS=N also stops each harness after N executions.
+# FUZZ_BUILD_DIR=DIR uses another build folder configured with -DWHIRL_FUZZ=ON (e.g. one that also
+# builds the tests under the sanitizers: README.md, *Reliability*).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds=${1:-45}
+shift || true
+out=${FUZZ_BUILD_DIR:-build-fuzz}
+all=(fuzz_case_yaml fuzz_openfast_parse fuzz_fst fuzz_elastodyn fuzz_servodyn fuzz_ed_tower fuzz_ed_blade fuzz_lin
+     fuzz_schedule fuzz_compare fuzz_tracking)
+harnesses=("${all[@]}")
+if [ $# -gt 0 ]; then harnesses=("$@"); fi
+
+bash scripts/install-deps.sh clang libclang-rt-14-dev > /dev/null
+launcher=()
+command -v ccache > /dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
+if [ ! -f "$out/CMakeCache.txt" ]; then
+  nice -n 19 cmake -S . -B "$out" -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DWHIRL_FUZZ=ON \
+    -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -gline-tables-only" \
+    -DWHIRL_BUILD_TESTS=OFF -DWHIRL_BUILD_BENCH=OFF "${launcher[@]}" > "$out.log" 2>&1 || { cat "$out.log"; exit 2; }
+fi
+start=$(date +%s)
+if ! nice -n 19 cmake --build "$out" -j "${FUZZ_BUILD_JOBS:-2}" --target "${harnesses[@]}" >> "$out.log" 2>&1; then
+  tail -n 30 "$out.log"; echo "fuzz.sh: build failed (log: $out.log)" >&2; exit 2
+fi
+echo "fuzz.sh: harnesses built in $(( $(date +%s) - start )) s"
+bash scripts/fuzz-seeds.sh "$out/seeds" > /dev/null
+
+# Leaks are findings; OpenMPI is never started by the harnesses (no PETSc), so nothing to suppress.
+export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:allocator_may_return_null=0}
+export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
+status=0
+printf '%-16s %12s %10s %6s  %s\n' harness executions "exec/s" exit findings
+for h in "${harnesses[@]}"; do
+  corpus=$out/corpus/$h findings=$out/findings/$h log=$out/logs/$h.log
+  mkdir -p "$corpus" "$findings" "$(dirname "$log")"
+  before=$(ls "$findings" | wc -l)
+  # The tokenizer's seeds include 57 kB BeamDyn files: mutating those runs at a tenth of the speed.
+  extra=()
+  if [ "$h" = fuzz_openfast_parse ]; then extra=(-max_len=6000); fi
+  set +e
+  nice -n 19 "$out/fuzz/$h" "$corpus" "$out/seeds/$h" -max_total_time="$seconds" -timeout=5 -rss_limit_mb=2048 \
+    -print_final_stats=1 -artifact_prefix="$findings/" ${FUZZ_RUNS:+-runs=$FUZZ_RUNS} "${extra[@]}" > "$log" 2>&1
+  rc=$?
+  set -e
+  execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -n 1)
+  rate=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log" | tail -n 1)
+  new=$(( $(ls "$findings" | wc -l) - before ))
+  printf '%-16s %12s %10s %6s  %s\n' "$h" "${execs:-?}" "${rate:-?}" "$rc" "$new"
+  if [ "$rc" -ne 0 ] || [ "$new" -ne 0 ]; then
+    status=1
+    grep -m 3 -E 'ERROR: |FINDING|runtime error|SUMMARY' "$log" | sed 's/^/    /' || true
+    ls -t "$findings" | head -n 3 | sed "s|^|    reproducer: $findings/|"
+    echo "    log: $log"
+  fi
+done
+exit $status

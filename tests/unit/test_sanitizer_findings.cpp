@@ -1,0 +1,83 @@
+// Inputs found with the fuzz harnesses (fuzz/, README.md *Reliability*: run by the fuzzer, or found
+// while writing a harness and reproduced through it) that ran out of memory, let an unexpected
+// exception type escape or tripped a sanitizer; each test failed before its fix (the first one only
+// under -DWHIRL_SANITIZE=ON, where undefined behaviour stops the program).
+#include <gtest/gtest.h>
+
+#include <regex>
+
+#include "linearize/linearize.hpp"
+#include "modal/mbc_lin.hpp"
+#include "linearize/operating_point.hpp"
+#include "src/io/case_file.hpp"
+#include "src/io/openfast_lin.hpp"
+#include "src/model/error.hpp"
+#include "test_util.hpp"
+
+namespace whirl {
+namespace {
+
+// fuzz_case_yaml, first input: every case without `inputs` made linearize() take J.row(k) of the
+// empty input Jacobian, an offset applied to Eigen's null data pointer (UBSan: pointer-overflow).
+TEST(SanitizerFindings, LinearizeModelWithoutInputs) {
+  const Model m = readCase(std::string(WHIRL_SOURCE_DIR) + "/cases/tower_topmass/tower_topmass.yaml");
+  ASSERT_EQ(m.ninput(), 0);
+  const LinearModel lin = linearize(m, solveOperatingPoint(m, initialPoint(m)));
+  EXPECT_EQ(lin.Q.rows(), lin.K.rows());
+  EXPECT_EQ(lin.Q.cols(), 0);
+  EXPECT_GT(lin.K.rows(), 0);
+}
+
+// The NREL 5MW .lin at 9 rpm of tests/data with one line replaced.
+std::string linWith(const test::TempDir& tmp, const std::string& from, const std::string& to) {
+  const std::string text = test::slurp(std::string(WHIRL_SOURCE_DIR) + "/tests/data/openfast-lin/rotating-9rpm/Main.1.lin");
+  const std::string changed = std::regex_replace(text, std::regex(from), to, std::regex_constants::format_first_only);
+  EXPECT_NE(changed, text) << from;
+  return tmp.write("f.lin", changed);
+}
+
+// Expects InputError whose message starts with "<path>:<line>: <key>:".
+template <class F>
+void expectInputError(F&& f, const std::string& prefix) {
+  try {
+    f();
+    ADD_FAILURE() << "no exception, expected " << prefix;
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind(prefix, 0), 0u) << e.what();
+  }
+}
+
+// fuzz_lin: a header count sized the state table before any row was read (2e9 states: 160 GB,
+// std::bad_alloc or an ASan out-of-memory report instead of "truncated").
+TEST(SanitizerFindings, LinHugeStateCountIsATruncatedTable) {
+  test::TempDir tmp;
+  const std::string f = linWith(tmp, "Number of continuous states: +20", "Number of continuous states:        2000000000");
+  expectInputError([&] { readOpenFastLin(f); }, f + ":42: continuous states: truncated");
+}
+
+// fuzz_lin: matrix dimensions were read with std::stoi (std::out_of_range escaped as "stoi") and
+// sized the matrix before its rows were read (20 x 2e9: 320 GB).
+TEST(SanitizerFindings, LinMatrixDimensionsOutOfRange) {
+  test::TempDir tmp;
+  const std::string big = linWith(tmp, "\nA: 20 x 20", "\nA: 99999999999 x 20");
+  // (The bounds of src/model/limits.hpp, added alongside, now refuse both at the title line.)
+  expectInputError([&] { readOpenFastLin(big); }, big + ":70: A rows: '99999999999' is out of the integer range");
+  const std::string wide = linWith(tmp, "\nA: 20 x 20", "\nA: 20 x 2000000000");
+  expectInputError([&] { readOpenFastLin(wide); }, wide + ":70: A columns: 2000000000 is above the limit of");
+}
+
+// fuzz_lin: blade numbers were read with std::stoi (std::out_of_range) and the highest one sized
+// the per-blade tables of the MBC layout ("blade 2000000000": 48 GB).
+TEST(SanitizerFindings, LinBladeNumberOutOfRange) {
+  test::TempDir tmp;
+  for (const std::string number : {"99999999999", "2000000000"}) {
+    const std::string f =
+        linWith(tmp, "bending-mode DOF of blade 3 \\(internal DOF index = DOF_BF\\(3,1\\)\\), m\\n",
+                "bending-mode DOF of blade " + number + " (internal DOF index = DOF_BF(3,1)), m\n");
+    const OpenFastLin lin = readOpenFastLin(f);
+    expectInputError([&] { mbcLayoutFromLin(lin); }, f + ":25: continuous states: blade number");
+  }
+}
+
+}  // namespace
+}  // namespace whirl
