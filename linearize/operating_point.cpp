@@ -26,9 +26,9 @@ MatX chordMatrix(const LinearModel& lm, const std::vector<int>& solved) {
   return K;
 }
 
-}  // namespace
-
-OperatingPoint initialPoint(const Model& m) {
+// Every coordinate at its value and rate, q̈ = 0, every input at its value (before the inputs move
+// the frozen coordinates they drive).
+OperatingPoint modelValues(const Model& m) {
   OperatingPoint op;
   const int n = m.ndof();
   op.q = VecX::Zero(n);
@@ -39,10 +39,16 @@ OperatingPoint initialPoint(const Model& m) {
     op.qd(i) = m.dofs[i].rate;
   }
   op.u = VecX::Zero(m.ninput());
-  for (int i = 0; i < m.ninput(); ++i) {
-    op.u(i) = m.inputs[i].value;
+  for (int i = 0; i < m.ninput(); ++i) op.u(i) = m.inputs[i].value;
+  return op;
+}
+
+}  // namespace
+
+OperatingPoint initialPoint(const Model& m) {
+  OperatingPoint op = modelValues(m);
+  for (int i = 0; i < m.ninput(); ++i)
     for (const InputDofTarget& t : m.inputs[i].dofs) op.q(t.dof) += t.gain * op.u(i);
-  }
   return op;
 }
 
@@ -55,17 +61,7 @@ OperatingPoint initialPoint(const Model& m, const OperatingCondition& c) {
     if (!has) throw InputError(std::string("operating condition: ") + field + ": the model has no " + what);
   };
   finite(c.rotor_speed, "rotor_speed");
-  OperatingPoint op;
-  const int n = m.ndof();
-  op.q = VecX::Zero(n);
-  op.qd = VecX::Zero(n);
-  op.qdd = VecX::Zero(n);
-  for (int i = 0; i < n; ++i) {
-    op.q(i) = m.dofs[i].value;
-    op.qd(i) = m.dofs[i].rate;
-  }
-  op.u = VecX::Zero(m.ninput());
-  for (int i = 0; i < m.ninput(); ++i) op.u(i) = m.inputs[i].value;
+  OperatingPoint op = modelValues(m);
   if (c.wind_speed) {
     finite(*c.wind_speed, "wind_speed");
     need(r.wind_speed_input >= 0, "wind_speed", "wind-speed input");
