@@ -32,16 +32,6 @@ struct BodeOptions {
   bool no_plot = false;
 };
 
-std::vector<std::string> split(const std::string& s) {
-  std::vector<std::string> out;
-  std::stringstream in(s);
-  for (std::string item; std::getline(in, item, ',');) {
-    const auto b = item.find_first_not_of(' '), e = item.find_last_not_of(' ');
-    if (b != std::string::npos) out.push_back(item.substr(b, e - b + 1));
-  }
-  return out;
-}
-
 std::string scriptOf(const std::string& title, int pairs) {
   std::string g =
       "# Bode diagram written by whirl: gnuplot bode.gp (from this folder)\n"
@@ -69,8 +59,8 @@ void run(const BodeOptions& opt) {
   ensureWritableFolder(dir);
   ExportOptions eo;
   eo.azimuths = opt.azimuths;
-  eo.inputs = split(opt.inputs);
-  eo.outputs = split(opt.outputs);
+  eo.inputs = splitList(opt.inputs);
+  eo.outputs = splitList(opt.outputs);
   eo.drop_azimuth = true;  // the rigid azimuth is a pure integrator of the rotor speed
   if (eo.inputs.empty() || eo.outputs.empty()) throw InputError("bode: give --inputs and --outputs");
   OperatingCondition c = operatingCondition(m, opt.model);

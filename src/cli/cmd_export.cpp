@@ -28,16 +28,6 @@ struct CliOptions {
   bool drop_azimuth = false;
 };
 
-std::vector<std::string> splitList(const std::string& s) {
-  std::vector<std::string> out;
-  std::stringstream in(s);
-  for (std::string item; std::getline(in, item, ',');) {
-    const auto b = item.find_first_not_of(' '), e = item.find_last_not_of(' ');
-    if (b != std::string::npos) out.push_back(item.substr(b, e - b + 1));
-  }
-  return out;
-}
-
 // Fails before any computation when a name is unknown.
 void checkNames(const Model& m, const std::vector<std::string>& inputs, const std::vector<std::string>& outputs) {
   auto list = [](const auto& items) {

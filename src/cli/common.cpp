@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <sstream>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -93,6 +94,16 @@ void runWithCaseSource(const std::string& case_path, const std::function<void()>
     if (what.rfind(case_path + ":", 0) == 0) throw;  // already named
     throw ComputeError(case_path + ": " + what);
   }
+}
+
+std::vector<std::string> splitList(const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream in(s);
+  for (std::string item; std::getline(in, item, ',');) {
+    const auto b = item.find_first_not_of(' '), e = item.find_last_not_of(' ');
+    if (b != std::string::npos) out.push_back(item.substr(b, e - b + 1));
+  }
+  return out;
 }
 
 std::function<void(int, int)> sweepProgress(const std::string& command) {

@@ -33,6 +33,9 @@ void addModelOptions(CLI::App& cmd, ModelOptions& opt, bool with_rpm = true);
 /// --set applied before the model is built. --rpm does not change the model: see operatingCondition.
 Model loadModel(const ModelOptions& opt);
 
+/// "a, b,c" → {"a", "b", "c"}: a comma-separated list of names (--inputs, --outputs), blanks trimmed.
+std::vector<std::string> splitList(const std::string& s);
+
 /// Checks solved operating points against the model's range of validity (checkPointValidity).
 /// Problems are printed on stderr as "whirl: warning: CASE: <where>: <problem>" and returned (for
 /// the metadata of the outputs) when --allow-invalid-point is given; otherwise the first one is a
