@@ -120,11 +120,7 @@ void nrel5mwAeroTrim(benchmark::State& state) {
   int evaluations = 0;
   for (auto _ : state) {
     evaluations = 0;
-    for (double w : parseRange("3:1:25", "--wind")) {
-      const SteadyState s = trimAtWindSpeed(m, w);
-      evaluations += s.evaluations;
-      benchmark::DoNotOptimize(s.aero_torque);
-    }
+    for (const SteadyState& s : trimSchedule(m, parseRange("3:1:25", "--wind"))) evaluations += s.evaluations;
   }
   state.counters["torque_evaluations"] = evaluations;
 }

@@ -176,6 +176,9 @@ OperatingPoint solveOperatingPoint(const Model& m, const OperatingPoint& start, 
                          " Newton iterations: residual " + std::to_string(es(worst)) + " on DOF '" +
                          m.dofs[op.solved[worst]].name + "'");
     }
+    // The AD passes see the element inflows of the residual just evaluated: hand them its BEM roots
+    // (aero_section.hxx) instead of solving every element again.
+    jw.ws.bem = ws.bem;
     const MatX J = residualJacobian(m, jw, op.q, op.qd, op.qdd, op.u, Wrt::Q, op.solved);
     MatX K(ns, ns);
     for (int r = 0; r < ns; ++r) K.row(r) = -J.row(op.solved[r]);

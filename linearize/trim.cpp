@@ -1,8 +1,13 @@
 #include "linearize/trim.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
+#include <limits>
 #include <numbers>
+#include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "src/dynamics/generator_torque.hpp"
@@ -51,6 +56,16 @@ class TorqueBalance {
   }
 
   Balance operator()(double omega, double pitch) {
+    for (const auto& [w, p, b] : done_)
+      if (w == omega && p == pitch) return b;  // the root finder's last point, evaluated again at the end
+    done_.push_back({omega, pitch, evaluate(omega, pitch)});
+    return std::get<2>(done_.back());
+  }
+
+  int evaluations = 0;
+
+ private:
+  Balance evaluate(double omega, double pitch) {
     ++evaluations;
     Balance b;
     const int az = m_.roles.azimuth.front();
@@ -86,9 +101,6 @@ class TorqueBalance {
     return b;
   }
 
-  int evaluations = 0;
-
- private:
   const Model& m_;
   double wind_;
   const TrimOptions& opt_;
@@ -97,6 +109,7 @@ class TorqueBalance {
   std::vector<double> scale_ = std::vector<double>(static_cast<std::size_t>(opt_.azimuths), 0.0);
   VecX e_, y_;
   int tower_ = -1;
+  std::vector<std::tuple<double, double, Balance>> done_;
 };
 
 // Checks what a steady state needs; `at` starts every message.
@@ -135,7 +148,48 @@ SteadyState steadyState(const Model& m, const OperatingCondition& c, const TrimO
   return stateOf(m, cp, b, balance.evaluations);
 }
 
+namespace {
+
+// A root of the decreasing function f on [lo, hi] (f(lo) > 0 > f(hi) known as flo, fhi), searched
+// first in [g − δ, g + δ] around the guess g: one or two evaluations next to g usually bracket it,
+// and Brent then needs a few steps instead of a dozen on the whole range. `outer` evaluates f at an
+// end not known yet (NaN in flo/fhi) when the root is not next to g.
+template <class F>
+BrentResult guessedRoot(F&& f, double lo, double hi, double flo, double fhi, double g, double delta, double ftol,
+                        const std::function<double(double)>& outer) {
+  g = std::clamp(g, lo, hi);
+  const double fg = f(g);
+  if (std::abs(fg) < ftol) return {g, fg, 1, true};
+  double a, b, fa, fb;
+  if (fg > 0) {  // the root is above g
+    const double g2 = std::min(hi, g + delta);
+    const double f2 = g2 == hi && !std::isnan(fhi) ? fhi : f(g2);
+    if (f2 <= 0) {
+      a = g, fa = fg, b = g2, fb = f2;
+    } else {
+      a = g2, fa = f2, b = hi, fb = std::isnan(fhi) ? outer(hi) : fhi;
+    }
+  } else {  // below g
+    const double g2 = std::max(lo, g - delta);
+    const double f2 = g2 == lo && !std::isnan(flo) ? flo : f(g2);
+    if (f2 >= 0) {
+      a = g2, fa = f2, b = g, fb = fg;
+    } else {
+      a = lo, fa = std::isnan(flo) ? outer(lo) : flo, b = g2, fb = f2;
+    }
+  }
+  if (fa == 0) return {a, fa, 0, true};
+  if (fb == 0) return {b, fb, 0, true};
+  return brent(f, a, b, fa, fb, ftol, 1e-10, 100);
+}
+
+}  // namespace
+
 SteadyState trimAtWindSpeed(const Model& m, double wind, const TrimOptions& opt) {
+  return trimAtWindSpeed(m, wind, TrimGuess{}, opt);
+}
+
+SteadyState trimAtWindSpeed(const Model& m, double wind, const TrimGuess& guess, const TrimOptions& opt) {
   const std::string at = "trim at " + std::to_string(wind) + " m/s: ";
   requireSteadyModel(m, at);
   if (!m.generator.active()) throw InputError(at + "the model has no generator torque law (ServoDyn VSContrl = 1)");
@@ -152,14 +206,21 @@ SteadyState trimAtWindSpeed(const Model& m, double wind, const TrimOptions& opt)
   const Balance at_rated = balance(rated, opt.min_pitch);
   double omega = rated, pitch = opt.min_pitch;
   bool above = false;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
   if (at_rated.f > 0) {
     // Above rated: pitch to feather until the excess torque is gone.
-    const Balance top = balance(rated, opt.max_pitch);
-    if (top.f > 0)
-      throw ComputeError(at + "the aerodynamic torque exceeds the rated generator torque even at " +
-                         std::to_string(opt.max_pitch * 180 / std::numbers::pi) + " deg pitch");
-    const BrentResult r = brent([&](double p) { return balance(rated, p).f; }, opt.min_pitch, opt.max_pitch, at_rated.f,
-                                top.f, ftol, 1e-10, 100);
+    auto f = [&](double p) { return balance(rated, p).f; };
+    auto top = [&](double p) {
+      const double ft = f(p);
+      if (ft > 0)
+        throw ComputeError(at + "the aerodynamic torque exceeds the rated generator torque even at " +
+                           std::to_string(opt.max_pitch * 180 / std::numbers::pi) + " deg pitch");
+      return ft;
+    };
+    const BrentResult r =
+        guess.pitch > opt.min_pitch
+            ? guessedRoot(f, opt.min_pitch, opt.max_pitch, at_rated.f, nan, guess.pitch, 0.01, ftol, top)
+            : brent(f, opt.min_pitch, opt.max_pitch, at_rated.f, top(opt.max_pitch), ftol, 1e-10, 100);
     if (!r.converged) throw ComputeError(at + "the pitch trim did not converge");
     pitch = r.x;
     above = true;
@@ -168,13 +229,19 @@ SteadyState trimAtWindSpeed(const Model& m, double wind, const TrimOptions& opt)
     // opt.min_tsr (near standstill BEM has no solution on much of the blade, and AeroDyn itself
     // blends the induction off at low tip-speed ratios).
     const double low = std::min(0.5 * rated, opt.min_tsr * wind / m.aero.rotor_radius);
-    const Balance slow = balance(low, opt.min_pitch);
-    if (slow.f <= 0)
-      throw ComputeError(at + "no torque balance between " + rpmText(low) + " (tip-speed ratio " +
-                         std::to_string(opt.min_tsr) + ") and rated " + rpmText(rated) +
-                         ": the aerodynamic torque does not overcome the generator torque law (below cut-in?)");
-    const BrentResult r = brent([&](double w) { return balance(w, opt.min_pitch).f; }, low, rated, slow.f, at_rated.f,
-                                ftol, 1e-10, 100);
+    auto f = [&](double w) { return balance(w, opt.min_pitch).f; };
+    auto slow = [&](double w) {
+      const double fs = f(w);
+      if (fs <= 0)
+        throw ComputeError(at + "no torque balance between " + rpmText(low) + " (tip-speed ratio " +
+                           std::to_string(opt.min_tsr) + ") and rated " + rpmText(rated) +
+                           ": the aerodynamic torque does not overcome the generator torque law (below cut-in?)");
+      return fs;
+    };
+    const BrentResult r =
+        guess.rotor_speed > low && guess.rotor_speed < rated
+            ? guessedRoot(f, low, rated, nan, at_rated.f, guess.rotor_speed, 0.01 * guess.rotor_speed, ftol, slow)
+            : brent(f, low, rated, slow(low), at_rated.f, ftol, 1e-10, 100);
     if (!r.converged) throw ComputeError(at + "the rotor-speed trim did not converge");
     omega = r.x;
   }
@@ -195,9 +262,30 @@ SweepPoint sweepPointOf(const SteadyState& t) {
   return p;
 }
 
+std::vector<SteadyState> trimSchedule(const Model& m, const std::vector<double>& winds, const TrimOptions& opt) {
+  std::vector<SteadyState> out;
+  for (double w : winds) {
+    TrimGuess g;
+    const std::size_t n = out.size();
+    if (n >= 1) {
+      const SteadyState& p = out[n - 1];
+      const double pw = *p.condition.wind_speed;
+      g.rotor_speed = p.condition.rotor_speed / pw * w;  // the tip-speed ratio held
+      g.pitch = *p.condition.collective_pitch;
+      if (n >= 2 && out[n - 2].above_rated && p.above_rated) {
+        const SteadyState& pp = out[n - 2];
+        const double dw = pw - *pp.condition.wind_speed;
+        if (dw != 0) g.pitch += (g.pitch - *pp.condition.collective_pitch) / dw * (w - pw);
+      }
+    }
+    out.push_back(trimAtWindSpeed(m, w, g, opt));
+  }
+  return out;
+}
+
 std::vector<SweepPoint> trimmedPoints(const Model& m, const std::string& spec, const TrimOptions& opt) {
   std::vector<SweepPoint> points;
-  for (double w : parseRange(spec, "--wind")) points.push_back(sweepPointOf(trimAtWindSpeed(m, w, opt)));
+  for (const SteadyState& s : trimSchedule(m, parseRange(spec, "--wind"), opt)) points.push_back(sweepPointOf(s));
   return points;
 }
 

@@ -50,6 +50,23 @@ SteadyState steadyState(const Model& model, const OperatingCondition& condition,
 /// (wind too low to turn the rotor, rated power not reachable below the maximum pitch).
 SteadyState trimAtWindSpeed(const Model& model, double wind_speed, const TrimOptions& opt = {});
 
+/// Where the trim at a wind speed is expected, from its neighbours in a schedule: the search brackets
+/// the root next to it first (a few torque evaluations instead of a dozen) and falls back to the whole
+/// range when the balance is not there.
+struct TrimGuess {
+  double rotor_speed = 0;  ///< [rad/s], used below rated
+  double pitch = 0;        ///< [rad], used above rated
+};
+
+/// As above, the search starting next to `guess`. The result equals the unguessed trim to the trim's
+/// tolerance (not bit for bit).
+SteadyState trimAtWindSpeed(const Model& model, double wind_speed, const TrimGuess& guess, const TrimOptions& opt = {});
+
+/// The trimmed points at increasing or decreasing wind speeds, each search started from its
+/// predecessors (tip-speed ratio held, pitch extrapolated linearly in the wind speed).
+std::vector<SteadyState> trimSchedule(const Model& model, const std::vector<double>& wind_speeds,
+                                      const TrimOptions& opt = {});
+
 /// The sweep point of a trimmed point: its rotor speed [rpm], wind speed and pitch [deg] as labels,
 /// and its condition.
 SweepPoint sweepPointOf(const SteadyState& t);

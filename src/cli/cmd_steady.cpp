@@ -100,7 +100,7 @@ void run(const SteadyOptions& opt) {
   const auto start = std::chrono::steady_clock::now();
   std::vector<Row> rows;
   if (!opt.wind_range.empty()) {
-    for (double w : parseRange(opt.wind_range, "--wind")) rows.push_back(rowOf(m, trimAtWindSpeed(m, w, trim)));
+    for (const SteadyState& s : trimSchedule(m, parseRange(opt.wind_range, "--wind"), trim)) rows.push_back(rowOf(m, s));
   } else {
     for (const SweepPoint& p : readSchedule(opt.schedule)) {
       if (!p.wind_speed) throw InputError(opt.schedule + ": the schedule has no wind speed column");

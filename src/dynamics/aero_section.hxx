@@ -3,6 +3,9 @@
 /// One blade element's loads per unit span from its relative velocity: AeroDyn's BEMT
 /// (src/aero/bem.hpp) with the frozen wake of an operating point, or with the induction solved for
 /// the current inflow (quasi-steady, its derivative by the implicit-function theorem).
+#include <cmath>
+#include <type_traits>
+
 #include "src/aero/bem.hpp"
 #include "src/dynamics/scalar.hpp"
 #include "src/dynamics/workspace.hpp"
@@ -51,9 +54,14 @@ SectionState<T> bemSection(const AeroModel& am, const AeroStation& st, const T& 
   aero::BemStation b = bemStation(am, st, valueOf(r));
   b.theta = valueOf(theta);
   const double x = valueOf(vx), y = valueOf(vy);
-  // The root depends on the values only: reuse it when they are the same bits (the AD chunks of one
-  // point), solve otherwise.
-  if (!(root.valid && root.vx == x && root.vy == y && root.theta == b.theta && root.r == b.r)) {
+  // The root depends on the values only: reuse it when they are the same bits, solve otherwise. An
+  // AD pass, which reads only derivatives, also takes a root solved at values equal to round-off
+  // (the double residual of the same point, whose kinematics rounds differently, or another chunk):
+  // the loads' derivatives then differ from those at the exact root by that round-off only.
+  const double tol = std::is_same_v<T, double> ? 0.0 : 1e-12;
+  const double vscale = tol * (std::abs(x) + std::abs(y));
+  if (!(root.valid && std::abs(root.vx - x) <= vscale && std::abs(root.vy - y) <= vscale &&
+        std::abs(root.theta - b.theta) <= tol && std::abs(root.r - b.r) <= tol * b.r)) {
     const aero::BemSolution sol = aero::solveInflow(b, x, y, am.bem);
     root = BemRoot{true, x, y, b.theta, b.r, sol.phi, sol.a, sol.ap};
   }
