@@ -37,10 +37,13 @@ PeriodicLinearization linearizePeriodic(const Model& m, const OperatingPoint& st
     p.azimuths.push_back(psi);
     p.points.push_back(op);
     guess = op;
-    // The equilibrium moves smoothly with the azimuth: extrapolating the last two leaves the chord
-    // iterations a residual ~10× smaller to remove than starting from the last one.
-    if (k > 0)
-      for (int i : op.solved) guess.q(i) = 2 * op.q(i) - p.points[p.points.size() - 2].q(i);
+    // The equilibrium moves smoothly with the azimuth: extrapolating the last two (three) leaves the
+    // chord iterations a residual ~10× (~100×) smaller to remove than starting from the last one.
+    const std::size_t np = p.points.size();
+    if (np >= 3)
+      for (int i : op.solved) guess.q(i) = 3 * op.q(i) - 3 * p.points[np - 2].q(i) + p.points[np - 3].q(i);
+    else if (np == 2)
+      for (int i : op.solved) guess.q(i) = 2 * op.q(i) - p.points[np - 2].q(i);
   }
   return p;
 }

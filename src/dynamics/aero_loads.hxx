@@ -14,8 +14,9 @@ namespace detail {
 
 /// Wind velocity at height z (ground frame): U (z / z_ref)^α along the propagation direction, tilted
 /// by the upflow angle (InflowWind's steady wind, WindType = 1).
+/// `direction` is windDirection(w), computed once per load evaluation.
 template <class TK, class T>
-Vec3T<T> steadyWind(const SteadyWind& w, const T& speed, const TK& z) {
+Vec3T<T> steadyWind(const SteadyWind& w, const Vec3& direction, const T& speed, const TK& z) {
   T U = speed;
   if (w.shear_exponent != 0.0) {
     using std::pow;
@@ -23,8 +24,14 @@ Vec3T<T> steadyWind(const SteadyWind& w, const T& speed, const TK& z) {
     if (valueOf(ratio) > 0) U = U * T(TK(pow(ratio, w.shear_exponent)));
     else U = T(0);
   }
+  return Vec3T<T>(U * direction(0), U * direction(1), U * direction(2));
+}
+
+/// Unit vector of the steady wind (ground frame): along the propagation direction, tilted up by the
+/// upflow angle.
+inline Vec3 windDirection(const SteadyWind& w) {
   const double cu = std::cos(w.upflow), su = std::sin(w.upflow);
-  return Vec3T<T>(U * (cu * std::cos(w.direction)), U * (-cu * std::sin(w.direction)), U * su);
+  return Vec3(cu * std::cos(w.direction), -cu * std::sin(w.direction), su);
 }
 
 }  // namespace detail
@@ -42,6 +49,7 @@ void addAeroLoads(const Model& m, Workspace<TK>& ws, const VecXT<TK>& q, const V
   const FrameState<TK>& hub = ws.frames[am.hub_body];
   const Vec3T<TK> disk = hub.R.col(0);
   const T speed = m.roles.wind_speed_input >= 0 ? u(m.roles.wind_speed_input) : T(0);
+  const Vec3 wind_dir = detail::windDirection(am.wind);
   if (record) *record = AeroRecord{};
   int index = 0;  // element over all blades
   for (std::size_t bi = 0; bi < am.blades.size(); ++bi) {
@@ -57,6 +65,11 @@ void addAeroLoads(const Model& m, Workspace<TK>& ws, const VecXT<TK>& q, const V
     // The body turned back by its pitch: AeroDyn's blade frame without pitch (aero_model.hpp).
     const Mat3T<TK> Rnp = f.R * axisRotation(body.axis, TK(-pitch));
     const Vec3T<TK> xa = Rnp.col(1), ya = Rnp.col(2), za = Rnp.col(0);
+    // The elements' generalized forces summed before they are projected (Kane: the partial velocities
+    // of a point are those of the body frame plus the shape functions at it): the frame part is the
+    // resultant force and moment about the body origin, the elastic part Σ_k D_kj Σ_el P_kᵀ F. One
+    // projection per blade instead of one per element.
+    detail::BodyLoadSum<T> sum(body.inertia.ne, body.points[blade.stations.front().point].P.cols());
     for (std::size_t si = 0; si < blade.stations.size(); ++si, ++index) {
       const AeroStation& st = blade.stations[si];
       const BodyPoint& pt = body.points[st.point];
@@ -72,10 +85,12 @@ void addAeroLoads(const Model& m, Workspace<TK>& ws, const VecXT<TK>& q, const V
       const Vec3T<TK> vel = f.v + f.w.cross(Rs) + f.R * sd;
       // Out-of-plane slope of the deflected span axis (1, θz, −θy): the annulus frame's tilt.
       const Vec3T<TK> span = f.R * Vec3T<TK>(TK(1), rot(2), -rot(1));
-      const TK slope = atan2(span.dot(xa), span.dot(za));
-      const TK cs = cos(slope), ss = sin(slope);
+      // cos and sin of the slope atan2(span·xa, span·za), without the angle.
+      const TK sx = span.dot(xa), sz = span.dot(za);
+      const TK h = sqrt(sx * sx + sz * sz);
+      const TK cs = sz / h, ss = sx / h;
       const Vec3T<TK> xn = cs * xa - ss * za, zn = ss * xa + cs * za;
-      const Vec3T<T> rel = detail::steadyWind(am.wind, speed, pos(2)) - vel.template cast<T>();
+      const Vec3T<T> rel = detail::steadyWind(am.wind, wind_dir, speed, pos(2)) - vel.template cast<T>();
       const T vx = rel.dot(xn.template cast<T>()), vy = rel.dot(ya.template cast<T>());
       const Vec3T<TK> d = pos - hub.r;
       const Vec3T<TK> dr = d - d.dot(disk) * disk;
@@ -95,9 +110,7 @@ void addAeroLoads(const Model& m, Workspace<TK>& ws, const VecXT<TK>& q, const V
       const aero::SectionLoads<T>& L = sec.loads;
       const Vec3T<T> Fg = L.fx * xn.template cast<T>() + L.fy * ya.template cast<T>();
       const Vec3T<T> Mg = L.mz * zn.template cast<T>();
-      const Mat3T<T> Rt = f.R.transpose().template cast<T>();
-      const Vec3T<T> Fb = Rt * Fg, Mb = Rt * Mg;
-      detail::addPointForce(m, ws, blade.body, st.point, Fb, Mb, T(st.weight), e);
+      sum.add(pt, f.R, Rs, Fg, Mg, st.weight);
       if (totals) {
         const Vec3T<T> axis = disk.template cast<T>();
         totals->thrust += T(st.weight) * Fg.dot(axis);
@@ -126,6 +139,7 @@ void addAeroLoads(const Model& m, Workspace<TK>& ws, const VecXT<TK>& q, const V
         }
       }
     }
+    sum.project(m, ws, blade.body, e);
   }
 }
 

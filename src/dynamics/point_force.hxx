@@ -37,4 +37,47 @@ void addPointForce(const Model& m, const Workspace<TK>& ws, int b, int point, co
   }
 }
 
+/// Point loads on one body summed for a single projection (addPointForce for many points):
+/// e(support) += Jvᵀ ΣF + Jwᵀ ΣM (world frame, moments about the body origin) and
+/// e(elastic j) += Σ_k D_kj (Σ P_kᵀ F_b) + Σ θ_jᵀ M_b (body frame). Results equal the sum of
+/// addPointForce calls to round-off. Every point must have the same number of basis functions nc.
+template <class T>
+class BodyLoadSum {
+ public:
+  BodyLoadSum(int ne, Eigen::Index nc) : fk_(VecXT<T>::Zero(nc)), gtheta_(VecXT<T>::Zero(ne)) {}
+
+  /// Adds weight · (F, M) at point pt (world components Fw, Mw; Rs = R s its offset from the body
+  /// origin, world frame; R the body orientation).
+  template <class TK>
+  void add(const BodyPoint& pt, const Mat3T<TK>& R, const Vec3T<TK>& Rs, const Vec3T<T>& Fw, const Vec3T<T>& Mw,
+           double weight) {
+    const Vec3T<T> wF = weight * Fw, wM = weight * Mw;
+    F_ += wF;
+    M_ += wM + Vec3T<T>(Rs.template cast<T>().cross(wF));
+    const Mat3T<T> Rt = R.transpose().template cast<T>();
+    const Vec3T<T> Fb = Rt * wF, Mb = Rt * wM;
+    for (Eigen::Index k = 0; k < fk_.size(); ++k) fk_(k) += pt.P.col(k).dot(Fb);
+    for (Eigen::Index j = 0; j < gtheta_.size(); ++j) gtheta_(j) += pt.theta.col(j).dot(Mb);
+  }
+
+  /// Adds the sums to the generalized forces of body b's support and elastic coordinates.
+  template <class TK>
+  void project(const Model& m, const Workspace<TK>& ws, int b, VecXT<T>& e) const {
+    const FrameState<TK>& f = ws.frames[b];
+    for (int sd : m.support[b])
+      e(sd) += f.Jv.col(sd).template cast<T>().dot(F_) + f.Jw.col(sd).template cast<T>().dot(M_);
+    const Body& body = m.bodies[b];
+    const MatXT<TK>& D = ws.basis[b].D;
+    for (Eigen::Index j = 0; j < gtheta_.size(); ++j) {
+      T g = gtheta_(j);
+      for (Eigen::Index k = 0; k < fk_.size(); ++k) g += T(D(k, j)) * fk_(k);
+      e(body.elastic_dof + static_cast<int>(j)) += g;
+    }
+  }
+
+ private:
+  Vec3T<T> F_ = Vec3T<T>::Zero(), M_ = Vec3T<T>::Zero();
+  VecXT<T> fk_, gtheta_;
+};
+
 }  // namespace whirl::detail
