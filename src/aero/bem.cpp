@@ -261,7 +261,16 @@ BemSolution solveInflow(const BemStation& s, double Vx, double Vy, const BemOpti
                        num(Vy) + " m/s)");
   BemSolution out;
   double phi = 0.0;
-  auto R = [&](double p) { return inductions<double>(s, p, Vx, Vy, s.theta, o); };
+  // The root finder's last point is evaluated again for its validity and its inductions: keep it.
+  double last_phi = std::numeric_limits<double>::quiet_NaN();
+  Induction<double> last{};
+  auto R = [&](double p) {
+    if (p != last_phi) {
+      last = inductions<double>(s, p, Vx, Vy, s.theta, o);
+      last_phi = p;
+    }
+    return last;
+  };
 
   if (velocityIsZero(Vx)) {  // BEMT_UnCoupledSolve special cases
     phi = 0.0;
