@@ -254,7 +254,50 @@ T bemResidual(const BemStation& s, const T& phi, const T& Vx, const T& Vy, const
   return inductions<T>(s, phi, Vx, Vy, T(s.theta), o).residual;
 }
 
-BemSolution solveInflow(const BemStation& s, double Vx, double Vy, const BemOptions& o) {
+namespace {
+
+// A root of f in [a, b] (fa, fb of opposite signs) from x0 inside, by secant steps that keep a
+// bracket and fall back to Brent on it when a step leaves it or stalls. Stops as brent() does.
+template <class F>
+BrentResult secantFrom(F&& f, double a, double b, double fa, double fb, double x0, double ftol, double xtol,
+                       int maxit) {
+  int evals = 0;
+  auto shrink = [&](double x, double fx) {
+    if ((fx > 0) == (fa > 0)) a = x, fa = fx;
+    else b = x, fb = fx;
+  };
+  double f0 = f(x0);
+  ++evals;
+  if (std::abs(f0) < ftol) return {x0, f0, evals, true};
+  shrink(x0, f0);
+  // The second point a small step towards the root side: the slope is then the local one.
+  const double h = std::max(1e-7, 1e-7 * std::abs(x0));
+  double x1 = (f0 > 0) == (fa > 0) ? x0 + h : x0 - h;
+  if (!(x1 > a && x1 < b)) x1 = 0.5 * (a + b);
+  double f1 = f(x1);
+  ++evals;
+  if (std::abs(f1) < ftol) return {x1, f1, evals, true};
+  shrink(x1, f1);
+  for (int it = 0; it < 6; ++it) {
+    if (f1 == f0) break;
+    const double x2 = x1 - f1 * (x1 - x0) / (f1 - f0);
+    if (!(x2 > a && x2 < b)) break;
+    const double f2 = f(x2);
+    ++evals;
+    if (std::abs(f2) < ftol || std::abs(x2 - x1) <= 2.0 * DBL_EPSILON * std::abs(x2) + xtol)
+      return {x2, f2, evals, true};
+    shrink(x2, f2);
+    x0 = x1, f0 = f1, x1 = x2, f1 = f2;
+  }
+  BrentResult r = brent(f, a, b, fa, fb, ftol, xtol, maxit);
+  r.evals += evals;
+  return r;
+}
+
+}  // namespace
+
+BemSolution solveInflow(const BemStation& s, double Vx, double Vy, const BemOptions& o,
+                        std::optional<double> phi_hint) {
   checkStation(s);
   if (!std::isfinite(Vx) || !std::isfinite(Vy))
     throw ComputeError("BEM at r = " + num(s.r) + " m: non-finite velocity (Vx = " + num(Vx) + " m/s, Vy = " +
@@ -308,8 +351,10 @@ BemSolution solveInflow(const BemStation& s, double Vx, double Vy, const BemOpti
         phi = hi;
         found = true;
       } else if ((f1 >= 0) != (f2 >= 0)) {
-        const BrentResult b = brent([&](double p) { return R(p).residual; }, lo, hi, f1, f2, o.tolerance,
-                                    o.phi_tolerance, o.max_iter);
+        auto Rp = [&](double p) { return R(p).residual; };
+        const BrentResult b = phi_hint && *phi_hint > lo && *phi_hint < hi
+                                  ? secantFrom(Rp, lo, hi, f1, f2, *phi_hint, o.tolerance, o.phi_tolerance, o.max_iter)
+                                  : brent(Rp, lo, hi, f1, f2, o.tolerance, o.phi_tolerance, o.max_iter);
         out.iterations += b.evals;
         if (!b.converged)
           throw ComputeError("BEM at r = " + num(s.r) + " m, Vx = " + num(Vx) + " m/s, Vy = " + num(Vy) +

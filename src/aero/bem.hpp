@@ -1,4 +1,5 @@
 #pragma once
+#include <optional>
 /// \file
 /// Blade-element momentum (BEM) theory at one blade station, as OpenFAST AeroDyn v15 computes it with
 /// `BEM_Mod = 1` (legacy "NoSweepPitchTwist", BEMTUncoupled.f90 `BEMTU_InductionWithResidual` →
@@ -149,7 +150,14 @@ T bemResidual(const BemStation& s, const T& phi, const T& Vx, const T& Vy, const
 /// FindTestRegion), accepting only valid solutions; special cases as BEMT_UnCoupledSolve: |Vx| < 1e-3 → φ = 0,
 /// else |Vy| < 1e-3 → φ = ±π/2 (sign of Vx). Throws ComputeError naming r, Vx, Vy, θ and the brackets tried
 /// when no bracket holds a valid root (unless o.geometric_fallback), InputError for an invalid station.
-BemSolution solveInflow(const BemStation& s, double Vx, double Vy, const BemOptions& o);
+///
+/// `phi_hint` (optional) is the root of a neighbouring solve of the same element (the previous Newton
+/// iterate of an equilibrium): when it lies inside the bracket AeroDyn's search selects, the root is
+/// searched from it by safeguarded secant steps inside that bracket (a few residuals instead of a
+/// dozen); it is the same root as Brent's wherever the bracket holds one root, and equal to it within
+/// the tolerances. The brackets are selected as without a hint.
+BemSolution solveInflow(const BemStation& s, double Vx, double Vy, const BemOptions& o,
+                        std::optional<double> phi_hint = std::nullopt);
 
 /// Inflow angle as an implicit function of (Vx, Vy, θ): phi0 must solve R at the values of the inputs.
 /// Returns phi0 − R(phi0; Vx, Vy, θ) / ∂R/∂φ(phi0) with ∂R/∂φ in double, so the value is phi0 (to the

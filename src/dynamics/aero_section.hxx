@@ -62,7 +62,9 @@ SectionState<T> bemSection(const AeroModel& am, const AeroStation& st, const T& 
   const double vscale = tol * (std::abs(x) + std::abs(y));
   if (!(root.valid && std::abs(root.vx - x) <= vscale && std::abs(root.vy - y) <= vscale &&
         std::abs(root.theta - b.theta) <= tol && std::abs(root.r - b.r) <= tol * b.r)) {
-    const aero::BemSolution sol = aero::solveInflow(b, x, y, am.bem);
+    // The element's last root starts the search: the equilibrium iterates move it a little.
+    const aero::BemSolution sol =
+        aero::solveInflow(b, x, y, am.bem, root.valid ? std::optional<double>(root.phi) : std::nullopt);
     root = BemRoot{true, x, y, b.theta, b.r, sol.phi, sol.a, sol.ap};
   }
   SectionState<T> s;
