@@ -2,7 +2,7 @@
 /// \file
 /// Campbell diagram output: CSV and JSON tables, Gnuplot data and script, rendered PNG and SVG.
 ///
-/// Files written into the output folder (each atomically, numbers at full precision):
+/// Files written into the output folder (together, as one OutputSet; numbers at full precision):
 /// - `campbell.csv`: columns `rpm,wind_speed,mode,freq_hz,damping_ratio` (wind speed in m/s,
 ///   empty when the point has none; `mode` is the line name), one row per point and line that has a
 ///   mode there, points in sweep order, lines in line order.

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <complex>
 #include <cstdio>
-#include <filesystem>
 #include <numbers>
 #include <sstream>
 
@@ -14,10 +13,9 @@
 #include "linearize/trim.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/common.hpp"
-#include "src/io/atomic_file.hpp"
 #include "src/io/csv.hpp"
 #include "src/io/gnuplot.hpp"
-#include "src/io/staged_files.hpp"
+#include "src/io/output_set.hpp"
 #include "src/model/error.hpp"
 
 namespace whirl::cli {
@@ -56,7 +54,7 @@ std::string scriptOf(const std::string& title, int pairs) {
 void run(const BodeOptions& opt) {
   const Model m = loadModel(opt.model);
   const std::string dir = opt.out.empty() ? defaultOutputFolder(opt.model.case_path) : opt.out;
-  ensureWritableFolder(dir);
+  prepareOutputFolder(dir);
   ExportOptions eo;
   eo.azimuths = opt.azimuths;
   eo.inputs = splitList(opt.inputs);
@@ -90,15 +88,12 @@ void run(const BodeOptions& opt) {
     csv += "\n";
   }
   const int pairs = static_cast<int>(p.model.y.size() * p.model.u.size());
-  StagedFiles files;
-  const std::filesystem::path folder(dir);
-  files.write((folder / "bode.csv").string(), csv);
-  files.write((folder / "bode.gp").string(),
-              scriptOf("Frequency response" + (where.empty() ? std::string() : ": " + where), pairs));
+  OutputSet files(dir);  // table, script and images together
+  files.write("bode.csv", csv);
+  files.write("bode.gp", scriptOf("Frequency response" + (where.empty() ? std::string() : ": " + where), pairs));
+  if (!opt.no_plot) renderGnuplot(files.stagingFolder(), "gnuplot", "bode", dir);
   files.commit();
-  std::vector<std::string> written = files.paths();
-  if (!opt.no_plot)
-    for (auto& image : renderGnuplot(dir, "gnuplot", "bode")) written.push_back(std::move(image));
+  const std::vector<std::string> written = files.paths();
   // The static gain, signed: G(0) = D − C A⁻¹ B (at 0 Hz, whether or not the plot starts there).
   const Eigen::MatrixXcd G0 = frequencyResponse(p.model, {1e-9}).front();
   std::printf("static gain (SI units):\n");

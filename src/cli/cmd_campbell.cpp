@@ -10,7 +10,7 @@
 #include "modal/tracking.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/common.hpp"
-#include "src/io/atomic_file.hpp"
+#include "src/io/output_set.hpp"
 #include "src/io/schedule.hpp"
 #include "src/model/error.hpp"
 #include "src/parallel/session.hpp"
@@ -36,7 +36,7 @@ void run(const CampbellOptions& opt) {
                                          : !opt.schedule.empty() ? readSchedule(opt.schedule)
                                                                  : trimmedPoints(m, opt.wind_range);
   const std::string dir = opt.out.empty() ? defaultOutputFolder(opt.model.case_path) : opt.out;
-  ensureWritableFolder(dir);
+  prepareOutputFolder(dir);
 
   if (parallel::launchedByMpi()) parallel::requirePetsc("mpirun");  // start-up outside the timing
   SweepOptions sweep;

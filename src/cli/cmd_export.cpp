@@ -11,9 +11,8 @@
 #include "linearize/state_space.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/common.hpp"
-#include "src/io/atomic_file.hpp"
 #include "src/io/schedule.hpp"
-#include "src/io/staged_files.hpp"
+#include "src/io/output_set.hpp"
 #include "src/io/state_space_files.hpp"
 #include "src/model/error.hpp"
 #include "src/parallel/session.hpp"
@@ -57,7 +56,7 @@ void run(const CliOptions& opt) {
   const Model base = loadModel(opt.model);
   checkNames(base, in, out);
   const std::string dir = opt.out.empty() ? defaultOutputFolder(opt.model.case_path) : opt.out;
-  ensureWritableFolder(dir);
+  prepareOutputFolder(dir);
 
   std::vector<SweepPoint> points;
   if (!opt.schedule.empty()) {
@@ -102,13 +101,13 @@ void run(const CliOptions& opt) {
       encodeExportPoint, decodeExportPoint, sweep);
   if (parallel::rank() != 0) return;  // under mpirun: rank 0 writes
 
-  StagedFiles files;
+  OutputSet files(dir);  // every file of the run appears at once, or none
   std::string title = e.model_name.substr(0, e.model_name.find(". "));  // ElastoDyn headers run long
   if (title.empty()) title = opt.model.case_path;
   if (opt.format == "mat") {
-    writeStateSpaceMat(e, files.stage(dir + "/statespace.mat"));
+    writeStateSpaceMat(e, files.stage("statespace.mat"));
   } else if (opt.format == "json") {
-    files.write(dir + "/statespace.json", stateSpaceJson(e));
+    files.write("statespace.json", stateSpaceJson(e));
   } else {
     for (size_t j = 0; j < e.points.size(); ++j) {
       const ExportPoint& p = e.points[j];
@@ -116,11 +115,11 @@ void run(const CliOptions& opt) {
       if (e.points.size() == 1) std::snprintf(stem, sizeof stem, "statespace");
       else std::snprintf(stem, sizeof stem, "statespace_%02zu", j + 1);
       if (p.azimuths.empty()) {
-        files.write(dir + "/" + stem + ".1.lin", linFileText(p.model, title));
+        files.write(std::string(stem) + ".1.lin", linFileText(p.model, title));
         continue;
       }
       for (size_t k = 0; k < p.azimuths.size(); ++k)
-        files.write(dir + "/" + stem + "." + std::to_string(k + 1) + ".lin", linFileText(p.azimuths[k], title));
+        files.write(std::string(stem) + "." + std::to_string(k + 1) + ".lin", linFileText(p.azimuths[k], title));
     }
   }
   files.commit();

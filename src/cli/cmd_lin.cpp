@@ -9,7 +9,7 @@
 #include "modal/tracking.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/mode_output.hpp"
-#include "src/io/atomic_file.hpp"
+#include "src/io/output_set.hpp"
 #include "src/io/openfast_lin.hpp"
 #include "src/io/openfast_lin_names.hpp"
 #include "src/model/error.hpp"
@@ -88,7 +88,7 @@ void run(const LinOptions& opt) {
     printModes(d.points[0].modes, d.points[0].coordinates, opt.format, header);
     return;
   }
-  ensureWritableFolder(opt.out);
+  prepareOutputFolder(opt.out);
   d.lines = trackModes(d.points);
   CampbellPlotOptions plot;
   plot.render = !opt.no_plot;

@@ -5,7 +5,7 @@
 #include "linearize/linearize.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/common.hpp"
-#include "src/io/atomic_file.hpp"
+#include "src/io/output_set.hpp"
 #include "src/io/csv.hpp"
 
 namespace whirl::cli {
@@ -34,14 +34,15 @@ void run(const LinearizeOptions& opt) {
   const std::vector<std::string> problems = checkSolvedPoints(opt.model, m, {op});
   const LinearModel lin = linearize(m, op);
   const std::string dir = opt.out.empty() ? defaultOutputFolder(opt.model.case_path) : opt.out;
-  ensureWritableFolder(dir);
+  prepareOutputFolder(dir);
+  OutputSet files(dir);  // the seven files appear together, or none
   const auto states = stateNames(lin.dof_names);
-  writeFileAtomic(dir + "/M.csv", matrixCsv(lin.M, "dof", lin.dof_names, lin.dof_names));
-  writeFileAtomic(dir + "/C.csv", matrixCsv(lin.C, "dof", lin.dof_names, lin.dof_names));
-  writeFileAtomic(dir + "/K.csv", matrixCsv(lin.K, "dof", lin.dof_names, lin.dof_names));
-  writeFileAtomic(dir + "/Q.csv", matrixCsv(lin.Q, "dof", lin.dof_names, lin.input_names));
-  writeFileAtomic(dir + "/A.csv", matrixCsv(lin.A, "state", states, states));
-  writeFileAtomic(dir + "/B.csv", matrixCsv(lin.B, "state", states, lin.input_names));
+  files.write("M.csv", matrixCsv(lin.M, "dof", lin.dof_names, lin.dof_names));
+  files.write("C.csv", matrixCsv(lin.C, "dof", lin.dof_names, lin.dof_names));
+  files.write("K.csv", matrixCsv(lin.K, "dof", lin.dof_names, lin.dof_names));
+  files.write("Q.csv", matrixCsv(lin.Q, "dof", lin.dof_names, lin.input_names));
+  files.write("A.csv", matrixCsv(lin.A, "state", states, states));
+  files.write("B.csv", matrixCsv(lin.B, "state", states, lin.input_names));
   nlohmann::json j;
   j["case"] = opt.model.case_path;
   j["model"] = m.name;
@@ -65,7 +66,8 @@ void run(const LinearizeOptions& opt) {
   j["residual"] = nlohmann::json::object();
   for (size_t k = 0; k < lin.dof_names.size(); ++k) j["residual"][lin.dof_names[k]] = lin.residual(k);
   j["files"] = {"M.csv", "C.csv", "K.csv", "Q.csv", "A.csv", "B.csv"};
-  writeFileAtomic(dir + "/linearization.json", j.dump(2) + "\n");
+  files.write("linearization.json", j.dump(2) + "\n");
+  files.commit();
   std::printf("wrote %s/{M,C,K,Q,A,B}.csv and linearization.json (%d DOFs, %d inputs; equilibrium in %d "
               "iterations, residual %.3g)\n",
               dir.c_str(), static_cast<int>(lin.dofs.size()), m.ninput(), op.iterations, op.residual_norm);

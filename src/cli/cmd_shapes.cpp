@@ -2,17 +2,15 @@
 // (src/fem/mode_shapes.hpp), their ElastoDyn polynomial fits and how the model's current shapes compare.
 #include <CLI/CLI.hpp>
 #include <cstdio>
-#include <filesystem>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "src/cli/commands.hpp"
 #include "src/cli/common.hpp"
-#include "src/io/atomic_file.hpp"
 #include "src/io/case_file.hpp"
 #include "src/io/csv.hpp"
-#include "src/io/staged_files.hpp"
+#include "src/io/output_set.hpp"
 #include "src/model/elastodyn_model.hpp"
 #include "src/model/error.hpp"
 
@@ -114,12 +112,11 @@ void run(const ShapesOptions& opt) {
   else if (opt.format == "json") std::fputs((jsonRows(rows, opt.model.case_path).dump(2) + "\n").c_str(), stdout);
   else std::fputs(table(rows).c_str(), stdout);
   if (opt.out.empty()) return;
-  ensureWritableFolder(opt.out);
-  StagedFiles files;
-  const std::filesystem::path dir(opt.out);
-  files.write((dir / "shapes.csv").string(), csvRows(rows));
-  files.write((dir / "shapes.json").string(), jsonRows(rows, opt.model.case_path).dump(2) + "\n");
-  for (const auto& r : rows) files.write((dir / ("shape_" + fileName(r.body + " " + r.shape) + ".csv")).string(), shapeCsv(r.mode));
+  prepareOutputFolder(opt.out);
+  OutputSet files(opt.out);
+  files.write("shapes.csv", csvRows(rows));
+  files.write("shapes.json", jsonRows(rows, opt.model.case_path).dump(2) + "\n");
+  for (const auto& r : rows) files.write("shape_" + fileName(r.body + " " + r.shape) + ".csv", shapeCsv(r.mode));
   files.commit();
   std::fprintf(stderr, "shapes: wrote %zu files to %s\n", files.paths().size(), opt.out.c_str());
 }

@@ -4,17 +4,15 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <numbers>
 
 #include "linearize/trim.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/common.hpp"
-#include "src/io/atomic_file.hpp"
 #include "src/io/csv.hpp"
 #include "src/io/gnuplot.hpp"
 #include "src/io/schedule.hpp"
-#include "src/io/staged_files.hpp"
+#include "src/io/output_set.hpp"
 #include "src/model/error.hpp"
 
 namespace whirl::cli {
@@ -94,7 +92,7 @@ void run(const SteadyOptions& opt) {
   if (!m.aero.active())
     throw InputError(opt.model.case_path + ": the model has no aerodynamics (an OpenFAST deck with CompAero = 2)");
   const std::string dir = opt.out.empty() ? defaultOutputFolder(opt.model.case_path) : opt.out;
-  ensureWritableFolder(dir);
+  prepareOutputFolder(dir);
   TrimOptions trim;
   trim.azimuths = opt.azimuths;
   const auto start = std::chrono::steady_clock::now();
@@ -108,14 +106,12 @@ void run(const SteadyOptions& opt) {
       rows.push_back(rowOf(m, steadyState(m, c, trim)));
     }
   }
-  StagedFiles files;
-  const std::filesystem::path folder(dir);
-  files.write((folder / "steady.csv").string(), csvOf(m, rows));
-  files.write((folder / "steady.gp").string(), scriptOf("Steady operating points: " + m.name.substr(0, 60)));
+  OutputSet files(dir);  // table, script and images together
+  files.write("steady.csv", csvOf(m, rows));
+  files.write("steady.gp", scriptOf("Steady operating points: " + m.name.substr(0, 60)));
+  if (!opt.no_plot) renderGnuplot(files.stagingFolder(), "gnuplot", "steady", dir);
   files.commit();
-  std::vector<std::string> written = files.paths();
-  if (!opt.no_plot)
-    for (auto& image : renderGnuplot(dir, "gnuplot", "steady")) written.push_back(std::move(image));
+  const std::vector<std::string> written = files.paths();
   std::printf("%8s %9s %8s %10s %10s %9s %7s %7s %6s\n", "wind", "rpm", "pitch", "P_aero kW", "P_gen kW", "T kN", "Cp",
               "Ct", "TSR");
   const double eff = m.generator.active() ? m.generator.efficiency : 1.0;

@@ -10,7 +10,7 @@
 #include "modal/tracking.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/common.hpp"
-#include "src/io/atomic_file.hpp"
+#include "src/io/output_set.hpp"
 #include "src/io/csv.hpp"
 #include "src/io/schedule.hpp"
 #include "src/model/error.hpp"
@@ -47,7 +47,7 @@ void run(const StudyOptions& opt) {
     if (n.empty() || n.find('=') != std::string::npos)
       throw InputError(where(opt.params, 1, n, "not a --set key"));
   const std::string dir = opt.out.empty() ? defaultOutputFolder(opt.model.case_path) : opt.out;
-  ensureWritableFolder(dir);
+  prepareOutputFolder(dir);
 
   if (parallel::launchedByMpi()) parallel::requirePetsc("mpirun");  // start-up outside the timing
   const auto start = std::chrono::steady_clock::now();
@@ -89,8 +89,10 @@ void run(const StudyOptions& opt) {
       a = b + 1;
     }
   }
-  const std::string path = dir + "/study.csv";
-  writeFileAtomic(path, csv);
+  OutputSet files(dir);
+  files.write("study.csv", csv);
+  files.commit();
+  const std::string path = files.paths().front();
   std::printf("wrote %s\n%zu parameter sets x %zu operating points, %.2f s", path.c_str(), S, P,
               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   if (parallel::size() > 1) std::printf(" on %d MPI ranks", parallel::size());

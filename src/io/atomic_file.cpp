@@ -1,5 +1,6 @@
 #include "src/io/atomic_file.hpp"
 
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -36,6 +37,15 @@ void writeFileAtomic(const std::string& path, const std::string& content) {
       throw InputError(path + ": write failed (disk full?)");
     }
   }
+  // On disk before the rename: after a crash the name holds the old content or the new, never an empty file.
+  const int fd = ::open(tmp.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0 || ::fsync(fd) != 0) {
+    const int err = errno;
+    if (fd >= 0) ::close(fd);
+    std::remove(tmp.c_str());
+    throw InputError(path + ": cannot flush to disk (" + std::strerror(err) + ")");
+  }
+  ::close(fd);
   std::error_code ec;
   fs::rename(tmp, target, ec);
   if (ec) {

@@ -58,11 +58,12 @@ bool nonEmptyFile(const fs::path& p) {
 
 }  // namespace
 
-std::vector<std::string> renderGnuplot(const std::string& folder, const std::string& gnuplot, const std::string& stem) {
-  const fs::path dir(folder);
+std::vector<std::string> renderGnuplot(const std::string& folder, const std::string& gnuplot, const std::string& stem,
+                                       const std::string& shown_folder) {
+  const fs::path dir(folder), shown(shown_folder.empty() ? folder : shown_folder);
   const std::string program = findProgram(gnuplot);
   if (program.empty()) {
-    std::cerr << "whirl: note: " << gnuplot << " not found on PATH; render with: cd " << dir.string()
+    std::cerr << "whirl: note: " << gnuplot << " not found on PATH; render with: cd " << shown.string()
               << " && gnuplot " << stem << ".gp" << std::endl;
     return {};
   }
@@ -80,7 +81,7 @@ std::vector<std::string> renderGnuplot(const std::string& folder, const std::str
     }
   }
   if (rc != 0 || written.size() != 2) {
-    std::cerr << "whirl: warning: " << (dir / script).string() << ": " << program
+    std::cerr << "whirl: warning: " << (shown / script).string() << ": " << program
               << (rc == 0 ? " did not write both images" : " failed (exit status " + std::to_string(rc) + ")")
               << "; " << png_name << " and " << svg_name << " are not up to date. The tables are complete." << std::endl;
   }

@@ -21,7 +21,9 @@ std::string gnuplotComment(const std::string& s);
 /// Runs `gnuplot` (a program name on PATH, or a path) on `<stem>.gp` in `folder`, which writes the
 /// files named by the variables png_out and svg_out; renders into temporary names and renames them
 /// to `<stem>.png` and `<stem>.svg`, so a failing Gnuplot leaves no half image. Returns the images
-/// written; a note on stderr when Gnuplot is missing, a warning when it fails.
-std::vector<std::string> renderGnuplot(const std::string& folder, const std::string& gnuplot, const std::string& stem);
+/// written; a note on stderr when Gnuplot is missing, a warning when it fails, both naming
+/// `shown_folder` (default `folder`): the output folder when `folder` is an OutputSet's staging folder.
+std::vector<std::string> renderGnuplot(const std::string& folder, const std::string& gnuplot, const std::string& stem,
+                                       const std::string& shown_folder = "");
 
 }  // namespace whirl

@@ -1,0 +1,47 @@
+#pragma once
+/// \file
+/// Pieces shared by OutputSet::commit() and prepareOutputFolder() (src/io/output_set.hpp): whirl's
+/// names for staging folders, the roll-forward journal, the folder lock, fsync.
+#include <filesystem>
+#include <string>
+
+namespace whirl::output {
+
+namespace fs = std::filesystem;
+
+/// File in a staging folder listing the set's file names, one a line: present = committed.
+inline constexpr const char* kJournal = ".whirl-commit";
+/// Staging folders: `.whirl-<pid>` inside the output folder, `.<name>.whirl-<pid>` beside it.
+inline constexpr const char* kStagingTag = ".whirl-";
+
+/// "message (reason)" of the last errno.
+std::string withErrno(const std::string& message, int err);
+
+/// The process id in `file` when it is `<prefix><digits>` (prefix matched exactly), else −1.
+long pidAfter(const std::string& file, const std::string& prefix);
+
+/// True when no process has id `pid` (kill(pid, 0) gives ESRCH).
+bool processGone(long pid);
+
+/// fsync of a file or folder; throws InputError naming `shown` when it fails.
+void syncPath(const fs::path& p, const std::string& shown);
+
+/// Exclusive flock on a folder for the lifetime of the object; no lock when the folder cannot be
+/// opened (no read permission): commits are then not serialized against each other.
+class FolderLock {
+ public:
+  explicit FolderLock(const fs::path& folder);
+  FolderLock(const FolderLock&) = delete;
+  FolderLock& operator=(const FolderLock&) = delete;
+  ~FolderLock();
+
+ private:
+  int fd_ = -1;
+};
+
+/// Moves every file the journal of `staging` lists, when still there, into `dir`, then fsyncs
+/// `dir`. Idempotent, so a killed roll-forward is completed by running it again. InputError naming
+/// `shown/<name>` when a rename fails.
+void rollForward(const fs::path& staging, const fs::path& dir, const std::string& shown);
+
+}  // namespace whirl::output
