@@ -44,7 +44,7 @@ Model readCase(const std::string& path, const std::vector<CaseOverride>& overrid
   const CaseNode top(doc, source);
   if (!top.isMap()) top.fail("a case file is a map of keys (name, gravity, bodies, ...), this one is empty or a list");
   top.allowKeys({"name", "description", "gravity", "inputs", "bodies", "dofs", "loads", "outputs",
-                 "wind", "aero"});
+                 "wind", "aero", "generator"});
 
   CaseBuild build;
   Model& m = build.model;
@@ -60,6 +60,7 @@ Model readCase(const std::string& path, const std::vector<CaseOverride>& overrid
   assignRoles(build);
   if (const auto o = top.find("outputs")) readOutputs(*o, build);
   readAerodynamics(top, build);
+  if (const auto g = top.find("generator")) readGenerator(*g, build);
   // Body indices of build.beams are those before finalize() sorts the bodies.
   if (beams)
     for (const CaseBuild::Beam& b : build.beams) beams->push_back({m.bodies[b.body].name, b.fem, b.shapes});

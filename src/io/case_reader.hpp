@@ -100,6 +100,11 @@ void readOutputs(const CaseNode& list, CaseBuild& build);
 /// and the rotor outputs. Call after the outputs are read (the names it adds must be free).
 void readAerodynamics(const CaseNode& top, CaseBuild& build);
 
+/// `generator:` (case_generator.cpp): ServoDyn's simple variable-speed torque law on the input named
+/// `torque_input` (whose point loads apply it), the speed from the `dof` output `speed_output`; adds the
+/// outputs GenTq and GenPwr. Call after the outputs and loads are read.
+void readGenerator(const CaseNode& g, CaseBuild& build);
+
 /// Re-throws an InputError from the core (buildBeamBody, shapes, finalize) prefixed with `w`.
 [[noreturn]] void rethrowAt(const Where& w, const std::exception& e);
 

@@ -75,6 +75,19 @@ TEST(CliAero, YamlCaseModesAndCampbellInWind) {
   EXPECT_NE(gust.out, modes.out);  // the wind reaches the aeroelastic damping
 }
 
+TEST(CliAero, YamlCaseSteadyAndCampbellAlongTheWind) {
+  // The case's `generator:` (ServoDyn's law): trimmed below and above rated as an OpenFAST deck.
+  const auto dir = freshDir("yaml_aero_steady");
+  const auto r = whirl("steady " + kYamlAero + " --wind 6:6:18 --no-plot --out '" + dir.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string csv = slurp(dir / "steady.csv");
+  EXPECT_NE(csv.find(",below rated\n"), std::string::npos) << csv;
+  EXPECT_NE(csv.find(",above rated\n"), std::string::npos) << csv;
+  const auto c = whirl("campbell " + kYamlAero + " --wind 6:4:14 --no-plot --out '" + dir.string() + "'");
+  ASSERT_EQ(c.code, 0) << c.err;
+  EXPECT_NE(slurp(dir / "campbell.csv").find(",10,blade"), std::string::npos);  // the wind-speed column
+}
+
 TEST(CliAero, YamlCaseMissingAirfoilNamesTheKey) {
   const auto r = whirl("modes " + kYamlAero + " --set 'aero.airfoils=[nope.dat]'");
   EXPECT_NE(r.code, 0);

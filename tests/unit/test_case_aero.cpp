@@ -9,6 +9,7 @@
 #include "case_file_test_util.hpp"
 #include "linearize/linearize.hpp"
 #include "linearize/operating_point.hpp"
+#include "linearize/trim.hpp"
 #include "tests/unit/aero_case_util.hpp"
 
 namespace whirl {
@@ -138,6 +139,25 @@ TEST(CaseAero, ExampleCaseReadsAndProducesPower) {
   EXPECT_GT(op.aero.thrust, 1e4);
   EXPECT_GT(op.aero.torque, 1e4);
   EXPECT_TRUE(m.findOutput("RtAeroFxh") && m.findOutput("RtAeroMxh") && m.findOutput("RtAeroPwr"));
+}
+
+TEST(CaseAero, GeneratorLawTrimsTheExampleBelowRated) {
+  // The example's `generator:` in ServoDyn's units: VS_RtGnSp 14 rpm, VS_RtTq 1.35e6 N m, VS_Rgn2K
+  // 3400 N m/rpm², VS_SlPc 10 %. Trimmed at 6 m/s (region 2): the law's torque is k ω² at the rotor
+  // speed found, and it balances the aerodynamic torque (direct drive, gear ratio 1).
+  const Model m = readCase(std::string(WHIRL_SOURCE_DIR) + "/cases/aero_rotor/aero_rotor.yaml");
+  ASSERT_TRUE(m.generator.active());
+  EXPECT_EQ(m.inputs[m.roles.generator_torque_input].name, "generator torque");
+  EXPECT_NEAR(m.generator.rated_speed, 14 * std::numbers::pi / 30, 1e-15);
+  EXPECT_NEAR(m.generator.slip, 0.1, 1e-15);
+  EXPECT_EQ(m.generator.efficiency, 1.0);
+  const SteadyState s = trimAtWindSpeed(m, 6.0);
+  EXPECT_FALSE(s.above_rated);
+  const double rpm = s.condition.rotor_speed * 30 / std::numbers::pi;
+  EXPECT_GT(rpm, 5);
+  EXPECT_LT(rpm, 14 / 1.1);  // below region 2½ (synchronous speed 14 / 1.1 rpm)
+  EXPECT_NEAR(s.generator_torque, 3400 * rpm * rpm, 1e-9 * s.generator_torque);
+  EXPECT_NEAR(s.aero_torque, s.generator_torque, 1e-6 * s.generator_torque);
 }
 
 }  // namespace

@@ -110,5 +110,32 @@ TEST_F(CaseAeroErrors, BlocksThatNeedEachOther) {
          "  speed: 8");
 }
 
+TEST_F(CaseAeroErrors, Generator) {
+  base += R"(generator:
+  torque_input: generator torque
+  speed_output: GenSpeed
+  VS_RtGnSp: 14
+  VS_RtTq: 1.35e6
+  VS_Rgn2K: 3400
+  VS_SlPc: 10
+)";
+  base = replaced(base, "inputs:\n", "inputs:\n  - {name: generator torque}\n");
+  base = replaced(base, "dofs:\n  azimuth", "loads:\n  - {type: point, body: hub, moment: [-1, 0, 0], input: generator torque}\n"
+                                          "outputs:\n  - {name: GenSpeed, type: dof, dof: azimuth, order: rate}\ndofs:\n  azimuth");
+  const Model m = readCase(tmp.write("gen.yaml", base));
+  ASSERT_TRUE(m.generator.active());
+  EXPECT_TRUE(m.findOutput("GenTq") && m.findOutput("GenPwr"));
+  expect("  VS_SlPc: 10", "  VS_SlPC: 10", "generator.VS_SlPC: unknown key 'VS_SlPC' (allowed: torque_input, speed_output");
+  expect("  VS_RtGnSp: 14", "  VS_RtGnSp: 0", "generator.VS_RtGnSp: must be positive");
+  expect("  VS_Rgn2K: 3400", "  VS_Rgn2K: -1", "generator.VS_Rgn2K: must not be negative");
+  expect("  VS_SlPc: 10", "  VS_SlPc: 10\n  GenEff: 140", "generator.GenEff: must be in (0, 100] %", "  GenEff");
+  expect("  speed_output: GenSpeed", "  speed_output: RtAeroPwr",
+         "generator.speed_output: output 'RtAeroPwr' must be a dof output of order rate");
+  expect("  speed_output: GenSpeed", "  speed_output: speed", "generator.speed_output: no output named 'speed'");
+  expect("  torque_input: generator torque", "  torque_input: collective pitch",
+         "generator.torque_input: no point load names input 'collective pitch'");
+  expect("  torque_input: generator torque", "  torque_input: torque", "generator.torque_input: no input named 'torque'");
+}
+
 }  // namespace
 }  // namespace whirl
