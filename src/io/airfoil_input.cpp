@@ -197,7 +197,8 @@ aero::Polar airfoil_polar(const AirfoilInput& af, bool use_cm) {
   for (std::size_t k = 0; k < alpha.size(); ++k) alpha[k] = t.alpha_deg[k] * deg;
   std::vector<double> cm = t.cm.empty() || !use_cm ? std::vector<double>(alpha.size(), 0.0) : t.cm;
   const aero::PolarInterp interp = af.interp_order == 3 ? aero::PolarInterp::CubicSpline : aero::PolarInterp::Linear;
-  return aero::makePolar(af.name, alpha, t.cl, t.cd, cm, interp, af.path.string() + ":" + std::to_string(t.first_row_line));
+  return aero::makePolar(af.name, alpha, t.cl, t.cd, cm, interp,
+                         af.path.string() + ":" + std::to_string(t.first_row_line));
 }
 
 }  // namespace whirl::io

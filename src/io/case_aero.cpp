@@ -19,8 +19,8 @@ namespace {
 
 constexpr double kDeg = std::numbers::pi / 180;
 
-const std::vector<std::string> kStationColumns = {"x",       "fraction", "chord", "twist",
-                                                  "twist_deg", "airfoil", "ac_y",  "ac_z"};
+const std::vector<std::string> kStationColumns = {"x",         "fraction", "chord", "twist",
+                                                  "twist_deg", "airfoil",  "ac_y",  "ac_z"};
 
 // An angle from `key` [rad] or `key_deg`, at most one of them.
 double angle(const CaseNode& n, const std::string& key, double fallback) {
@@ -51,8 +51,8 @@ std::pair<Vec3, Mat3> restPose(const Model& m, int body, const Where& w) {
 
 struct PendingBlade {
   AeroBlade blade;
-  CaseNode node;                  // the body's `aero:`
-  std::vector<Vec3> nodes;        // element positions in the body frame (rest)
+  CaseNode node;            // the body's `aero:`
+  std::vector<Vec3> nodes;  // element positions in the body frame (rest)
 };
 
 // The pitch coordinate named by `aero.pitch`: the blade body's own revolute joint about −x (positive
@@ -64,8 +64,9 @@ int pitchDof(const CaseNode& p, int body, CaseBuild& build) {
   if (d.body != body || d.kind != DofKind::Joint || b.joint != JointType::Revolute)
     p.fail("DOF '" + d.name + "' is not the revolute joint of body '" + b.name + "' (the blade's pitch bearing)");
   if ((b.axis.normalized() + Vec3::UnitX()).norm() > 1e-9)
-    p.fail("the pitch joint must turn the blade about its −x axis (joint axis [-1, 0, 0]: positive pitch towards "
-           "feather, as ElastoDyn)");
+    p.fail(
+        "the pitch joint must turn the blade about its −x axis (joint axis [-1, 0, 0]: positive pitch towards "
+        "feather, as ElastoDyn)");
   return k;
 }
 
@@ -105,11 +106,13 @@ PendingBlade readBlade(const CaseNode& n, int body, const CaseBuild::Beam& beam,
   for (int j = 0; j < n_el; ++j) {
     const double id = airfoil.values(j);
     if (id != std::round(id) || id < 1 || id > npolars)
-      airfoil.failAt(j, "value " + std::to_string(j + 1) + " is " + num(id) + ", not an airfoil of aero.airfoils (1 to " +
-                            std::to_string(npolars) + ")");
+      airfoil.failAt(j, "value " + std::to_string(j + 1) + " is " + num(id) +
+                            ", not an airfoil of aero.airfoils (1 to " + std::to_string(npolars) + ")");
     const std::string name = "aero " + std::to_string(j + 1);
     for (const BodyPoint& q : b.points)
-      if (q.name == name) table.fail("body '" + b.name + "' already has a point named '" + name + "' (the blade elements' points are 'aero 1', 'aero 2', …)");
+      if (q.name == name)
+        table.fail("body '" + b.name + "' already has a point named '" + name +
+                   "' (the blade elements' points are 'aero 1', 'aero 2', …)");
     BodyPoint pt = beamPoint(beam.props, beam.shapes, beam.axial_shortening, std::clamp(x(j), 0.0, L), name);
     pt.P(1, 0) += ac_y(j);
     pt.P(2, 0) += ac_z(j);
@@ -176,7 +179,8 @@ void readAerodynamics(const CaseNode& top, CaseBuild& build) {
   for (const CaseNode& b : top.at("bodies").items())
     if (const auto a = b.find("aero")) blade_nodes.push_back({*a, *m.findBody(b.at("name").text())});
   if (!rotor) {
-    if (!blade_nodes.empty()) blade_nodes.front().first.fail("blade elements need the top-level aero: block (hub, airfoils)");
+    if (!blade_nodes.empty())
+      blade_nodes.front().first.fail("blade elements need the top-level aero: block (hub, airfoils)");
     if (wind) wind->fail("the wind acts on blade elements: the case has no aero: block");
     return;
   }
@@ -220,7 +224,8 @@ void readAerodynamics(const CaseNode& top, CaseBuild& build) {
     // AeroDyn's blade frame (aero_model.hpp): body y out of the rotor plane downwind, z in the plane
     // against the rotation, the rotor turning positively about the hub's x.
     if (!(Rb.col(1).dot(axis) > 0) || !(Rb.col(2).dot(axis.cross(Rb.col(0))) < 0))
-      pb.node.fail("body '" + b.name + "' is not in AeroDyn's blade frame: x along the span, y downwind (along the "
+      pb.node.fail("body '" + b.name +
+                   "' is not in AeroDyn's blade frame: x along the span, y downwind (along the "
                    "hub's x, the rotor axis), z in the rotor plane against the rotation (positive about the hub's x)");
     const double hub_radius = (rb - rh).norm();
     if (k == 0) am.hub_radius = hub_radius;

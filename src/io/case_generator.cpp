@@ -16,7 +16,8 @@ void readGenerator(const CaseNode& g, CaseBuild& build) {
   bool applied = false;
   for (const PointLoad& l : m.point_loads) applied = applied || l.input == input;
   if (!applied)
-    in.fail("no point load names input '" + in.text() + "': the law's torque acts through the input's point loads "
+    in.fail("no point load names input '" + in.text() +
+            "': the law's torque acts through the input's point loads "
             "(e.g. a moment on the rotor about the shaft, times the gear ratio)");
   const CaseNode out = g.at("speed_output");
   const auto k = m.findOutput(out.text());

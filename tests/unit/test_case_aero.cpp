@@ -65,6 +65,30 @@ TEST(CaseAero, BladeElementsEqualTheRotorBuiltInCpp) {
   }
 }
 
+TEST(CaseAero, AerodynamicCentreOffsetsAndFractions) {
+  // AeroDyn's BlCrvAC, BlSwpAC as `ac_y`, `ac_z`: the element's point moves off the mean line in body
+  // y, z, and its distance from the apex runs along the offset nodes (AeroDyn's curvilinear zLocal).
+  testing::TempCaseDir tmp;
+  AeroRotorOptions o;
+  o.elements = 3;  // stations 0, 20, 40 m
+  std::string text = test::aeroRotorCase(o);
+  text = testing::replaced(text, "        airfoil: [1, 1, 1]\n",
+                           "        airfoil: [1, 1, 1]\n        ac_y: [0, 0.3, 0.6]\n        ac_z: [0, 0, -0.4]\n");
+  text = testing::replaced(text, "        x: [0, 20, 40]\n        chord", "        fraction: [0, 0.5, 1]\n        chord");
+  tmp.write("thin.dat", test::thinAirfoilFile(o.cd));
+  const Model m = readCase(tmp.write("rotor.yaml", text));
+  const AeroBlade& b = m.aero.blades[0];
+  const Body& body = m.bodies[b.body];
+  EXPECT_NEAR(body.points[b.stations[1].point].P(1, 0), 0.3, 1e-15);
+  EXPECT_NEAR(body.points[b.stations[2].point].P(2, 0), -0.4, 1e-15);
+  EXPECT_NEAR(b.stations[2].span, 40, 1e-12);
+  EXPECT_NEAR(b.stations[1].z - b.stations[0].z, std::hypot(20, 0.3), 1e-12);
+  EXPECT_NEAR(b.stations[2].z - b.stations[1].z, std::sqrt(20 * 20 + 0.3 * 0.3 + 0.4 * 0.4), 1e-12);
+  EXPECT_NEAR(m.aero.tip_radius, b.stations[2].z, 1e-12);
+  // The other blades have no offsets: one tip radius per rotor is the largest.
+  EXPECT_GT(m.aero.tip_radius, m.aero.blades[1].stations[2].z);
+}
+
 TEST(CaseAero, LinearModelEqualsTheRotorBuiltInCpp) {
   // The two paths share the equations; what differs is every number the reader derives (rest-pose
   // geometry, element weights and distances, the polar read back from an airfoil file, the wind and
@@ -82,7 +106,7 @@ TEST(CaseAero, LinearModelEqualsTheRotorBuiltInCpp) {
   EXPECT_LT(relativeDifference(ly.K, lc.K), 1e-12);
   for (const std::string name : {"wind speed", "collective pitch"}) {
     const auto col = [&](const Model& m, const LinearModel& l) { return l.Q.col(*m.findInput(name)); };
-      EXPECT_LT(relativeDifference(col(yaml, ly), col(cpp, lc)), 1e-12) << name;
+    EXPECT_LT(relativeDifference(col(yaml, ly), col(cpp, lc)), 1e-12) << name;
     EXPECT_GT(col(cpp, lc).cwiseAbs().maxCoeff(), 1e3) << name;
   }
   EXPECT_GT(lc.C.cwiseAbs().maxCoeff(), 1e3);  // aerodynamic damping present

@@ -43,7 +43,8 @@ TEST_F(CaseAeroErrors, BaseCaseIsValid) {
 }
 
 TEST_F(CaseAeroErrors, UnknownKeys) {
-  expect("  induction: true", "  inductoin: true", "aero.inductoin: unknown key 'inductoin' (allowed: hub, air_density");
+  expect("  induction: true", "  inductoin: true",
+         "aero.inductoin: unknown key 'inductoin' (allowed: hub, air_density");
   expect("  speed: 8", "  sped: 8", "wind.sped: unknown key 'sped' (allowed: speed, reference_height");
   expect("      pitch: blade 2 pitch", "      pich: blade 2 pitch",
          "bodies.blade 2.aero.pich: unknown key 'pich' (allowed: pitch, stations)");
@@ -81,13 +82,15 @@ TEST_F(CaseAeroErrors, Stations) {
   expect("airfoil: [1, 1, 1, 1]", "airfoil: [1, 1.5, 1, 1]", "value 2 is 1.5, not an airfoil");
   expect("        airfoil: [1, 1, 1, 1]\n", "", "bodies.blade 1.aero.stations: missing column 'airfoil'",
          "        x: [");
-  expect("x: [0, 13.333333333333334, 26.666666666666668, 40]", "x: [0, 40]", "has 4 values, x has 2", "        chord: [");
+  expect("x: [0, 13.333333333333334, 26.666666666666668, 40]", "x: [0, 40]", "has 4 values, x has 2",
+         "        chord: [");
 }
 
 TEST_F(CaseAeroErrors, PitchAndFrame) {
   expect("      pitch: blade 1 pitch", "      pitch: azimuth",
          "bodies.blade 1.aero.pitch: DOF 'azimuth' is not the revolute joint of body 'blade 1'");
-  expect("{type: revolute, axis: [-1, 0, 0], dof: blade 1 pitch}", "{type: revolute, axis: [1, 0, 0], dof: blade 1 pitch}",
+  expect("{type: revolute, axis: [-1, 0, 0], dof: blade 1 pitch}",
+         "{type: revolute, axis: [1, 0, 0], dof: blade 1 pitch}",
          "bodies.blade 1.aero.pitch: the pitch joint must turn the blade about its −x axis",
          "      pitch: blade 1 pitch");
   // Blade 1 turned 180° about its span axis: y upwind, z along the rotation.
@@ -120,12 +123,14 @@ TEST_F(CaseAeroErrors, Generator) {
   VS_SlPc: 10
 )";
   base = replaced(base, "inputs:\n", "inputs:\n  - {name: generator torque}\n");
-  base = replaced(base, "dofs:\n  azimuth", "loads:\n  - {type: point, body: hub, moment: [-1, 0, 0], input: generator torque}\n"
-                                          "outputs:\n  - {name: GenSpeed, type: dof, dof: azimuth, order: rate}\ndofs:\n  azimuth");
+  base = replaced(base, "dofs:\n  azimuth",
+                  "loads:\n  - {type: point, body: hub, moment: [-1, 0, 0], input: generator torque}\n"
+                  "outputs:\n  - {name: GenSpeed, type: dof, dof: azimuth, order: rate}\ndofs:\n  azimuth");
   const Model m = readCase(tmp.write("gen.yaml", base));
   ASSERT_TRUE(m.generator.active());
   EXPECT_TRUE(m.findOutput("GenTq") && m.findOutput("GenPwr"));
-  expect("  VS_SlPc: 10", "  VS_SlPC: 10", "generator.VS_SlPC: unknown key 'VS_SlPC' (allowed: torque_input, speed_output");
+  expect("  VS_SlPc: 10", "  VS_SlPC: 10",
+         "generator.VS_SlPC: unknown key 'VS_SlPC' (allowed: torque_input, speed_output");
   expect("  VS_RtGnSp: 14", "  VS_RtGnSp: 0", "generator.VS_RtGnSp: must be positive");
   expect("  VS_Rgn2K: 3400", "  VS_Rgn2K: -1", "generator.VS_Rgn2K: must not be negative");
   expect("  VS_SlPc: 10", "  VS_SlPc: 10\n  GenEff: 140", "generator.GenEff: must be in (0, 100] %", "  GenEff");
@@ -134,7 +139,8 @@ TEST_F(CaseAeroErrors, Generator) {
   expect("  speed_output: GenSpeed", "  speed_output: speed", "generator.speed_output: no output named 'speed'");
   expect("  torque_input: generator torque", "  torque_input: collective pitch",
          "generator.torque_input: no point load names input 'collective pitch'");
-  expect("  torque_input: generator torque", "  torque_input: torque", "generator.torque_input: no input named 'torque'");
+  expect("  torque_input: generator torque", "  torque_input: torque",
+         "generator.torque_input: no input named 'torque'");
 }
 
 }  // namespace
