@@ -76,7 +76,14 @@ PendingBlade readBlade(const CaseNode& n, int body, const CaseBuild::Beam& beam,
   n.allowKeys({"pitch", "stations"});
   PendingBlade out{AeroBlade{}, n, {}};
   out.blade.body = body;
-  if (const auto p = n.find("pitch")) out.blade.pitch_dof = pitchDof(*p, body, build);
+  if (const auto p = n.find("pitch")) {
+    out.blade.pitch_dof = pitchDof(*p, body, build);
+  } else if (const Body& b = build.model.bodies[body];
+             b.joint == JointType::Revolute && (b.axis.normalized() + Vec3::UnitX()).norm() <= 1e-9) {
+    // The body's own revolute joint about −x is its pitch bearing: the element angles need it apart.
+    for (int k = 0; k < build.model.ndof(); ++k)
+      if (build.model.dofs[k].body == body && build.model.dofs[k].kind == DofKind::Joint) out.blade.pitch_dof = k;
+  }
   const CaseNode table = n.at("stations");
   const Columns c = readColumns(table, kStationColumns, {});
   const double L = beam.props.length;

@@ -76,8 +76,10 @@ TEST(CaseAero, AerodynamicCentreOffsetsAndFractions) {
                            "        airfoil: [1, 1, 1]\n        ac_y: [0, 0.3, 0.6]\n        ac_z: [0, 0, -0.4]\n");
   text = testing::replaced(text, "        x: [0, 20, 40]\n        chord", "        fraction: [0, 0.5, 1]\n        chord");
   tmp.write("thin.dat", test::thinAirfoilFile(o.cd));
+  text = testing::replaced(text, "      pitch: blade 1 pitch\n", "");  // the default: the body's joint about −x
   const Model m = readCase(tmp.write("rotor.yaml", text));
   const AeroBlade& b = m.aero.blades[0];
+  EXPECT_EQ(b.pitch_dof, *m.findDof("blade 1 pitch"));
   const Body& body = m.bodies[b.body];
   EXPECT_NEAR(body.points[b.stations[1].point].P(1, 0), 0.3, 1e-15);
   EXPECT_NEAR(body.points[b.stations[2].point].P(2, 0), -0.4, 1e-15);
@@ -158,6 +160,7 @@ TEST(CaseAero, ExampleCaseReadsAndProducesPower) {
   EXPECT_NEAR(m.aero.rotor_radius, 41.5, 1e-12);
   EXPECT_NEAR(m.aero.blades[1].stations[3].twist, 7 * std::numbers::pi / 180, 1e-15);
   EXPECT_EQ(m.roles.blade_pitch.size(), 3u);
+  EXPECT_EQ(m.aero.blades[2].pitch_dof, *m.findDof("blade 3 pitch"));
   const OperatingPoint op = solveOperatingPoint(m, initialPoint(m));
   // At 12 rpm and 8 m/s (tip-speed ratio 6.5) the rotor pushes downwind and drives the shaft.
   EXPECT_GT(op.aero.thrust, 1e4);
