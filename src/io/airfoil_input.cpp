@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "src/io/elastodyn_common.hpp"
 #include "src/io/openfast_input.hpp"
@@ -186,6 +187,18 @@ AirfoilInput read_airfoil(const std::filesystem::path& file, const AirfoilColumn
     cursor = a.tables.back().row_lines.back();
   }
   return a;
+}
+
+aero::Polar airfoil_polar(const AirfoilInput& af, bool use_cm) {
+  if (af.tables.empty()) throw InputError(af.path.string() + ": no airfoil table");
+  const AirfoilTable& t = af.tables.front();
+  constexpr double deg = std::numbers::pi / 180.0;
+  std::vector<double> alpha(t.alpha_deg.size());
+  for (std::size_t k = 0; k < alpha.size(); ++k) alpha[k] = t.alpha_deg[k] * deg;
+  std::vector<double> cm = t.cm.empty() || !use_cm ? std::vector<double>(alpha.size(), 0.0) : t.cm;
+  const aero::PolarInterp interp = af.interp_order == 3 ? aero::PolarInterp::CubicSpline : aero::PolarInterp::Linear;
+  return aero::makePolar(af.name, alpha, t.cl, t.cd, cm, interp,
+                         af.path.string() + ":" + std::to_string(t.first_row_line));
 }
 
 }  // namespace whirl::io

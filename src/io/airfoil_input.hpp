@@ -16,6 +16,8 @@
 #include <string>
 #include <vector>
 
+#include "src/aero/polar.hpp"
+
 namespace whirl::io {
 
 /// Columns of the coefficient tables, 1-based as AeroDyn's `InCol_Alfa`, `InCol_Cl`, `InCol_Cd`,
@@ -84,5 +86,12 @@ struct AirfoilInput {
 /// a row has fewer numbers than the columns asked for, a value is NaN or infinite, or α does not
 /// strictly increase.
 AirfoilInput read_airfoil(const std::filesystem::path& file, const AirfoilColumns& columns = {});
+
+/// The quasi-steady polar of an airfoil file as AeroDyn uses it with AFTabMod = 1: the first table, α
+/// in rad, `InterpOrd` 3 as the cubic spline, Cm zero when the file has none or `use_cm` is false
+/// (AeroDyn's UseBlCm). Shared by the OpenFAST deck and the YAML case.
+/// \throws InputError "file:line: reason" when the file has no table or the table is not a valid polar
+///         (makePolar: α must cover −180° to 180°).
+aero::Polar airfoil_polar(const AirfoilInput& af, bool use_cm);
 
 }  // namespace whirl::io

@@ -12,7 +12,7 @@ namespace {
 const std::vector<std::string> kCommonKeys = {"name", "type", "parent", "at", "offset", "rotation", "joint", "points"};
 const std::vector<std::string> kRigidKeys = {"mass", "cog", "inertia"};
 const std::vector<std::string> kBeamKeys = {"length",      "uniform",          "properties", "shapes",
-                                            "integration", "axial_shortening", "damping"};
+                                            "integration", "axial_shortening", "damping", "aero"};
 const std::vector<std::string> kFemKeys = {"length",   "elements", "uniform",  "properties", "timoshenko",
                                            "dofs",     "clamped",  "supports", "soil",       "masses",
                                            "reduction", "damping", "geometric_stiffness"};

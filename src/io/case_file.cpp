@@ -43,7 +43,8 @@ Model readCase(const std::string& path, const std::vector<CaseOverride>& overrid
   applyOverrides(doc, overrides, source);
   const CaseNode top(doc, source);
   if (!top.isMap()) top.fail("a case file is a map of keys (name, gravity, bodies, ...), this one is empty or a list");
-  top.allowKeys({"name", "description", "gravity", "inputs", "bodies", "dofs", "loads", "outputs"});
+  top.allowKeys({"name", "description", "gravity", "inputs", "bodies", "dofs", "loads", "outputs",
+                 "wind", "aero", "generator"});
 
   CaseBuild build;
   Model& m = build.model;
@@ -58,6 +59,8 @@ Model readCase(const std::string& path, const std::vector<CaseOverride>& overrid
   if (const auto in = top.find("inputs")) readInputTargets(*in, build);
   assignRoles(build);
   if (const auto o = top.find("outputs")) readOutputs(*o, build);
+  readAerodynamics(top, build);
+  if (const auto g = top.find("generator")) readGenerator(*g, build);
   // Body indices of build.beams are those before finalize() sorts the bodies.
   if (beams)
     for (const CaseBuild::Beam& b : build.beams) beams->push_back({m.bodies[b.body].name, b.fem, b.shapes});

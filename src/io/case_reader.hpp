@@ -26,6 +26,7 @@ struct CaseBuild {
     BeamProperties props;
     std::vector<ShapePtr> shapes;
     fem::ModeShapeInput fem;  ///< FE input for `whirl shapes`: the `{from: fem}` settings, else properties only
+    bool axial_shortening = true;  ///< as built (the points of the blade elements follow it)
   };
   Model model;
   std::vector<Beam> beams;
@@ -93,6 +94,16 @@ void readInputTargets(const CaseNode& list, CaseBuild& build);
 void assignRoles(CaseBuild& build);
 /// `outputs:` (case_outputs.cpp).
 void readOutputs(const CaseNode& list, CaseBuild& build);
+
+/// `wind:` and `aero:` at the top level with the `aero:` of the beam bodies in `bodies` (case_aero.cpp):
+/// the blade elements, airfoil polars, BEM options, steady wind, the `wind speed` input and its role,
+/// and the rotor outputs. Call after the outputs are read (the names it adds must be free).
+void readAerodynamics(const CaseNode& top, CaseBuild& build);
+
+/// `generator:` (case_generator.cpp): ServoDyn's simple variable-speed torque law on the input named
+/// `torque_input` (whose point loads apply it), the speed from the `dof` output `speed_output`; adds the
+/// outputs GenTq and GenPwr. Call after the outputs and loads are read.
+void readGenerator(const CaseNode& g, CaseBuild& build);
 
 /// Re-throws an InputError from the core (buildBeamBody, shapes, finalize) prefixed with `w`.
 [[noreturn]] void rethrowAt(const Where& w, const std::exception& e);

@@ -20,18 +20,6 @@ int outputIndex(const Model& m, const std::string& name) {
   return -1;
 }
 
-// The polar of an airfoil file's first table (AFTabMod = 1), angles in rad.
-aero::Polar polarOf(const io::AirfoilInput& af, bool use_cm) {
-  if (af.tables.empty()) throw InputError(af.path.string() + ": no airfoil table");
-  const io::AirfoilTable& t = af.tables.front();
-  std::vector<double> alpha(t.alpha_deg.size());
-  for (std::size_t k = 0; k < alpha.size(); ++k) alpha[k] = t.alpha_deg[k] * deg;
-  std::vector<double> cm = t.cm.empty() || !use_cm ? std::vector<double>(alpha.size(), 0.0) : t.cm;
-  const aero::PolarInterp interp = af.interp_order == 3 ? aero::PolarInterp::CubicSpline : aero::PolarInterp::Linear;
-  return aero::makePolar(af.name, alpha, t.cl, t.cd, cm, interp,
-                         af.path.string() + ":" + std::to_string(t.first_row_line));
-}
-
 // One blade's elements at the AeroDyn nodes: points on the blade body at the aerodynamic centre,
 // trapezoid weights along the span, AeroDyn's curvilinear distance from the apex (loss constants).
 AeroBlade bladeElements(Builder& b, const BladeParts& blade, const io::AeroDynBladeInput& file, double hub_radius,
@@ -78,7 +66,7 @@ void addAerodynamics(Builder& b, const DrivetrainParts& dt, const RotorParts& ro
   const io::ElastoDynConfiguration& c = b.ed.config;
   Model& m = b.model;
   AeroModel& am = m.aero;
-  for (const io::AirfoilInput& af : deck.airfoils) am.polars.push_back(polarOf(af, deck.aerodyn.UseBlCm));
+  for (const io::AirfoilInput& af : deck.airfoils) am.polars.push_back(io::airfoil_polar(af, deck.aerodyn.UseBlCm));
   const double length = c.TipRad - c.HubRad;
   for (std::size_t k = 0; k < rotor.blades.size(); ++k) {
     const io::AeroDynBladeInput& file = deck.blades.at(k);

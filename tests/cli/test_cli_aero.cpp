@@ -53,3 +53,47 @@ TEST(CliAero, SteadyNeedsAerodynamics) {
 
 }  // namespace
 }  // namespace whirl::test
+
+namespace whirl::test {
+namespace {
+
+// Aerodynamics from a YAML case (cases/aero_rotor): modes at its rotor speed and wind, a Campbell
+// diagram over the rotor speed with the aeroelastic damping, and `--set` on the wind block.
+const std::string kYamlAero = "cases/aero_rotor/aero_rotor.yaml";
+
+TEST(CliAero, YamlCaseModesAndCampbellInWind) {
+  const auto modes = whirl("modes " + kYamlAero + " --format csv");
+  ASSERT_EQ(modes.code, 0) << modes.err;
+  EXPECT_NE(modes.out.find("flap"), std::string::npos) << modes.out;
+  const auto dir = freshDir("yaml_aero_campbell");
+  const auto r = whirl("campbell " + kYamlAero + " --rpm 4:4:12 --no-plot --out '" + dir.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string csv = slurp(dir / "campbell.csv");
+  EXPECT_NE(csv.find("flap"), std::string::npos) << csv;
+  const auto gust = whirl("modes " + kYamlAero + " --set wind.speed=11 --format csv");
+  EXPECT_EQ(gust.code, 0) << gust.err;
+  EXPECT_NE(gust.out, modes.out);  // the wind reaches the aeroelastic damping
+}
+
+TEST(CliAero, YamlCaseSteadyAndCampbellAlongTheWind) {
+  // The case's `generator:` (ServoDyn's law): trimmed below and above rated as an OpenFAST deck.
+  const auto dir = freshDir("yaml_aero_steady");
+  const auto r = whirl("steady " + kYamlAero + " --wind 6:6:18 --no-plot --out '" + dir.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string csv = slurp(dir / "steady.csv");
+  EXPECT_NE(csv.find(",below rated\n"), std::string::npos) << csv;
+  EXPECT_NE(csv.find(",above rated\n"), std::string::npos) << csv;
+  const auto c = whirl("campbell " + kYamlAero + " --wind 6:4:14 --no-plot --out '" + dir.string() + "'");
+  ASSERT_EQ(c.code, 0) << c.err;
+  EXPECT_NE(slurp(dir / "campbell.csv").find(",10,blade"), std::string::npos);  // the wind-speed column
+}
+
+TEST(CliAero, YamlCaseMissingAirfoilNamesTheKey) {
+  const auto r = whirl("modes " + kYamlAero + " --set 'aero.airfoils=[nope.dat]'");
+  EXPECT_NE(r.code, 0);
+  EXPECT_NE(r.err.find("aero_rotor.yaml:"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("aero.airfoils[0]: cannot open the airfoil file"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace whirl::test
