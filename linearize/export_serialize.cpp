@@ -130,6 +130,7 @@ json operatingPoint(const OperatingPoint& op) {
           {"qdd", vec(op.qdd)},
           {"u", vec(op.u)},
           {"solved", op.solved},
+          {"held", op.held},
           {"iter", op.iterations},
           {"res", scalar(op.residual_norm)},
           {"res_max", scalar(op.residual_max_active)},
@@ -143,6 +144,7 @@ OperatingPoint readOperatingPoint(const json& j) {
   op.qdd = readVector(j.at("qdd"));
   op.u = readVector(j.at("u"));
   op.solved = j.at("solved").get<std::vector<int>>();
+  op.held = j.at("held").get<std::vector<int>>();
   op.iterations = j.at("iter").get<int>();
   op.residual_norm = readScalar(j.at("res"));
   op.residual_max_active = readScalar(j.at("res_max"));

@@ -31,6 +31,7 @@ PeriodicLinearization linearizePeriodic(const Model& m, const OperatingPoint& st
     if (k > 0) {
       eq.chord = &p.models.back();  // the stiffness barely changes from one azimuth to the next
       eq.load_scale = p.points.front().load_scale;
+      eq.held = &p.points.front().held;  // every azimuth holds the same free coordinates (a free yaw)
     }
     OperatingPoint op = solveOperatingPoint(m, guess, eq, lw);
     p.models.push_back(linearize(m, op, lw));

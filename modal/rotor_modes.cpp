@@ -16,12 +16,14 @@ struct Coordinate {
 };
 
 // A mode this slow and carried by an azimuth is the rotor turning as a whole, not a vibration: the
-// multiblade average leaves it a residual frequency of order 1e-4 Hz.
+// multiblade average leaves it a residual frequency of order 1e-4 Hz. The same for a held free
+// coordinate (a free yaw), whose stiffness is only what the deflected tower's tilt of the yaw axis
+// gives.
 constexpr double kRigidAzimuthHz = 5e-3;
 
 // Names the mode from the coordinate group with the largest energy share. A vibration dominated
 // by an azimuth (a free generator turning against the rotor) is named after its next group, e.g.
-// "drivetrain".
+// "drivetrain". `azimuth` marks the rigid-body coordinates: the azimuths and the held free ones.
 void nameRotorMode(Mode& mode, const std::vector<Coordinate>& coords, const std::vector<bool>& azimuth,
                    double rotor_speed) {
   std::map<std::string, double> share, azimuth_share;
@@ -94,6 +96,8 @@ RotorModes rotorModes(const Model& m, const PeriodicLinearization& p) {
   for (int i = 0; i < n; ++i) {
     c.blade.push_back(m.dofs[first.dofs[i]].blade);
     c.azimuth.push_back(m.dofs[first.dofs[i]].rotating);
+    const std::vector<int>& held = p.points.front().held;
+    c.held.push_back(std::find(held.begin(), held.end(), first.dofs[i]) != held.end());
     nb = std::max(nb, c.blade.back() + 1);
   }
   // Shapes are in multiblade coordinates: weigh them by the diagonal of M (blade entries alike).
@@ -145,7 +149,9 @@ RotorModes multibladeModes(const RotorCoordinates& c, const MbcLayout& layout, c
       out.coordinates[i] = c.blade[i] < 0 ? coords[i].group : coords[i].group + " " + toString(coords[i].kind);
   }
   out.modes = modesFromEigen(eigenStandard(out.A), n, c.weights, out.coordinates);
-  for (auto& mode : out.modes) nameRotorMode(mode, coords, c.azimuth, rotor_speed);
+  std::vector<bool> rigid = c.azimuth;
+  for (size_t i = 0; i < c.held.size() && i < rigid.size(); ++i) rigid[i] = rigid[i] || c.held[i];
+  for (auto& mode : out.modes) nameRotorMode(mode, coords, rigid, rotor_speed);
   return out;
 }
 

@@ -1,0 +1,47 @@
+#pragma once
+/// \file
+/// Coordinates the static equilibrium cannot determine: a free yaw about a vertical axis, a free
+/// platform yaw, … — moving them changes no structural load, so e(q) = 0 has no unique solution
+/// along them and any load along them (the once-per-blade-passage yaw moment of a turning rotor)
+/// has no equilibrium. They are held at their given value, like OpenFAST, which linearizes such a
+/// deck about the point its time simulation reached; the linear model keeps them as states, and
+/// their modes come out as rigid-body modes (f ≈ 0).
+#include <string>
+#include <vector>
+
+#include "src/model/model.hpp"
+#include "src/model/types.hpp"
+
+namespace whirl {
+
+/// The rule. A coordinate is *unrestrained* when all of
+/// - it is an active, non-rotating joint coordinate (elastic coordinates carry their stiffness);
+/// - no spring acts along it: no DofSpring with k ≠ 0 on it, no non-zero row or column of a
+///   BodyMatrices stiffness (hydrostatics, mooring) through it;
+/// - its stiffness K(i, i) = −∂e_i/∂q_i of the structural model at the reference configuration
+///   (every elastic coordinate at 0, the joint coordinates at `q`, rates `qd`, inputs `u`,
+///   aerodynamics left out) is zero to round-off: |K(i, i)| ≤ kUnrestrainedTolerance × max_j |K(j, j)|
+///   over the non-rotating active coordinates j. A yaw axis tilted at the reference (a platform
+///   pitch) has gravity stiffness and is solved for.
+/// The couplings K(j, i) do not count: yawing an overhanging nacelle turns its weight moment from
+/// fore-aft to side-to-side (K(tower SS, yaw) ≈ 3e4 N for the NREL 5MW), and with K(i, i) = 0 such a
+/// coupling makes K indefinite — a "solution" that balances the yaw load by tilting the tower, a
+/// saddle that Newton finds at absurd yaw angles or not at all.
+/// Aerodynamic yaw stiffness does not count: it appears in the linear model (K of linearize) but
+/// the periodic aerodynamic and inertial loads of a turning rotor have no static balance along it.
+/// \param[in] q, qd, u  the starting point (dims model.ndof(), model.ndof(), model.ninput())
+/// \returns the coordinate indices, ascending
+std::vector<int> unrestrainedCoordinates(const Model& model, const VecX& q, const VecX& qd, const VecX& u);
+
+/// Relative size of a "zero" stiffness column (see unrestrainedCoordinates).
+inline constexpr double kUnrestrainedTolerance = 1e-9;
+
+/// How to hold coordinate `dof` (for messages): for the model's yaw coordinate the OpenFAST keys
+/// ("--set YawDOF=False, or a yaw spring: ServoDyn YawSpr with CompServo = 1"), otherwise generic.
+std::string holdAdvice(const Model& model, int dof);
+
+/// Unit of the generalized load along coordinate `dof`: "N m" (a rotation) or "N" (a translation,
+/// an elastic coordinate's generalized force).
+std::string loadUnit(const Model& model, int dof);
+
+}  // namespace whirl
