@@ -8,6 +8,7 @@
 #include "linearize/jacobian.hpp"
 #include "linearize/linearize.hpp"
 #include "linearize/unrestrained.hpp"
+#include "src/dynamics/mass_matrix.hpp"
 #include "src/dynamics/residual.hpp"
 #include "src/model/error.hpp"
 
@@ -64,6 +65,16 @@ int weakJoint(const Model& m, const std::vector<int>& solved, const MatX& K, con
     }
   }
   return best;
+}
+
+// A load along a coordinate without stiffness: no static equilibrium. `motion`: how far it would
+// move, if known.
+std::string noEquilibrium(const Model& m, int dof, double load, const std::string& motion = "") {
+  return fmt::format("operating point: a load acts along DOF '{}' ({:.4g} {}), which has no stiffness (a free "
+                     "rigid-body motion): {}no equilibrium; {}, or mark it rotating",
+                     m.dofs[dof].name, load, loadUnit(m, dof),
+                     motion.empty() ? "" : "it would move " + motion + " (limit " + fmt::format("{:g}", kMaxHeldDrift) + "), ",
+                     holdAdvice(m, dof));
 }
 
 }  // namespace
@@ -245,10 +256,7 @@ OperatingPoint solveOperatingPoint(const Model& m, const OperatingPoint& start, 
         Eigen::Index worst = 0;
         ker.col(0).cwiseAbs().maxCoeff(&worst);
         const int d = op.solved[worst];
-        throw ComputeError("operating point: a load of " + fmt::format("{:.4g}", es(worst)) + " " + loadUnit(m, d) +
-                           " acts along DOF '" + m.dofs[d].name +
-                           "', which has no stiffness (a free rigid-body motion): no equilibrium; " + holdAdvice(m, d) +
-                           ", or mark it rotating");
+        throw ComputeError(noEquilibrium(m, d, es(worst)));
       }
     }
     for (int k = 0; k < ns; ++k) op.q(op.solved[k]) += dq(k);
@@ -262,6 +270,21 @@ OperatingPoint solveOperatingPoint(const Model& m, const OperatingPoint& start, 
   op.aero = AeroRecord{};
   residual(m, ws, op.q, op.qd, op.qdd, op.u, e, nullptr, m.aero.active() ? &op.aero : nullptr);
   op.inflow = op.aero.inflow();
+  op.held_load.resize(static_cast<Eigen::Index>(op.held.size()));
+  for (size_t k = 0; k < op.held.size(); ++k) op.held_load(static_cast<Eigen::Index>(k)) = e(op.held[k]);
+  if (op.qd.isZero(0.0) && !op.held.empty()) {
+    // Nothing turns: the load on a held coordinate is steady (at rotor speed linearizePeriodic
+    // checks its mean over the revolution).
+    MatX M;
+    massMatrix(m, ws, op.q, M);
+    for (int d : op.held) {
+      const double drift = 0.5 * std::abs(e(d)) / M(d, d) * kHeldDriftTime * kHeldDriftTime;
+      if (!(drift <= kMaxHeldDrift))
+        throw ComputeError(noEquilibrium(m, d, e(d), fmt::format("{:.3g} {} in {:g} s", drift,
+                                                                    loadUnit(m, d) == "N m" ? "rad" : "m",
+                                                                    kHeldDriftTime)));
+    }
+  }
   op.residual_max_active = 0;
   for (int i : m.activeDofs())
     if (std::abs(e(i)) >= op.residual_max_active) {

@@ -22,6 +22,7 @@ struct OperatingPoint {
   /// Unrestrained coordinates (no stiffness along them: a free yaw) held at their given value; the
   /// load along them stays in the residual (residual_max_active) and moves them in the linear model.
   std::vector<int> held;
+  VecX held_load;  ///< e on each held coordinate at the solution, in the order of `held` [N, N m]
   int iterations = 0;
   double residual_norm = 0;  ///< ‖e‖ over the solved coordinates at the solution [N, N m]
   double load_scale = 1;     ///< what the tolerance was relative to [N, N m]
@@ -68,8 +69,11 @@ OperatingPoint initialPoint(const Model& model, const OperatingCondition& condit
 
 /// Solves the equilibrium of the non-rotating active coordinates starting from `start`; the
 /// unrestrained ones (unrestrainedCoordinates, or EquilibriumOptions::held) stay at their start value.
-/// Throws ComputeError when K is singular or Newton does not converge; when a joint coordinate is
-/// (nearly) without stiffness the message names it, the load on it and how to hold it.
+/// Throws ComputeError when K is singular or Newton does not converge, or when a load acts on a held
+/// coordinate at a time-invariant point (every rate 0: nothing turns, so nothing averages the load
+/// out — a body falling along a free prismatic joint); when a joint coordinate is (nearly) without
+/// stiffness the message names it, the load on it and how to hold it. (At rotor speed the load on a
+/// held coordinate is periodic; linearizePeriodic checks its mean.)
 OperatingPoint solveOperatingPoint(const Model& model, const OperatingPoint& start, const EquilibriumOptions& opt = {});
 /// Same, with reused buffers.
 OperatingPoint solveOperatingPoint(const Model& model, const OperatingPoint& start, const EquilibriumOptions& opt,

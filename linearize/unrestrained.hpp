@@ -33,8 +33,21 @@ namespace whirl {
 /// \returns the coordinate indices, ascending
 std::vector<int> unrestrainedCoordinates(const Model& model, const VecX& q, const VecX& qd, const VecX& u);
 
-/// Relative size of a "zero" stiffness column (see unrestrainedCoordinates).
+/// Relative size of a "zero" stiffness (see unrestrainedCoordinates).
 inline constexpr double kUnrestrainedTolerance = 1e-9;
+
+/// Largest drift of a held coordinate [rad or m] that an operating point accepts, ½ |load| / M(i, i) · T²
+/// over a time T: one revolution at rotor speed, with the mean of its load over the azimuths
+/// (linearizePeriodic); kHeldDriftTime for a point where nothing turns. A free yaw turns under the
+/// mean yaw moment of the rotor (ws03 at 6.972 rpm: 0.012 rad per revolution without aerodynamics,
+/// 0.007 with; OpenFAST linearizes that deck with the yaw drifting at 7.5e-5 rad/s) or, parked, under
+/// the weight moment about the yaw axis the deflected tower tilts (ws03 parked at 10° yaw: 19 N m,
+/// 4e-5 rad in 10 s), so a small drift is part of the operating point; a load that moves it by more
+/// has none (a body falling along a free prismatic joint: 490 m in 10 s).
+inline constexpr double kMaxHeldDrift = 0.1;
+/// The time over which a held coordinate's drift is measured where nothing turns [s]: a few periods
+/// of a tower's first mode.
+inline constexpr double kHeldDriftTime = 10.0;
 
 /// How to hold coordinate `dof` (for messages): for the model's yaw coordinate the OpenFAST keys
 /// ("--set YawDOF=False, or a yaw spring: ServoDyn YawSpr with CompServo = 1"), otherwise generic.

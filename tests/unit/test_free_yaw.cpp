@@ -96,5 +96,46 @@ TEST(FreeYaw, WeakSpringMessageNamesTheYaw) {
   }
 }
 
+// At 1 rpm in 3 m/s wind the stalled rotor's mean yaw moment turns a free yaw 0.82 rad in one
+// revolution (60 s): no periodic operating point. (At 6.972 rpm the same deck drifts 0.007 rad per
+// revolution and linearizes: tests/validation/test_nrel5mw_aero_ws03.cpp.)
+TEST(FreeYaw, MeanYawMomentTooLargeNamesTheYaw) {
+  const std::string deck = std::string(WHIRL_SOURCE_DIR) + "/tests/data/openfast/aero/ws03/ws03.0.fst";
+  const Model m = readElastoDynModel(deck);
+  OperatingCondition c;
+  c.rotor_speed = 1.0 * 2 * std::numbers::pi / 60;
+  PeriodicOptions opt;
+  opt.azimuths = 8;
+  try {
+    linearizePeriodic(m, c, opt);
+    FAIL() << "expected a ComputeError";
+  } catch (const ComputeError& e) {
+    EXPECT_STREQ(e.what(),
+                 "operating point: a mean load of 1.15e+04 N m acts along DOF 'yaw', which has no stiffness (a free "
+                 "rigid-body motion): it would move 0.82 rad in one revolution (limit 0.1), no periodic operating "
+                 "point; hold it with --set YawDOF=False, or a yaw spring (ServoDyn YawSpr with CompServo = 1)");
+  }
+}
+
+// Nothing turning, a held coordinate must carry (almost) no load: ws03 parked at 10° yaw carries
+// 19 N m (the weight moment about the yaw axis the deflected tower tilts), 4e-5 rad in 10 s — held;
+// the same yaw under a 1e6 N m yaw moment has no equilibrium.
+TEST(FreeYaw, ParkedSteadyYawLoadHasNoEquilibrium) {
+  Model m = readElastoDynModel(kWs03, {"CompAero=0"});
+  m.dof_loads.push_back({m.roles.yaw_dof, 1e6, -1});
+  try {
+    solveOperatingPoint(m, initialPoint(m, OperatingCondition{}));
+    FAIL() << "expected a ComputeError";
+  } catch (const ComputeError& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("operating point: a load acts along DOF 'yaw' (1e+06 N m), which has no stiffness (a free "
+                       "rigid-body motion): it would move "),
+              std::string::npos)
+        << msg;
+    EXPECT_NE(msg.find(" rad in 10 s (limit 0.1), no equilibrium; hold it with --set YawDOF=False"), std::string::npos)
+        << msg;
+  }
+}
+
 }  // namespace
 }  // namespace whirl
