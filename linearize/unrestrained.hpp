@@ -1,11 +1,12 @@
 #pragma once
 /// \file
 /// Coordinates the static equilibrium cannot determine: a free yaw about a vertical axis, a free
-/// platform yaw, … — moving them changes no structural load, so e(q) = 0 has no unique solution
-/// along them and any load along them (the once-per-blade-passage yaw moment of a turning rotor)
-/// has no equilibrium. They are held at their given value, like OpenFAST, which linearizes such a
-/// deck about the point its time simulation reached; the linear model keeps them as states, and
-/// their modes come out as rigid-body modes (f ≈ 0).
+/// platform yaw, … — no stiffness along them (K(i, i) = 0), so Newton cannot solve for them (K is
+/// singular or, through couplings, indefinite) and a load along them has no static balance (a
+/// turning rotor's mean yaw moment and its 3P ripple). They are held at their given value, as
+/// OpenFAST linearizes such a deck about the point its time simulation reached; the load they carry
+/// must stay small (kMaxHeldDrift). The linear model keeps them as states, and their modes come out
+/// as rigid-body modes (f ≈ 0, modal/rotor_modes.cpp).
 #include <string>
 #include <vector>
 
