@@ -130,6 +130,8 @@ json operatingPoint(const OperatingPoint& op) {
           {"qdd", vec(op.qdd)},
           {"u", vec(op.u)},
           {"solved", op.solved},
+          {"held", op.held},
+          {"held_load", vec(op.held_load)},
           {"iter", op.iterations},
           {"res", scalar(op.residual_norm)},
           {"res_max", scalar(op.residual_max_active)},
@@ -143,6 +145,8 @@ OperatingPoint readOperatingPoint(const json& j) {
   op.qdd = readVector(j.at("qdd"));
   op.u = readVector(j.at("u"));
   op.solved = j.at("solved").get<std::vector<int>>();
+  op.held = j.at("held").get<std::vector<int>>();
+  op.held_load = readVector(j.at("held_load"));
   op.iterations = j.at("iter").get<int>();
   op.residual_norm = readScalar(j.at("res"));
   op.residual_max_active = readScalar(j.at("res_max"));

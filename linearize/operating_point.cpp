@@ -1,10 +1,14 @@
 #include "linearize/operating_point.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 
 #include "linearize/jacobian.hpp"
 #include "linearize/linearize.hpp"
+#include "linearize/unrestrained.hpp"
+#include "src/dynamics/mass_matrix.hpp"
 #include "src/dynamics/residual.hpp"
 #include "src/model/error.hpp"
 
@@ -41,6 +45,36 @@ OperatingPoint modelValues(const Model& m) {
   op.u = VecX::Zero(m.ninput());
   for (int i = 0; i < m.ninput(); ++i) op.u(i) = m.inputs[i].value;
   return op;
+}
+
+// When Newton fails: the joint coordinate (index into `solved`) whose stiffness, the diagonal of the
+// first Newton matrix, would let the largest load seen on it move it furthest, if that motion exceeds
+// 1 rad (or 1 m) — a nearly unrestrained coordinate (a very weak yaw spring) pushed by the loads of
+// a turning rotor; −1 if none.
+int weakJoint(const Model& m, const std::vector<int>& solved, const MatX& K, const VecX& load) {
+  if (K.rows() != static_cast<Eigen::Index>(solved.size())) return -1;
+  int best = -1;
+  double motion = 1.0;
+  for (size_t k = 0; k < solved.size(); ++k) {
+    if (m.dofs[solved[k]].kind != DofKind::Joint) continue;
+    const double kii = std::abs(K(k, k)), f = load(static_cast<Eigen::Index>(k));
+    const double x = kii > 0 ? f / kii : (f > 0 ? HUGE_VAL : 0.0);
+    if (x > motion) {
+      motion = x;
+      best = static_cast<int>(k);
+    }
+  }
+  return best;
+}
+
+// A load along a coordinate without stiffness: no static equilibrium. `motion`: how far it would
+// move, if known.
+std::string noEquilibrium(const Model& m, int dof, double load, const std::string& motion = "") {
+  return fmt::format("operating point: a load acts along DOF '{}' ({:.4g} {}), which has no stiffness (a free "
+                     "rigid-body motion): {}no equilibrium; {}, or mark it rotating",
+                     m.dofs[dof].name, load, loadUnit(m, dof),
+                     motion.empty() ? "" : "it would move " + motion + " (limit " + fmt::format("{:g}", kMaxHeldDrift) + "), ",
+                     holdAdvice(m, dof));
 }
 
 }  // namespace
@@ -123,10 +157,12 @@ OperatingPoint solveOperatingPoint(const Model& m, const OperatingPoint& start, 
                                    LinearizeWorkspace& lw) {
   OperatingPoint op = start;
   op.solved.clear();
+  op.held = opt.held ? *opt.held : unrestrainedCoordinates(m, start.q, start.qd, start.u);
   for (int i : m.activeDofs()) {
     if (m.dofs[i].rotating) continue;
     if (op.qd(i) != 0.0)
       throw ComputeError("DOF '" + m.dofs[i].name + "': a non-rotating coordinate has a rate; mark it rotating or freeze it");
+    if (std::find(op.held.begin(), op.held.end(), i) != op.held.end()) continue;
     op.solved.push_back(i);
   }
   Workspace<double>& ws = lw.ws;
@@ -146,6 +182,10 @@ OperatingPoint solveOperatingPoint(const Model& m, const OperatingPoint& start, 
   op.load_scale = scale;
   op.iterations = 0;
   const double target = opt.tolerance * scale;
+  // For the message when Newton fails: the stiffness of the first Newton matrix and the largest
+  // loads seen on each solved coordinate over the iterations.
+  VecX load_seen = es.cwiseAbs();
+  MatX K_first;
   if (opt.chord && ns > 0 && es.lpNorm<Eigen::Infinity>() > target) {
     // Chord steps are a residual and a back-substitution each, a fifth of a Newton step (which
     // needs the AD stiffness); a step that gains less than 4× is undone and Newton goes on.
@@ -172,9 +212,32 @@ OperatingPoint solveOperatingPoint(const Model& m, const OperatingPoint& start, 
     if (op.iterations >= opt.max_iterations) {
       Eigen::Index worst;
       es.cwiseAbs().maxCoeff(&worst);
-      throw ComputeError("operating point did not converge in " + std::to_string(opt.max_iterations) +
-                         " Newton iterations: residual " + std::to_string(es(worst)) + " on DOF '" +
-                         m.dofs[op.solved[worst]].name + "'");
+      std::string msg = "operating point did not converge in " + std::to_string(opt.max_iterations) +
+                        " Newton iterations: residual " + std::to_string(es(worst)) + " on DOF '" +
+                        m.dofs[op.solved[worst]].name + "'";
+      const int weak = weakJoint(m, op.solved, K_first, load_seen);
+      if (weak >= 0) {
+        // The load on it is what the rest of the structure pushes with while it is held: solve
+        // again with it held at its start value (the iterates above wander).
+        const int d = op.solved[weak];
+        std::string load = fmt::format("up to {:.4g}", load_seen(weak));
+        try {
+          std::vector<int> held = op.held;
+          held.push_back(d);
+          EquilibriumOptions again = opt;
+          again.chord = nullptr;
+          again.held = &held;
+          const OperatingPoint h = solveOperatingPoint(m, start, again, lw);
+          residual(m, ws, h.q, h.qd, h.qdd, h.u, e);
+          load = fmt::format("{:.4g}", e(d));
+        } catch (const ComputeError&) {
+        }
+        const std::string unit = loadUnit(m, d);
+        msg += fmt::format(": DOF '{}' is nearly unrestrained (stiffness {:.4g} {}/{}) and a load of {} {} acts on it; {}",
+                           m.dofs[d].name, std::abs(K_first(weak, weak)), unit, unit == "N m" ? "rad" : "m", load, unit,
+                           holdAdvice(m, d));
+      }
+      throw ComputeError(msg);
     }
     // The AD passes see the element inflows of the residual just evaluated: hand them its BEM roots
     // (aero_section.hxx) instead of solving every element again.
@@ -182,8 +245,10 @@ OperatingPoint solveOperatingPoint(const Model& m, const OperatingPoint& start, 
     const MatX J = residualJacobian(m, jw, op.q, op.qd, op.qdd, op.u, Wrt::Q, op.solved);
     MatX K(ns, ns);
     for (int r = 0; r < ns; ++r) K.row(r) = -J.row(op.solved[r]);
-    // Rigid-body coordinates (a free surge, a free yaw) have no stiffness: K is singular, and that
-    // is fine as long as nothing pushes along them. Minimum-norm step; refuse a load in the null space.
+    if (K_first.size() == 0) K_first = K;
+    // Coordinates without stiffness are held above; a singular K left (a rigid-body motion the rule
+    // does not catch, e.g. with a spring of zero stiffness elsewhere in the chain) is fine as long as
+    // nothing pushes along it. Minimum-norm step; refuse a load in the null space.
     Eigen::CompleteOrthogonalDecomposition<MatX> cod(K);
     const VecX dq = cod.solve(es);
     if (cod.rank() < ns) {
@@ -193,21 +258,36 @@ OperatingPoint solveOperatingPoint(const Model& m, const OperatingPoint& start, 
         const MatX ker = lu.kernel();
         Eigen::Index worst = 0;
         ker.col(0).cwiseAbs().maxCoeff(&worst);
-        throw ComputeError("operating point: a load acts along DOF '" + m.dofs[op.solved[worst]].name +
-                           "', which has no stiffness (a free rigid-body motion): no equilibrium; add a spring, "
-                           "freeze it, or mark it rotating");
+        const int d = op.solved[worst];
+        throw ComputeError(noEquilibrium(m, d, es(worst)));
       }
     }
     for (int k = 0; k < ns; ++k) op.q(op.solved[k]) += dq(k);
     ++op.iterations;
     es = solvedResidual();
     if (!es.allFinite()) throw ComputeError("operating point: Newton diverged (residual not finite)");
+    load_seen = load_seen.cwiseMax(es.cwiseAbs());
     if (dq.lpNorm<Eigen::Infinity>() < 1e-14 * (1.0 + op.q.lpNorm<Eigen::Infinity>())) break;
   }
   op.residual_norm = es.norm();
   op.aero = AeroRecord{};
   residual(m, ws, op.q, op.qd, op.qdd, op.u, e, nullptr, m.aero.active() ? &op.aero : nullptr);
   op.inflow = op.aero.inflow();
+  op.held_load.resize(static_cast<Eigen::Index>(op.held.size()));
+  for (size_t k = 0; k < op.held.size(); ++k) op.held_load(static_cast<Eigen::Index>(k)) = e(op.held[k]);
+  if (op.qd.isZero(0.0) && !op.held.empty()) {
+    // Nothing turns: the load on a held coordinate is steady (at rotor speed linearizePeriodic
+    // checks its mean over the revolution).
+    MatX M;
+    massMatrix(m, ws, op.q, M);
+    for (int d : op.held) {
+      const double drift = 0.5 * std::abs(e(d)) / M(d, d) * kHeldDriftTime * kHeldDriftTime;
+      if (!(drift <= kMaxHeldDrift))
+        throw ComputeError(noEquilibrium(m, d, e(d), fmt::format("{:.3g} {} in {:g} s", drift,
+                                                                    loadUnit(m, d) == "N m" ? "rad" : "m",
+                                                                    kHeldDriftTime)));
+    }
+  }
   op.residual_max_active = 0;
   for (int i : m.activeDofs())
     if (std::abs(e(i)) >= op.residual_max_active) {

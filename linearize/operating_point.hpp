@@ -1,6 +1,7 @@
 #pragma once
 /// \file
 /// Operating point: rates of the rotating coordinates, inputs and frozen coordinates are given;
+/// unrestrained coordinates (a free yaw: linearize/unrestrained.hpp) are held at their given value;
 /// the other active coordinates are solved for static/steady equilibrium e(q, q̇, 0, u) = 0 by
 /// Newton with the AD stiffness K = −∂e/∂q.
 #include <string>
@@ -18,6 +19,10 @@ struct LinearModel;
 struct OperatingPoint {
   VecX q, qd, qdd, u;        ///< all coordinates (ndof) and inputs (ninput)
   std::vector<int> solved;   ///< coordinates solved for equilibrium
+  /// Unrestrained coordinates (no stiffness along them: a free yaw) held at their given value; the
+  /// load along them stays in the residual (residual_max_active) and moves them in the linear model.
+  std::vector<int> held;
+  VecX held_load;  ///< e on each held coordinate at the solution, in the order of `held` [N, N m]
   int iterations = 0;
   double residual_norm = 0;  ///< ‖e‖ over the solved coordinates at the solution [N, N m]
   double load_scale = 1;     ///< what the tolerance was relative to [N, N m]
@@ -39,6 +44,11 @@ struct EquilibriumOptions {
   /// The tolerance's reference [N, N m]; 0: max(1, ‖e_solved‖∞ at the start). A warm start (a
   /// neighbouring point's equilibrium) passes the scale of the cold start it continues.
   double load_scale = 0;
+  /// The unrestrained coordinates, decided by an earlier solve of the same model at a neighbouring
+  /// point (OperatingPoint::held of a periodic sweep's first azimuth), so that every azimuth holds
+  /// the same ones and the decision (one structural Jacobian) is made once. Null: decided here
+  /// (unrestrainedCoordinates at the start). Must outlive the call.
+  const std::vector<int>* held = nullptr;
 };
 
 /// Starting point from the model: each coordinate at its value, each rate at its rate, q̈ = 0,
@@ -57,8 +67,13 @@ OperatingPoint initialPoint(const Model& model);
 /// wind-speed input"), or a value that is not finite.
 OperatingPoint initialPoint(const Model& model, const OperatingCondition& condition);
 
-/// Solves the equilibrium of the non-rotating active coordinates starting from `start`.
-/// Throws ComputeError naming the coordinate when K is singular or Newton does not converge.
+/// Solves the equilibrium of the non-rotating active coordinates starting from `start`; the
+/// unrestrained ones (unrestrainedCoordinates, or EquilibriumOptions::held) stay at their start value.
+/// Throws ComputeError when K is singular or Newton does not converge, or when a load acts on a held
+/// coordinate at a time-invariant point (every rate 0: nothing turns, so nothing averages the load
+/// out — a body falling along a free prismatic joint); when a joint coordinate is (nearly) without
+/// stiffness the message names it, the load on it and how to hold it. (At rotor speed the load on a
+/// held coordinate is periodic; linearizePeriodic checks its mean.)
 OperatingPoint solveOperatingPoint(const Model& model, const OperatingPoint& start, const EquilibriumOptions& opt = {});
 /// Same, with reused buffers.
 OperatingPoint solveOperatingPoint(const Model& model, const OperatingPoint& start, const EquilibriumOptions& opt,

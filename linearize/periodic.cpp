@@ -1,10 +1,39 @@
 #include "linearize/periodic.hpp"
 
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
 #include <numbers>
 
+#include "linearize/unrestrained.hpp"
 #include "src/model/error.hpp"
 
 namespace whirl {
+namespace {
+
+// The held coordinates' drift over one revolution under the mean of their load (kMaxHeldDrift).
+void checkHeldDrift(const Model& m, const PeriodicLinearization& p) {
+  const OperatingPoint& first = p.points.front();
+  const LinearModel& lin = p.models.front();
+  const double period = 2 * std::numbers::pi / std::abs(p.rotor_speed);
+  for (size_t k = 0; k < first.held.size(); ++k) {
+    const int d = first.held[k];
+    double mean = 0;
+    for (const OperatingPoint& op : p.points) mean += op.held_load(static_cast<Eigen::Index>(k)) / p.points.size();
+    const auto at = std::find(lin.dofs.begin(), lin.dofs.end(), d) - lin.dofs.begin();
+    const double drift = 0.5 * std::abs(mean) / lin.M(at, at) * period * period;
+    if (!(drift <= kMaxHeldDrift)) {
+      const std::string unit = loadUnit(m, d);
+      throw ComputeError(fmt::format(
+          "operating point: a mean load of {:.4g} {} acts along DOF '{}', which has no stiffness (a free rigid-body "
+          "motion): it would move {:.3g} {} in one revolution (limit {:g}), no periodic operating point; {}",
+          mean, unit, m.dofs[d].name, drift, unit == "N m" ? "rad" : "m", kMaxHeldDrift, holdAdvice(m, d)));
+    }
+  }
+}
+
+}  // namespace
 
 int findAzimuthDof(const Model& m) {
   for (int i = 0; i < m.ndof(); ++i)
@@ -31,6 +60,7 @@ PeriodicLinearization linearizePeriodic(const Model& m, const OperatingPoint& st
     if (k > 0) {
       eq.chord = &p.models.back();  // the stiffness barely changes from one azimuth to the next
       eq.load_scale = p.points.front().load_scale;
+      eq.held = &p.points.front().held;  // every azimuth holds the same free coordinates (a free yaw)
     }
     OperatingPoint op = solveOperatingPoint(m, guess, eq, lw);
     p.models.push_back(linearize(m, op, lw));
@@ -45,6 +75,7 @@ PeriodicLinearization linearizePeriodic(const Model& m, const OperatingPoint& st
     else if (np == 2)
       for (int i : op.solved) guess.q(i) = 2 * op.q(i) - p.points[np - 2].q(i);
   }
+  if (n > 1) checkHeldDrift(m, p);
   return p;
 }
 

@@ -20,17 +20,26 @@ struct Coordinate {
 constexpr double kRigidAzimuthHz = 5e-3;
 
 // Names the mode from the coordinate group with the largest energy share. A vibration dominated
-// by an azimuth (a free generator turning against the rotor) is named after its next group, e.g.
-// "drivetrain".
+// by an azimuth (a free generator turning against the rotor) or by a held coordinate
+// (OperatingPoint::held: a free yaw turning the nacelle against the whirling blades) is named after
+// its next group, e.g. "drivetrain", "flap 2 FW". A mode carried by a held coordinate is a
+// rigid-body mode when it is slow or does not oscillate: the yaw has no structural stiffness, and
+// what the tilt of the deflected tower and the aerodynamics add (a yaw damping) split its zero pair
+// into a near-zero root and a decay (ws03 at 3 m/s: 0.007 Hz "frequency", damping ratio 21).
 void nameRotorMode(Mode& mode, const std::vector<Coordinate>& coords, const std::vector<bool>& azimuth,
-                   double rotor_speed) {
-  std::map<std::string, double> share, azimuth_share;
-  for (size_t i = 0; i < coords.size(); ++i) (azimuth[i] ? azimuth_share : share)[coords[i].group] += mode.participation(i);
-  double az = 0;
-  for (const auto& [g, v] : azimuth_share) az += v;
-  if (share.empty() || (mode.freq_hz < kRigidAzimuthHz && az > 0.5)) {
+                   const std::vector<bool>& held, double rotor_speed) {
+  std::map<std::string, double> share, rigid_share;
+  double az = 0, hd = 0;
+  for (size_t i = 0; i < coords.size(); ++i) {
+    const bool h = i < held.size() && held[i];
+    (azimuth[i] || h ? rigid_share : share)[coords[i].group] += mode.participation(i);
+    if (h) hd += mode.participation(i);
+    if (azimuth[i]) az += mode.participation(i);
+  }
+  if (share.empty() || (mode.freq_hz < kRigidAzimuthHz && az > 0.5) ||
+      (hd > 0.5 && (mode.freq_hz < kRigidAzimuthHz || mode.damped_freq_hz == 0))) {
     mode.rigid_body = true;
-    share = azimuth_share;
+    share = rigid_share;
   }
   const auto best = std::max_element(share.begin(), share.end(), [](auto& a, auto& b) { return a.second < b.second; });
   const std::string& group = best->first;
@@ -94,6 +103,8 @@ RotorModes rotorModes(const Model& m, const PeriodicLinearization& p) {
   for (int i = 0; i < n; ++i) {
     c.blade.push_back(m.dofs[first.dofs[i]].blade);
     c.azimuth.push_back(m.dofs[first.dofs[i]].rotating);
+    const std::vector<int>& held = p.points.front().held;
+    c.held.push_back(std::find(held.begin(), held.end(), first.dofs[i]) != held.end());
     nb = std::max(nb, c.blade.back() + 1);
   }
   // Shapes are in multiblade coordinates: weigh them by the diagonal of M (blade entries alike).
@@ -145,7 +156,7 @@ RotorModes multibladeModes(const RotorCoordinates& c, const MbcLayout& layout, c
       out.coordinates[i] = c.blade[i] < 0 ? coords[i].group : coords[i].group + " " + toString(coords[i].kind);
   }
   out.modes = modesFromEigen(eigenStandard(out.A), n, c.weights, out.coordinates);
-  for (auto& mode : out.modes) nameRotorMode(mode, coords, c.azimuth, rotor_speed);
+  for (auto& mode : out.modes) nameRotorMode(mode, coords, c.azimuth, c.held, rotor_speed);
   return out;
 }
 

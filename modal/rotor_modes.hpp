@@ -31,6 +31,9 @@ struct RotorCoordinates {
   std::vector<std::string> names;  ///< DOF names, e.g. "blade 2 flap 1", "tower FA 1" (dim n)
   std::vector<int> blade;          ///< blade of each coordinate (0-based), −1 = fixed frame
   std::vector<bool> azimuth;       ///< the rotor's azimuth coordinates (rigid rotation)
+  /// Unrestrained coordinates the operating point held (OperatingPoint::held, a free yaw); empty:
+  /// none. A slow mode carried by them is a rigid-body mode, like the azimuth's.
+  std::vector<bool> held;
   MatX weights;                    ///< n × n, weighs participations (a mass matrix or its diagonal)
 };
 

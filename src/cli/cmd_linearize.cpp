@@ -58,6 +58,8 @@ void run(const LinearizeOptions& opt) {
   for (int i = 0; i < m.ninput(); ++i) j["operating_point"]["u"][m.inputs[i].name] = op.u(i);
   j["equilibrium"]["solved_dofs"] = nlohmann::json::array();
   for (int i : op.solved) j["equilibrium"]["solved_dofs"].push_back(m.dofs[i].name);
+  j["equilibrium"]["held_dofs"] = nlohmann::json::array();  // unrestrained: held at their value
+  for (int i : op.held) j["equilibrium"]["held_dofs"].push_back(m.dofs[i].name);
   j["equilibrium"]["iterations"] = op.iterations;
   j["equilibrium"]["residual_norm"] = op.residual_norm;
   j["equilibrium"]["max_abs_residual_active"] = op.residual_max_active;

@@ -62,6 +62,8 @@ ExportPoint point(bool optionals) {
   p.equilibrium.qdd = VecX::Constant(5, -0.0);
   p.equilibrium.u = VecX::Constant(2, tricky(5));
   p.equilibrium.solved = {0, 2, 4};
+  p.equilibrium.held = {1};
+  p.equilibrium.held_load = VecX::Constant(1, tricky(4));
   p.equilibrium.iterations = 7;
   p.equilibrium.residual_norm = tricky(2);
   p.equilibrium.residual_max_active = 3e-9;
@@ -124,6 +126,8 @@ TEST(ExportSerialize, RoundTripIsBitExact) {
     expectSameBits(a.qdd, b.qdd, "qdd");
     expectSameBits(a.u, b.u, "u");
     EXPECT_EQ(a.solved, b.solved);
+    EXPECT_EQ(a.held, b.held);
+    expectSameBits(a.held_load, b.held_load, "held_load");
     EXPECT_EQ(a.iterations, b.iterations);
     EXPECT_TRUE(sameBits(a.residual_norm, b.residual_norm));
     EXPECT_TRUE(sameBits(a.residual_max_active, b.residual_max_active));
