@@ -100,8 +100,8 @@ void addAeroLoads(const Model& m, Workspace<TK>& ws, const VecXT<TK>& q, const V
       const T theta = T(st.twist) + T(pitch - rot(0));
       detail::SectionState<T> sec;
       try {
-        sec = frozen ? detail::frozenSection(am, st, vx, vy, theta, valueOf(r), frozen->axial(index),
-                                             frozen->tangential(index))
+        sec = frozen ? detail::frozenSectionJet(am, st, vx, vy, theta, valueOf(r), frozen->axial(index),
+                                                frozen->tangential(index), ws.jets[static_cast<std::size_t>(index)])
                      : detail::bemSection(am, st, vx, vy, theta, T(r), ws.bem[static_cast<std::size_t>(index)]);
       } catch (const ComputeError& err) {
         throw ComputeError(body.name + " aero element " + std::to_string(si + 1) + " (span " +

@@ -44,6 +44,62 @@ SectionState<T> frozenSection(const AeroModel& am, const AeroStation& st, const 
   return s;
 }
 
+/// frozenSection for an AD pass, from the element's jet: the loads and their derivatives in
+/// (vx, vy, θ) are evaluated once (three seeded directions) and chained with the pass's derivatives of
+/// vx, vy, θ — the same first derivatives as evaluating the section in the pass's scalar. The jet is
+/// reused while the inflow values agree to round-off (the passes of one linearization; their
+/// kinematics rounds differently from pass to pass). Only fx, fy, mz carry derivatives.
+template <class T>
+SectionState<T> frozenSectionJet(const AeroModel& am, const AeroStation& st, const T& vx, const T& vy,
+                                 const T& theta, double r, double ax_ind, double tn_ind, SectionJet& jet) {
+  if constexpr (!std::is_same_v<T, ADChunk>) {
+    return frozenSection(am, st, vx, vy, theta, r, ax_ind, tn_ind);
+  } else {
+    const double x = valueOf(vx), y = valueOf(vy), th = valueOf(theta);
+    const double tol = 1e-12, vscale = tol * (std::abs(x) + std::abs(y));
+    if (!(jet.valid && std::abs(jet.vx - x) <= vscale && std::abs(jet.vy - y) <= vscale &&
+          std::abs(jet.theta - th) <= tol && std::abs(jet.r - r) <= tol * r && jet.ax == ax_ind && jet.tn == tn_ind)) {
+      using Der = ADChunk::DerType;
+      const ADChunk X(x, Der::Unit(0)), Y(y, Der::Unit(1)), TH(th, Der::Unit(2));
+      const aero::SectionLoads<ADChunk> L =
+          aero::frozenLoads(bemStation(am, st, r), X, Y, TH, ax_ind, tn_ind, am.air_density, am.bem);
+      jet = SectionJet{true, x, y, th, r, ax_ind, tn_ind};
+      jet.phi = L.phi.value();
+      jet.alpha = L.alpha.value();
+      jet.W = L.W.value();
+      jet.cl = L.cl.value();
+      jet.cd = L.cd.value();
+      jet.cm = L.cm.value();
+      jet.cx = L.cx.value();
+      jet.cy = L.cy.value();
+      const ADChunk* f[3] = {&L.fx, &L.fy, &L.mz};
+      for (int i = 0; i < 3; ++i) {
+        jet.f[i] = f[i]->value();
+        for (int k = 0; k < 3; ++k) jet.J[i][k] = f[i]->derivatives()(k);
+      }
+    }
+    SectionState<T> s;
+    auto chained = [&](int i) {
+      return ADChunk(jet.f[i], jet.J[i][0] * vx.derivatives() + jet.J[i][1] * vy.derivatives() +
+                                   jet.J[i][2] * theta.derivatives());
+    };
+    s.loads.fx = chained(0);
+    s.loads.fy = chained(1);
+    s.loads.mz = chained(2);
+    s.loads.phi = ADChunk(jet.phi);
+    s.loads.alpha = ADChunk(jet.alpha);
+    s.loads.W = ADChunk(jet.W);
+    s.loads.cl = ADChunk(jet.cl);
+    s.loads.cd = ADChunk(jet.cd);
+    s.loads.cm = ADChunk(jet.cm);
+    s.loads.cx = ADChunk(jet.cx);
+    s.loads.cy = ADChunk(jet.cy);
+    s.a = x != 0 ? -ax_ind / x : 0;
+    s.ap = y != 0 ? tn_ind / y : 0;
+    return s;
+  }
+}
+
 /// Loads with the induction of the current inflow: BEM solved at the values, the inflow angle's
 /// derivatives by the implicit-function theorem. Without induction (AeroDyn WakeMod = 0): φ is the
 /// geometric inflow angle.

@@ -80,10 +80,22 @@ struct BemRoot {
   double phi = 0, a = 0, ap = 0;
 };
 
+/// One blade element's frozen-wake loads at an inflow (vx, vy, θ) and their first derivatives in
+/// those three, kept for the AD passes of one linearization: the section (polar, angles) is then
+/// evaluated once per element instead of once per pass (aero_section.hxx).
+struct SectionJet {
+  bool valid = false;
+  double vx = 0, vy = 0, theta = 0, r = 0, ax = 0, tn = 0;  ///< the values it was evaluated at
+  double phi = 0, alpha = 0, W = 0, cl = 0, cd = 0, cm = 0, cx = 0, cy = 0;  ///< values
+  double f[3] = {0, 0, 0};                                  ///< fx, fy, mz
+  double J[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};        ///< ∂(fx, fy, mz)/∂(vx, vy, θ)
+};
+
 template <class T>
 struct Workspace {
   explicit Workspace(const Model& m);
   std::vector<BemRoot> bem;           ///< per blade element (AeroModel::nstations())
+  std::vector<SectionJet> jets;       ///< per blade element, for AD passes with a frozen wake
   VecXT<T> scratch;                   ///< ndof: generalized forces nobody keeps (rotor outputs)
   std::vector<FrameState<T>> frames;  ///< per body
   std::vector<BasisState<T>> basis;   ///< per body
