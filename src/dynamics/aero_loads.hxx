@@ -105,7 +105,8 @@ void addAeroLoads(const Model& m, Workspace<TK>& ws, const VecXT<TK>& q, const V
                      : detail::bemSection(am, st, vx, vy, theta, T(r), ws.bem[static_cast<std::size_t>(index)]);
       } catch (const ComputeError& err) {
         throw ComputeError(body.name + " aero element " + std::to_string(si + 1) + " (span " +
-                           std::to_string(st.span) + " m): " + err.what());
+                           std::to_string(st.span) + " m) at hub-height wind speed " +
+                           std::to_string(valueOf(speed)) + " m/s: " + err.what());
       }
       const aero::SectionLoads<T>& L = sec.loads;
       const Vec3T<T> Fg = L.fx * xn.template cast<T>() + L.fy * ya.template cast<T>();

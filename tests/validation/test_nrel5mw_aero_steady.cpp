@@ -9,6 +9,7 @@
 
 #include "linearize/trim.hpp"
 #include "src/io/schedule.hpp"
+#include "src/model/error.hpp"
 #include "src/model/elastodyn_model.hpp"
 
 namespace whirl {
@@ -72,6 +73,56 @@ TEST(Nrel5mwAeroSteady, RegionTwoRunsAtTheOptimalTipSpeedRatio) {
   for (double wind : {5.0, 8.0}) {
     const SteadyState s = trimAtWindSpeed(m, wind);
     EXPECT_NEAR(s.condition.rotor_speed * m.aero.rotor_radius / wind, 7.5, 0.2) << wind << " m/s";
+  }
+}
+
+// A schedule's trims start next to their neighbour's balance (trimSchedule); each must be the balance the
+// search over the whole range finds, to the trim's tolerance: the torque balance to 1e-9 of the rated
+// torque, so rotor speed and pitch to ~1e-9 relative (measured max 8e-10 over 3:1:25).
+TEST(Nrel5mwAeroSteady, ScheduleTrimsEqualSeparateTrims) {
+  const Model m = readElastoDynModel(kDir + "Main_Aero.fst");
+  const std::vector<double> winds{6, 7, 8, 11, 12, 13, 16};
+  const std::vector<SteadyState> schedule = trimSchedule(m, winds);
+  ASSERT_EQ(schedule.size(), winds.size());
+  int guessed = 0, separate = 0;
+  for (std::size_t i = 0; i < winds.size(); ++i) {
+    const SteadyState alone = trimAtWindSpeed(m, winds[i]);
+    EXPECT_EQ(schedule[i].above_rated, alone.above_rated) << winds[i];
+    EXPECT_NEAR(schedule[i].condition.rotor_speed, alone.condition.rotor_speed, 1e-8 * alone.condition.rotor_speed)
+        << winds[i];
+    EXPECT_NEAR(*schedule[i].condition.collective_pitch, *alone.condition.collective_pitch, 1e-8) << winds[i];
+    guessed += schedule[i].evaluations;
+    separate += alone.evaluations;
+  }
+  EXPECT_LT(guessed, separate);
+}
+
+// A rotor whose aerodynamic torque cannot overcome the torque law (here: held feathered at 80 deg; the
+// simple VS law has no cut-in, so with fine pitch any wind finds a balance), and a rotor that cannot
+// shed its excess torque within the pitch range, stop with a message that says which and at what
+// wind speed.
+TEST(Nrel5mwAeroSteady, TrimFailuresSayWhy) {
+  const Model m = readElastoDynModel(kDir + "Main_Aero.fst");
+  TrimOptions feathered;
+  feathered.min_pitch = 80 * std::numbers::pi / 180;
+  feathered.max_pitch = 85 * std::numbers::pi / 180;
+  try {
+    trimAtWindSpeed(m, 6.0, feathered);
+    FAIL() << "no error";
+  } catch (const ComputeError& e) {
+    EXPECT_NE(std::string(e.what()).find("trim at 6"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("does not overcome the generator torque law"), std::string::npos)
+        << e.what();
+  }
+  TrimOptions narrow;
+  narrow.max_pitch = 5 * std::numbers::pi / 180;  // 20 m/s needs about 17 deg
+  try {
+    trimAtWindSpeed(m, 20.0, narrow);
+    FAIL() << "no error";
+  } catch (const ComputeError& e) {
+    EXPECT_NE(std::string(e.what()).find("trim at 20"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("exceeds the rated generator torque even at 5"), std::string::npos)
+        << e.what();
   }
 }
 
