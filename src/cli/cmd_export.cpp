@@ -9,6 +9,7 @@
 #include "linearize/export_serialize.hpp"
 #include "linearize/sweep.hpp"
 #include "linearize/state_space.hpp"
+#include "linearize/trim.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/common.hpp"
 #include "src/io/schedule.hpp"
@@ -22,7 +23,7 @@ namespace {
 
 struct CliOptions {
   ModelOptions model;
-  std::string schedule, format, out, inputs, outputs;
+  std::string schedule, wind_range, format, out, inputs, outputs;
   int azimuths = 36;
   bool drop_azimuth = false;
 };
@@ -51,7 +52,8 @@ std::string scheduleContext(const std::string& schedule, int k, const SweepPoint
 }
 
 void run(const CliOptions& opt) {
-  if (opt.model.rpm && !opt.schedule.empty()) throw InputError("export: give --rpm or --schedule, not both");
+  if (bool(opt.model.rpm) + !opt.schedule.empty() + !opt.wind_range.empty() > 1)
+    throw InputError("export: give at most one of --rpm, --schedule and --wind");
   const std::vector<std::string> in = splitList(opt.inputs), out = splitList(opt.outputs);
   const Model base = loadModel(opt.model);
   checkNames(base, in, out);
@@ -63,6 +65,8 @@ void run(const CliOptions& opt) {
     points = readSchedule(opt.schedule);
     if (base.roles.azimuth.empty())
       throw InputError("--rpm: the model has no rotating DOF (mark the azimuth with `rotating: true`)");
+  } else if (!opt.wind_range.empty()) {
+    points = trimmedPoints(base, opt.wind_range);  // each wind speed trimmed, as `whirl steady`
   } else {
     SweepPoint p;  // the model's own rotor speed, or --rpm
     p.condition = operatingCondition(base, opt.model);
@@ -90,7 +94,8 @@ void run(const CliOptions& opt) {
       base, points,
       [&](const Model& m, const SweepPoint& sp, const OperatingPoint& start) {
         ExportPoint p = exportOperatingPoint(m, start, eo);
-        checkSolvedPoints(opt.model, m, {p.equilibrium}, opt.schedule.empty() ? "" : fmt::format("{:g} rpm", sp.rpm));
+        checkSolvedPoints(opt.model, m, {p.equilibrium},
+                          opt.schedule.empty() && opt.wind_range.empty() ? "" : fmt::format("{:g} rpm", sp.rpm));
         p.rpm = sp.rpm;
         p.wind_speed = sp.wind_speed;
         p.pitch_deg = sp.pitch_deg;
@@ -142,6 +147,9 @@ void addExportCommand(CLI::App& app) {
                 "OpenFAST-style .lin (one per azimuth) or JSON");
   addModelOptions(*cmd, opt->model);
   cmd->add_option("--schedule", opt->schedule, "operating schedule CSV (wind speed, RotSpeed, BldPitch columns)");
+  cmd->add_option("--wind", opt->wind_range,
+                  "wind speeds START:STEP:STOP [m/s], each trimmed as `whirl steady` (aerodynamic models with a "
+                  "generator torque law)");
   cmd->add_option("--azimuths", opt->azimuths, "azimuths per revolution (periodic linearization, multiblade average)")
       ->check(CLI::Range(1, 3600));
   cmd->add_option("--format", opt->format, "mat, lin or json")->required()->check(CLI::IsMember({"mat", "lin", "json"}));

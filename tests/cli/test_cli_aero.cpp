@@ -2,6 +2,8 @@
 // aeroelastic deck; a broken aerodynamic input stops with the file and line.
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include "tests/cli/cli_support.hpp"
 
 namespace whirl::test {
@@ -28,6 +30,32 @@ TEST(CliAero, CampbellAlongTheWind) {
   const std::string csv = slurp(dir / "campbell.csv");
   EXPECT_NE(csv.find("flap 1 collective"), std::string::npos);
   EXPECT_NE(csv.find(",8,"), std::string::npos);  // the wind-speed column is filled
+}
+
+// A state-space model per trimmed wind speed for controller design: below rated at fine pitch, above
+// rated pitched at rated rotor speed; the wind speed is an input, its operating value the point's.
+TEST(CliAero, ExportAlongTheWindIsTrimmed) {
+  const auto dir = freshDir("aero_export");
+  const auto r = whirl("export " + kAero + " --wind 8:8:16 --azimuths 4 --format json --out '" + dir.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(slurp(dir / "statespace.json"));
+  const auto& pts = j.at("operating_points");
+  ASSERT_EQ(pts.size(), 2u);
+  EXPECT_DOUBLE_EQ(pts[0].at("wind_speed").get<double>(), 8.0);
+  EXPECT_DOUBLE_EQ(pts[0].at("pitch_deg").get<double>(), 0.0);
+  EXPECT_GT(pts[1].at("pitch_deg").get<double>(), 5.0);  // 16 m/s: above rated, pitched
+  // Rated generator speed VS_RtGnSp = 1162 rpm over the gear ratio 97 (ServoDyn, ElastoDyn files).
+  EXPECT_NEAR(pts[1].at("rpm").get<double>(), 1162.0 / 97.0, 1e-6);
+  bool wind_input = false;
+  for (const auto& u : pts[0].at("model").at("inputs"))
+    if (u.at("name") == "wind speed") {
+      wind_input = true;
+      EXPECT_DOUBLE_EQ(u.at("op").get<double>(), 8.0);
+    }
+  EXPECT_TRUE(wind_input);
+  const auto both = whirl("export " + kAero + " --wind 8:1:9 --rpm 9 --format json --out '" + dir.string() + "'");
+  EXPECT_NE(both.code, 0);
+  EXPECT_NE(both.err.find("at most one of --rpm, --schedule and --wind"), std::string::npos) << both.err;
 }
 
 TEST(CliAero, ParkedAndFeatheredRotorsInWind) {
