@@ -37,8 +37,9 @@ LinearModel linearize(const Model& m, const OperatingPoint& op, LinearizeWorkspa
   const int n = static_cast<int>(lin.dofs.size());
   for (int i : lin.dofs) lin.dof_names.push_back(m.dofs[i].name);
   for (const auto& in : m.inputs) lin.input_names.push_back(in.name);
-  std::vector<int> inputs(m.ninput());
-  for (int i = 0; i < m.ninput(); ++i) inputs[i] = i;
+  const int nu = opt.inputs ? m.ninput() : 0;
+  std::vector<int> inputs(nu);
+  for (int i = 0; i < nu; ++i) inputs[i] = i;
 
   Workspace<double>& ws = lw.ws;
   JacobianWorkspace& jw = lw.jw;
@@ -56,7 +57,8 @@ LinearModel linearize(const Model& m, const OperatingPoint& op, LinearizeWorkspa
   VecX e;  // e at the point, from a K pass that evaluated every term, or in double below
   lin.K = rows(residualJacobian(m, jw, op.q, op.qd, op.qdd, op.u, Wrt::Q, lin.dofs, &e, frozen), -1.0);
   lin.C = rows(residualJacobian(m, jw, op.q, op.qd, op.qdd, op.u, Wrt::Qd, lin.dofs, nullptr, frozen), -1.0);
-  lin.Q = rows(residualJacobian(m, jw, op.q, op.qd, op.qdd, op.u, Wrt::U, inputs, nullptr, frozen), 1.0);
+  lin.Q = nu > 0 ? rows(residualJacobian(m, jw, op.q, op.qd, op.qdd, op.u, Wrt::U, inputs, nullptr, frozen), 1.0)
+                 : MatX(n, 0);
   MatX Mfull;
   massMatrix(m, ws, op.q, Mfull);
   lin.M.resize(n, n);
@@ -74,7 +76,6 @@ LinearModel linearize(const Model& m, const OperatingPoint& op, LinearizeWorkspa
     throw ComputeError("the mass matrix is not positive definite: a coordinate without inertia? (check masses, "
                        "inertias and which DOFs are frozen)");
   // One solve with the right-hand sides [K C Q].
-  const int nu = m.ninput();
   MatX rhs(n, 2 * n + nu);
   rhs << lin.K, lin.C, lin.Q;
   ldltSolveInPlace(ldlt, rhs);

@@ -29,6 +29,9 @@ struct LinearizeOptions {
   /// OpenFAST linearizes) or let the induction follow each perturbation at once (quasi-steady BEM:
   /// its derivative by the implicit-function theorem). No effect without aerodynamics.
   bool frozen_wake = true;
+  /// The input columns Q and B (one more AD pass or two); an eigenanalysis needs only M, C, K and A,
+  /// and leaves them out (Q and B are then n × 0 and 2n × 0).
+  bool inputs = true;
 };
 
 LinearModel linearize(const Model& model, const OperatingPoint& op, LinearizeWorkspace& lw,

@@ -63,7 +63,7 @@ PeriodicLinearization linearizePeriodic(const Model& m, const OperatingPoint& st
       eq.held = &p.points.front().held;  // every azimuth holds the same free coordinates (a free yaw)
     }
     OperatingPoint op = solveOperatingPoint(m, guess, eq, lw);
-    p.models.push_back(linearize(m, op, lw));
+    p.models.push_back(linearize(m, op, lw, opt.linearize));
     p.azimuths.push_back(psi);
     p.points.push_back(op);
     guess = op;

@@ -15,6 +15,7 @@ namespace whirl {
 struct PeriodicOptions {
   int azimuths = 36;     ///< number of equally spaced azimuths over 2π
   int azimuth_dof = -1;  ///< the coordinate stepped; −1 = the first rotating coordinate
+  LinearizeOptions linearize;  ///< of each azimuth's linearization
 };
 
 struct PeriodicLinearization {

@@ -10,6 +10,7 @@ CampbellPoint campbellPoint(const Model& m, const SweepPoint& point, const Opera
                             const SweepOptions& opt) {
   PeriodicOptions popt;
   popt.azimuths = opt.azimuths;
+  popt.linearize.inputs = false;  // modes only
   const PeriodicLinearization p = linearizePeriodic(m, start, popt);
   std::vector<std::string> problems;
   if (opt.check_point) problems = opt.check_point(m, p.points, point);

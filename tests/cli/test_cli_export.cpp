@@ -126,7 +126,7 @@ TEST(CliExport, BadInputFailsWithOneLineAndWritesNothing) {
                      "select the rotating-frame inputs/outputs of every blade", dir);
   expectOneLineError(test::whirl("export " + kFst + " --format mat --rpm 9 --schedule cases/nrel5mw/NREL5MW_Oper.csv "
                                  "--out " + dir.string()),
-                     "not both", dir);
+                     "at most one of --rpm, --schedule and --wind", dir);
   const auto file = dir / "a_file";
   std::ofstream(file) << "x";
   const auto r = test::whirl("export " + kFst + " --format mat --out " + (file / "sub").string());
