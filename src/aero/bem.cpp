@@ -449,7 +449,7 @@ SectionLoads<T> frozenLoads(const BemStation& s, const T& Vx, const T& Vy, const
 
 template <class T>
 SectionLoads<T> quasiSteadyLoads(const BemStation& s, const T& Vx, const T& Vy, const T& theta, double phi0,
-                                 double rho, const BemOptions& o, const T* radius) {
+                                 double rho, const BemOptions& o, const T* radius, const T* weight) {
   const T phi = inflowAngle<T>(s, Vx, Vy, theta, phi0, o, radius);
   const Induction<T> ind = inductions<T>(s, phi, Vx, Vy, theta, o, radius);
   T a = ind.a, ap = ind.ap;
@@ -462,8 +462,22 @@ SectionLoads<T> quasiSteadyLoads(const BemStation& s, const T& Vx, const T& Vy, 
     if (valueOf(ap) < kMinAp) ap = T(kMinAp);
     if (valueOf(ap) > kMaxAp) ap = T(kMaxAp);
   }
+  if (weight) {
+    a = a * *weight;
+    ap = ap * *weight;
+  }
   const T x = Vx * (1.0 - a), y = Vy * (1.0 + ap);
   return loadsFromFlow<T>(s, x, y, theta, rho);
+}
+
+template <class T>
+T inductionWeight(const T& tsr) {
+  // BEMT_lowerBoundTSR = 1, BEMT_upperBoundTSR = 2 (AeroDyn BEMTUncoupled).
+  const double v = valueOf(tsr);
+  if (v >= 2.0) return T(1.0);
+  if (v <= 1.0) return T(0.0);
+  using std::cos;
+  return 0.5 * (1.0 - cos((tsr - 1.0) * kPi));
 }
 
 #define WHIRL_BEM_INSTANTIATE(T)                                                                                 \
@@ -478,7 +492,8 @@ SectionLoads<T> quasiSteadyLoads(const BemStation& s, const T& Vx, const T& Vy, 
   template SectionLoads<T> frozenLoads<T>(const BemStation&, const T&, const T&, const T&, double, double,     \
                                           double, const BemOptions&);                                           \
   template SectionLoads<T> quasiSteadyLoads<T>(const BemStation&, const T&, const T&, const T&, double, double, \
-                                               const BemOptions&, const T*);
+                                               const BemOptions&, const T*, const T*);                        \
+  template T inductionWeight<T>(const T&);
 
 WHIRL_BEM_INSTANTIATE(double)
 WHIRL_BEM_INSTANTIATE(ADChunk)

@@ -179,8 +179,17 @@ SectionLoads<T> frozenLoads(const BemStation& s, const T& Vx, const T& Vy, const
 /// Quasi-steady loads (induction re-solved with the inputs): φ = inflowAngle(...phi0...), inductions at φ
 /// (0 if not valid, else limited to [−1, 1.5] and [−1, 1] as AeroDyn's limitInductionFactors), then AeroDyn's
 /// output φ = atan2(Vx(1−a), Vy(1+a')), α, W and loads as frozenLoads.
+/// `weight` (optional, default 1) scales a and a' after the limits, as AeroDyn's check_turnOffBEMT does at
+/// low tip-speed ratios (inductionWeight).
 template <class T>
 SectionLoads<T> quasiSteadyLoads(const BemStation& s, const T& Vx, const T& Vy, const T& theta, double phi0,
-                                 double rho, const BemOptions& o, const T* radius = nullptr);
+                                 double rho, const BemOptions& o, const T* radius = nullptr,
+                                 const T* weight = nullptr);
+
+/// AeroDyn's BEM weight at tip-speed ratio λ (BEMT check_turnOffBEMT with BlendCosine): 0 for λ ≤ 1
+/// (induction off: near standstill the momentum balance has no meaning), 1 for λ ≥ 2, ½(1 − cos(π(λ − 1)))
+/// between.
+template <class T>
+T inductionWeight(const T& tsr);
 
 }  // namespace whirl::aero

@@ -50,6 +50,18 @@ void addAeroLoads(const Model& m, Workspace<TK>& ws, const VecXT<TK>& q, const V
   const Vec3T<TK> disk = hub.R.col(0);
   const T speed = m.roles.wind_speed_input >= 0 ? u(m.roles.wind_speed_input) : T(0);
   const Vec3 wind_dir = detail::windDirection(am.wind);
+  // AeroDyn turns the induction off at low tip-speed ratios (BEMT check_turnOffBEMT): λ = |Ω| zTip / |V·x|
+  // with the rotor speed about the disk normal and the hub-height wind along it (AeroDyn: the
+  // disk-averaged inflow; equal without shear and structural motion), weight 0 below λ = 1, 1 above 2.
+  T weight(1.0);
+  if (am.induction && !frozen) {
+    const TK omega = hub.w.dot(disk);
+    const T along = speed * T(TK(wind_dir.template cast<TK>().dot(disk)));
+    const T va = valueOf(along) < 0 ? T(-along) : along;
+    const T om = T(valueOf(omega) < 0 ? TK(-omega) : omega);
+    if (valueOf(va) > 0) weight = aero::inductionWeight<T>(om * am.tip_radius / va);
+    else weight = T(valueOf(om) > 0 ? 1.0 : 0.0);
+  }
   if (record) *record = AeroRecord{};
   int index = 0;  // element over all blades
   for (std::size_t bi = 0; bi < am.blades.size(); ++bi) {
@@ -102,7 +114,8 @@ void addAeroLoads(const Model& m, Workspace<TK>& ws, const VecXT<TK>& q, const V
       try {
         sec = frozen ? detail::frozenSectionJet(am, st, vx, vy, theta, valueOf(r), frozen->axial(index),
                                                 frozen->tangential(index), ws.jets[static_cast<std::size_t>(index)])
-                     : detail::bemSection(am, st, vx, vy, theta, T(r), ws.bem[static_cast<std::size_t>(index)]);
+                     : detail::bemSection(am, st, vx, vy, theta, T(r), weight,
+                                          ws.bem[static_cast<std::size_t>(index)]);
       } catch (const ComputeError& err) {
         throw ComputeError(body.name + " aero element " + std::to_string(si + 1) + " (span " +
                            std::to_string(st.span) + " m) at hub-height wind speed " +

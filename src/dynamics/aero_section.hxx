@@ -103,10 +103,13 @@ SectionState<T> frozenSectionJet(const AeroModel& am, const AeroStation& st, con
 /// Loads with the induction of the current inflow: BEM solved at the values, the inflow angle's
 /// derivatives by the implicit-function theorem. Without induction (AeroDyn WakeMod = 0): φ is the
 /// geometric inflow angle.
+///
+/// `weight` is AeroDyn's BEM weight of the rotor's tip-speed ratio (aero::inductionWeight): the
+/// inductions are scaled by it; at 0 (λ ≤ 1: parked, idling, start-up) BEM is not solved at all.
 template <class T>
 SectionState<T> bemSection(const AeroModel& am, const AeroStation& st, const T& vx, const T& vy, const T& theta,
-                           const T& r, BemRoot& root) {
-  if (!am.induction) return frozenSection(am, st, vx, vy, theta, valueOf(r), 0.0, 0.0);
+                           const T& r, const T& weight, BemRoot& root) {
+  if (!am.induction || valueOf(weight) == 0.0) return frozenSection(am, st, vx, vy, theta, valueOf(r), 0.0, 0.0);
   aero::BemStation b = bemStation(am, st, valueOf(r));
   b.theta = valueOf(theta);
   const double x = valueOf(vx), y = valueOf(vy);
@@ -124,9 +127,10 @@ SectionState<T> bemSection(const AeroModel& am, const AeroStation& st, const T& 
     root = BemRoot{true, x, y, b.theta, b.r, sol.phi, sol.a, sol.ap};
   }
   SectionState<T> s;
-  s.loads = aero::quasiSteadyLoads(b, vx, vy, theta, root.phi, am.air_density, am.bem, &r);
-  s.a = root.a;
-  s.ap = root.ap;
+  const bool blended = valueOf(weight) < 1.0;
+  s.loads = aero::quasiSteadyLoads(b, vx, vy, theta, root.phi, am.air_density, am.bem, &r, blended ? &weight : nullptr);
+  s.a = root.a * (blended ? valueOf(weight) : 1.0);
+  s.ap = root.ap * (blended ? valueOf(weight) : 1.0);
   return s;
 }
 

@@ -133,6 +133,21 @@ TEST(Bem, ResidualIsZeroAtTheReturnedPhi) {
   EXPECT_EQ(n, 48);
 }
 
+// AeroDyn BEMT check_turnOffBEMT: BlendCosine(λ, 1, 2) = ½(1 − cos(π(λ − 1))) between λ = 1 and 2, 0 below,
+// 1 above; its AD derivative is (π/2) sin(π(λ − 1)).
+TEST(Bem, InductionWeightIsAeroDynsBlend) {
+  EXPECT_EQ(inductionWeight<double>(0.0), 0.0);
+  EXPECT_EQ(inductionWeight<double>(1.0), 0.0);
+  EXPECT_NEAR(inductionWeight<double>(1.5), 0.5, 1e-15);
+  EXPECT_NEAR(inductionWeight<double>(1.25), 0.5 * (1 - std::cos(0.25 * std::numbers::pi)), 1e-15);
+  EXPECT_EQ(inductionWeight<double>(2.0), 1.0);
+  EXPECT_EQ(inductionWeight<double>(7.5), 1.0);
+  ADChunk x(1.25);
+  x.derivatives() = ADChunk::DerType::Unit(0);
+  EXPECT_NEAR(inductionWeight<ADChunk>(x).derivatives()(0), 0.5 * std::numbers::pi * std::sin(0.25 * std::numbers::pi),
+              1e-14);
+}
+
 // A neighbouring root as the starting point (the previous iterate of an equilibrium) gives the root of
 // the cold Brent search to the solver's tolerances, in fewer residual evaluations; a hint outside the
 // selected bracket, or far from the root, still ends at the same root.
