@@ -25,7 +25,7 @@ std::optional<std::filesystem::path> path_of_first(const OpenFastFile& f, std::i
 /// Duplicates only (the .fst has many keys across versions, none of which whirl reads by position):
 /// OpenFAST v5 repeats the per-rotor lines for a second rotor.
 const OpenFastLayout& layout() {
-  static const OpenFastLayout l{".fst", {}, {"EDFile", "BDBldFile", "ServoFile", "SrvDFile"}};
+  static const OpenFastLayout l{".fst", {}, {"EDFile", "BDBldFile(k)", "ServoFile", "SrvDFile"}};
   return l;
 }
 

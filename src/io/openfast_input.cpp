@@ -348,15 +348,15 @@ std::optional<bool> OpenFastFile::find_bool(std::string_view key) const {
 }
 
 void OpenFastFile::check_layout(const OpenFastLayout& layout) const {
-  // Position in layout.keys of the key spelled `key` (any spelling canonical_key accepts), or npos.
+  // Position in `keys` of the key spelled `key` (any spelling canonical_key accepts), or npos. A layout
+  // key written `Name(k)` is an array: `Name` and an index ("bldfile1" from BldFile(1) or BldFile1).
   auto position = [](const std::vector<std::string_view>& keys, const std::string& key) {
     const std::string c = canonical_key(key);
-    for (std::size_t i = 0; i < keys.size(); ++i)
-      if (c == to_lower(keys[i])) return i;  // first, so that sig_v2 is not read as sig_v(2)
     for (std::size_t i = 0; i < keys.size(); ++i) {
-      // `Name` followed by an index only: "bldfile1" (from BldFile(1) or BldFile1) is a BldFile entry.
-      const std::string k = to_lower(keys[i]);
-      if (c.size() > k.size() && c.compare(0, k.size(), k) == 0 &&
+      const bool array = keys[i].size() > 3 && keys[i].substr(keys[i].size() - 3) == "(k)";
+      const std::string k = to_lower(array ? keys[i].substr(0, keys[i].size() - 3) : keys[i]);
+      if (!array && c == k) return i;
+      if (array && c.size() > k.size() && c.compare(0, k.size(), k) == 0 &&
           c.find_first_not_of("0123456789", k.size()) == std::string::npos)
         return i;
     }

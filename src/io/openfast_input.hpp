@@ -53,8 +53,10 @@ struct OpenFastTable {
 /// The keys of one OpenFAST file type, over the versions whirl reads (for OpenFastFile::check_layout).
 struct OpenFastLayout {
   const char* name = "";                     ///< file type for messages, e.g. "ElastoDyn"
-  std::vector<std::string_view> keys;        ///< every key in file order (versions merged), without "(n)" indices; empty: any key accepted
-  std::vector<std::string_view> repeatable;  ///< keys that may appear more than once (with the same index)
+  /// Every key in file order (versions merged); an array written `Name(k)` (its entries `Name(1)`,
+  /// `Name1`, …); empty: any key accepted.
+  std::vector<std::string_view> keys;
+  std::vector<std::string_view> repeatable;  ///< keys that may appear more than once (same spelling rule)
 };
 
 /// A parsed OpenFAST input file. Read-only apart from `set_value` (overrides).

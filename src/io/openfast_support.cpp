@@ -20,8 +20,10 @@ std::vector<std::string> unsupported_options(const FstInput& fst) {
 std::vector<std::string> unsupported_options(const ElastoDynInput& ed) {
   Refusals r(ed.source);
   const ElastoDynDofs& d = ed.dof;
-  r.add_if(ed.config.NumBl != 3, "NumBl", "only 3-bladed rotors are modelled");
-  r.add_if(ed.config.NumBl != 3 && d.TeetDOF, "TeetDOF", "a teetering hub is not modelled");
+  // A teetering hub exists only on 2 blades: one reason, with the teeter named in it.
+  r.add_if(ed.config.NumBl != 3, "NumBl",
+           d.TeetDOF ? "only 3-bladed rotors are modelled, nor the teetering hub (TeetDOF) of this one"
+                     : "only 3-bladed rotors are modelled");
   r.add_if(ed.Furling, "Furling", "rotor and tail furl are not modelled");
   r.add_if(d.PitchDOF.value_or(false), "PitchDOF", "blade pitch flexibility is not modelled");
   r.add_if(ed.YawFrctMod.value_or(0) != 0, "YawFrctMod", "yaw-bearing friction is not smooth and cannot be linearized");

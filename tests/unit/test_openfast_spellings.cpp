@@ -106,7 +106,7 @@ TEST(OpenFastSpellings, UnknownLabelNamesTheExpectedKey) {
   const std::string msg = whirl::test::turbineError(replace_once(nrelEd(), "240000   NacMass", "240000   NacMas"));
   EXPECT_THAT(msg, HasSubstr(std::string(kEd) + ":77: NacMas: not a key of an OpenFAST ElastoDyn file "
                                                 "(expected NacMass here)"));
-  // An index on a key that has none is no spelling of it.
+  // An index on a key that is no array is no spelling of it (NacMass1 is not NacMass).
   const std::string idx = whirl::test::turbineError(replace_once(nrelEd(), "240000   NacMass", "240000   NacMass1"));
   EXPECT_THAT(idx, HasSubstr(":77: NacMass1: not a key of an OpenFAST ElastoDyn file"));
 }
@@ -138,6 +138,7 @@ whirl::LinearModel linearModel(const std::string& tower, const std::string& blad
   dir.write(kEd, nrelEd());
   dir.write(kTower, tower);
   dir.write(kBlade, blade);
+  dir.copy(nrel5mw_dir() / "NRELOffshrBsline5MW_Onshore_ServoDyn.dat");  // yaw spring
   const auto fst = dir.copy(nrel5mw_dir() / "Main_Onshore.fst");
   const whirl::Model m = whirl::readElastoDynModel(fst.string(), {"RotSpeed=0"});
   return whirl::linearize(m, whirl::solveOperatingPoint(m, whirl::initialPoint(m)));
@@ -181,7 +182,7 @@ TEST(OpenFastOneStation, TheStationMustBeAtZero) {
   EXPECT_THAT(input_error_message([&] { whirl::io::read_elastodyn_tower(p); }),
               HasSubstr("t.dat:20: HtFract: the only station must be at 0 (is 0.5)"));
   const auto none = dir.write("n.dat", replace_once(towerWith({"0.0  4.0E+03  3.0E+11  2.5E+11"}),
-                                                    "          1   NTwInpSt", "          0   NTwInpSt"));
+                                                    "         1   NTwInpSt", "         0   NTwInpSt"));
   EXPECT_THAT(input_error_message([&] { whirl::io::read_elastodyn_tower(none); }),
               HasSubstr("n.dat:4: NTwInpSt: must be at least 1, is 0"));
 }
@@ -216,7 +217,7 @@ TEST(OpenFastDecks, PlatformDofsAreOneRefusal) {
                                                 "modelled: no hydrostatics or mooring, the tower base is clamped; "
                                                 "also on: PtfmSwDOF, PtfmHvDOF, PtfmRDOF, PtfmPDOF, PtfmYDOF)"));
   EXPECT_EQ(msg.find("not supported"), msg.rfind("not supported"));  // one clause
-  EXPECT_LT(msg.size(), 300u);
+  EXPECT_EQ(msg.find(';'), msg.rfind(';'));                          // the one ";" is "; also on"
 }
 
 }  // namespace
