@@ -94,6 +94,22 @@ TEST(OpenFastSpellings, WisdemSpellingReadsTheSameTurbine) {
   }
 }
 
+// The IEA 3.4 MW reference turbine as its repository ships it (WISDEM spelling; before issue 16 it
+// stopped at "BldFile1: not a key of an OpenFAST ElastoDyn file").
+TEST(OpenFastSpellings, Iea34DeckReads) {
+  const auto fst = openfast_data_dir() / "decks" / "IEA-3.4-130-RWT" / "IEA-3.4-130-RWT.fst";
+  const OpenFastTurbine t = read_openfast_turbine(fst);
+  const auto& e = t.elastodyn;
+  EXPECT_DOUBLE_EQ(e.config.TipRad, 64.90852112228899);                   // ElastoDyn.dat line 45
+  ASSERT_EQ(e.blades.size(), 3u);                                         // BldFile1..3, lines 86–88
+  EXPECT_EQ(e.BldFile[1].filename(), "IEA-3.4-130-RWT_ElastoDyn_blade.dat");
+  EXPECT_EQ(e.blades[0].BldFlDmp, (std::array<double, 2>{3.0, 3.0}));    // BldFlDmp1, BldFlDmp2
+  EXPECT_DOUBLE_EQ(e.blades[0].BldEdDmp, 3.0);                            // BldEdDmp1
+  EXPECT_DOUBLE_EQ(e.blades[0].BldFl1Sh[0], 0.2979932369894798);          // BldFl1Sh(2), blade line 48
+  EXPECT_EQ(e.tower.NTwInpSt, 10);
+  EXPECT_NO_THROW(whirl::io::require_supported(t));
+}
+
 TEST(OpenFastSpellings, BothSpellingsOfOneKeyAreGivenTwice) {
   const std::string msg = whirl::test::turbineError(replace_once(
       nrelEd(), "\"NRELOffshrBsline5MW_Blade.dat\"    BldFile(2)",
