@@ -22,7 +22,7 @@ std::vector<std::string> unsupported_options(const ElastoDynInput& ed) {
   const ElastoDynDofs& d = ed.dof;
   // A teetering hub exists only on 2 blades: one reason, with the teeter named in it.
   r.add_if(ed.config.NumBl != 3, "NumBl",
-           d.TeetDOF ? "only 3-bladed rotors are modelled, nor the teetering hub (TeetDOF) of this one"
+           d.TeetDOF ? "only 3-bladed rotors are modelled, and no teetering hub: TeetDOF is on too"
                      : "only 3-bladed rotors are modelled");
   r.add_if(ed.Furling, "Furling", "rotor and tail furl are not modelled");
   r.add_if(d.PitchDOF.value_or(false), "PitchDOF", "blade pitch flexibility is not modelled");
@@ -40,8 +40,8 @@ std::vector<std::string> unsupported_options(const ElastoDynInput& ed) {
       others += (others.empty() ? "" : ", ") + std::string(key);
   }
   r.add_if(!first.empty(), first,
-           "platform DOFs are not modelled: no hydrostatics or mooring, the tower base is clamped" +
-               (others.empty() ? std::string() : "; also on: " + others));
+           "platform DOFs are not modelled" + (others.empty() ? std::string() : ", and " + others + " are on too") +
+               ": no hydrostatics or mooring, the tower base is clamped");
   r.add_if(ed.config.TwrRBHt.value_or(0.0) != 0.0, "TwrRBHt", "a rigid tower-base segment is not modelled");
   return r.take();
 }

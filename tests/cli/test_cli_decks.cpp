@@ -41,7 +41,8 @@ TEST(CliDecks, PlatformDofsOneLineOneReason) {
                              "--set PtfmHvDOF=True --set PtfmPDOF=True");
   EXPECT_NE(r.code, 0);
   EXPECT_THAT(r.err, HasSubstr("PtfmSgDOF: True not supported by whirl (platform DOFs are not modelled"));
-  EXPECT_THAT(r.err, HasSubstr("also on: PtfmHvDOF, PtfmPDOF)"));
+  EXPECT_THAT(r.err, HasSubstr("and PtfmHvDOF, PtfmPDOF are on too: no hydrostatics or mooring"));
+  EXPECT_EQ(r.err.find(';'), std::string::npos) << r.err;
   EXPECT_EQ(lines(r.err), 1) << r.err;
   EXPECT_EQ(r.err.find("not supported"), r.err.rfind("not supported")) << r.err;
 }

@@ -184,7 +184,7 @@ TEST_F(BadInput, TwoBladedTeeteringRotorIsRefused) {
   const std::vector<std::string> issues = whirl::io::unsupported_options(t.elastodyn);
   ASSERT_EQ(issues.size(), 1u);  // one reason (issue 16): the teeter is part of the 2-bladed rotor
   EXPECT_EQ(issues[0], path(kEd) + ":44: NumBl: 2 not supported by whirl (only 3-bladed rotors are modelled, "
-                                   "nor the teetering hub (TeetDOF) of this one)");
+                                   "and no teetering hub: TeetDOF is on too)");
   EXPECT_EQ(input_error_message([&] { whirl::io::require_supported(t); }), issues[0]);
 }
 
