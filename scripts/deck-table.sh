@@ -20,8 +20,9 @@ cat <<'HEAD'
 
 Each primary file of `../shared/data/decks` (FAST v8 certification tests, OpenFAST toolbox NREL 5MW,
 IEA 3.4 MW reference turbine; its README names the sources) given to `whirl modes DECK` as shipped
-and with `--set CompAero=0` (the structural model of the same deck, no AeroDyn read). The offshore certification tests Test19–25 are left out (HydroDyn, SubDyn, moorings: another
-issue). "refused" quotes the first line of the message; paths are relative to the decks folder.
+and with `--set CompAero=0` (the structural model of the same deck, no AeroDyn read). The offshore
+certification tests Test19–25 are left out (HydroDyn, SubDyn, moorings: another issue). "refused"
+quotes the first line of the message; paths are relative to the decks folder.
 Regenerate with `bash scripts/deck-table.sh > docs/decks.md` (after building `build/whirl`).
 
 HEAD
