@@ -45,8 +45,7 @@ DistributedTable read_distributed_table(const OpenFastFile& f, std::string_view 
   const std::string file = f.path().string();
   const std::string key(count_key);
   const int count = f.get_int(count_key);
-  if (count < 2) throw InputError(f.where(count_key, "must be at least 2 (stations from 0 to 1), is " +
-                                                         std::to_string(count)));
+  if (count < 1) throw InputError(f.where(count_key, "must be at least 1, is " + std::to_string(count)));
   const OpenFastTable* tab = f.find_table(first_column);
   if (!tab)
     throw InputError(f.where(count_key, "no table with a '" + std::string(first_column) +
@@ -87,6 +86,20 @@ DistributedTable read_distributed_table(const OpenFastFile& f, std::string_view 
     if (!t.has(name))
       throw InputError(where(file, tab->header_line, std::string(name),
                              "column missing from the table (columns: " + joined(t.names) + ")"));
+  if (count == 1) {
+    // One station: ElastoDyn holds its properties over the whole span (InterpStp of one point; the
+    // fraction must be 0, ValidateTowerData/ValidateBladeData). Two equal stations at fractions 0 and
+    // 1 interpolate to the same constant everywhere, and every later use needs no special case.
+    const int c = index_of(t, first_column);
+    if (t.values[static_cast<std::size_t>(c)].front() != 0.0)
+      throw InputError(where(file, t.row_lines.front(), t.names[static_cast<std::size_t>(c)],
+                             "the only station must be at 0 (is " +
+                                 number_text(t.values[static_cast<std::size_t>(c)].front()) + ")"));
+    for (std::vector<double>& v : t.values) v.push_back(v.front());
+    t.values[static_cast<std::size_t>(c)].back() = 1.0;
+    t.row_lines.push_back(t.row_lines.front());
+    t.constant = true;
+  }
   return t;
 }
 

@@ -19,6 +19,7 @@ struct DistributedTable {
   std::vector<std::string> units;           ///< unit of each column as written, e.g. "(kg/m)"; "" if not given
   std::vector<std::vector<double>> values;  ///< values[column][station]
   std::vector<int> row_lines;               ///< file line of each station
+  bool constant = false;                    ///< one station in the file, stored as two equal rows at 0 and 1
 
   std::size_t rows() const { return row_lines.size(); }
   /// Column by name, or nullptr.
@@ -29,9 +30,10 @@ struct DistributedTable {
 };
 
 /// Reads the table of `f` that has a column `first_column` and checks it against the integer key
-/// `count_key`: at least 2 stations, exactly `count_key` rows (fewer = truncated file), one number per
+/// `count_key`: at least 1 station, exactly `count_key` rows (fewer = truncated file), one number per
 /// column in every row, no NaN or inf, and every column of `required` present. Errors name file, line
-/// and key or column.
+/// and key or column. One station (constant properties, which ElastoDyn accepts: SWRT and AWT-27
+/// towers) must sit at 0 in `first_column`; it is returned as two equal rows at 0 and 1 (`constant`).
 DistributedTable read_distributed_table(const OpenFastFile& f, std::string_view count_key,
                                         std::string_view first_column,
                                         std::initializer_list<std::string_view> required);

@@ -8,21 +8,21 @@
 namespace whirl::io {
 namespace {
 
-/// Keys of ElastoDyn files, all versions whirl reads (FAST 8 ElastoDyn v1.00 to OpenFAST v5), indices left out.
+/// Keys of ElastoDyn files, all versions whirl reads (FAST 8 ElastoDyn v1.00 to OpenFAST v5), arrays written Name(k).
 const OpenFastLayout& layout() {
   static const OpenFastLayout l{
       "ElastoDyn",
       {
       "Echo", "Method", "DT", "Gravity", "FlapDOF1", "FlapDOF2", "EdgeDOF", "PitchDOF", "TeetDOF", "DrTrDOF",
       "GenDOF", "YawDOF", "TwFADOF1", "TwFADOF2", "TwSSDOF1", "TwSSDOF2", "PtfmSgDOF", "PtfmSwDOF", "PtfmHvDOF",
-      "PtfmRDOF", "PtfmPDOF", "PtfmYDOF", "OoPDefl", "IPDefl", "BlPitch", "TeetDefl", "Azimuth", "RotSpeed",
+      "PtfmRDOF", "PtfmPDOF", "PtfmYDOF", "OoPDefl", "IPDefl", "BlPitch(k)", "TeetDefl", "Azimuth", "RotSpeed",
       "NacYaw", "TTDspFA", "TTDspSS", "PtfmSurge", "PtfmSway", "PtfmHeave", "PtfmRoll", "PtfmPitch", "PtfmYaw",
-      "NumBl", "TipRad", "HubRad", "PreCone", "HubCM", "UndSling", "Delta3", "AzimB1Up", "OverHang", "ShftGagL",
+      "NumBl", "TipRad", "HubRad", "PreCone(k)", "HubCM", "UndSling", "Delta3", "AzimB1Up", "OverHang", "ShftGagL",
       "ShftTilt", "NacCMxn", "NacCMyn", "NacCMzn", "NcIMUxn", "NcIMUyn", "NcIMUzn", "Twr2Shft", "TowerHt",
       "TowerBsHt", "TwrRBHt", "TwrDraft", "PtfmCMxt", "PtfmCMyt", "PtfmCMzt", "PtfmRefxt", "PtfmRefyt",
-      "PtfmRefzt", "PtfmRef", "TipMass", "PBrIner", "BlPIner", "HubMass", "HubIner", "HubIner_Teeter", "GenIner",
+      "PtfmRefzt", "PtfmRef", "TipMass(k)", "PBrIner(k)", "BlPIner(k)", "HubMass", "HubIner", "HubIner_Teeter", "GenIner",
       "NacMass", "NacYIner", "YawBrMass", "PtfmMass", "PtfmRIner", "PtfmPIner", "PtfmYIner", "PtfmXYIner",
-      "PtfmYZIner", "PtfmXZIner", "BldNodes", "BldFile", "TeetMod", "TeetDmpP", "TeetDmp", "TeetCDmp", "TeetSStP",
+      "PtfmYZIner", "PtfmXZIner", "BldNodes", "BldFile(k)", "TeetMod", "TeetDmpP", "TeetDmp", "TeetCDmp", "TeetSStP",
       "TeetHStP", "TeetSSSp", "TeetHSSp", "YawFrctMod", "M_CSmax", "M_CD", "sig_v", "sig_v2", "OmgCut", "M_FCSmax",
       "M_MCSmax", "M_FCD", "M_MCD", "GBoxEff", "GBRatio", "DTTorSpr", "DTTorDmp", "Furling", "FurlFile",
       "TwrNodes", "TwrFile", "SumPrint", "OutFile", "TabDelim", "OutFmt", "TStart", "DecFact", "NTwGages",

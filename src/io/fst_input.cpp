@@ -25,8 +25,22 @@ std::optional<std::filesystem::path> path_of_first(const OpenFastFile& f, std::i
 /// Duplicates only (the .fst has many keys across versions, none of which whirl reads by position):
 /// OpenFAST v5 repeats the per-rotor lines for a second rotor.
 const OpenFastLayout& layout() {
-  static const OpenFastLayout l{".fst", {}, {"EDFile", "BDBldFile", "ServoFile", "SrvDFile"}};
+  static const OpenFastLayout l{".fst", {}, {"EDFile", "BDBldFile(k)", "ServoFile", "SrvDFile"}};
   return l;
+}
+
+/// A FAST v7 (or v6) primary file has the whole structural model inline and no EDFile; its keys
+/// ADAMSPrep/AnalMode and the turbine's TwrFile left the .fst in FAST v8, which moved the structure into
+/// ElastoDyn [JonkmanJonkman2016]. Say so instead of "EDFile: key not found".
+void require_not_fast7(const OpenFastFile& f) {
+  if (f.has("EDFile")) return;
+  for (const char* key : {"ADAMSPrep", "AnalMode", "TwrFile"}) {
+    if (!f.has(key)) continue;
+    throw InputError(f.where(key, "this is a FAST v7 primary input file (the turbine is inline, there is no "
+                                  "EDFile): whirl reads FAST v8 and OpenFAST decks, whose .fst names an "
+                                  "ElastoDyn file; convert it with ConvertFAST7to8.m (OpenFAST "
+                                  "matlab-toolbox, ConvertFASTversions) or use the FAST v8 deck of the same turbine"));
+  }
 }
 
 }  // namespace
@@ -56,6 +70,7 @@ FstInput read_fst(const std::filesystem::path& file, OverrideSet* overrides) {
   in.Pvap = f.find_double("Pvap");
   if (in.AirDens) require_positive(f, "AirDens", *in.AirDens);
   if (in.KinVisc) require_positive(f, "KinVisc", *in.KinVisc);
+  require_not_fast7(f);
   in.EDFile = f.get_path("EDFile");
   in.ServoFile = path_of_first(f, {"ServoFile", "SrvDFile"});
   in.AeroFile = path_of_first(f, {"AeroFile", "ADFile"});

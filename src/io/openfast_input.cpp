@@ -145,6 +145,13 @@ std::optional<double> parse_fortran_double(std::string_view text) {
   return v;
 }
 
+std::string canonical_key(std::string_view key) {
+  std::string out;
+  for (const char c : key)
+    if (c != '(' && c != ')' && !is_blank(c)) out += c;
+  return to_lower(out);
+}
+
 int OpenFastTable::column_index(std::string_view name) const {
   const std::string n = to_lower(name);
   for (std::size_t i = 0; i < columns.size(); ++i)
@@ -217,18 +224,24 @@ OpenFastFile OpenFastFile::parse(std::string_view text, const std::filesystem::p
     if (k >= toks.size() || !is_identifier(toks[k].text)) continue;  // no key: not a value line
     OpenFastEntry e;
     e.key = toks[k].text;
+    // "BldFile( 1 )": the index was split off at the blanks; join it back up to the closing parenthesis.
+    if (e.key.find('(') != std::string::npos && e.key.find(')') == std::string::npos)
+      for (std::size_t j = k + 1; j < toks.size() && j <= k + 3; ++j) {
+        e.key += toks[j].text;
+        if (toks[j].text.find(')') != std::string::npos) break;
+      }
     while (e.key.size() > 1 && e.key.back() == '-') e.key.pop_back();  // "Key- description"
     e.raw = std::string(lines[i].substr(toks[0].begin, toks[k - 1].end - toks[0].begin));
     for (std::size_t j = 0; j < k; ++j) e.tokens.push_back(toks[j].text);
     e.line = lineno;
-    f.index_.emplace(to_lower(e.key), f.entries_.size());  // keeps the first of duplicated keys
+    f.index_.emplace(canonical_key(e.key), f.entries_.size());  // keeps the first of duplicated keys
     f.entries_.push_back(std::move(e));
   }
   return f;
 }
 
 const OpenFastEntry* OpenFastFile::find(std::string_view key) const {
-  const auto it = index_.find(to_lower(key));
+  const auto it = index_.find(canonical_key(key));
   return it == index_.end() ? nullptr : &entries_[it->second];
 }
 
@@ -335,20 +348,49 @@ std::optional<bool> OpenFastFile::find_bool(std::string_view key) const {
 }
 
 void OpenFastFile::check_layout(const OpenFastLayout& layout) const {
-  auto base = [](const std::string& key) { return to_lower(std::string_view(key).substr(0, key.find('('))); };
-  auto listed = [&](const std::vector<std::string_view>& keys, const std::string& key) {
-    const std::string b = base(key);
-    return std::any_of(keys.begin(), keys.end(), [&](std::string_view k) { return to_lower(k) == b; });
+  // Position in `keys` of the key spelled `key` (any spelling canonical_key accepts), or npos. A layout
+  // key written `Name(k)` is an array: `Name` and an index ("bldfile1" from BldFile(1) or BldFile1).
+  auto position = [](const std::vector<std::string_view>& keys, const std::string& key) {
+    const std::string c = canonical_key(key);
+    for (std::size_t i = 0; i < keys.size(); ++i) {
+      const bool array = keys[i].size() > 3 && keys[i].substr(keys[i].size() - 3) == "(k)";
+      const std::string k = to_lower(array ? keys[i].substr(0, keys[i].size() - 3) : keys[i]);
+      if (!array && c == k) return i;
+      if (array && c.size() > k.size() && c.compare(0, k.size(), k) == 0 &&
+          c.find_first_not_of("0123456789", k.size()) == std::string::npos)
+        return i;
+    }
+    return std::string::npos;
   };
+  const std::size_t npos = std::string::npos;
+  std::vector<std::size_t> at(entries_.size(), 0);  // layout position of each entry
+  std::vector<bool> present(layout.keys.size(), false);
+  if (!layout.keys.empty())
+    for (std::size_t i = 0; i < entries_.size(); ++i)
+      if ((at[i] = position(layout.keys, entries_[i].key)) != npos) present[at[i]] = true;
   std::unordered_map<std::string, int> first_line;
-  for (const OpenFastEntry& e : entries_) {
-    if (!layout.keys.empty() && !listed(layout.keys, e.key))
+  std::size_t previous = npos;  // layout position of the last key read
+  for (std::size_t i = 0; i < entries_.size(); ++i) {
+    const OpenFastEntry& e = entries_[i];
+    if (at[i] == npos) {
+      // Name what OpenFAST reads here: the layout keys missing from the file between the known keys
+      // before and after this line (several when file versions differ at this place).
+      std::size_t next = layout.keys.size();
+      for (std::size_t j = i + 1; j < entries_.size() && next == layout.keys.size(); ++j)
+        if (at[j] != npos) next = at[j];
+      std::string expected;
+      for (std::size_t k = previous == npos ? 0 : previous + 1; k < next; ++k)
+        if (!present[k]) expected += (expected.empty() ? "" : " or ") + std::string(layout.keys[k]);
+      if (expected.empty() && previous != npos && next <= previous) expected = std::string(layout.keys[previous]);
+      const std::string found = expected.empty() ? "" : " (expected " + expected + " here)";
       throw InputError(whirl::where(path_.string(), e.line, e.key,
-                                    std::string("not a key of an OpenFAST ") + layout.name +
-                                        " file: OpenFAST reads by position, so an extra line shifts every later "
+                                    std::string("not a key of an OpenFAST ") + layout.name + " file" + found +
+                                        ": OpenFAST reads by position, so an extra line shifts every later "
                                         "value; remove it (or check the file type)"));
-    const auto [it, inserted] = first_line.emplace(to_lower(e.key), e.line);
-    if (!inserted && !listed(layout.repeatable, e.key))
+    }
+    previous = at[i];
+    const auto [it, inserted] = first_line.emplace(canonical_key(e.key), e.line);
+    if (!inserted && position(layout.repeatable, e.key) == std::string::npos)
       throw InputError(whirl::where(path_.string(), e.line, e.key,
                                     "given twice (first on line " + std::to_string(it->second) +
                                         "): OpenFAST reads by position and would take this line for another "
@@ -363,7 +405,7 @@ const OpenFastTable* OpenFastFile::find_table(std::string_view column) const {
 }
 
 void OpenFastFile::set_value(std::string_view key, const std::string& value) {
-  const auto it = index_.find(to_lower(key));
+  const auto it = index_.find(canonical_key(key));
   if (it == index_.end())
     throw InputError(whirl::where(path_.string(), 0, std::string(key), "unknown key (not in this file)"));
   OpenFastEntry& e = entries_[it->second];

@@ -13,7 +13,7 @@
 ///   per line (the count is given by a key such as `NTwInpSt`; checking it is the typed reader's job).
 ///
 /// Each key keeps its raw value and line number so that every error reads "file:line: key: reason".
-/// Keys are matched case-insensitively (as Fortran does). When a key appears twice (e.g. `EDFile` of a
+/// Keys are matched by `canonical_key` (case-insensitive, `Name(k)` = `Namek`). When a key appears twice (e.g. `EDFile` of a
 /// second rotor in OpenFAST v5), the first occurrence is the one returned and overridden; the typed
 /// readers call `check_layout` first, which refuses keys given twice (except those a layout repeats)
 /// and keys the layout does not have: OpenFAST reads these files by position, so an extra or repeated
@@ -53,8 +53,10 @@ struct OpenFastTable {
 /// The keys of one OpenFAST file type, over the versions whirl reads (for OpenFastFile::check_layout).
 struct OpenFastLayout {
   const char* name = "";                     ///< file type for messages, e.g. "ElastoDyn"
-  std::vector<std::string_view> keys;        ///< every key, without "(n)" indices; empty: any key accepted
-  std::vector<std::string_view> repeatable;  ///< keys that may appear more than once (with the same index)
+  /// Every key in file order (versions merged); an array written `Name(k)` (its entries `Name(1)`,
+  /// `Name1`, …); empty: any key accepted.
+  std::vector<std::string_view> keys;
+  std::vector<std::string_view> repeatable;  ///< keys that may appear more than once (same spelling rule)
 };
 
 /// A parsed OpenFAST input file. Read-only apart from `set_value` (overrides).
@@ -72,7 +74,7 @@ class OpenFastFile {
   const std::vector<OpenFastEntry>& entries() const { return entries_; }
   const std::vector<OpenFastTable>& tables() const { return tables_; }
 
-  /// The entry of `key` (case-insensitive), or nullptr.
+  /// The entry of `key` (matched by canonical_key: case-insensitive, `BldFile(1)` finds `BldFile1`), or nullptr.
   const OpenFastEntry* find(std::string_view key) const;
   bool has(std::string_view key) const { return find(key) != nullptr; }
 
@@ -102,7 +104,9 @@ class OpenFastFile {
   std::optional<bool> find_bool(std::string_view key) const;
 
   /// Refuses a key given twice ("file:line: key: given twice (first on line N) …") unless the layout
-  /// lists it as repeatable, and a key the layout does not have ("file:line: key: not a key of a … file").
+  /// lists it as repeatable (`BldFile1` and `BldFile(1)` are the same key), and a key the layout does
+  /// not have ("file:line: key: not a key of a … file (expected K here)", K being the layout keys the
+  /// file lacks between the known keys around that line).
   void check_layout(const OpenFastLayout& layout) const;
 
   /// The first table that has a column `column` (case-insensitive), or nullptr.
@@ -128,6 +132,15 @@ class OpenFastFile {
 /// Number parsing shared by the OpenFAST readers: accepts a leading '+' and Fortran 'D' exponents;
 /// nullopt unless the whole text is a number. NaN and inf are returned as such (callers reject them).
 std::optional<double> parse_fortran_double(std::string_view text);
+
+/// The one rule by which whirl matches the label of a value line to the key it expects, the labels of
+/// every OpenFAST version being accepted: case-insensitive (as Fortran), and an array entry written
+/// `Name(k)` (FAST 8, OpenFAST templates), `Name( k )` or `Namek` (WISDEM/WEIS, e.g. `BldFile1`,
+/// `BldFlDmp1`) is the same key. OpenFAST itself reads these files by position and checks many labels
+/// only loosely (ElastoDyn reads `BldFile(k)` with ReadVar, which ignores the label), so files written
+/// with either spelling run there. Returns the lower-case label without parentheses and blanks:
+/// "BldFile(1)", "BldFile( 1 )" and "BldFile1" all give "bldfile1".
+std::string canonical_key(std::string_view key);
 
 /// Lower-case copy (ASCII), for case-insensitive key and column names.
 std::string to_lower(std::string_view s);

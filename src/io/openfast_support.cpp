@@ -1,5 +1,7 @@
 #include "src/io/openfast_support.hpp"
 
+#include <utility>
+
 #include "src/io/refusals.hpp"
 #include "src/model/error.hpp"
 
@@ -18,18 +20,28 @@ std::vector<std::string> unsupported_options(const FstInput& fst) {
 std::vector<std::string> unsupported_options(const ElastoDynInput& ed) {
   Refusals r(ed.source);
   const ElastoDynDofs& d = ed.dof;
-  r.add_if(ed.config.NumBl != 3, "NumBl", "only 3-bladed rotors are modelled");
-  r.add_if(ed.config.NumBl != 3 && d.TeetDOF, "TeetDOF", "a teetering hub is not modelled");
+  // A teetering hub exists only on 2 blades: one reason, with the teeter named in it.
+  r.add_if(ed.config.NumBl != 3, "NumBl",
+           d.TeetDOF ? "only 3-bladed rotors are modelled, and no teetering hub: TeetDOF is on too"
+                     : "only 3-bladed rotors are modelled");
   r.add_if(ed.Furling, "Furling", "rotor and tail furl are not modelled");
   r.add_if(d.PitchDOF.value_or(false), "PitchDOF", "blade pitch flexibility is not modelled");
   r.add_if(ed.YawFrctMod.value_or(0) != 0, "YawFrctMod", "yaw-bearing friction is not smooth and cannot be linearized");
-  const char* platform = "platform DOFs are not modelled: no hydrostatics or mooring, the tower base is clamped";
-  r.add_if(d.PtfmSgDOF, "PtfmSgDOF", platform);
-  r.add_if(d.PtfmSwDOF, "PtfmSwDOF", platform);
-  r.add_if(d.PtfmHvDOF, "PtfmHvDOF", platform);
-  r.add_if(d.PtfmRDOF, "PtfmRDOF", platform);
-  r.add_if(d.PtfmPDOF, "PtfmPDOF", platform);
-  r.add_if(d.PtfmYDOF, "PtfmYDOF", platform);
+  // One refusal for all platform DOFs, at the first one that is on: one reason, one clause.
+  const std::pair<bool, const char*> platform[] = {{d.PtfmSgDOF, "PtfmSgDOF"}, {d.PtfmSwDOF, "PtfmSwDOF"},
+                                                   {d.PtfmHvDOF, "PtfmHvDOF"}, {d.PtfmRDOF, "PtfmRDOF"},
+                                                   {d.PtfmPDOF, "PtfmPDOF"},   {d.PtfmYDOF, "PtfmYDOF"}};
+  std::string first, others;
+  for (const auto& [on, key] : platform) {
+    if (!on) continue;
+    if (first.empty())
+      first = key;
+    else
+      others += (others.empty() ? "" : ", ") + std::string(key);
+  }
+  r.add_if(!first.empty(), first,
+           "platform DOFs are not modelled" + (others.empty() ? std::string() : ", and " + others + " are on too") +
+               ": no hydrostatics or mooring, the tower base is clamped");
   r.add_if(ed.config.TwrRBHt.value_or(0.0) != 0.0, "TwrRBHt", "a rigid tower-base segment is not modelled");
   return r.take();
 }

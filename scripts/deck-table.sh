@@ -1,0 +1,55 @@
+#!/usr/bin/env bash
+# What `whirl modes DECK` does with each public OpenFAST deck: docs/decks.md on stdout, a Markdown
+# table with one row per primary file (runs, or the first line of the refusal), then the count.
+#
+#   bash scripts/deck-table.sh [DECKS_DIR] [WHIRL] > docs/decks.md
+#
+# DECKS_DIR defaults to ../shared/data/decks (the collection described in its README.md); WHIRL to
+# build/whirl. The offshore certification tests Test19–25 (HydroDyn, SubDyn, moorings) are left out.
+set -uo pipefail
+cd "$(dirname "$0")/.."
+decks=${1:-../shared/data/decks}
+whirl=${2:-build/whirl}
+[ -d "$decks" ] || { echo "deck-table.sh: no folder $decks" >&2; exit 2; }
+[ -x "$whirl" ] || { echo "deck-table.sh: no executable $whirl (build it first)" >&2; exit 2; }
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+
+cat <<'HEAD'
+# Public OpenFAST decks and what whirl does with them
+
+Each primary file of `../shared/data/decks` (FAST v8 certification tests, OpenFAST toolbox NREL 5MW,
+IEA 3.4 MW reference turbine; its README names the sources) given to `whirl modes DECK` as shipped
+and with `--set CompAero=0` (the structural model of the same deck, no AeroDyn read). The offshore
+certification tests Test19–25 are left out (HydroDyn, SubDyn, moorings: another issue). "refused"
+quotes the first line of the message; paths are relative to the decks folder.
+Regenerate with `bash scripts/deck-table.sh > docs/decks.md` (after building `build/whirl`).
+
+HEAD
+echo "| deck | \`whirl modes DECK\` | \`whirl modes DECK --set CompAero=0\` (structure only) |"
+echo "|---|---|---|"
+# One cell: "runs (N modes)" or "refused: <first line of the message>".
+cell() {
+  if timeout 600 "$whirl" modes "$@" > "$tmp/out" 2> "$tmp/err"; then
+    echo "runs ($(($(grep -c . "$tmp/out") - 1)) modes)"
+    return 0
+  fi
+  local code=$?
+  [ "$code" -eq 124 ] && { echo "timed out after 600 s"; return 1; }
+  # Paths under DECKS_DIR shortened; table pipes escaped.
+  echo "refused: $(head -n 1 "$tmp/err" | sed -e "s|$decks/||g" -e 's/^whirl: error: //' -e 's/|/\\|/g')"
+  return 1
+}
+runs=0
+structural=0
+total=0
+while IFS= read -r fst; do
+  rel=${fst#"$decks"/}
+  case "$rel" in certtest/Test19* | certtest/Test2[0-5]*) continue ;; esac
+  total=$((total + 1))
+  a=$(cell "$fst") && runs=$((runs + 1))
+  b=$(cell "$fst" --set CompAero=0) && structural=$((structural + 1))
+  echo "| $rel | $a | $b |"
+done < <(find "$decks" -name '*.fst' | LC_ALL=C sort)
+echo
+echo "$runs of $total decks run as shipped; $structural of $total run with \`--set CompAero=0\`."
