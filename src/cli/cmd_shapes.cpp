@@ -11,7 +11,7 @@
 #include "src/io/case_file.hpp"
 #include "src/io/csv.hpp"
 #include "src/io/output_set.hpp"
-#include "src/model/elastodyn_model.hpp"
+#include "src/turbine/elastodyn_model.hpp"
 #include "src/model/error.hpp"
 
 namespace whirl::cli {

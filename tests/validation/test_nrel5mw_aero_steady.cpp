@@ -9,7 +9,7 @@
 
 #include "linearize/trim.hpp"
 #include "src/io/schedule.hpp"
-#include "src/model/elastodyn_model.hpp"
+#include "src/turbine/elastodyn_model.hpp"
 
 namespace whirl {
 namespace {
