@@ -12,8 +12,8 @@
 #include "src/cli/commands.hpp"
 #include "src/cli/common.hpp"
 #include "src/io/schedule.hpp"
-#include "src/io/output_set.hpp"
-#include "src/io/state_space_files.hpp"
+#include "src/writers/output_set.hpp"
+#include "src/writers/state_space_files.hpp"
 #include "src/model/error.hpp"
 #include "src/parallel/session.hpp"
 

@@ -3,13 +3,13 @@
 #include <cstdio>
 #include <map>
 
-#include "modal/campbell_output.hpp"
+#include "src/writers/campbell_output.hpp"
 #include "modal/mbc_lin.hpp"
 #include "modal/rotor_modes.hpp"
 #include "modal/tracking.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/mode_output.hpp"
-#include "src/io/output_set.hpp"
+#include "src/writers/output_set.hpp"
 #include "src/io/openfast_lin.hpp"
 #include "src/io/openfast_lin_names.hpp"
 #include "src/model/error.hpp"

@@ -10,7 +10,7 @@
 #include "src/cli/common.hpp"
 #include "src/io/case_file.hpp"
 #include "src/io/csv.hpp"
-#include "src/io/output_set.hpp"
+#include "src/writers/output_set.hpp"
 #include "src/turbine/elastodyn_model.hpp"
 #include "src/model/error.hpp"
 

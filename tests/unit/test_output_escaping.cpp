@@ -10,10 +10,10 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "modal/campbell_output.hpp"
+#include "src/writers/campbell_output.hpp"
 #include "src/io/csv.hpp"
 #include "src/io/openfast_lin.hpp"
-#include "src/io/state_space_files.hpp"
+#include "src/writers/state_space_files.hpp"
 #include "test_util.hpp"
 
 namespace whirl {
