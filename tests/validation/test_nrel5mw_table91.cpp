@@ -185,8 +185,11 @@ TEST(Nrel5mwTable91, FemShapesAgainstFastAndThePolynomialModel) {
     ::testing::ScopedTrace t(__FILE__, __LINE__, "polynomial model (already checked above)");
     poly = compareWithTable91(parkedNrel5mwModes(), [](const std::string&) { return 0.015; });
   }
-  for (const auto& [row, f] : fem)
-    if (wide(row)) EXPECT_LT(f, poly.at(row)) << row;
+  for (const auto& [row, f] : fem) {
+    if (wide(row)) {
+      EXPECT_LT(f, poly.at(row)) << row;
+    }
+  }
 }
 
 }  // namespace
