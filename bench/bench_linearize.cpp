@@ -11,7 +11,7 @@
 #include "src/dynamics/residual.hpp"
 #include "modal/campbell_sweep.hpp"
 #include "src/io/case_file.hpp"
-#include "src/model/elastodyn_model.hpp"
+#include "src/turbine/elastodyn_model.hpp"
 #include "tests/support/rich_model.hpp"
 
 namespace whirl {

@@ -8,7 +8,7 @@
 //   fuzz_ed_tower   the ElastoDyn tower file     entry: the ElastoDyn main file
 //   fuzz_ed_blade   the ElastoDyn blade file     entry: the ElastoDyn main file (all 3 blades)
 #include "fuzz/fuzz_support.hpp"
-#include "src/model/elastodyn_model.hpp"
+#include "src/turbine/elastodyn_model.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   whirl::fuzz::writeInput(WHIRL_FUZZ_TARGET, data, size);

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "src/dynamics/aero_inflow.hpp"
-#include "src/dynamics/scalar.hpp"
+#include "src/model/scalar.hpp"
 #include "src/dynamics/workspace.hpp"
 
 namespace whirl {

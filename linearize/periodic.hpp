@@ -3,7 +3,7 @@
 /// Periodic operating point of a rotor at constant speed: the azimuth is stepped over one
 /// revolution; at each azimuth the other active coordinates are solved for equilibrium under
 /// gravity and centrifugal loads (warm-started from the previous azimuth) and the model is
-/// linearized there. These per-azimuth models feed the multiblade transform (modal/mbc.hpp).
+/// linearized there. These per-azimuth models feed the multiblade transform (linearize/mbc.hpp).
 /// A parked rotor (zero rotor speed) is linearized at its own azimuth only: it is time invariant
 /// there, and the multiblade transform of that one model is exact.
 #include <vector>

@@ -51,7 +51,7 @@ StateSpaceModel selectInputsOutputs(const StateSpaceModel& s, const std::vector<
 StateSpaceModel dropAzimuth(const StateSpaceModel& s);
 
 /// Multiblade (Coleman, MBC3) transform of each per-azimuth model (same variables; ≥ 3 blades)
-/// and their average (modal/mbc.hpp): A, B, C, D and the operating points (x_op = T⁻¹ x,
+/// and their average (linearize/mbc.hpp): A, B, C, D and the operating points (x_op = T⁻¹ x,
 /// u_op, y_op = T1⁻¹ ·). Blade entries "blade k <s>" / "<s>k" become "<s> collective", "<s> cos",
 /// "<s> sin"(, "<s> differential") with blade −1.
 /// \param[out] per_azimuth the transformed model at each azimuth (may be null)

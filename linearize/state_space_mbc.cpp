@@ -1,8 +1,8 @@
-// multibladeAverage: the multiblade transform of per-azimuth state-space models (modal/mbc.hpp).
+// multibladeAverage: the multiblade transform of per-azimuth state-space models (linearize/mbc.hpp).
 #include <cctype>
 
 #include "linearize/state_space.hpp"
-#include "modal/mbc.hpp"
+#include "linearize/mbc.hpp"
 #include "src/model/error.hpp"
 
 namespace whirl {

@@ -8,15 +8,6 @@
 
 namespace whirl {
 
-SweepPoint sweepPoint(double rpm, std::optional<double> wind_speed, std::optional<double> pitch_deg) {
-  SweepPoint p;
-  p.rpm = rpm;
-  p.wind_speed = wind_speed;
-  p.pitch_deg = pitch_deg;
-  p.condition.rotor_speed = rpmToRadPerSec(rpm);
-  return p;
-}
-
 std::vector<double> parseRange(const std::string& spec, const std::string& option) {
   static const std::regex re(R"(\s*([-+0-9.eE]+)\s*:\s*([-+0-9.eE]+)\s*:\s*([-+0-9.eE]+)\s*)");
   std::smatch mt;

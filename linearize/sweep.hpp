@@ -20,24 +20,6 @@
 
 namespace whirl {
 
-/// One operating point of a sweep: the condition the model is put at, with the values as the user
-/// gave them (reported in tables and files as given, not converted back from SI units).
-/// A schedule's wind speed and pitch label the point and reach the model through sweepCondition
-/// where the model has the role (a wind-speed input, blade pitch coordinates); a model without
-/// them ignores them, as whirl always has. Fields set in `condition` itself are strict: a model
-/// that cannot honour one stops with an InputError naming it (initialPoint).
-struct SweepPoint {
-  double rpm = 0;                    ///< rotor speed as given [rpm]
-  std::optional<double> wind_speed;  ///< wind speed as given [m/s] (a schedule's)
-  std::optional<double> pitch_deg;   ///< collective pitch as given [deg] (a schedule's)
-  OperatingCondition condition;      ///< rotor speed [rad/s], and whatever else is set explicitly
-};
-
-/// The point at `rpm` [rpm] (condition.rotor_speed = rpmToRadPerSec(rpm)) with a schedule's
-/// optional wind speed [m/s] and collective pitch [deg].
-SweepPoint sweepPoint(double rpm, std::optional<double> wind_speed = std::nullopt,
-                      std::optional<double> pitch_deg = std::nullopt);
-
 /// Values START:STEP:STOP, STOP included within round-off; InputError naming `option` on a bad range.
 std::vector<double> parseRange(const std::string& spec, const std::string& option);
 

@@ -7,7 +7,7 @@
 /// read from the description, first match of: "Blade root <n>", "blade <n>"/"Blade <n>", "BD_<n>"
 /// (BeamDyn instance), "B<n>" as a word start (AeroDyn "B1N3..."), else the trailing digits of the
 /// channel name (ElastoDyn outputs "RootMxc1"). Sets pair the j-th rotating entry of each blade
-/// (modal/mbc.hpp); the helper checks that their descriptions agree once the blade number is masked.
+/// (linearize/mbc.hpp); the helper checks that their descriptions agree once the blade number is masked.
 ///
 /// Second-order states: OpenFAST writes each module's states as all displacements then all their
 /// first time derivatives. A run of consecutive states of one module (first word of the
@@ -16,7 +16,7 @@
 /// half is the rate of state k of the first.
 #include <string>
 
-#include "modal/mbc.hpp"
+#include "linearize/mbc.hpp"
 #include "src/io/openfast_lin.hpp"
 
 namespace whirl {

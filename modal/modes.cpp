@@ -83,9 +83,9 @@ std::vector<Mode> modesFromEigenImpl(const EigenDecomposition& ed, int n, const 
       mode.freq_hz = 0;
       mode.damping_ratio = 0;
     } else {
-      const double w = std::sqrt(std::abs(l1 * l2));
-      mode.freq_hz = w / two_pi;
-      mode.damping_ratio = -(l1 + l2) / (2 * w);
+      const double omega = std::sqrt(std::abs(l1 * l2));
+      mode.freq_hz = omega / two_pi;
+      mode.damping_ratio = -(l1 + l2) / (2 * omega);
     }
     mode.damped_freq_hz = 0;
     if (with_res) mode.residual = std::max(residuals[real[k]], residuals[real[k + 1]]);

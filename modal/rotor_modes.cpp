@@ -5,7 +5,7 @@
 #include <map>
 
 #include "modal/eigen.hpp"
-#include "modal/mbc.hpp"
+#include "linearize/mbc.hpp"
 
 namespace whirl {
 namespace {

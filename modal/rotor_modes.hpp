@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// Modes of a rotating turbine: the per-azimuth linear models are transformed to multiblade
-/// coordinates (modal/mbc.hpp), averaged over the revolution, and the averaged A is analysed.
+/// coordinates (linearize/mbc.hpp), averaged over the revolution, and the averaged A is analysed.
 /// Blade coordinates become "<shape> collective", "<shape> cos", "<shape> sin" (…); modes are
 /// named from their dominant coordinate group, cyclic blade modes as backward (BW) or forward
 /// (FW) whirl from the phase between their cosine and sine parts:
@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "linearize/periodic.hpp"
-#include "modal/mbc.hpp"
+#include "linearize/mbc.hpp"
 #include "modal/modes.hpp"
 
 namespace whirl {

@@ -8,7 +8,7 @@
 #include <numbers>
 #include <sstream>
 
-#include "src/dynamics/scalar.hpp"
+#include "src/model/scalar.hpp"
 #include "src/model/brent.hpp"
 #include "src/model/error.hpp"
 

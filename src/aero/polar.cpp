@@ -5,7 +5,7 @@
 #include <numbers>
 #include <sstream>
 
-#include "src/dynamics/scalar.hpp"
+#include "src/model/scalar.hpp"
 #include "src/model/error.hpp"
 
 namespace whirl::aero {

@@ -5,12 +5,12 @@
 #include <filesystem>
 
 #include "linearize/trim.hpp"
-#include "modal/campbell_output.hpp"
+#include "src/writers/campbell_output.hpp"
 #include "modal/campbell_sweep.hpp"
 #include "modal/tracking.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/common.hpp"
-#include "src/io/output_set.hpp"
+#include "src/writers/output_set.hpp"
 #include "src/io/schedule.hpp"
 #include "src/model/error.hpp"
 #include "src/parallel/session.hpp"

@@ -5,16 +5,14 @@
 #include <numbers>
 #include <sstream>
 
-#include "linearize/export_point.hpp"
-#include "linearize/export_serialize.hpp"
-#include "linearize/sweep.hpp"
+#include "linearize/export_sweep.hpp"
 #include "linearize/state_space.hpp"
 #include "linearize/trim.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/common.hpp"
 #include "src/io/schedule.hpp"
-#include "src/io/output_set.hpp"
-#include "src/io/state_space_files.hpp"
+#include "src/writers/output_set.hpp"
+#include "src/writers/state_space_files.hpp"
 #include "src/model/error.hpp"
 #include "src/parallel/session.hpp"
 
@@ -81,52 +79,24 @@ void run(const CliOptions& opt) {
   eo.inputs = in;
   eo.outputs = out;
   eo.drop_azimuth = opt.drop_azimuth;
-  // One task per operating point, spread over the ranks under mpirun (linearize/sweep.hpp). Each point
-  // starts from the model's own initial point at the point's condition, never from its neighbour's
-  // equilibrium: the result then depends on the point alone, so K ranks write the same bytes as one process.
+  // One task per operating point, spread over the ranks under mpirun (linearize/export_sweep.hpp).
   if (parallel::launchedByMpi()) parallel::requirePetsc("mpirun");  // start-up before the progress clock
   SweepOptions sweep;
   sweep.azimuths = opt.azimuths;
   sweep.progress = sweepProgress("export");
   if (!opt.schedule.empty())
     sweep.context = [&](int k) { return scheduleContext(opt.schedule, k, points[static_cast<size_t>(k)]); };
-  e.points = sweepOperatingPoints<ExportPoint>(
-      base, points,
-      [&](const Model& m, const SweepPoint& sp, const OperatingPoint& start) {
-        ExportPoint p = exportOperatingPoint(m, start, eo);
-        checkSolvedPoints(opt.model, m, {p.equilibrium},
-                          opt.schedule.empty() && opt.wind_range.empty() ? "" : fmt::format("{:g} rpm", sp.rpm));
-        p.rpm = sp.rpm;
-        p.wind_speed = sp.wind_speed;
-        p.pitch_deg = sp.pitch_deg;
-        p.model.wind_speed = sp.wind_speed;
-        for (auto& s : p.azimuths) s.wind_speed = sp.wind_speed;
-        return p;
-      },
-      encodeExportPoint, decodeExportPoint, sweep);
+  sweep.check_point = [&opt](const Model& m, const std::vector<OperatingPoint>& ops, const SweepPoint& sp) {
+    const bool labelled = !opt.schedule.empty() || !opt.wind_range.empty();
+    return checkSolvedPoints(opt.model, m, ops, labelled ? fmt::format("{:g} rpm", sp.rpm) : "");
+  };
+  e.points = exportSweep(base, points, eo, sweep);
   if (parallel::rank() != 0) return;  // under mpirun: rank 0 writes
 
   OutputSet files(dir);  // every file of the run appears at once, or none
   std::string title = e.model_name.substr(0, e.model_name.find(". "));  // ElastoDyn headers run long
   if (title.empty()) title = opt.model.case_path;
-  if (opt.format == "mat") {
-    writeStateSpaceMat(e, files.stage("statespace.mat"));
-  } else if (opt.format == "json") {
-    files.write("statespace.json", stateSpaceJson(e));
-  } else {
-    for (size_t j = 0; j < e.points.size(); ++j) {
-      const ExportPoint& p = e.points[j];
-      char stem[32];
-      if (e.points.size() == 1) std::snprintf(stem, sizeof stem, "statespace");
-      else std::snprintf(stem, sizeof stem, "statespace_%02zu", j + 1);
-      if (p.azimuths.empty()) {
-        files.write(std::string(stem) + ".1.lin", linFileText(p.model, title));
-        continue;
-      }
-      for (size_t k = 0; k < p.azimuths.size(); ++k)
-        files.write(std::string(stem) + "." + std::to_string(k + 1) + ".lin", linFileText(p.azimuths[k], title));
-    }
-  }
+  writeStateSpaceFiles(e, opt.format, title, files);
   files.commit();
   const StateSpaceModel& m = e.points.front().model;
   const std::string mbc =

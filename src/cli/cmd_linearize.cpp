@@ -5,7 +5,7 @@
 #include "linearize/linearize.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/common.hpp"
-#include "src/io/output_set.hpp"
+#include "src/writers/output_set.hpp"
 #include "src/io/csv.hpp"
 
 namespace whirl::cli {

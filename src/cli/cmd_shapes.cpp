@@ -10,8 +10,8 @@
 #include "src/cli/common.hpp"
 #include "src/io/case_file.hpp"
 #include "src/io/csv.hpp"
-#include "src/io/output_set.hpp"
-#include "src/model/elastodyn_model.hpp"
+#include "src/writers/output_set.hpp"
+#include "src/turbine/elastodyn_model.hpp"
 #include "src/model/error.hpp"
 
 namespace whirl::cli {

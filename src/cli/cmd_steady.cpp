@@ -10,9 +10,9 @@
 #include "src/cli/commands.hpp"
 #include "src/cli/common.hpp"
 #include "src/io/csv.hpp"
-#include "src/io/gnuplot.hpp"
+#include "src/writers/gnuplot.hpp"
 #include "src/io/schedule.hpp"
-#include "src/io/output_set.hpp"
+#include "src/writers/output_set.hpp"
 #include "src/model/error.hpp"
 
 namespace whirl::cli {

@@ -5,12 +5,12 @@
 #include <cstdio>
 #include <map>
 
-#include "modal/campbell_output.hpp"
 #include "modal/campbell_sweep.hpp"
 #include "modal/tracking.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/common.hpp"
-#include "src/io/output_set.hpp"
+#include "src/writers/output_set.hpp"
+#include "src/writers/study_table.hpp"
 #include "src/io/csv.hpp"
 #include "src/io/schedule.hpp"
 #include "src/model/error.hpp"
@@ -68,27 +68,9 @@ void run(const StudyOptions& opt) {
       points, sweep);
   if (parallel::rank() != 0) return;
 
-  // Each set is its own Campbell diagram: tracked on its own, its rows prefixed by the set.
-  std::string head = "set";
-  for (const auto& n : sets.names) head += "," + csvField(n);
-  std::string csv;
   TrackingOptions track;
   track.overrides_file = opt.tracking;
-  for (size_t s = 0; s < S; ++s) {
-    CampbellDiagram d;
-    d.points.assign(all.begin() + static_cast<long>(s * P), all.begin() + static_cast<long>((s + 1) * P));
-    d.lines = trackModes(d.points, track);
-    const std::string table = campbellCsv(d);
-    const size_t eol = table.find('\n');
-    if (s == 0) csv = head + "," + table.substr(0, eol + 1);
-    std::string prefix = std::to_string(s + 1);
-    for (const auto& v : sets.rows[s]) prefix += "," + csvField(v);
-    for (size_t a = eol + 1; a < table.size();) {
-      const size_t b = table.find('\n', a);
-      csv += prefix + "," + table.substr(a, b - a + 1);
-      a = b + 1;
-    }
-  }
+  const std::string csv = studyCsv(sets.names, sets.rows, all, track);
   OutputSet files(dir);
   files.write("study.csv", csv);
   files.commit();

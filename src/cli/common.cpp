@@ -13,7 +13,7 @@
 
 #include "linearize/point_validity.hpp"
 #include "src/io/case_file.hpp"
-#include "src/model/elastodyn_model.hpp"
+#include "src/turbine/elastodyn_model.hpp"
 #include "src/model/error.hpp"
 #include "src/model/text.hpp"
 #include "src/parallel/session.hpp"

@@ -6,7 +6,7 @@
 #include "src/dynamics/aero_section.hxx"
 #include "src/dynamics/kinematics.hpp"
 #include "src/dynamics/point_force.hxx"
-#include "src/dynamics/scalar.hpp"
+#include "src/model/scalar.hpp"
 #include "src/model/error.hpp"
 
 namespace whirl {

@@ -7,7 +7,7 @@
 #include <type_traits>
 
 #include "src/aero/bem.hpp"
-#include "src/dynamics/scalar.hpp"
+#include "src/model/scalar.hpp"
 #include "src/dynamics/workspace.hpp"
 #include "src/model/aero_model.hpp"
 

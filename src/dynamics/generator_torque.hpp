@@ -4,7 +4,7 @@
 /// ServoDyn.f90 `CalculateTorque`), written for any scalar so its slope reaches the linear model.
 #include <cmath>
 
-#include "src/dynamics/scalar.hpp"
+#include "src/model/scalar.hpp"
 #include "src/model/aero_model.hpp"
 
 namespace whirl {

@@ -1,6 +1,6 @@
 // Explicit instantiation: the heavy templates compile once, for double and the AD chunk type.
 #include "src/dynamics/residual.hxx"
-#include "src/dynamics/scalar.hpp"
+#include "src/model/scalar.hpp"
 
 namespace whirl {
 

@@ -1,6 +1,6 @@
 // `wind:` and `aero:` of a case: AeroDyn-style blade elements on beam bodies, the airfoil files, the
 // rotor-level BEM settings and InflowWind's steady wind, built into Model::aero as the OpenFAST deck
-// path does (src/model/elastodyn_aero.cpp), with the geometry the deck states (HubRad, precone) taken
+// path does (src/turbine/elastodyn_aero.cpp), with the geometry the deck states (HubRad, precone) taken
 // from the bodies' rest pose instead.
 #include <algorithm>
 #include <cmath>

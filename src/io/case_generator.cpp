@@ -1,6 +1,6 @@
 // `generator:` of a case: ServoDyn's simple variable-speed torque law (VSContrl = 1) on a generator
 // torque input, with the ServoDyn key names and units, as the deck path reads it
-// (src/model/elastodyn_aero.cpp, addGeneratorTorqueLaw).
+// (src/turbine/elastodyn_aero.cpp, addGeneratorTorqueLaw).
 #include <numbers>
 #include <tuple>
 

@@ -42,8 +42,8 @@ CsvTable readCsv(const std::string& path) {
   CsvTable t;
   t.file = path;
   std::ifstream in(path);
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw InputError(where(path, 0, "", "is a folder, not a CSV file"));
+  std::error_code fs_ec;
+  if (std::filesystem::is_directory(path, fs_ec)) throw InputError(where(path, 0, "", "is a folder, not a CSV file"));
   if (!in) throw InputError(where(path, 0, "", "cannot open the file"));
   std::string raw;
   int line = 0;

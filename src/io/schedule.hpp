@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "linearize/sweep.hpp"
+#include "src/model/operating_condition.hpp"
 
 namespace whirl {
 

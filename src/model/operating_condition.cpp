@@ -18,4 +18,13 @@ OperatingCondition modelCondition(const Model& m) {
 
 double rpmToRadPerSec(double rpm) { return rpm * 2 * std::numbers::pi / 60; }
 
+SweepPoint sweepPoint(double rpm, std::optional<double> wind_speed, std::optional<double> pitch_deg) {
+  SweepPoint p;
+  p.rpm = rpm;
+  p.wind_speed = wind_speed;
+  p.pitch_deg = pitch_deg;
+  p.condition.rotor_speed = rpmToRadPerSec(rpm);
+  return p;
+}
+
 }  // namespace whirl

@@ -110,7 +110,9 @@ void expectOneLineError(const test::Run& r, const std::string& what, const fs::p
   EXPECT_NE(r.code, 0);
   EXPECT_THAT(r.err, HasSubstr(what));
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-  if (fs::exists(dir)) EXPECT_EQ(fileCount(dir), 0u) << "nothing may be written";
+  if (fs::exists(dir)) {
+    EXPECT_EQ(fileCount(dir), 0u) << "nothing may be written";
+  }
 }
 
 TEST(CliExport, BadInputFailsWithOneLineAndWritesNothing) {

@@ -63,7 +63,7 @@ TEST(CliHostileNames, ErrorMessagesStayOneLineWhateverTheyQuote) {
 void expectEveryCommandRefuses(const fs::path& dir, const std::string& case_args, const std::string& what) {
   write(dir / "sets.csv", "gravity\n9.81\n");
   const std::string out = " --out out";
-  for (const std::string cmd :
+  for (const std::string& cmd :
        {"modes " + case_args, "linearize " + case_args + out, "campbell " + case_args + " --rpm 0:5:10 --azimuths 4" + out,
         "export " + case_args + " --format json --azimuths 4" + out,
         "study " + case_args + " --params sets.csv --rpm 0:5:10 --azimuths 4" + out}) {

@@ -179,7 +179,7 @@ bool writing(const fs::path& dir, pid_t pid) {
   for (const fs::path& d : {dir, dir.parent_path()})
     for (const auto& e : fs::directory_iterator(d, ec)) {
       const std::string n = e.path().filename().string();
-      for (const std::string tag : {".whirl-" + p, ".tmp" + p})
+      for (const std::string& tag : {".whirl-" + p, ".tmp" + p})
         if (n.size() >= tag.size() && n.compare(n.size() - tag.size(), tag.size(), tag) == 0) return true;
     }
   return false;

@@ -5,7 +5,7 @@
 #include <iostream>
 #include <string>
 
-#include "modal/campbell_output.hpp"
+#include "src/writers/campbell_output.hpp"
 #include "src/model/error.hpp"
 #include "tests/support/synthetic_campbell.hpp"
 

@@ -14,7 +14,13 @@ inline Model richModel(bool axial_shortening = true) {
   using std::numbers::pi;
   Model m;
   m.gravity = Vec3(0.3, -0.2, -9.81);
-  m.inputs = {{"thrust", 1.2e5}, {"torque", 3e5}};
+  const auto input = [](const char* name, double value) {
+    Input u;
+    u.name = name;
+    u.value = value;
+    return u;
+  };
+  m.inputs = {input("thrust", 1.2e5), input("torque", 3e5)};
 
   Body plat;
   plat.name = "platform";

@@ -8,7 +8,7 @@
 #include "linearize/export_point.hpp"
 #include "src/dynamics/mass_matrix.hpp"
 #include "src/dynamics/residual.hpp"
-#include "src/model/elastodyn_model.hpp"
+#include "src/turbine/elastodyn_model.hpp"
 
 namespace whirl::testing {
 

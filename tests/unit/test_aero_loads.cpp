@@ -11,7 +11,7 @@
 #include "linearize/operating_point.hpp"
 #include "src/dynamics/outputs.hpp"
 #include "src/dynamics/residual.hpp"
-#include "src/model/elastodyn_model.hpp"
+#include "src/turbine/elastodyn_model.hpp"
 #include "tests/support/aero_rotor_model.hpp"
 
 namespace whirl {

@@ -246,7 +246,7 @@ INSTANTIATE_TEST_SUITE_P(
         Refusal{"CoupledSkew", kV3, "          2   SkewMod", "          3   SkewMod",
                 "23: SkewMod: 3 not supported by whirl (the coupled skewed-wake model (dropped in OpenFAST v4); "
                 "whirl supports only SkewMod = 0, 1 or 2)"}),
-    [](const testing::TestParamInfo<Refusal>& info) { return std::string(info.param.name); });
+    [](const testing::TestParamInfo<Refusal>& p) { return std::string(p.param.name); });
 
 TEST(AeroDynInput, SeveralRefusalsListedTogether) {
   AeroScratch s;

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "src/aero/bem.hpp"
-#include "src/dynamics/scalar.hpp"
+#include "src/model/scalar.hpp"
 #include "src/model/error.hpp"
 #include "tests/unit/aero_data_util.hpp"
 

@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "src/io/openfast_turbine.hpp"
-#include "src/model/elastodyn_blade_shapes.hpp"
+#include "src/turbine/elastodyn_blade_shapes.hpp"
 #include "tests/unit/openfast_test_util.hpp"
 
 namespace whirl {

@@ -8,7 +8,7 @@
 
 #include "linearize/linearize.hpp"
 #include "src/dynamics/kinematics.hpp"
-#include "src/model/elastodyn_model.hpp"
+#include "src/turbine/elastodyn_model.hpp"
 #include "tests/unit/openfast_test_util.hpp"
 
 namespace whirl {

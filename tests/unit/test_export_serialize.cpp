@@ -104,7 +104,9 @@ void expectSame(const StateSpaceModel& a, const StateSpaceModel& b) {
   EXPECT_TRUE(sameBits(a.azimuth, b.azimuth));
   EXPECT_TRUE(sameBits(a.rotor_speed, b.rotor_speed));
   ASSERT_EQ(a.wind_speed.has_value(), b.wind_speed.has_value());
-  if (a.wind_speed) EXPECT_TRUE(sameBits(*a.wind_speed, *b.wind_speed));
+  if (a.wind_speed) {
+    EXPECT_TRUE(sameBits(*a.wind_speed, *b.wind_speed));
+  }
   EXPECT_EQ(a.multiblade, b.multiblade);
 }
 
@@ -115,8 +117,12 @@ TEST(ExportSerialize, RoundTripIsBitExact) {
     EXPECT_TRUE(sameBits(p.rpm, q.rpm));
     ASSERT_EQ(p.wind_speed.has_value(), q.wind_speed.has_value());
     ASSERT_EQ(p.pitch_deg.has_value(), q.pitch_deg.has_value());
-    if (p.wind_speed) EXPECT_TRUE(sameBits(*p.wind_speed, *q.wind_speed));
-    if (p.pitch_deg) EXPECT_TRUE(sameBits(*p.pitch_deg, *q.pitch_deg));
+    if (p.wind_speed) {
+      EXPECT_TRUE(sameBits(*p.wind_speed, *q.wind_speed));
+    }
+    if (p.pitch_deg) {
+      EXPECT_TRUE(sameBits(*p.pitch_deg, *q.pitch_deg));
+    }
     expectSame(p.model, q.model);
     ASSERT_EQ(p.azimuths.size(), q.azimuths.size());
     for (size_t k = 0; k < p.azimuths.size(); ++k) expectSame(p.azimuths[k], q.azimuths[k]);

@@ -12,7 +12,7 @@
 #include "linearize/periodic.hpp"
 #include "linearize/unrestrained.hpp"
 #include "modal/rotor_modes.hpp"
-#include "src/model/elastodyn_model.hpp"
+#include "src/turbine/elastodyn_model.hpp"
 #include "src/model/error.hpp"
 
 namespace whirl {

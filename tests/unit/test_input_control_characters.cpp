@@ -10,7 +10,7 @@
 #include "modal/tracking_overrides.hpp"
 #include "src/io/csv.hpp"
 #include "src/io/openfast_lin.hpp"
-#include "src/model/elastodyn_model.hpp"
+#include "src/turbine/elastodyn_model.hpp"
 #include "tests/unit/openfast_test_util.hpp"
 
 namespace whirl {

@@ -112,7 +112,9 @@ TEST_P(Jacobians, ValuesOfAKPassEqualTheDoubleResidual) {
     EXPECT_LT((value - e).cwiseAbs().maxCoeff(), 1e-12 * e.cwiseAbs().maxCoeff()) << "seed " << seed;
     // A q̇ pass skips the load terms: its values are incomplete and not returned.
     residualJacobian(m, jw, s.q, s.qd, s.qdd, s.u, Wrt::Qd, allColumns(m.ndof()), &value);
-    if (value.size() > 0) EXPECT_LT((value - e).cwiseAbs().maxCoeff(), 1e-12 * e.cwiseAbs().maxCoeff());
+    if (value.size() > 0) {
+      EXPECT_LT((value - e).cwiseAbs().maxCoeff(), 1e-12 * e.cwiseAbs().maxCoeff());
+    }
   }
 }
 

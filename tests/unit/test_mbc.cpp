@@ -1,6 +1,6 @@
 // Multiblade coordinate transform on systems with known answers: an isotropic rotor (whirl split
 // ±Ω, ±2Ω, differential mode), a fixed-frame system seen from the rotating frame (recovered
-// exactly), and the errors of modal/mbc.hpp.
+// exactly), and the errors of linearize/mbc.hpp.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "modal/eigen.hpp"
-#include "modal/mbc.hpp"
+#include "linearize/mbc.hpp"
 #include "src/model/error.hpp"
 
 namespace {

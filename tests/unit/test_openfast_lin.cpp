@@ -91,8 +91,8 @@ INSTANTIATE_TEST_SUITE_P(
         Expected{"ws03/ws03.0.1.lin", 30, 413.09, 0.7301, 0.0067, 3.0, -4.571735886246, -3.253592101136},
         Expected{"ws03/ws03.0.13.lin", 30, 415.95, 0.7301, 2.0948, 3.0, -4.571735724989, -3.180672661438},
         Expected{"ws03/ws03.0.34.lin", 30, 420.97, 0.7301, 5.7600, 3.0, -4.571769457696, -3.150582214435}),
-    [](const auto& info) {
-      std::string s = info.param.file;
+    [](const auto& p) {
+      std::string s = p.param.file;
       for (char& c : s)
         if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
       return s;

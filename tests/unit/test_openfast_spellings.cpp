@@ -12,7 +12,7 @@
 #include "src/io/elastodyn_tower.hpp"
 #include "src/io/openfast_support.hpp"
 #include "src/io/openfast_turbine.hpp"
-#include "src/model/elastodyn_model.hpp"
+#include "src/turbine/elastodyn_model.hpp"
 #include "tests/unit/nrel5mw_scratch.hpp"
 #include "tests/unit/openfast_test_util.hpp"
 

@@ -10,10 +10,10 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "modal/campbell_output.hpp"
+#include "src/writers/campbell_output.hpp"
 #include "src/io/csv.hpp"
 #include "src/io/openfast_lin.hpp"
-#include "src/io/state_space_files.hpp"
+#include "src/writers/state_space_files.hpp"
 #include "test_util.hpp"
 
 namespace whirl {
@@ -93,7 +93,9 @@ TEST(GnuplotEscaping, TitlesAreSingleQuotedLiteralsOnOneLine) {
     EXPECT_FALSE(first != std::string::npos && line[first] == '!') << "a shell line: " << line;
     EXPECT_FALSE(hasControlCharacter(line)) << line;
     // A comment must not continue onto the next line.
-    if (first != std::string::npos && line[first] == '#') EXPECT_NE(line.back(), '\\') << line;
+    if (first != std::string::npos && line[first] == '#') {
+      EXPECT_NE(line.back(), '\\') << line;
+    }
   }
 }
 
@@ -101,7 +103,9 @@ TEST(GnuplotEscaping, DataFileKeepsItsBlocks) {
   // Every line of campbell.dat is blank, a comment or four numbers: no name starts a data line.
   for (const auto& line : linesOf(campbellGnuplotData(hostileDiagram()))) {
     if (line.empty() || line[0] == '#') {
-      if (!line.empty()) EXPECT_NE(line.back(), '\\') << line;
+      if (!line.empty()) {
+        EXPECT_NE(line.back(), '\\') << line;
+      }
       continue;
     }
     std::istringstream in(line);

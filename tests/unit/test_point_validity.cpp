@@ -8,7 +8,7 @@
 #include "linearize/operating_point.hpp"
 #include "linearize/point_validity.hpp"
 #include "src/io/case_file.hpp"
-#include "src/model/elastodyn_model.hpp"
+#include "src/turbine/elastodyn_model.hpp"
 #include "tests/unit/openfast_test_util.hpp"
 
 namespace {

@@ -5,7 +5,7 @@
 #include <numbers>
 
 #include "src/aero/polar.hpp"
-#include "src/dynamics/scalar.hpp"
+#include "src/model/scalar.hpp"
 #include "src/model/error.hpp"
 #include "tests/unit/aero_data_util.hpp"
 

@@ -16,7 +16,7 @@
 #include "modal/rotor_modes.hpp"
 #include "openfast_test_util.hpp"
 #include "src/io/openfast_lin.hpp"
-#include "src/io/state_space_files.hpp"
+#include "src/writers/state_space_files.hpp"
 #include "state_space_test_util.hpp"
 
 namespace whirl {

@@ -9,7 +9,7 @@
 
 #include "linearize/periodic.hpp"
 #include "modal/rotor_modes.hpp"
-#include "src/model/elastodyn_model.hpp"
+#include "src/turbine/elastodyn_model.hpp"
 
 namespace whirl {
 namespace {

@@ -10,7 +10,7 @@
 #include "linearize/trim.hpp"
 #include "src/io/schedule.hpp"
 #include "src/model/error.hpp"
-#include "src/model/elastodyn_model.hpp"
+#include "src/turbine/elastodyn_model.hpp"
 
 namespace whirl {
 namespace {

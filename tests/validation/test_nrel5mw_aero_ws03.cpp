@@ -18,7 +18,7 @@
 #include "modal/mbc_lin.hpp"
 #include "modal/rotor_modes.hpp"
 #include "src/io/openfast_lin.hpp"
-#include "src/model/elastodyn_model.hpp"
+#include "src/turbine/elastodyn_model.hpp"
 
 namespace whirl {
 namespace {

@@ -17,7 +17,7 @@
 #include "src/fem/shape_comparison.hpp"
 #include "src/io/elastodyn_blade.hpp"
 #include "src/io/elastodyn_tower.hpp"
-#include "src/model/elastodyn_model.hpp"
+#include "src/turbine/elastodyn_model.hpp"
 
 namespace whirl {
 namespace {

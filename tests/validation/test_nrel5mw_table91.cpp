@@ -4,7 +4,7 @@
 // ServoDyn's yaw spring (YawSpr 9.02832e9 N m/rad, YawDamp 1.916e7 N m s/rad) present.
 //
 // The model is the ElastoDyn-equivalent turbine built from whirl's bodies and joints
-// (src/model/elastodyn_model.hpp) from the OpenFAST inputs in cases/nrel5mw, linearized about its
+// (src/turbine/elastodyn_model.hpp) from the OpenFAST inputs in cases/nrel5mw, linearized about its
 // static equilibrium under gravity (blade 1 up). Modes are matched to the reference rows by content:
 // the dominant DOF group by energy share and, for blade modes, the phase pattern of the three blades
 // (tests/validation/blade_mode_pattern.hpp); the asymmetric-flap pairs, whose pitch/yaw labels are
@@ -40,7 +40,7 @@
 #include <sstream>
 
 #include "linearize/linearize.hpp"
-#include "src/model/elastodyn_model.hpp"
+#include "src/turbine/elastodyn_model.hpp"
 #include "tests/validation/blade_mode_pattern.hpp"
 
 namespace whirl {
@@ -185,8 +185,11 @@ TEST(Nrel5mwTable91, FemShapesAgainstFastAndThePolynomialModel) {
     ::testing::ScopedTrace t(__FILE__, __LINE__, "polynomial model (already checked above)");
     poly = compareWithTable91(parkedNrel5mwModes(), [](const std::string&) { return 0.015; });
   }
-  for (const auto& [row, f] : fem)
-    if (wide(row)) EXPECT_LT(f, poly.at(row)) << row;
+  for (const auto& [row, f] : fem) {
+    if (wide(row)) {
+      EXPECT_LT(f, poly.at(row)) << row;
+    }
+  }
 }
 
 }  // namespace

@@ -3,7 +3,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "modal/campbell_output.hpp"
+#include "src/writers/campbell_output.hpp"
 #include "src/io/csv.hpp"
 #include "src/model/error.hpp"
 

@@ -1,8 +1,8 @@
 // writeCampbell: all Campbell files of one diagram and their Gnuplot images, committed as one set.
-#include "modal/campbell_output.hpp"
+#include "src/writers/campbell_output.hpp"
 
-#include "src/io/gnuplot.hpp"
-#include "src/io/output_set.hpp"
+#include "src/writers/gnuplot.hpp"
+#include "src/writers/output_set.hpp"
 #include "src/model/error.hpp"
 
 namespace whirl {

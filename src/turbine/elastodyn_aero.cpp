@@ -5,7 +5,7 @@
 #include <string>
 #include <tuple>
 
-#include "src/model/elastodyn_parts.hpp"
+#include "src/turbine/elastodyn_parts.hpp"
 #include "src/model/error.hpp"
 #include "src/shapes/beam.hpp"
 

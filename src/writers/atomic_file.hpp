@@ -2,7 +2,7 @@
 /// \file
 /// Output files appear whole or not at all: content goes to a temporary file in the same folder,
 /// flushed to disk and renamed over the target (rename is atomic on POSIX within one file system).
-/// One file only: a command's several files go through OutputSet (src/io/output_set.hpp).
+/// One file only: a command's several files go through OutputSet (src/writers/output_set.hpp).
 #include <string>
 
 namespace whirl {

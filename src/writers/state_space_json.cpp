@@ -1,7 +1,7 @@
 // JSON writer for state-space exports (same content as the .mat file).
 #include <nlohmann/json.hpp>
 
-#include "src/io/state_space_files.hpp"
+#include "src/writers/state_space_files.hpp"
 
 namespace whirl {
 namespace {

@@ -2,9 +2,9 @@
 #include <cmath>
 #include <numbers>
 
-#include "src/model/elastodyn_blade_shapes.hpp"
-#include "src/model/elastodyn_fem_shapes.hpp"
-#include "src/model/elastodyn_parts.hpp"
+#include "src/turbine/elastodyn_blade_shapes.hpp"
+#include "src/turbine/elastodyn_fem_shapes.hpp"
+#include "src/turbine/elastodyn_parts.hpp"
 #include "src/model/error.hpp"
 #include "src/shapes/beam_moment.hpp"
 

@@ -1,6 +1,6 @@
 // buildElastoDynModel: the parts (tower, nacelle and drivetrain, blades), inputs and outputs, springs, gravity;
 // readElastoDynModel: files and overrides; readElastoDynFlexibleBeams: tower and blades for `whirl shapes`.
-#include "src/model/elastodyn_model.hpp"
+#include "src/turbine/elastodyn_model.hpp"
 
 #include <cmath>
 #include <filesystem>
@@ -9,9 +9,9 @@
 #include "src/io/aero_support.hpp"
 #include "src/io/openfast_overrides.hpp"
 #include "src/io/openfast_support.hpp"
-#include "src/model/elastodyn_fem_shapes.hpp"
-#include "src/model/elastodyn_parts.hpp"
-#include "src/model/elastodyn_tower_beam.hpp"
+#include "src/turbine/elastodyn_fem_shapes.hpp"
+#include "src/turbine/elastodyn_parts.hpp"
+#include "src/turbine/elastodyn_tower_beam.hpp"
 #include "src/model/error.hpp"
 #include "src/model/text.hpp"
 

@@ -2,7 +2,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "src/model/elastodyn_parts.hpp"
+#include "src/turbine/elastodyn_parts.hpp"
 
 namespace whirl::elastodyn {
 namespace {

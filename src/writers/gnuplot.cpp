@@ -1,5 +1,5 @@
 // Runs a generated Gnuplot script: the images appear whole or not at all.
-#include "src/io/gnuplot.hpp"
+#include "src/writers/gnuplot.hpp"
 
 #include <sys/wait.h>
 #include <unistd.h>

@@ -12,9 +12,9 @@
 #include <iostream>
 #include <vector>
 
-#include "src/io/atomic_file.hpp"
-#include "src/io/output_set.hpp"
-#include "src/io/output_set_internal.hpp"
+#include "src/writers/atomic_file.hpp"
+#include "src/writers/output_set.hpp"
+#include "src/writers/output_set_internal.hpp"
 #include "src/model/error.hpp"
 
 namespace whirl {

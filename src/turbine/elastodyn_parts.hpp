@@ -10,8 +10,8 @@
 #include "src/io/aero_deck.hpp"
 #include "src/io/elastodyn_input.hpp"
 #include "src/io/servodyn_input.hpp"
-#include "src/model/elastodyn_blade_shapes.hpp"
-#include "src/model/elastodyn_model.hpp"
+#include "src/turbine/elastodyn_blade_shapes.hpp"
+#include "src/turbine/elastodyn_model.hpp"
 
 namespace whirl::elastodyn {
 

@@ -1,10 +1,10 @@
 // The ElastoDyn tower as a whirl beam body (ElastoDyn `Coeff`, tower part).
 #include <cmath>
 
-#include "src/model/elastodyn_blade_shapes.hpp"
-#include "src/model/elastodyn_fem_shapes.hpp"
-#include "src/model/elastodyn_parts.hpp"
-#include "src/model/elastodyn_tower_beam.hpp"
+#include "src/turbine/elastodyn_blade_shapes.hpp"
+#include "src/turbine/elastodyn_fem_shapes.hpp"
+#include "src/turbine/elastodyn_parts.hpp"
+#include "src/turbine/elastodyn_tower_beam.hpp"
 #include "src/model/error.hpp"
 #include "src/shapes/beam.hpp"
 #include "src/shapes/beam_moment.hpp"

@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// Pieces shared by OutputSet::commit() and prepareOutputFolder() (src/io/output_set.hpp): whirl's
+/// Pieces shared by OutputSet::commit() and prepareOutputFolder() (src/writers/output_set.hpp): whirl's
 /// names for staging folders, the roll-forward journal, the folder lock, fsync.
 #include <filesystem>
 #include <string>

@@ -1,4 +1,4 @@
-#include "src/model/elastodyn_fem_shapes.hpp"
+#include "src/turbine/elastodyn_fem_shapes.hpp"
 
 #include <cmath>
 #include <numbers>

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "linearize/export_point.hpp"
+#include "src/writers/output_set.hpp"
 
 namespace whirl {
 
@@ -35,5 +36,12 @@ bool elastoDynStates(const std::vector<StateSpaceVariable>& states);
 /// them; "whirl <name>, <unit>" otherwise (the azimuth marked "DOF_GeAz" as OpenFAST does). One prefix
 /// for all states keeps them one module, which is how readers pair displacements with rates.
 std::string linStateDescription(const StateSpaceVariable& x, const std::vector<StateSpaceVariable>& all, bool elastodyn);
+
+/// The files of `whirl export` into `files`: `statespace.mat` (format "mat"), `statespace.json`
+/// ("json"), or one OpenFAST-style `.lin` file per azimuth ("lin"; `statespace.<k>.lin` for one
+/// operating point, `statespace_<jj>.<k>.lin` for several; a time-invariant model is azimuth 1).
+/// `title` goes in the `.lin` headers.
+void writeStateSpaceFiles(const StateSpaceExport& e, const std::string& format, const std::string& title,
+                          OutputSet& files);
 
 }  // namespace whirl

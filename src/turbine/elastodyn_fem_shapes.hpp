@@ -15,7 +15,7 @@
 
 #include "src/fem/mode_shapes.hpp"
 #include "src/io/elastodyn_input.hpp"
-#include "src/model/elastodyn_blade_shapes.hpp"
+#include "src/turbine/elastodyn_blade_shapes.hpp"
 
 namespace whirl {
 

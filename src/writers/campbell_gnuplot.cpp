@@ -3,9 +3,9 @@
 #include <cmath>
 #include <optional>
 
-#include "modal/campbell_output.hpp"
+#include "src/writers/campbell_output.hpp"
 #include "src/io/csv.hpp"
-#include "src/io/gnuplot.hpp"
+#include "src/writers/gnuplot.hpp"
 #include "src/model/text.hpp"
 
 namespace whirl {

@@ -1,4 +1,4 @@
-#include "src/model/elastodyn_blade_shapes.hpp"
+#include "src/turbine/elastodyn_blade_shapes.hpp"
 
 #include "src/shapes/interpolate.hpp"
 

@@ -1,6 +1,6 @@
 // OutputSet: a command's files staged beside the output folder, then swapped in with the folder
 // (renameat2 RENAME_EXCHANGE), or rolled forward from a journal where no swap is possible.
-#include "src/io/output_set.hpp"
+#include "src/writers/output_set.hpp"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -14,7 +14,7 @@
 #include <set>
 #include <stdexcept>
 
-#include "src/io/output_set_internal.hpp"
+#include "src/writers/output_set_internal.hpp"
 #include "src/model/error.hpp"
 
 namespace whirl {

@@ -4,7 +4,7 @@
 #include <regex>
 #include <sstream>
 
-#include "src/io/state_space_files.hpp"
+#include "src/writers/state_space_files.hpp"
 #include "src/model/text.hpp"
 
 namespace whirl {

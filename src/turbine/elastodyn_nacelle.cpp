@@ -3,7 +3,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "src/model/elastodyn_parts.hpp"
+#include "src/turbine/elastodyn_parts.hpp"
 #include "src/model/error.hpp"
 
 namespace whirl::elastodyn {

@@ -5,7 +5,7 @@
 #include <limits>
 #include <memory>
 
-#include "src/io/state_space_files.hpp"
+#include "src/writers/state_space_files.hpp"
 #include "src/model/error.hpp"
 
 namespace whirl {

@@ -1,4 +1,4 @@
-#include "src/io/atomic_file.hpp"
+#include "src/writers/atomic_file.hpp"
 
 #include <fcntl.h>
 #include <unistd.h>

@@ -1,4 +1,4 @@
-#include "modal/mbc.hpp"
+#include "linearize/mbc.hpp"
 
 #include <cmath>
 #include <numbers>

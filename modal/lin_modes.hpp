@@ -1,0 +1,34 @@
+#pragma once
+/// \file
+/// Modes of OpenFAST `.lin` files, the library half of `whirl lin`: the files grouped by operating
+/// point (rotor speed, wind speed), the multiblade transform over each group's azimuths [Bir2008],
+/// the modes named as for a whirl model (modal/rotor_modes.hpp). Reading the files and writing the
+/// results stay with the caller.
+#include <vector>
+
+#include "modal/campbell.hpp"
+#include "modal/mbc_lin.hpp"
+#include "modal/rotor_modes.hpp"
+#include "src/io/openfast_lin.hpp"
+
+namespace whirl {
+
+/// The displacement coordinates of a `.lin` file: the states whose rate is another state. They must
+/// come first, as OpenFAST writes the ElastoDyn displacements. Weights: identity (a `.lin` file has
+/// no mass matrix).
+/// \throws InputError naming the file and line of a displacement state after a first-order one, or
+///         the file when it has no second-order states.
+RotorCoordinates linRotorCoordinates(const OpenFastLin& lin, const MbcLayout& layout);
+
+/// Files grouped by operating point (rotor speed to 1e-6 rad/s, wind speed to 1e-4 m/s), groups in
+/// order of rotor speed then wind speed, files of a group in the order given.
+/// \throws InputError for a file without an A matrix, or one with the operating point and azimuth
+///         (within 1e-6 rad) of an earlier file: a repeated azimuth would bias the multiblade average.
+std::vector<std::vector<OpenFastLin>> groupLinByOperatingPoint(std::vector<OpenFastLin> files);
+
+/// The named modes of one operating point's files (its azimuths): rpm and wind speed from the first
+/// file's header.
+/// \throws InputError when a file's states differ in number from the first file's.
+CampbellPoint linCampbellPoint(const std::vector<OpenFastLin>& group);
+
+}  // namespace whirl

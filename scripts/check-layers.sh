@@ -1,0 +1,56 @@
+#!/usr/bin/env bash
+# The include rule of docs/architecture.md (*Layers*): a file includes only files of its own layer
+# or of a lower one, and the two layer-1 folders (FE, equations) do not include each other.
+# Prints every `#include "…"` that breaks the rule as file:line: includes X (layer a -> b) and exits
+# 1 if there is one; a source folder with no layer is an error too (give a new folder its layer here
+# and in CMakeLists.txt). Run by CTest (test `layers_include_rule`, label unit).
+# Usage: bash scripts/check-layers.sh [repository root]
+set -euo pipefail
+cd "${1:-$(dirname "$0")/..}"
+
+# folder -> layer rank (docs/architecture.md, table *Layers*)
+layer_of() {
+  case "$1" in
+    src/model/*|src/shapes/*|src/aero/*|src/parallel/*) echo 0 ;;
+    src/fem/*|src/dynamics/*) echo 1 ;;
+    src/io/*) echo 2 ;;
+    src/turbine/*) echo 3 ;;
+    linearize/*) echo 4 ;;
+    modal/*) echo 5 ;;
+    src/writers/*) echo 6 ;;
+    src/cli/*) echo 7 ;;
+    *) echo "" ;;
+  esac
+}
+# folders of one layer that must not include each other
+peers() {
+  case "$1" in
+    src/fem/*) echo fem ;;
+    src/dynamics/*) echo dynamics ;;
+    *) echo "" ;;
+  esac
+}
+
+status=0
+while IFS= read -r -d '' file; do
+  from=$(layer_of "$file")
+  if [[ -z "$from" ]]; then
+    echo "$file: folder has no layer (add it to scripts/check-layers.sh and CMakeLists.txt)"
+    status=1
+    continue
+  fi
+  while IFS=: read -r line target; do
+    [[ -z "$line" ]] && continue
+    to=$(layer_of "$target")
+    [[ -z "$to" ]] && continue  # a header outside the layers (none today) or a relative include
+    if (( to > from )); then
+      echo "$file:$line: includes $target (layer $from -> $to, upward)"
+      status=1
+    elif [[ -n "$(peers "$file")" && -n "$(peers "$target")" && "$(peers "$file")" != "$(peers "$target")" ]]; then
+      echo "$file:$line: includes $target (layer 1 folders $(peers "$file") -> $(peers "$target"))"
+      status=1
+    fi
+  done < <(awk 'match($0, /^[ \t]*#[ \t]*include[ \t]*"[^"]*"/) {
+                 s = substr($0, RSTART, RLENGTH); sub(/^[^"]*"/, "", s); sub(/"$/, "", s); print FNR ":" s }' "$file")
+done < <(find src linearize modal -type f \( -name '*.hpp' -o -name '*.hxx' -o -name '*.cpp' -o -name '*.h' \) -print0 | sort -z)
+exit $status

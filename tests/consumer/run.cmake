@@ -1,0 +1,28 @@
+# CTest `install_consumer_linearizes`: install the build BUILD into WORK/stage, configure and build the
+# consumer project SOURCE against it (find_package(whirl), nothing else on the prefix path), run it
+# on CASE and check the tower fore-aft frequency it prints (0.3272 Hz, [BranlardGeisler2022, §4.4],
+# cases/landbased_2dof/reference.csv, 4 decimals as printed there).
+file(REMOVE_RECURSE ${WORK})
+execute_process(COMMAND ${CMAKE_COMMAND} --install ${BUILD} --prefix ${WORK}/stage
+  RESULT_VARIABLE rc OUTPUT_QUIET ERROR_VARIABLE err)
+if(rc)
+  message(FATAL_ERROR "install failed: ${err}")
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} -S ${SOURCE} -B ${WORK}/build -G ${GENERATOR} -DCMAKE_BUILD_TYPE=Release
+    -DCMAKE_CXX_COMPILER=${CXX} -DCMAKE_PREFIX_PATH=${WORK}/stage
+  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(rc)
+  message(FATAL_ERROR "configure against the installed whirl failed:\n${out}\n${err}")
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} --build ${WORK}/build RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(rc)
+  message(FATAL_ERROR "build against the installed whirl failed:\n${out}\n${err}")
+endif()
+execute_process(COMMAND ${WORK}/build/whirl_consumer ${CASE} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+message("${out}")
+if(rc)
+  message(FATAL_ERROR "whirl_consumer failed (${rc}): ${err}")
+endif()
+if(NOT out MATCHES "tower FA 1: 0\\.3272 Hz")
+  message(FATAL_ERROR "expected 'tower FA 1: 0.3272 Hz' in the output")
+endif()
