@@ -7,6 +7,9 @@
 //   fuzz_servodyn   the ServoDyn file            entry: Main_Onshore.fst
 //   fuzz_ed_tower   the ElastoDyn tower file     entry: the ElastoDyn main file
 //   fuzz_ed_blade   the ElastoDyn blade file     entry: the ElastoDyn main file (all 3 blades)
+//   fuzz_aerodyn, fuzz_ad_blade, fuzz_airfoil, fuzz_inflowwind, fuzz_servodyn_aero: the AeroDyn main
+//                   file, its blade file, the tip airfoil, InflowWind, the aero ServoDyn (VSContrl = 1)
+//                   entry: Main_Aero.fst (the aeroelastic model; AeroDyn, InflowWind and ServoDyn)
 #include "fuzz/fuzz_support.hpp"
 #include "src/turbine/elastodyn_model.hpp"
 

@@ -29,8 +29,9 @@ namespace whirl::fuzz {
 
 namespace fs = std::filesystem;
 
-/// This process' sandbox: <tmp>/whirl-fuzz-XXXXXX/run with copies of the auxiliary files (cases/nrel5mw,
-/// the property tables of the YAML cases, the ElastoDyn files the test .fst files name), and
+/// This process' sandbox: <tmp>/whirl-fuzz-XXXXXX/run with copies of the auxiliary files (cases/nrel5mw
+/// with its aero files, the property and aero tables of the YAML cases, the ElastoDyn files the test
+/// .fst files name), and
 /// <tmp>/whirl-fuzz-XXXXXX/5MW_Baseline for the test files that reference "../5MW_Baseline/...".
 /// Created on first use, removed at exit.
 inline const fs::path& sandbox() {
@@ -44,11 +45,13 @@ inline const fs::path& sandbox() {
     fs::create_directories(run);
     fs::create_directories(base);
     const fs::path src(WHIRL_SOURCE_DIR);
-    for (const auto& e : fs::directory_iterator(src / "cases/nrel5mw"))
-      if (e.is_regular_file()) fs::copy_file(e.path(), run / e.path().filename());
+    // With its aero/ and 5MW_Baseline/ folders (AeroDyn, InflowWind, ServoDyn, blade, airfoils).
+    fs::copy(src / "cases/nrel5mw", run, fs::copy_options::recursive);
     for (const char* f : {"cases/nrel5mw_monopile/tower_properties.csv", "cases/rotating_blade/blade_properties.csv",
-                          "tests/data/openfast/rotating-9rpm/ElastoDyn.dat", "tests/data/openfast/ws03/ws03.0_ED.dat"})
+                          "cases/aero_rotor/blade_aero.csv", "tests/data/openfast/rotating-9rpm/ElastoDyn.dat",
+                          "tests/data/openfast/ws03/ws03.0_ED.dat"})
       fs::copy_file(src / f, run / fs::path(f).filename());
+    fs::copy(src / "cases/aero_rotor/airfoils", run / "airfoils", fs::copy_options::recursive);
     for (const auto& e : fs::directory_iterator(src / "tests/data/openfast/5MW_Baseline"))
       if (e.is_regular_file()) fs::copy_file(e.path(), base / e.path().filename());
     static const std::string remove_at_exit = root.string();

@@ -16,9 +16,17 @@ add fuzz_elastodyn cases/nrel5mw/*_ElastoDyn.dat tests/data/openfast/rotating-9r
 add fuzz_servodyn cases/nrel5mw/*_ServoDyn.dat
 add fuzz_ed_tower cases/nrel5mw/*_Tower.dat tests/data/openfast/5MW_Baseline/*_Tower.dat
 add fuzz_ed_blade cases/nrel5mw/NRELOffshrBsline5MW_Blade.dat tests/data/openfast/5MW_Baseline/*_Blade.dat
-add fuzz_openfast_parse cases/nrel5mw/*.fst cases/nrel5mw/*.dat tests/data/openfast/*/*.fst tests/data/openfast/*/*.dat
+add fuzz_openfast_parse cases/nrel5mw/*.fst cases/nrel5mw/*.dat tests/data/openfast/*/*.fst tests/data/openfast/*/*.dat \
+  cases/nrel5mw/aero/*.dat cases/nrel5mw/5MW_Baseline/*.dat
+add fuzz_aerodyn cases/nrel5mw/aero/AeroDyn.dat tests/data/openfast/aero/*/AeroDyn.dat
+add fuzz_ad_blade cases/nrel5mw/5MW_Baseline/*_AeroDyn_blade.dat
+add fuzz_airfoil cases/nrel5mw/5MW_Baseline/Airfoils/*.dat cases/aero_rotor/airfoils/*.dat
+add fuzz_inflowwind cases/nrel5mw/aero/InflowWind.dat tests/data/openfast/aero/*/InflowWind*.dat
+add fuzz_servodyn_aero cases/nrel5mw/aero/ServoDyn.dat cases/nrel5mw/*_ServoDyn.dat tests/data/openfast/aero/*/ServoDyn.dat
 add fuzz_lin tests/data/openfast-lin/*/*.lin
 add fuzz_schedule cases/nrel5mw/NREL5MW_Oper.csv tests/mpi/*.csv fuzz/seeds/schedule/*
 add fuzz_compare cases/*/table9_1.csv cases/*/reference.csv fuzz/seeds/compare/*
 add fuzz_tracking fuzz/seeds/tracking/*
+for h in aerodyn ad_blade airfoil inflowwind; do cp -r "$out/fuzz_$h" "$out/fuzz_read_$h"; done
+cp -r "$out/fuzz_servodyn_aero" "$out/fuzz_read_servodyn"
 for d in "$out"/*; do echo "$(basename "$d"): $(ls "$d" | wc -l) seeds"; done

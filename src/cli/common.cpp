@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <unistd.h>
 
 #include "linearize/point_validity.hpp"
 #include "src/io/case_file.hpp"
@@ -109,7 +110,11 @@ std::vector<std::string> splitList(const std::string& s) {
 std::function<void(int, int)> sweepProgress(const std::string& command) {
   const auto start = std::chrono::steady_clock::now();
   auto printed = std::make_shared<bool>(false);
+  // Only on a terminal: the "\r" line is for a person watching, and in a log or a pipe (scripts,
+  // the CLI tests) it would appear or not depending on how long the sweep took.
+  static const bool terminal = isatty(STDERR_FILENO) == 1;
   return [=](int done, int total) {
+    if (!terminal) return;
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (s < 1.0 && !*printed) return;
     if (parallel::size() > 1)

@@ -61,8 +61,8 @@ OperatingCondition operatingCondition(const Model& model, const ModelOptions& op
 OperatingPoint startPoint(const Model& model, const ModelOptions& opt);
 
 /// Progress of a sweep for MapOptions::progress, on stderr: "<command>: 3/10 operating points (1.2 s)"
-/// (under mpirun: rank 0's share, "on rank 0 of K"). Sweeps shorter than a second stay quiet; the
-/// clock starts when this is called.
+/// (under mpirun: rank 0's share, "on rank 0 of K"). Only when stderr is a terminal; sweeps shorter
+/// than a second stay quiet; the clock starts when this is called.
 std::function<void(int, int)> sweepProgress(const std::string& command);
 
 /// reports/<case file stem>, the default output folder of a case.

@@ -7,6 +7,7 @@
 #include "src/fem/boundary.hpp"
 #include "src/fem/reduction.hpp"
 #include "src/model/error.hpp"
+#include "src/model/limits.hpp"
 #include "src/shapes/interpolate.hpp"
 
 namespace whirl::fem {
@@ -189,6 +190,11 @@ std::vector<BeamMode> beamModes(const ModeShapeInput& in, int count_y, int count
   if (!(in.tip.mass >= 0) || !in.tip.inertia.allFinite() || !in.tip.cm.allFinite())
     throw InputError("mode shapes: tip body: mass must be ≥ 0, inertia and centre of mass finite");
   const BeamModel model = cantilever(in);
+  // Checked on the mesh, not only on `elements`: a property table with many stations adds nodes.
+  if (model.elements.size() > static_cast<size_t>(limits::kMaxFemShapeMesh))
+    throw InputError("mode shapes: the FE mesh has " + std::to_string(model.elements.size()) +
+                     " elements (every property station is a node), more than the " +
+                     std::to_string(limits::kMaxFemShapeMesh) + " the dense eigensolver handles in seconds (src/model/limits.hpp)");
   validate(model, "mode shapes");
   const bool torsion = hasTorsion(in.props);
   const Assembly a = assemble(model, false);

@@ -13,7 +13,8 @@
 /// |---|---|---|
 /// | kMaxElastoDynNodes | 1000 | ElastoDyn `TwrNodes`, `BldNodes` |
 /// | kMaxFemElements | 2000 | `fem_beam` `elements:` of a YAML case |
-/// | kMaxFemShapeElements | 5000 | `shapes: {from: fem, elements:}` (a 2D beam for mode shapes) |
+/// | kMaxFemShapeElements | 200 | `shapes: {from: fem, elements:}` (a 2D beam for mode shapes) |
+/// | kMaxFemShapeMesh | 300 | the elements of that beam once every property station is a node |
 /// | kMaxReducedModes | 1000 | Craig–Bampton `modes:` of a `fem_beam` |
 /// | kMaxIntegrationPoints | 100000 | beam `integration: {n:}` |
 /// | kMaxFemShapeMode | 50 | mode numbers of FE shapes (`shapes: {from: fem, modes: [{mode:}]}`) |
@@ -25,7 +26,12 @@ namespace whirl::limits {
 
 inline constexpr int kMaxElastoDynNodes = 1000;
 inline constexpr int kMaxFemElements = 2000;
-inline constexpr int kMaxFemShapeElements = 5000;
+// The FE shapes solve the dense generalized eigenproblem of the whole beam (LAPACK dsygvd, O(n³) in
+// its 4–5 DOFs per node): 300 elements are about 1500 DOFs, a few seconds with Debian's reference
+// LAPACK (measured: 1000 DOFs 2.4 s, 2000 DOFs 24 s on a loaded 2-core machine). The shapes are the
+// lowest ≤ 50 modes of a beam, for which tens of elements suffice (cases/ use 60–100).
+inline constexpr int kMaxFemShapeElements = 200;
+inline constexpr int kMaxFemShapeMesh = 300;
 inline constexpr int kMaxReducedModes = 1000;
 inline constexpr int kMaxIntegrationPoints = 100000;
 inline constexpr int kMaxFemShapeMode = 50;

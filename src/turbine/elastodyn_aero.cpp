@@ -68,8 +68,13 @@ void addAerodynamics(Builder& b, const DrivetrainParts& dt, const RotorParts& ro
   AeroModel& am = m.aero;
   for (const io::AirfoilInput& af : deck.airfoils) am.polars.push_back(io::airfoil_polar(af, deck.aerodyn.UseBlCm));
   const double length = c.TipRad - c.HubRad;
+  // AeroDyn needs a blade file per blade, ADBlFile(1) to ADBlFile(NumBl); the reader takes those present.
+  if (deck.blades.size() < rotor.blades.size())
+    throw InputError(deck.aerodyn.source.where("ADBlFile(" + std::to_string(deck.blades.size() + 1) + ")",
+                                               "key not found in this file (ElastoDyn NumBl = " +
+                                                   std::to_string(rotor.blades.size()) + " needs a blade file per blade)"));
   for (std::size_t k = 0; k < rotor.blades.size(); ++k) {
-    const io::AeroDynBladeInput& file = deck.blades.at(k);
+    const io::AeroDynBladeInput& file = deck.blades[k];
     for (int j = 0; j < file.NumBlNds; ++j)
       if (file.BlAFID[j] < 1 || file.BlAFID[j] > static_cast<int>(am.polars.size()))
         throw InputError(file.source.path().string() + ":" + std::to_string(file.row_lines[j]) + ": BlAFID: " +

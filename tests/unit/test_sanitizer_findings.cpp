@@ -4,6 +4,7 @@
 // under -DWHIRL_SANITIZE=ON, where undefined behaviour stops the program).
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <regex>
 
 #include "linearize/linearize.hpp"
@@ -11,6 +12,7 @@
 #include "linearize/operating_point.hpp"
 #include "src/io/case_file.hpp"
 #include "src/io/openfast_lin.hpp"
+#include "src/model/elastodyn_model.hpp"
 #include "src/model/error.hpp"
 #include "test_util.hpp"
 
@@ -78,6 +80,26 @@ TEST(SanitizerFindings, LinBladeNumberOutOfRange) {
                 "bending-mode DOF of blade " + number + " (internal DOF index = DOF_BF(3,1)), m\n");
     const OpenFastLin lin = readOpenFastLin(f);
     expectInputError([&] { mbcLayoutFromLin(lin); }, f + ":25: continuous states: blade number");
+  }
+}
+
+// fuzz_aerodyn: an AeroDyn file with ADBlFile(1) and (2) only, for ElastoDyn's 3 blades, let
+// std::out_of_range ("vector::_M_range_check") escape from the third blade's lookup.
+TEST(SanitizerFindings, AeroDynMissingBladeFile) {
+  test::TempDir tmp;
+  const std::filesystem::path src = std::filesystem::path(WHIRL_SOURCE_DIR) / "cases/nrel5mw";
+  std::filesystem::copy(src, tmp.path, std::filesystem::copy_options::recursive);
+  const std::string text = test::slurp((tmp.path / "aero/AeroDyn.dat").string());
+  const std::string changed = std::regex_replace(text, std::regex("\n[^\n]*ADBlFile\\(3\\)[^\n]*"), "");
+  ASSERT_NE(changed, text);
+  tmp.write("aero/AeroDyn.dat", changed);
+  try {
+    readElastoDynModel((tmp.path / "Main_Aero.fst").string());
+    ADD_FAILURE() << "no exception";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("AeroDyn.dat: ADBlFile(3): key not found in this file (ElastoDyn NumBl = 3"),
+              std::string::npos)
+        << e.what();
   }
 }
 
