@@ -12,7 +12,7 @@
 #include "linearize/operating_point.hpp"
 #include "src/io/case_file.hpp"
 #include "src/io/openfast_lin.hpp"
-#include "src/model/elastodyn_model.hpp"
+#include "src/turbine/elastodyn_model.hpp"
 #include "src/model/error.hpp"
 #include "test_util.hpp"
 
