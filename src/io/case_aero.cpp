@@ -6,7 +6,6 @@
 #include <cmath>
 #include <filesystem>
 #include <numbers>
-#include <tuple>
 
 #include "src/io/airfoil_input.hpp"
 #include "src/io/case_columns.hpp"
@@ -253,16 +252,9 @@ void readAerodynamics(const CaseNode& top, CaseBuild& build) {
   }
 
   // AeroDyn's rotor outputs (names as OpenFAST's channels, SI units), as the deck path adds them.
-  for (const auto& [name, unit, quantity] : {std::tuple{"RtAeroFxh", "N", RotorQuantity::AeroThrust},
-                                             std::tuple{"RtAeroMxh", "N m", RotorQuantity::AeroTorque},
-                                             std::tuple{"RtAeroPwr", "W", RotorQuantity::AeroPower}}) {
-    if (m.findOutput(name)) r.fail(std::string("output name '") + name + "' is taken: the aerodynamics add it");
-    Output o;
-    o.name = name;
-    o.unit = unit;
-    o.kind = OutputKind::Rotor;
-    o.rotor_quantity = quantity;
-    m.outputs.push_back(o);
+  for (Output& o : aeroRotorOutputs()) {
+    if (m.findOutput(o.name)) r.fail("output name '" + o.name + "' is taken: the aerodynamics add it");
+    m.outputs.push_back(std::move(o));
   }
 }
 

@@ -2,7 +2,6 @@
 // torque input, with the ServoDyn key names and units, as the deck path reads it
 // (src/turbine/elastodyn_aero.cpp, addGeneratorTorqueLaw).
 #include <numbers>
-#include <tuple>
 
 #include "src/io/case_reader.hpp"
 
@@ -41,15 +40,9 @@ void readGenerator(const CaseNode& g, CaseBuild& build) {
   law.slip = value("VS_SlPc", false) / 100.0;
   law.efficiency = g.number("GenEff", 100.0) / 100.0;
   if (!(law.efficiency > 0) || law.efficiency > 1) g.at("GenEff").fail("must be in (0, 100] %");
-  for (const auto& [name, unit, quantity] : {std::tuple{"GenTq", "N m", RotorQuantity::GeneratorTorque},
-                                             std::tuple{"GenPwr", "W", RotorQuantity::GeneratorPower}}) {
-    if (m.findOutput(name)) g.fail(std::string("output name '") + name + "' is taken: the generator adds it");
-    Output go;
-    go.name = name;
-    go.unit = unit;
-    go.kind = OutputKind::Rotor;
-    go.rotor_quantity = quantity;
-    m.outputs.push_back(go);
+  for (Output& out : generatorOutputs()) {
+    if (m.findOutput(out.name)) g.fail("output name '" + out.name + "' is taken: the generator adds it");
+    m.outputs.push_back(std::move(out));
   }
 }
 

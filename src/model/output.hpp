@@ -49,4 +49,27 @@ struct Output {
   int blade = -1;
 };
 
+/// An output of OutputKind::Rotor.
+inline Output rotorOutput(const std::string& name, const std::string& unit, RotorQuantity quantity) {
+  Output o;
+  o.name = name;
+  o.unit = unit;
+  o.kind = OutputKind::Rotor;
+  o.rotor_quantity = quantity;
+  return o;
+}
+
+/// The outputs every aerodynamic model adds: AeroDyn's rotor channels RtAeroFxh, RtAeroMxh, RtAeroPwr (SI).
+inline std::vector<Output> aeroRotorOutputs() {
+  return {rotorOutput("RtAeroFxh", "N", RotorQuantity::AeroThrust),
+          rotorOutput("RtAeroMxh", "N m", RotorQuantity::AeroTorque),
+          rotorOutput("RtAeroPwr", "W", RotorQuantity::AeroPower)};
+}
+
+/// The outputs a generator torque law adds: ServoDyn's GenTq and GenPwr (SI).
+inline std::vector<Output> generatorOutputs() {
+  return {rotorOutput("GenTq", "N m", RotorQuantity::GeneratorTorque),
+          rotorOutput("GenPwr", "W", RotorQuantity::GeneratorPower)};
+}
+
 }  // namespace whirl

@@ -3,7 +3,6 @@
 #include <cmath>
 #include <numbers>
 #include <string>
-#include <tuple>
 
 #include "src/turbine/elastodyn_parts.hpp"
 #include "src/model/error.hpp"
@@ -109,16 +108,7 @@ void addAerodynamics(Builder& b, const DrivetrainParts& dt, const RotorParts& ro
   am.wind.direction = w.PropagationDir * deg;
   am.wind.upflow = w.VFlowAng * deg;
   // AeroDyn's rotor outputs (names as OpenFAST's channels, SI units).
-  for (const auto& [name, unit, quantity] : {std::tuple{"RtAeroFxh", "N", RotorQuantity::AeroThrust},
-                                             std::tuple{"RtAeroMxh", "N m", RotorQuantity::AeroTorque},
-                                             std::tuple{"RtAeroPwr", "W", RotorQuantity::AeroPower}}) {
-    Output o;
-    o.name = name;
-    o.unit = unit;
-    o.kind = OutputKind::Rotor;
-    o.rotor_quantity = quantity;
-    m.outputs.push_back(o);
-  }
+  for (Output& o : aeroRotorOutputs()) m.outputs.push_back(std::move(o));
 }
 
 void addGeneratorTorqueLaw(Builder& b, const io::ServoDynInput& servo) {
@@ -137,15 +127,7 @@ void addGeneratorTorqueLaw(Builder& b, const io::ServoDynInput& servo) {
   g.k2 = law.VS_Rgn2K / (rpm * rpm);
   g.slip = law.VS_SlPc / 100.0;
   g.efficiency = law.GenEff / 100.0;
-  for (const auto& [name, unit, quantity] : {std::tuple{"GenTq", "N m", RotorQuantity::GeneratorTorque},
-                                             std::tuple{"GenPwr", "W", RotorQuantity::GeneratorPower}}) {
-    Output o;
-    o.name = name;
-    o.unit = unit;
-    o.kind = OutputKind::Rotor;
-    o.rotor_quantity = quantity;
-    b.model.outputs.push_back(o);
-  }
+  for (Output& o : generatorOutputs()) b.model.outputs.push_back(std::move(o));
 }
 
 }  // namespace whirl::elastodyn
