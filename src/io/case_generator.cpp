@@ -40,9 +40,9 @@ void readGenerator(const CaseNode& g, CaseBuild& build) {
   law.slip = value("VS_SlPc", false) / 100.0;
   law.efficiency = g.number("GenEff", 100.0) / 100.0;
   if (!(law.efficiency > 0) || law.efficiency > 1) g.at("GenEff").fail("must be in (0, 100] %");
-  for (Output& out : generatorOutputs()) {
-    if (m.findOutput(out.name)) g.fail("output name '" + out.name + "' is taken: the generator adds it");
-    m.outputs.push_back(std::move(out));
+  for (Output& added : generatorOutputs()) {
+    if (m.findOutput(added.name)) g.fail("output name '" + added.name + "' is taken: the generator adds it");
+    m.outputs.push_back(std::move(added));
   }
 }
 
