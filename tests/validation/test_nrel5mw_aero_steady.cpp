@@ -7,6 +7,8 @@
 #include <numbers>
 #include <string>
 
+#include "linearize/linearize.hpp"
+#include "linearize/operating_point.hpp"
 #include "linearize/trim.hpp"
 #include "src/io/schedule.hpp"
 #include "src/model/error.hpp"
@@ -22,8 +24,9 @@ const std::string kDir = std::string(WHIRL_SOURCE_DIR) + "/cases/nrel5mw/";
 // speed and pitch of each wind speed. Tolerance 2 % (the acceptance of the aeroelastic issue; the
 // reference's digits are finer). 3 m/s (0.43 rpm, tip-speed ratio 0.94) holds only with AeroDyn's
 // induction switched off below λ = 1 (whirl had thrust −1.2 % with BEM there; now −0.6 %, torque −1.5 %).
-// 4 m/s (2.39 rpm, λ = 3.98, full BEM) is left out: thrust −2.6 %, torque +0.3 %, cause not found
-// (README "Aerodynamics").
+// 4 m/s (2.39 rpm, λ = 3.98) is not a steady point of the reference (the rotor is still spinning up
+// there, see ReferenceRowsAtThreeAndFourMetresPerSecondAreSpinUps) and is checked separately
+// (SpinUpRowLiesBetweenSteadyAndAbsentInduction).
 TEST(Nrel5mwAeroSteady, ThrustAndTorqueMatchOpenFastOperatingData) {
   const Model m = readElastoDynModel(kDir + "Main_Aero.fst");
   const std::vector<SweepPoint> points = readSchedule(kDir + "NREL5MW_Oper.csv");
@@ -43,6 +46,52 @@ TEST(Nrel5mwAeroSteady, ThrustAndTorqueMatchOpenFastOperatingData) {
       ++checked;
     }
   EXPECT_EQ(checked, static_cast<int>(std::size(ref)));
+}
+
+// Why the 4 m/s row is not a steady point: in NREL5MW_Oper.csv at 3 and 4 m/s the generator torque is 0
+// and the low-speed-shaft torque RotTorq is a fraction of the aerodynamic torque (2.7985 of 24.33 and
+// 46.73 of 406.55 kN m), while from 5 m/s on the two agree to 0.1 %. A rotor accelerated by its
+// aerodynamic torque alone passes to the shaft the generator's share of the inertia: RtAeroMxh / RotTorq
+// = (J_rotor + J_gen G²) / (J_gen G²). Both rows give that ratio of whirl's model of the same deck, so
+// they are snapshots of a free spin-up (0.0093 rad/s² at 4 m/s), not equilibria. Inertias from the
+// assembled mass matrix at rest: generator azimuth carries rotor + generator, drivetrain the rotor alone.
+// Tolerance 0.5 %: the ratios of the two rows differ by 0.07 % (the reference's printed digits).
+TEST(Nrel5mwAeroSteady, ReferenceRowsAtThreeAndFourMetresPerSecondAreSpinUps) {
+  const Model m = readElastoDynModel(kDir + "Main_Aero.fst", {"CompAero=0", "RotSpeed=0"});
+  const LinearModel lin = linearize(m, solveOperatingPoint(m, initialPoint(m)));
+  auto at = [&](const std::string& dof) {
+    for (std::size_t i = 0; i < lin.dof_names.size(); ++i)
+      if (lin.dof_names[i] == dof) return static_cast<Eigen::Index>(i);
+    ADD_FAILURE() << dof;
+    return Eigen::Index{0};
+  };
+  const double j_total = lin.M(at("generator azimuth"), at("generator azimuth"));
+  const double j_rotor = lin.M(at("drivetrain"), at("drivetrain"));
+  const double ratio = j_total / (j_total - j_rotor);
+  // RtAeroMxh and RotTorq [kN m] of NREL5MW_Oper.csv at 3 and 4 m/s.
+  EXPECT_NEAR(24.3312234 / 2.7985, ratio, 0.005 * ratio);
+  EXPECT_NEAR(406.5542608 / 46.7301, ratio, 0.005 * ratio);
+}
+
+// During a spin-up the simulation's induction (AeroDyn's dynamic BEMT in the OpenFAST toolbox deck the
+// table comes from) lags the steady value, so the thrust of the 4 m/s row must lie between whirl's steady
+// BEM (induction in equilibrium) and no induction at all (AeroDyn WakeMod = 0). It does: 43.74 ≤ 44.91 ≤
+// 44.97 kN. (The torque, 406.55 kN m, is 0.3 % below whirl's steady 407.8 kN m rather than between it and
+// the 428 kN m without induction: that deck also has tower potential flow and unsteady airfoils, which
+// whirl's steady model leaves out; not separated.)
+TEST(Nrel5mwAeroSteady, SpinUpRowLiesBetweenSteadyAndAbsentInduction) {
+  const Model m = readElastoDynModel(kDir + "Main_Aero.fst");
+  Model frozen_out = m;
+  frozen_out.aero.induction = false;
+  for (const SweepPoint& p : readSchedule(kDir + "NREL5MW_Oper.csv")) {
+    if (!p.wind_speed || std::abs(*p.wind_speed - 4.0) > 1e-9) continue;
+    const double steady = steadyState(m, sweepCondition(m, p)).thrust / 1e3;
+    const double none = steadyState(frozen_out, sweepCondition(frozen_out, p)).thrust / 1e3;
+    EXPECT_LT(steady, 44.9062984);  // RtAeroFxh [kN] of NREL5MW_Oper.csv at 4 m/s
+    EXPECT_GT(none, 44.9062984);
+    return;
+  }
+  FAIL() << "no 4 m/s row";
 }
 
 // The trimmed point is a torque balance: below rated the aerodynamic torque equals the gear ratio
