@@ -73,8 +73,8 @@ TEST(Nrel5mwAeroSteady, ReferenceRowsAtThreeAndFourMetresPerSecondAreSpinUps) {
   EXPECT_NEAR(406.5542608 / 46.7301, ratio, 0.005 * ratio);
 }
 
-// During a spin-up the simulation's induction (AeroDyn's dynamic BEMT in the OpenFAST toolbox deck the
-// table comes from) lags the steady value, so the thrust of the 4 m/s row must lie between whirl's steady
+// During a spin-up a dynamic induction (AeroDyn's DBEMT: the OpenFAST toolbox's onshore NREL 5MW
+// simulation deck has WakeMod = 2; the table does not say which deck made it) lags the steady value, so the thrust of the 4 m/s row must lie between whirl's steady
 // BEM (induction in equilibrium) and no induction at all (AeroDyn WakeMod = 0). It does: 43.74 ≤ 44.91 ≤
 // 44.97 kN. (The torque, 406.55 kN m, is 0.3 % below whirl's steady 407.8 kN m rather than between it and
 // the 428 kN m without induction: that deck also has tower potential flow and unsteady airfoils, which
