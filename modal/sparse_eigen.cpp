@@ -199,6 +199,48 @@ Eigen::VectorXcd unitVector(const Eigen::VectorXd& re, const Eigen::VectorXd& im
   return v;
 }
 
+// SLEPc's linear (EPS) and polynomial (PEP) solvers read their results with getters that differ only
+// in name; these overloads let one function collect either.
+PetscErrorCode converged(EPS e, PetscInt* n) { return EPSGetConverged(e, n); }
+PetscErrorCode converged(PEP p, PetscInt* n) { return PEPGetConverged(p, n); }
+PetscErrorCode iterations(EPS e, PetscInt* n) { return EPSGetIterationNumber(e, n); }
+PetscErrorCode iterations(PEP p, PetscInt* n) { return PEPGetIterationNumber(p, n); }
+PetscErrorCode eigenpair(EPS e, PetscInt i, PetscScalar* kr, PetscScalar* ki, Vec xr, Vec xi) {
+  return EPSGetEigenpair(e, i, kr, ki, xr, xi);
+}
+PetscErrorCode eigenpair(PEP p, PetscInt i, PetscScalar* kr, PetscScalar* ki, Vec xr, Vec xi) {
+  return PEPGetEigenpair(p, i, kr, ki, xr, xi);
+}
+PetscErrorCode backwardError(EPS e, PetscInt i, PetscReal* err) { return EPSComputeError(e, i, EPS_ERROR_BACKWARD, err); }
+PetscErrorCode backwardError(PEP p, PetscInt i, PetscReal* err) { return PEPComputeError(p, i, PEP_ERROR_BACKWARD, err); }
+
+/// Reads the converged pairs of a solved EPS or PEP into `res` (vectors gathered on every rank, unit
+/// length), keeps the nev nearest the target and refuses fewer. `like`: a matrix of the problem's size;
+/// `prefix`: the solver's options prefix ("eps", "pep") for the advice in the message.
+template <class Solver>
+void collectPairs(Solver solver, Mat like, int nev, const std::string& prefix, SparseEigenResult& res) {
+  PetscInt nconv = 0, its = 0;
+  check(converged(solver, &nconv), "GetConverged");
+  check(iterations(solver, &its), "GetIterationNumber");
+  res.iterations = static_cast<int>(its);
+  PVec xr, xi;
+  check(MatCreateVecs(like, &xr.v, nullptr), "MatCreateVecs");
+  check(VecDuplicate(xr.v, &xi.v), "VecDuplicate");
+  for (PetscInt i = 0; i < nconv; ++i) {
+    PetscScalar kr, ki;
+    PetscReal err;
+    check(eigenpair(solver, i, &kr, &ki, xr.v, xi.v), "GetEigenpair");
+    check(backwardError(solver, i, &err), "ComputeError");
+    res.pairs.push_back({{kr, ki}, unitVector(gatherAll(xr.v), gatherAll(xi.v)), err});
+  }
+  sortByDistance(res.pairs, res.target);
+  res.pairs.resize(static_cast<size_t>(keepCount(static_cast<int>(nconv), nev, res.pairs)));
+  if (static_cast<int>(res.pairs.size()) < nev)
+    throw ComputeError("sparse eigen: only " + std::to_string(res.pairs.size()) + " of " + std::to_string(nev) +
+                       " eigenpairs converged in " + std::to_string(its) + " iterations (raise -" + prefix +
+                       "_max_it or -" + prefix + "_ncv, or move the target)");
+}
+
 }  // namespace
 
 SparseEigenResult sparseGeneralizedEigen(const SparseMatrix& K, const SparseMatrix& M, const SparseEigenOptions& opt) {
@@ -239,26 +281,7 @@ SparseEigenResult sparseGeneralizedEigen(const SparseMatrix& K, const SparseMatr
   check(EPSSolve(eps.e), "EPSSolve (factorization of K - target*M and Krylov-Schur)");
   res.method = "EPS " + describe(eps_type, st);
 
-  PetscInt nconv = 0, its = 0;
-  check(EPSGetConverged(eps.e, &nconv), "EPSGetConverged");
-  check(EPSGetIterationNumber(eps.e, &its), "EPSGetIterationNumber");
-  res.iterations = static_cast<int>(its);
-  PVec xr, xi;
-  check(MatCreateVecs(A.m, &xr.v, nullptr), "MatCreateVecs");
-  check(VecDuplicate(xr.v, &xi.v), "VecDuplicate");
-  for (PetscInt i = 0; i < nconv; ++i) {
-    PetscScalar kr, ki;
-    PetscReal err;
-    check(EPSGetEigenpair(eps.e, i, &kr, &ki, xr.v, xi.v), "EPSGetEigenpair");
-    check(EPSComputeError(eps.e, i, EPS_ERROR_BACKWARD, &err), "EPSComputeError");
-    res.pairs.push_back({{kr, ki}, unitVector(gatherAll(xr.v), gatherAll(xi.v)), err});
-  }
-  sortByDistance(res.pairs, res.target);
-  res.pairs.resize(static_cast<size_t>(keepCount(static_cast<int>(nconv), nev, res.pairs)));
-  if (static_cast<int>(res.pairs.size()) < nev)
-    throw ComputeError("sparse eigen: only " + std::to_string(res.pairs.size()) + " of " + std::to_string(nev) +
-                       " eigenpairs converged in " + std::to_string(its) +
-                       " iterations (raise -eps_max_it or -eps_ncv, or move the target)");
+  collectPairs(eps.e, A.m, nev, "eps", res);
   return res;
 }
 
@@ -339,26 +362,7 @@ SparseEigenResult sparseQuadraticEigen(const SparseMatrix& M, const SparseMatrix
   check(PEPSolve(pep.p), "PEPSolve (factorization of P(target) and TOAR)");
   res.method = "PEP " + describe(pep_type, st);
 
-  PetscInt nconv = 0, its = 0;
-  check(PEPGetConverged(pep.p, &nconv), "PEPGetConverged");
-  check(PEPGetIterationNumber(pep.p, &its), "PEPGetIterationNumber");
-  res.iterations = static_cast<int>(its);
-  PVec xr, xi;
-  check(MatCreateVecs(A0.m, &xr.v, nullptr), "MatCreateVecs");
-  check(VecDuplicate(xr.v, &xi.v), "VecDuplicate");
-  for (PetscInt i = 0; i < nconv; ++i) {
-    PetscScalar kr, ki;
-    PetscReal err;
-    check(PEPGetEigenpair(pep.p, i, &kr, &ki, xr.v, xi.v), "PEPGetEigenpair");
-    check(PEPComputeError(pep.p, i, PEP_ERROR_BACKWARD, &err), "PEPComputeError");
-    res.pairs.push_back({{kr, ki}, unitVector(gatherAll(xr.v), gatherAll(xi.v)), err});
-  }
-  sortByDistance(res.pairs, res.target);
-  res.pairs.resize(static_cast<size_t>(keepCount(static_cast<int>(nconv), nev, res.pairs)));
-  if (static_cast<int>(res.pairs.size()) < nev)
-    throw ComputeError("sparse eigen: only " + std::to_string(res.pairs.size()) + " of " + std::to_string(nev) +
-                       " eigenpairs converged in " + std::to_string(its) +
-                       " iterations (raise -pep_max_it or -pep_ncv, or move the target)");
+  collectPairs(pep.p, A0.m, nev, "pep", res);
   return res;
 }
 
