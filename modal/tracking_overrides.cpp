@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "src/io/csv.hpp"
 #include "src/model/error.hpp"
 #include "src/model/text.hpp"
 
@@ -18,44 +19,13 @@ struct RowError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r");
-  if (b == std::string::npos) return "";
-  return s.substr(b, s.find_last_not_of(" \t\r") - b + 1);
-}
-
-/// Comma-separated fields, trimmed, with "quoted" fields; throws RowError on an open quote.
+/// The fields of an override row (splitCsvLine); a row that is not CSV is a RowError.
 std::vector<std::string> splitFields(const std::string& row) {
-  std::vector<std::string> out;
-  std::string field;
-  bool quoted = false, was_quoted = false;
-  for (std::size_t i = 0; i < row.size(); ++i) {
-    const char c = row[i];
-    if (quoted) {
-      if (c == '"' && i + 1 < row.size() && row[i + 1] == '"') {
-        field += '"';
-        ++i;
-      } else if (c == '"') {
-        quoted = false;
-      } else {
-        field += c;
-      }
-    } else if (c == '"' && trim(field).empty()) {
-      quoted = was_quoted = true;
-      field.clear();
-    } else if (c == ',') {
-      out.push_back(was_quoted ? field : trim(field));
-      field.clear();
-      was_quoted = false;
-    } else if (!was_quoted) {
-      field += c;
-    } else if (c != ' ' && c != '\t' && c != '\r') {
-      throw RowError("text after a closing quote");
-    }
+  try {
+    return splitCsvLine(row);
+  } catch (const CsvLineError& e) {
+    throw RowError(e.what());
   }
-  if (quoted) throw RowError("unterminated quote");
-  out.push_back(was_quoted ? field : trim(field));
-  return out;
 }
 
 int parseIndex(const std::string& s, const std::string& what) {
@@ -118,7 +88,7 @@ void applyTrackingOverridesText(const std::string& text, const std::string& file
   std::istringstream in(text);
   std::string row;
   for (int line_no = 1; std::getline(in, row); ++line_no) {
-    const std::string t = trim(row);
+    const std::string t(trimBlanks(row));
     if (t.empty() || t[0] == '#') continue;
     requirePrintable(t, file, line_no, "");  // new names go into campbell.gp and the tables
     try {

@@ -5,15 +5,10 @@
 
 #include "src/io/case_reader.hpp"
 #include "src/model/error.hpp"
+#include "src/model/text.hpp"
 
 namespace whirl {
 namespace {
-
-std::string trim(const std::string& s) {
-  const auto a = s.find_first_not_of(" \t");
-  if (a == std::string::npos) return "";
-  return s.substr(a, s.find_last_not_of(" \t") - a + 1);
-}
 
 std::vector<std::string> splitKey(const std::string& key) {
   std::vector<std::string> out;
@@ -67,7 +62,8 @@ CaseOverride parseOverride(const std::string& text) {
     return InputError(where("", 0, "--set " + text, why + " (expected key=value, e.g. bodies.nacelle.mass=2.4e5)"));
   };
   if (eq == std::string::npos) throw bad("no '='");
-  CaseOverride o{trim(text.substr(0, eq)), trim(text.substr(eq + 1))};
+  CaseOverride o{std::string(trimBlanks(std::string_view(text).substr(0, eq))),
+                 std::string(trimBlanks(std::string_view(text).substr(eq + 1)))};
   if (o.key.empty()) throw bad("the key is empty");
   if (o.value.empty()) throw bad("the value is empty");
   for (const auto& s : splitKey(o.key))

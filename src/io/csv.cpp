@@ -18,7 +18,7 @@ std::string formatNumber(double x) {
 }
 
 std::string csvField(const std::string& s) {
-  if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
+  if (s.find_first_of(",\"\n\r") == std::string::npos && trimBlanks(s).size() == s.size()) return s;
   std::string q = "\"";
   for (char c : s) {
     if (c == '"') q += '"';
@@ -27,32 +27,37 @@ std::string csvField(const std::string& s) {
   return q + "\"";
 }
 
-std::vector<std::string> splitCsvLine(const std::string& line) {
-  std::vector<std::string> f;
-  std::string cur;
-  bool quoted = false;
-  for (size_t i = 0; i < line.size(); ++i) {
+std::vector<std::string> splitCsvLine(std::string_view line) {
+  std::vector<std::string> out;
+  std::string field;
+  bool quoted = false, was_quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
     const char c = line[i];
     if (quoted) {
       if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
-        cur += '"';
+        field += '"';
         ++i;
       } else if (c == '"') {
         quoted = false;
       } else {
-        cur += c;
+        field += c;
       }
-    } else if (c == '"') {
-      quoted = true;
+    } else if (c == '"' && trimBlanks(field).empty() && !was_quoted) {
+      quoted = was_quoted = true;
+      field.clear();
     } else if (c == ',') {
-      f.push_back(cur);
-      cur.clear();
-    } else if (c != '\r') {
-      cur += c;
+      out.emplace_back(was_quoted ? std::string_view(field) : trimBlanks(field));
+      field.clear();
+      was_quoted = false;
+    } else if (!was_quoted) {
+      field += c;
+    } else if (!trimBlanks(std::string_view(&c, 1)).empty()) {
+      throw CsvLineError("text after a closing quote");
     }
   }
-  f.push_back(cur);
-  return f;
+  if (quoted) throw CsvLineError("unterminated quote");
+  out.emplace_back(was_quoted ? std::string_view(field) : trimBlanks(field));
+  return out;
 }
 
 int TextTable::column(const std::string& name) const {
@@ -71,7 +76,12 @@ TextTable readTextCsv(const std::string& path) {
   while (std::getline(in, line)) {
     ++n;
     if (line.empty() || line == "\r") continue;
-    auto f = splitCsvLine(line);
+    std::vector<std::string> f;
+    try {
+      f = splitCsvLine(line);
+    } catch (const CsvLineError& e) {
+      throw InputError(where(path, n, "", e.what()));
+    }
     // Fields become mode names, --set keys and values: one printable line each.
     for (size_t c = 0; c < f.size(); ++c)
       requirePrintable(f[c], path, n, t.names.empty() || c >= t.names.size() ? "" : t.names[c]);

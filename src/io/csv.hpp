@@ -2,7 +2,9 @@
 /// \file
 /// CSV text with full precision (shortest round-trip representation, std::to_chars) and quoting
 /// of names that contain separators.
+#include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "src/model/types.hpp"
@@ -12,11 +14,21 @@ namespace whirl {
 /// Shortest decimal text that reads back to exactly x; "nan"/"inf" for non-finite values.
 std::string formatNumber(double x);
 
-/// A CSV field: quoted (with doubled quotes) when it holds a comma, quote or newline.
+/// A CSV field: quoted (with doubled quotes) when it holds a comma, quote or newline, or begins or
+/// ends with a blank (splitCsvLine trims unquoted fields).
 std::string csvField(const std::string& s);
 
-/// Fields of one CSV line: quoted fields may hold commas and doubled quotes ("").
-std::vector<std::string> splitCsvLine(const std::string& line);
+/// A line that is not CSV (an open quote, text after a closing quote); the reason only, the caller
+/// adds file:line.
+struct CsvLineError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// Fields of one CSV line, the one splitter of every CSV whirl reads: unquoted fields trimmed of
+/// blanks; a field that starts with `"` (after blanks) is quoted and may hold commas and doubled
+/// quotes (""), kept as written. \throws CsvLineError for an unterminated quote or text after a
+/// closing quote.
+std::vector<std::string> splitCsvLine(std::string_view line);
 
 /// A text CSV table: header names and rows of fields, with 1-based line numbers.
 struct TextTable {

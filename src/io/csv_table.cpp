@@ -6,32 +6,12 @@
 #include <fstream>
 #include <set>
 
+#include "src/io/csv.hpp"
 #include "src/model/error.hpp"
+#include "src/model/text.hpp"
 
 namespace whirl {
 namespace {
-
-std::string trim(const std::string& s) {
-  const auto a = s.find_first_not_of(" \t\r");
-  if (a == std::string::npos) return "";
-  const auto b = s.find_last_not_of(" \t\r");
-  return s.substr(a, b - a + 1);
-}
-
-std::vector<std::string> split(const std::string& line) {
-  std::vector<std::string> out;
-  size_t start = 0;
-  while (true) {
-    const size_t comma = line.find(',', start);
-    out.push_back(trim(line.substr(start, comma == std::string::npos ? std::string::npos : comma - start)));
-    if (comma == std::string::npos) return out;
-    start = comma + 1;
-  }
-}
-
-std::string unquote(const std::string& s) {
-  return s.size() >= 2 && s.front() == '"' && s.back() == '"' ? s.substr(1, s.size() - 2) : s;
-}
 
 /// At most 40 characters of a cell, for messages (the file may not be a CSV file at all).
 std::string excerpt(const std::string& s) { return s.size() <= 40 ? s : s.substr(0, 40) + "..."; }
@@ -49,13 +29,18 @@ CsvTable readCsv(const std::string& path) {
   int line = 0;
   while (std::getline(in, raw)) {
     ++line;
-    const std::string s = trim(raw);
+    const std::string_view s = trimBlanks(raw);
     if (s.empty() || s[0] == '#') continue;
-    const std::vector<std::string> fields = split(s);
+    std::vector<std::string> fields;
+    try {
+      fields = splitCsvLine(s);
+    } catch (const CsvLineError& e) {
+      throw InputError(where(path, line, "", e.what()));
+    }
     if (t.names.empty()) {
       std::set<std::string> seen;
       for (const auto& f : fields) {
-        const std::string name = unquote(f);
+        const std::string& name = f;
         if (name.empty()) throw InputError(where(path, line, "", "empty column name in the header row"));
         if (!seen.insert(name).second) throw InputError(where(path, line, excerpt(name), "column given twice"));
         t.names.push_back(name);

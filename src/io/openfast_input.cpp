@@ -22,12 +22,6 @@ struct Token {
 bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
 bool is_alpha(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_'; }
 
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && is_blank(s.front())) s.remove_prefix(1);
-  while (!s.empty() && is_blank(s.back())) s.remove_suffix(1);
-  return s;
-}
-
 bool starts_with_ci(std::string_view s, std::string_view prefix) {
   return s.size() >= prefix.size() && to_lower(s.substr(0, prefix.size())) == prefix;
 }
@@ -176,7 +170,7 @@ OpenFastFile OpenFastFile::parse(std::string_view text, const std::filesystem::p
   bool title_seen = false;
   for (std::size_t i = 0; i < lines.size(); ++i) {
     const int lineno = static_cast<int>(i) + 1;
-    const std::string_view t = trim(lines[i]);
+    const std::string_view t = trimBlanks(lines[i]);
     if (in_outlist) {
       if (starts_with_ci(t, "end")) in_outlist = false;
       continue;
@@ -191,7 +185,7 @@ OpenFastFile OpenFastFile::parse(std::string_view text, const std::filesystem::p
       }
     }
     const std::vector<Token> toks = tokenize(lines[i]);
-    if (is_table_header(toks) && i + 1 < lines.size() && trim(lines[i + 1]).substr(0, 1) == "(") {
+    if (is_table_header(toks) && i + 1 < lines.size() && trimBlanks(lines[i + 1]).substr(0, 1) == "(") {
       OpenFastTable tab;
       tab.header_line = lineno;
       for (const Token& tk : toks) tab.columns.push_back(tk.text);

@@ -32,6 +32,14 @@ std::string tabsToSpaces(std::string_view s);
 /// column, a comment in a script): the last line of defence when a name did not come through a reader.
 std::string withoutControlCharacters(std::string_view s);
 
+/// `s` without the blanks (space, tab, CR, LF, FF, VT) at either end.
+constexpr std::string_view trimBlanks(std::string_view s) {
+  auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v'; };
+  while (!s.empty() && blank(s.front())) s.remove_prefix(1);
+  while (!s.empty() && blank(s.back())) s.remove_suffix(1);
+  return s;
+}
+
 /// `s` with control characters written as C escapes (\n, \t, \r, \x1B; other text unchanged): error
 /// messages stay one line whatever name they quote.
 std::string escapeControlCharacters(std::string_view s);

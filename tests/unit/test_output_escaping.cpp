@@ -147,6 +147,20 @@ TEST(CsvEscaping, HostileFieldsReadBack) {
   }
 }
 
+// The one CSV splitter of every reader (tables, schedules, references, tracking overrides): unquoted
+// fields trimmed, quoted ones kept as written, a broken quote an error instead of a silently merged row.
+TEST(CsvEscaping, SplitterTrimsUnquotedFieldsAndRefusesBrokenQuotes) {
+  EXPECT_EQ(splitCsvLine(" a ,\t\"b, c\" , d\r"), (std::vector<std::string>{"a", "b, c", "d"}));
+  EXPECT_EQ(splitCsvLine("\" x \",,"), (std::vector<std::string>{" x ", "", ""}));
+  EXPECT_THROW(splitCsvLine("\"open,1"), CsvLineError);
+  EXPECT_THROW(splitCsvLine("\"a\" b,1"), CsvLineError);
+  for (const std::string name : {" lead", "trail ", "\tboth\t"}) {
+    const auto f = splitCsvLine(csvField(name) + ",1");
+    ASSERT_EQ(f.size(), 2u) << name;
+    EXPECT_EQ(f[0], name);  // blanks at the ends survive because csvField quotes them
+  }
+}
+
 TEST(JsonEscaping, HostileNamesReadBackAndStayOnOneLinePerValue) {
   const auto d = hostileDiagram();
   const std::string text = campbellModesJson(d);
