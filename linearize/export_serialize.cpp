@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <nlohmann/json.hpp>
 
+#include "linearize/cbor_bytes.hpp"
 #include "src/model/error.hpp"
 
 namespace whirl {
@@ -162,13 +163,11 @@ std::string encodeExportPoint(const ExportPoint& p) {
   if (p.wind_speed) j["ws"] = scalar(*p.wind_speed);
   if (p.pitch_deg) j["pitch"] = scalar(*p.pitch_deg);
   for (const auto& s : p.azimuths) j["azimuths"].push_back(model(s));
-  const std::vector<std::uint8_t> bytes = json::to_cbor(j);
-  return std::string(bytes.begin(), bytes.end());
+  return cborBytes(j);
 }
 
 ExportPoint decodeExportPoint(const std::string& bytes) {
-  try {
-    const json j = json::from_cbor(bytes);
+  return decodeCborBytes(bytes, "export point", [](const json& j) {
     ExportPoint p;
     p.rpm = readScalar(j.at("rpm"));
     if (j.contains("ws")) p.wind_speed = readScalar(j["ws"]);
@@ -177,11 +176,7 @@ ExportPoint decodeExportPoint(const std::string& bytes) {
     for (const auto& s : j.at("azimuths")) p.azimuths.push_back(readModel(s));
     p.equilibrium = readOperatingPoint(j.at("equilibrium"));
     return p;
-  } catch (const json::exception& e) {
-    throw ComputeError(std::string("export point: corrupt result bytes (") + e.what() + ")");
-  } catch (const Corrupt& e) {
-    throw ComputeError(std::string("export point: corrupt result bytes (") + e.what() + ")");
-  }
+  });
 }
 
 }  // namespace whirl

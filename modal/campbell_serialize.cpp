@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "linearize/cbor_bytes.hpp"
 #include "src/model/error.hpp"
 
 namespace whirl {
@@ -55,13 +56,11 @@ std::string encodeCampbellPoint(const CampbellPoint& pt) {
   if (!pt.validity_problems.empty()) j["invalid"] = pt.validity_problems;
   j["modes"] = json::array();
   for (const auto& m : pt.modes) j["modes"].push_back(encodeMode(m));
-  const std::vector<std::uint8_t> bytes = json::to_cbor(j);
-  return std::string(bytes.begin(), bytes.end());
+  return cborBytes(j);
 }
 
 CampbellPoint decodeCampbellPoint(const std::string& bytes) {
-  try {
-    const json j = json::from_cbor(bytes);
+  return decodeCborBytes(bytes, "campbell point", [](const json& j) {
     CampbellPoint pt;
     pt.rpm = j.at("rpm").get<double>();
     if (j.contains("ws")) pt.wind_speed = j["ws"].get<double>();
@@ -70,9 +69,7 @@ CampbellPoint decodeCampbellPoint(const std::string& bytes) {
     if (j.contains("invalid")) pt.validity_problems = j["invalid"].get<std::vector<std::string>>();
     for (const auto& m : j.at("modes")) pt.modes.push_back(decodeMode(m));
     return pt;
-  } catch (const json::exception& e) {
-    throw ComputeError(std::string("campbell point: corrupt result bytes (") + e.what() + ")");
-  }
+  });
 }
 
 }  // namespace whirl
