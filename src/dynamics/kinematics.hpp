@@ -3,6 +3,7 @@
 /// Root-to-leaf kinematics of the body tree [Branlard2019, §3.2–3.3; BranlardGeisler2022, eq. 1–3], written once
 /// for any scalar type T (double or ADChunk); body in kinematics.hxx, instantiated in residual.cpp.
 #include "src/dynamics/workspace.hpp"
+#include "src/model/skew.hpp"
 
 namespace whirl {
 
@@ -16,13 +17,5 @@ void forwardKinematics(const Model& model, Workspace<T>& ws, const VecXT<T>& q, 
 /// Rotation by angle phi about the unit axis n: R such that R v turns v about n.
 template <class T>
 Mat3T<T> axisRotation(const Vec3& n, const T& phi);
-
-/// Skew matrix: skew(a) b = a × b.
-template <class T>
-Mat3T<T> skew(const Vec3T<T>& a) {
-  Mat3T<T> s;
-  s << T(0), -a(2), a(1), a(2), T(0), -a(0), -a(1), a(0), T(0);
-  return s;
-}
 
 }  // namespace whirl

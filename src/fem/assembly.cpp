@@ -2,6 +2,8 @@
 
 #include <vector>
 
+#include "src/model/skew.hpp"
+
 namespace whirl::fem {
 namespace {
 
@@ -29,12 +31,6 @@ void scatter(Triplets& t, const Mat12& k, const std::array<int, 12>& dofs) {
       if (k(i, j) != 0.0) t.emplace_back(dofs[i], dofs[j], k(i, j));
 }
 
-Mat3 skew(const Vec3& a) {
-  Mat3 s;
-  s << 0, -a(2), a(1), a(2), 0, -a(0), -a(1), a(0), 0;
-  return s;
-}
-
 // Accumulates into the extended index space of c = [1; u]. P: 3 × nl position field, A: 3 × nl
 // rotation field (column 0 = reference, zero rotation), index: extended index of each local column.
 struct IntegralBuilder {
@@ -49,7 +45,7 @@ struct IntegralBuilder {
     for (int k = 0; k < nl; ++k) m1.col(index[k]) += dm * P.col(k);
     // Section points at r (∫ r dm = 0, ∫ r rᵀ dm = Θ) move by θ × r = skew(θ) r.
     std::vector<Mat3> E(nl);
-    for (int k = 0; k < nl; ++k) E[k] = skew(A.col(k));
+    for (int k = 0; k < nl; ++k) E[k] = skew(Vec3(A.col(k)));
     for (int a = 0; a < nl; ++a)
       for (int b = 0; b < nl; ++b) {
         Mat3 s = dm * P.col(a) * P.col(b).transpose();  // s(j, l) = ∫ P_j(a) P_l(b)

@@ -8,18 +8,13 @@
 #include "src/fem/reduction.hpp"
 #include "src/model/error.hpp"
 #include "src/model/limits.hpp"
+#include "src/model/skew.hpp"
 #include "src/shapes/interpolate.hpp"
 
 namespace whirl::fem {
 namespace {
 
 using Triplets = std::vector<Eigen::Triplet<double>>;
-
-Mat3 skew(const Vec3& a) {
-  Mat3 s;
-  s << 0, -a(2), a(1), a(2), 0, -a(0), -a(1), a(0), 0;
-  return s;
-}
 
 bool hasTorsion(const BeamProperties& p) {
   return p.GKt.size() && p.jG.size() && p.GKt.maxCoeff() > 0 && p.jG.minCoeff() > 0;
