@@ -278,19 +278,20 @@ void finalizeRoles(Model& m, const std::vector<int>& new_dof) {
 
 }  // namespace
 
-void finalize(Model& m) {
-  requirePrintableNames(m);
-  const int nb = static_cast<int>(m.bodies.size());
-  {
-    std::set<std::string> names;
-    for (const auto& b : m.bodies) {
-      if (b.name.empty()) throw InputError("a body has no name");
-      if (!names.insert(b.name).second) throw InputError(bodyWhere(b, "name used twice"));
-    }
-  }
-  if (!m.gravity.allFinite()) throw InputError("gravity: not finite");
+namespace {
 
-  // Parents first, by depth; stable so that siblings keep the order they were given in.
+void requireUniqueBodyNames(const Model& m) {
+  std::set<std::string> names;
+  for (const auto& b : m.bodies) {
+    if (b.name.empty()) throw InputError("a body has no name");
+    if (!names.insert(b.name).second) throw InputError(bodyWhere(b, "name used twice"));
+  }
+}
+
+/// Orders the bodies parents first, by depth (stable, so siblings keep the order they were given
+/// in), and renumbers the parent and geared-joint references; returns the new index of each old body.
+std::vector<int> sortBodiesParentsFirst(Model& m) {
+  const int nb = static_cast<int>(m.bodies.size());
   const std::vector<int> depth = depths(m.bodies);
   std::vector<int> order(nb);
   std::iota(order.begin(), order.end(), 0);
@@ -301,12 +302,18 @@ void finalize(Model& m) {
   sorted.reserve(nb);
   for (int k = 0; k < nb; ++k) {
     sorted.push_back(std::move(m.bodies[order[k]]));
-    if (sorted.back().parent >= 0) sorted.back().parent = new_index[sorted.back().parent];
-    Body& nb_ = sorted.back();
-    if (nb_.joint_follows >= nb) throw InputError(bodyWhere(nb_, "geared joint follows a body that does not exist"));
-    if (nb_.joint_follows >= 0) nb_.joint_follows = new_index[nb_.joint_follows];
+    Body& b = sorted.back();
+    if (b.parent >= 0) b.parent = new_index[b.parent];
+    if (b.joint_follows >= nb) throw InputError(bodyWhere(b, "geared joint follows a body that does not exist"));
+    if (b.joint_follows >= 0) b.joint_follows = new_index[b.joint_follows];
   }
   m.bodies = std::move(sorted);
+  return new_index;
+}
+
+/// DOFs, point loads, point outputs and 6×6 body matrices refer to the renumbered bodies.
+void remapBodyReferences(Model& m, const std::vector<int>& new_index) {
+  const int nb = static_cast<int>(new_index.size());
   for (auto& d : m.dofs) {
     if (d.body < 0 || d.body >= nb) throw InputError("DOF '" + d.name + "': no such body");
     d.body = new_index[d.body];
@@ -322,8 +329,28 @@ void finalize(Model& m) {
       if (o.frame_body >= 0) remapBody(o.frame_body, "output '" + o.name + "' frame");
     }
   for (auto& l : m.body_matrices) remapBody(l.body, "body matrices");
+}
 
-  // Number the DOFs body by body: joint coordinates, then elastic ones.
+/// Checks what a body's placement and inertia need (axis, offset, rotation, parent point).
+void checkBody(const Model& m, Body& b) {
+  checkInertia(b);
+  setActiveLengths(b.inertia);
+  if (b.parent >= 0 && b.parent_point >= static_cast<int>(m.bodies[b.parent].points.size()))
+    throw InputError(bodyWhere(b, "parent point index out of range"));
+  if (b.parent < 0 && b.parent_point >= 0) throw InputError(bodyWhere(b, "a point on the ground is not allowed; use offset"));
+  if (b.joint == JointType::Revolute || b.joint == JointType::Prismatic) {
+    if (!b.axis.allFinite() || b.axis.norm() < 1e-12) throw InputError(bodyWhere(b, "joint axis is zero"));
+    b.axis.normalize();
+  }
+  if (!b.offset.allFinite() || !b.rotation.allFinite()) throw InputError(bodyWhere(b, "offset or rotation not finite"));
+  if ((b.rotation.transpose() * b.rotation - Mat3::Identity()).norm() > 1e-9)
+    throw InputError(bodyWhere(b, "rotation is not orthonormal"));
+}
+
+/// Numbers the DOFs body by body — joint coordinates, then elastic ones — keeping the names and
+/// values given for them and naming the others "<body> joint k" / "<body> shape k"; returns the new
+/// index of each given DOF.
+std::vector<int> numberDofs(Model& m) {
   std::map<std::pair<int, std::pair<int, int>>, int> given;  // (body, (kind, local)) -> old index
   for (int k = 0; k < m.ndof(); ++k) {
     const Dof& d = m.dofs[k];
@@ -332,20 +359,9 @@ void finalize(Model& m) {
   }
   std::vector<Dof> dofs;
   std::vector<int> new_dof(m.ndof(), -1);
-  for (int i = 0; i < nb; ++i) {
+  for (int i = 0; i < static_cast<int>(m.bodies.size()); ++i) {
     Body& b = m.bodies[i];
-    checkInertia(b);
-    setActiveLengths(b.inertia);
-    if (b.parent >= 0 && b.parent_point >= static_cast<int>(m.bodies[b.parent].points.size()))
-      throw InputError(bodyWhere(b, "parent point index out of range"));
-    if (b.parent < 0 && b.parent_point >= 0) throw InputError(bodyWhere(b, "a point on the ground is not allowed; use offset"));
-    if (b.joint == JointType::Revolute || b.joint == JointType::Prismatic) {
-      if (!b.axis.allFinite() || b.axis.norm() < 1e-12) throw InputError(bodyWhere(b, "joint axis is zero"));
-      b.axis.normalize();
-    }
-    if (!b.offset.allFinite() || !b.rotation.allFinite()) throw InputError(bodyWhere(b, "offset or rotation not finite"));
-    if ((b.rotation.transpose() * b.rotation - Mat3::Identity()).norm() > 1e-9)
-      throw InputError(bodyWhere(b, "rotation is not orthonormal"));
+    checkBody(m, b);
     auto place = [&](DofKind kind, int local, const std::string& default_name) {
       auto it = given.find({i, {static_cast<int>(kind), local}});
       Dof d;
@@ -360,7 +376,6 @@ void finalize(Model& m) {
       d.body = i;
       if (!std::isfinite(d.value) || !std::isfinite(d.rate)) throw InputError("DOF '" + d.name + "': value not finite");
       dofs.push_back(d);
-      return static_cast<int>(dofs.size()) - 1;
     };
     const int nj = b.joint_follows >= 0 ? 0 : jointDofCount(b.joint);
     b.joint_dof = nj > 0 ? static_cast<int>(dofs.size()) : -1;
@@ -371,11 +386,14 @@ void finalize(Model& m) {
   for (size_t k = 0; k < new_dof.size(); ++k)
     if (new_dof[k] < 0) throw InputError("DOF '" + m.dofs[k].name + "': its body has no such coordinate");
   m.dofs = std::move(dofs);
-  {
-    std::set<std::string> names;
-    for (const auto& d : m.dofs)
-      if (!names.insert(d.name).second) throw InputError("DOF '" + d.name + "': name used twice");
-  }
+  std::set<std::string> names;
+  for (const auto& d : m.dofs)
+    if (!names.insert(d.name).second) throw InputError("DOF '" + d.name + "': name used twice");
+  return new_dof;
+}
+
+/// DOF loads and springs refer to the renumbered DOFs; loads to existing points and inputs.
+void remapDofReferences(Model& m, const std::vector<int>& new_dof) {
   auto remapDof = [&](int& d, const std::string& what) {
     if (d < 0 || d >= static_cast<int>(new_dof.size())) throw InputError(what + ": no such DOF");
     d = new_dof[d];
@@ -391,11 +409,10 @@ void finalize(Model& m) {
   }
   for (const auto& l : m.dof_loads)
     if (l.input >= m.ninput()) throw InputError("DOF load: no such input");
-  finalizeInputsAndOutputs(m, new_dof);
-  finalizeAero(m, new_index, new_dof);
-  finalizeRoles(m, new_dof);
+}
 
-  // Geared joints take the coordinate of the joint they follow.
+/// Geared joints take the coordinate of the joint they follow.
+void bindGearedJoints(Model& m) {
   for (Body& b : m.bodies) {
     if (b.joint_follows < 0) continue;
     const Body& f = m.bodies[b.joint_follows];
@@ -404,6 +421,11 @@ void finalize(Model& m) {
     if (!std::isfinite(b.joint_ratio)) throw InputError(bodyWhere(b, "gear ratio is not finite"));
     b.joint_dof = f.joint_dof;
   }
+}
+
+/// Each body's chain to the ground and the coordinates that move it (its support).
+void buildChainsAndSupports(Model& m) {
+  const int nb = static_cast<int>(m.bodies.size());
   m.chains.assign(nb, {});
   m.support.assign(nb, {});
   for (int i = 0; i < nb; ++i) {
@@ -419,6 +441,23 @@ void finalize(Model& m) {
     for (int k = 0; k < jointDofCount(b.joint); ++k) s.insert(b.joint_dof + k);  // own or geared
     m.support[i].assign(s.begin(), s.end());
   }
+}
+
+}  // namespace
+
+void finalize(Model& m) {
+  requirePrintableNames(m);
+  requireUniqueBodyNames(m);
+  if (!m.gravity.allFinite()) throw InputError("gravity: not finite");
+  const std::vector<int> new_index = sortBodiesParentsFirst(m);
+  remapBodyReferences(m, new_index);
+  const std::vector<int> new_dof = numberDofs(m);
+  remapDofReferences(m, new_dof);
+  finalizeInputsAndOutputs(m, new_dof);
+  finalizeAero(m, new_index, new_dof);
+  finalizeRoles(m, new_dof);
+  bindGearedJoints(m);
+  buildChainsAndSupports(m);
 }
 
 }  // namespace whirl
