@@ -39,6 +39,37 @@ TEST(RotorModes, CyclicModesSplitByRotorSpeed) {
   }
 }
 
+// A slow pair that a held coordinate (a free yaw) carries almost alone is that coordinate's rigid-body
+// pair even when weak couplings make it oscillate and grow, as SWRT's free yaw and free generator do
+// at 188 rpm (0.0086 Hz, damping −0.26): never named after a group with a negligible share. Here a
+// held "yaw" with a tiny stiffness and negative damping, weakly coupled to a 1 Hz "tower FA 1".
+TEST(RotorModes, PairCarriedByAHeldCoordinateIsRigidBody) {
+  const double w = 2 * std::numbers::pi;  // tower at 1 Hz
+  MatX M = MatX::Identity(2, 2), C(2, 2), K(2, 2);
+  C << -0.03, 0, 0, 0.02 * w;
+  K << 3e-3, 1e-4, 1e-4, w * w;  // yaw "stiffness" from the averaged periodic terms: 0.0087 Hz
+  MatX A = MatX::Zero(4, 4);
+  A.topRightCorner(2, 2).setIdentity();
+  A.bottomLeftCorner(2, 2) = -M.inverse() * K;
+  A.bottomRightCorner(2, 2) = -M.inverse() * C;
+  RotorCoordinates c;
+  c.names = {"yaw", "tower FA 1"};
+  c.blade = {-1, -1};
+  c.azimuth = {false, false};
+  c.held = {true, false};
+  c.weights = M;
+  MbcSample s;
+  s.A = A;
+  const RotorModes r = multibladeModes(c, secondOrderLayout(3, c.blade), {s});
+  ASSERT_EQ(r.modes.size(), 2u);
+  const Mode& yaw = r.modes[0];
+  EXPECT_GT(yaw.freq_hz, 5e-3);  // above the slow-mode limit: named by its share, not its speed
+  EXPECT_LT(yaw.damping_ratio, 0);
+  EXPECT_EQ(yaw.name, "yaw (rigid body)");
+  EXPECT_TRUE(yaw.rigid_body);
+  EXPECT_EQ(r.modes[1].name, "tower FA 1");
+}
+
 TEST(RotorModes, BladeBaseNames) {
   EXPECT_EQ(bladeBaseName("blade 2 flap 1"), "flap 1");
   EXPECT_EQ(bladeBaseName("Blade 13 edge 1"), "edge 1");
