@@ -2,18 +2,16 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <map>
+#include <numbers>
 
 #include "modal/eigen.hpp"
+#include "modal/floquet.hpp"
 #include "linearize/mbc.hpp"
 
 namespace whirl {
 namespace {
-
-struct Coordinate {
-  std::string group;  ///< fixed coordinate name, or the blade shape's base name
-  MbcCoordinate kind;
-};
 
 // A mode this slow and carried by an azimuth is the rotor turning as a whole, not a vibration: the
 // multiblade average leaves it a residual frequency of order 1e-4 Hz.
@@ -27,7 +25,9 @@ constexpr double kHeldAloneShare = 0.05;
 // rigid-body mode when it is slow or does not oscillate: the yaw has no structural stiffness, and
 // what the tilt of the deflected tower and the aerodynamics add (a yaw damping) split its zero pair
 // into a near-zero root and a decay (ws03 at 3 m/s: 0.007 Hz "frequency", damping ratio 21).
-void nameRotorMode(Mode& mode, const std::vector<Coordinate>& coords, const std::vector<bool>& azimuth,
+}  // namespace
+
+void nameRotorMode(Mode& mode, const std::vector<NamingCoordinate>& coords, const std::vector<bool>& azimuth,
                    const std::vector<bool>& held, double rotor_speed) {
   std::map<std::string, double> share, rigid_share;
   double az = 0, hd = 0;
@@ -88,8 +88,6 @@ void nameRotorMode(Mode& mode, const std::vector<Coordinate>& coords, const std:
   mode.name = name;
 }
 
-}  // namespace
-
 std::string bladeBaseName(const std::string& n) {
   std::string lower = n;
   std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
@@ -133,8 +131,16 @@ RotorModes multibladeModes(const RotorCoordinates& c, const MbcLayout& layout, c
   int nb = 0;
   for (int b : c.blade) nb = std::max(nb, b + 1);
   const double rotor_speed = samples.front().rotor_speed;
-  std::vector<Coordinate> coords(n);
+  std::vector<NamingCoordinate> coords(n);
   MbcResult mbc;
+  if (nb > 0 && nb < 3 && std::abs(rotor_speed) > 0 && samples.size() >= 2) {
+    // With fewer than 3 blades the transformed system stays periodic: Floquet analysis, when the
+    // azimuths cover the revolution evenly (else the first sample, as below).
+    bool even = true;
+    for (std::size_t k = 1; k < samples.size(); ++k)
+      even = even && std::abs(samples[k].azimuth - samples[0].azimuth - 2 * std::numbers::pi * double(k) / double(samples.size())) < 1e-6;
+    if (even) return floquetModes(c, samples);
+  }
   if (nb < 3) {
     // No transform: with fewer than 3 blades the transformed system stays periodic.
     out.A = samples.front().A;

@@ -6,8 +6,10 @@
 /// named from their dominant coordinate group, cyclic blade modes as backward (BW) or forward
 /// (FW) whirl from the phase between their cosine and sine parts:
 ///   q_s / q_c = −i → the pattern turns with the rotor (FW), +i → against it (BW).
-/// Fewer than 3 blades: no multiblade transform (the transformed system stays periodic); the modes
-/// are those of the first azimuth and the names keep the blade coordinates.
+/// Fewer than 3 blades: no multiblade transform (the transformed system stays periodic). A turning
+/// rotor sampled evenly over the revolution is analysed by Floquet (modal/floquet.hpp); otherwise
+/// (parked, or uneven azimuths) the modes are those of the first azimuth and the names keep the
+/// blade coordinates.
 #include <string>
 #include <vector>
 
@@ -41,6 +43,18 @@ struct RotorCoordinates {
 /// first-order states, as `layout` says): multiblade average when ≥ 3 blades, else the first sample.
 RotorModes multibladeModes(const RotorCoordinates& coords, const MbcLayout& layout,
                            const std::vector<MbcSample>& samples);
+
+/// A mode-shape coordinate for naming: its group (a fixed coordinate's name, or a blade shape's base
+/// name) and what it is of that group (fixed, collective, cos, sin, …).
+struct NamingCoordinate {
+  std::string group;
+  MbcCoordinate kind;
+};
+
+/// Names `mode` from the group with the largest energy share (see rotor_modes.cpp); azimuth and held
+/// flag rigid-body coordinates (dim of coords).
+void nameRotorMode(Mode& mode, const std::vector<NamingCoordinate>& coords, const std::vector<bool>& azimuth,
+                   const std::vector<bool>& held, double rotor_speed);
 
 /// "blade 2 flap 1" → "flap 1": drops a leading "blade <k> " from a blade coordinate's name.
 std::string bladeBaseName(const std::string& dof_name);

@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "linearize/periodic.hpp"
+#include "modal/floquet.hpp"
 #include "modal/rotor_modes.hpp"
 #include "tests/support/rotor_model.hpp"
 
@@ -68,6 +69,84 @@ TEST(RotorModes, PairCarriedByAHeldCoordinateIsRigidBody) {
   EXPECT_EQ(yaw.name, "yaw (rigid body)");
   EXPECT_TRUE(yaw.rigid_body);
   EXPECT_EQ(r.modes[1].name, "tower FA 1");
+}
+
+std::vector<MbcSample> samplesOf(const PeriodicLinearization& p) {
+  std::vector<MbcSample> out;
+  for (std::size_t k = 0; k < p.models.size(); ++k) {
+    MbcSample s;
+    s.azimuth = p.azimuths[k];
+    s.rotor_speed = p.rotor_speed;
+    s.A = p.models[k].A;
+    out.push_back(s);
+  }
+  return out;
+}
+
+RotorCoordinates coordinatesOf(const Model& m, const PeriodicLinearization& p) {
+  RotorCoordinates c;
+  const LinearModel& l = p.models.front();
+  c.names = l.dof_names;
+  for (int d : l.dofs) {
+    c.blade.push_back(m.dofs[d].blade);
+    c.azimuth.push_back(m.dofs[d].rotating);
+    c.held.push_back(false);
+  }
+  c.weights = l.M.diagonal().asDiagonal();
+  return c;
+}
+
+// Floquet analysis of an isotropic 3-bladed rotor (time-invariant after the multiblade transform)
+// gives the multiblade modes: the equal multipliers of each collective/BW/FW triple are split by
+// harmonic, each mode's frequency is the fixed-frame one. Tolerance: the Magnus integration over 8
+// steps per azimuth interval (measured 1e-12 here: A is constant in blade coordinates).
+TEST(Floquet, IsotropicThreeBladedRotorEqualsMultiblade) {
+  const Model m = test::rotorModel(12);
+  PeriodicOptions opt;
+  opt.azimuths = 8;
+  const PeriodicLinearization p = linearizePeriodic(m, initialPoint(m), opt);
+  const RotorModes mbc = rotorModes(m, p);
+  const RotorModes fl = floquetModes(coordinatesOf(m, p), samplesOf(p));
+  ASSERT_EQ(fl.modes.size(), mbc.modes.size());
+  for (std::size_t k = 0; k < mbc.modes.size(); ++k) {
+    EXPECT_NEAR(fl.modes[k].freq_hz, mbc.modes[k].freq_hz, 1e-8 * mbc.modes[k].freq_hz) << mbc.modes[k].name;
+    EXPECT_NEAR(fl.modes[k].damping_ratio, mbc.modes[k].damping_ratio, 1e-8) << mbc.modes[k].name;
+    EXPECT_EQ(fl.modes[k].name, mbc.modes[k].name);
+  }
+}
+
+// Two blades on a rigid hub: no multiblade transform applies, rotorModes takes Floquet. Each blade
+// vibrates at its rotating-frame frequency; the collective pattern is seen at that frequency in the
+// fixed frame, the differential (cyclic) one at the rotating-frame frequency ± Ω. Parked, the modes
+// are the plain eigenanalysis of the first azimuth.
+TEST(Floquet, TwoBladedRotorTurningAndParked) {
+  const double rpm = 12, f_rotor = rpm / 60;
+  const Model m = test::rotorModel(rpm, 2);
+  PeriodicOptions opt;
+  opt.azimuths = 8;
+  const PeriodicLinearization p = linearizePeriodic(m, initialPoint(m), opt);
+  const RotorModes r = rotorModes(m, p);
+  const LinearModel& l = p.models[0];
+  const auto single = computeModes(l.M.topLeftCorner(2, 2), l.C.topLeftCorner(2, 2), l.K.topLeftCorner(2, 2),
+                                   {"flap 1", "edge 1"});
+  ASSERT_EQ(r.modes.size(), 4u);
+  for (const auto& s : single) {
+    EXPECT_NEAR(byName(r, s.name + " collective").freq_hz, s.freq_hz, 1e-8 * s.freq_hz) << s.name;
+    int cyclic = 0;
+    for (const Mode& md : r.modes)
+      if (md.name == s.name + " BW" || md.name == s.name + " FW") {
+        ++cyclic;
+        EXPECT_NEAR(std::abs(md.freq_hz - s.freq_hz), f_rotor, 1e-8 * s.freq_hz) << md.name;
+      }
+    EXPECT_EQ(cyclic, 1) << s.name;
+  }
+  const Model parked = test::rotorModel(0, 2);
+  const PeriodicLinearization pp = linearizePeriodic(parked, initialPoint(parked), opt);
+  const RotorModes rp = rotorModes(parked, pp);
+  const LinearModel& lp = pp.models[0];
+  const auto plain = computeModes(lp.M, lp.C, lp.K, lp.dof_names);
+  ASSERT_EQ(rp.modes.size(), plain.size());
+  for (std::size_t k = 0; k < plain.size(); ++k) EXPECT_NEAR(rp.modes[k].freq_hz, plain[k].freq_hz, 1e-12);
 }
 
 TEST(RotorModes, BladeBaseNames) {
