@@ -63,17 +63,20 @@ NonlinearCheck checkAgainstLinear(const Model& m, const OperatingPoint& eq, cons
       }
     }
     out.levels.push_back(l);
-    if (level == 0) {
-      for (int i : perturbed) {
-        std::vector<double> s(sim.time.size());
-        for (size_t k = 0; k < s.size(); ++k) s[k] = sim.q(static_cast<Eigen::Index>(k), i);
-        out.identified_dofs.push_back(m.dofs[i].name);
-        try {
-          out.identified.push_back(identifyDecay(sim.time, s, eq.q(i)));
-        } catch (const ComputeError&) {  // no oscillation along it (overdamped, or too short): NaN
-          out.identified.push_back({NAN, NAN, NAN, 0});
-        }
-      }
+  }
+  // Identification: one decay per coordinate, perturbed alone by the largest amplitude (two modes of
+  // close frequency excited together exchange energy and bias the logarithmic decrement).
+  for (int i : perturbed) {
+    OperatingPoint start = eq;
+    start.q(i) += opt.amplitude;
+    const Simulation sim = simulate(m, start, so);
+    std::vector<double> s(sim.time.size());
+    for (size_t k = 0; k < s.size(); ++k) s[k] = sim.q(static_cast<Eigen::Index>(k), i);
+    out.identified_dofs.push_back(m.dofs[i].name);
+    try {
+      out.identified.push_back(identifyDecay(sim.time, s, eq.q(i)));
+    } catch (const ComputeError&) {  // no oscillation along it (overdamped, or too short): NaN
+      out.identified.push_back({NAN, NAN, NAN, 0});
     }
   }
   for (size_t k = 1; k < out.levels.size(); ++k)

@@ -5,8 +5,8 @@
 /// linear response x(t) = exp(A t) x0 of the model linearize exports there. The difference is of
 /// order ε² (the first neglected terms of the Taylor expansion), so halving ε divides it by 4: the
 /// observed order log2(err(ε)/err(ε/2)) ≈ 2 confirms that the exported A is the nonlinear system's
-/// Jacobian. The frequency and damping identified from the largest decay (identifyDecay) are set next
-/// to the eigenvalues.
+/// Jacobian. The frequency and damping identified (identifyDecay) from a decay of each coordinate
+/// perturbed alone by ε are set next to the eigenvalues.
 ///
 /// Only for time-invariant linear models: no rotor, or a rotor without blades (an axisymmetric rigid
 /// rotor, turning freely at its rate); a bladed rotor's model is periodic (linearizePeriodic).
@@ -39,7 +39,7 @@ struct NonlinearCheck {
   std::vector<NonlinearCheckLevel> levels;
   std::vector<Mode> modes;                 ///< of the linear model at the equilibrium
   std::vector<std::string> identified_dofs;
-  std::vector<IdentifiedDecay> identified;  ///< per perturbed coordinate, from the largest amplitude
+  std::vector<IdentifiedDecay> identified;  ///< per perturbed coordinate, perturbed alone by the amplitude
   /// Observed order of the difference between consecutive levels (≈ 2), one fewer than levels.
   std::vector<double> orders;
 };

@@ -39,7 +39,7 @@ void run(const VerifyOptions& opt) {
   for (size_t k = 0; k < c.levels.size(); ++k) {
     const NonlinearCheckLevel& l = c.levels[k];
     if (k == 0)
-      std::printf("  %-12.6g %-16.6g %-16.6g\n", l.amplitude, l.max_difference, l.max_response);
+      std::printf("  %-12.6g %-16.6g %.6g\n", l.amplitude, l.max_difference, l.max_response);
     else
       std::printf("  %-12.6g %-16.6g %-16.6g %.3f\n", l.amplitude, l.max_difference, l.max_response, c.orders[k - 1]);
   }

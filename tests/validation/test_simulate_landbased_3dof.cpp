@@ -10,13 +10,14 @@
 #include "linearize/simulate.hpp"
 #include "modal/decay_identification.hpp"
 #include "modal/modes.hpp"
+#include "modal/nonlinear_check.hpp"
 #include "src/model/error.hpp"
 #include "tests/support/reference.hpp"
 
 namespace whirl {
 namespace {
 
-TEST(SimulateLandbased3DofSlow, FreeDecayFrequenciesMatchEigenvalues) {
+TEST(SimulateLandbased3Dof, FreeDecayFrequenciesMatchEigenvalues) {
   const Model m = test::loadCase("landbased_3dof");
   OperatingCondition c;
   c.rotor_speed = 5 * std::numbers::pi / 30;  // 5 rpm [BranlardGeisler2022, §4.5]
@@ -45,7 +46,35 @@ TEST(SimulateLandbased3DofSlow, FreeDecayFrequenciesMatchEigenvalues) {
     std::printf("%s: identified %.6f Hz (damped) %.5f damping, eigenvalue %.6f Hz %.5f\n", name, d.damped_freq_hz,
                 d.damping_ratio, mode->damped_freq_hz, mode->damping_ratio);
     EXPECT_NEAR(d.damped_freq_hz, mode->damped_freq_hz, 1e-3 * mode->damped_freq_hz) << name;  // 0.1 %
-    EXPECT_NEAR(d.damping_ratio, mode->damping_ratio, 0.05 * mode->damping_ratio) << name;
+    // Not the damping: the two tower modes (0.327, 0.323 Hz) excited together exchange energy through
+    // the gyroscopic coupling, which biases each coordinate's logarithmic decrement (by ~10 %); the
+    // check below perturbs one coordinate at a time.
+  }
+}
+
+// `verify` (modal/nonlinear_check.hpp): the nonlinear decay minus the exported linear model's falls as
+// ε² — the order observed between ε = 0.01, 0.005, 0.0025 m is 2 — and the frequency and damping
+// identified from each coordinate's decay alone equal the eigenvalues' (to the identification's
+// accuracy over 30 s sampled at 100 Hz: 1e-4 in frequency, 1 % in damping).
+TEST(SimulateLandbased3Dof, LinearModelIsTheJacobianOfTheNonlinearOne) {
+  const Model m = test::loadCase("landbased_3dof");
+  OperatingCondition c;
+  c.rotor_speed = 5 * std::numbers::pi / 30;
+  const OperatingPoint eq = solveOperatingPoint(m, c);
+  NonlinearCheckOptions o;
+  o.t_end = 30;
+  const NonlinearCheck r = checkAgainstLinear(m, eq, o);
+  ASSERT_EQ(r.orders.size(), 2u);
+  for (double p : r.orders) EXPECT_NEAR(p, 2.0, 0.05);
+  EXPECT_LT(r.levels[0].max_difference, 1e-5 * r.levels[0].max_response);
+  ASSERT_EQ(r.identified_dofs, (std::vector<std::string>{"tower FA 1", "tower SS 1"}));
+  for (size_t k = 0; k < 2; ++k) {
+    const Mode* mode = nullptr;
+    for (const Mode& md : r.modes)
+      if (md.name == r.identified_dofs[k]) mode = &md;
+    ASSERT_NE(mode, nullptr);
+    EXPECT_NEAR(r.identified[k].damped_freq_hz, mode->damped_freq_hz, 1e-4 * mode->damped_freq_hz);
+    EXPECT_NEAR(r.identified[k].damping_ratio, mode->damping_ratio, 0.01 * mode->damping_ratio);
   }
 }
 
