@@ -76,6 +76,12 @@ struct Problem {
         qdd(d.dof) += d.gain * v.acceleration;
       }
     }
+    for (const DrivenDof& d : opt.driven) {
+      const SignalValue v = evaluateSignal(d.signal, 0.0, t);
+      q(d.dof) = start.q(d.dof) + v.value - evaluateSignal(d.signal, 0.0, 0.0).value;
+      qd(d.dof) = v.rate;
+      qdd(d.dof) = v.acceleration;
+    }
   }
 
   void load(double t, const double* y, const double* yp) {
@@ -197,9 +203,17 @@ Simulation simulate(const Model& m, const OperatingPoint& start, const Simulatio
     throw InputError("simulate: the start point does not match the model's coordinates and inputs");
   for (const InputSignal& in : opt.inputs)
     if (in.input < 0 || in.input >= m.ninput()) throw InputError("simulate: input signal: no such input");
+  const std::vector<int> active = m.activeDofs();
+  for (const DrivenDof& d : opt.driven)
+    if (std::find(active.begin(), active.end(), d.dof) == active.end())
+      throw InputError("simulate: driven coordinate: not an active coordinate of the model");
   Problem p(m, start, opt);
-  for (int i : m.activeDofs())
-    if (std::find(opt.prescribed.begin(), opt.prescribed.end(), i) == opt.prescribed.end()) p.states.push_back(i);
+  auto held = [&](int i) {
+    return std::find(opt.prescribed.begin(), opt.prescribed.end(), i) != opt.prescribed.end() ||
+           std::any_of(opt.driven.begin(), opt.driven.end(), [i](const DrivenDof& d) { return d.dof == i; });
+  };
+  for (int i : active)
+    if (!held(i)) p.states.push_back(i);
   const int ns = p.n();
 
   Simulation sim;
@@ -230,6 +244,9 @@ Simulation simulate(const Model& m, const OperatingPoint& start, const Simulatio
   std::vector<double> stops;
   for (const InputSignal& in : opt.inputs)
     for (double b : signalBreakpoints(in.signal))
+      if (b > 0 && b < opt.t_end) stops.push_back(b);
+  for (const DrivenDof& d : opt.driven)
+    for (double b : signalBreakpoints(d.signal))
       if (b > 0 && b < opt.t_end) stops.push_back(b);
   stops.push_back(opt.t_end);
   std::sort(stops.begin(), stops.end());

@@ -12,7 +12,8 @@
 /// matrix assembly (linearize/linearize.hpp): no finite differences.
 ///
 /// Rheonomic coordinates — frozen ones (moving at their rate), the rotating ones of a driven rotor,
-/// those an input drives (q = value + gain u(t), e.g. a pitch history) — are known functions of time
+/// those on a prescribed motion (DrivenDof), those an input drives (q = value + gain u(t), e.g. a
+/// pitch history) — are known functions of time
 /// with their rates and accelerations; their rows of e are not equations of the simulation.
 /// With aerodynamics, the induction is re-solved at every evaluation (quasi-steady BEM,
 /// src/dynamics/aero_loads.hpp): no dynamic inflow.
@@ -31,6 +32,13 @@ struct InputSignal {
   TimeSignal signal;
 };
 
+/// A coordinate following a function of time from its start value: q = q0 + s(t) − s(0), with the
+/// signal's rate and acceleration (rheonomic: e.g. Kane's imposed rotation, spinup(15, 6)).
+struct DrivenDof {
+  int dof = -1;
+  TimeSignal signal;
+};
+
 struct SimulationOptions {
   double t_end = 10;      ///< [s], > 0
   double dt_out = 0.01;   ///< interval of the recorded instants [s], > 0
@@ -40,6 +48,7 @@ struct SimulationOptions {
   /// coordinates). Not states.
   std::vector<int> prescribed;
   std::vector<InputSignal> inputs;
+  std::vector<DrivenDof> driven;  ///< active coordinates on a prescribed motion; not states
   long max_steps = 200000;  ///< IDA steps between two recorded instants; more is a ComputeError (never hangs)
   /// Called after each recorded instant with (t, t_end).
   std::function<void(double, double)> progress;

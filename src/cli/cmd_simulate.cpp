@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <memory>
@@ -23,7 +24,7 @@ namespace {
 struct SimulateOptions {
   ModelOptions model;
   double tmax = 0, dt_out = 0.01, rtol = 1e-6, atol = 1e-8;
-  std::vector<std::string> init, inputs;
+  std::vector<std::string> init, inputs, drives;
   bool free_rotor = false, equilibrium = false, no_plot = false;
   std::string out, plot;
 };
@@ -84,6 +85,13 @@ void run(const SimulateOptions& opt) {
     }
     so.inputs.push_back({*i, parseTimeSignal(signal, "--input " + name)});
   }
+  for (const std::string& s : opt.drives) {
+    const auto [name, signal] = splitAssignment(s, "--drive");
+    const auto i = m.findDof(name);
+    if (!i || m.dofs[*i].frozen) throw InputError("--drive: '" + name + "': no such active coordinate");
+    so.driven.push_back({*i, parseTimeSignal(signal, "--drive " + name)});
+    so.prescribed.erase(std::remove(so.prescribed.begin(), so.prescribed.end(), *i), so.prescribed.end());
+  }
   TimeseriesPlotOptions po;
   po.channels = splitList(opt.plot);
   po.render = !opt.no_plot;
@@ -130,6 +138,9 @@ void addSimulateCommand(CLI::App& app) {
   cmd->add_option("--input", opt->inputs,
                   "input history 'NAME=step(t0,a)', 'ramp(t0,t1,a)', 'sin(A,f)' (added to the input's value) or "
                   "'NAME=file.csv' (columns time, value); repeatable");
+  cmd->add_option("--drive", opt->drives,
+                  "prescribed motion of a coordinate from its start value, 'DOF=spinup(T,w)' (Kane's spin-up: "
+                  "acceleration (w/T)(1 - cos 2 pi t/T), then rate w) or any --input signal; repeatable");
   cmd->add_flag("--free-rotor", opt->free_rotor,
                 "the rotor azimuth is a state (starting at --rpm); otherwise the rotor turns at the constant --rpm");
   cmd->add_flag("--equilibrium", opt->equilibrium,

@@ -56,7 +56,7 @@ std::pair<std::string, std::string> splitAssignment(const std::string& text, con
 
 TimeSignal parseTimeSignal(const std::string& raw, const std::string& key) {
   const std::string text = trim(raw);
-  if (text.empty()) throw InputError(where("", 0, key, "empty signal: expected step(t0,a), ramp(t0,t1,a), sin(A,f) or a CSV file"));
+  if (text.empty()) throw InputError(where("", 0, key, "empty signal: expected step(t0,a), ramp(t0,t1,a), sin(A,f), spinup(T,w) or a CSV file"));
   TimeSignal s;
   s.source = text;
   if (parseCall(text, "step", 2, key, s.parameters)) {
@@ -74,8 +74,13 @@ TimeSignal parseTimeSignal(const std::string& raw, const std::string& key) {
     if (s.parameters[1] < 0) throw InputError(where("", 0, key, "'" + text + "': the frequency must be ≥ 0"));
     return s;
   }
+  if (parseCall(text, "spinup", 2, key, s.parameters)) {
+    s.kind = TimeSignal::Kind::Spinup;
+    if (!(s.parameters[0] > 0)) throw InputError(where("", 0, key, "'" + text + "': the spin-up time T must be > 0"));
+    return s;
+  }
   if (text.find('(') != std::string::npos)
-    throw InputError(where("", 0, key, "'" + text + "': unknown signal; expected step(t0,a), ramp(t0,t1,a), sin(A,f) or a CSV file"));
+    throw InputError(where("", 0, key, "'" + text + "': unknown signal; expected step(t0,a), ramp(t0,t1,a), sin(A,f), spinup(T,w) or a CSV file"));
   const CsvTable table = readCsv(text);
   if (table.names.size() < 2) throw InputError(where(text, table.header_line, "", "expected the columns time and value"));
   s.kind = TimeSignal::Kind::Table;

@@ -21,6 +21,13 @@ SignalValue evaluateSignal(const TimeSignal& s, double base, double t) {
       const double w = 2 * std::numbers::pi * p[1];
       return {base + p[0] * std::sin(w * t), p[0] * w * std::cos(w * t), -p[0] * w * w * std::sin(w * t)};
     }
+    case TimeSignal::Kind::Spinup: {
+      const double T = p[0], w = p[1], k = 2 * std::numbers::pi / T;
+      if (t <= 0) return {base, 0, 0};
+      if (t >= T) return {base + w * T / 2 + w * (t - T), w, 0};  // θ(T) = w T/2
+      return {base + (w / T) * (t * t / 2 + (std::cos(k * t) - 1) / (k * k)), (w / T) * (t - std::sin(k * t) / k),
+              (w / T) * (1 - std::cos(k * t))};
+    }
     case TimeSignal::Kind::Table: {
       const std::vector<double>& x = s.time;
       if (t < x.front()) return {s.values.front(), 0, 0};
@@ -41,6 +48,8 @@ std::vector<double> signalBreakpoints(const TimeSignal& s) {
       return {s.parameters[0], s.parameters[1]};
     case TimeSignal::Kind::Sine:
       return {};
+    case TimeSignal::Kind::Spinup:
+      return {s.parameters[0]};  // the jerk jumps at the end of the spin-up
     case TimeSignal::Kind::Table:
       return s.time;
   }

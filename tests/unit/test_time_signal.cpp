@@ -45,6 +45,24 @@ TEST(TimeSignal, StepRampSineAddToTheBase) {
   EXPECT_TRUE(signalBreakpoints(sine).empty());
 }
 
+TEST(TimeSignal, SpinupIsKanesDriver) {
+  // [Branlard2019, §5.2]: θ̈ = (2/5)(1 − cos(πt/7.5)) for 15 s, then 6 rad/s.
+  const TimeSignal s = parseTimeSignal("spinup(15, 6)", "k");
+  const double t = 4.2;
+  EXPECT_NEAR(evaluateSignal(s, 0, t).acceleration, 0.4 * (1 - std::cos(std::numbers::pi * t / 7.5)), 1e-15);
+  EXPECT_DOUBLE_EQ(evaluateSignal(s, 0, 15).rate, 6);
+  EXPECT_DOUBLE_EQ(evaluateSignal(s, 0, 15).value, 45);  // ∫ θ̇ = w T/2
+  EXPECT_NEAR(evaluateSignal(s, 0, 15 - 1e-9).value, 45, 1e-8);
+  EXPECT_DOUBLE_EQ(evaluateSignal(s, 1, 17).value, 1 + 45 + 12);
+  EXPECT_EQ(evaluateSignal(s, 0, 17).acceleration, 0);
+  // θ̇ is the integral of θ̈ (midpoint rule over [0, t]).
+  double v = 0;
+  const int n = 4000;
+  for (int k = 0; k < n; ++k) v += evaluateSignal(s, 0, (k + 0.5) * t / n).acceleration * t / n;
+  EXPECT_NEAR(evaluateSignal(s, 0, t).rate, v, 1e-6);
+  EXPECT_THAT(errorOf("spinup(0,6)"), HasSubstr("spin-up time T must be > 0"));
+}
+
 TEST(TimeSignal, TableIsInterpolatedAndHeldAtItsEnds) {
   const auto path = std::filesystem::temp_directory_path() / "whirl_signal_table.csv";
   std::ofstream(path) << "time_s,pitch_rad\n0,0\n2,1\n4,1\n";
