@@ -8,8 +8,12 @@
 // agrees to a few per cent (printed).
 #include <gtest/gtest.h>
 
+#include <numbers>
+
 #include "linearize/simulate.hpp"
+#include "modal/modes.hpp"
 #include "src/io/case_file.hpp"
+#include "tests/support/reference.hpp"
 
 namespace whirl {
 namespace {
@@ -53,6 +57,13 @@ TEST(SimulateKaneBeam, BoundedWithGeometricStiffnessDivergentWithout) {
   EXPECT_NEAR(min1, min3, 0.05 * std::abs(min3));
   const Simulation soft = spinUp({"bodies.beam.axial_shortening=false"}, m);
   EXPECT_GT(std::abs(tip(m, soft).second), 100.0);  // diverged
+}
+
+// The shapes are the exact clamped-free modes: the hub held, the first frequency is the beam's.
+TEST(SimulateKaneBeam, ClampedFrequencyIsExact) {
+  const LinearModel l = test::linearizeAtEquilibrium(test::loadCase("kane_beam", {"dofs.theta.frozen=true"}));
+  const std::vector<Mode> modes = computeModes(l.M, l.C, l.K, l.dof_names);
+  test::expectMatchesReference("kane_beam", {{"omega_1", 2 * std::numbers::pi * modes.at(0).freq_hz}});
 }
 
 }  // namespace
