@@ -76,5 +76,33 @@ TEST(CliSimulate, FailingIntegrationNamesTheTime) {
                                "simulate: t = ");
 }
 
+TEST(CliSimulate, DrivenSpinUp) {
+  const auto dir = test::freshDir("simulate_kane");
+  const auto r = test::whirl("simulate cases/kane_beam/kane_beam.yaml --tmax 15 --dt-out 5 --drive 'theta=spinup(15,6)' "
+                             "--no-plot --out '" + dir.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("6 states"));  // 3 shapes; the hub is driven
+  EXPECT_THAT(test::slurp(dir / "timeseries.csv"), HasSubstr("\n15,45,6,"));  // θ(15) = 45 rad, θ̇ = 6 rad/s
+}
+
+TEST(CliSimulate, UnknownDrivenCoordinate) {
+  expectErrorAndNothingWritten("cases/kane_beam/kane_beam.yaml --tmax 1 --drive 'phi=spinup(15,6)'",
+                               "--drive: 'phi': no such active coordinate");
+}
+
+TEST(CliVerify, OrderTwoAndIdentifiedFrequencies) {
+  const auto r = test::whirl(std::string("verify ") + kCase + " --rpm 5 --tmax 20 --levels 2");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("0.005        "));
+  EXPECT_THAT(r.out, ::testing::ContainsRegex(" (1\\.9[5-9]|2\\.0[0-5])[0-9]\n"));  // the observed order ≈ 2
+  EXPECT_THAT(r.out, HasSubstr("tower FA 1               0.3271"));
+}
+
+TEST(CliVerify, BladedRotorIsRefused) {
+  const auto r = test::whirl("verify cases/nrel5mw/Main_Onshore.fst");
+  EXPECT_NE(r.code, 0);
+  EXPECT_THAT(r.err, HasSubstr("bladed rotor, whose linear model is periodic"));
+}
+
 }  // namespace
 }  // namespace whirl
