@@ -1,6 +1,6 @@
 // `whirl verify`: the linear model at the equilibrium against the nonlinear equations — free decays
 // of amplitude ε, ε/2, ε/4 (modal/nonlinear_check.hpp) — printing the differences, their observed
-// order (2 when the exported A is the nonlinear system's Jacobian) and the frequencies and damping
+// order (at least 2 when the exported A is the nonlinear system's Jacobian) and the frequencies and damping
 // identified from the decay next to the eigenvalues.
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -71,7 +71,7 @@ void addVerifyCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "verify",
       "check the linear model against the nonlinear equations: free decays of amplitude e, e/2, e/4 from the "
-      "equilibrium (simulate) against exp(A t) x0; prints the differences, their order (2 expected) and the "
+      "equilibrium (simulate) against exp(A t) x0; prints the differences, their order (at least 2 expected) and the "
       "identified frequencies next to the eigenvalues");
   addModelOptions(*cmd, opt->model, true);
   cmd->add_option("--dof", opt->dofs, "coordinate perturbed (repeatable; default: every non-rotating active one)");
