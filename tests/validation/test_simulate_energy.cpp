@@ -66,16 +66,16 @@ TEST(SimulateEnergySlow, Nrel5mwFreeRotor) {
   for (int i : m.activeDofs())
     if (m.dofs[i].kind == DofKind::Elastic) start.q(i) = 0.05;  // every elastic coordinate displaced
   SimulationOptions o;
-  // Not the 100 periods of the lowest mode (the yaw on its spring, 2300 s): 60 s, 19
-  // periods of tower 1. Undamped, this run stops integrating (IDA_TOO_MUCH_WORK) between 80 and
-  // 100 s — open (measured drift over 60 s: 3.0e-8).
-  o.t_end = 60;
+  // 100 periods of tower 1 (0.32 Hz), the lowest structural mode (the yaw on its weak spring, 2300 s,
+  // excepted). Measured drift 5.2e-7 at rtol 4e-10; 1.1e-6 at 1e-9; at 1e-10 IDA runs out of steps
+  // near 98 s (IDA_TOO_MUCH_WORK; not investigated — rounding of loads of 1e9 N is a suspect).
+  o.t_end = 100 / 0.32;
   o.dt_out = 0.25;
-  o.rtol = 1e-10;
-  o.atol = 1e-12;
+  o.rtol = 4e-10;
+  o.atol = 4e-12;
   const Simulation sim = simulate(m, start, o);
   EXPECT_EQ(sim.states.size(), m.activeDofs().size());
-  std::printf("NREL 5MW energy drift over %.0f s: %.3e\n", o.t_end, energyDrift(m, sim));
+  std::printf("NREL 5MW energy drift over %.0f s: %.3e (%ld steps)\n", o.t_end, energyDrift(m, sim), sim.steps);
   EXPECT_LT(energyDrift(m, sim), 1e-6);
 }
 
