@@ -67,7 +67,10 @@ void run(const SimulateOptions& opt) {
   const Model m = loadModel(opt.model);
   requireActiveDof(m, m.name);
   OperatingPoint start = startPoint(m, opt.model);
-  if (opt.equilibrium) start = solveOperatingPoint(m, start);
+  if (opt.equilibrium) {
+    start = solveOperatingPoint(m, start);
+    checkSolvedPoints(opt.model, m, {start});
+  }
   for (const std::string& s : opt.init) applyInit(m, start, s);
   SimulationOptions so;
   so.t_end = opt.tmax;
