@@ -10,6 +10,7 @@
 #include <memory>
 #include <cstdio>
 
+#include "linearize/point_validity.hpp"
 #include "linearize/simulate.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/common.hpp"
@@ -112,6 +113,18 @@ void run(const SimulateOptions& opt) {
   const Simulation sim = simulate(m, start, so);
   const double seconds = wall();
   if (shown > 0) std::fprintf(stderr, "\n");
+  // The first recorded instant outside the model's range of validity (deflections, slopes:
+  // linearize/point_validity.hpp) is a warning: a diverging motion (Kane's beam without geometric
+  // stiffness) is a legitimate result, but not a turbine state.
+  for (size_t k = 0; k < sim.time.size(); ++k) {
+    OperatingPoint at;  // no solved coordinates: only the geometry is checked
+    at.q = sim.q.row(static_cast<Eigen::Index>(k)).transpose();
+    const std::vector<std::string> problems = checkPointValidity(m, at);
+    if (problems.empty()) continue;
+    std::fprintf(stderr, "whirl: warning: %s: t = %g s: the motion leaves the model's range of validity: %s\n",
+                 opt.model.case_path.c_str(), sim.time[k], problems.front().c_str());
+    break;
+  }
   // Only now the output folder: a failed simulation writes nothing.
   const std::string dir = opt.out.empty() ? defaultOutputFolder(opt.model.case_path) : opt.out;
   prepareOutputFolder(dir);

@@ -85,6 +85,18 @@ TEST(CliSimulate, DrivenSpinUp) {
   EXPECT_THAT(test::slurp(dir / "timeseries.csv"), HasSubstr("\n15,45,6,"));  // θ(15) = 45 rad, θ̇ = 6 rad/s
 }
 
+TEST(CliSimulate, DivergingMotionIsAWarning) {
+  // Kane's beam without geometric stiffness diverges (tests/validation/test_simulate_kane_beam.cpp):
+  // written, with one warning naming the first instant outside the range of validity.
+  const auto dir = test::freshDir("simulate_diverge");
+  const auto r = test::whirl("simulate cases/kane_beam/kane_beam.yaml --set bodies.beam.axial_shortening=false "
+                             "--tmax 20 --dt-out 0.5 --drive 'theta=spinup(15,6)' --no-plot --out '" + dir.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_THAT(r.err, HasSubstr("whirl: warning: cases/kane_beam/kane_beam.yaml: t = "));
+  EXPECT_THAT(r.err, HasSubstr("the motion leaves the model's range of validity: beam: "));
+  EXPECT_TRUE(fs::exists(dir / "timeseries.csv"));
+}
+
 TEST(CliSimulate, UnknownDrivenCoordinate) {
   expectErrorAndNothingWritten("cases/kane_beam/kane_beam.yaml --tmax 1 --drive 'phi=spinup(15,6)'",
                                "--drive: 'phi': no such active coordinate");
