@@ -8,6 +8,7 @@ packages=(
   libpetsc-real-dev libslepc-real-dev libopenmpi-dev openmpi-bin
   gnuplot-nox libyaml-cpp-dev libcli11-dev libfmt-dev libmatio-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  libsundials-dev  # IDA, the time integrator of whirl simulate
   python3-scipy  # the .mat export test loads the file with scipy.io.loadmat (skipped without it)
   "$@"
 )

@@ -16,4 +16,6 @@ void addStudyCommand(CLI::App& app);
 void addShapesCommand(CLI::App& app);
 void addSteadyCommand(CLI::App& app);
 void addBodeCommand(CLI::App& app);
+void addSimulateCommand(CLI::App& app);
+void addVerifyCommand(CLI::App& app);
 }  // namespace whirl::cli

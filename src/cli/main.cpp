@@ -53,6 +53,8 @@ int main(int argc, char** argv) {
   whirl::cli::addShapesCommand(app);
   whirl::cli::addSteadyCommand(app);
   whirl::cli::addBodeCommand(app);
+  whirl::cli::addSimulateCommand(app);
+  whirl::cli::addVerifyCommand(app);
   std::vector<char*> cargv;
   for (auto& a : args) cargv.push_back(a.data());
   cargv.push_back(nullptr);

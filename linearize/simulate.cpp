@@ -1,0 +1,316 @@
+#include "linearize/simulate.hpp"
+
+#include <fmt/format.h>
+#include <ida/ida.h>
+#include <nvector/nvector_serial.h>
+#include <sundials/sundials_context.h>
+#include <sunlinsol/sunlinsol_dense.h>
+#include <sunmatrix/sunmatrix_dense.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <exception>
+#include <memory>
+#include <string>
+
+#include "linearize/jacobian.hpp"
+#include "src/dynamics/mass_matrix.hpp"
+#include "src/dynamics/outputs.hpp"
+#include "src/dynamics/residual.hpp"
+#include "src/model/error.hpp"
+
+namespace whirl {
+namespace {
+
+// The SUNDIALS objects of one run, released in reverse order of creation.
+struct IdaHandles {
+  SUNContext ctx = nullptr;
+  N_Vector y = nullptr, yp = nullptr;
+  SUNMatrix A = nullptr;
+  SUNLinearSolver ls = nullptr;
+  void* mem = nullptr;
+  ~IdaHandles() {
+    if (mem) IDAFree(&mem);
+    if (ls) SUNLinSolFree(ls);
+    if (A) SUNMatDestroy(A);
+    if (yp) N_VDestroy(yp);
+    if (y) N_VDestroy(y);
+    if (ctx) SUNContext_Free(&ctx);
+  }
+};
+
+// What the IDA callbacks see: the model, the time functions of the prescribed coordinates and
+// inputs, and the buffers of one evaluation.
+struct Problem {
+  const Model& m;
+  const OperatingPoint& start;
+  const SimulationOptions& opt;
+  std::vector<int> states;  // coordinates integrated
+  Workspace<double> ws;
+  JacobianWorkspace jw;
+  VecX q, qd, qdd, u, e;
+  MatX Mfull;
+  std::string ida_message;       // the last message IDA reported
+  std::exception_ptr error;      // an exception thrown inside a callback, rethrown after IDASolve
+  long jacobians = 0;
+
+  Problem(const Model& model, const OperatingPoint& s, const SimulationOptions& o)
+      : m(model), start(s), opt(o), ws(model), jw(model), e(VecX::Zero(model.ndof())) {}
+
+  int n() const { return static_cast<int>(states.size()); }
+
+  // Every coordinate, rate and input at time t; the states' entries are then overwritten from y.
+  void prescribe(double t) {
+    q = start.q + start.qd * t;
+    qd = start.qd;
+    qdd.setZero(m.ndof());
+    u = start.u;
+    for (const InputSignal& in : opt.inputs) {
+      const SignalValue v = evaluateSignal(in.signal, start.u(in.input), t);
+      const double du = v.value - start.u(in.input);
+      u(in.input) = v.value;
+      for (const InputDofTarget& d : m.inputs[in.input].dofs) {
+        q(d.dof) += d.gain * du;
+        qd(d.dof) += d.gain * v.rate;
+        qdd(d.dof) += d.gain * v.acceleration;
+      }
+    }
+    for (const DrivenDof& d : opt.driven) {
+      const SignalValue v = evaluateSignal(d.signal, 0.0, t);
+      q(d.dof) = start.q(d.dof) + v.value - evaluateSignal(d.signal, 0.0, 0.0).value;
+      qd(d.dof) = v.rate;
+      qdd(d.dof) = v.acceleration;
+    }
+  }
+
+  void load(double t, const double* y, const double* yp) {
+    prescribe(t);
+    const int ns = n();
+    for (int k = 0; k < ns; ++k) {
+      q(states[k]) = y[k];
+      qd(states[k]) = y[ns + k];
+      if (yp) qdd(states[k]) = yp[ns + k];
+    }
+  }
+};
+
+// F(t, y, ẏ) = [q̇ − v; e(q, v, v̇)] on the states.
+int residualFn(double t, N_Vector yy, N_Vector yp, N_Vector rr, void* data) {
+  Problem& p = *static_cast<Problem*>(data);
+  try {
+    const double* y = N_VGetArrayPointer(yy);
+    const double* d = N_VGetArrayPointer(yp);
+    double* r = N_VGetArrayPointer(rr);
+    p.load(t, y, d);
+    residual(p.m, p.ws, p.q, p.qd, p.qdd, p.u, p.e);
+    const int ns = p.n();
+    bool finite = true;
+    for (int k = 0; k < ns; ++k) {
+      r[k] = d[k] - y[ns + k];
+      r[ns + k] = p.e(p.states[k]);
+      finite = finite && std::isfinite(r[ns + k]);
+    }
+    return finite ? 0 : 1;  // recoverable: IDA retries with a smaller step
+  } catch (...) {
+    p.error = std::current_exception();
+    return -1;
+  }
+}
+
+// ∂F/∂y + c ∂F/∂ẏ = [[c I, −I], [∂e/∂q, ∂e/∂q̇ + c ∂e/∂q̈]] = [[c I, −I], [−K, −C − c M]].
+int jacobianFn(double t, double c, N_Vector yy, N_Vector yp, N_Vector, SUNMatrix J, void* data, N_Vector, N_Vector,
+               N_Vector) {
+  Problem& p = *static_cast<Problem*>(data);
+  try {
+    p.load(t, N_VGetArrayPointer(yy), N_VGetArrayPointer(yp));
+    const int ns = p.n();
+    const MatX dq = residualJacobian(p.m, p.jw, p.q, p.qd, p.qdd, p.u, Wrt::Q, p.states);
+    const MatX dqd = residualJacobian(p.m, p.jw, p.q, p.qd, p.qdd, p.u, Wrt::Qd, p.states);
+    massMatrix(p.m, p.ws, p.q, p.Mfull);
+    Eigen::Map<MatX> A(SUNDenseMatrix_Data(J), 2 * ns, 2 * ns);  // column-major, as SUNDIALS' dense matrix
+    A.setZero();
+    for (int r = 0; r < ns; ++r) {
+      A(r, r) = c;
+      A(r, ns + r) = -1.0;
+      for (int k = 0; k < ns; ++k) {
+        A(ns + r, k) = dq(p.states[r], k);
+        A(ns + r, ns + k) = dqd(p.states[r], k) - c * p.Mfull(p.states[r], p.states[k]);
+      }
+    }
+    ++p.jacobians;
+    return A.allFinite() ? 0 : 1;
+  } catch (...) {
+    p.error = std::current_exception();
+    return -1;
+  }
+}
+
+void errorHandler(int, const char*, const char*, char* msg, void* data) {
+  static_cast<Problem*>(data)->ida_message = msg ? msg : "";
+}
+
+// ẏ consistent with y at t: q̇ = v, v̇ from M v̇ = e(q, v, 0) (e = F − M q̈).
+void consistentRates(Problem& p, double t, const double* y, double* yp) {
+  p.load(t, y, nullptr);
+  residual(p.m, p.ws, p.q, p.qd, p.qdd, p.u, p.e);
+  massMatrix(p.m, p.ws, p.q, p.Mfull);
+  const int ns = p.n();
+  MatX M(ns, ns);
+  VecX F(ns);
+  for (int r = 0; r < ns; ++r) {
+    F(r) = p.e(p.states[r]);
+    for (int k = 0; k < ns; ++k) M(r, k) = p.Mfull(p.states[r], p.states[k]);
+  }
+  Eigen::LDLT<MatX> ldlt(M);
+  if (ldlt.info() != Eigen::Success || !ldlt.isPositive() || ldlt.vectorD().minCoeff() <= 0)
+    throw ComputeError(fmt::format("simulate: t = {:g} s: the mass matrix is not positive definite", t));
+  const VecX a = ldlt.solve(F);
+  if (!a.allFinite()) throw ComputeError(fmt::format("simulate: t = {:g} s: the initial accelerations are not finite", t));
+  for (int k = 0; k < ns; ++k) {
+    yp[k] = y[ns + k];
+    yp[ns + k] = a(k);
+  }
+}
+
+void check(int flag, const char* what) {
+  if (flag < 0) throw ComputeError(std::string("simulate: SUNDIALS: ") + what + " failed");
+}
+
+std::string flagName(int flag) {
+  char* s = IDAGetReturnFlagName(flag);
+  std::string name = s ? s : std::to_string(flag);
+  std::free(s);
+  return name;
+}
+
+// IDA's counters of the segment since the last (re)initialization.
+void addStatistics(void* mem, Simulation& sim) {
+  long nsteps = 0, nres = 0;
+  IDAGetNumSteps(mem, &nsteps);
+  IDAGetNumResEvals(mem, &nres);
+  sim.steps += nsteps;
+  sim.residual_evaluations += nres;
+}
+
+}  // namespace
+
+Simulation simulate(const Model& m, const OperatingPoint& start, const SimulationOptions& opt) {
+  if (!(opt.t_end > 0) || !std::isfinite(opt.t_end)) throw InputError("simulate: tmax: must be a finite time > 0");
+  if (!(opt.dt_out > 0) || !std::isfinite(opt.dt_out)) throw InputError("simulate: dt-out: must be a finite time > 0");
+  if (!(opt.rtol > 0) || !(opt.atol > 0)) throw InputError("simulate: tolerances: must be > 0");
+  if (start.q.size() != m.ndof() || start.qd.size() != m.ndof() || start.u.size() != m.ninput())
+    throw InputError("simulate: the start point does not match the model's coordinates and inputs");
+  for (const InputSignal& in : opt.inputs)
+    if (in.input < 0 || in.input >= m.ninput()) throw InputError("simulate: input signal: no such input");
+  const std::vector<int> active = m.activeDofs();
+  for (const DrivenDof& d : opt.driven)
+    if (std::find(active.begin(), active.end(), d.dof) == active.end())
+      throw InputError("simulate: driven coordinate: not an active coordinate of the model");
+  Problem p(m, start, opt);
+  auto held = [&](int i) {
+    return std::find(opt.prescribed.begin(), opt.prescribed.end(), i) != opt.prescribed.end() ||
+           std::any_of(opt.driven.begin(), opt.driven.end(), [i](const DrivenDof& d) { return d.dof == i; });
+  };
+  for (int i : active)
+    if (!held(i)) p.states.push_back(i);
+  const int ns = p.n();
+
+  Simulation sim;
+  sim.states = p.states;
+  const long nout = static_cast<long>(std::floor(opt.t_end / opt.dt_out + 1e-9)) + 1;
+  const bool last_extra = (nout - 1) * opt.dt_out < opt.t_end * (1 - 1e-12);
+  const long nrec = nout + (last_extra ? 1 : 0);
+  sim.q.resize(nrec, m.ndof());
+  sim.qd.resize(nrec, m.ndof());
+  sim.u.resize(nrec, m.ninput());
+  sim.y.resize(nrec, m.noutput());
+  Workspace<double> wy(m);
+  VecX y_out(m.noutput());
+  auto record = [&](long k, double t, const double* y, const double* yp) {
+    p.load(t, y, yp);
+    sim.time.push_back(t);
+    sim.q.row(k) = p.q.transpose();
+    sim.qd.row(k) = p.qd.transpose();
+    sim.u.row(k) = p.u.transpose();
+    if (m.noutput() > 0) {
+      evaluateOutputs(m, wy, p.q, p.qd, p.qdd, y_out, &p.u);
+      sim.y.row(k) = y_out.transpose();
+    }
+    if (opt.progress) opt.progress(t, opt.t_end);
+  };
+
+  // Breakpoints of the inputs inside (0, t_end), then t_end: IDA stops and restarts there.
+  std::vector<double> stops;
+  for (const InputSignal& in : opt.inputs)
+    for (double b : signalBreakpoints(in.signal))
+      if (b > 0 && b < opt.t_end) stops.push_back(b);
+  for (const DrivenDof& d : opt.driven)
+    for (double b : signalBreakpoints(d.signal))
+      if (b > 0 && b < opt.t_end) stops.push_back(b);
+  stops.push_back(opt.t_end);
+  std::sort(stops.begin(), stops.end());
+  stops.erase(std::unique(stops.begin(), stops.end()), stops.end());
+
+  if (ns == 0) {  // everything prescribed: the motion is known
+    for (long k = 0; k < nrec; ++k) record(k, std::min(k * opt.dt_out, opt.t_end), nullptr, nullptr);
+    return sim;
+  }
+
+  IdaHandles h;
+  check(SUNContext_Create(nullptr, &h.ctx), "SUNContext_Create");
+  h.y = N_VNew_Serial(2 * ns, h.ctx);
+  h.yp = N_VNew_Serial(2 * ns, h.ctx);
+  if (!h.y || !h.yp) throw ComputeError("simulate: SUNDIALS: cannot allocate the state vectors");
+  double* y = N_VGetArrayPointer(h.y);
+  double* yp = N_VGetArrayPointer(h.yp);
+  for (int k = 0; k < ns; ++k) {
+    y[k] = start.q(p.states[k]);
+    y[ns + k] = start.qd(p.states[k]);
+  }
+  consistentRates(p, 0.0, y, yp);
+  h.mem = IDACreate(h.ctx);
+  if (!h.mem) throw ComputeError("simulate: SUNDIALS: IDACreate failed");
+  check(IDASetErrHandlerFn(h.mem, errorHandler, &p), "IDASetErrHandlerFn");
+  check(IDAInit(h.mem, residualFn, 0.0, h.y, h.yp), "IDAInit");
+  check(IDASStolerances(h.mem, opt.rtol, opt.atol), "IDASStolerances");
+  check(IDASetUserData(h.mem, &p), "IDASetUserData");
+  h.A = SUNDenseMatrix(2 * ns, 2 * ns, h.ctx);
+  h.ls = SUNLinSol_Dense(h.y, h.A, h.ctx);
+  if (!h.A || !h.ls) throw ComputeError("simulate: SUNDIALS: cannot allocate the dense linear solver");
+  check(IDASetLinearSolver(h.mem, h.ls, h.A), "IDASetLinearSolver");
+  check(IDASetJacFn(h.mem, jacobianFn), "IDASetJacFn");
+  check(IDASetMaxNumSteps(h.mem, opt.max_steps), "IDASetMaxNumSteps");
+  size_t next_stop = 0;
+  check(IDASetStopTime(h.mem, stops[next_stop]), "IDASetStopTime");
+
+  record(0, 0.0, y, yp);
+  double t = 0;
+  for (long k = 1; k < nrec; ++k) {
+    const double tout = std::min(k * opt.dt_out, opt.t_end);
+    while (true) {
+      const int flag = IDASolve(h.mem, tout, &t, h.y, h.yp, IDA_NORMAL);
+      if (p.error) std::rethrow_exception(p.error);
+      if (flag < 0)
+        throw ComputeError(fmt::format("simulate: t = {:.6g} s: IDA {}{}{}", t, flagName(flag),
+                                       p.ida_message.empty() ? "" : ": ", p.ida_message));
+      if (flag != IDA_TSTOP_RETURN) break;
+      // At an input breakpoint: restart from consistent rates under the inputs after it.
+      const double ts = stops[next_stop];
+      if (next_stop + 1 < stops.size()) {
+        ++next_stop;
+        addStatistics(h.mem, sim);
+        consistentRates(p, ts, y, yp);
+        check(IDAReInit(h.mem, ts, h.y, h.yp), "IDAReInit");
+        check(IDASetStopTime(h.mem, stops[next_stop]), "IDASetStopTime");
+      }
+      if (ts >= tout * (1 - 1e-12)) break;
+    }
+    record(k, tout, y, yp);
+  }
+  addStatistics(h.mem, sim);
+  sim.jacobian_evaluations = p.jacobians;
+  return sim;
+}
+
+}  // namespace whirl

@@ -1,0 +1,74 @@
+#pragma once
+/// \file
+/// Nonlinear time simulation of the equations of motion e(q, q̇, q̈, u) = 0 with SUNDIALS IDA
+/// (variable-order BDF, Hindmarsh et al. 2005, "SUNDIALS: Suite of nonlinear and differential/algebraic
+/// equation solvers", ACM TOMS 31(3)).
+///
+/// The states are the active coordinates that are not prescribed, y = [q; v], written as the
+/// implicit first-order system
+///   F(t, y, ẏ) = [ q̇ − v ; e(q, v, v̇, u(t), t) ] = 0,
+/// whose iteration matrix ∂F/∂y + c ∂F/∂ẏ = [[c I, −I], [−K, −C − c M]] takes K = −∂e/∂q and
+/// C = −∂e/∂q̇ from the same AD passes as the linearization (residualJacobian) and M from the mass
+/// matrix assembly (linearize/linearize.hpp): no finite differences.
+///
+/// Rheonomic coordinates — frozen ones (moving at their rate), the rotating ones of a driven rotor,
+/// those on a prescribed motion (DrivenDof), those an input drives (q = value + gain u(t), e.g. a
+/// pitch history) — are known functions of time
+/// with their rates and accelerations; their rows of e are not equations of the simulation.
+/// With aerodynamics, the induction is re-solved at every evaluation (quasi-steady BEM,
+/// src/dynamics/aero_loads.hpp): no dynamic inflow.
+#include <functional>
+#include <vector>
+
+#include "linearize/operating_point.hpp"
+#include "src/model/model.hpp"
+#include "src/model/time_signal.hpp"
+
+namespace whirl {
+
+/// An input following a function of time (its other inputs stay at the start point's value).
+struct InputSignal {
+  int input = -1;
+  TimeSignal signal;
+};
+
+/// A coordinate following a function of time from its start value: q = q0 + s(t) − s(0), with the
+/// signal's rate and acceleration (rheonomic: e.g. Kane's imposed rotation, spinup(15, 6)).
+struct DrivenDof {
+  int dof = -1;
+  TimeSignal signal;
+};
+
+struct SimulationOptions {
+  double t_end = 10;      ///< [s], > 0
+  double dt_out = 0.01;   ///< interval of the recorded instants [s], > 0
+  double rtol = 1e-6;     ///< IDA relative tolerance
+  double atol = 1e-8;     ///< IDA absolute tolerance [m, rad, m/s, rad/s]
+  /// Active coordinates moving at their start rate, q = q0 + q̇0 t (a driven rotor: the rotating
+  /// coordinates). Not states.
+  std::vector<int> prescribed;
+  std::vector<InputSignal> inputs;
+  std::vector<DrivenDof> driven;  ///< active coordinates on a prescribed motion; not states
+  long max_steps = 200000;  ///< IDA steps between two recorded instants; more is a ComputeError (never hangs)
+  /// Called after each recorded instant with (t, t_end).
+  std::function<void(double, double)> progress;
+};
+
+/// The recorded time series. Row k of each matrix is instant time[k].
+struct Simulation {
+  std::vector<double> time;  ///< [s]
+  MatX q, qd;                ///< all coordinates (ndof columns, model order) and their rates
+  MatX u;                    ///< inputs (ninput columns)
+  MatX y;                    ///< the model's outputs (noutput columns)
+  std::vector<int> states;   ///< the coordinates integrated (the others are prescribed)
+  long steps = 0, residual_evaluations = 0, jacobian_evaluations = 0;  ///< IDA statistics
+};
+
+/// Integrates from `start` (coordinates, rates and inputs at t = 0; its q̈ is not used: the initial
+/// accelerations are solved from M q̈ = F) to options.t_end.
+/// \throws InputError for options out of range (t_end, dt_out, tolerances, an index);
+///         ComputeError "simulate: t = … s: <reason>" when IDA fails (no convergence, too many steps,
+///         a non-finite residual), naming the time reached, or when M is not positive definite.
+Simulation simulate(const Model& model, const OperatingPoint& start, const SimulationOptions& options);
+
+}  // namespace whirl

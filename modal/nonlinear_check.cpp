@@ -1,0 +1,87 @@
+#include "modal/nonlinear_check.hpp"
+
+#include <unsupported/Eigen/MatrixFunctions>
+
+#include <algorithm>
+#include <cmath>
+
+#include "linearize/linearize.hpp"
+#include "src/model/error.hpp"
+
+namespace whirl {
+
+NonlinearCheck checkAgainstLinear(const Model& m, const OperatingPoint& eq, const NonlinearCheckOptions& opt) {
+  for (const Dof& d : m.dofs)
+    if (!d.frozen && d.blade >= 0)
+      throw InputError("verify: the model has a bladed rotor, whose linear model is periodic; verify takes "
+                       "time-invariant models (no rotor, or an axisymmetric rigid rotor)");
+  if (opt.levels < 2) throw InputError("verify: levels: at least 2 amplitudes to observe the order");
+  LinearizeOptions lo;
+  lo.frozen_wake = false;  // the simulation re-solves the induction at every evaluation
+  lo.inputs = false;
+  const LinearModel lin = linearize(m, eq, lo);
+  NonlinearCheck out;
+  out.modes = computeModes(lin.M, lin.C, lin.K, lin.dof_names);
+  const int n = static_cast<int>(lin.dofs.size());
+  std::vector<int> perturbed = opt.dofs;
+  if (perturbed.empty())
+    for (int i : lin.dofs)
+      if (!m.dofs[i].rotating) perturbed.push_back(i);
+  if (perturbed.empty()) throw InputError("verify: no coordinate to perturb");
+  for (int i : perturbed)
+    if (std::find(lin.dofs.begin(), lin.dofs.end(), i) == lin.dofs.end())
+      throw InputError("verify: '" + m.dofs[i].name + "' is not a state of the linear model (frozen)");
+
+  SimulationOptions so;
+  so.t_end = opt.t_end;
+  so.dt_out = opt.dt_out;
+  so.rtol = opt.rtol;
+  so.atol = opt.atol;
+  const MatX step = (lin.A * opt.dt_out).exp();  // x(t + Δ) = exp(A Δ) x(t)
+  double eps = opt.amplitude;
+  for (int level = 0; level < opt.levels; ++level, eps /= 2) {
+    OperatingPoint start = eq;
+    VecX x0 = VecX::Zero(2 * n);
+    for (int i : perturbed) {
+      start.q(i) += eps;
+      x0(std::find(lin.dofs.begin(), lin.dofs.end(), i) - lin.dofs.begin()) = eps;
+    }
+    VecX x = x0;
+    const Simulation sim = simulate(m, start, so);
+    NonlinearCheckLevel l;
+    l.amplitude = eps;
+    for (size_t k = 0; k < sim.time.size(); ++k) {
+      const auto r = static_cast<Eigen::Index>(k);
+      // Recorded instants are k Δ, and t_end last when it is not a multiple of Δ.
+      const double t = sim.time[k], tk = static_cast<double>(k) * opt.dt_out;
+      if (k > 0) x = std::abs(t - tk) <= 1e-9 * opt.dt_out ? VecX(step * x) : VecX((lin.A * t).exp() * x0);
+      for (int j = 0; j < n; ++j) {
+        const int i = lin.dofs[j];
+        const double dq = sim.q(r, i) - eq.q(i) - eq.qd(i) * sim.time[k];
+        l.max_difference = std::max(l.max_difference, std::abs(dq - x(j)));
+        l.max_response = std::max(l.max_response, std::abs(x(j)));
+      }
+    }
+    out.levels.push_back(l);
+  }
+  // Identification: one decay per coordinate, perturbed alone by the largest amplitude (two modes of
+  // close frequency excited together exchange energy and bias the logarithmic decrement).
+  for (int i : perturbed) {
+    OperatingPoint start = eq;
+    start.q(i) += opt.amplitude;
+    const Simulation sim = simulate(m, start, so);
+    std::vector<double> s(sim.time.size());
+    for (size_t k = 0; k < s.size(); ++k) s[k] = sim.q(static_cast<Eigen::Index>(k), i);
+    out.identified_dofs.push_back(m.dofs[i].name);
+    try {
+      out.identified.push_back(identifyDecay(sim.time, s, eq.q(i)));
+    } catch (const ComputeError&) {  // no oscillation along it (overdamped, or too short): NaN
+      out.identified.push_back({NAN, NAN, NAN, 0});
+    }
+  }
+  for (size_t k = 1; k < out.levels.size(); ++k)
+    out.orders.push_back(std::log2(out.levels[k - 1].max_difference / out.levels[k].max_difference));
+  return out;
+}
+
+}  // namespace whirl

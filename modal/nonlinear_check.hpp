@@ -1,0 +1,53 @@
+#pragma once
+/// \file
+/// The linear model checked against the nonlinear equations it came from: free decays from the
+/// equilibrium perturbed by ε along chosen coordinates, integrated by simulate (IDA), against the
+/// linear response x(t) = exp(A t) x0 of the model linearize exports there. The difference is of
+/// order ε² (the first neglected terms of the Taylor expansion), so halving ε divides it by 4: an
+/// observed order log2(err(ε)/err(ε/2)) ≥ 2 confirms that the exported A is the nonlinear system's
+/// Jacobian (an order near 1 would mean a wrong entry). It is 3 when the quadratic terms vanish by
+/// symmetry (the floating turbine's pitch, a pendulum: measured 2.94–2.99). The frequency and damping identified (identifyDecay) from a decay of each coordinate
+/// perturbed alone by ε are set next to the eigenvalues.
+///
+/// Only for time-invariant linear models: no rotor, or a rotor without blades (an axisymmetric rigid
+/// rotor, turning freely at its rate); a bladed rotor's model is periodic (linearizePeriodic).
+/// With aerodynamics the linear model lets the induction follow (quasi-steady BEM), as the simulation does.
+#include <string>
+#include <vector>
+
+#include "linearize/simulate.hpp"
+#include "modal/decay_identification.hpp"
+#include "modal/modes.hpp"
+
+namespace whirl {
+
+struct NonlinearCheckOptions {
+  std::vector<int> dofs;   ///< coordinates perturbed (each by the amplitude); empty: every non-rotating active one
+  double amplitude = 0.01; ///< ε [m or rad]
+  int levels = 3;          ///< ε, ε/2, ε/4, …
+  double t_end = 10;       ///< [s]
+  double dt_out = 0.01;    ///< [s]
+  double rtol = 1e-10, atol = 1e-13;  ///< IDA, far below the ε² differences
+};
+
+struct NonlinearCheckLevel {
+  double amplitude = 0;
+  double max_difference = 0;  ///< max over time and coordinates of |q_nonlinear − q_linear| [m or rad]
+  double max_response = 0;    ///< max |q − q_eq| of the linear response
+};
+
+struct NonlinearCheck {
+  std::vector<NonlinearCheckLevel> levels;
+  std::vector<Mode> modes;                 ///< of the linear model at the equilibrium
+  std::vector<std::string> identified_dofs;
+  std::vector<IdentifiedDecay> identified;  ///< per perturbed coordinate, perturbed alone by the amplitude
+  /// Observed order of the difference between consecutive levels (≥ 2), one fewer than levels.
+  std::vector<double> orders;
+};
+
+/// \param[in] equilibrium  a solved operating point (solveOperatingPoint)
+/// \throws InputError for a bladed rotor or an unknown / frozen coordinate; ComputeError from simulate
+NonlinearCheck checkAgainstLinear(const Model& model, const OperatingPoint& equilibrium,
+                                  const NonlinearCheckOptions& options = {});
+
+}  // namespace whirl

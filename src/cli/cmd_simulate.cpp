@@ -1,0 +1,173 @@
+// `whirl simulate`: the nonlinear equations integrated in time (SUNDIALS IDA, linearize/simulate.hpp)
+// from the model's initial point or its equilibrium, with initial displacements and input histories:
+// writes timeseries.csv, timeseries.gp and PNG/SVG.
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <cstdio>
+
+#include "linearize/point_validity.hpp"
+#include "linearize/simulate.hpp"
+#include "src/cli/commands.hpp"
+#include "src/cli/common.hpp"
+#include "src/io/time_signal_reader.hpp"
+#include "src/model/error.hpp"
+#include "src/writers/output_set.hpp"
+#include "src/writers/timeseries_output.hpp"
+
+namespace whirl::cli {
+namespace {
+
+struct SimulateOptions {
+  ModelOptions model;
+  double tmax = 0, dt_out = 0.01, rtol = 1e-6, atol = 1e-8;
+  std::vector<std::string> init, inputs, drives;
+  bool free_rotor = false, equilibrium = false, no_plot = false;
+  std::string out, plot;
+};
+
+// "NAME=v" (absolute), "NAME+=v" (offset from the start point), "NAME rate=v" (the rate).
+void applyInit(const Model& m, OperatingPoint& p, const std::string& text) {
+  auto [name, value_text] = splitAssignment(text, "--init");
+  bool offset = false, rate = false;
+  if (!name.empty() && name.back() == '+') {
+    offset = true;
+    name.pop_back();
+    while (!name.empty() && name.back() == ' ') name.pop_back();
+  }
+  std::string dof = name;
+  if (!m.findDof(dof) && name.size() > 5 && name.compare(name.size() - 5, 5, " rate") == 0) {
+    rate = true;
+    dof = name.substr(0, name.size() - 5);
+  }
+  const auto i = m.findDof(dof);
+  if (!i) {
+    std::string known;
+    for (int k : m.activeDofs()) known += (known.empty() ? "" : ", ") + m.dofs[k].name;
+    throw InputError("--init: '" + name + "': no such coordinate (active: " + known + ")");
+  }
+  if (m.dofs[*i].frozen) throw InputError("--init: '" + dof + "': a frozen coordinate follows its prescribed motion");
+  size_t used = 0;
+  double v = 0;
+  try {
+    v = std::stod(value_text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (value_text.empty() || used != value_text.size() || !std::isfinite(v))
+    throw InputError("--init: '" + text + "': '" + value_text + "' is not a finite number");
+  double& x = rate ? p.qd(*i) : p.q(*i);
+  x = offset ? x + v : v;
+}
+
+void run(const SimulateOptions& opt) {
+  const Model m = loadModel(opt.model);
+  requireActiveDof(m, m.name);
+  OperatingPoint start = startPoint(m, opt.model);
+  if (opt.equilibrium) {
+    start = solveOperatingPoint(m, start);
+    checkSolvedPoints(opt.model, m, {start});
+  }
+  for (const std::string& s : opt.init) applyInit(m, start, s);
+  SimulationOptions so;
+  so.t_end = opt.tmax;
+  so.dt_out = opt.dt_out;
+  so.rtol = opt.rtol;
+  so.atol = opt.atol;
+  if (!opt.free_rotor) so.prescribed = m.roles.azimuth;
+  for (const std::string& s : opt.inputs) {
+    const auto [name, signal] = splitAssignment(s, "--input");
+    const auto i = m.findInput(name);
+    if (!i) {
+      std::string known;
+      for (const Input& in : m.inputs) known += (known.empty() ? "" : ", ") + in.name;
+      throw InputError("--input: '" + name + "': no such input (inputs: " + (known.empty() ? "none" : known) + ")");
+    }
+    so.inputs.push_back({*i, parseTimeSignal(signal, "--input " + name)});
+  }
+  for (const std::string& s : opt.drives) {
+    const auto [name, signal] = splitAssignment(s, "--drive");
+    const auto i = m.findDof(name);
+    if (!i || m.dofs[*i].frozen) throw InputError("--drive: '" + name + "': no such active coordinate");
+    so.driven.push_back({*i, parseTimeSignal(signal, "--drive " + name)});
+    so.prescribed.erase(std::remove(so.prescribed.begin(), so.prescribed.end(), *i), so.prescribed.end());
+  }
+  TimeseriesPlotOptions po;
+  po.channels = splitList(opt.plot);
+  po.render = !opt.no_plot;
+  po.title = m.name + ": simulation";
+  // Progress on a terminal only (as the sweeps: a log would depend on the timing).
+  static const bool terminal = isatty(STDERR_FILENO) == 1;
+  const auto t0 = std::chrono::steady_clock::now();
+  auto wall = [t0] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
+  double shown = 0;
+  so.progress = [&](double t, double t_end) {
+    if (!terminal || wall() < shown + 0.5) return;
+    shown = wall();
+    std::fprintf(stderr, "\rsimulate: t = %.4g of %.4g s (%.1f s)", t, t_end, shown);
+  };
+  const Simulation sim = simulate(m, start, so);
+  const double seconds = wall();
+  if (shown > 0) std::fprintf(stderr, "\n");
+  // The first recorded instant outside the model's range of validity (deflections, slopes:
+  // linearize/point_validity.hpp) is a warning: a diverging motion (Kane's beam without geometric
+  // stiffness) is a legitimate result, but not a turbine state.
+  for (size_t k = 0; k < sim.time.size(); ++k) {
+    OperatingPoint at;  // no solved coordinates: only the geometry is checked
+    at.q = sim.q.row(static_cast<Eigen::Index>(k)).transpose();
+    const std::vector<std::string> problems = checkPointValidity(m, at);
+    if (problems.empty()) continue;
+    std::fprintf(stderr, "whirl: warning: %s: t = %g s: the motion leaves the model's range of validity: %s\n",
+                 opt.model.case_path.c_str(), sim.time[k], problems.front().c_str());
+    break;
+  }
+  // Only now the output folder: a failed simulation writes nothing.
+  const std::string dir = opt.out.empty() ? defaultOutputFolder(opt.model.case_path) : opt.out;
+  prepareOutputFolder(dir);
+  const std::vector<std::string> written = writeTimeseries(m, sim, dir, po);
+  std::printf("simulated %g s in %.3g s (%.4g× real time): %ld steps, %ld residuals, %ld Jacobians, %zu states\n",
+              opt.tmax, seconds, opt.tmax / std::max(seconds, 1e-9), sim.steps, sim.residual_evaluations,
+              sim.jacobian_evaluations, 2 * sim.states.size());
+  std::printf("wrote");
+  for (const auto& w : written) std::printf(" %s", w.c_str());
+  std::printf("\n");
+}
+
+}  // namespace
+
+void addSimulateCommand(CLI::App& app) {
+  auto opt = std::make_shared<SimulateOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "simulate",
+      "integrate the nonlinear equations in time (SUNDIALS IDA, AD Jacobians): writes timeseries.csv, "
+      "timeseries.gp and PNG/SVG");
+  addModelOptions(*cmd, opt->model, true);
+  cmd->add_option("--tmax", opt->tmax, "simulated time [s]")->required()->check(CLI::PositiveNumber);
+  cmd->add_option("--dt-out", opt->dt_out, "interval of the recorded instants [s]")->check(CLI::PositiveNumber);
+  cmd->add_option("--init", opt->init,
+                  "initial condition 'DOF=value', 'DOF+=offset' (from the start point) or 'DOF rate=value' "
+                  "(SI units: m, rad, per s); repeatable");
+  cmd->add_option("--input", opt->inputs,
+                  "input history 'NAME=step(t0,a)', 'ramp(t0,t1,a)', 'sin(A,f)' (added to the input's value) or "
+                  "'NAME=file.csv' (columns time, value); repeatable");
+  cmd->add_option("--drive", opt->drives,
+                  "prescribed motion of a coordinate from its start value, 'DOF=spinup(T,w)' (Kane's spin-up: "
+                  "acceleration (w/T)(1 - cos 2 pi t/T), then rate w) or any --input signal; repeatable");
+  cmd->add_flag("--free-rotor", opt->free_rotor,
+                "the rotor azimuth is a state (starting at --rpm); otherwise the rotor turns at the constant --rpm");
+  cmd->add_flag("--equilibrium", opt->equilibrium,
+                "start from the solved operating point (then --init 'DOF+=offset' perturbs it)");
+  cmd->add_option("--rtol", opt->rtol, "IDA relative tolerance")->check(CLI::PositiveNumber);
+  cmd->add_option("--atol", opt->atol, "IDA absolute tolerance [m, rad, m/s, rad/s]")->check(CLI::PositiveNumber);
+  cmd->add_option("--plot", opt->plot,
+                  "columns of timeseries.csv to plot, comma-separated (default: the integrated coordinates)");
+  cmd->add_option("--out", opt->out, "output folder (default reports/<case name>)");
+  cmd->add_flag("--no-plot", opt->no_plot, "write the table and the Gnuplot script, do not run Gnuplot");
+  cmd->callback([opt]() { runWithCaseSource(opt->model.case_path, [&] { run(*opt); }); });
+}
+
+}  // namespace whirl::cli

@@ -1,0 +1,120 @@
+// `whirl simulate`: the time series and its plot script as one set, and the one-line errors that
+// write nothing (unknown coordinate in --init, unknown input, an input file whose time does not
+// increase, an integration that fails).
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "tests/cli/cli_support.hpp"
+
+namespace whirl {
+namespace {
+
+using ::testing::HasSubstr;
+using ::testing::StartsWith;
+namespace fs = std::filesystem;
+
+constexpr const char* kCase = "cases/landbased_3dof/landbased_3dof.yaml";
+
+TEST(CliSimulate, WritesTimeseriesAndScript) {
+  const auto dir = test::freshDir("simulate");
+  const auto r = test::whirl(std::string("simulate ") + kCase +
+                             " --tmax 0.5 --dt-out 0.1 --rpm 5 --init 'tower FA 1=0.5' --init 'tower SS 1 rate=0.1' "
+                             "--input 'thrust=step(0.25,1e5)' --no-plot --out '" + dir.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("simulated 0.5 s in"));
+  const std::string csv = test::slurp(dir / "timeseries.csv");
+  EXPECT_THAT(csv, StartsWith("time_s,tower FA 1,tower FA 1 rate,tower SS 1,tower SS 1 rate,azimuth,azimuth rate,"
+                              "input: thrust,input: aero torque\n0,0.5,0,0,0.1,0,0.5235987755982988,0,0\n"));
+  int rows = 0;
+  for (char ch : csv) rows += ch == '\n';
+  EXPECT_EQ(rows, 7);  // header + t = 0, 0.1, …, 0.5
+  EXPECT_THAT(csv, HasSubstr("\n0.5,"));
+  EXPECT_THAT(test::slurp(dir / "timeseries.gp"), HasSubstr("plot 'timeseries.csv' skip 1 using 1:2 "));
+}
+
+TEST(CliSimulate, FreeRotorIntegratesTheAzimuth) {
+  const auto dir = test::freshDir("simulate_free");
+  const auto r = test::whirl(std::string("simulate ") + kCase + " --tmax 0.2 --dt-out 0.1 --rpm 5 --free-rotor "
+                             "--input 'aero torque=ramp(0,0.1,1e6)' --no-plot --out '" + dir.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("6 states"));
+}
+
+void expectErrorAndNothingWritten(const std::string& args, const std::string& message) {
+  const auto dir = test::freshDir("simulate_error");
+  const auto out = dir / "out";
+  const auto r = test::whirl("simulate " + args + " --no-plot --out '" + out.string() + "'");
+  EXPECT_NE(r.code, 0);
+  EXPECT_THAT(r.err, HasSubstr(message));
+  int lines = 0;
+  for (char ch : r.err) lines += ch == '\n';
+  EXPECT_EQ(lines, 1) << r.err;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(CliSimulate, UnknownInitCoordinate) {
+  expectErrorAndNothingWritten(std::string(kCase) + " --tmax 1 --init 'tower XX=1'",
+                               "--init: 'tower XX': no such coordinate (active: tower FA 1, tower SS 1, azimuth)");
+}
+
+TEST(CliSimulate, UnknownInput) {
+  expectErrorAndNothingWritten(std::string(kCase) + " --tmax 1 --input 'wind=step(0,1)'",
+                               "--input: 'wind': no such input (inputs: thrust, aero torque)");
+}
+
+TEST(CliSimulate, InputFileWithNonIncreasingTime) {
+  const auto dir = test::freshDir("simulate_file");
+  const auto file = dir / "thrust.csv";
+  std::ofstream(file) << "time,thrust\n0,0\n2,1\n1,2\n";
+  expectErrorAndNothingWritten(std::string(kCase) + " --tmax 1 --input 'thrust=" + file.string() + "'",
+                               file.string() + ":4: time: time not increasing (1 after 2)");
+}
+
+TEST(CliSimulate, FailingIntegrationNamesTheTime) {
+  // A tolerance below what double precision can deliver: IDA gives up at the first step.
+  expectErrorAndNothingWritten(std::string(kCase) + " --tmax 1 --init 'tower FA 1=1' --rtol 1e-300 --atol 1e-300",
+                               "simulate: t = ");
+}
+
+TEST(CliSimulate, DrivenSpinUp) {
+  const auto dir = test::freshDir("simulate_kane");
+  const auto r = test::whirl("simulate cases/kane_beam/kane_beam.yaml --tmax 15 --dt-out 5 --drive 'theta=spinup(15,6)' "
+                             "--no-plot --out '" + dir.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("6 states"));  // 3 shapes; the hub is driven
+  EXPECT_THAT(test::slurp(dir / "timeseries.csv"), HasSubstr("\n15,45,6,"));  // θ(15) = 45 rad, θ̇ = 6 rad/s
+}
+
+TEST(CliSimulate, DivergingMotionIsAWarning) {
+  // Kane's beam without geometric stiffness diverges (tests/validation/test_simulate_kane_beam.cpp):
+  // written, with one warning naming the first instant outside the range of validity.
+  const auto dir = test::freshDir("simulate_diverge");
+  const auto r = test::whirl("simulate cases/kane_beam/kane_beam.yaml --set bodies.beam.axial_shortening=false "
+                             "--tmax 20 --dt-out 0.5 --drive 'theta=spinup(15,6)' --no-plot --out '" + dir.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_THAT(r.err, HasSubstr("whirl: warning: cases/kane_beam/kane_beam.yaml: t = "));
+  EXPECT_THAT(r.err, HasSubstr("the motion leaves the model's range of validity: beam: "));
+  EXPECT_TRUE(fs::exists(dir / "timeseries.csv"));
+}
+
+TEST(CliSimulate, UnknownDrivenCoordinate) {
+  expectErrorAndNothingWritten("cases/kane_beam/kane_beam.yaml --tmax 1 --drive 'phi=spinup(15,6)'",
+                               "--drive: 'phi': no such active coordinate");
+}
+
+TEST(CliVerify, OrderTwoAndIdentifiedFrequencies) {
+  const auto r = test::whirl(std::string("verify ") + kCase + " --rpm 5 --tmax 20 --levels 2");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("0.005        "));
+  EXPECT_THAT(r.out, ::testing::ContainsRegex(" (1\\.9[5-9]|2\\.0[0-5])[0-9]\n"));  // the observed order ≈ 2
+  EXPECT_THAT(r.out, HasSubstr("tower FA 1               0.3271"));
+}
+
+TEST(CliVerify, BladedRotorIsRefused) {
+  const auto r = test::whirl("verify cases/nrel5mw/Main_Onshore.fst");
+  EXPECT_NE(r.code, 0);
+  EXPECT_THAT(r.err, HasSubstr("bladed rotor, whose linear model is periodic"));
+}
+
+}  // namespace
+}  // namespace whirl
