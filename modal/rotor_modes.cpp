@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <map>
+#include <set>
 
 #include "modal/eigen.hpp"
+#include "modal/participation.hpp"
 #include "linearize/mbc.hpp"
 
 namespace whirl {
@@ -18,6 +21,11 @@ struct Coordinate {
 // A mode this slow and carried by an azimuth is the rotor turning as a whole, not a vibration: the
 // multiblade average leaves it a residual frequency of order 1e-4 Hz.
 constexpr double kRigidAzimuthHz = 5e-3;
+
+// Slower than this (0.1 rpm) the rotor is named as parked: forward and backward whirl would differ
+// by 2Ω < 0.003 Hz, less than what separates a parked rotor's cosine and sine patterns (the
+// toolbox's standstill .lin files are linearized at Ω = 2e-4 rad/s).
+constexpr double kParkedRadPerS = 1e-2;
 
 // Names the mode from the coordinate group with the largest energy share. A vibration dominated
 // by an azimuth (a free generator turning against the rotor) or by a held coordinate
@@ -36,7 +44,8 @@ void nameRotorMode(Mode& mode, const std::vector<Coordinate>& coords, const std:
     if (h) hd += mode.participation(i);
     if (azimuth[i]) az += mode.participation(i);
   }
-  if (share.empty() || (mode.freq_hz < kRigidAzimuthHz && az > 0.5) ||
+  // A real root carried by an azimuth (the free rotor's decay) is no vibration either.
+  if (share.empty() || ((mode.freq_hz < kRigidAzimuthHz || mode.damped_freq_hz == 0) && az > 0.5) ||
       (hd > 0.5 && (mode.freq_hz < kRigidAzimuthHz || mode.damped_freq_hz == 0))) {
     mode.rigid_body = true;
     share = rigid_share;
@@ -68,7 +77,7 @@ void nameRotorMode(Mode& mode, const std::vector<Coordinate>& coords, const std:
   if (blade) {
     if (coll >= cyclic || cosine < 0 || sine < 0) {
       name += collective >= 0 && coll >= cyclic ? " collective" : " cyclic";
-    } else if (std::abs(rotor_speed) < 1e-9) {
+    } else if (std::abs(rotor_speed) < kParkedRadPerS) {
       // Parked: forward and backward whirl coincide; say which cyclic pattern the mode took.
       name += std::abs(mode.shape(cosine)) >= std::abs(mode.shape(sine)) ? " cos" : " sin";
     } else {
@@ -79,6 +88,59 @@ void nameRotorMode(Mode& mode, const std::vector<Coordinate>& coords, const std:
   }
   if (mode.rigid_body) name += " (rigid body)";
   mode.name = name;
+}
+
+// Share of a mode in the coordinates of `group` that a name suffix stands for.
+double labelShare(const Mode& mode, const std::vector<Coordinate>& coords, const std::string& group, const std::string& label) {
+  double share = 0;
+  for (size_t i = 0; i < coords.size(); ++i) {
+    if (coords[i].group != group) continue;
+    const MbcCoordinate k = coords[i].kind;
+    const bool take = label == "collective" ? k.kind == MbcKind::Collective
+                      : label == "cos"      ? k.kind == MbcKind::Cosine && k.harmonic == 1
+                      : label == "sin"      ? k.kind == MbcKind::Sine && k.harmonic == 1
+                                            : k.kind == MbcKind::Cosine || k.kind == MbcKind::Sine;  // BW, FW, cyclic
+    if (take) share += mode.participation(static_cast<Eigen::Index>(i));
+  }
+  return share;
+}
+
+// One name per mode pattern: where two modes of one point got the same blade name ("flap 2 cos"
+// twice on a parked WindPACT rotor, whose collective and cosine flap patterns both couple with the
+// tower fore-aft and mix), the names of that group that no mode took (rotating: collective only) are
+// handed out again, each mode of the clash taking the name whose coordinates carry most of it
+// (largest total share over the permutations; a clash of more modes than names stays).
+void distinctBladeNames(std::vector<Mode>& modes, const std::vector<Coordinate>& coords, double rotor_speed) {
+  std::set<std::string> blade_groups;
+  for (const auto& c : coords)
+    if (c.kind.kind != MbcKind::Fixed) blade_groups.insert(c.group);
+  // Rotating, the shares tell collective from cyclic, not backward from forward whirl.
+  const std::vector<std::string> labels = std::abs(rotor_speed) < kParkedRadPerS
+                                              ? std::vector<std::string>{"collective", "cos", "sin"}
+                                              : std::vector<std::string>{"collective"};
+  for (const std::string& group : blade_groups) {
+    std::map<std::string, std::vector<size_t>> by_label;
+    for (size_t m = 0; m < modes.size(); ++m) {
+      if (modes[m].rigid_body || modes[m].name.rfind(group + " ", 0) != 0) continue;
+      by_label[modes[m].name.substr(group.size() + 1)].push_back(m);
+    }
+    for (const auto& [label, clash] : by_label) {
+      if (clash.size() < 2) continue;
+      std::vector<std::string> names = {label};
+      for (const auto& l : labels)
+        if (l != label && !by_label.count(l)) names.push_back(l);
+      if (names.size() < clash.size()) continue;
+      std::vector<size_t> perm(names.size()), best;
+      for (size_t k = 0; k < perm.size(); ++k) perm[k] = k;
+      double best_score = -1;
+      do {
+        double score = 0;
+        for (size_t k = 0; k < clash.size(); ++k) score += labelShare(modes[clash[k]], coords, group, names[perm[k]]);
+        if (score > best_score + 1e-12) best_score = score, best = perm;
+      } while (std::next_permutation(perm.begin(), perm.end()));
+      for (size_t k = 0; k < clash.size(); ++k) modes[clash[k]].name = group + " " + names[best[k]];
+    }
+  }
 }
 
 }  // namespace
@@ -123,6 +185,13 @@ RotorModes rotorModes(const Model& m, const PeriodicLinearization& p) {
 RotorModes multibladeModes(const RotorCoordinates& c, const MbcLayout& layout, const std::vector<MbcSample>& samples) {
   RotorModes out;
   const int n = static_cast<int>(c.names.size());
+  const bool by_participation = !c.coordinate_of_state.empty();
+  // State that carries each coordinate (its displacement, or the first-order state).
+  std::vector<int> state_of(n);
+  for (int i = 0; i < n; ++i) state_of[i] = i;
+  if (by_participation)
+    for (int s = static_cast<int>(c.coordinate_of_state.size()) - 1; s >= 0; --s) state_of[c.coordinate_of_state[s]] = s;
+  auto groupOf = [&](int i) { return c.groups.empty() ? c.names[i] : c.groups[i]; };
   int nb = 0;
   for (int b : c.blade) nb = std::max(nb, b + 1);
   const double rotor_speed = samples.front().rotor_speed;
@@ -131,7 +200,7 @@ RotorModes multibladeModes(const RotorCoordinates& c, const MbcLayout& layout, c
   if (nb < 3) {
     // No transform: with fewer than 3 blades the transformed system stays periodic.
     out.A = samples.front().A;
-    for (int i = 0; i < n; ++i) coords[i].group = c.names[i];
+    for (int i = 0; i < n; ++i) coords[i].group = groupOf(i);
     out.coordinates = c.names;
   } else {
     out.num_blades = nb;
@@ -141,22 +210,38 @@ RotorModes multibladeModes(const RotorCoordinates& c, const MbcLayout& layout, c
     std::vector<std::vector<int>> per_blade(nb);
     for (int i = 0; i < n; ++i)
       if (c.blade[i] >= 0) per_blade[c.blade[i]].push_back(i);
+    out.coordinates.resize(n);
     for (int i = 0; i < n; ++i) {
-      coords[i].kind = mbc.states[i];
+      coords[i].kind = mbc.states[state_of[i]];
       if (c.blade[i] < 0) {
-        coords[i].group = c.names[i];
+        coords[i].group = groupOf(i);
+        out.coordinates[i] = c.names[i];
         continue;
       }
       const auto& list = per_blade[c.blade[i]];
       const size_t j = std::find(list.begin(), list.end(), i) - list.begin();
-      coords[i].group = bladeBaseName(c.names[per_blade[0].at(j)]);
+      coords[i].group = bladeBaseName(groupOf(per_blade[0].at(j)));
+      out.coordinates[i] = bladeBaseName(c.names[per_blade[0].at(j)]) + " " + toString(coords[i].kind);
     }
-    out.coordinates.resize(n);
-    for (int i = 0; i < n; ++i)
-      out.coordinates[i] = c.blade[i] < 0 ? coords[i].group : coords[i].group + " " + toString(coords[i].kind);
   }
-  out.modes = modesFromEigen(eigenStandard(out.A), n, c.weights, out.coordinates);
+  out.modes = by_participation ? participationModes(eigenStandard(out.A, true), c.coordinate_of_state, out.coordinates)
+                               : modesFromEigen(eigenStandard(out.A), n, c.weights, out.coordinates);
   for (auto& mode : out.modes) nameRotorMode(mode, coords, c.azimuth, c.held, rotor_speed);
+  if (nb >= 3) distinctBladeNames(out.modes, coords, rotor_speed);
+  if (by_participation) {
+    // Real roots listed one by one (participationModes) but one rigid-body motion: the two roots of a
+    // free azimuth (the multiblade average leaves them ~1e-4 Hz apart from zero) or of a free yaw
+    // (zero and its decay) are one mode, as whirl's own modes count them.
+    std::vector<Mode> kept;
+    for (auto& mode : out.modes) {
+      const bool repeat = mode.rigid_body && mode.damped_freq_hz == 0 &&
+                          std::any_of(kept.begin(), kept.end(), [&](const Mode& k) {
+                            return k.rigid_body && k.damped_freq_hz == 0 && k.name == mode.name;
+                          });
+      if (!repeat) kept.push_back(std::move(mode));
+    }
+    out.modes = std::move(kept);
+  }
   return out;
 }
 
