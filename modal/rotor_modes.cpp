@@ -232,13 +232,21 @@ RotorModes multibladeModes(const RotorCoordinates& c, const MbcLayout& layout, c
     // Real roots listed one by one (participationModes) but one rigid-body motion: the two roots of a
     // free azimuth (the multiblade average leaves them ~1e-4 Hz apart from zero) or of a free yaw
     // (zero and its decay) are one mode, as whirl's own modes count them.
+    // The pair's frequency and damping as modal/modes.hpp gives them: f = √(λ₁λ₂)/2π,
+    // ζ = −(λ₁+λ₂)/(2√(λ₁λ₂)), zero when a root is zero.
     std::vector<Mode> kept;
     for (auto& mode : out.modes) {
-      const bool repeat = mode.rigid_body && mode.damped_freq_hz == 0 &&
-                          std::any_of(kept.begin(), kept.end(), [&](const Mode& k) {
-                            return k.rigid_body && k.damped_freq_hz == 0 && k.name == mode.name;
-                          });
-      if (!repeat) kept.push_back(std::move(mode));
+      const auto k = std::find_if(kept.begin(), kept.end(), [&](const Mode& m) {
+        return m.rigid_body && m.damped_freq_hz == 0 && m.name == mode.name;
+      });
+      if (!mode.rigid_body || mode.damped_freq_hz != 0 || k == kept.end()) {
+        kept.push_back(std::move(mode));
+        continue;
+      }
+      const double l1 = -k->damping_ratio * k->freq_hz, l2 = -mode.damping_ratio * mode.freq_hz;  // λ/2π
+      const double f = std::sqrt(std::abs(l1 * l2));
+      k->damping_ratio = f > 0 ? -(l1 + l2) / (2 * f) : 0;
+      k->freq_hz = f;
     }
     out.modes = std::move(kept);
   }
