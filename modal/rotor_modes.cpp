@@ -232,6 +232,21 @@ RotorModes multibladeModes(const RotorCoordinates& c, const MbcLayout& layout, c
     // Real roots listed one by one (participationModes) but one rigid-body motion: the two roots of a
     // free azimuth (the multiblade average leaves them ~1e-4 Hz apart from zero) or of a free yaw
     // (zero and its decay) are one mode, as whirl's own modes count them.
+    // A zero root carried by first-order states (a coordinate with one state: HydroDyn's wave-excitation
+    // filter) is no rigid-body motion but a state that does not change by itself.
+    std::vector<int> states_per(n, 0);
+    for (int k : c.coordinate_of_state) ++states_per[k];
+    for (auto& mode : out.modes) {
+      double first_order = 0;
+      for (int i = 0; i < n; ++i)
+        if (states_per[i] == 1) first_order += mode.participation(i);
+      const std::string tag = " (rigid body)";
+      if (mode.rigid_body && first_order > 0.5 && mode.name.size() > tag.size() &&
+          mode.name.compare(mode.name.size() - tag.size(), tag.size(), tag) == 0) {
+        mode.rigid_body = false;
+        mode.name = mode.name.substr(0, mode.name.size() - tag.size()) + " (zero root)";
+      }
+    }
     // The pair's frequency and damping as modal/modes.hpp gives them: f = √(λ₁λ₂)/2π,
     // ζ = −(λ₁+λ₂)/(2√(λ₁λ₂)), zero when a root is zero.
     std::vector<Mode> kept;
