@@ -121,6 +121,21 @@ void expectSameNames(const std::string& rpm, int azimuths) {
 
 TEST(CliLinDecks, OwnLinFilesNamedAsWhirlModesAt9Rpm) { expectSameNames("9", 12); }
 
+// OpenFAST's own 9 rpm files of the toolbox NREL 5MW deck (ElastoDyn + AeroDyn + ServoDyn) and
+// `whirl modes` on that deck: the same mode names (whirl's aerodynamics differ a little, so the
+// frequencies are not compared here; tests/unit/test_mbc_openfast.cpp checks them against MBC3).
+TEST(CliLinDecks, OpenFastLinFilesNamedAsWhirlModesOnTheirDeck) {
+  const std::string d = "tests/data/openfast-lin/rotating-9rpm/";
+  const auto lin = linJson(d + "Main.1.lin " + d + "Main.12.lin " + d + "Main.24.lin");
+  const auto own = test::whirl("modes tests/data/openfast/decks/toolbox-nrel5mw/5MW_Land_Lin_Rotating/Main.fst --rpm 9 "
+                               "--format json");
+  ASSERT_EQ(own.code, 0) << own.err;
+  const auto jo = nlohmann::json::parse(own.out);
+  EXPECT_EQ(nameCounts(lin), nameCounts(jo));
+  ASSERT_EQ(lin["modes"].size(), jo["modes"].size());
+  for (size_t i = 0; i < jo["modes"].size(); ++i) EXPECT_EQ(lin["modes"][i]["name"], jo["modes"][i]["name"]) << i;
+}
+
 TEST(CliLinDecks, OwnLinFilesNamedAsWhirlModesParked) { expectSameNames("0", 1); }
 
 }  // namespace
