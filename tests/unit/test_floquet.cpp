@@ -3,6 +3,9 @@
 #include <gtest/gtest.h>
 
 #include "linearize/mbc.hpp"
+#include "linearize/periodic.hpp"
+#include "modal/modes.hpp"
+#include "tests/support/rotor_model.hpp"
 #include "modal/eigen.hpp"
 #include "modal/floquet.hpp"
 #include "src/model/error.hpp"
@@ -78,6 +81,37 @@ TEST(Floquet, TimeInvariantModelGivesItsEigenvalues) {
   int shifted = 0;
   for (int h : f.harmonic) shifted += h != 0;
   EXPECT_GT(shifted, 0);
+}
+
+// Two blades on a rigid hub at 12 rpm (tests/support/rotor_model.hpp, the model of
+// tests/unit/test_rotor_modes.cpp): each blade keeps its rotating-frame frequencies; the edge mode
+// (1.28 Hz) is 6.4 revolutions' worth of cycles, folded by ln μ / T and moved back by the harmonics.
+TEST(Floquet, TwoBladedRotorKeepsItsRotatingFrameFrequencies) {
+  const whirl::Model m = whirl::test::rotorModel(12, 2);
+  whirl::PeriodicOptions opt;
+  opt.azimuths = 8;
+  const whirl::PeriodicLinearization p = whirl::linearizePeriodic(m, whirl::initialPoint(m), opt);
+  std::vector<int> blade;
+  for (int d : p.models[0].dofs) blade.push_back(m.dofs[d].blade);
+  std::vector<whirl::MbcSample> samples;
+  for (size_t k = 0; k < p.models.size(); ++k) {
+    whirl::MbcSample s;
+    s.azimuth = p.azimuths[k];
+    s.rotor_speed = p.rotor_speed;
+    s.A = p.models[k].A;
+    samples.push_back(s);
+  }
+  const whirl::FloquetResult f = whirl::floquetAnalysis(whirl::secondOrderLayout(2, blade), samples);
+  const whirl::LinearModel& l = p.models[0];
+  const auto single = whirl::computeModes(l.M.topLeftCorner(2, 2), l.C.topLeftCorner(2, 2), l.K.topLeftCorner(2, 2),
+                                          {"flap 1", "edge 1"});
+  ASSERT_EQ(single.size(), 2u);
+  for (const auto& s : single) {
+    int found = 0;
+    for (Eigen::Index k = 0; k < f.exponents.size(); ++k)
+      if (std::abs(std::abs(f.exponents(k)) / (2 * M_PI) - s.freq_hz) < 1e-7 * s.freq_hz) ++found;
+    EXPECT_EQ(found, 4) << s.name;  // 2 blades × the conjugate pair
+  }
 }
 
 TEST(Floquet, ParkedRotorIsRefused) {
