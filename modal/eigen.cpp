@@ -46,17 +46,16 @@ Eigen::MatrixXcd unpackVectors(const Eigen::MatrixXd& VR, const Eigen::VectorXd&
 
 }  // namespace
 
-EigenDecomposition eigenStandard(const Eigen::MatrixXd& A) {
+EigenDecomposition eigenStandard(const Eigen::MatrixXd& A, bool with_left) {
   requireSquareFinite(A, "eigenStandard", "A");
   const lapack_int n = static_cast<lapack_int>(A.rows());
   EigenDecomposition out;
   if (n == 0) return out;
   Eigen::MatrixXd a = A;  // dgeev overwrites its input
   Eigen::VectorXd wr(n), wi(n);
-  Eigen::MatrixXd vr(n, n);
-  double vl_dummy = 0;
-  const lapack_int info = LAPACKE_dgeev(LAPACK_COL_MAJOR, 'N', 'V', n, a.data(), n, wr.data(), wi.data(),
-                                        &vl_dummy, 1, vr.data(), n);
+  Eigen::MatrixXd vr(n, n), vl(with_left ? n : 1, with_left ? n : 1);
+  const lapack_int info = LAPACKE_dgeev(LAPACK_COL_MAJOR, with_left ? 'V' : 'N', 'V', n, a.data(), n, wr.data(),
+                                        wi.data(), vl.data(), with_left ? n : 1, vr.data(), n);
   if (info != 0)
     throw ComputeError(where("", 0, "eigenStandard",
                              "LAPACKE_dgeev failed (info = " + std::to_string(info) +
@@ -64,6 +63,7 @@ EigenDecomposition eigenStandard(const Eigen::MatrixXd& A) {
   out.values.resize(n);
   for (lapack_int j = 0; j < n; ++j) out.values(j) = {wr(j), wi(j)};
   out.vectors = unpackVectors(vr, wi);
+  if (with_left) out.left = unpackVectors(vl, wi);  // same real format as the right vectors
   return out;
 }
 

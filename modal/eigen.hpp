@@ -17,12 +17,15 @@ namespace whirl {
 struct EigenDecomposition {
   Eigen::VectorXcd values;   ///< (dim n)
   Eigen::MatrixXcd vectors;  ///< (dim n × n), unit-norm columns
+  /// Left eigenvectors u_j (uᴴA = λ u ᴴ), unit-norm columns, when asked for; else empty.
+  Eigen::MatrixXcd left;
 };
 
 /// Solves A x = λ x (LAPACKE_dgeev, balancing on).
 /// \param[in] A square state matrix (dim n × n), finite.
+/// \param[in] with_left also the left eigenvectors (EigenDecomposition::left).
 /// \throws ComputeError if A is not square, has a non-finite entry, or LAPACK does not converge.
-EigenDecomposition eigenStandard(const Eigen::MatrixXd& A);
+EigenDecomposition eigenStandard(const Eigen::MatrixXd& A, bool with_left = false);
 
 /// Solves (λ²M + λC + K) q = 0 through the 2n pencil
 /// [[I, 0], [0, M]] λ x = [[0, I], [−K, −C]] x (LAPACKE_dggev): M is never inverted, so the

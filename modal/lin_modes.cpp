@@ -1,5 +1,6 @@
 #include "modal/lin_modes.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <utility>
@@ -10,22 +11,24 @@
 namespace whirl {
 
 RotorCoordinates linRotorCoordinates(const OpenFastLin& lin, const MbcLayout& layout) {
-  std::vector<bool> displacement(lin.x.size(), false);
-  for (int v : layout.velocity_of)
-    if (v >= 0) displacement[v] = true;
-  int n = 0;
-  while (n < static_cast<int>(displacement.size()) && displacement[n]) ++n;
-  for (size_t i = n; i < displacement.size(); ++i)
-    if (displacement[i])
-      throw InputError(where(lin.path, lin.x[i].line, "", "displacement states must come first in the state vector"));
-  if (n == 0) throw InputError(where(lin.path, 0, "", "no second-order (displacement, rate) states to analyse"));
+  const int N = static_cast<int>(lin.x.size());
   RotorCoordinates c;
-  for (int i = 0; i < n; ++i) {
-    c.names.push_back(dofNameFromLinDescription(lin.x[i].description));
+  std::vector<int> coordinate(static_cast<size_t>(N), -1);
+  // Displacements and first-order states in state order; a rate takes its displacement's coordinate,
+  // wherever it sits (ElastoDyn q, q̇ then BeamDyn q, q̇: pairs by derivative order and description).
+  for (int i = 0; i < N; ++i) {
+    if (layout.velocity_of[i] >= 0) continue;
+    coordinate[i] = static_cast<int>(c.names.size());
+    const std::string& d = lin.x[i].description;
+    const bool first_order = std::find(layout.velocity_of.begin(), layout.velocity_of.end(), i) == layout.velocity_of.end();
+    c.names.push_back(dofNameFromLinDescription(d));
+    c.groups.push_back(first_order ? firstOrderGroupFromLinDescription(d) : c.names.back());
     c.blade.push_back(layout.state_blade[i]);
-    c.azimuth.push_back(isAzimuthLinDescription(lin.x[i].description));
+    c.azimuth.push_back(!first_order && isAzimuthLinDescription(d));
   }
-  c.weights = MatX::Identity(n, n);
+  for (int i = 0; i < N; ++i)
+    if (layout.velocity_of[i] >= 0) coordinate[i] = coordinate[layout.velocity_of[i]];
+  c.coordinate_of_state = coordinate;
   return c;
 }
 
@@ -45,8 +48,19 @@ std::vector<std::vector<OpenFastLin>> groupLinByOperatingPoint(std::vector<OpenF
   return out;
 }
 
-CampbellPoint linCampbellPoint(const std::vector<OpenFastLin>& group) {
-  const MbcLayout layout = mbcLayoutFromLin(group.front());
+CampbellPoint linCampbellPoint(const std::vector<OpenFastLin>& group, std::vector<std::string>* notes) {
+  std::vector<std::size_t> left_out;
+  const MbcLayout layout = mbcLayoutFromLin(group.front(), 0, &left_out);
+  if (!left_out.empty() && notes) {
+    std::string list;
+    for (std::size_t k = 0; k < left_out.size(); ++k) {
+      const LinVariable& y = group.front().y[left_out[k]];
+      list += (k ? ", " : "") + y.description.substr(0, y.description.find(',')) + " (line " + std::to_string(y.line) + ")";
+    }
+    notes->push_back(group.front().path + ": " + std::to_string(left_out.size()) +
+                     " rotating outputs do not pair across blades and were left out of the multiblade transform "
+                     "(the modes do not use outputs): " + list);
+  }
   std::vector<MbcSample> samples;
   for (const auto& lin : group) {
     if (lin.A.rows() != group.front().A.rows())

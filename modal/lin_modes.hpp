@@ -4,6 +4,7 @@
 /// point (rotor speed, wind speed), the multiblade transform over each group's azimuths [Bir2008],
 /// the modes named as for a whirl model (modal/rotor_modes.hpp). Reading the files and writing the
 /// results stay with the caller.
+#include <string>
 #include <vector>
 
 #include "modal/campbell.hpp"
@@ -13,11 +14,10 @@
 
 namespace whirl {
 
-/// The displacement coordinates of a `.lin` file: the states whose rate is another state. They must
-/// come first, as OpenFAST writes the ElastoDyn displacements. Weights: identity (a `.lin` file has
-/// no mass matrix).
-/// \throws InputError naming the file and line of a displacement state after a first-order one, or
-///         the file when it has no second-order states.
+/// The coordinates of a `.lin` file: its displacement states (a rate state, wherever it sits, joins
+/// its displacement: MbcLayout::velocity_of) and its first-order states, in state order, named from
+/// their descriptions (src/io/openfast_lin_names.hpp). A `.lin` file has no mass matrix: the modes
+/// are named from participation factors (modal/participation.hpp).
 RotorCoordinates linRotorCoordinates(const OpenFastLin& lin, const MbcLayout& layout);
 
 /// Files grouped by operating point (rotor speed to 1e-6 rad/s, wind speed to 1e-4 m/s), groups in
@@ -27,8 +27,9 @@ RotorCoordinates linRotorCoordinates(const OpenFastLin& lin, const MbcLayout& la
 std::vector<std::vector<OpenFastLin>> groupLinByOperatingPoint(std::vector<OpenFastLin> files);
 
 /// The named modes of one operating point's files (its azimuths): rpm and wind speed from the first
-/// file's header.
+/// file's header. Rotating outputs that do not pair across blades are left out of the transform
+/// (mbcLayoutFromLin) and named in one line appended to `notes` (when given).
 /// \throws InputError when a file's states differ in number from the first file's.
-CampbellPoint linCampbellPoint(const std::vector<OpenFastLin>& group);
+CampbellPoint linCampbellPoint(const std::vector<OpenFastLin>& group, std::vector<std::string>* notes = nullptr);
 
 }  // namespace whirl

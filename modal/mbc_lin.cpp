@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <charconv>
 #include <limits>
+#include <map>
+#include <optional>
 #include <regex>
 
 #include "src/model/error.hpp"
@@ -50,20 +52,51 @@ BladeMatch matchBlade(const std::string& d) {
 
 std::string firstWord(const std::string& s) { return s.substr(0, s.find(' ')); }
 
+constexpr const char* kRate = "First time derivative of ";
+
+/// The description without the rate wording and the unit: "ED First time derivative of 1st tower
+/// fore-aft bending mode DOF (…), m/s" and "ED 1st tower fore-aft bending mode DOF (…), m" give the
+/// same key.
+std::string pairingKey(std::string d) {
+  if (const auto at = d.find(kRate); at != std::string::npos) d.erase(at, std::string(kRate).size());
+  if (const auto comma = d.rfind(", "); comma != std::string::npos && d.find_first_of("()", comma) == std::string::npos)
+    d.erase(comma);
+  return d;
+}
+
 std::vector<int> velocityOf(const OpenFastLin& lin) {
   const auto& x = lin.x;
   const std::size_t n = x.size();
   std::vector<int> vel(n, -1);
+  // As MBC3 pairs them: a rate state names the displacement it is the derivative of, wherever that
+  // sits (ElastoDyn q, q̇ then BeamDyn q, q̇); only states of derivative order 2 (or files without
+  // that column) pair.
+  std::map<std::string, std::vector<std::size_t>> displacement;
+  auto second = [&](std::size_t k) { return x[k].derivative_order == 2 || x[k].derivative_order < 0; };
+  for (std::size_t k = 0; k < n; ++k)
+    if (second(k) && x[k].description.find(kRate) == std::string::npos)
+      displacement[pairingKey(x[k].description)].push_back(k);
+  std::vector<bool> matched(n, false);
+  for (std::size_t k = 0; k < n; ++k) {
+    if (!second(k) || x[k].description.find(kRate) == std::string::npos) continue;
+    auto it = displacement.find(pairingKey(x[k].description));
+    if (it == displacement.end() || it->second.empty()) continue;
+    vel[k] = static_cast<int>(it->second.front());
+    matched[k] = matched[it->second.front()] = true;
+    it->second.erase(it->second.begin());
+  }
+  // Descriptions that do not name their displacement: a run of consecutive states of one module with
+  // derivative order 2 is split in halves, state k of the second half being the rate of state k of the first.
   for (std::size_t i = 0; i < n;) {
     std::size_t j = i;
     while (j < n && firstWord(x[j].description) == firstWord(x[i].description)) ++j;
     const std::size_t len = j - i, h = len / 2;
-    bool second = len % 2 == 0 && len > 0;
-    for (std::size_t k = i; second && k < j; ++k) {
+    bool halves = len % 2 == 0 && len > 0;
+    for (std::size_t k = i; halves && k < j; ++k) {
       const bool rate = x[k].description.find("First time derivative of") != std::string::npos;
-      second = x[k].derivative_order >= 0 ? x[k].derivative_order == 2 : rate == (k >= i + h);
+      halves = !matched[k] && (x[k].derivative_order >= 0 ? x[k].derivative_order == 2 : rate == (k >= i + h));
     }
-    if (second)
+    if (halves)
       for (std::size_t k = 0; k < h; ++k) vel[i + h + k] = static_cast<int>(i + k);
     i = j;
   }
@@ -71,10 +104,12 @@ std::vector<int> velocityOf(const OpenFastLin& lin) {
 }
 
 /// Blade (0-based, −1 fixed) of each entry of a table; checks that the sets pair like entries.
+/// left_out: null = an entry that does not pair is an InputError; otherwise such entries (a channel
+/// listed twice for one blade, a channel of one blade only) stay in the fixed frame and are listed.
 std::vector<int> bladesOf(const OpenFastLin& lin, const std::vector<LinVariable>& vars, const std::vector<int>& vel,
-                          int N, const std::string& key) {
+                          int N, const std::string& key, std::vector<std::size_t>* left_out = nullptr) {
   std::vector<int> blade(vars.size(), -1);
-  std::vector<std::vector<std::pair<std::size_t, std::string>>> per_blade(static_cast<std::size_t>(N));
+  std::vector<std::string> masked(vars.size());
   for (std::size_t i = 0; i < vars.size(); ++i) {
     if (!vars[i].rotating) continue;
     const BladeMatch m = matchBlade(vars[i].description);
@@ -84,19 +119,57 @@ std::vector<int> bladesOf(const OpenFastLin& lin, const std::vector<LinVariable>
                                          : "blade " + std::to_string(m.blade) + " of a " + std::to_string(N) +
                                                "-bladed rotor: '" + vars[i].description + "'"));
     blade[i] = m.blade - 1;
-    if (vel.empty() || vel[i] < 0) per_blade[static_cast<std::size_t>(m.blade - 1)].emplace_back(i, m.masked);
+    masked[i] = m.masked;
   }
-  for (int b = 1; b < N; ++b) {
-    const auto& first = per_blade[0];
-    const auto& other = per_blade[static_cast<std::size_t>(b)];
-    for (std::size_t j = 0; j < std::max(first.size(), other.size()); ++j) {
-      if (j < first.size() && j < other.size() && first[j].second == other[j].second) continue;
-      const auto& [i, desc] = j < other.size() ? other[j] : first[j];
-      throw InputError(where(lin.path, vars[i].line, key,
-                             "rotating entries do not pair across blades: blade 1 has " + std::to_string(first.size()) +
-                                 " and blade " + std::to_string(b + 1) + " has " + std::to_string(other.size()) +
-                                 ", mismatch at '" + vars[i].description + "'"));
+  auto perBlade = [&] {
+    std::vector<std::vector<std::pair<std::size_t, std::string>>> per(static_cast<std::size_t>(N));
+    for (std::size_t i = 0; i < vars.size(); ++i)
+      if (blade[i] >= 0 && (vel.empty() || vel[i] < 0)) per[static_cast<std::size_t>(blade[i])].emplace_back(i, masked[i]);
+    return per;
+  };
+  // The first entry at which blade b's sets differ from blade 1's, or none.
+  auto mismatch = [&](const auto& per, int b) -> std::optional<std::size_t> {
+    const auto& first = per[0];
+    const auto& other = per[static_cast<std::size_t>(b)];
+    for (std::size_t j = 0; j < std::max(first.size(), other.size()); ++j)
+      if (j >= first.size() || j >= other.size() || first[j].second != other[j].second)
+        return j < other.size() ? other[j].first : first[j].first;
+    return std::nullopt;
+  };
+  auto pairs = [&] {
+    const auto per = perBlade();
+    for (int b = 1; b < N; ++b)
+      if (mismatch(per, b)) return false;
+    return true;
+  };
+  if (left_out && !pairs()) {
+    // Leave out the channels whose count differs between blades; if the rest still does not pair
+    // (another order on another blade), every rotating entry.
+    std::map<std::string, std::vector<int>> count;
+    for (std::size_t i = 0; i < vars.size(); ++i)
+      if (blade[i] >= 0) {
+        auto& c = count[masked[i]];
+        c.resize(static_cast<std::size_t>(N), 0);
+        ++c[static_cast<std::size_t>(blade[i])];
+      }
+    for (std::size_t i = 0; i < vars.size(); ++i) {
+      const auto& c = count[masked[i]];
+      if (blade[i] >= 0 && std::any_of(c.begin(), c.end(), [&](int k) { return k != c.front(); }))
+        blade[i] = -1, left_out->push_back(i);
     }
+    if (!pairs())
+      for (std::size_t i = 0; i < vars.size(); ++i)
+        if (blade[i] >= 0) blade[i] = -1, left_out->push_back(i);
+    std::sort(left_out->begin(), left_out->end());
+  }
+  const auto per = perBlade();
+  for (int b = 1; b < N; ++b) {
+    if (const auto i = mismatch(per, b))
+      throw InputError(where(lin.path, vars[*i].line, key,
+                             "rotating entries do not pair across blades: blade 1 has " + std::to_string(per[0].size()) +
+                                 " and blade " + std::to_string(b + 1) + " has " +
+                                 std::to_string(per[static_cast<std::size_t>(b)].size()) + ", mismatch at '" +
+                                 vars[*i].description + "'"));
   }
   return blade;
 }
@@ -123,7 +196,7 @@ int highestBlade(const OpenFastLin& lin, const std::vector<LinVariable>& vars, c
 
 int bladeNumberInDescription(const std::string& description) { return matchBlade(description).blade; }
 
-MbcLayout mbcLayoutFromLin(const OpenFastLin& lin, int num_blades) {
+MbcLayout mbcLayoutFromLin(const OpenFastLin& lin, int num_blades, std::vector<std::size_t>* left_out_outputs) {
   MbcLayout L;
   L.num_blades = num_blades > 0 ? num_blades
                                 : std::max({highestBlade(lin, lin.x, "continuous states"),
@@ -132,7 +205,7 @@ MbcLayout mbcLayoutFromLin(const OpenFastLin& lin, int num_blades) {
   L.velocity_of = velocityOf(lin);
   L.state_blade = bladesOf(lin, lin.x, L.velocity_of, L.num_blades, "continuous states");
   L.input_blade = bladesOf(lin, lin.u, {}, L.num_blades, "inputs");
-  L.output_blade = bladesOf(lin, lin.y, {}, L.num_blades, "outputs");
+  L.output_blade = bladesOf(lin, lin.y, {}, L.num_blades, "outputs", left_out_outputs);
   return L;
 }
 

@@ -5,9 +5,11 @@
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <set>
 
 #include "modal/eigen.hpp"
 #include "modal/floquet.hpp"
+#include "modal/participation.hpp"
 #include "linearize/mbc.hpp"
 
 namespace whirl {
@@ -17,6 +19,11 @@ namespace {
 // multiblade average leaves it a residual frequency of order 1e-4 Hz.
 constexpr double kRigidAzimuthHz = 5e-3;
 constexpr double kHeldAloneShare = 0.05;
+
+// Slower than this (0.1 rpm) the rotor is named as parked: forward and backward whirl would differ
+// by 2Ω < 0.003 Hz, less than what separates a parked rotor's cosine and sine patterns (the
+// toolbox's standstill .lin files are linearized at Ω = 2e-4 rad/s).
+constexpr double kParkedRadPerS = 1e-2;
 
 // Names the mode from the coordinate group with the largest energy share. A vibration dominated
 // by an azimuth (a free generator turning against the rotor) or by a held coordinate
@@ -37,13 +44,14 @@ void nameRotorMode(Mode& mode, const std::vector<NamingCoordinate>& coords, cons
     if (h) hd += mode.participation(i);
     if (azimuth[i]) az += mode.participation(i);
   }
+  // A real root carried by an azimuth (the free rotor's decay) is no vibration either.
   // A mode the held coordinates carry almost alone (every other group below kHeldAloneShare of them)
   // is their own zero pair, split by weak couplings however fast it turns out (SWRT at 188 rpm: free
   // yaw and free azimuth, 95 % yaw, 0.0086 Hz, damping −0.26, the same for 12, 36 and 72 azimuths):
   // naming it after a group with a share of 5e-6 would give a confident wrong name.
   double next = 0;
   for (const auto& [g, v] : share) next = std::max(next, v);
-  if (share.empty() || (mode.freq_hz < kRigidAzimuthHz && az > 0.5) ||
+  if (share.empty() || ((mode.freq_hz < kRigidAzimuthHz || mode.damped_freq_hz == 0) && az > 0.5) ||
       (hd > 0.5 && (mode.freq_hz < kRigidAzimuthHz || mode.damped_freq_hz == 0 || next < kHeldAloneShare * hd))) {
     mode.rigid_body = true;
     share = rigid_share;
@@ -75,7 +83,7 @@ void nameRotorMode(Mode& mode, const std::vector<NamingCoordinate>& coords, cons
   if (blade) {
     if (coll >= cyclic || cosine < 0 || sine < 0) {
       name += collective >= 0 && coll >= cyclic ? " collective" : " cyclic";
-    } else if (std::abs(rotor_speed) < 1e-9) {
+    } else if (std::abs(rotor_speed) < kParkedRadPerS) {
       // Parked: forward and backward whirl coincide; say which cyclic pattern the mode took.
       name += std::abs(mode.shape(cosine)) >= std::abs(mode.shape(sine)) ? " cos" : " sin";
     } else {
@@ -87,6 +95,63 @@ void nameRotorMode(Mode& mode, const std::vector<NamingCoordinate>& coords, cons
   if (mode.rigid_body) name += " (rigid body)";
   mode.name = name;
 }
+
+namespace {
+
+// Share of a mode in the coordinates of `group` that a name suffix stands for.
+double labelShare(const Mode& mode, const std::vector<NamingCoordinate>& coords, const std::string& group, const std::string& label) {
+  double share = 0;
+  for (size_t i = 0; i < coords.size(); ++i) {
+    if (coords[i].group != group) continue;
+    const MbcCoordinate k = coords[i].kind;
+    const bool take = label == "collective" ? k.kind == MbcKind::Collective
+                      : label == "cos"      ? k.kind == MbcKind::Cosine && k.harmonic == 1
+                      : label == "sin"      ? k.kind == MbcKind::Sine && k.harmonic == 1
+                                            : k.kind == MbcKind::Cosine || k.kind == MbcKind::Sine;  // BW, FW, cyclic
+    if (take) share += mode.participation(static_cast<Eigen::Index>(i));
+  }
+  return share;
+}
+
+// One name per mode pattern: where two modes of one point got the same blade name ("flap 2 cos"
+// twice on a parked WindPACT rotor, whose collective and cosine flap patterns both couple with the
+// tower fore-aft and mix), the names of that group that no mode took (rotating: collective only) are
+// handed out again, each mode of the clash taking the name whose coordinates carry most of it
+// (largest total share over the permutations; a clash of more modes than names stays).
+void distinctBladeNames(std::vector<Mode>& modes, const std::vector<NamingCoordinate>& coords, double rotor_speed) {
+  std::set<std::string> blade_groups;
+  for (const auto& c : coords)
+    if (c.kind.kind != MbcKind::Fixed) blade_groups.insert(c.group);
+  // Rotating, the shares tell collective from cyclic, not backward from forward whirl.
+  const std::vector<std::string> labels = std::abs(rotor_speed) < kParkedRadPerS
+                                              ? std::vector<std::string>{"collective", "cos", "sin"}
+                                              : std::vector<std::string>{"collective"};
+  for (const std::string& group : blade_groups) {
+    std::map<std::string, std::vector<size_t>> by_label;
+    for (size_t m = 0; m < modes.size(); ++m) {
+      if (modes[m].rigid_body || modes[m].name.rfind(group + " ", 0) != 0) continue;
+      by_label[modes[m].name.substr(group.size() + 1)].push_back(m);
+    }
+    for (const auto& [label, clash] : by_label) {
+      if (clash.size() < 2) continue;
+      std::vector<std::string> names = {label};
+      for (const auto& l : labels)
+        if (l != label && !by_label.count(l)) names.push_back(l);
+      if (names.size() < clash.size()) continue;
+      std::vector<size_t> perm(names.size()), best;
+      for (size_t k = 0; k < perm.size(); ++k) perm[k] = k;
+      double best_score = -1;
+      do {
+        double score = 0;
+        for (size_t k = 0; k < clash.size(); ++k) score += labelShare(modes[clash[k]], coords, group, names[perm[k]]);
+        if (score > best_score + 1e-12) best_score = score, best = perm;
+      } while (std::next_permutation(perm.begin(), perm.end()));
+      for (size_t k = 0; k < clash.size(); ++k) modes[clash[k]].name = group + " " + names[best[k]];
+    }
+  }
+}
+
+}  // namespace
 
 std::string bladeBaseName(const std::string& n) {
   std::string lower = n;
@@ -128,6 +193,13 @@ RotorModes rotorModes(const Model& m, const PeriodicLinearization& p) {
 RotorModes multibladeModes(const RotorCoordinates& c, const MbcLayout& layout, const std::vector<MbcSample>& samples) {
   RotorModes out;
   const int n = static_cast<int>(c.names.size());
+  const bool by_participation = !c.coordinate_of_state.empty();
+  // State that carries each coordinate (its displacement, or the first-order state).
+  std::vector<int> state_of(n);
+  for (int i = 0; i < n; ++i) state_of[i] = i;
+  if (by_participation)
+    for (int s = static_cast<int>(c.coordinate_of_state.size()) - 1; s >= 0; --s) state_of[c.coordinate_of_state[s]] = s;
+  auto groupOf = [&](int i) { return c.groups.empty() ? c.names[i] : c.groups[i]; };
   int nb = 0;
   for (int b : c.blade) nb = std::max(nb, b + 1);
   const double rotor_speed = samples.front().rotor_speed;
@@ -144,7 +216,7 @@ RotorModes multibladeModes(const RotorCoordinates& c, const MbcLayout& layout, c
   if (nb < 3) {
     // No transform: with fewer than 3 blades the transformed system stays periodic.
     out.A = samples.front().A;
-    for (int i = 0; i < n; ++i) coords[i].group = c.names[i];
+    for (int i = 0; i < n; ++i) coords[i].group = groupOf(i);
     out.coordinates = c.names;
   } else {
     out.num_blades = nb;
@@ -154,22 +226,61 @@ RotorModes multibladeModes(const RotorCoordinates& c, const MbcLayout& layout, c
     std::vector<std::vector<int>> per_blade(nb);
     for (int i = 0; i < n; ++i)
       if (c.blade[i] >= 0) per_blade[c.blade[i]].push_back(i);
+    out.coordinates.resize(n);
     for (int i = 0; i < n; ++i) {
-      coords[i].kind = mbc.states[i];
+      coords[i].kind = mbc.states[state_of[i]];
       if (c.blade[i] < 0) {
-        coords[i].group = c.names[i];
+        coords[i].group = groupOf(i);
+        out.coordinates[i] = c.names[i];
         continue;
       }
       const auto& list = per_blade[c.blade[i]];
       const size_t j = std::find(list.begin(), list.end(), i) - list.begin();
-      coords[i].group = bladeBaseName(c.names[per_blade[0].at(j)]);
+      coords[i].group = bladeBaseName(groupOf(per_blade[0].at(j)));
+      out.coordinates[i] = bladeBaseName(c.names[per_blade[0].at(j)]) + " " + toString(coords[i].kind);
     }
-    out.coordinates.resize(n);
-    for (int i = 0; i < n; ++i)
-      out.coordinates[i] = c.blade[i] < 0 ? coords[i].group : coords[i].group + " " + toString(coords[i].kind);
   }
-  out.modes = modesFromEigen(eigenStandard(out.A), n, c.weights, out.coordinates);
+  out.modes = by_participation ? participationModes(eigenStandard(out.A, true), c.coordinate_of_state, out.coordinates)
+                               : modesFromEigen(eigenStandard(out.A), n, c.weights, out.coordinates);
   for (auto& mode : out.modes) nameRotorMode(mode, coords, c.azimuth, c.held, rotor_speed);
+  if (nb >= 3) distinctBladeNames(out.modes, coords, rotor_speed);
+  if (by_participation) {
+    // Real roots listed one by one (participationModes) but one rigid-body motion: the two roots of a
+    // free azimuth (the multiblade average leaves them ~1e-4 Hz apart from zero) or of a free yaw
+    // (zero and its decay) are one mode, as whirl's own modes count them.
+    // A zero root carried by first-order states (a coordinate with one state: HydroDyn's wave-excitation
+    // filter) is no rigid-body motion but a state that does not change by itself.
+    std::vector<int> states_per(n, 0);
+    for (int k : c.coordinate_of_state) ++states_per[k];
+    for (auto& mode : out.modes) {
+      double first_order = 0;
+      for (int i = 0; i < n; ++i)
+        if (states_per[i] == 1) first_order += mode.participation(i);
+      const std::string tag = " (rigid body)";
+      if (mode.rigid_body && first_order > 0.5 && mode.name.size() > tag.size() &&
+          mode.name.compare(mode.name.size() - tag.size(), tag.size(), tag) == 0) {
+        mode.rigid_body = false;
+        mode.name = mode.name.substr(0, mode.name.size() - tag.size()) + " (zero root)";
+      }
+    }
+    // The pair's frequency and damping as modal/modes.hpp gives them: f = √(λ₁λ₂)/2π,
+    // ζ = −(λ₁+λ₂)/(2√(λ₁λ₂)), zero when a root is zero.
+    std::vector<Mode> kept;
+    for (auto& mode : out.modes) {
+      const auto k = std::find_if(kept.begin(), kept.end(), [&](const Mode& m) {
+        return m.rigid_body && m.damped_freq_hz == 0 && m.name == mode.name;
+      });
+      if (!mode.rigid_body || mode.damped_freq_hz != 0 || k == kept.end()) {
+        kept.push_back(std::move(mode));
+        continue;
+      }
+      const double l1 = -k->damping_ratio * k->freq_hz, l2 = -mode.damping_ratio * mode.freq_hz;  // λ/2π
+      const double f = std::sqrt(std::abs(l1 * l2));
+      k->damping_ratio = f > 0 ? -(l1 + l2) / (2 * f) : 0;
+      k->freq_hz = f;
+    }
+    out.modes = std::move(kept);
+  }
   return out;
 }
 

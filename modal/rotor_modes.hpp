@@ -37,10 +37,19 @@ struct RotorCoordinates {
   /// none. A slow mode carried by them is a rigid-body mode, like the azimuth's.
   std::vector<bool> held;
   MatX weights;                    ///< n × n, weighs participations (a mass matrix or its diagonal)
+  /// Empty: the states are [q; q̇; first-order] and `weights` weighs the participations. Otherwise
+  /// (a `.lin` file: no mass matrix, states in any order) the coordinate of each state, the
+  /// coordinates being the displacements and first-order states in state order, and the modes come
+  /// from participation factors (modal/participation.hpp); `weights` is not used.
+  std::vector<int> coordinate_of_state;
+  /// Naming group of each coordinate (dim n) when several coordinates name one thing (the 14
+  /// radiation states of a platform surge); empty: each coordinate is its own group.
+  std::vector<std::string> groups;
 };
 
 /// Modes of per-azimuth models (states: the n coordinates first, their rates next, then any
-/// first-order states, as `layout` says): multiblade average when ≥ 3 blades, else the first sample.
+/// first-order states, as `layout` says; or any order, RotorCoordinates::coordinate_of_state):
+/// multiblade average when ≥ 3 blades, else the first sample.
 RotorModes multibladeModes(const RotorCoordinates& coords, const MbcLayout& layout,
                            const std::vector<MbcSample>& samples);
 

@@ -24,6 +24,10 @@ and with `--set CompAero=0` (the structural model of the same deck, no AeroDyn r
 certification tests Test19–25 are left out (HydroDyn, SubDyn, moorings: another issue). "refused"
 quotes the first line of the message; paths are relative to the decks folder.
 Regenerate with `bash scripts/deck-table.sh > docs/decks.md` (after building `build/whirl`).
+The slow CTest suite `EveryDeckSlow` (`tests/cli/test_cli_every_deck.cpp`, on copies of these decks in
+`tests/data/openfast/decks`) runs each of them with `whirl modes --rpm 0` and `whirl campbell` from 0 to
+rated rotor speed, as shipped and structure only, and fails on a refusal it does not list with its
+reason below, on a crash or on an operating point that does not converge.
 
 HEAD
 echo "| deck | \`whirl modes DECK\` | \`whirl modes DECK --set CompAero=0\` (structure only) |"

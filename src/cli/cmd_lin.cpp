@@ -10,6 +10,7 @@
 #include "src/writers/output_set.hpp"
 #include "src/io/openfast_lin.hpp"
 #include "src/model/error.hpp"
+#include "src/model/text.hpp"
 
 namespace whirl::cli {
 namespace {
@@ -26,7 +27,9 @@ void run(const LinOptions& opt) {
   const std::vector<std::vector<OpenFastLin>> groups = groupLinByOperatingPoint(std::move(lins));
   CampbellDiagram d;
   d.title = "Campbell diagram: OpenFAST linearization";
-  for (const auto& group : groups) d.points.push_back(linCampbellPoint(group));
+  std::vector<std::string> notes;
+  for (const auto& group : groups) d.points.push_back(linCampbellPoint(group, &notes));
+  for (const auto& n : notes) std::fprintf(stderr, "whirl: note: %s\n", escapeControlCharacters(n).c_str());
   if (d.points.size() == 1) {
     nlohmann::json header;
     header["files"] = opt.files;

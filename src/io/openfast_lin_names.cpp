@@ -1,11 +1,28 @@
 #include "src/io/openfast_lin_names.hpp"
 
+#include <cctype>
 #include <regex>
+#include <utility>
 
 namespace whirl {
 namespace {
 
 std::string ordinal(const std::string& s) { return s.substr(0, 1); }  // "1st" → "1"
+
+/// HydroDyn's platform states (its state-space models of the radiation memory, SS_Rad, and of the
+/// wave excitation, SS_Exctn): "HD RdtnPtfmSg3" → "HydroDyn radiation surge 3".
+std::string hydroDynName(const std::string& d) {
+  static const std::regex re(R"(^HD (Rdtn|Exctn)Ptfm(Sg|Sw|Hv|R|P|Y)(\d*))");
+  std::smatch m;
+  if (!std::regex_search(d, m, re)) return "";
+  static const std::pair<const char*, const char*> dirs[] = {{"Sg", "surge"}, {"Sw", "sway"}, {"Hv", "heave"},
+                                                             {"R", "roll"},   {"P", "pitch"}, {"Y", "yaw"}};
+  std::string dir;
+  for (const auto& [key, word] : dirs)
+    if (m[2] == key) dir = word;
+  return std::string("HydroDyn ") + (m[1] == "Rdtn" ? "radiation " : "wave excitation ") + dir +
+         (m[3].length() ? " " + m[3].str() : "");
+}
 
 }  // namespace
 
@@ -17,7 +34,13 @@ std::string dofNameFromLinDescription(const std::string& d) {
   static const std::regex tower(R"((\d)(?:st|nd|rd|th) tower (fore-aft|side-to-side))", std::regex::icase);
   static const std::regex blade(R"((\d)(?:st|nd|rd|th) (flapwise|edgewise) bending-mode DOF of blade (\d+))",
                                 std::regex::icase);
+  static const std::regex beamdyn(
+      R"(^BD_(\d+) (?:First time derivative of )?finite element node (\d+).*(translational|rotational) displacement in ([XYZ]))");
   std::smatch m;
+  if (std::regex_search(d, m, beamdyn))
+    return "blade " + m[1].str() + " BD node " + m[2].str() + (m[3] == "translational" ? " translation " : " rotation ") +
+           m[4].str();
+  if (const std::string hd = hydroDynName(d); !hd.empty()) return hd;
   if (std::regex_search(d, m, tower))
     return std::string("tower ") + (m[2].str()[0] == 'f' || m[2].str()[0] == 'F' ? "FA " : "SS ") + ordinal(m[1]);
   if (std::regex_search(d, m, blade))
@@ -47,6 +70,12 @@ std::string dofNameFromLinDescription(const std::string& d) {
   const auto comma = s.rfind(", ");
   if (comma != std::string::npos && s.size() - comma < 10) s = s.substr(0, comma);  // ", m" / ", rad"
   return s;
+}
+
+std::string firstOrderGroupFromLinDescription(const std::string& d) {
+  std::string s = dofNameFromLinDescription(d);
+  while (!s.empty() && (std::isdigit(static_cast<unsigned char>(s.back())) || s.back() == ' ')) s.pop_back();
+  return s.empty() ? dofNameFromLinDescription(d) : s;
 }
 
 }  // namespace whirl

@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <map>
+#include <nlohmann/json.hpp>
 
 #include "tests/cli/cli_support.hpp"
 
@@ -45,6 +47,21 @@ TEST(CliDecks, PlatformDofsOneLineOneReason) {
   EXPECT_EQ(r.err.find(';'), std::string::npos) << r.err;
   EXPECT_EQ(lines(r.err), 1) << r.err;
   EXPECT_EQ(r.err.find("not supported"), r.err.rfind("not supported")) << r.err;
+}
+
+// WindPACT 1.5 MW parked (certification Test14, no aero): its collective and cosine second flap
+// patterns both couple with the tower fore-aft and mix; before issue 16 both modes were named
+// "flap 2 cos" and none "flap 2 collective". One name per mode pattern.
+TEST(CliDecks, WindPactParkedOneNamePerModePattern) {
+  const auto r = test::whirl("modes " + kDecks + "certtest/Test14.fst --rpm 0 --format json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::map<std::string, int> count;
+  const auto j = nlohmann::json::parse(r.out);
+  for (const auto& m : j["modes"]) ++count[m["name"].get<std::string>()];
+  for (const auto& [name, n] : count) EXPECT_EQ(n, 1) << name;
+  EXPECT_EQ(count["flap 2 collective"], 1);
+  EXPECT_EQ(count["flap 2 cos"], 1);
+  EXPECT_EQ(count["flap 2 sin"], 1);
 }
 
 }  // namespace
