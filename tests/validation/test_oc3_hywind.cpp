@@ -90,5 +90,23 @@ TEST(Oc3Hywind, PlatformFrequenciesParked) {
   test::expectMatchesReference(kCase, computed);
 }
 
+// The mean offset under a steady rotor thrust comes out of the operating point: the catenaries are
+// solved at the displaced fairleads inside the residual. 800 kN (about the NREL 5MW's rated thrust)
+// along the shaft at the hub: the platform surges and pitches downwind until the lines' pull, the
+// hydrostatics and gravity balance it. (whirl: surge 27.9 m, pitch 0.0977 rad; no published
+// counterpart checked here.)
+TEST(Oc3Hywind, MeanOffsetUnderThrust) {
+  Model m = oc3Model();
+  m.inputs[*m.findInput("rotor thrust")].value = 8e5;
+  const OperatingPoint op = solveOperatingPoint(m, initialPoint(m));
+  const LinearModel lin = linearize(m, op);
+  EXPECT_LT(lin.residual.lpNorm<Eigen::Infinity>(), 1e-8 * 8e5) << "not an equilibrium";
+  const double surge = op.q(*m.findDof("platform surge")), pitch = op.q(*m.findDof("platform pitch"));
+  std::printf("surge %.4f m, pitch %.5f rad under 800 kN\n", surge, pitch);
+  EXPECT_GT(surge, 0.0);
+  EXPECT_GT(pitch, 0.0);
+  EXPECT_NEAR(op.q(*m.findDof("platform sway")), 0.0, 1e-3);  // turbine and lines symmetric about the x-z plane
+}
+
 }  // namespace
 }  // namespace whirl
