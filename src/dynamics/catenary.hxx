@@ -4,6 +4,7 @@
 /// branch] and the Newton solve.
 #include <cmath>
 #include <string>
+#include <type_traits>
 
 #include "src/dynamics/catenary.hpp"
 #include "src/model/error.hpp"
