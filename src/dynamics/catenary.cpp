@@ -12,7 +12,7 @@ namespace {
 using AD2 = Eigen::AutoDiffScalar<Eigen::Vector2d>;
 constexpr double kMaxStrain = 0.2;
 
-// Starting tensions of FAST's quasi-static mooring solver [Jonkman2007, eq. 4-5 and 4-6], after
+// Starting tensions of FAST's quasi-static mooring solver [Jonkman2007], after
 // Peyrot and Goulois (1979).
 void initialGuess(const MooringLine& ln, double l, double h, double& H, double& V) {
   const double w = ln.weight, L = ln.length;

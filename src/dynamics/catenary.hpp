@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// Fairlead tension of a quasi-static elastic catenary mooring line with seabed contact and friction
-/// [Jonkman2007, §4.2] (the equations of FAST's quasi-static mooring module and of MAP++'s single
+/// [Jonkman2007] (the equations of FAST's quasi-static mooring module and of MAP++'s single
 /// line): given the fairlead's horizontal distance l from the anchor and its height h above it, the
 /// horizontal and vertical fairlead tensions H, V solve
 ///   l = x(H, V),  h = z(H, V)

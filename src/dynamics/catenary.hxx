@@ -1,7 +1,7 @@
 #pragma once
 /// \file
-/// Templates of catenary.hpp: the profile equations [Jonkman2007, eq. 4-1 to 4-3 and the seabed
-/// branch] and the Newton solve.
+/// Templates of catenary.hpp: the profile equations of the elastic catenary, free-hanging and with
+/// seabed contact [Jonkman2007], and the Newton solve.
 #include <cmath>
 #include <string>
 #include <type_traits>

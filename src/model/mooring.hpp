@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// A quasi-static mooring line: an elastic catenary from a fairlead on a body to an anchor fixed to
-/// the ground, with seabed contact and friction [Jonkman2007, §4.2], as MAP++ and FAST's quasi-static
+/// the ground, with seabed contact and friction [Jonkman2007], as MAP++ and FAST's quasi-static
 /// mooring module describe it. Plain data; the tension comes from src/dynamics/catenary.hpp.
 #include <string>
 

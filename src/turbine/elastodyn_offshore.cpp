@@ -21,7 +21,7 @@ double water(const io::OpenFastTurbine& t, std::optional<double> hd, std::option
   throw InputError(t.fst.source.where(key, "not in the .fst nor in the HydroDyn file: the floating platform needs it"));
 }
 
-// HydroDyn with a WAMIT body [Jonkman2007, §4.1]: buoyancy ρ g V0 at the centre of buoyancy, the
+// HydroDyn with a WAMIT body [Jonkman2007]: buoyancy ρ g V0 at the centre of buoyancy, the
 // hydrostatic restoring of the `.hst` file (about the platform reference point, the WAMIT origin),
 // the infinite-frequency added mass of the `.1` file, AddF0, AddCLin, AddBLin. AddBQuad's force
 // −B |v| v has zero derivative at a static point (v = 0): nothing in the linear model.

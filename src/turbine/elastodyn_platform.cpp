@@ -1,5 +1,5 @@
 // The ElastoDyn platform: a rigid body on a free joint at the platform reference point, carrying the
-// tower base [Jonkman2007, §3] (ElastoDyn's platform DOFs).
+// tower base [Jonkman2007] (ElastoDyn's platform DOFs).
 #include <numbers>
 
 #include "src/io/openfast_support.hpp"

@@ -113,6 +113,16 @@ TEST(MapInput, ConnectNodesAreRefusedOnTheirLine) {
             file + ":8: Type: connect nodes (multi-segment lines) are not supported by whirl: only anchor-to-fairlead lines");
 }
 
+TEST(MapInput, VerticalTendonIsRefused) {
+  test::TempDir dir;
+  std::string text = test::slurp(kMap);
+  text.replace(text.find("853.87"), 6, "5.2");
+  const std::string file = dir.write("map.dat", text);
+  const io::MapInput m = io::read_map(file);
+  EXPECT_THAT(errorOf([&] { io::map_mooring_lines(m, 0, 320, 1025, 9.80665); }),
+              StartsWith(file + ":13: NodeAnch: the anchor is straight below its fairlead: vertical lines"));
+}
+
 TEST(MapInput, FloatingLineIsAnInputError) {
   const io::MapInput m = io::read_map(kMap);
   EXPECT_THAT(errorOf([&] { io::map_mooring_lines(m, 0, 320, 20000, 9.80665); }),
