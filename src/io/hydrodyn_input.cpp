@@ -1,5 +1,6 @@
 #include "src/io/hydrodyn_input.hpp"
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 

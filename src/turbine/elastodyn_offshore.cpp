@@ -2,6 +2,7 @@
 // linearization of a floating platform contains about a still-water point.
 #include <Eigen/Eigenvalues>
 #include <cmath>
+#include <optional>
 
 #include "src/dynamics/catenary.hpp"
 #include "src/io/elastodyn_common.hpp"
