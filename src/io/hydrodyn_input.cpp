@@ -118,6 +118,13 @@ HydroDynInput read_hydrodyn(const std::filesystem::path& file, OverrideSet* over
     h.notes.push_back(f.where("WaveMod", "incident waves ignored: the linearization is about still water"));
   if (f.find_int("CurrMod").value_or(0) != 0)
     h.notes.push_back(f.where("CurrMod", "current ignored: the linearization is about still water"));
+  // HydroDyn v2's force flags: False switches a platform direction's hydrodynamic loads off.
+  for (const char* key : {"PtfmSgF", "PtfmSwF", "PtfmHvF", "PtfmRF", "PtfmPF", "PtfmYF"})
+    if (const OpenFastEntry* e = f.find(key)) {
+      const std::string v = to_lower(e->raw);
+      r.add_if(v != "true" && v != "t" && v != "default" && v != "\"default\"", key,
+               "switching a direction's hydrodynamic loads off is not modelled", "True or DEFAULT");
+    }
   r.add_if(f.find_int("NFillGroups").value_or(0) != 0, "NFillGroups", "filled (ballasted) members are not modelled");
   r.add_if(f.find_int("NMGDepths").value_or(0) != 0, "NMGDepths", "marine growth is not modelled");
   checkMembers(f, lines, r);

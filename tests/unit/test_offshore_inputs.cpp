@@ -64,6 +64,13 @@ TEST(HydroDynInput, RadiationConvolutionIsRefusedAsInOpenFast) {
   EXPECT_EQ(msg.find('\n'), std::string::npos);
 }
 
+TEST(HydroDynInput, ForceFlagOffIsRefused) {
+  io::OverrideSet set({io::parse_override("RdtnMod=0"), io::parse_override("PtfmPF=False")});
+  EXPECT_EQ(errorOf([&] { io::read_hydrodyn(kHydro, &set); }),
+            kHydro + ":66: PtfmPF: False not supported by whirl (switching a direction's hydrodynamic loads off is "
+                     "not modelled; whirl supports only True or DEFAULT) (value set by override)");
+}
+
 TEST(HydroDynInput, Oc3HywindWamitMatrices) {
   const io::HydroDynInput h = hydroWithRdtn0();
   const double rho = 1025, g = 9.80665;
