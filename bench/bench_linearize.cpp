@@ -99,6 +99,22 @@ void nrel5mwCampbell(benchmark::State& state) {
 }
 BENCHMARK(nrel5mwCampbell)->Unit(benchmark::kMillisecond);
 
+// OC3-Hywind (cases/oc3_hywind, OpenFAST Test24) structure, platform, HydroDyn's linear terms and the
+// three catenary lines, 0 to 12 rpm by 1 × 36 azimuths (issue 17: ≤ 1 s on one core); no AeroDyn.
+void oc3HywindCampbell(benchmark::State& state) {
+  const Model m = readElastoDynModel(std::string(WHIRL_SOURCE_DIR) + "/cases/oc3_hywind/Test24.fst",
+                                     {"CompAero=0", "RdtnMod=0"});
+  const std::vector<SweepPoint> pts = rpmRange("0:1:12");
+  SweepOptions opt;
+  opt.azimuths = 36;
+  for (auto _ : state) {
+    auto points = campbellSweep(m, pts, opt);
+    benchmark::DoNotOptimize(points.data());
+  }
+  state.counters["linearizations"] = 12 * 36 + 1;
+}
+BENCHMARK(oc3HywindCampbell)->Unit(benchmark::kMillisecond);
+
 // The aeroelastic Campbell diagram of the main command: 23 wind speeds (3–25 m/s), each trimmed (rotor
 // speed or pitch for the torque balance), then 36 azimuths of equilibrium (induction solved on the
 // deflected geometry) and frozen-wake linearization, multiblade average and eigenanalysis.

@@ -63,7 +63,13 @@ Model loadModel(const ModelOptions& opt) {
     for (const auto& s : opt.sets) overrides.push_back(parseOverride(s));
     m = readCase(opt.case_path, overrides, nullptr, opt.allow_outside_files);
   } else {
-    m = readElastoDynModel(opt.case_path, opt.sets);
+    ElastoDynModelOptions eo;
+    const io::OpenFastTurbine t = readElastoDynTurbine(opt.case_path, opt.sets, eo);
+    m = buildElastoDynModel(t, eo);
+    // HydroDyn inputs read and left out of the linear model (waves, currents): one line each.
+    if (t.hydrodyn && parallel::rank() == 0)
+      for (const std::string& n : t.hydrodyn->notes)
+        std::fprintf(stderr, "whirl: note: %s\n", escapeControlCharacters(n).c_str());
   }
   // Every command that takes a model linearizes it: refuse an empty state before any work or output.
   requireActiveDof(m, opt.case_path);

@@ -3,6 +3,7 @@
 #include "src/dynamics/body_forces.hxx"
 #include "src/dynamics/generator_torque.hpp"
 #include "src/dynamics/kinematics.hxx"
+#include "src/dynamics/mooring_loads.hxx"
 #include "src/dynamics/point_force.hxx"
 #include "src/dynamics/residual.hpp"
 
@@ -180,6 +181,7 @@ void residual(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T
           if (!detail::bodyVaries(m, m.aero.blades[b].body, q, qd, qdd)) skip |= std::uint64_t{1} << b;
     if (skip) ws.complete = false;
     addAeroLoads(m, ws, q, u, frozen, record, e, skip);
+    detail::addMooringLoads(m, ws, e);
   } else {
     ws.complete = false;
   }

@@ -75,6 +75,10 @@ FstInput read_fst(const std::filesystem::path& file, OverrideSet* overrides) {
   in.ServoFile = path_of_first(f, {"ServoFile", "SrvDFile"});
   in.AeroFile = path_of_first(f, {"AeroFile", "ADFile"});
   in.InflowFile = path_of_first(f, {"InflowFile"});
+  in.HydroFile = path_of_first(f, {"HydroFile"});
+  in.MooringFile = path_of_first(f, {"MooringFile"});
+  in.WtrDens = f.find_double("WtrDens");
+  in.WtrDpth = f.find_double("WtrDpth");
   return in;
 }
 

@@ -39,6 +39,10 @@ struct FstInput {
   std::optional<std::filesystem::path> ServoFile; ///< ServoDyn file (key `SrvDFile` in FAST 8.0x)
   std::optional<std::filesystem::path> AeroFile;  ///< AeroDyn file (key `ADFile` in FAST 8.0x); read by readAeroDeck
   std::optional<std::filesystem::path> InflowFile;  ///< InflowWind file (key `InflowFile` in every layout); read by readAeroDeck
+  std::optional<std::filesystem::path> HydroFile;   ///< HydroDyn file; read with platform DOFs and CompHydro = 1
+  std::optional<std::filesystem::path> MooringFile; ///< mooring file; read (MAP++) with platform DOFs and CompMooring = 1
+  std::optional<double> WtrDens;  ///< water density (kg/m³), OpenFAST v3.5+ (before, in HydroDyn)
+  std::optional<double> WtrDpth;  ///< water depth (m), OpenFAST v3.5+ (before, in HydroDyn)
 };
 
 /// Reads a `.fst` file. Switches absent from a layout read as 0 (CompElast as 1: ElastoDyn was the only

@@ -17,17 +17,12 @@ std::vector<std::string> unsupported_options(const FstInput& fst) {
   return r.take();
 }
 
-std::vector<std::string> unsupported_options(const ElastoDynInput& ed) {
-  Refusals r(ed.source);
+namespace {
+
+// One refusal for all platform DOFs, at the first one that is on: one reason, one clause. Floating
+// platforms are modelled with HydroDyn and/or a MAP++ mooring; with neither, nothing holds them.
+void refusePlatformWithoutSupport(const ElastoDynInput& ed, Refusals& r) {
   const ElastoDynDofs& d = ed.dof;
-  // A teetering hub exists only on 2 blades: one reason, with the teeter named in it.
-  r.add_if(ed.config.NumBl != 3, "NumBl",
-           d.TeetDOF ? "only 3-bladed rotors are modelled, and no teetering hub: TeetDOF is on too"
-                     : "only 3-bladed rotors are modelled");
-  r.add_if(ed.Furling, "Furling", "rotor and tail furl are not modelled");
-  r.add_if(d.PitchDOF.value_or(false), "PitchDOF", "blade pitch flexibility is not modelled");
-  r.add_if(ed.YawFrctMod.value_or(0) != 0, "YawFrctMod", "yaw-bearing friction is not smooth and cannot be linearized");
-  // One refusal for all platform DOFs, at the first one that is on: one reason, one clause.
   const std::pair<bool, const char*> platform[] = {{d.PtfmSgDOF, "PtfmSgDOF"}, {d.PtfmSwDOF, "PtfmSwDOF"},
                                                    {d.PtfmHvDOF, "PtfmHvDOF"}, {d.PtfmRDOF, "PtfmRDOF"},
                                                    {d.PtfmPDOF, "PtfmPDOF"},   {d.PtfmYDOF, "PtfmYDOF"}};
@@ -41,16 +36,53 @@ std::vector<std::string> unsupported_options(const ElastoDynInput& ed) {
   }
   r.add_if(!first.empty(), first,
            "platform DOFs are not modelled" + (others.empty() ? std::string() : ", and " + others + " are on too") +
-               ": no hydrostatics or mooring, the tower base is clamped");
+               ": no hydrostatics or mooring (CompHydro = 0, CompMooring = 0) holds the platform");
+}
+
+}  // namespace
+
+bool has_platform_dofs(const ElastoDynInput& ed) {
+  const ElastoDynDofs& d = ed.dof;
+  return d.PtfmSgDOF || d.PtfmSwDOF || d.PtfmHvDOF || d.PtfmRDOF || d.PtfmPDOF || d.PtfmYDOF;
+}
+
+std::vector<std::string> unsupported_options(const ElastoDynInput& ed) {
+  Refusals r(ed.source);
+  const ElastoDynDofs& d = ed.dof;
+  // A teetering hub exists only on 2 blades: one reason, with the teeter named in it.
+  r.add_if(ed.config.NumBl != 3, "NumBl",
+           d.TeetDOF ? "only 3-bladed rotors are modelled, and no teetering hub: TeetDOF is on too"
+                     : "only 3-bladed rotors are modelled");
+  r.add_if(ed.Furling, "Furling", "rotor and tail furl are not modelled");
+  r.add_if(d.PitchDOF.value_or(false), "PitchDOF", "blade pitch flexibility is not modelled");
+  r.add_if(ed.YawFrctMod.value_or(0) != 0, "YawFrctMod", "yaw-bearing friction is not smooth and cannot be linearized");
   r.add_if(ed.config.TwrRBHt.value_or(0.0) != 0.0, "TwrRBHt", "a rigid tower-base segment is not modelled");
   return r.take();
 }
 
-void require_supported(const ElastoDynInput& ed) { throw_if_any(unsupported_options(ed)); }
+void require_supported(const ElastoDynInput& ed) {
+  std::vector<std::string> issues = unsupported_options(ed);
+  Refusals r(ed.source);
+  refusePlatformWithoutSupport(ed, r);
+  for (std::string& s : r.take()) issues.push_back(std::move(s));
+  throw_if_any(issues);
+}
 
 void require_supported(const OpenFastTurbine& turbine) {
   std::vector<std::string> issues = unsupported_options(turbine.fst);
   for (std::string& s : unsupported_options(turbine.elastodyn)) issues.push_back(std::move(s));
+  const FstInput& fst = turbine.fst;
+  if (has_platform_dofs(turbine.elastodyn)) {
+    Refusals r(fst.source);
+    r.add_if(fst.CompMooring > 1, "CompMooring", "only MAP++ mooring files are read", "CompMooring = 0 or 1 (MAP++)");
+    r.add_if(fst.CompHydro > 1, "CompHydro", "unknown hydrodynamics module", "CompHydro = 0 or 1 (HydroDyn)");
+    for (std::string& s : r.take()) issues.push_back(std::move(s));
+    if (fst.CompHydro == 0 && fst.CompMooring == 0) {
+      Refusals p(turbine.elastodyn.source);
+      refusePlatformWithoutSupport(turbine.elastodyn, p);
+      for (std::string& s : p.take()) issues.push_back(std::move(s));
+    }
+  }
   throw_if_any(issues);
 }
 

@@ -15,16 +15,21 @@ namespace whirl::io {
 
 /// Options of the `.fst` whirl cannot model: CompElast != 1 (BeamDyn or Simplified-ElastoDyn blades),
 /// CompSub != 0 (flexible substructure), MHK != 0 (buoyancy, added mass), NRotors > 1.
-/// Load modules (aero, inflow, hydro, mooring, controls) are not listed: whirl's structural model leaves
-/// them out, and the platform DOFs they would act on are refused below.
+/// Load modules are not listed here: aero, inflow and controls are read on request; HydroDyn and MAP++
+/// are read when a platform DOF is on (require_supported checks the combination).
 std::vector<std::string> unsupported_options(const FstInput& fst);
 
 /// Options of the ElastoDyn files whirl cannot model: NumBl != 3, TeetDOF with a 2-bladed rotor,
-/// Furling, PitchDOF (v5), YawFrctMod != 0 (yaw friction, not smooth), any platform DOF (no
-/// hydrostatics or mooring: the tower base is clamped), a rigid tower base TwrRBHt != 0 (v1.00).
+/// Furling, PitchDOF (v5), YawFrctMod != 0 (yaw friction, not smooth), a rigid tower base TwrRBHt != 0
+/// (v1.00).
 std::vector<std::string> unsupported_options(const ElastoDynInput& ed);
 
+/// Any of PtfmSgDOF … PtfmYDOF is on.
+bool has_platform_dofs(const ElastoDynInput& ed);
+
 /// Throws InputError listing every unsupported option ("; "-separated, first one first) when there is any.
+/// Platform DOFs are refused (one clause) when nothing holds the platform: an ElastoDyn file alone,
+/// or a deck with CompHydro = 0 and CompMooring = 0; and with a mooring module other than MAP++.
 void require_supported(const ElastoDynInput& ed);
 void require_supported(const OpenFastTurbine& turbine);
 

@@ -8,6 +8,8 @@
 
 #include "src/io/elastodyn_input.hpp"
 #include "src/io/fst_input.hpp"
+#include "src/io/hydrodyn_input.hpp"
+#include "src/io/map_input.hpp"
 #include "src/io/servodyn_input.hpp"
 
 namespace whirl::io {
@@ -18,9 +20,12 @@ class OverrideSet;
 struct OpenFastTurbine {
   FstInput fst;
   ElastoDynInput elastodyn;
+  std::optional<HydroDynInput> hydrodyn;  ///< with a platform DOF on and CompHydro = 1
+  std::optional<MapInput> mooring;        ///< with a platform DOF on and CompMooring = 1
 };
 
-/// Reads `fst` and the ElastoDyn files it names. `overrides` (may be null) apply to every file read;
+/// Reads `fst` and the ElastoDyn files it names, and with a platform DOF on its HydroDyn (CompHydro = 1)
+/// and MAP++ (CompMooring = 1) files. `overrides` (may be null) apply to every file read;
 /// call overrides->require_all_used() once all the files the run needs are read.
 /// Throws InputError naming file, line and key, e.g. "a.fst:33: EDFile: file not found: …".
 OpenFastTurbine read_openfast_turbine(const std::filesystem::path& fst, OverrideSet* overrides = nullptr);

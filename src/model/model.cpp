@@ -329,6 +329,7 @@ void remapBodyReferences(Model& m, const std::vector<int>& new_index) {
       if (o.frame_body >= 0) remapBody(o.frame_body, "output '" + o.name + "' frame");
     }
   for (auto& l : m.body_matrices) remapBody(l.body, "body matrices");
+  for (auto& l : m.mooring) remapBody(l.body, l.name);
 }
 
 /// Checks what a body's placement and inertia need (axis, offset, rotation, parent point).
@@ -403,6 +404,12 @@ void remapDofReferences(Model& m, const std::vector<int>& new_dof) {
   for (const auto& bm : m.body_matrices)
     if (m.bodies[bm.body].joint != JointType::Free)
       throw InputError(bodyWhere(m.bodies[bm.body], "6x6 matrices need a free joint"));
+  for (const auto& l : m.mooring) {
+    if (m.bodies[l.body].inertia.ne != 0) throw InputError(l.name + ": its fairlead must be on a rigid body");
+    if (!l.fairlead.allFinite() || !l.anchor.allFinite() || !(l.length > 0) || !(l.weight > 0) || !(l.EA > 0) ||
+        !(l.CB >= 0) || !std::isfinite(l.length + l.weight + l.EA + l.CB))
+      throw InputError(l.name + ": length, weight in fluid and EA must be positive and finite, CB >= 0");
+  }
   for (const auto& l : m.point_loads) {
     if (l.point >= static_cast<int>(m.bodies[l.body].points.size())) throw InputError("point load: no such point");
     if (l.input >= m.ninput()) throw InputError("point load: no such input");

@@ -15,6 +15,7 @@
 
 #include "src/model/aero_model.hpp"
 #include "src/model/body.hpp"
+#include "src/model/mooring.hpp"
 #include "src/model/output.hpp"
 #include "src/model/types.hpp"
 
@@ -144,6 +145,7 @@ struct Model {
   std::vector<DofLoad> dof_loads;
   std::vector<DofSpring> springs;
   std::vector<BodyMatrices> body_matrices;
+  std::vector<MooringLine> mooring;      ///< quasi-static catenary lines (mooring.hpp)
   AeroModel aero;                        ///< blade elements, polars, wind (empty: no aerodynamics)
   GeneratorTorqueLaw generator;          ///< generator torque against speed (inactive: torque = its input)
   std::vector<Output> outputs;           ///< measured quantities y = h(q, q̇, q̈) (output.hpp)

@@ -72,7 +72,8 @@ Model buildElastoDynModel(const io::OpenFastTurbine& t, const ElastoDynModelOpti
   b.model.name = ed.source.title();
   b.model.gravity = Vec3(0, 0, -gravityOf(t, opt));
 
-  const elastodyn::TowerParts tower = elastodyn::addTower(b);
+  const elastodyn::PlatformParts platform = elastodyn::addPlatform(b);
+  const elastodyn::TowerParts tower = elastodyn::addTower(b, platform);
   const elastodyn::DrivetrainParts dt = elastodyn::addNacelleAndDrivetrain(b, tower);
   const elastodyn::RotorParts rotor = elastodyn::addBlades(b, dt.hub);
   elastodyn::addInputsAndOutputs(b, tower, dt, rotor);
@@ -81,6 +82,7 @@ Model buildElastoDynModel(const io::OpenFastTurbine& t, const ElastoDynModelOpti
     if (opt.torque_law) elastodyn::addGeneratorTorqueLaw(b, *opt.torque_law);
   }
 
+  elastodyn::addOffshoreLoads(b, platform, t);
   if (ed.dof.DrTrDOF) b.model.springs.push_back({dt.drivetrain, ed.drivetrain.DTTorSpr, ed.drivetrain.DTTorDmp, 0.0});
   if (const std::optional<io::ServoDynInput> s = yawSpring(t, opt))
     b.model.springs.push_back({dt.yaw, s->YawSpr, s->YawDamp, s->YawNeut * deg});

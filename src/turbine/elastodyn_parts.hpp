@@ -9,6 +9,7 @@
 
 #include "src/io/aero_deck.hpp"
 #include "src/io/elastodyn_input.hpp"
+#include "src/io/openfast_turbine.hpp"
 #include "src/io/servodyn_input.hpp"
 #include "src/turbine/elastodyn_blade_shapes.hpp"
 #include "src/turbine/elastodyn_model.hpp"
@@ -38,8 +39,25 @@ struct TowerParts {
   MatX base_moment_gains;     ///< 2 × 4: (m_y, m_z) at the base from the curvature (beam_moment.hpp)
 };
 
-/// The flexible tower (TwrNodes equal elements, FA/SS polynomial shapes, tuners, modal damping).
-TowerParts addTower(Builder& b);
+/// The floating platform (elastodyn_platform.cpp): a rigid body on a free joint at the platform
+/// reference point, body = −1 when no platform DOF is on (the tower base is then clamped).
+struct PlatformParts {
+  int body = -1;
+  Vec3 reference = Vec3::Zero();  ///< platform reference point, ground frame [m]
+  std::array<int, 6> dofs{};      ///< surge, sway, heave, roll, pitch, yaw
+};
+
+/// The platform body with PtfmMass, PtfmCM*, PtfmRIner/PIner/YIner (and the v4+ products), its six
+/// coordinates `platform surge` … `platform yaw` (switches PtfmSgDOF … PtfmYDOF, initial values
+/// PtfmSurge … PtfmYaw); nothing when every platform DOF is off.
+PlatformParts addPlatform(Builder& b);
+
+/// HydroDyn's linear terms and MAP++'s mooring lines on the platform (elastodyn_offshore.cpp).
+void addOffshoreLoads(Builder& b, const PlatformParts& platform, const io::OpenFastTurbine& t);
+
+/// The flexible tower (TwrNodes equal elements, FA/SS polynomial shapes, tuners, modal damping), its
+/// base on the platform when there is one, else on the ground.
+TowerParts addTower(Builder& b, const PlatformParts& platform);
 
 struct DrivetrainParts {
   int bearing = -1, nacelle = -1, shaft = -1, generator = -1, hub = -1;  ///< bodies (shaft: low-speed side; generator: HSS)

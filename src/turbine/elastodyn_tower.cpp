@@ -56,7 +56,7 @@ ElastoDynTowerBeam elastoDynTowerBeam(const io::ElastoDynInput& ed) {
 
 namespace elastodyn {
 
-TowerParts addTower(Builder& b) {
+TowerParts addTower(Builder& b, const PlatformParts& platform) {
   const io::ElastoDynInput& ed = b.ed;
   const io::ElastoDynTower& tw = ed.tower;
   if (ed.TwrNodes < 1) throw InputError(b.where("TwrNodes", "must be at least 1"));
@@ -83,7 +83,8 @@ TowerParts addTower(Builder& b) {
   }
   Body t;
   t.name = "tower";
-  t.offset = Vec3(0, 0, base);
+  t.parent = platform.body;  // −1: clamped to the ground
+  t.offset = Vec3(0, 0, base) - platform.reference;
   t.rotation.col(0) = Vec3::UnitZ();   // x up the tower
   t.rotation.col(1) = -Vec3::UnitY();  // y side-to-side (ElastoDyn a3)
   t.rotation.col(2) = Vec3::UnitX();   // z fore-aft (downwind)

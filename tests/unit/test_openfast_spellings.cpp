@@ -231,7 +231,8 @@ TEST(OpenFastDecks, PlatformDofsAreOneRefusal) {
   const std::string msg = input_error_message([&] { whirl::io::require_supported(read_openfast_turbine(fst)); });
   EXPECT_THAT(msg, HasSubstr(std::string(kEd) + ":19: PtfmSgDOF: True not supported by whirl (platform DOFs are not "
                                                 "modelled, and PtfmSwDOF, PtfmHvDOF, PtfmRDOF, PtfmPDOF, PtfmYDOF are "
-                                                "on too: no hydrostatics or mooring, the tower base is clamped)"));
+                                                "on too: no hydrostatics or mooring (CompHydro = 0, CompMooring = 0) "
+                                                "holds the platform)"));
   EXPECT_EQ(msg.find("not supported"), msg.rfind("not supported"));  // one clause
   EXPECT_EQ(msg.find(';'), std::string::npos);                       // refusals are joined by "; ": none
 }

@@ -1,0 +1,79 @@
+#pragma once
+/// \file
+/// Templates of catenary.hpp: the profile equations of the elastic catenary, free-hanging and with
+/// seabed contact [Jonkman2007], and the Newton solve.
+#include <cmath>
+#include <string>
+#include <type_traits>
+
+#include "src/dynamics/catenary.hpp"
+#include "src/model/error.hpp"
+
+namespace whirl::detail {
+
+inline double catValue(double x) { return x; }
+template <class D>
+double catValue(const Eigen::AutoDiffScalar<D>& x) { return x.value(); }
+
+/// asinh written with log and sqrt (AD types have no asinh), odd by construction.
+template <class S>
+S catAsinh(const S& x) {
+  using std::log;
+  using std::sqrt;
+  if (catValue(x) < 0) return -catAsinh<S>(-x);
+  return log(x + sqrt(x * x + 1.0));
+}
+
+/// (x, z): horizontal and vertical extent of the line, fairlead relative to the anchor, at the
+/// fairlead tensions (H, V) [Jonkman2007]. Without seabed contact the line hangs freely between its
+/// ends; with contact (anchor on the seabed, V < w L) a length L_B = L − V/w rests on the bottom, and
+/// friction CB w holds part of its tension, the first H/(CB w) of it from the touchdown point.
+template <class S>
+void catenaryProfile(const MooringLine& ln, const S& H, const S& V, S& x, S& z) {
+  using std::sqrt;
+  const double w = ln.weight, L = ln.length, EA = ln.EA;
+  const S vh = V / H;
+  const double LB = L - catValue(V) / w;
+  if (!ln.seabed || LB <= 0.0) {
+    const S vah = (V - w * L) / H;
+    x = H / w * (catAsinh(vh) - catAsinh(vah)) + H * L / EA;
+    z = H / w * (sqrt(1.0 + vh * vh) - sqrt(1.0 + vah * vah)) + (V * L - 0.5 * w * L * L) / EA;
+    return;
+  }
+  const S lb = L - V / w;
+  x = lb + H / w * catAsinh(vh) + H * L / EA;
+  if (ln.CB > 0.0) {
+    const S slack = lb - H / (ln.CB * w);
+    x += ln.CB * w / (2.0 * EA) * (catValue(slack) > 0 ? S(-lb * lb + slack * slack) : S(-lb * lb));
+  }
+  z = H / w * (sqrt(1.0 + vh * vh) - 1.0) + V * V / (2.0 * EA * w);
+}
+
+/// Newton on (H, V) in double, Jacobian by AD of the profile; returns the converged tensions and J.
+struct CatenaryNewton {
+  double H = 0, V = 0;
+  Eigen::Matrix2d J;
+};
+CatenaryNewton solveCatenaryNewton(const MooringLine& ln, double l, double h);
+
+}  // namespace whirl::detail
+
+namespace whirl {
+
+template <class T>
+CatenaryTension<T> catenaryTension(const MooringLine& ln, const T& l, const T& h) {
+  const detail::CatenaryNewton s = detail::solveCatenaryNewton(ln, valueOf(l), valueOf(h));
+  if constexpr (std::is_same_v<T, double>) {
+    return {s.H, s.V};
+  } else {
+    // One Newton step in T from the converged point: the residual's value is round-off, its
+    // derivatives −∂(l, h), so (H, V) carry J⁻¹ ∂(l, h) — the implicit-function derivative.
+    double x, z;
+    detail::catenaryProfile<double>(ln, s.H, s.V, x, z);
+    const Eigen::Matrix2d Ji = s.J.inverse();
+    const T rx = l - x, rz = h - z;
+    return {T(s.H) + Ji(0, 0) * rx + Ji(0, 1) * rz, T(s.V) + Ji(1, 0) * rx + Ji(1, 1) * rz};
+  }
+}
+
+}  // namespace whirl

@@ -1,0 +1,86 @@
+// HydroDyn's linear terms and MAP++'s mooring lines on the ElastoDyn platform: what OpenFAST's
+// linearization of a floating platform contains about a still-water point.
+#include <Eigen/Eigenvalues>
+#include <cmath>
+#include <optional>
+
+#include "src/dynamics/catenary.hpp"
+#include "src/io/elastodyn_common.hpp"
+#include "src/io/wamit_input.hpp"
+#include "src/turbine/elastodyn_parts.hpp"
+#include "src/model/error.hpp"
+
+namespace whirl::elastodyn {
+namespace {
+
+double gravityOf(const Builder& b) { return -b.model.gravity(2); }
+
+// Water density and depth: HydroDyn (v2, v3) or the .fst (v3.5+).
+double water(const io::OpenFastTurbine& t, std::optional<double> hd, std::optional<double> fst, const char* key) {
+  if (hd) return *hd;
+  if (fst) return *fst;
+  throw InputError(t.fst.source.where(key, "not in the .fst nor in the HydroDyn file: the floating platform needs it"));
+}
+
+// HydroDyn with a WAMIT body [Jonkman2007]: buoyancy ρ g V0 at the centre of buoyancy, the
+// hydrostatic restoring of the `.hst` file (about the platform reference point, the WAMIT origin),
+// the infinite-frequency added mass of the `.1` file, AddF0, AddCLin, AddBLin. AddBQuad's force
+// −B |v| v has zero derivative at a static point (v = 0): nothing in the linear model.
+void addHydroDyn(Builder& b, const PlatformParts& p, const io::OpenFastTurbine& t) {
+  const io::HydroDynInput& hd = *t.hydrodyn;
+  const double rho = water(t, hd.WtrDens, t.fst.WtrDens, "WtrDens"), g = gravityOf(b);
+  BodyMatrices bm;
+  bm.body = p.body;
+  bm.K = hd.AddCLin;
+  bm.C = hd.AddBLin;
+  Eigen::Matrix<double, 6, 1> f0 = hd.AddF0;
+  if (hd.PotMod == 1) {
+    // The WAMIT matrices act about the WAMIT origin (0, 0, 0): whirl applies them at the platform
+    // reference point, so the two must coincide (OpenFAST maps the loads between the meshes).
+    if (p.reference.norm() != 0.0)
+      throw InputError(b.where(b.ed.config.PtfmRefzt ? "PtfmRefzt" : "PtfmRef",
+                               "the platform reference point must be the WAMIT origin (0, 0, 0) with PotMod = 1"));
+    const io::WamitMatrices w = io::read_wamit(hd, rho, g);
+    bm.K += w.hydrostatic;
+    // WAMIT's added mass is symmetric up to its panel discretization (A15 and A51 of the OC3 spar
+    // differ in the 6th digit); the mass matrix wants it symmetric.
+    bm.A = 0.5 * (w.added_mass + w.added_mass.transpose());
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> es(bm.A, Eigen::EigenvaluesOnly);
+    const double scale = bm.A.cwiseAbs().maxCoeff();
+    if (es.eigenvalues().minCoeff() < -1e-9 * scale)
+      throw InputError(hd.source.where("PotFile", "the added mass at infinite frequency is not positive semi-definite "
+                                                  "(eigenvalue " + io::number_text(es.eigenvalues().minCoeff()) + ")"));
+    const double B = rho * g * hd.PtfmVol0;
+    f0 += (Eigen::Matrix<double, 6, 1>() << 0, 0, B, B * hd.PtfmCOByt, -B * hd.PtfmCOBxt, 0).finished();
+  }
+  b.model.body_matrices.push_back(bm);
+  for (int k = 0; k < 6; ++k)
+    if (f0(k) != 0.0) b.model.dof_loads.push_back({p.dofs[k], f0(k), -1});
+}
+
+// MAP++ lines, each checked at the undisplaced platform so that a line that cannot reach its anchor
+// is an input error with its place rather than a failed operating point.
+void addMooring(Builder& b, const PlatformParts& p, const io::OpenFastTurbine& t) {
+  const double rho = water(t, t.hydrodyn ? t.hydrodyn->WtrDens : std::nullopt, t.fst.WtrDens, "WtrDens");
+  const double depth = water(t, t.hydrodyn ? t.hydrodyn->WtrDpth : std::nullopt, t.fst.WtrDpth, "WtrDpth");
+  std::vector<MooringLine> lines = io::map_mooring_lines(*t.mooring, p.body, depth, rho, gravityOf(b));
+  for (const MooringLine& ln : lines) {
+    const Vec3 d = p.reference + ln.fairlead - ln.anchor;
+    try {
+      catenaryTension<double>(ln, std::hypot(d(0), d(1)), d(2));
+    } catch (const ComputeError& e) {
+      throw InputError(e.what());
+    }
+    b.model.mooring.push_back(ln);
+  }
+}
+
+}  // namespace
+
+void addOffshoreLoads(Builder& b, const PlatformParts& p, const io::OpenFastTurbine& t) {
+  if (p.body < 0) return;
+  if (t.hydrodyn) addHydroDyn(b, p, t);
+  if (t.mooring) addMooring(b, p, t);
+}
+
+}  // namespace whirl::elastodyn

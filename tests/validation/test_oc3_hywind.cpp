@@ -1,0 +1,112 @@
+// OC3-Hywind (OpenFAST certification Test24, cases/oc3_hywind) against Jonkman 2010, "Definition of
+// the Floating System for Phase IV of OC3" (NREL/TP-500-47535): the mooring stiffness at the
+// undisplaced platform and the platform natural frequencies. References, their precision and the
+// model differences in cases/oc3_hywind/reference.csv and README.md.
+//
+// Heave and yaw agree with the published values to their print precision, the mooring stiffness too;
+// they are the tests. Surge, sway, roll and pitch do not (+0.9 %, −2 %) and are not tested: a
+// tolerance wide enough to pass would hide the gap. The published table is an eigenanalysis of FAST's
+// linearized full system (Jonkman, NREL forum "OC3 Spar natural frequency"); this model (like
+// OpenFAST's linearization of the deck) has the infinite-frequency added mass and no radiation memory.
+// Replacing WAMIT's infinite-frequency added mass by its zero-frequency one (a copy of spar.1, not
+// committed) moves roll and pitch from 0.03353 to 0.03395 Hz (about half the gap) and surge from
+// 0.00807 to 0.00813 Hz; the rest is open (cases/oc3_hywind/README.md).
+//
+// The deck is read as `whirl modes` reads it with `--set CompAero=0 --set RdtnMod=0 --set RotSpeed=0
+// --set GenDOF=False`: parked, no aerodynamics, HydroDyn without the radiation memory (OpenFAST
+// refuses its convolution for linearization too; the infinite-frequency added mass stays).
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+#include "linearize/linearize.hpp"
+#include "modal/modes.hpp"
+#include "src/turbine/elastodyn_model.hpp"
+#include "tests/support/reference.hpp"
+
+namespace whirl {
+namespace {
+
+constexpr const char* kCase = "oc3_hywind";
+const std::vector<std::string> kSets = {"CompAero=0", "RdtnMod=0", "RotSpeed=0", "GenDOF=False"};
+const char* kPlatform[6] = {"platform surge", "platform sway", "platform heave",
+                            "platform roll",  "platform pitch", "platform yaw"};
+
+Model oc3Model(const std::vector<std::string>& extra = {}) {
+  std::vector<std::string> sets = kSets;
+  sets.insert(sets.end(), extra.begin(), extra.end());
+  return readElastoDynModel(std::string(WHIRL_SOURCE_DIR) + "/cases/oc3_hywind/Test24.fst", sets);
+}
+
+// The mooring's 6×6 stiffness at the undisplaced platform: K with the lines minus K without them, both
+// at q = 0 (no equilibrium solve: the undisplaced position of Jonkman 2010, Eq. 5-3), by AD through
+// the catenary solutions.
+Eigen::Matrix<double, 6, 6> mooringStiffness() {
+  const Model with = oc3Model();
+  Model without = with;
+  without.mooring.clear();
+  const VecX q = VecX::Zero(with.ndof());
+  const LinearModel a = test::linearizeAt(with, q), b = test::linearizeAt(without, q);
+  Eigen::Matrix<double, 6, 6> K;
+  for (int r = 0; r < 6; ++r)
+    for (int c = 0; c < 6; ++c) {
+      const int i = test::dofIndex(a, kPlatform[r]), j = test::dofIndex(a, kPlatform[c]);
+      K(r, c) = a.K(i, j) - b.K(i, j);
+    }
+  return K;
+}
+
+TEST(Oc3Hywind, MooringStiffnessAtTheUndisplacedPlatform) {
+  const Eigen::Matrix<double, 6, 6> K = mooringStiffness();
+  for (int r = 0; r < 6; ++r) {
+    for (int c = 0; c < 6; ++c) std::printf("%13.5g", K(r, c));
+    std::printf("\n");
+  }
+  // Symmetric about the axes of the three-fold line pattern.
+  EXPECT_NEAR(K(0, 0), K(1, 1), 1e-6 * K(0, 0));
+  EXPECT_NEAR(K(3, 3), K(4, 4), 1e-6 * K(3, 3));
+  test::expectMatchesReference(kCase, {{"mooring K11 [N/m]", K(0, 0)}});
+}
+
+TEST(Oc3Hywind, PlatformFrequenciesParked) {
+  const Model m = oc3Model();
+  const OperatingPoint op = solveOperatingPoint(m, initialPoint(m));
+  const LinearModel lin = linearize(m, op);
+  EXPECT_LT(lin.residual.lpNorm<Eigen::Infinity>(), 1e-3) << "not an equilibrium";
+  const std::vector<Mode> modes = computeModes(lin.M, lin.C, lin.K, lin.dof_names);
+  for (std::size_t k = 0; k < modes.size() && k < 12; ++k)
+    std::printf("mode %2zu %9.5f Hz  zeta %6.3f  %s\n", k + 1, modes[k].freq_hz, modes[k].damping_ratio,
+                modes[k].name.c_str());
+  // Each platform coordinate's mode: the one where its kinetic-energy share is largest.
+  std::map<std::string, double> computed;
+  const char* keys[6] = {"surge", "sway", "heave", "roll", "pitch", "yaw"};
+  for (int d : {2, 5}) {  // heave, yaw: the rows that agree (header comment)
+    const int i = test::dofIndex(lin, kPlatform[d]);
+    std::size_t best = 0;
+    for (std::size_t k = 1; k < modes.size(); ++k)
+      if (modes[k].participation(i) > modes[best].participation(i)) best = k;
+    computed[std::string(keys[d]) + " [Hz]"] = modes[best].freq_hz;
+  }
+  test::expectMatchesReference(kCase, computed);
+}
+
+// The mean offset under a steady rotor thrust comes out of the operating point: the catenaries are
+// solved at the displaced fairleads inside the residual. 800 kN (about the NREL 5MW's rated thrust)
+// along the shaft at the hub: the platform surges and pitches downwind until the lines' pull, the
+// hydrostatics and gravity balance it. (whirl: surge 27.9 m, pitch 0.0977 rad; no published
+// counterpart checked here.)
+TEST(Oc3Hywind, MeanOffsetUnderThrust) {
+  Model m = oc3Model();
+  m.inputs[*m.findInput("rotor thrust")].value = 8e5;
+  const OperatingPoint op = solveOperatingPoint(m, initialPoint(m));
+  const LinearModel lin = linearize(m, op);
+  EXPECT_LT(lin.residual.lpNorm<Eigen::Infinity>(), 1e-8 * 8e5) << "not an equilibrium";
+  const double surge = op.q(*m.findDof("platform surge")), pitch = op.q(*m.findDof("platform pitch"));
+  std::printf("surge %.4f m, pitch %.5f rad under 800 kN\n", surge, pitch);
+  EXPECT_GT(surge, 0.0);
+  EXPECT_GT(pitch, 0.0);
+  EXPECT_NEAR(op.q(*m.findDof("platform sway")), 0.0, 1e-3);  // turbine and lines symmetric about the x-z plane
+}
+
+}  // namespace
+}  // namespace whirl
