@@ -470,6 +470,11 @@ SectionLoads<T> quasiSteadyLoads(const BemStation& s, const T& Vx, const T& Vy, 
   return loadsFromFlow<T>(s, x, y, theta, rho);
 }
 
+SectionLoads<double> loadsAtInduction(const BemStation& s, double Vx, double Vy, double theta, double a, double ap,
+                                      double rho) {
+  return loadsFromFlow<double>(s, Vx * (1.0 - a), Vy * (1.0 + ap), theta, rho);
+}
+
 template <class T>
 T inductionWeight(const T& tsr) {
   // BEMT_lowerBoundTSR = 1, BEMT_upperBoundTSR = 2 (AeroDyn BEMTUncoupled).

@@ -186,6 +186,14 @@ SectionLoads<T> quasiSteadyLoads(const BemStation& s, const T& Vx, const T& Vy, 
                                  double rho, const BemOptions& o, const T* radius = nullptr,
                                  const T* weight = nullptr);
 
+/// Loads of a solved element in double at its inductions a, a' (BemSolution::a, ap: AeroDyn's limited values,
+/// times the low-TSR weight where it applies): AeroDyn's output φ = atan2(Vx(1−a), Vy(1+a')), α, W and loads as
+/// frozenLoads. quasiSteadyLoads<double> at the same root, without re-evaluating the inductions and the
+/// implicit-function step (a double evaluation carries no derivative): equal to it within the root's residual
+/// tolerance (BemOptions::tolerance).
+SectionLoads<double> loadsAtInduction(const BemStation& s, double Vx, double Vy, double theta, double a, double ap,
+                                      double rho);
+
 /// AeroDyn's BEM weight at tip-speed ratio λ (BEMT check_turnOffBEMT with BlendCosine): 0 for λ ≤ 1
 /// (induction off: near standstill the momentum balance has no meaning), 1 for λ ≥ 2, ½(1 − cos(π(λ − 1)))
 /// between.
