@@ -135,7 +135,8 @@ SectionState<T> bemSection(const AeroModel& am, const AeroStation& st, const T& 
     // the derivatives (half the cost of an equilibrium's residual).
     s.loads = aero::loadsAtInduction(b, vx, vy, theta, s.a, s.ap, am.air_density);
   } else {
-    s.loads = aero::quasiSteadyLoads(b, vx, vy, theta, root.phi, am.air_density, am.bem, &r, blended ? &weight : nullptr);
+    s.loads = aero::quasiSteadyLoads(b, vx, vy, theta, root.phi, am.air_density, am.bem, &r, blended ? &weight : nullptr,
+                                     &root.slope);
   }
   return s;
 }
