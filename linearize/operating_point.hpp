@@ -37,10 +37,9 @@ struct OperatingPoint {
 struct EquilibriumOptions {
   int max_iterations = 50;
   double tolerance = 1e-10;  ///< on ‖e_solved‖ relative to the generalized gravity/centrifugal load scale
-  /// A linearization at a nearby point (a periodic sweep passes K extrapolated from its previous
-  /// azimuths; only `dofs` and `K` are read): its K is used as the Newton matrix (chord iterations,
-  /// no Jacobian) while the residual falls at least 4× per step; full Newton takes over otherwise.
-  /// Must outlive the call.
+  /// A linearization at a nearby point (the previous azimuth of a periodic sweep): its K is used
+  /// as the Newton matrix (chord iterations, no Jacobian) while the residual falls at least 4× per
+  /// step; full Newton takes over otherwise. Must outlive the call.
   const LinearModel* chord = nullptr;
   /// The tolerance's reference [N, N m]; 0: max(1, ‖e_solved‖∞ at the start). A warm start (a
   /// neighbouring point's equilibrium) passes the scale of the cold start it continues.

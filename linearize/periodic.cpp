@@ -53,24 +53,12 @@ PeriodicLinearization linearizePeriodic(const Model& m, const OperatingPoint& st
   // transform is exact (averaging the azimuth-dependent parked models would blur them).
   const int n = p.rotor_speed == 0.0 ? 1 : opt.azimuths;
   LinearizeWorkspace lw(m);
-  LinearModel chord;  // the Newton matrix of the chord steps: K extrapolated to the next azimuth
   for (int k = 0; k < n; ++k) {
     const double psi = psi0 + 2 * std::numbers::pi * k / n;
     guess.q(p.azimuth_dof) = psi;
     EquilibriumOptions eq;
     if (k > 0) {
-      // K moves with the azimuth (the blades turn relative to the tower): extrapolated from the last
-      // three azimuths as the equilibrium is, the chord steps cut the residual ~300× instead of ~20× at
-      // the first step (aeroelastic NREL 5MW: 2.96 instead of 3.43 steps per azimuth).
-      const std::size_t nm = p.models.size();
-      chord.dofs = p.models.back().dofs;
-      if (nm >= 3)
-        chord.K = 3 * p.models[nm - 1].K - 3 * p.models[nm - 2].K + p.models[nm - 3].K;
-      else if (nm == 2)
-        chord.K = 2 * p.models[nm - 1].K - p.models[nm - 2].K;
-      else
-        chord.K = p.models.back().K;
-      eq.chord = &chord;
+      eq.chord = &p.models.back();  // the stiffness barely changes from one azimuth to the next
       eq.load_scale = p.points.front().load_scale;
       eq.held = &p.points.front().held;  // every azimuth holds the same free coordinates (a free yaw)
     }
