@@ -422,17 +422,27 @@ BemSolution solveInflow(const BemStation& s, double Vx, double Vy, const BemOpti
 
 template <class T>
 T inflowAngle(const BemStation& s, const T& Vx, const T& Vy, const T& theta, double phi0, const BemOptions& o,
-              const T* radius) {
-  ADChunk p(phi0);
-  p.derivatives()[0] = 1.0;
-  const Induction<ADChunk> d =
-      inductions<ADChunk>(s, p, ADChunk(valueOf(Vx)), ADChunk(valueOf(Vy)), ADChunk(valueOf(theta)), o);
-  if (d.fixed) return T(phi0);
-  const double Rphi = d.residual.derivatives()[0];
+              const T* radius, double* slope) {
+  // The slope depends on the values only: the AD passes at one root evaluate it once (`slope`).
+  double Rphi = slope ? *slope : 0.0;
+  bool fixed = Rphi == HUGE_VAL;  // kept for a φ-independent special case
+  if (Rphi == 0.0) {
+    ADChunk p(phi0);
+    p.derivatives()[0] = 1.0;
+    const Induction<ADChunk> d =
+        inductions<ADChunk>(s, p, ADChunk(valueOf(Vx)), ADChunk(valueOf(Vy)), ADChunk(valueOf(theta)), o);
+    fixed = d.fixed;
+    Rphi = d.residual.derivatives()[0];
+  }
+  if (fixed) {
+    if (slope) *slope = HUGE_VAL;
+    return T(phi0);
+  }
   if (!(std::abs(Rphi) > 0) || !std::isfinite(Rphi))
     throw ComputeError("BEM at r = " + num(s.r) + " m, Vx = " + num(valueOf(Vx)) + " m/s, Vy = " +
                        num(valueOf(Vy)) + " m/s, theta = " + deg(valueOf(theta)) + " deg: dR/dphi = " + num(Rphi) +
                        " at phi = " + deg(phi0) + " deg, the inflow angle is not differentiable there");
+  if (slope) *slope = Rphi;
   const T R = bemResidual<T>(s, T(phi0), Vx, Vy, theta, o, radius);
   return T(phi0 - R / Rphi);
 }
@@ -449,8 +459,9 @@ SectionLoads<T> frozenLoads(const BemStation& s, const T& Vx, const T& Vy, const
 
 template <class T>
 SectionLoads<T> quasiSteadyLoads(const BemStation& s, const T& Vx, const T& Vy, const T& theta, double phi0,
-                                 double rho, const BemOptions& o, const T* radius, const T* weight) {
-  const T phi = inflowAngle<T>(s, Vx, Vy, theta, phi0, o, radius);
+                                 double rho, const BemOptions& o, const T* radius, const T* weight,
+                                 double* slope) {
+  const T phi = inflowAngle<T>(s, Vx, Vy, theta, phi0, o, radius, slope);
   const Induction<T> ind = inductions<T>(s, phi, Vx, Vy, theta, o, radius);
   T a = ind.a, ap = ind.ap;
   if (!ind.valid) {
@@ -468,6 +479,11 @@ SectionLoads<T> quasiSteadyLoads(const BemStation& s, const T& Vx, const T& Vy, 
   }
   const T x = Vx * (1.0 - a), y = Vy * (1.0 + ap);
   return loadsFromFlow<T>(s, x, y, theta, rho);
+}
+
+SectionLoads<double> loadsAtInduction(const BemStation& s, double Vx, double Vy, double theta, double a, double ap,
+                                      double rho) {
+  return loadsFromFlow<double>(s, Vx * (1.0 - a), Vy * (1.0 + ap), theta, rho);
 }
 
 template <class T>
@@ -488,11 +504,11 @@ T inductionWeight(const T& tsr) {
                             const T*);                                                                          \
   template T bemResidual<T>(const BemStation&, const T&, const T&, const T&, const BemOptions&);                \
   template T inflowAngle<T>(const BemStation&, const T&, const T&, const T&, double, const BemOptions&,        \
-                            const T*);                                                                          \
+                            const T*, double*);                                                                 \
   template SectionLoads<T> frozenLoads<T>(const BemStation&, const T&, const T&, const T&, double, double,     \
                                           double, const BemOptions&);                                           \
   template SectionLoads<T> quasiSteadyLoads<T>(const BemStation&, const T&, const T&, const T&, double, double, \
-                                               const BemOptions&, const T*, const T*);                        \
+                                               const BemOptions&, const T*, const T*, double*);               \
   template T inductionWeight<T>(const T&);
 
 WHIRL_BEM_INSTANTIATE(double)

@@ -163,9 +163,11 @@ BemSolution solveInflow(const BemStation& s, double Vx, double Vy, const BemOpti
 /// Returns phi0 − R(phi0; Vx, Vy, θ) / ∂R/∂φ(phi0) with ∂R/∂φ in double, so the value is phi0 (to the
 /// residual) and the derivatives are −R_x/R_φ (implicit-function theorem). In the φ-independent special
 /// cases (Induction::fixed) φ does not influence AeroDyn's outputs and phi0 is returned with zero derivatives.
+/// `slope` (optional): ∂R/∂φ at phi0 kept by the caller for the AD passes at the same root — 0 on entry:
+/// evaluated and stored (infinity for the special cases); otherwise used as it is.
 template <class T>
 T inflowAngle(const BemStation& s, const T& Vx, const T& Vy, const T& theta, double phi0, const BemOptions& o,
-              const T* radius = nullptr);
+              const T* radius = nullptr, double* slope = nullptr);
 
 /// Loads with AeroDyn's frozen wake (DBEMT_Mod = −1 / FrozenWake): the induced velocities at the operating point,
 /// ax_ind_vel = −Vx₀ a₀ and tan_ind_vel = Vy₀ a'₀ (AeroDyn computeFrozenWake, BEMT.f90), are held; at the
@@ -181,10 +183,19 @@ SectionLoads<T> frozenLoads(const BemStation& s, const T& Vx, const T& Vy, const
 /// output φ = atan2(Vx(1−a), Vy(1+a')), α, W and loads as frozenLoads.
 /// `weight` (optional, default 1) scales a and a' after the limits, as AeroDyn's check_turnOffBEMT does at
 /// low tip-speed ratios (inductionWeight).
+/// `slope`: as for inflowAngle.
 template <class T>
 SectionLoads<T> quasiSteadyLoads(const BemStation& s, const T& Vx, const T& Vy, const T& theta, double phi0,
                                  double rho, const BemOptions& o, const T* radius = nullptr,
-                                 const T* weight = nullptr);
+                                 const T* weight = nullptr, double* slope = nullptr);
+
+/// Loads of a solved element in double at its inductions a, a' (BemSolution::a, ap: AeroDyn's limited values,
+/// times the low-TSR weight where it applies): AeroDyn's output φ = atan2(Vx(1−a), Vy(1+a')), α, W and loads as
+/// frozenLoads. quasiSteadyLoads<double> at the same root, without re-evaluating the inductions and the
+/// implicit-function step (a double evaluation carries no derivative): equal to it within the root's residual
+/// tolerance (BemOptions::tolerance).
+SectionLoads<double> loadsAtInduction(const BemStation& s, double Vx, double Vy, double theta, double a, double ap,
+                                      double rho);
 
 /// AeroDyn's BEM weight at tip-speed ratio λ (BEMT check_turnOffBEMT with BlendCosine): 0 for λ ≤ 1
 /// (induction off: near standstill the momentum balance has no meaning), 1 for λ ≥ 2, ½(1 − cos(π(λ − 1)))

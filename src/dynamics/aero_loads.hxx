@@ -75,8 +75,12 @@ void addAeroLoads(const Model& m, Workspace<TK>& ws, const VecXT<TK>& q, const V
     const BasisState<TK>& bs = ws.basis[blade.body];
     const TK pitch = blade.pitch_dof >= 0 ? q(blade.pitch_dof) : TK(0);
     // The body turned back by its pitch: AeroDyn's blade frame without pitch (aero_model.hpp).
-    const Mat3T<TK> Rnp = f.R * axisRotation(body.axis, TK(-pitch));
+    // Its axes in body components (Ab) and in ground components (Rnp = R Ab): the element loads are
+    // formed and summed in body components, so that no element is turned by the AD rotation R.
+    const Mat3T<TK> Ab = axisRotation(body.axis, TK(-pitch));
+    const Mat3T<TK> Rnp = f.R * Ab;
     const Vec3T<TK> xa = Rnp.col(1), ya = Rnp.col(2), za = Rnp.col(0);
+    const Vec3T<TK> xab = Ab.col(1), yab = Ab.col(2), zab = Ab.col(0);
     // The elements' generalized forces summed before they are projected (Kane: the partial velocities
     // of a point are those of the body frame plus the shape functions at it): the frame part is the
     // resultant force and moment about the body origin, the elastic part Σ_k D_kj Σ_el P_kᵀ F. One
@@ -96,9 +100,9 @@ void addAeroLoads(const Model& m, Workspace<TK>& ws, const VecXT<TK>& q, const V
       const Vec3T<TK> pos = f.r + Rs;
       const Vec3T<TK> vel = f.v + f.w.cross(Rs) + f.R * sd;
       // Out-of-plane slope of the deflected span axis (1, θz, −θy): the annulus frame's tilt.
-      const Vec3T<TK> span = f.R * Vec3T<TK>(TK(1), rot(2), -rot(1));
+      const Vec3T<TK> span(TK(1), rot(2), -rot(1));  // body components
       // cos and sin of the slope atan2(span·xa, span·za), without the angle.
-      const TK sx = span.dot(xa), sz = span.dot(za);
+      const TK sx = span.dot(xab), sz = span.dot(zab);
       const TK h = sqrt(sx * sx + sz * sz);
       const TK cs = sz / h, ss = sx / h;
       const Vec3T<TK> xn = cs * xa - ss * za, zn = ss * xa + cs * za;
@@ -122,34 +126,39 @@ void addAeroLoads(const Model& m, Workspace<TK>& ws, const VecXT<TK>& q, const V
                            std::to_string(valueOf(speed)) + " m/s: " + err.what());
       }
       const aero::SectionLoads<T>& L = sec.loads;
-      const Vec3T<T> Fg = L.fx * xn.template cast<T>() + L.fy * ya.template cast<T>();
-      const Vec3T<T> Mg = L.mz * zn.template cast<T>();
-      sum.add(pt, f.R, Rs, Fg, Mg, st.weight);
-      if (totals) {
-        const Vec3T<T> axis = disk.template cast<T>();
-        totals->thrust += T(st.weight) * Fg.dot(axis);
-        totals->torque += T(st.weight) * (Vec3T<T>(d.template cast<T>().cross(Fg)) + Mg).dot(axis);
-      }
-      if constexpr (std::is_same_v<T, double> && std::is_same_v<TK, double>) {
-        if (record) {
-          AeroElementState es;
-          es.vx = vx;
-          es.vy = vy;
-          es.r = r;
-          es.phi = L.phi;
-          es.alpha = L.alpha;
-          es.a = sec.a;
-          es.ap = sec.ap;
-          es.w = L.W;
-          es.cl = L.cl;
-          es.cd = L.cd;
-          es.cm = L.cm;
-          es.fx = L.fx;
-          es.fy = L.fy;
-          es.m = L.mz;
-          record->elements.push_back(es);
-          record->thrust += st.weight * Fg.dot(disk);
-          record->torque += st.weight * (d.cross(Fg) + Mg).dot(disk);
+      const Vec3T<TK> xnb = cs * xab - ss * zab, znb = ss * xab + cs * zab;  // body components of xn, zn
+      const Vec3T<T> Fb = L.fx * xnb.template cast<T>() + L.fy * yab.template cast<T>();
+      const Vec3T<T> Mb = L.mz * znb.template cast<T>();
+      sum.addBody(pt, s, Fb, Mb, st.weight);
+      if (totals || (std::is_same_v<T, double> && record)) {  // ground components: rotor totals, the record
+        const Vec3T<T> Fg = L.fx * xn.template cast<T>() + L.fy * ya.template cast<T>();
+        const Vec3T<T> Mg = L.mz * zn.template cast<T>();
+        if (totals) {
+          const Vec3T<T> axis = disk.template cast<T>();
+          totals->thrust += T(st.weight) * Fg.dot(axis);
+          totals->torque += T(st.weight) * (Vec3T<T>(d.template cast<T>().cross(Fg)) + Mg).dot(axis);
+        }
+        if constexpr (std::is_same_v<T, double> && std::is_same_v<TK, double>) {
+          if (record) {
+            AeroElementState es;
+            es.vx = vx;
+            es.vy = vy;
+            es.r = r;
+            es.phi = L.phi;
+            es.alpha = L.alpha;
+            es.a = sec.a;
+            es.ap = sec.ap;
+            es.w = L.W;
+            es.cl = L.cl;
+            es.cd = L.cd;
+            es.cm = L.cm;
+            es.fx = L.fx;
+            es.fy = L.fy;
+            es.m = L.mz;
+            record->elements.push_back(es);
+            record->thrust += st.weight * Fg.dot(disk);
+            record->torque += st.weight * (d.cross(Fg) + Mg).dot(disk);
+          }
         }
       }
     }

@@ -128,9 +128,16 @@ SectionState<T> bemSection(const AeroModel& am, const AeroStation& st, const T& 
   }
   SectionState<T> s;
   const bool blended = valueOf(weight) < 1.0;
-  s.loads = aero::quasiSteadyLoads(b, vx, vy, theta, root.phi, am.air_density, am.bem, &r, blended ? &weight : nullptr);
   s.a = root.a * (blended ? valueOf(weight) : 1.0);
   s.ap = root.ap * (blended ? valueOf(weight) : 1.0);
+  if constexpr (std::is_same_v<T, double>) {
+    // The root's own inductions: the implicit-function step and its AD evaluation of ∂R/∂φ only serve
+    // the derivatives (half the cost of an equilibrium's residual).
+    s.loads = aero::loadsAtInduction(b, vx, vy, theta, s.a, s.ap, am.air_density);
+  } else {
+    s.loads = aero::quasiSteadyLoads(b, vx, vy, theta, root.phi, am.air_density, am.bem, &r, blended ? &weight : nullptr,
+                                     &root.slope);
+  }
   return s;
 }
 

@@ -60,12 +60,25 @@ class BodyLoadSum {
     for (Eigen::Index j = 0; j < gtheta_.size(); ++j) gtheta_(j) += pt.theta.col(j).dot(Mb);
   }
 
+  /// Adds weight · (Fb, Mb) at point pt, all in body components (s: the point's offset from the body
+  /// origin). Summed apart from add() and turned to ground components once, in project().
+  template <class TK>
+  void addBody(const BodyPoint& pt, const Vec3T<TK>& s, const Vec3T<T>& Fb, const Vec3T<T>& Mb, double weight) {
+    const Vec3T<T> wF = weight * Fb, wM = weight * Mb;
+    Fb_ += wF;
+    Mb_ += wM + Vec3T<T>(s.template cast<T>().cross(wF));
+    for (Eigen::Index k = 0; k < fk_.size(); ++k) fk_(k) += pt.P.col(k).dot(wF);
+    for (Eigen::Index j = 0; j < gtheta_.size(); ++j) gtheta_(j) += pt.theta.col(j).dot(wM);
+  }
+
   /// Adds the sums to the generalized forces of body b's support and elastic coordinates.
   template <class TK>
   void project(const Model& m, const Workspace<TK>& ws, int b, VecXT<T>& e) const {
     const FrameState<TK>& f = ws.frames[b];
+    const Mat3T<T> R = f.R.template cast<T>();
+    const Vec3T<T> F = F_ + R * Fb_, M = M_ + R * Mb_;
     for (int sd : m.support[b])
-      e(sd) += f.Jv.col(sd).template cast<T>().dot(F_) + f.Jw.col(sd).template cast<T>().dot(M_);
+      e(sd) += f.Jv.col(sd).template cast<T>().dot(F) + f.Jw.col(sd).template cast<T>().dot(M);
     const Body& body = m.bodies[b];
     const MatXT<TK>& D = ws.basis[b].D;
     for (Eigen::Index j = 0; j < gtheta_.size(); ++j) {
@@ -76,7 +89,8 @@ class BodyLoadSum {
   }
 
  private:
-  Vec3T<T> F_ = Vec3T<T>::Zero(), M_ = Vec3T<T>::Zero();
+  Vec3T<T> F_ = Vec3T<T>::Zero(), M_ = Vec3T<T>::Zero();    ///< ground components (add)
+  Vec3T<T> Fb_ = Vec3T<T>::Zero(), Mb_ = Vec3T<T>::Zero();  ///< body components (addBody)
   VecXT<T> fk_, gtheta_;
 };
 

@@ -246,6 +246,45 @@ TEST(Bem, QuasiSteadyLoadDerivativesMatchCentralDifferences) {
   }
 }
 
+// A solved element's double loads from its root's inductions equal quasiSteadyLoads<double> at that root
+// within the root's residual tolerance (BemOptions::tolerance = 1e-13 on R): same branch, φ moved by ≤ 1e-13.
+TEST(Bem, LoadsAtInductionEqualQuasiSteadyLoadsAtTheRoot) {
+  const auto& C = nrelPolarsCubic();
+  const BemOptions o;
+  const double rho = 1.225;
+  for (const double r : {12.0, 40.0, 60.0}) {
+    const BemStation s = station(r, 3.1, 0.07, C[6]);
+    const double Vx = 9.0, Vy = 1.2 * r;
+    const BemSolution sol = solveInflow(s, Vx, Vy, o);
+    const auto Q = quasiSteadyLoads<double>(s, Vx, Vy, s.theta, sol.phi, rho, o);
+    const auto L = loadsAtInduction(s, Vx, Vy, s.theta, sol.a, sol.ap, rho);
+    EXPECT_NEAR(L.phi, Q.phi, 1e-12) << r;
+    EXPECT_NEAR(L.fx, Q.fx, 1e-11 * std::abs(Q.fx)) << r;
+    EXPECT_NEAR(L.fy, Q.fy, 1e-11 * std::abs(Q.fy)) << r;
+    EXPECT_NEAR(L.mz, Q.mz, 1e-11 * std::abs(Q.mz)) << r;
+  }
+}
+
+// ∂R/∂φ kept across AD passes at one root (`slope`): the same bits as evaluating it in each pass.
+TEST(Bem, InflowAngleWithKeptSlopeEqualsFreshEvaluation) {
+  const auto& C = nrelPolarsCubic();
+  const BemStation s = station(40.0, 3.1, 0.07, C[6]);
+  const BemOptions o;
+  const double Vx = 8.0, Vy = 38.0;
+  const BemSolution sol = solveInflow(s, Vx, Vy, o);
+  const ADChunk fresh = inflowAngle<ADChunk>(s, seed(Vx, 0), seed(Vy, 1), seed(s.theta, 2), sol.phi, o);
+  double slope = 0;
+  const ADChunk first = inflowAngle<ADChunk>(s, seed(Vx, 0), seed(Vy, 1), seed(s.theta, 2), sol.phi, o, nullptr, &slope);
+  EXPECT_NE(slope, 0.0);
+  const ADChunk kept = inflowAngle<ADChunk>(s, seed(Vx, 0), seed(Vy, 1), seed(s.theta, 2), sol.phi, o, nullptr, &slope);
+  EXPECT_EQ(first.value(), fresh.value());
+  EXPECT_EQ(kept.value(), fresh.value());
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_EQ(first.derivatives()[i], fresh.derivatives()[i]) << i;
+    EXPECT_EQ(kept.derivatives()[i], fresh.derivatives()[i]) << i;
+  }
+}
+
 // Frozen wake (AeroDyn computeFrozenWake): induced velocities −Vx a, Vy a' held at the operating point.
 TEST(Bem, FrozenWakeDerivativesMatchCentralDifferencesWithInducedVelocitiesHeld) {
   const auto& P = nrelPolars();
