@@ -12,6 +12,7 @@
 #include "linearize/simulate.hpp"
 #include "modal/decay_identification.hpp"
 #include "modal/modes.hpp"
+#include "tests/support/decay_support.hpp"
 #include "tests/support/reference.hpp"
 
 namespace whirl {
@@ -34,12 +35,8 @@ TEST(SimulateFloating3Dof, SeedReleaseStateFrequencies) {
   o.atol = 1e-11;
   const Simulation sim = simulate(m, start, o);
   for (const auto& [dof, name] : {std::pair{pitch, "pitch"}, std::pair{fa, "tower FA 1"}}) {
-    std::vector<double> x(sim.time.size());
-    for (size_t k = 0; k < x.size(); ++k) x[k] = sim.q(static_cast<Eigen::Index>(k), dof);
-    const IdentifiedDecay d = identifyDecay(sim.time, x, eq.q(dof));
-    const Mode* mode = nullptr;
-    for (const Mode& md : modes)
-      if (md.name == name) mode = &md;
+    const IdentifiedDecay d = test::identifyDofDecay(sim, dof, eq.q(dof));
+    const Mode* mode = test::modeNamed(modes, name);
     ASSERT_NE(mode, nullptr) << name;
     std::printf("%s: identified %.6f Hz, eigenvalue %.6f Hz (%+.2f %%)\n", name, d.damped_freq_hz,
                 mode->damped_freq_hz, 100 * (d.damped_freq_hz / mode->damped_freq_hz - 1));
@@ -65,12 +62,12 @@ TEST(SimulateFloating3Dof, SmallDecaysMatchEigenvaluesAndTheOffsetShrinks) {
     o.rtol = 1e-9;
     o.atol = 1e-11;
     const Simulation sim = simulate(m, start, o);
-    std::vector<double> x(sim.time.size());
-    for (size_t k = 0; k < x.size(); ++k) x[k] = sim.q(static_cast<Eigen::Index>(k), dof);
-    for (const Mode& md : modes)
-      if (md.name == name) return identifyDecay(sim.time, x, eq.q(dof)).damped_freq_hz / md.damped_freq_hz - 1;
-    ADD_FAILURE() << "no mode " << name;
-    return 0.0;
+    const Mode* md = test::modeNamed(modes, name);
+    if (!md) {
+      ADD_FAILURE() << "no mode " << name;
+      return 0.0;
+    }
+    return test::identifyDofDecay(sim, dof, eq.q(dof)).damped_freq_hz / md->damped_freq_hz - 1;
   };
   const double deg = std::numbers::pi / 180;
   const double big = identified("pitch", 2 * deg), small = identified("pitch", 0.5 * deg);

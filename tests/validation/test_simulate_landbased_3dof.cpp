@@ -12,6 +12,7 @@
 #include "modal/modes.hpp"
 #include "modal/nonlinear_check.hpp"
 #include "src/model/error.hpp"
+#include "tests/support/decay_support.hpp"
 #include "tests/support/reference.hpp"
 
 namespace whirl {
@@ -36,12 +37,8 @@ TEST(SimulateLandbased3Dof, FreeDecayFrequenciesMatchEigenvalues) {
   const Simulation sim = simulate(m, start, o);  // azimuth free: a state
   EXPECT_EQ(sim.states.size(), 3u);
   for (const auto& [dof, name] : {std::pair{fa, "tower FA 1"}, std::pair{ss, "tower SS 1"}}) {
-    std::vector<double> x(sim.time.size());
-    for (size_t k = 0; k < x.size(); ++k) x[k] = sim.q(static_cast<Eigen::Index>(k), dof);
-    const IdentifiedDecay d = identifyDecay(sim.time, x, eq.q(dof));
-    const Mode* mode = nullptr;
-    for (const Mode& md : modes)
-      if (md.name == name) mode = &md;
+    const IdentifiedDecay d = test::identifyDofDecay(sim, dof, eq.q(dof));
+    const Mode* mode = test::modeNamed(modes, name);
     ASSERT_NE(mode, nullptr) << name;
     std::printf("%s: identified %.6f Hz (damped) %.5f damping, eigenvalue %.6f Hz %.5f\n", name, d.damped_freq_hz,
                 d.damping_ratio, mode->damped_freq_hz, mode->damping_ratio);
