@@ -94,7 +94,8 @@ MatX residualJacobian(const Model& m, JacobianWorkspace& jw, const VecX& q, cons
     const MatX Jl = jacobian(m, jw, q, qd, qdd, u, wrt, load_cols, jw.e, [&]() {
       for (int k = 0; k < m.ndof(); ++k) jw.e(k) = ADChunk(0.0);
       addInputLoads(m, jw.kin, jw.kin_qd, jw.u, jw.e);
-      addAeroLoads(m, jw.kin, jw.kin_q, jw.u, frozen, nullptr, jw.e);
+      // The blade jets of the AD passes at this point serve here too (wind-speed column).
+      addAeroLoads<double, ADChunk>(m, jw.kin, jw.kin_q, jw.u, frozen, nullptr, jw.e, 0, nullptr, &jw.ws.jets);
     });
     for (size_t c = 0; c < load_at.size(); ++c) J.col(load_at[c]) = Jl.col(c);
   }

@@ -35,10 +35,12 @@ struct RotorTotals {
 /// ws: the kinematics, and the BEM roots it keeps per element (Workspace::bem) for evaluations at the
 /// same inputs.
 /// \param[in]  skip   bit b set: leave out blade b (an AD pass in which nothing it depends on is seeded)
+/// \param[in,out] jets the section and blade jets of frozen-wake AD passes (null: ws.jets); a pass
+///                   that seeds only inputs, on double kinematics, shares those of the AD workspace
 /// Throws ComputeError naming the blade and element when BEM has no solution.
 template <class TK, class T>
 void addAeroLoads(const Model& model, Workspace<TK>& ws, const VecXT<TK>& q, const VecXT<T>& u,
                   const AeroInflow* frozen, AeroRecord* record, VecXT<T>& e, std::uint64_t skip = 0,
-                  RotorTotals<T>* totals = nullptr);
+                  RotorTotals<T>* totals = nullptr, AeroJets* jets = nullptr);
 
 }  // namespace whirl

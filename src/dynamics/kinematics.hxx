@@ -17,7 +17,8 @@ inline int maxBasisSize(const Model& m) {
 template <class T>
 Workspace<T>::Workspace(const Model& m)
     : bem(static_cast<std::size_t>(m.aero.nstations())),
-      jets(static_cast<std::size_t>(m.aero.nstations())),
+      jets{std::vector<SectionJet>(static_cast<std::size_t>(m.aero.nstations())),
+           std::vector<BladeJet>(m.aero.blades.size())},
       prod(detail::maxBasisSize(m)),
       prod_dt(detail::maxBasisSize(m)) {
   const int n = m.ndof();

@@ -37,6 +37,27 @@ void addPointForce(const Model& m, const Workspace<TK>& ws, int b, int point, co
   }
 }
 
+/// e += the generalized forces of loads on body b given as sums (BodyLoadSum): F, M in ground
+/// components (M about the body origin), Fb, Mb in body components, fk(k) = Σ P_kᵀ F_b (k < nc) and
+/// gθ(j) = Σ θ_jᵀ M_b (j < ne): e(support) += Jvᵀ (F + R Fb) + Jωᵀ (M + R Mb),
+/// e(elastic j) += gθ(j) + Σ_k D_kj fk(k).
+template <class TK, class T, class FK, class GT>
+void projectBodySums(const Model& m, const Workspace<TK>& ws, int b, const Vec3T<T>& F0, const Vec3T<T>& M0,
+                     const Vec3T<T>& Fb, const Vec3T<T>& Mb, FK fk, GT gtheta, VecXT<T>& e) {
+  const FrameState<TK>& f = ws.frames[b];
+  const Mat3T<T> R = f.R.template cast<T>();
+  const Vec3T<T> F = F0 + R * Fb, M = M0 + R * Mb;
+  for (int sd : m.support[b])
+    e(sd) += f.Jv.col(sd).template cast<T>().dot(F) + f.Jw.col(sd).template cast<T>().dot(M);
+  const Body& body = m.bodies[b];
+  const MatXT<TK>& D = ws.basis[b].D;
+  for (Eigen::Index j = 0; j < D.cols(); ++j) {
+    T g = gtheta(j);
+    for (Eigen::Index k = 0; k < D.rows(); ++k) g += T(D(k, j)) * fk(k);
+    e(body.elastic_dof + static_cast<int>(j)) += g;
+  }
+}
+
 /// Point loads on one body summed for a single projection (addPointForce for many points):
 /// e(support) += Jvᵀ ΣF + Jwᵀ ΣM (world frame, moments about the body origin) and
 /// e(elastic j) += Σ_k D_kj (Σ P_kᵀ F_b) + Σ θ_jᵀ M_b (body frame). Results equal the sum of
@@ -71,21 +92,31 @@ class BodyLoadSum {
     for (Eigen::Index j = 0; j < gtheta_.size(); ++j) gtheta_(j) += pt.theta.col(j).dot(wM);
   }
 
+  /// Number of body-component sums: Fb (3), Mb (3), fk (nc), gθ (ne).
+  Eigen::Index size() const { return 6 + fk_.size() + gtheta_.size(); }
+
+  /// The body-component sums [Fb; Mb; fk; gθ] (dim size(); nothing added by add()).
+  T bodySum(Eigen::Index i) const {
+    if (i < 3) return Fb_(i);
+    if (i < 6) return Mb_(i - 3);
+    if (i < 6 + fk_.size()) return fk_(i - 6);
+    return gtheta_(i - 6 - fk_.size());
+  }
+
+  /// Sets body-component sum i (layout of bodySum).
+  void setBodySum(Eigen::Index i, const T& v) {
+    if (i < 3) Fb_(i) = v;
+    else if (i < 6) Mb_(i - 3) = v;
+    else if (i < 6 + fk_.size()) fk_(i - 6) = v;
+    else gtheta_(i - 6 - fk_.size()) = v;
+  }
+
   /// Adds the sums to the generalized forces of body b's support and elastic coordinates.
   template <class TK>
   void project(const Model& m, const Workspace<TK>& ws, int b, VecXT<T>& e) const {
-    const FrameState<TK>& f = ws.frames[b];
-    const Mat3T<T> R = f.R.template cast<T>();
-    const Vec3T<T> F = F_ + R * Fb_, M = M_ + R * Mb_;
-    for (int sd : m.support[b])
-      e(sd) += f.Jv.col(sd).template cast<T>().dot(F) + f.Jw.col(sd).template cast<T>().dot(M);
-    const Body& body = m.bodies[b];
-    const MatXT<TK>& D = ws.basis[b].D;
-    for (Eigen::Index j = 0; j < gtheta_.size(); ++j) {
-      T g = gtheta_(j);
-      for (Eigen::Index k = 0; k < fk_.size(); ++k) g += T(D(k, j)) * fk_(k);
-      e(body.elastic_dof + static_cast<int>(j)) += g;
-    }
+    projectBodySums(
+        m, ws, b, F_, M_, Fb_, Mb_, [&](Eigen::Index k) { return fk_(k); },
+        [&](Eigen::Index j) { return gtheta_(j); }, e);
   }
 
  private:

@@ -21,7 +21,7 @@ template void addInputLoads<double, ADChunk>(const Model&, const Workspace<doubl
                                              const VecXT<ADChunk>&, VecXT<ADChunk>&);
 template void addAeroLoads<double, ADChunk>(const Model&, Workspace<double>&, const VecX&,
                                             const VecXT<ADChunk>&, const AeroInflow*, AeroRecord*, VecXT<ADChunk>&,
-                                            std::uint64_t, RotorTotals<ADChunk>*);
+                                            std::uint64_t, RotorTotals<ADChunk>*, AeroJets*);
 template Mat3T<double> axisRotation<double>(const Vec3&, const double&);
 
 }  // namespace whirl

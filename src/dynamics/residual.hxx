@@ -113,6 +113,11 @@ void addInputLoads(const Model& m, const Workspace<TK>& ws, const VecXT<TK>& qd,
   for (const PointLoad& l : m.point_loads) {
     // The load scaled by its input (or 1): its generalized force is scale × that of the unit load,
     // formed in TK; only the final products carry the scalar of u.
+    T scale = detail::inputScale(u, l.input);
+    if (gen.active() && l.input == m.roles.generator_torque_input) scale += T(law);
+    // An AD pass in which the scale is zero and carries no derivative gets nothing from the load
+    // (value and derivatives are scale × …): the input loads of a linear model at u = 0.
+    if (valueOf(scale) == 0.0 && !detail::seeded(scale)) continue;
     const FrameState<TK>& f = ws.frames[l.body];
     Vec3T<TK> Fb, Mb;
     if (l.body_frame) {
@@ -122,8 +127,6 @@ void addInputLoads(const Model& m, const Workspace<TK>& ws, const VecXT<TK>& qd,
       Fb = f.R.transpose() * l.force.cast<TK>();
       Mb = f.R.transpose() * l.moment.cast<TK>();
     }
-    T scale = detail::inputScale(u, l.input);
-    if (gen.active() && l.input == m.roles.generator_torque_input) scale += T(law);
     detail::addPointForce(m, ws, l.body, l.point, Fb, Mb, scale, e);
   }
   for (const DofLoad& l : m.dof_loads) e(l.dof) += l.value * detail::inputScale(u, l.input);

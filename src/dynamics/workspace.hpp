@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "src/model/model.hpp"
+#include "src/model/scalar.hpp"
 
 namespace whirl {
 
@@ -92,11 +93,46 @@ struct SectionJet {
   double J[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};        ///< ∂(fx, fy, mz)/∂(vx, vy, θ)
 };
 
+/// One blade's aerodynamic load sums and their first derivatives with respect to the few variables
+/// they depend on, at one point, for the frozen-wake AD passes of a linearization (Jacobian
+/// preaccumulation, Griewank & Walther 2008, §10): each pass then chains these derivatives with its
+/// own derivatives of the variables instead of evaluating the blade's elements in its AD scalar
+/// (aero_blade_jet.hxx).
+///
+/// Sums S (dim ns = 6 + nc + ne; detail::BodyLoadSum in body components): the elements' force Fb (3)
+/// and moment Mb about the body origin (3), fk_k = Σ P_kᵀ F (nc), gθ_j = Σ θ_jᵀ M (ne).
+/// Variables z (dim nz = 12 + 2 ne), ground components: the small rotation δθ of the body frame
+/// (R = (I + [δθ]×) R₀) (3), the height r_z of its origin (1), the body's elastic coordinates q_e (ne),
+/// the pitch angle (1); the origin velocity v (3), the angular velocity ω (3), q̇_e (ne), the wind
+/// speed U (1).
+struct BladeJet {
+  bool valid = false;
+  VecX key;  ///< values it was formed at: R (9), r (3), v (3), ω (3), q_e, q̇_e, pitch, U, frozen inductions
+  VecX S;    ///< ns
+  MatX dS;   ///< ns × nz
+  // Buffers (sized once): the pass's key, its derivatives of z (nz × kChunk) and of S; forming the
+  // jet: the basis in AD and in double, the velocity-level derivatives (ns × (7 + ne), row-major).
+  VecX pass_key;
+  Eigen::Matrix<double, Eigen::Dynamic, kChunk> dz, dsum;
+  VecXT<ADChunk> qe_ad, qed_ad, qdd_ad;
+  BasisState<ADChunk> basis_ad;
+  BasisState<double> basis;
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> vel;
+  VecX u1, u2, u3, r1, r2, r3;
+};
+
+/// The jets of the blade elements and of the blades (per element, per blade), kept across the AD
+/// passes of one linearization.
+struct AeroJets {
+  std::vector<SectionJet> sections;  ///< per blade element (AeroModel::nstations())
+  std::vector<BladeJet> blades;      ///< per AeroModel::blades
+};
+
 template <class T>
 struct Workspace {
   explicit Workspace(const Model& m);
   std::vector<BemRoot> bem;           ///< per blade element (AeroModel::nstations())
-  std::vector<SectionJet> jets;       ///< per blade element, for AD passes with a frozen wake
+  AeroJets jets;                      ///< for AD passes with a frozen wake
   VecXT<T> scratch;                   ///< ndof: generalized forces nobody keeps (rotor outputs)
   std::vector<FrameState<T>> frames;  ///< per body
   std::vector<BasisState<T>> basis;   ///< per body

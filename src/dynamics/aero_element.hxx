@@ -1,0 +1,202 @@
+#pragma once
+/// \file
+/// The blade elements of one blade: each element's point, motion and annulus axes from the blade
+/// body's motion, and the loads of all its elements summed in body components (aero_loads.hpp for
+/// the model; aero_model.hpp for the frames).
+#include <cmath>
+#include <string>
+#include <type_traits>
+
+#include "src/dynamics/aero_loads.hpp"
+#include "src/dynamics/aero_section.hxx"
+#include "src/dynamics/kinematics.hpp"
+#include "src/dynamics/point_force.hxx"
+#include "src/model/error.hpp"
+#include "src/model/scalar.hpp"
+
+namespace whirl::detail {
+
+/// Wind velocity at height z (ground frame): U (z / z_ref)^α along the propagation direction, tilted
+/// by the upflow angle (InflowWind's steady wind, WindType = 1).
+/// `direction` is windDirection(w), computed once per load evaluation.
+template <class TK, class T>
+Vec3T<T> steadyWind(const SteadyWind& w, const Vec3& direction, const T& speed, const TK& z) {
+  T U = speed;
+  if (w.shear_exponent != 0.0) {
+    using std::pow;
+    const TK ratio = z / w.reference_height;
+    if (valueOf(ratio) > 0) U = U * T(TK(pow(ratio, w.shear_exponent)));
+    else U = T(0);
+  }
+  return Vec3T<T>(U * direction(0), U * direction(1), U * direction(2));
+}
+
+/// Unit vector of the steady wind (ground frame): along the propagation direction, tilted up by the
+/// upflow angle.
+inline Vec3 windDirection(const SteadyWind& w) {
+  const double cu = std::cos(w.upflow), su = std::sin(w.upflow);
+  return Vec3(cu * std::cos(w.direction), -cu * std::sin(w.direction), su);
+}
+
+/// What a blade's element loads depend on: the pose and motion of the blade body's frame (R body →
+/// ground, origin r, velocity v, angular velocity ω; ground components), its basis state c, ċ
+/// (dim nc), its elastic coordinates q_e (dim ne) and its pitch angle.
+template <class TK>
+struct BladeMotion {
+  const Mat3T<TK>& R;
+  const Vec3T<TK>& r;
+  const Vec3T<TK>& v;
+  const Vec3T<TK>& w;
+  const VecXT<TK>& c;
+  const VecXT<TK>& cd;
+  const TK* qe;
+  TK pitch;
+};
+
+/// The axes of AeroDyn's blade frame without pitch: the body turned back by its pitch angle, in
+/// body components (Ab) and ground components (Rnp = R Ab).
+template <class TK>
+struct BladeAxes {
+  Mat3T<TK> Ab, Rnp;
+};
+
+template <class TK>
+BladeAxes<TK> bladeAxes(const Body& body, const BladeMotion<TK>& bm) {
+  BladeAxes<TK> a;
+  a.Ab = axisRotation(body.axis, TK(-bm.pitch));
+  a.Rnp = bm.R * a.Ab;
+  return a;
+}
+
+/// One element's point and annulus frame.
+template <class TK>
+struct ElementFrame {
+  Vec3T<TK> s;              ///< the point's offset from the body origin, body components [m]
+  Vec3T<TK> Rs, pos, vel;   ///< R s, the point's position [m] and velocity [m/s], ground components
+  Vec3T<TK> xn, ya, zn;     ///< annulus axes x_a (downwind), y_a, z_a (span), ground components
+  Vec3T<TK> xnb, yab, znb;  ///< the same axes, body components
+  TK twist;                 ///< elastic rotation of the section about the span axis (body x) [rad]
+};
+
+/// The element at body point pt: its position, velocity and annulus frame — the no-pitch frame
+/// turned about y_a by the out-of-plane slope of the deflected span axis.
+template <class TK>
+ElementFrame<TK> elementFrame(const Body& body, const BodyPoint& pt, const BladeMotion<TK>& bm,
+                              const BladeAxes<TK>& axes) {
+  using std::sqrt;
+  ElementFrame<TK> g;
+  g.s = Vec3T<TK>::Zero();
+  Vec3T<TK> sd = Vec3T<TK>::Zero();
+  for (int k = 0; k < pt.P.cols(); ++k) {
+    g.s += pt.P.col(k) * bm.c(k);
+    sd += pt.P.col(k) * bm.cd(k);
+  }
+  Vec3T<TK> rot = Vec3T<TK>::Zero();  // small rotations of the section about body x, y, z
+  for (int j = 0; j < body.inertia.ne; ++j) rot += pt.theta.col(j) * bm.qe[j];
+  g.Rs = bm.R * g.s;
+  g.pos = bm.r + g.Rs;
+  g.vel = bm.v + bm.w.cross(g.Rs) + bm.R * sd;
+  // Out-of-plane slope of the deflected span axis (1, θz, −θy): the annulus frame's tilt.
+  const Vec3T<TK> span(TK(1), rot(2), -rot(1));  // body components
+  const Vec3T<TK> xab = axes.Ab.col(1), yab = axes.Ab.col(2), zab = axes.Ab.col(0);
+  // cos and sin of the slope atan2(span·xa, span·za), without the angle.
+  const TK sx = span.dot(xab), sz = span.dot(zab);
+  const TK h = sqrt(sx * sx + sz * sz);
+  const TK cs = sz / h, ss = sx / h;
+  const Vec3T<TK> xa = axes.Rnp.col(1), za = axes.Rnp.col(0);
+  g.xn = cs * xa - ss * za;
+  g.zn = ss * xa + cs * za;
+  g.ya = axes.Rnp.col(2);
+  g.xnb = cs * xab - ss * zab;
+  g.znb = ss * xab + cs * zab;
+  g.yab = yab;
+  g.twist = rot(0);
+  return g;
+}
+
+/// Where the elements of one blade are evaluated: the hub (rotor apex and disk normal, for the
+/// distance of an element from the rotor axis), the wind, the BEM weight of the rotor's tip-speed
+/// ratio, and the induction treatment.
+template <class TK, class T>
+struct RotorInflow {
+  const Vec3T<TK>& hub;   ///< rotor apex, ground components [m]
+  const Vec3T<TK>& disk;  ///< rotor axis (disk normal), ground components
+  const T& speed;         ///< hub-height wind speed U [m/s]
+  const Vec3& wind_dir;   ///< windDirection of the model's wind
+  const T& weight;        ///< aero::inductionWeight of the tip-speed ratio (BEM solved only)
+  const AeroInflow* frozen;
+};
+
+/// sum += the loads of blade bi's elements (body components: BodyLoadSum::addBody), elements numbered
+/// from index0 over all blades; totals and record (double) accumulate when given.
+/// Throws ComputeError naming the blade and element when BEM has no solution.
+template <class TK, class T>
+void bladeLoads(const Model& m, int bi, int index0, const BladeMotion<TK>& bm, const RotorInflow<TK, T>& in,
+                std::vector<BemRoot>& bem, std::vector<SectionJet>& jets, AeroRecord* record,
+                RotorTotals<T>* totals, BodyLoadSum<T>& sum) {
+  const AeroModel& am = m.aero;
+  const AeroBlade& blade = am.blades[static_cast<std::size_t>(bi)];
+  const Body& body = m.bodies[blade.body];
+  const BladeAxes<TK> axes = bladeAxes(body, bm);
+  using std::sqrt;
+  for (std::size_t si = 0; si < blade.stations.size(); ++si) {
+    const int index = index0 + static_cast<int>(si);
+    const AeroStation& st = blade.stations[si];
+    const BodyPoint& pt = body.points[st.point];
+    const ElementFrame<TK> g = elementFrame(body, pt, bm, axes);
+    const Vec3T<T> rel = steadyWind(am.wind, in.wind_dir, in.speed, g.pos(2)) - g.vel.template cast<T>();
+    const T vx = rel.dot(g.xn.template cast<T>()), vy = rel.dot(g.ya.template cast<T>());
+    const Vec3T<TK> d = g.pos - in.hub;
+    const Vec3T<TK> dr = d - d.dot(in.disk) * in.disk;
+    const TK r = sqrt(dr.dot(dr));
+    // Positive twist and pitch turn the leading edge into the wind, about −x; an elastic
+    // rotation about +x is the opposite.
+    const T theta = T(st.twist) + T(bm.pitch - g.twist);
+    SectionState<T> sec;
+    try {
+      sec = in.frozen ? frozenSectionJet(am, st, vx, vy, theta, valueOf(r), in.frozen->axial(index),
+                                         in.frozen->tangential(index), jets[static_cast<std::size_t>(index)])
+                      : bemSection(am, st, vx, vy, theta, T(r), in.weight, bem[static_cast<std::size_t>(index)]);
+    } catch (const ComputeError& err) {
+      throw ComputeError(body.name + " aero element " + std::to_string(si + 1) + " (span " + std::to_string(st.span) +
+                         " m) at hub-height wind speed " + std::to_string(valueOf(in.speed)) + " m/s: " + err.what());
+    }
+    const aero::SectionLoads<T>& L = sec.loads;
+    const Vec3T<T> Fb = L.fx * g.xnb.template cast<T>() + L.fy * g.yab.template cast<T>();
+    const Vec3T<T> Mb = L.mz * g.znb.template cast<T>();
+    sum.addBody(pt, g.s, Fb, Mb, st.weight);
+    if (totals || (std::is_same_v<T, double> && record)) {  // ground components: rotor totals, the record
+      const Vec3T<T> Fg = L.fx * g.xn.template cast<T>() + L.fy * g.ya.template cast<T>();
+      const Vec3T<T> Mg = L.mz * g.zn.template cast<T>();
+      if (totals) {
+        const Vec3T<T> axis = in.disk.template cast<T>();
+        totals->thrust += T(st.weight) * Fg.dot(axis);
+        totals->torque += T(st.weight) * (Vec3T<T>(d.template cast<T>().cross(Fg)) + Mg).dot(axis);
+      }
+      if constexpr (std::is_same_v<T, double> && std::is_same_v<TK, double>) {
+        if (record) {
+          AeroElementState es;
+          es.vx = vx;
+          es.vy = vy;
+          es.r = r;
+          es.phi = L.phi;
+          es.alpha = L.alpha;
+          es.a = sec.a;
+          es.ap = sec.ap;
+          es.w = L.W;
+          es.cl = L.cl;
+          es.cd = L.cd;
+          es.cm = L.cm;
+          es.fx = L.fx;
+          es.fy = L.fy;
+          es.m = L.mz;
+          record->elements.push_back(es);
+          record->thrust += st.weight * Fg.dot(in.disk);
+          record->torque += st.weight * (d.cross(Fg) + Mg).dot(in.disk);
+        }
+      }
+    }
+  }
+}
+
+}  // namespace whirl::detail
