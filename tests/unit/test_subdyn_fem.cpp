@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <numbers>
 
+#include "modal/modes.hpp"
 #include "src/fem/fem_body.hpp"
 #include "src/fem/rigid_interface.hpp"
 #include "src/io/openfast_overrides.hpp"
@@ -22,6 +23,7 @@ namespace {
 
 constexpr double pi = std::numbers::pi;
 const std::string kTube = std::string(WHIRL_SOURCE_DIR) + "/tests/data/subdyn/cantilever_v101.dat";
+const std::string kTubeV4 = std::string(WHIRL_SOURCE_DIR) + "/tests/data/subdyn/cantilever_v4.dat";
 
 io::SubDynInput tube(const std::vector<std::string>& sets = {}) {
   std::vector<io::KeyOverride> o;
@@ -101,6 +103,34 @@ TEST(SubDynFem, GuyanTubeIsOneCubicElement) {
   std::printf("Guyan %.6f Hz, one cubic element %.6f Hz\n", guyan(0), expected);
   EXPECT_NEAR(guyan(0), expected, 2e-4 * expected);
   EXPECT_NEAR(guyan(1), expected, 2e-4 * expected);
+}
+
+// Damping. With the TP held, the Craig–Bampton coordinates are the fixed-interface modes, and each
+// damped mode of (M, C, K) restricted to them has the ratio JDampings gives it (2 %, SubDyn's C_MM).
+TEST(SubDynFem, CraigBamptonModesHaveTheirJDampings) {
+  const SubDynBody b = buildSubDynBody(tube({"CBMod=True", "Nmodes=5", "JDampings=2"}), Vec3::Zero());
+  const MatX M = fem::elasticMass(b.fem.body.inertia).bottomRightCorner(5, 5);
+  const MatX K = b.fem.body.elastic.K.bottomRightCorner(5, 5), C = b.damping.bottomRightCorner(5, 5);
+  const std::vector<Mode> modes = computeModes(M, C, K, {"a", "b", "c", "d", "e"});
+  ASSERT_EQ(modes.size(), 5u);
+  for (const Mode& m : modes) EXPECT_NEAR(m.damping_ratio, 0.02, 1e-10);
+  for (int j = 0; j < 5; ++j) EXPECT_NEAR(modes[j].freq_hz, b.fem.fixed_interface_hz(j), 1e-9 * modes[j].freq_hz);
+}
+
+// Rayleigh Guyan damping (GuyanDampMod = 1, OpenFAST v3+ layout): C_BB = α M_BB + β K_BB gives each
+// mode of the Guyan model the ratio ζ = α/(2ω) + βω/2 (Rayleigh damping's classical result).
+TEST(SubDynFem, RayleighGuyanDampingGivesTheClassicalRatios) {
+  io::OverrideSet set({io::parse_override("Nmodes=0"), io::parse_override("GuyanDampMod=1"),
+                       io::parse_override("RayleighDamp=0.05,0.002")});
+  const SubDynBody b = buildSubDynBody(io::read_subdyn(kTubeV4, &set), Vec3::Zero());
+  const MatX M = fem::elasticMass(b.fem.body.inertia);
+  const std::vector<Mode> modes = computeModes(M, b.damping, b.fem.body.elastic.K,
+                                               {"ux", "uy", "uz", "rx", "ry", "rz"});
+  ASSERT_EQ(modes.size(), 6u);
+  for (const Mode& m : modes) {
+    const double w = 2 * pi * m.freq_hz;
+    EXPECT_NEAR(m.damping_ratio, 0.05 / (2 * w) + 0.002 * w / 2, 1e-9) << m.freq_hz << " Hz";
+  }
 }
 
 // The rigid tie: with every node tied to R, T spans the rigid-body motions of the whole structure:
