@@ -24,6 +24,7 @@ add fuzz_airfoil cases/nrel5mw/5MW_Baseline/Airfoils/*.dat cases/aero_rotor/airf
 add fuzz_inflowwind cases/nrel5mw/aero/InflowWind.dat tests/data/openfast/aero/*/InflowWind*.dat
 add fuzz_servodyn_aero cases/nrel5mw/aero/ServoDyn.dat cases/nrel5mw/*_ServoDyn.dat tests/data/openfast/aero/*/ServoDyn.dat
 add fuzz_lin tests/data/openfast-lin/*/*.lin
+add fuzz_subdyn cases/oc3_monopile/5MW_Baseline/*_SubDyn.dat tests/data/subdyn/*.dat
 add fuzz_schedule cases/nrel5mw/NREL5MW_Oper.csv tests/mpi/*.csv fuzz/seeds/schedule/*
 add fuzz_compare cases/*/table9_1.csv cases/*/reference.csv fuzz/seeds/compare/*
 add fuzz_tracking fuzz/seeds/tracking/*

@@ -5,6 +5,7 @@
 
 #include <Eigen/SparseCholesky>
 
+#include "src/fem/rigid_interface.hpp"
 #include "src/model/error.hpp"
 
 namespace whirl::fem {
@@ -18,26 +19,56 @@ FemBody buildFemBody(const FemBodySpec& spec, const std::string& name, const Mod
   fb.K = restrictTo(fb.assembly.K, fb.map);
   fb.M = restrictTo(fb.assembly.M, fb.map);
   const int n = fb.map.nfree();
-  if (spec.reduction == ReductionKind::None) {
+  std::vector<int> interface;  // free indices of the interface nodes' DOFs
+  for (int node : spec.interface_nodes)
+    for (int k = 0; k < kNodeDofs; ++k)
+      if (const int f = fb.map.index[kNodeDofs * node + k]; f >= 0) interface.push_back(f);
+  MatX tie;  // rigid interface: free DOFs × 6
+  if (spec.rigid_interface) {
+    if (spec.interface_nodes.empty())
+      throw InputError("FE body '" + name + "': a rigid interface needs interface nodes");
+    tie = rigidTie(spec.model, fb.map, spec.interface_nodes, *spec.rigid_interface);
+    for (int k = 0; k < kNodeDofs; ++k) fb.dof_names.push_back(spec.rigid_interface_name + " " + kNodeDofNames[k]);
+  }
+  if (spec.reduction == ReductionKind::None && !spec.rigid_interface) {
     fb.basis = MatX::Identity(n, n);
     for (int f : fb.map.free) fb.dof_names.push_back(dofName(f));
-  } else {
-    std::vector<int> interface;
-    for (int node : spec.interface_nodes)
-      for (int k = 0; k < kNodeDofs; ++k) {
-        const int f = fb.map.index[kNodeDofs * node + k];
-        if (f < 0) continue;
-        interface.push_back(f);
-        fb.dof_names.push_back(dofName(kNodeDofs * node + k));
+  } else if (spec.reduction == ReductionKind::None) {
+    // [T, the other free DOFs as they are].
+    std::vector<bool> tied(n, false);
+    for (int f : interface) tied[f] = true;
+    fb.basis = MatX::Zero(n, 6 + n - static_cast<int>(interface.size()));
+    fb.basis.leftCols(6) = tie;
+    int col = 6;
+    for (int f = 0; f < n; ++f)
+      if (!tied[f]) {
+        fb.basis(f, col++) = 1.0;
+        fb.dof_names.push_back(dofName(fb.map.free[f]));
       }
+  } else {
     if (interface.empty()) throw InputError("FE body '" + name + "': the interface has no free DOF");
+    if (!spec.rigid_interface)
+      for (int f : interface) fb.dof_names.push_back(dofName(fb.map.free[f]));
     const int modes = spec.reduction == ReductionKind::CraigBampton ? spec.modes : 0;
     const Reduction r = modes > 0 ? craigBampton(fb.K, fb.M, interface, modes, solver) : guyan(fb.K, interface);
-    fb.basis = r.basis;
+    const int nb = static_cast<int>(interface.size());
+    if (spec.rigid_interface) {
+      // Static modes of the tied interface: Φ_b T_b, T_b the interface rows of T.
+      MatX Tb(nb, 6);
+      for (int k = 0; k < nb; ++k) Tb.row(k) = tie.row(interface[k]);
+      fb.basis.resize(n, 6 + modes);
+      fb.basis.leftCols(6) = r.basis.leftCols(nb) * Tb;
+      fb.basis.rightCols(modes) = r.basis.rightCols(modes);
+    } else {
+      fb.basis = r.basis;
+    }
     fb.fixed_interface_hz = r.fixed_interface_omega2.cwiseMax(0.0).cwiseSqrt() / (2 * std::numbers::pi);
     for (int j = 0; j < modes; ++j) fb.dof_names.push_back("CB " + std::to_string(j + 1));
   }
   fb.body = ritzBody(spec.model, fb.assembly, fb.map, fb.basis, fb.K, spec.points);
+  if (spec.rigid_interface)
+    fb.body.points.push_back(
+        rigidInterfacePoint(spec.rigid_interface_name, *spec.rigid_interface, static_cast<int>(fb.basis.cols())));
   return fb;
 }
 

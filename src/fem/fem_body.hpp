@@ -3,6 +3,7 @@
 /// An FE body from its description: assemble, apply the boundary conditions, reduce (none, Guyan,
 /// Craig–Bampton) and turn into a whirl Ritz body (ritz_body.hpp), with DOF names; and the
 /// geometric stiffness of the gravity loads it carries.
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -20,6 +21,12 @@ struct FemBodySpec {
   ReductionKind reduction = ReductionKind::None;
   std::vector<int> interface_nodes;                  ///< Guyan / Craig–Bampton master nodes
   int modes = 0;                                     ///< Craig–Bampton fixed-interface modes
+  /// A rigid interface (rigid_interface.hpp): the interface nodes tied to this point, whose six DOFs
+  /// (body axes) become the body's first six coordinates, named "<rigid_interface_name> ux" … "rz",
+  /// and a body point of that name. With ReductionKind::None the other free DOFs follow as they are;
+  /// with Guyan or Craig–Bampton the static modes of the tied interface, then the modes.
+  std::optional<Vec3> rigid_interface;
+  std::string rigid_interface_name = "interface";
 };
 
 struct FemBody {

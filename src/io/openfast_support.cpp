@@ -11,7 +11,10 @@ std::vector<std::string> unsupported_options(const FstInput& fst) {
   Refusals r(fst.source);
   r.add_if(fst.CompElast == 2, "CompElast", "BeamDyn blades are not modelled, CompElast = 1 uses the ElastoDyn blade files");
   r.add_if(fst.CompElast != 1 && fst.CompElast != 2, "CompElast", "only ElastoDyn (CompElast = 1) is modelled");
-  r.add_if(fst.CompSub != 0, "CompSub", "a flexible substructure is not modelled, the tower base is clamped");
+  r.add_if(fst.CompSub == 2, "CompSub", "an external platform (ExtPtfm superelement) is not modelled",
+           "CompSub = 0 or 1 (SubDyn)");
+  r.add_if(fst.CompSub != 0 && fst.CompSub != 1 && fst.CompSub != 2, "CompSub", "unknown substructure module",
+           "CompSub = 0 or 1 (SubDyn)");
   r.add_if(fst.MHK.value_or(0) != 0, "MHK", "marine turbines need buoyancy and added mass, not modelled");
   r.add_if(fst.NRotors.value_or(1) != 1, "NRotors", "only single-rotor turbines are modelled");
   return r.take();
@@ -72,7 +75,17 @@ void require_supported(const OpenFastTurbine& turbine) {
   std::vector<std::string> issues = unsupported_options(turbine.fst);
   for (std::string& s : unsupported_options(turbine.elastodyn)) issues.push_back(std::move(s));
   const FstInput& fst = turbine.fst;
-  if (has_platform_dofs(turbine.elastodyn)) {
+  if (fst.CompSub == 1) {
+    // A SubDyn substructure holds the platform. Its hydrodynamics (HydroDyn's strip-theory members on the
+    // substructure's members) and a mooring on it are another model.
+    Refusals r(fst.source);
+    r.add_if(fst.CompHydro != 0, "CompHydro",
+             "HydroDyn on a SubDyn substructure (strip-theory members: added mass and buoyancy of the "
+             "substructure's members) is not modelled; --set CompHydro=0 leaves the hydrodynamics out");
+    r.add_if(fst.CompMooring != 0, "CompMooring", "a mooring on a SubDyn substructure is not modelled",
+             "CompMooring = 0");
+    for (std::string& s : r.take()) issues.push_back(std::move(s));
+  } else if (has_platform_dofs(turbine.elastodyn)) {
     Refusals r(fst.source);
     r.add_if(fst.CompMooring > 1, "CompMooring", "only MAP++ mooring files are read", "CompMooring = 0 or 1 (MAP++)");
     r.add_if(fst.CompHydro > 1, "CompHydro", "unknown hydrodynamics module", "CompHydro = 0 or 1 (HydroDyn)");

@@ -14,9 +14,9 @@
 namespace whirl::io {
 
 /// Options of the `.fst` whirl cannot model: CompElast != 1 (BeamDyn or Simplified-ElastoDyn blades),
-/// CompSub != 0 (flexible substructure), MHK != 0 (buoyancy, added mass), NRotors > 1.
+/// CompSub = 2 (ExtPtfm) or unknown, MHK != 0 (buoyancy, added mass), NRotors > 1.
 /// Load modules are not listed here: aero, inflow and controls are read on request; HydroDyn and MAP++
-/// are read when a platform DOF is on (require_supported checks the combination).
+/// are read when a platform DOF is on and CompSub = 0 (require_supported checks the combination).
 std::vector<std::string> unsupported_options(const FstInput& fst);
 
 /// Options of the ElastoDyn files whirl cannot model: NumBl != 3, TeetDOF with a 2-bladed rotor,
@@ -29,7 +29,8 @@ bool has_platform_dofs(const ElastoDynInput& ed);
 
 /// Throws InputError listing every unsupported option ("; "-separated, first one first) when there is any.
 /// Platform DOFs are refused (one clause) when nothing holds the platform: an ElastoDyn file alone,
-/// or a deck with CompHydro = 0 and CompMooring = 0; and with a mooring module other than MAP++.
+/// or a deck with CompHydro = 0, CompMooring = 0 and no SubDyn; and with a mooring module other than
+/// MAP++. With SubDyn (CompSub = 1), HydroDyn and moorings are refused (not modelled on a substructure).
 void require_supported(const ElastoDynInput& ed);
 void require_supported(const OpenFastTurbine& turbine);
 

@@ -9,7 +9,10 @@ OpenFastTurbine read_openfast_turbine(const std::filesystem::path& fst, Override
   OpenFastTurbine t;
   t.fst = read_fst(fst, overrides);
   t.elastodyn = read_elastodyn(t.fst.source.get_existing_path("EDFile"), overrides);
-  if (has_platform_dofs(t.elastodyn)) {
+  if (t.fst.CompSub == 1) {
+    // HydroDyn and moorings on a SubDyn substructure are refused by require_supported, unread.
+    t.subdyn = read_subdyn(t.fst.source.get_existing_path("SubFile"), overrides);
+  } else if (has_platform_dofs(t.elastodyn)) {
     if (t.fst.CompHydro == 1) t.hydrodyn = read_hydrodyn(t.fst.source.get_existing_path("HydroFile"), overrides);
     if (t.fst.CompMooring == 1) t.mooring = read_map(t.fst.source.get_existing_path("MooringFile"));
   }

@@ -11,6 +11,7 @@
 #include "src/io/hydrodyn_input.hpp"
 #include "src/io/map_input.hpp"
 #include "src/io/servodyn_input.hpp"
+#include "src/io/subdyn_input.hpp"
 
 namespace whirl::io {
 
@@ -22,12 +23,13 @@ struct OpenFastTurbine {
   ElastoDynInput elastodyn;
   std::optional<HydroDynInput> hydrodyn;  ///< with a platform DOF on and CompHydro = 1
   std::optional<MapInput> mooring;        ///< with a platform DOF on and CompMooring = 1
+  std::optional<SubDynInput> subdyn;      ///< with CompSub = 1 (then HydroDyn and mooring are not read)
 };
 
-/// Reads `fst` and the ElastoDyn files it names, and with a platform DOF on its HydroDyn (CompHydro = 1)
-/// and MAP++ (CompMooring = 1) files. `overrides` (may be null) apply to every file read;
-/// call overrides->require_all_used() once all the files the run needs are read.
-/// Throws InputError naming file, line and key, e.g. "a.fst:33: EDFile: file not found: …".
+/// Reads `fst` and the ElastoDyn files it names, its SubDyn file (CompSub = 1), and otherwise, with a
+/// platform DOF on, its HydroDyn (CompHydro = 1) and MAP++ (CompMooring = 1) files. `overrides` (may be null) apply to
+/// every file read; call overrides->require_all_used() once all the files the run needs are read. Throws InputError
+/// naming file, line and key, e.g. "a.fst:33: EDFile: file not found: …".
 OpenFastTurbine read_openfast_turbine(const std::filesystem::path& fst, OverrideSet* overrides = nullptr);
 
 /// The ServoDyn file when CompServo = 1, nullopt when ServoDyn is off (no yaw spring). Throws

@@ -22,6 +22,11 @@
 /// | kMaxLinDimension | 100000 | `.lin` header counts (states, inputs, outputs) and matrix sizes `A: n x m` |
 /// | kMaxSweepPoints | 100000 | `--rpm START:STEP:STOP` points, `--schedule` rows |
 /// | kMaxAzimuths | 3600 | `--azimuths N` (CLI::Range in src/cli/cmd_*.cpp) |
+/// | kMaxSubDynJoints | 2000 | SubDyn `NJoints` (and `NReact`, `NInterf`, `NCmass`, which list joints) |
+/// | kMaxSubDynMembers | 2000 | SubDyn `NMembers`; with `NDiv` at most kMaxFemElements elements in all |
+/// | kMaxSubDynNDiv | 100 | SubDyn `NDiv` |
+/// | kMaxSubDynPropSets | 2000 | SubDyn property-set counts (`NPropSets`, `NXPropSets`) |
+/// | kMaxReducedModes | 1000 | SubDyn `Nmodes` too |
 namespace whirl::limits {
 
 inline constexpr int kMaxElastoDynNodes = 1000;
@@ -39,5 +44,11 @@ inline constexpr int kMaxAnalyticShapeMode = 1000;
 inline constexpr int kMaxLinDimension = 100000;
 inline constexpr int kMaxSweepPoints = 100000;
 inline constexpr int kMaxAzimuths = 3600;
+// SubDyn substructures: the FE model has NJoints + (NDiv − 1) NMembers nodes; its elements are bounded
+// as a `fem_beam`'s (kMaxFemElements), since the Craig–Bampton fixed-interface eigenproblem is dense.
+inline constexpr int kMaxSubDynJoints = 2000;
+inline constexpr int kMaxSubDynMembers = 2000;
+inline constexpr int kMaxSubDynNDiv = 100;
+inline constexpr int kMaxSubDynPropSets = 2000;
 
 }  // namespace whirl::limits

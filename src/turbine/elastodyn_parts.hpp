@@ -11,6 +11,7 @@
 #include "src/io/elastodyn_input.hpp"
 #include "src/io/openfast_turbine.hpp"
 #include "src/io/servodyn_input.hpp"
+#include "src/io/subdyn_input.hpp"
 #include "src/turbine/elastodyn_blade_shapes.hpp"
 #include "src/turbine/elastodyn_model.hpp"
 
@@ -39,18 +40,40 @@ struct TowerParts {
   MatX base_moment_gains;     ///< 2 × 4: (m_y, m_z) at the base from the curvature (beam_moment.hpp)
 };
 
-/// The floating platform (elastodyn_platform.cpp): a rigid body on a free joint at the platform
-/// reference point, body = −1 when no platform DOF is on (the tower base is then clamped).
+/// The platform (elastodyn_platform.cpp): a rigid body at the platform reference point, on a free joint
+/// (floating) or tied to a SubDyn substructure's transition piece; body = −1 when there is none (no
+/// platform DOF on and no SubDyn: the tower base is then clamped).
 struct PlatformParts {
   int body = -1;
   Vec3 reference = Vec3::Zero();  ///< platform reference point, ground frame [m]
   std::array<int, 6> dofs{};      ///< surge, sway, heave, roll, pitch, yaw
 };
 
-/// The platform body with PtfmMass, PtfmCM*, PtfmRIner/PIner/YIner (and the v4+ products), its six
-/// coordinates `platform surge` … `platform yaw` (switches PtfmSgDOF … PtfmYDOF, initial values
-/// PtfmSurge … PtfmYaw); nothing when every platform DOF is off.
+/// "platform surge", "platform sway", "platform heave", "platform roll", "platform pitch", "platform yaw".
+inline constexpr std::array<const char*, 6> kPlatformDofNames = {"platform surge", "platform sway",  "platform heave",
+                                                                 "platform roll",  "platform pitch", "platform yaw"};
+
+/// What ElastoDyn says about its platform: reference point (PtfmRefzt, v5's PtfmRefxt/yt), rigid-body
+/// inertia (PtfmMass at PtfmCM*, PtfmRIner/PIner/YIner and the v4+ products, about the reference point's
+/// body frame), DOF switches (PtfmSgDOF … PtfmYDOF) and initial values (PtfmSurge … PtfmYaw, rad).
+struct PlatformDescription {
+  Vec3 reference = Vec3::Zero();
+  BodyInertia inertia;
+  std::array<bool, 6> on{};
+  std::array<double, 6> value{};
+};
+PlatformDescription describePlatform(const Builder& b);
+
+/// The floating platform body on a free joint with its six coordinates `platform surge` … `platform
+/// yaw` (switched off: frozen at their initial values); nothing when every platform DOF is off.
 PlatformParts addPlatform(Builder& b);
+
+/// The SubDyn substructure (elastodyn_substructure.cpp): its FE body clamped at the reaction joints,
+/// reduced to the transition piece at the platform reference point, and the ElastoDyn platform body
+/// tied to the TP. The TP's six DOFs are the platform coordinates (`platform surge` … `platform yaw`,
+/// switched and initialised as ElastoDyn's), then the Craig–Bampton modes `substructure CB 1` …, as
+/// OpenFAST couples ElastoDyn's platform to SubDyn's TP.
+PlatformParts addSubstructurePlatform(Builder& b, const io::SubDynInput& sd);
 
 /// HydroDyn's linear terms and MAP++'s mooring lines on the platform (elastodyn_offshore.cpp).
 void addOffshoreLoads(Builder& b, const PlatformParts& platform, const io::OpenFastTurbine& t);

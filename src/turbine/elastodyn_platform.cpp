@@ -1,5 +1,6 @@
-// The ElastoDyn platform: a rigid body on a free joint at the platform reference point, carrying the
-// tower base [Jonkman2007] (ElastoDyn's platform DOFs).
+// The ElastoDyn platform: a rigid body at the platform reference point carrying the tower base
+// [Jonkman2007] (ElastoDyn's platform DOFs), on a free joint for a floating platform, or tied to a
+// SubDyn substructure's transition piece (elastodyn_substructure.cpp).
 #include <numbers>
 
 #include "src/io/openfast_support.hpp"
@@ -8,15 +9,14 @@
 
 namespace whirl::elastodyn {
 
-PlatformParts addPlatform(Builder& b) {
+PlatformDescription describePlatform(const Builder& b) {
   const io::ElastoDynInput& ed = b.ed;
-  PlatformParts out;
-  if (!io::has_platform_dofs(ed)) return out;
   const io::ElastoDynConfiguration& c = ed.config;
   const io::ElastoDynMassInertia& m = ed.mass;
+  PlatformDescription p;
   // Reference point: PtfmRefzt (v1.00 files: PtfmRef, positive down), PtfmRefxt/yt from v5.
-  out.reference = Vec3(c.PtfmRefxt.value_or(0.0), c.PtfmRefyt.value_or(0.0),
-                       c.PtfmRefzt ? *c.PtfmRefzt : -c.PtfmRef.value_or(0.0));
+  p.reference = Vec3(c.PtfmRefxt.value_or(0.0), c.PtfmRefyt.value_or(0.0),
+                     c.PtfmRefzt ? *c.PtfmRefzt : -c.PtfmRef.value_or(0.0));
   const Vec3 cm(c.PtfmCMxt.value_or(0.0), c.PtfmCMyt.value_or(0.0), c.PtfmCMzt.value_or(0.0));
   if (m.PtfmMass < 0) throw InputError(b.where("PtfmMass", "must not be negative"));
   // ElastoDyn's products of inertia are −∫xy dm etc., the off-diagonal entries of the tensor.
@@ -24,20 +24,28 @@ PlatformParts addPlatform(Builder& b) {
   J << m.PtfmRIner, m.PtfmXYIner.value_or(0.0), m.PtfmXZIner.value_or(0.0),  //
       m.PtfmXYIner.value_or(0.0), m.PtfmPIner, m.PtfmYZIner.value_or(0.0),    //
       m.PtfmXZIner.value_or(0.0), m.PtfmYZIner.value_or(0.0), m.PtfmYIner;
+  p.inertia = rigidBodyInertia(m.PtfmMass, cm - p.reference, J);
+  const io::ElastoDynDofs& d = ed.dof;
+  const io::ElastoDynInitialConditions& i = ed.init;
+  constexpr double deg = std::numbers::pi / 180.0;
+  p.on = {d.PtfmSgDOF, d.PtfmSwDOF, d.PtfmHvDOF, d.PtfmRDOF, d.PtfmPDOF, d.PtfmYDOF};
+  p.value = {i.PtfmSurge, i.PtfmSway, i.PtfmHeave, i.PtfmRoll * deg, i.PtfmPitch * deg, i.PtfmYaw * deg};
+  return p;
+}
+
+PlatformParts addPlatform(Builder& b) {
+  PlatformParts out;
+  if (!io::has_platform_dofs(b.ed)) return out;
+  const PlatformDescription d = describePlatform(b);
+  out.reference = d.reference;
   Body p;
   p.name = "platform";
   p.offset = out.reference;
   p.joint = JointType::Free;  // translations along ground x, y, z, then yaw, pitch, roll
-  p.inertia = rigidBodyInertia(m.PtfmMass, cm - out.reference, J);
+  p.inertia = d.inertia;
   out.body = b.addBody(std::move(p));
-  const io::ElastoDynDofs& d = ed.dof;
-  const io::ElastoDynInitialConditions& i = ed.init;
-  constexpr double deg = std::numbers::pi / 180.0;
-  const char* names[6] = {"platform surge", "platform sway", "platform heave",
-                          "platform roll",  "platform pitch", "platform yaw"};
-  const bool on[6] = {d.PtfmSgDOF, d.PtfmSwDOF, d.PtfmHvDOF, d.PtfmRDOF, d.PtfmPDOF, d.PtfmYDOF};
-  const double value[6] = {i.PtfmSurge, i.PtfmSway, i.PtfmHeave, i.PtfmRoll * deg, i.PtfmPitch * deg, i.PtfmYaw * deg};
-  for (int k = 0; k < 6; ++k) out.dofs[k] = b.addDof(names[k], out.body, DofKind::Joint, k, on[k], value[k]);
+  for (int k = 0; k < 6; ++k)
+    out.dofs[k] = b.addDof(kPlatformDofNames[k], out.body, DofKind::Joint, k, d.on[k], d.value[k]);
   return out;
 }
 

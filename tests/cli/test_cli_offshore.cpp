@@ -1,10 +1,14 @@
 // `whirl modes` on the OC3-Hywind deck (cases/oc3_hywind, OpenFAST certification Test24): the six
 // platform modes by name, the one-line note for the ignored waves, and the one-line refusal of the
-// deck's radiation convolution.
+// deck's radiation convolution. The OC3 monopile (cases/oc3_monopile, Test19, a SubDyn substructure):
+// `whirl modes` and `whirl campbell`, the refusal of HydroDyn on a substructure, and a bad SubDyn file
+// stopping with its place and nothing written.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
 
 #include "tests/cli/cli_support.hpp"
 
@@ -33,6 +37,59 @@ TEST(CliOffshore, RadiationConvolutionRefusedOnOneLine) {
   EXPECT_THAT(r.err, HasSubstr("HydroDyn.dat:53: RdtnMod: 1 not supported by whirl"));
   EXPECT_THAT(r.err, HasSubstr("--set RdtnMod=0"));
   EXPECT_EQ(lines(r.err), 1) << r.err;
+}
+
+const std::string kMonopile = "cases/oc3_monopile/Test19.fst";
+const std::string kMonopileSets = " --set CompAero=0 --set CompHydro=0";
+
+TEST(CliOffshore, Oc3MonopileModesWithTheSubstructure) {
+  const auto r = test::whirl("modes " + kMonopile + kMonopileSets +
+                             " --set RotSpeed=0 --set GenDOF=False --format csv");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("tower FA 1"));
+  EXPECT_THAT(r.out, HasSubstr("tower SS 1"));
+  EXPECT_EQ(r.err, "");
+}
+
+TEST(CliOffshore, Oc3MonopileCampbell) {
+  const auto dir = test::freshDir("oc3_monopile_campbell");
+  const auto r = test::whirl("campbell " + kMonopile + kMonopileSets + " --rpm 0:1:12 --no-plot --out '" +
+                             dir.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string csv = test::slurp(dir / "campbell.csv");
+  EXPECT_THAT(csv, HasSubstr("tower FA 1"));
+  EXPECT_THAT(csv, HasSubstr("\n0,"));   // parked
+  EXPECT_THAT(csv, HasSubstr("\n12,"));  // to 12 rpm
+}
+
+TEST(CliOffshore, HydroDynOnASubstructureRefusedOnOneLine) {
+  const auto r = test::whirl("modes " + kMonopile + " --set CompAero=0");
+  EXPECT_NE(r.code, 0);
+  EXPECT_THAT(r.err,
+              HasSubstr("Test19.fst:17: CompHydro: 1 not supported by whirl (HydroDyn on a SubDyn substructure"));
+  EXPECT_THAT(r.err, HasSubstr("--set CompHydro=0"));
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+}
+
+// A member of zero length in a copy of the deck: file, line and key, exit code 1, no output files.
+TEST(CliOffshore, ZeroLengthSubDynMemberStopsWithItsPlace) {
+  const auto dir = test::freshDir("oc3_monopile_bad");
+  std::filesystem::copy(std::string(WHIRL_SOURCE_DIR) + "/cases/oc3_monopile", dir / "deck",
+                        std::filesystem::copy_options::recursive);
+  const auto sd = dir / "deck/5MW_Baseline/NRELOffshrBsline5MW_OC3Monopile_SubDyn.dat";
+  std::filesystem::permissions(sd, std::filesystem::perms::owner_write, std::filesystem::perm_options::add);
+  std::string text = test::slurp(sd);
+  const std::string joint2 = "   2              0.00000                0.00000              -10.00000";
+  text.replace(text.find(joint2), joint2.size(),
+               "   2              0.00000                0.00000              -20.00010");
+  std::ofstream(sd) << text;
+  const auto out = dir / "out";
+  const auto r = test::whirl("linearize deck/Test19.fst" + kMonopileSets + " --out '" + out.string() + "'",
+                             dir.string());
+  EXPECT_EQ(r.code, 1);
+  EXPECT_THAT(r.err, HasSubstr("NRELOffshrBsline5MW_OC3Monopile_SubDyn.dat:36: MJointID2: member 1 has zero length"));
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(out));
 }
 
 }  // namespace
