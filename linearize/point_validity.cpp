@@ -4,8 +4,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
+
+#include "linearize/unrestrained.hpp"
 
 namespace whirl {
+namespace {
+constexpr double kPi = std::numbers::pi;
+}  // namespace
 
 std::vector<std::string> checkPointValidity(const Model& m, const OperatingPoint& op, const ValidityLimits& lim) {
   std::vector<std::string> problems;
@@ -27,6 +33,27 @@ std::vector<std::string> checkPointValidity(const Model& m, const OperatingPoint
     if (!std::isfinite(slope) || slope > lim.max_slope)
       problems.push_back(fmt::format("{}: elastic slope {:.3g} rad breaks the small-angle assumption (limit {:g} rad)",
                                      b.name, slope, lim.max_slope));
+  }
+  // A joint rotation solved for equilibrium more than half a turn from where it started has swung
+  // round: a coordinate too weakly restrained for the loads on it (a parked teeter whose spring cannot
+  // carry the rotor's weight), not a state of the turbine.
+  for (int i : op.solved) {
+    if (i < 0 || i >= op.q.size() || m.dofs[i].kind != DofKind::Joint || loadUnit(m, i) != "N m") continue;
+    const double turn = op.q(i) - m.dofs[i].value;
+    if (!(std::abs(turn) <= kPi))
+      problems.push_back(fmt::format("{}: turned {:.4g} rad from its start {:.4g} rad, more than half a turn: too "
+                                     "weakly restrained for the loads on it; {}",
+                                     m.dofs[i].name, turn, m.dofs[i].value, holdAdvice(m, i)));
+  }
+  // A spring law linearized on one piece (a teeter stop, src/model/model.hpp DofSpring): the point
+  // must lie on that piece, else the linear model has the wrong stiffness or damping there.
+  for (const DofSpring& s : m.springs) {
+    if (s.dof < 0 || s.dof >= op.q.size() || m.dofs[s.dof].frozen) continue;
+    const double q = op.q(s.dof);
+    if (!(q >= s.q_min && q <= s.q_max))
+      problems.push_back(fmt::format("{}: {:.6g} lies outside [{:.6g}, {:.6g}], the piece of its spring law the model "
+                                     "was linearized on ({})",
+                                     m.dofs[s.dof].name, q, s.q_min, s.q_max, s.law));
   }
   const double scale = std::max(op.load_scale, 1.0);
   if (!op.solved.empty() && !(op.residual_norm <= lim.max_relative_residual * scale))

@@ -54,6 +54,9 @@ std::vector<int> unrestrainedCoordinates(const Model& m, const VecX& q, const Ve
 std::string holdAdvice(const Model& m, int dof) {
   if (dof == m.roles.yaw_dof)
     return "hold it with --set YawDOF=False, or a yaw spring (ServoDyn YawSpr with CompServo = 1)";
+  if (dof == m.roles.teeter_dof)
+    return "hold it with --set TeetDOF=False (the teeter locked at TeetDefl), or a teeter spring that carries the "
+           "load (TeetMod = 1: TeetSSSp beyond TeetSStP)";
   return "hold it: freeze the coordinate or add a spring along it";
 }
 

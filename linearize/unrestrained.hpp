@@ -50,8 +50,9 @@ inline constexpr double kMaxHeldDrift = 0.1;
 /// of a tower's first mode.
 inline constexpr double kHeldDriftTime = 10.0;
 
-/// How to hold coordinate `dof` (for messages): for the model's yaw coordinate the OpenFAST keys
-/// ("--set YawDOF=False, or a yaw spring: ServoDyn YawSpr with CompServo = 1"), otherwise generic.
+/// How to hold coordinate `dof` (for messages): for the model's yaw and teeter coordinates the OpenFAST
+/// keys ("--set YawDOF=False, or a yaw spring: ServoDyn YawSpr with CompServo = 1"; "--set
+/// TeetDOF=False, or a teeter spring …"), otherwise generic.
 std::string holdAdvice(const Model& model, int dof);
 
 /// Unit of the generalized load along coordinate `dof`: "N m" (a rotation) or "N" (a translation,

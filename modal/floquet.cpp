@@ -3,10 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <string>
 #include <numbers>
 #include <unsupported/Eigen/FFT>
 #include <unsupported/Eigen/MatrixFunctions>
 
+#include "modal/eigen.hpp"
+#include "modal/floquet_harmonic.hpp"
+#include "modal/floquet_multipliers.hpp"
 #include "src/model/error.hpp"
 
 namespace whirl {
@@ -32,19 +36,37 @@ double kernel(double x, int N) {
 struct FixedFrameView {
   int n = 0, nblades = 0;
   std::vector<int> fixed;                  ///< coordinate index of each fixed row
+  std::vector<int> teeter;                 ///< coordinate of each teeter (two rows each: cos, sin)
   std::vector<std::vector<int>> sets;      ///< sets[j][b]: coordinate of blade b in set j
   std::vector<NamingCoordinate> coords;    ///< one per row
   std::vector<std::string> names;
   VecX weights;                            ///< per row
+  VecX cyclic_weights;                     ///< weights of the cyclic rows (blade cos/sin, teeter), 0 elsewhere
+  std::vector<int> rotor;                  ///< the rotor's own coordinates (blades, teeter), as they are
+  VecX rotor_weights;                      ///< their weights
   std::vector<bool> azimuth, held;
 
-  int rows() const { return static_cast<int>(fixed.size() + 3 * sets.size()); }
+  /// Selects the rotor's own coordinates: rotor.size() × n.
+  MatX rotorRows() const {
+    MatX S = MatX::Zero(static_cast<Eigen::Index>(rotor.size()), n);
+    for (std::size_t r = 0; r < rotor.size(); ++r) S(static_cast<Eigen::Index>(r), rotor[r]) = 1.0;
+    return S;
+  }
+
+  int rows() const { return static_cast<int>(fixed.size() + 2 * teeter.size() + 3 * sets.size()); }
 
   /// P(ψ): rows × n, ψ the azimuth of blade 1.
   MatX projection(double psi) const {
     MatX P = MatX::Zero(rows(), n);
     int r = 0;
     for (int i : fixed) P(r++, i) = 1.0;
+    // A teeter β as the differential pattern q1 = β, q2 = −β of a 2-bladed rotor's cyclic rows.
+    const double dpsi = nblades > 0 ? 2 * pi / nblades : pi;
+    const double scale = 2.0 / std::max(nblades, 2);
+    for (int i : teeter) {
+      P(r++, i) = scale * (std::cos(psi) - std::cos(psi + dpsi));
+      P(r++, i) = scale * (std::sin(psi) - std::sin(psi + dpsi));
+    }
     for (const auto& set : sets) {
       for (int b = 0; b < nblades; ++b) {
         const double pb = psi + 2 * pi * b / nblades;
@@ -68,6 +90,7 @@ FixedFrameView fixedFrameView(const RotorCoordinates& c) {
       per_blade[c.blade[i]].push_back(i);
       continue;
     }
+    if (i < static_cast<int>(c.teeter.size()) && c.teeter[i]) continue;  // rows after the fixed ones
     v.fixed.push_back(i);
     v.coords.push_back({c.names[i], {}});
     v.names.push_back(c.names[i]);
@@ -75,6 +98,20 @@ FixedFrameView fixedFrameView(const RotorCoordinates& c) {
     v.weights(v.weights.size() - 1) = std::abs(c.weights(i, i));
     v.azimuth.push_back(i < static_cast<int>(c.azimuth.size()) && c.azimuth[i]);
     v.held.push_back(i < static_cast<int>(c.held.size()) && c.held[i]);
+  }
+  // Teeter rows: weighed as the two blades' differential pattern, each blade carrying half its inertia.
+  for (int i = 0; i < v.n; ++i) {
+    if (i >= static_cast<int>(c.teeter.size()) || !c.teeter[i]) continue;
+    v.teeter.push_back(i);
+    const MbcCoordinate kinds[2] = {{MbcKind::Cosine, 1}, {MbcKind::Sine, 1}};
+    for (const MbcCoordinate& k : kinds) {
+      v.coords.push_back({c.names[i], k});
+      v.names.push_back(c.names[i] + " " + toString(k));
+      v.weights.conservativeResize(v.weights.size() + 1);
+      v.weights(v.weights.size() - 1) = std::abs(c.weights(i, i)) / std::max(v.nblades, 2);
+      v.azimuth.push_back(false);
+      v.held.push_back(i < static_cast<int>(c.held.size()) && c.held[i]);
+    }
   }
   for (const auto& list : per_blade)
     if (list.size() != per_blade[0].size())
@@ -95,6 +132,15 @@ FixedFrameView fixedFrameView(const RotorCoordinates& c) {
       v.held.push_back(false);
     }
   }
+  v.cyclic_weights = VecX::Zero(v.weights.size());
+  for (Eigen::Index r = 0; r < v.weights.size(); ++r) {
+    const MbcKind k = v.coords[r].kind.kind;
+    if (k == MbcKind::Cosine || k == MbcKind::Sine) v.cyclic_weights(r) = v.weights(r);
+  }
+  for (int i = 0; i < v.n; ++i)
+    if (c.blade[i] >= 0 || (i < static_cast<int>(c.teeter.size()) && c.teeter[i])) v.rotor.push_back(i);
+  v.rotor_weights.resize(static_cast<Eigen::Index>(v.rotor.size()));
+  for (std::size_t r = 0; r < v.rotor.size(); ++r) v.rotor_weights(r) = std::abs(c.weights(v.rotor[r], v.rotor[r]));
   return v;
 }
 
@@ -122,23 +168,39 @@ RotorModes floquetModes(const RotorCoordinates& c, const std::vector<MbcSample>&
       throw InputError("Floquet analysis: the azimuths must be equally spaced over one revolution");
   }
   const FixedFrameView view = fixedFrameView(c);
-  const int nf = view.rows();
 
   // Monodromy by the fourth-order Magnus scheme on the trigonometric interpolant of A(ψ). The grid
   // also samples the solutions for their harmonics, which reach the highest frequency of the system
-  // over the rotor speed: at least 4 points per period of the fastest mode (the averaged A's largest
-  // eigenvalue), so that no harmonic aliases onto another.
+  // over the rotor speed: at least 4 points per period of the fastest oscillating mode (the averaged
+  // A's largest complex eigenvalue), so that no harmonic aliases onto another. The revolution is cut into G equal
+  // groups of steps, enough that no group spans more than a decay of e^20 between the system's
+  // slowest mode and its fastest decaying oscillating one (the averaged A's eigenvalues; at most 64
+  // groups, and a real root that decays faster dies within a group): the multipliers come from the
+  // G group propagators (modal/floquet_multipliers.hpp), each solution is sampled from its value at
+  // the start of its group, and a well-damped mode of a slow rotor stays resolved.
   const double T = 2 * pi / std::abs(omega);
   MatX mean = MatX::Zero(nx, nx);
   for (const MbcSample& s : samples) mean += s.A / N;
-  const double fastest = Eigen::EigenSolver<MatX>(mean, false).eigenvalues().cwiseAbs().maxCoeff();
+  const VecXc mean_eig = Eigen::EigenSolver<MatX>(mean, false).eigenvalues();
+  // The oscillating modes set the sampling and the decay range over a revolution; a real root (a
+  // heavily overdamped coordinate) is integrated exactly by the exponential of each step, and one that
+  // decays faster than the range dies within a group.
+  double fastest = 0, slowest = mean_eig.real().maxCoeff(), fastest_decay = slowest;
+  for (const cd& l : mean_eig)
+    if (std::abs(l.imag()) > 1e-6 * std::abs(l)) {
+      fastest = std::max(fastest, std::abs(l));
+      fastest_decay = std::min(fastest_decay, l.real());
+    }
+  const double spread = (slowest - fastest_decay) * T;
   const double wanted = std::max<double>(N * std::max(1, opt.steps_per_sample), std::ceil(4 * fastest / std::abs(omega)) + 8);
   if (!(wanted <= kMaxFloquetSteps))
     throw InputError("Floquet analysis: the rotor turns too slowly for its fastest mode (" +
                      std::to_string(fastest / (2 * pi)) + " Hz at " + std::to_string(std::abs(omega) * 30 / pi) +
                      " rpm would need " + std::to_string(wanted) + " steps per revolution, limit " +
                      std::to_string(kMaxFloquetSteps) + ")");
-  const int M = static_cast<int>(wanted);
+  const int G = static_cast<int>(std::clamp(std::ceil(spread / 20.0), 1.0, 64.0));
+  const int L = static_cast<int>(std::ceil(wanted / G));  // steps per group
+  const int M = G * L;
   const double h = T / M;
   auto A = [&](double t) {
     MatX a = MatX::Zero(nx, nx);
@@ -147,30 +209,44 @@ RotorModes floquetModes(const RotorCoordinates& c, const std::vector<MbcSample>&
     return a;
   };
   const double c1 = 0.5 - std::sqrt(3.0) / 6, c2 = 0.5 + std::sqrt(3.0) / 6;
-  MatX Phi = MatX::Identity(nx, nx);
-  std::vector<MatX> Y(M);  // P(ψ(t_m)) · (q rows of Φ(t_m)): the fixed-frame view of every solution
-  for (int m = 0; m < M; ++m) {
-    Y[m] = view.projection(psi0 + omega * m * h) * Phi.topRows(n);
-    const MatX A1 = A((m + c1) * h), A2 = A((m + c2) * h);
-    const MatX Om = 0.5 * h * (A1 + A2) + std::sqrt(3.0) / 12 * h * h * (A2 * A1 - A1 * A2);
-    Phi = MatX(Om.exp()) * Phi;
+  std::vector<MatX> factors(G);
+  // Y[m] = P(ψ(t_m)) · (q rows of Φ(t_m, t_g)), the propagator from the start t_g of step m's group:
+  // the fixed-frame view of every solution started there.
+  // Yr[m]: the rotor's own coordinates (blades, teeter) of the same solutions, as they are (the
+  // rotating frame); kept for a rotor of at most 2 blades, whose cyclic modes stand (floquet_harmonic.hpp).
+  const bool standing = view.nblades <= 2 && !view.rotor.empty();
+  std::vector<MatX> Y(M), Yr(standing ? M : 0);
+  for (int g = 0; g < G; ++g) {
+    MatX Phi = MatX::Identity(nx, nx);
+    for (int m = g * L; m < (g + 1) * L; ++m) {
+      Y[m] = view.projection(psi0 + omega * m * h) * Phi.topRows(n);
+      if (standing) Yr[m] = view.rotorRows() * Phi.topRows(n);
+      const MatX A1 = A((m + c1) * h), A2 = A((m + c2) * h);
+      const MatX Om = 0.5 * h * (A1 + A2) + std::sqrt(3.0) / 12 * h * h * (A2 * A1 - A1 * A2);
+      Phi = MatX(Om.exp()) * Phi;
+    }
+    factors[g] = std::move(Phi);
   }
-  Eigen::EigenSolver<MatX> es(Phi);
-  if (es.info() != Eigen::Success) throw ComputeError("Floquet analysis: the eigenvalues of the monodromy matrix failed");
-  const VecXc mu = es.eigenvalues();
-  const MatXc V = es.eigenvectors();
+  const LiftedMultipliers lifted = liftedMultipliers(factors);
 
-  // Harmonics k = −M/2 … M/2−1 (index k mod M) of the fixed-frame view of the solutions Φ(t) V a
-  // without e^{ηt}, frequencies k|Ω|: one FFT per entry.
+  // Harmonics k = −M/2 … M/2−1 (index k mod M) of the fixed-frame view of the solutions started at
+  // x_g in each group g (lifted.blocks), without e^{ηt}, frequencies k|Ω|: one FFT per entry. With
+  // η = G ln λ / T the solution at t_m in group g is λ^g Y[m] x_g and e^{−η t_m} λ^g = e^{−η (t_m − t_g)}.
   const double wr = std::abs(omega);
   Eigen::FFT<double> fft;
-  auto harmonics = [&](const cd& eta, const MatXc& basis) {
-    std::vector<MatXc> H(M, MatXc::Zero(nf, basis.cols()));
+  auto harmonics = [&](const cd& eta, const std::vector<Eigen::Index>& cols, const std::vector<MatX>& source) {
+    const Eigen::Index d = static_cast<Eigen::Index>(cols.size());
+    const Eigen::Index rows = source.front().rows();
+    std::vector<MatXc> H(M, MatXc::Zero(rows, d));
     std::vector<MatXc> z(M);
-    for (int m = 0; m < M; ++m) z[m] = std::exp(-eta * (m * h)) * (Y[m].cast<cd>() * basis);
+    for (int g = 0; g < G; ++g) {
+      MatXc basis(nx, d);
+      for (Eigen::Index a = 0; a < d; ++a) basis.col(a) = lifted.blocks[g].col(cols[a]);
+      for (int m = g * L; m < (g + 1) * L; ++m) z[m] = std::exp(-eta * ((m - g * L) * h)) * (source[m].cast<cd>() * basis);
+    }
     std::vector<cd> series(M), spectrum;
-    for (int r = 0; r < nf; ++r)
-      for (Eigen::Index a = 0; a < basis.cols(); ++a) {
+    for (Eigen::Index r = 0; r < rows; ++r)
+      for (Eigen::Index a = 0; a < d; ++a) {
         for (int m = 0; m < M; ++m) series[m] = z[m](r, a);
         fft.fwd(spectrum, series);
         for (int k = 0; k < M; ++k) H[k](r, a) = spectrum[k] / double(M);
@@ -183,52 +259,54 @@ RotorModes floquetModes(const RotorCoordinates& c, const std::vector<MbcSample>&
   out.coordinates = view.names;
   out.num_blades = view.nblades;
   std::vector<bool> done(nx, false);
+  const VecXc& root = lifted.root;
   for (Eigen::Index j = 0; j < nx; ++j) {
     if (done[j]) continue;
-    // The multipliers equal to μ_j: one eigenspace, split by harmonic below.
+    // The multipliers equal to μ_j (equal principal roots): one eigenspace, split by harmonic below.
     std::vector<Eigen::Index> cluster;
     for (Eigen::Index i = j; i < nx; ++i)
-      if (!done[i] && std::abs(mu(i) - mu(j)) <= 1e-7 * std::max(1.0, std::abs(mu(j)))) {
+      if (!done[i] && std::abs(root(i) - root(j)) <= 1e-7 * std::abs(root(j))) {
         cluster.push_back(i);
         done[i] = true;
       }
-    if (std::abs(mu(j)) == 0) continue;  // a state that dies within a revolution: no oscillation to name
-    const cd eta = std::log(mu(j)) / T;
-    MatXc basis(nx, static_cast<Eigen::Index>(cluster.size()));
-    for (std::size_t k = 0; k < cluster.size(); ++k) basis.col(k) = V.col(cluster[k]);
-    const std::vector<MatXc> H = harmonics(eta, basis);
-    const Eigen::Index d = basis.cols();
-    MatXc Nm = MatXc::Zero(d, d), G = MatXc::Zero(d, d);
+    if (std::abs(root(j)) == 0) continue;  // a state that dies within a revolution: no oscillation to name
+    const cd eta = double(G) * std::log(root(j)) / T;
+    const std::vector<MatXc> H = harmonics(eta, cluster, Y);
+    const std::vector<MatXc> Hr = standing ? harmonics(eta, cluster, Yr) : std::vector<MatXc>{};
+    const Eigen::Index d = static_cast<Eigen::Index>(cluster.size());
+    MatXc Nm = MatXc::Zero(d, d), Gk = MatXc::Zero(d, d);
     for (int k = 0; k < M; ++k) {
       const MatXc WH = view.weights.cast<cd>().asDiagonal() * H[k];
       Nm += H[k].adjoint() * WH;
-      G += double(harmonic(k)) * H[k].adjoint() * WH;
+      Gk += double(harmonic(k)) * H[k].adjoint() * WH;
     }
     MatXc dirs = MatXc::Identity(d, d);
     if (d > 1) {
-      // Directions of a single harmonic: G a = κ N a (N Hermitian positive definite when the
+      // Directions of a single harmonic: Gk a = κ N a (N Hermitian positive definite when the
       // eigenspace has a fixed-frame response; a tiny shift keeps it so otherwise).
       const double shift = 1e-12 * std::max(1e-300, Nm.norm());
-      Eigen::GeneralizedSelfAdjointEigenSolver<MatXc> ges(0.5 * (G + G.adjoint()),
+      Eigen::GeneralizedSelfAdjointEigenSolver<MatXc> ges(0.5 * (Gk + Gk.adjoint()),
                                                          0.5 * (Nm + Nm.adjoint()) + shift * MatXc::Identity(d, d));
       if (ges.info() == Eigen::Success) dirs = ges.eigenvectors();
     }
     for (Eigen::Index a = 0; a < d; ++a) {
       const VecXc dir = dirs.col(a);
-      int best = 0;
-      double best_e = -1;
+      // The harmonic that gives the mode its frequency (floquet_harmonic.hpp).
+      SolutionSpectrum spectrum;
+      spectrum.fixed.resize(M);
+      spectrum.cyclic.resize(M);
+      if (standing) spectrum.rotating.resize(M);
       for (int k = 0; k < M; ++k) {
-        const double e = energy(view.weights, H[k] * dir);
-        // Ties (a 2-bladed rotor's standing cyclic pattern) go to the smaller |harmonic|.
-        if (e > best_e * (1 + 1e-9) || (e >= best_e * (1 - 1e-9) && std::abs(harmonic(k)) < std::abs(harmonic(best)))) {
-          best_e = std::max(best_e, e);
-          best = k;
-        }
+        const VecXc hk = H[k] * dir;
+        spectrum.fixed[k] = energy(view.weights, hk);
+        spectrum.cyclic[k] = energy(view.cyclic_weights, hk);
+        if (standing) spectrum.rotating[k] = energy(view.rotor_weights, Hr[k] * dir);
       }
+      const int best = floquetHarmonic(spectrum, eta.imag(), wr, standing);
       const int kbest = harmonic(best);
       cd lambda = eta + cd(0, kbest * wr);
       VecXc shape = H[best] * dir;
-      const bool real_multiplier = std::abs(mu(j).imag()) <= 1e-12 * std::abs(mu(j));
+      const bool real_multiplier = std::abs(std::sin(G * std::arg(root(j)))) <= 1e-12;
       if (lambda.imag() < 0) {
         if (!real_multiplier) continue;  // its conjugate multiplier gives the same mode
         lambda = std::conj(lambda);
@@ -245,10 +323,38 @@ RotorModes floquetModes(const RotorCoordinates& c, const std::vector<MbcSample>&
       VecX e = view.weights.array() * shape.array().abs2();
       md.participation = e.sum() > 0 ? VecX(e / e.sum()) : e;
       nameRotorMode(md, view.coords, view.azimuth, view.held, omega);
+      const std::string fw = " FW";
+      if (standingCyclicMode(spectrum, standing) && md.name.size() > fw.size() &&
+          md.name.compare(md.name.size() - fw.size(), fw.size(), fw) == 0)
+        md.name.replace(md.name.size() - fw.size(), fw.size(), " BW");  // reported at its backward whirl
       out.modes.push_back(std::move(md));
     }
   }
   std::sort(out.modes.begin(), out.modes.end(), [](const Mode& a, const Mode& b) { return a.freq_hz < b.freq_hz; });
+  return out;
+}
+
+RotorModes parkedRotorModes(const RotorCoordinates& c, const MbcSample& sample) {
+  const int n = static_cast<int>(c.names.size());
+  if (sample.A.rows() < 2 * n || sample.A.cols() != sample.A.rows() || !sample.A.allFinite())
+    throw InputError("parked rotor modes: the state matrix is not square, finite and at least 2 × the coordinates");
+  const FixedFrameView view = fixedFrameView(c);
+  const MatX P = view.projection(sample.azimuth);
+  RotorModes out;
+  out.coordinates = view.names;
+  out.num_blades = view.nblades;
+  out.A = sample.A;
+  out.modes = modesFromEigen(eigenStandard(sample.A), n, c.weights, c.names);
+  for (Mode& md : out.modes) {
+    VecXc shape = P.cast<cd>() * md.shape;
+    Eigen::Index imax = 0;
+    shape.cwiseAbs().maxCoeff(&imax);
+    if (std::abs(shape(imax)) > 0) shape /= shape(imax);
+    const VecX e = view.weights.array() * shape.array().abs2();
+    md.shape = shape;
+    md.participation = e.sum() > 0 ? VecX(e / e.sum()) : e;
+    nameRotorMode(md, view.coords, view.azimuth, view.held, 0.0);
+  }
   return out;
 }
 

@@ -6,14 +6,17 @@
 /// 2001; Skjoldan & Hansen 2009].
 ///
 /// The state matrix A(ψ) known at N equally spaced azimuths is interpolated trigonometrically
-/// (exact for harmonics below N/2), the monodromy matrix Φ(T), T = 2π/|Ω|, is integrated with the
-/// fourth-order Magnus scheme (exact for a constant A), and its eigenvalues μ give the characteristic
-/// exponents η = ln μ / T, known up to multiples of iΩ. Each Floquet solution x(t) = e^{ηt} p(t)
-/// (p periodic) is seen in the fixed frame — fixed coordinates as they are, each set of blade
-/// coordinates as its collective and first cosine and sine components (for 2 blades the cyclic pair
-/// is (q1 − q2)(cos ψ, sin ψ)) — and its frequency is Im η + kΩ with k the harmonic that carries most
-/// of that fixed-frame response (kinetic-energy weights). Within a set of equal multipliers (an
-/// isotropic rotor's collective, BW and FW modes share one) the solutions are first split into ones
+/// (exact for harmonics below N/2) and the revolution T = 2π/|Ω| integrated with the fourth-order
+/// Magnus scheme (exact for a constant A), in G groups of steps whose propagators give the
+/// multipliers μ without forming their product (modal/floquet_multipliers.hpp: a slow rotor's
+/// well-damped modes stay resolved); the characteristic exponents η = ln μ / T are known up to
+/// multiples of iΩ. Each Floquet solution x(t) = e^{ηt} p(t) (p periodic) is seen in the fixed frame —
+/// fixed coordinates as they are, each set of blade coordinates as its collective and first cosine and
+/// sine components (for 2 blades the cyclic pair is (q1 − q2)(cos ψ, sin ψ)), a teeter β as the
+/// differential pattern (β, −β) — and its frequency is Im η + kΩ with k the harmonic chosen from that
+/// fixed-frame spectrum (kinetic-energy weights) by modal/floquet_harmonic.hpp: its centre, and a
+/// 2-bladed rotor's cyclic (standing) mode at its backward whirl. Within a set of equal multipliers
+/// (an isotropic rotor's collective, BW and FW modes share one) the solutions are first split into ones
 /// of a single harmonic (generalized eigenvectors of the harmonic-index operator). For a rotor the
 /// multiblade transform makes exactly time-invariant the modes equal those of the multiblade average.
 #include <vector>
@@ -34,5 +37,11 @@ struct FloquetOptions {
 /// \throws InputError for unequal spacing, Ω = 0, sizes that do not match or non-finite entries.
 RotorModes floquetModes(const RotorCoordinates& coords, const std::vector<MbcSample>& samples,
                         const FloquetOptions& opt = {});
+
+/// Modes of a parked rotor with fewer than 3 blades (or a teeter): the plain eigenanalysis of the one
+/// model `sample.A`, shapes seen in the fixed frame at `sample.azimuth` as floquetModes sees them
+/// (collective, cos and sin of each blade set; cos and sin of a teeter), so that a line of a Campbell
+/// diagram has one name at 0 rpm and turning. Frequencies and damping are those of the model.
+RotorModes parkedRotorModes(const RotorCoordinates& coords, const MbcSample& sample);
 
 }  // namespace whirl

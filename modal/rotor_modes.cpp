@@ -175,6 +175,7 @@ RotorModes rotorModes(const Model& m, const PeriodicLinearization& p) {
     c.azimuth.push_back(m.dofs[first.dofs[i]].rotating);
     const std::vector<int>& held = p.points.front().held;
     c.held.push_back(std::find(held.begin(), held.end(), first.dofs[i]) != held.end());
+    c.teeter.push_back(first.dofs[i] == m.roles.teeter_dof);
     nb = std::max(nb, c.blade.back() + 1);
   }
   // Shapes are in multiblade coordinates: weigh them by the diagonal of M (blade entries alike).
@@ -205,14 +206,18 @@ RotorModes multibladeModes(const RotorCoordinates& c, const MbcLayout& layout, c
   const double rotor_speed = samples.front().rotor_speed;
   std::vector<NamingCoordinate> coords(n);
   MbcResult mbc;
-  if (nb > 0 && nb < 3 && std::abs(rotor_speed) > 0 && samples.size() >= 2) {
-    // With fewer than 3 blades the transformed system stays periodic: Floquet analysis, when the
-    // azimuths cover the revolution evenly (else the first sample, as below).
+  const bool teeter = std::find(c.teeter.begin(), c.teeter.end(), true) != c.teeter.end();
+  if ((nb > 0 || teeter) && nb < 3 && std::abs(rotor_speed) > 0 && samples.size() >= 2) {
+    // With fewer than 3 blades (or a teeter, which only 2 blades have) the transformed system stays
+    // periodic: Floquet analysis, when the azimuths cover the revolution evenly (else the first
+    // sample, as below).
     bool even = true;
     for (std::size_t k = 1; k < samples.size(); ++k)
       even = even && std::abs(samples[k].azimuth - samples[0].azimuth - 2 * std::numbers::pi * double(k) / double(samples.size())) < 1e-6;
     if (even) return floquetModes(c, samples);
   }
+  if ((nb > 0 || teeter) && nb < 3 && !by_participation)
+    return parkedRotorModes(c, samples.front());  // parked (or uneven azimuths): the first model, fixed-frame names
   if (nb < 3) {
     // No transform: with fewer than 3 blades the transformed system stays periodic.
     out.A = samples.front().A;

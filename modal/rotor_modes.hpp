@@ -36,6 +36,10 @@ struct RotorCoordinates {
   /// Unrestrained coordinates the operating point held (OperatingPoint::held, a free yaw); empty:
   /// none. A slow mode carried by them is a rigid-body mode, like the azimuth's.
   std::vector<bool> held;
+  /// A 2-bladed rotor's teeter (ModelRoles::teeter_dof); empty: none. It turns with the rotor without
+  /// being a blade's coordinate: Floquet analysis sees it in the fixed frame as the differential blade
+  /// pattern it is (+ on blade 1, − on blade 2), rows "<name> cos" and "<name> sin".
+  std::vector<bool> teeter;
   MatX weights;                    ///< n × n, weighs participations (a mass matrix or its diagonal)
   /// Empty: the states are [q; q̇; first-order] and `weights` weighs the participations. Otherwise
   /// (a `.lin` file: no mass matrix, states in any order) the coordinate of each state, the

@@ -27,7 +27,11 @@ Regenerate with `bash scripts/deck-table.sh > docs/decks.md` (after building `bu
 The slow CTest suite `EveryDeckSlow` (`tests/cli/test_cli_every_deck.cpp`, on copies of these decks in
 `tests/data/openfast/decks`) runs each of them with `whirl modes --rpm 0` and `whirl campbell` from 0 to
 rated rotor speed, as shipped and structure only, and fails on a refusal it does not list with its
-reason below, on a crash or on an operating point that does not converge.
+reason below, on a crash or on an operating point that does not converge. The AWT-27 decks (Test01–05)
+cannot be parked with their teeter free (the rotor's weight acts 0.38 m off the teeter pin, the deck's
+teeter spring is 1 N m/rad: README, *Two-bladed and teetered rotors*); the table runs each deck at its
+own RotSpeed, so Test01, 03 and 04 (53.3 rpm) run and Test02 and 05 (0 rpm) are refused, and the suite
+runs their Campbell sweeps from half the rated speed.
 
 HEAD
 echo "| deck | \`whirl modes DECK\` | \`whirl modes DECK --set CompAero=0\` (structure only) |"

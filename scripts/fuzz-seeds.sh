@@ -12,7 +12,8 @@ add() {  # add HARNESS FILE...
 }
 add fuzz_case_yaml cases/*/*.yaml
 add fuzz_fst cases/nrel5mw/*.fst tests/data/openfast/*/*.fst
-add fuzz_elastodyn cases/nrel5mw/*_ElastoDyn.dat tests/data/openfast/rotating-9rpm/ElastoDyn.dat tests/data/openfast/ws03/*_ED.dat
+add fuzz_elastodyn cases/nrel5mw/*_ElastoDyn.dat tests/data/openfast/rotating-9rpm/ElastoDyn.dat tests/data/openfast/ws03/*_ED.dat \
+  tests/data/openfast/decks/certtest/AWT27/Test0[15]_ElastoDyn.dat tests/data/openfast/decks/certtest/UAE_VI/Test09_ElastoDyn.dat
 add fuzz_servodyn cases/nrel5mw/*_ServoDyn.dat
 add fuzz_ed_tower cases/nrel5mw/*_Tower.dat tests/data/openfast/5MW_Baseline/*_Tower.dat
 add fuzz_ed_blade cases/nrel5mw/NRELOffshrBsline5MW_Blade.dat tests/data/openfast/5MW_Baseline/*_Blade.dat

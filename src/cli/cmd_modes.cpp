@@ -28,29 +28,40 @@ int bladeCount(const Model& m) {
   return nb;
 }
 
+// A rotor is analysed over the revolution: with 3 or more blades in multiblade coordinates; with fewer
+// (or a teeter) by Floquet when it turns, parked by the plain eigenanalysis with the shapes seen from
+// the fixed frame (modal/rotor_modes.hpp).
+bool rotorPath(const Model& m, int az) {
+  if (az < 0) return false;
+  const int teeter = m.roles.teeter_dof;
+  return bladeCount(m) > 0 || (teeter >= 0 && !m.dofs[teeter].frozen);
+}
+
 void run(const ModesOptions& opt) {
   const Model m = loadModel(opt.model);
   nlohmann::json header;
   header["case"] = opt.model.case_path;
   const int az = findAzimuthDof(m);
-  if (az >= 0 && bladeCount(m) >= 3) {
+  const OperatingPoint start = startPoint(m, opt.model);
+  if (rotorPath(m, az)) {
     if (opt.solver == "sparse")
       throw InputError("--solver sparse: a rotor's multiblade model is a small averaged state matrix, solved dense; "
                        "use --solver dense or auto");
     // A rotor: periodic operating point over the revolution, multiblade coordinates.
     PeriodicOptions p;
     p.azimuths = opt.azimuths;
-    const PeriodicLinearization lin = linearizePeriodic(m, startPoint(m, opt.model), p);
+    const PeriodicLinearization lin = linearizePeriodic(m, start, p);
     const std::vector<std::string> problems = checkSolvedPoints(opt.model, m, lin.points);
     header["validity"] = {{"valid", problems.empty()}, {"problems", problems}};
     const RotorModes r = rotorModes(m, lin);
     header["rotor_speed_rpm"] = lin.rotor_speed * 30 / 3.141592653589793;
     header["azimuths"] = opt.azimuths;
-    header["multiblade"] = true;
+    header["multiblade"] = bladeCount(m) >= 3;
+    header["floquet"] = bladeCount(m) < 3;  // fewer blades, turning: modal/floquet.hpp
     printModes(r.modes, r.coordinates, opt.format, header);
     return;
   }
-  const OperatingPoint op = solveOperatingPoint(m, startPoint(m, opt.model));
+  const OperatingPoint op = solveOperatingPoint(m, start);
   const std::vector<std::string> problems = checkSolvedPoints(opt.model, m, {op});
   header["validity"] = {{"valid", problems.empty()}, {"problems", problems}};
   const LinearModel lin = linearize(m, op);

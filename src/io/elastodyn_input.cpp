@@ -1,5 +1,8 @@
 #include "src/io/elastodyn_input.hpp"
 
+#include <cmath>
+#include <utility>
+
 #include "src/io/elastodyn_common.hpp"
 #include "src/io/openfast_overrides.hpp"
 #include "src/model/error.hpp"
@@ -136,14 +139,25 @@ ElastoDynMassInertia read_mass(const OpenFastFile& f) {
     require_nonnegative(f, s.key, *s.value);
   }
   m.HubIner_Teeter = f.find_double("HubIner_Teeter");
+  if (m.HubIner_Teeter) require_nonnegative(f, "HubIner_Teeter", *m.HubIner_Teeter);
   m.PtfmXYIner = f.find_double("PtfmXYIner");
   m.PtfmYZIner = f.find_double("PtfmYZIner");
   m.PtfmXZIner = f.find_double("PtfmXZIner");
   return m;
 }
 
-ElastoDynTeeter read_teeter(const OpenFastFile& f) {
+// The ROTOR-TEETER section: optional for 3 blades (ElastoDyn ignores it), required and checked as
+// ElastoDyn's ValidatePrimaryData checks it for 2 blades (every version has all eight keys).
+ElastoDynTeeter read_teeter(const OpenFastFile& f, int num_blades) {
   ElastoDynTeeter t;
+  const bool two = num_blades == 2;
+  auto need = [&](const char* key) {
+    if (two && !f.has(key))
+      throw InputError(f.where(key, "key not found: a 2-bladed rotor (NumBl = 2) needs the ROTOR-TEETER section "
+                                    "(TeetMod, TeetDmpP, TeetDmp, TeetCDmp, TeetSStP, TeetHStP, TeetSSSp, TeetHSSp)"));
+  };
+  for (const char* key : {"TeetMod", "TeetDmpP", "TeetDmp", "TeetCDmp", "TeetSStP", "TeetHStP", "TeetSSSp", "TeetHSSp"})
+    need(key);
   t.TeetMod = f.find_int("TeetMod");
   t.TeetDmpP = f.find_double("TeetDmpP");
   t.TeetDmp = f.find_double("TeetDmp");
@@ -152,6 +166,20 @@ ElastoDynTeeter read_teeter(const OpenFastFile& f) {
   t.TeetHStP = f.find_double("TeetHStP");
   t.TeetSSSp = f.find_double("TeetSSSp");
   t.TeetHSSp = f.find_double("TeetHSSp");
+  if (!two) return t;
+  if (*t.TeetMod < 0 || *t.TeetMod > 2)
+    throw InputError(f.where("TeetMod", "must be 0 (none), 1 (standard) or 2 (user-defined) (is " +
+                                            std::to_string(*t.TeetMod) + ")"));
+  const std::pair<const char*, double> angles[] = {{"TeetDmpP", *t.TeetDmpP}, {"TeetSStP", *t.TeetSStP}};
+  for (const auto& [key, value] : angles)
+    if (!(value >= 0.0 && value <= 180.0))
+      throw InputError(f.where(key, "must be in [0, 180] deg (is " + number_text(value) + ")"));
+  if (!(*t.TeetHStP >= *t.TeetSStP && *t.TeetHStP <= 180.0))
+    throw InputError(f.where("TeetHStP", "must be in [TeetSStP, 180] deg = [" + number_text(*t.TeetSStP) +
+                                             ", 180] (is " + number_text(*t.TeetHStP) + ")"));
+  for (const char* key : {"TeetDmp", "TeetCDmp", "TeetSSSp", "TeetHSSp"}) require_nonnegative(f, key, f.get_double(key));
+  if (*t.TeetCDmp != 0.0)  // ElastoDyn refuses it too ("TeetCDmp must be 0 in this version")
+    throw InputError(f.where("TeetCDmp", "must be 0, as ElastoDyn requires (Coulomb teeter damping is not modelled)"));
   return t;
 }
 
@@ -185,7 +213,13 @@ ElastoDynInput read_elastodyn(const std::filesystem::path& file, OverrideSet* ov
   ed.config = read_configuration(f);
   ed.mass = read_mass(f);
   ed.BldNodes = f.find_int("BldNodes");
-  ed.teeter = read_teeter(f);
+  ed.teeter = read_teeter(f, ed.config.NumBl);
+  if (ed.config.NumBl == 2) {  // ElastoDyn's ranges for a 2-bladed rotor
+    if (!(ed.init.TeetDefl > -180.0 && ed.init.TeetDefl <= 180.0))
+      throw InputError(f.where("TeetDefl", "must be in (-180, 180] deg (is " + number_text(ed.init.TeetDefl) + ")"));
+    if (!(std::abs(ed.config.Delta3) < 90.0))
+      throw InputError(f.where("Delta3", "must be in (-90, 90) deg (is " + number_text(ed.config.Delta3) + ")"));
+  }
   ed.drivetrain = read_drivetrain(f);
   ed.YawFrctMod = f.find_int("YawFrctMod");
   ed.Furling = f.get_bool("Furling");

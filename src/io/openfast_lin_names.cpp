@@ -53,6 +53,7 @@ std::string dofNameFromLinDescription(const std::string& d) {
                                 {"Drivetrain rotational-flexibility DOF", "drivetrain"},
                                 {"Nacelle yaw DOF", "yaw"},
                                 {"Rotor-teeter DOF", "teeter"},
+                                {"Hub teetering DOF", "teeter"},  // ElastoDyn's own wording
                                 {"Platform horizontal surge", "platform surge"},
                                 {"Platform horizontal sway", "platform sway"},
                                 {"Platform vertical heave", "platform heave"},

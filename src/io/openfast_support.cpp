@@ -1,5 +1,6 @@
 #include "src/io/openfast_support.hpp"
 
+#include <string>
 #include <utility>
 
 #include "src/io/refusals.hpp"
@@ -52,10 +53,12 @@ bool has_platform_dofs(const ElastoDynInput& ed) {
 std::vector<std::string> unsupported_options(const ElastoDynInput& ed) {
   Refusals r(ed.source);
   const ElastoDynDofs& d = ed.dof;
-  // A teetering hub exists only on 2 blades: one reason, with the teeter named in it.
-  r.add_if(ed.config.NumBl != 3, "NumBl",
-           d.TeetDOF ? "only 3-bladed rotors are modelled, and no teetering hub: TeetDOF is on too"
-                     : "only 3-bladed rotors are modelled");
+  // A teetering hub exists only on 2 blades (ElastoDyn ignores TeetDOF for 3: a deck that sets it
+  // expects a teeter it would not get).
+  r.add_if(d.TeetDOF && ed.config.NumBl != 2, "TeetDOF", "a teetering hub needs a 2-bladed rotor (NumBl = " +
+                                                             std::to_string(ed.config.NumBl) + "); set TeetDOF = False");
+  r.add_if(d.TeetDOF && ed.config.NumBl == 2 && ed.teeter.TeetMod.value_or(0) == 2, "TeetMod",
+           "a user-defined teeter spring/damper (routine UserTeet) is not modelled", "TeetMod = 0 or 1");
   r.add_if(ed.Furling, "Furling", "rotor and tail furl are not modelled");
   r.add_if(d.PitchDOF.value_or(false), "PitchDOF", "blade pitch flexibility is not modelled");
   r.add_if(ed.YawFrctMod.value_or(0) != 0, "YawFrctMod", "yaw-bearing friction is not smooth and cannot be linearized");

@@ -267,6 +267,7 @@ void finalizeRoles(Model& m, const std::vector<int>& new_dof) {
     if (!m.dofs[d].frozen) throw InputError("model roles: blade pitch: DOF '" + m.dofs[d].name + "' is not frozen");
   }
   dof(r.yaw_dof, "yaw");
+  dof(r.teeter_dof, "teeter");
   input(r.collective_pitch_input, "collective pitch");
   for (int i : r.blade_pitch_inputs) input(i, "blade pitch");
   input(r.wind_speed_input, "wind speed");

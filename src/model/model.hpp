@@ -9,6 +9,7 @@
 ///   → constant offset (attachment frame) → constant rotation → joint.
 /// DOF order [Branlard2019, §3.1]: bodies by depth in the tree, for each body its joint coordinates
 /// then its elastic coordinates.
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -92,9 +93,15 @@ struct DofLoad {
 };
 
 /// Linear spring and damper on one coordinate: −k (q − q0) − c q̇.
+/// A piecewise law (a teeter stop acting beyond its angle) is linearized on one piece: q_min … q_max
+/// [m or rad] is where that piece holds, and an operating point outside it is not valid
+/// (linearize/point_validity.hpp; `law` names the piece for that message).
 struct DofSpring {
   int dof = -1;
   double k = 0.0, c = 0.0, q0 = 0.0;
+  double q_min = -std::numeric_limits<double>::infinity();
+  double q_max = std::numeric_limits<double>::infinity();
+  std::string law = {};  ///< e.g. "teeter soft stop (TeetSStP = 5 deg) not reached"; empty for a linear law
 };
 
 /// Constant 6×6 stiffness, damping and added mass on the six coordinates of a free joint
@@ -133,6 +140,10 @@ struct ModelRoles {
   int wind_speed_input = -1;             ///< hub-height wind speed [m/s] (none before the aerodynamics)
   int generator_torque_input = -1;       ///< generator torque [N m, high-speed shaft]
   int yaw_dof = -1;                      ///< nacelle yaw coordinate [rad]
+  /// Teeter of a 2-bladed rotor [rad]: tilts the rotor about an axis across the shaft and blade 1,
+  /// blade 1 downwind for a positive angle; seen from the fixed frame like a differential blade
+  /// coordinate (+ on blade 1, − on blade 2; modal/floquet.hpp).
+  int teeter_dof = -1;
 };
 
 struct Model {

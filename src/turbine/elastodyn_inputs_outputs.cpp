@@ -61,6 +61,7 @@ void addInputs(Builder& b, const TowerParts& tower, const DrivetrainParts& dt, c
   m.roles.blade_pitch = rotor.pitch;
   m.roles.generator_torque_input = gen;
   m.roles.yaw_dof = dt.yaw;
+  m.roles.teeter_dof = rotor.teeter;
 }
 
 Output dofOutput(std::string name, std::string unit, int order, std::vector<std::pair<int, double>> terms) {
@@ -114,6 +115,7 @@ void addOutputs(Builder& b, const TowerParts& tower, const DrivetrainParts& dt, 
     y.push_back(dofOutput("RootMFlp" + std::to_string(k + 1), "N m", 0, flap));
     y.push_back(dofOutput("RootMEdg" + std::to_string(k + 1), "N m", 0, edge));
   }
+  if (rotor.teeter >= 0) y.push_back(dofOutput("TeetDefl", "rad", 0, {{rotor.teeter, 1.0}}));
 }
 
 }  // namespace

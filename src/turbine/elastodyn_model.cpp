@@ -76,7 +76,9 @@ Model buildElastoDynModel(const io::OpenFastTurbine& t, const ElastoDynModelOpti
                                                      : elastodyn::addPlatform(b);
   const elastodyn::TowerParts tower = elastodyn::addTower(b, platform);
   const elastodyn::DrivetrainParts dt = elastodyn::addNacelleAndDrivetrain(b, tower);
-  const elastodyn::RotorParts rotor = elastodyn::addBlades(b, dt.hub);
+  const elastodyn::RotorHub hub =
+      ed.config.NumBl == 2 ? elastodyn::addTeeteringHub(b, dt) : elastodyn::RotorHub{dt.hub, Vec3::Zero(), 0.0, -1};
+  const elastodyn::RotorParts rotor = elastodyn::addBlades(b, hub);
   elastodyn::addInputsAndOutputs(b, tower, dt, rotor);
   if (opt.aero) {
     elastodyn::addAerodynamics(b, dt, rotor, *opt.aero);

@@ -17,14 +17,19 @@
 /// - generator: same place and axes, turns by GBRatio × the generator azimuth (geared), GenIner about x.
 /// - hub: at OverHang along x from the generator (the rotor apex, ElastoDyn's point Q), turns about x by
 ///   the drivetrain twist; HubMass at HubCM along x, HubIner about x.
+/// - 2 blades (NumBl = 2): the hub above sits at the teeter pin (OverHang reaches it) and a teetering
+///   hub turns about its y (ElastoDyn's teeter axis e2 = f2) by the teeter angle, carrying HubMass; the
+///   blades' apex lies UndSling upwind along its x, and they are turned by Delta3 about it
+///   (elastodyn_teeter.cpp).
 /// - blade k: root at HubRad along the coned axis i3, body x = i3 (ElastoDyn's j3), y = j1 (out of
-///   plane), z = j2 (in plane); azimuth offset 2π(k−1)/3 about the shaft, PreCone about the hub y,
+///   plane), z = j2 (in plane); azimuth offset 2π(k−1)/NumBl about the shaft, PreCone about the hub y,
 ///   pitch (frozen joint, value BlPitch) about −x. See elastodyn_blade_shapes.hpp for the shapes.
 ///
 /// DOFs (names as the field uses them; a switched-off DOF stays in the model, frozen at its value):
 ///   "tower FA 1", "tower SS 1", "tower FA 2", "tower SS 2" [m, tower-top deflection];
 ///   "yaw" [rad, value NacYaw]; "generator azimuth" [rad, LSS side, value Azimuth − AzimB1Up, so
 ///   0 = blade 1 up; rate RotSpeed; `rotating`]; "drivetrain" [rad, rotor minus generator azimuth];
+///   "teeter" [rad, 2 blades only: value TeetDefl, frozen unless TeetDOF; ModelRoles::teeter_dof];
 ///   "blade k pitch" [rad, always frozen]; "blade k flap 1", "blade k edge 1", "blade k flap 2"
 ///   [m, tip deflection of the polynomial mode].
 /// Inputs (value 0): "generator torque" [N m, high-speed shaft, opposing the rotation: −GBRatio·u on the
@@ -37,11 +42,12 @@
 /// azimuth rate]; "RotSpeed" [rad/s, generator azimuth + drivetrain rates]; "NacYaw" [rad]; "TTDspFA",
 /// "TTDspSS" [m, tower-top (yaw bearing origin) position along ground X, Y]; "YawBrTAxp", "YawBrTAyp"
 /// [m/s², its inertial acceleration along the yaw bearing's x, y axes, which tilt with the tower top];
-/// "TwrBsMFA", "TwrBsMSS" [N m, tower-base moments from the curvature, bending the top towards +X, +Y];
+/// "TeetDefl" [rad, 2 blades]; "TwrBsMFA", "TwrBsMSS" [N m, tower-base moments from the curvature, bending the top towards +X, +Y];
 /// "RootMFlp k", "RootMEdg k" (no space) [N m, blade-root moments from the curvature, bending the blade
 /// towards its body +y (out of plane) and +z (in plane), both turning with the pitch; rotating frame]
 /// (src/shapes/beam_moment.hpp; stiffness tuners are not applied to them).
-/// Springs: yaw (YawSpr, YawDamp about YawNeut, from ServoDyn), drivetrain (DTTorSpr, DTTorDmp).
+/// Springs: yaw (YawSpr, YawDamp about YawNeut, from ServoDyn), drivetrain (DTTorSpr, DTTorDmp),
+/// teeter (TeetMod = 1: stops and damper, each linearized on the piece of its law that holds at TeetDefl).
 ///
 /// ElastoDyn conventions kept on purpose: the tower top sits at the tower DOF values themselves (not at
 /// the polynomials' tip values, which need not sum to exactly 1); the blades' twisted shapes come from

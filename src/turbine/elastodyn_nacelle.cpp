@@ -80,14 +80,16 @@ DrivetrainParts addNacelleAndDrivetrain(Builder& b, const TowerParts& tower) {
   gen.inertia = rigidBodyInertia(0.0, Vec3::Zero(), Mat3(Vec3(m.GenIner, 0, 0).asDiagonal()));
   out.generator = b.addBody(std::move(gen));
 
-  // Hub at the rotor apex (OverHang along the shaft), turning by the drivetrain twist.
+  // Hub at the rotor apex (OverHang along the shaft), turning by the drivetrain twist. With 2 blades
+  // OverHang reaches the teeter pin instead, and the hub's mass teeters (elastodyn_teeter.cpp).
   Body hub;
   hub.name = "hub";
   hub.parent = out.shaft;
   hub.offset = Vec3(c.OverHang, 0, 0);
   hub.joint = JointType::Revolute;
   hub.axis = Vec3::UnitX();
-  hub.inertia = rigidBodyInertia(m.HubMass, Vec3(c.HubCM, 0, 0), Mat3(Vec3(m.HubIner, 0, 0).asDiagonal()));
+  hub.inertia = c.NumBl == 2 ? rigidBodyInertia(0.0, Vec3::Zero(), Mat3::Zero())
+                             : rigidBodyInertia(m.HubMass, Vec3(c.HubCM, 0, 0), Mat3(Vec3(m.HubIner, 0, 0).asDiagonal()));
   out.hub = b.addBody(std::move(hub));
   out.drivetrain = b.addDof("drivetrain", out.hub, DofKind::Joint, 0, ed.dof.DrTrDOF);
   return out;

@@ -90,6 +90,22 @@ struct DrivetrainParts {
 /// Yaw bearing, nacelle (yaw joint), generator (generator azimuth) and hub (drivetrain twist).
 DrivetrainParts addNacelleAndDrivetrain(Builder& b, const TowerParts& tower);
 
+/// What the blades are attached to: the hub itself (3 blades: its origin is the rotor apex Q) or, for
+/// 2 blades, the teetering hub (elastodyn_teeter.cpp), whose origin is the teeter pin P, the apex lying
+/// `apex` from it (−UndSling along the shaft) and the blades turned by δ3 about the shaft.
+struct RotorHub {
+  int body = -1;
+  Vec3 apex = Vec3::Zero();  ///< rotor apex in the body frame [m]
+  double azimuth_offset = 0;  ///< blade 1's angle about the body x from the body z [rad] (δ3)
+  int teeter = -1;            ///< teeter DOF, −1 without one
+};
+
+/// The hub of a 2-bladed rotor on its teeter hinge: a body on a revolute joint about the hub's y axis
+/// (ElastoDyn's teeter axis e2 = f2) carrying HubMass and the hub inertia, the DOF "teeter" (TeetDOF,
+/// value TeetDefl), the teeter springs and damper of TeetMod = 1 linearized on the piece of their law
+/// that holds at TeetDefl.
+RotorHub addTeeteringHub(Builder& b, const DrivetrainParts& dt);
+
 /// One blade: its body, pitch coordinate and beam (for points added later, e.g. blade elements).
 struct BladeParts {
   int body = -1;
@@ -102,10 +118,11 @@ struct RotorParts {
   std::vector<int> pitch;                     ///< pitch DOF of each blade
   std::vector<std::array<int, 3>> shape_dofs; ///< flap 1, edge 1, flap 2 DOFs of each blade
   std::vector<MatX> root_moment_gains;        ///< per blade, 2 × 3: (m_y flap, m_z edge) at the root
+  int teeter = -1;                            ///< teeter DOF (2 blades), −1 without one
 };
 
-/// The three blades on the hub (pitch joints frozen at BlPitch, twisted ElastoDyn shapes, tip masses).
-RotorParts addBlades(Builder& b, int hub);
+/// The NumBl blades on the hub (pitch joints frozen at BlPitch, twisted ElastoDyn shapes, tip masses).
+RotorParts addBlades(Builder& b, const RotorHub& hub);
 
 /// Inputs (generator torque, rotor thrust and torque, tower-top forces, collective and individual
 /// pitch) and the default outputs (elastodyn_outputs.cpp; names and definitions in elastodyn_model.hpp).

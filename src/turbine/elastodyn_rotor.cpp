@@ -1,4 +1,4 @@
-// The three ElastoDyn blades on the hub (ElastoDyn `SetCoordSy`: frames g', i (cone), j (pitch)).
+// The ElastoDyn blades on the hub (ElastoDyn `SetCoordSy`: frames g', i (cone), j (pitch)).
 #include <cmath>
 #include <numbers>
 
@@ -18,8 +18,9 @@ constexpr double deg = pi / 180.0;
 
 Mat3 axisRotation(int axis, double angle) { return Eigen::AngleAxisd(angle, Vec3::Unit(axis)).toRotationMatrix(); }
 
-RotorParts addBlades(Builder& b, int hub) {
+RotorParts addBlades(Builder& b, const RotorHub& hub) {
   RotorParts out;
+  out.teeter = hub.teeter;
   const io::ElastoDynInput& ed = b.ed;
   const io::ElastoDynConfiguration& c = ed.config;
   const int nodes = ed.BldNodes.value_or(b.opt.blade_nodes);
@@ -35,7 +36,8 @@ RotorParts addBlades(Builder& b, int hub) {
   span_first.col(2) = Vec3::UnitY();
   const bool on[3] = {ed.dof.FlapDOF1, ed.dof.EdgeDOF, ed.dof.FlapDOF2};
 
-  for (int k = 0; k < 3; ++k) {
+  const int nb = c.NumBl;
+  for (int k = 0; k < nb; ++k) {
     const std::string name = "blade " + std::to_string(k + 1);
     const io::ElastoDynBlade& file = ed.blades.at(static_cast<std::size_t>(k));
     const double tip_mass = ed.mass.TipMass[static_cast<std::size_t>(k)];
@@ -48,14 +50,16 @@ RotorParts addBlades(Builder& b, int hub) {
     o.axial_shortening = b.opt.axial_shortening;
     const BeamBody bb = buildBeamBody(beam.props, beam.shapes, o, name);
 
-    // Hub frame (x = shaft, blade 1 along z at zero azimuth) → blade k's azimuth (about x) → cone
-    // (about y, ElastoDyn's i frame: i3 = sin β g1' + cos β g3') → span-first body axes; the pitch joint
-    // turns about −x (ElastoDyn: j1 = cos θ i1 − sin θ i2).
-    const Mat3 coned = axisRotation(0, 2 * pi * k / 3) * axisRotation(1, c.PreCone[static_cast<std::size_t>(k)] * deg);
+    // Hub frame (x = shaft, blade 1 along z at zero azimuth) → blade k's azimuth (about x; with δ3,
+    // ElastoDyn's g frame, turned by δ3 more) → cone (about y, ElastoDyn's i frame:
+    // i3 = sin β g1' + cos β g3') → span-first body axes; the pitch joint turns about −x (ElastoDyn:
+    // j1 = cos θ i1 − sin θ i2). The root is HubRad along i3 from the apex.
+    const Mat3 coned = axisRotation(0, hub.azimuth_offset + 2 * pi * k / nb) *
+                       axisRotation(1, c.PreCone[static_cast<std::size_t>(k)] * deg);
     Body bl;
     bl.name = name;
-    bl.parent = hub;
-    bl.offset = c.HubRad * coned.col(2);
+    bl.parent = hub.body;
+    bl.offset = hub.apex + c.HubRad * coned.col(2);
     bl.rotation = coned * span_first;
     bl.joint = JointType::Revolute;
     bl.axis = -Vec3::UnitX();

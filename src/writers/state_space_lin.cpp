@@ -32,6 +32,7 @@ std::string elastoDynDescription(const std::string& name) {
   if (name == "generator azimuth") return "Variable speed generator DOF (internal DOF index = DOF_GeAz)";
   if (name == "drivetrain") return "Drivetrain rotational-flexibility DOF (internal DOF index = DOF_DrTr)";
   if (name == "yaw") return "Nacelle yaw DOF (internal DOF index = DOF_Yaw)";
+  if (name == "teeter") return "Hub teetering DOF (internal DOF index = DOF_Teet)";
   return "";
 }
 

@@ -176,26 +176,72 @@ TEST_F(BadInput, FurlingIsRefused) {
             path(kEd) + ":104: Furling: True not supported by whirl (rotor and tail furl are not modelled)");
 }
 
-TEST_F(BadInput, TwoBladedTeeteringRotorIsRefused) {
+TEST_F(BadInput, TwoBladedTeeteringRotorIsRead) {
   edit(kEd, "          3   NumBl", "          2   NumBl");
   edit(kEd, "False         TeetDOF", "True          TeetDOF");
   const whirl::io::OpenFastTurbine t = read();
   EXPECT_EQ(t.elastodyn.blades.size(), 2u);
-  const std::vector<std::string> issues = whirl::io::unsupported_options(t.elastodyn);
-  ASSERT_EQ(issues.size(), 1u);  // one reason (issue 16): the teeter is part of the 2-bladed rotor
-  EXPECT_EQ(issues[0], path(kEd) + ":44: NumBl: 2 not supported by whirl (only 3-bladed rotors are modelled, "
-                                   "and no teetering hub: TeetDOF is on too)");
-  EXPECT_EQ(input_error_message([&] { whirl::io::require_supported(t); }), issues[0]);
+  EXPECT_TRUE(whirl::io::unsupported_options(t.elastodyn).empty());
 }
 
-TEST_F(BadInput, TeeterSwitchIgnoredForThreeBlades) {
-  edit(kEd, "False         TeetDOF", "True          TeetDOF");  // "[unused for 3 blades]" in ElastoDyn too
-  EXPECT_NO_THROW(whirl::io::require_supported(read()));
+// ElastoDyn ignores TeetDOF for 3 blades ("[unused for 3 blades]"); a deck that sets it expects a teeter.
+TEST_F(BadInput, TeeterOnThreeBladesIsRefused) {
+  edit(kEd, "False         TeetDOF", "True          TeetDOF");
+  EXPECT_EQ(input_error_message([&] { whirl::io::require_supported(read()); }),
+            path(kEd) + ":11: TeetDOF: True not supported by whirl (a teetering hub needs a 2-bladed rotor (NumBl = "
+                        "3); set TeetDOF = False)");
 }
 
-TEST_F(BadInput, OneBladeIsAnInputError) {
+TEST_F(BadInput, OneOrFourBladesAreAnInputError) {
   edit(kEd, "          3   NumBl", "          1   NumBl");
   EXPECT_EQ(read_error(), path(kEd) + ":44: NumBl: must be 2 or 3 (is 1)");
+  edit(kEd, "          1   NumBl", "          4   NumBl");
+  EXPECT_EQ(read_error(), path(kEd) + ":44: NumBl: must be 2 or 3 (is 4)");
+}
+
+// A 2-bladed rotor needs the ROTOR-TEETER section, with ElastoDyn's ranges (ValidatePrimaryData).
+TEST_F(BadInput, TwoBladedRotorTeeterKeys) {
+  edit(kEd, "          3   NumBl", "          2   NumBl");
+  edit(kEd, "          0   TeetMod ", "          0   TeetMd ");
+  EXPECT_THAT(read_error(), StartsWith(path(kEd) + ":90: TeetMd: not a key of an OpenFAST ElastoDyn file"));
+  std::string text = read_text(dir_.path() / kEd);  // the line gone altogether
+  const std::size_t at = text.find("          0   TeetMd ");
+  text.erase(at, text.find('\n', at) - at + 1);
+  dir_.write(kEd, text);
+  EXPECT_THAT(read_error(), StartsWith(path(kEd) + ": TeetMod: key not found: a 2-bladed rotor (NumBl = 2) needs the "
+                                                   "ROTOR-TEETER section"));
+}
+
+TEST_F(BadInput, TwoBladedRotorTeeterRanges) {
+  edit(kEd, "          3   NumBl", "          2   NumBl");
+  auto with = [&](const std::string& from, const std::string& to) {
+    edit(kEd, from, to);
+    const std::string msg = read_error();
+    edit(kEd, to, from);
+    return msg;
+  };
+  EXPECT_EQ(with("          0   TeetMod ", "          3   TeetMod "),
+            path(kEd) + ":90: TeetMod: must be 0 (none), 1 (standard) or 2 (user-defined) (is 3)");
+  EXPECT_EQ(with("          0   TeetHStP", "         -1   TeetHStP"),
+            path(kEd) + ":95: TeetHStP: must be in [TeetSStP, 180] deg = [0, 180] (is -1)");
+  EXPECT_EQ(with("          0   TeetSStP", "        200   TeetSStP"),
+            path(kEd) + ":94: TeetSStP: must be in [0, 180] deg (is 200)");
+  EXPECT_EQ(with("          0   TeetCDmp", "         10   TeetCDmp"),
+            path(kEd) + ":93: TeetCDmp: must be 0, as ElastoDyn requires (Coulomb teeter damping is not modelled)");
+  EXPECT_THAT(with("          0   TeetSSSp", "         -5   TeetSSSp"), StartsWith(path(kEd) + ":96: TeetSSSp: "));
+  EXPECT_EQ(with("          0   Delta3", "         90   Delta3"),
+            path(kEd) + ":52: Delta3: must be in (-90, 90) deg (is 90)");
+  EXPECT_EQ(with("          0   TeetDefl", "        181   TeetDefl"),
+            path(kEd) + ":31: TeetDefl: must be in (-180, 180] deg (is 181)");
+}
+
+TEST_F(BadInput, UserDefinedTeeterIsRefused) {
+  edit(kEd, "          3   NumBl", "          2   NumBl");
+  edit(kEd, "False         TeetDOF", "True          TeetDOF");
+  edit(kEd, "          0   TeetMod ", "          2   TeetMod ");
+  EXPECT_EQ(input_error_message([&] { whirl::io::require_supported(read()); }),
+            path(kEd) + ":90: TeetMod: 2 not supported by whirl (a user-defined teeter spring/damper (routine "
+                        "UserTeet) is not modelled; whirl supports only TeetMod = 0 or 1)");
 }
 
 TEST_F(BadInput, PlatformDofAndBeamDynAreRefused) {
