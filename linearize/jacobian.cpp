@@ -1,5 +1,7 @@
 #include "linearize/jacobian.hpp"
 
+#include <cassert>
+
 #include "src/dynamics/aero_loads.hpp"
 #include "src/dynamics/kinematics.hpp"
 #include "src/dynamics/outputs.hpp"
@@ -38,7 +40,6 @@ MatX jacobian(const Model& m, JacobianWorkspace& jw, const VecX& q, const VecX& 
   load(jw.qdd, qdd);
   load(jw.u, u);
   pointKinematics(m, jw, q, qd, qdd);
-  jw.ws.constant_frames = &jw.kin;  // set here: a copied workspace must not point at the original
   const int n = static_cast<int>(f.size());
   const int ncol = static_cast<int>(cols.size());
   MatX J(n, ncol);
@@ -50,14 +51,12 @@ MatX jacobian(const Model& m, JacobianWorkspace& jw, const VecX& q, const VecX& 
       for (int k = 0; k < w; ++k) J(r, c0 + k) = f(r).derivatives()(k);
     for (int k = 0; k < w; ++k) seed(m, jw, wrt, cols[c0 + k], k, false);
   }
-  jw.ws.constant_frames = nullptr;  // valid during these passes only
   return J;
 }
 
 }  // namespace
 
 JacobianWorkspace::JacobianWorkspace(const Model& m) : ws(m), kin(m) {
-  ws.derivatives_only = true;
   q.resize(m.ndof());
   qd.resize(m.ndof());
   qdd.resize(m.ndof());
@@ -68,10 +67,14 @@ JacobianWorkspace::JacobianWorkspace(const Model& m) : ws(m), kin(m) {
 
 MatX residualJacobian(const Model& m, JacobianWorkspace& jw, const VecX& q, const VecX& qd, const VecX& qdd,
                       const VecX& u, Wrt wrt, const std::vector<int>& cols, VecX* value, const AeroInflow* frozen) {
+  assert(q.size() == m.ndof() && qd.size() == m.ndof() && qdd.size() == m.ndof() && u.size() == m.ninput());
   if (value) value->resize(0);
+  // Every pass reads only derivatives, with the double kinematics of the point (kept current by
+  // jacobian()) for the frames it does not move.
+  const AdPass pass{&jw.kin};
   auto full = [&]() {
-    residual(m, jw.ws, jw.q, jw.qd, jw.qdd, jw.u, jw.e, frozen);
-    if (value && value->size() == 0 && jw.ws.complete) {
+    const bool complete = residual(m, jw.ws, jw.q, jw.qd, jw.qdd, jw.u, jw.e, frozen, nullptr, pass);
+    if (value && value->size() == 0 && complete) {
       value->resize(m.ndof());
       for (int k = 0; k < m.ndof(); ++k) (*value)(k) = jw.e(k).value();
     }
@@ -104,8 +107,9 @@ MatX residualJacobian(const Model& m, JacobianWorkspace& jw, const VecX& q, cons
 
 MatX outputJacobian(const Model& m, JacobianWorkspace& jw, const VecX& q, const VecX& qd, const VecX& qdd,
                     const VecX& u, Wrt wrt, const std::vector<int>& cols, const AeroInflow* frozen) {
+  const AdPass pass{&jw.kin};
   return jacobian(m, jw, q, qd, qdd, u, wrt, cols, jw.y,
-                  [&]() { evaluateOutputs(m, jw.ws, jw.q, jw.qd, jw.qdd, jw.y, &jw.u, frozen); });
+                  [&]() { evaluateOutputs(m, jw.ws, jw.q, jw.qd, jw.qdd, jw.y, &jw.u, frozen, pass); });
 }
 
 }  // namespace whirl

@@ -1,55 +1,11 @@
 #pragma once
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 
 #include "src/dynamics/kinematics.hpp"
 
 namespace whirl {
-
-namespace detail {
-inline int maxBasisSize(const Model& m) {
-  int ncmax = 1;
-  for (const Body& b : m.bodies) ncmax = std::max(ncmax, b.inertia.nc());
-  return ncmax;
-}
-}  // namespace detail
-
-template <class T>
-Workspace<T>::Workspace(const Model& m)
-    : bem(static_cast<std::size_t>(m.aero.nstations())),
-      jets{std::vector<SectionJet>(static_cast<std::size_t>(m.aero.nstations())),
-           std::vector<BladeJet>(m.aero.blades.size())},
-      prod(detail::maxBasisSize(m)),
-      prod_dt(detail::maxBasisSize(m)) {
-  const int n = m.ndof();
-  scratch = VecXT<T>::Zero(n);
-  int ncmax = 1, nemax = 1;
-  frames.resize(m.bodies.size());
-  basis.resize(m.bodies.size());
-  for (size_t i = 0; i < m.bodies.size(); ++i) {
-    const BodyInertia& in = m.bodies[i].inertia;
-    frames[i].Jv = Mat3XT<T>::Zero(3, n);
-    frames[i].Jw = Mat3XT<T>::Zero(3, n);
-    basis[i].c = VecXT<T>::Zero(in.nc());
-    basis[i].cd = VecXT<T>::Zero(in.nc());
-    basis[i].cdd = VecXT<T>::Zero(in.nc());
-    basis[i].D = MatXT<T>::Zero(in.nc(), in.ne);
-    ncmax = std::max(ncmax, in.nc());
-    nemax = std::max(nemax, in.ne);
-  }
-  g = VecXT<T>::Zero(ncmax);
-  size_t supmax = 0;
-  for (const auto& sup : m.support) supmax = std::max(supmax, sup.size());
-  const int nsup = static_cast<int>(supmax);
-  for (VecX& y : mass.y) y = VecX::Zero(ncmax);
-  mass.Mb = MatX::Zero(6 + nemax, 6 + nemax);
-  mass.Jb = MatX::Zero(6, nsup);
-  mass.MJ = MatX::Zero(6, nsup);
-  mass.zero = VecX::Zero(n);
-  if constexpr (!std::is_same_v<T, double>)
-    for (const Body& b : m.bodies) constant_basis.emplace_back(b.inertia.nc(), b.inertia.ne);
-  h = VecXT<T>::Zero(nemax);
-}
 
 template <class T>
 Mat3T<T> axisRotation(const Vec3& n, const T& phi) {
@@ -146,7 +102,8 @@ void rotate(FrameState<T>& f, const Vec3& n, const T& phi, const T& phid, const 
 
 template <class T>
 void forwardKinematics(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T>& qd,
-                       const VecXT<T>& qdd) {
+                       const VecXT<T>& qdd, const AdPass& pass) {
+  assert(q.size() == m.ndof() && qd.size() == m.ndof() && qdd.size() == m.ndof());
   const int nb = static_cast<int>(m.bodies.size());
   for (int i = 0; i < nb; ++i) {
     const Body& b = m.bodies[i];
@@ -166,9 +123,9 @@ void forwardKinematics(const Model& m, Workspace<T>& ws, const VecXT<T>& q, cons
     FrameState<T>& f = ws.frames[i];
     const std::vector<int>& sup = m.support[i];
     if constexpr (!std::is_same_v<T, double>) {
-      // Under derivatives_only, a frame no seeded coordinate moves is the double frame.
-      if (ws.derivatives_only && ws.constant_frames && !detail::supportSeeded(m, i, q, qd, qdd)) {
-        const FrameState<double>& c = ws.constant_frames->frames[i];
+      // In a derivatives-only pass, a frame no seeded coordinate moves is the double frame.
+      if (pass.derivativesOnly() && !detail::supportSeeded(m, i, q, qd, qdd)) {
+        const FrameState<double>& c = pass.kinematics->frames[i];
         f.R = c.R.template cast<T>(); f.r = c.r.template cast<T>(); f.v = c.v.template cast<T>();
         f.a = c.a.template cast<T>(); f.w = c.w.template cast<T>(); f.dw = c.dw.template cast<T>();
         for (int s : sup) {

@@ -1,6 +1,7 @@
 #include "src/dynamics/mass_matrix.hpp"
 
 #include <array>
+#include <cassert>
 
 #include "src/dynamics/body_forces.hxx"
 
@@ -90,6 +91,7 @@ MatX bodyMassMatrix(const BodyInertia& in, const BasisState<double>& b) {
 }
 
 void massMatrix(const Model& m, Workspace<double>& ws, const VecX& q, MatX& M) {
+  assert(q.size() == m.ndof());
   const int n = m.ndof();
   MassScratch& s = ws.mass;
   forwardKinematics(m, ws, q, s.zero, s.zero);

@@ -12,9 +12,10 @@ namespace whirl {
 /// \param[out] y           outputs (dim model.noutput()), in the units of each Output
 /// \param[in]  u           inputs (dim model.ninput()); needed by rotor outputs (wind, generator torque)
 /// \param[in]  frozen      induced velocities held (frozen wake) for the aerodynamic rotor outputs
+/// \param[in]  pass        an AD pass that reads only derivatives copies unmoved frames (AdPass)
 template <class T>
 void evaluateOutputs(const Model& model, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T>& qd,
                      const VecXT<T>& qdd, VecXT<T>& y, const VecXT<T>* u = nullptr,
-                     const AeroInflow* frozen = nullptr);
+                     const AeroInflow* frozen = nullptr, const AdPass& pass = {});
 
 }  // namespace whirl

@@ -33,13 +33,13 @@ Vec3T<T> pointMotion(const Model& m, const Workspace<T>& ws, int b, int point, i
 
 template <class T>
 void evaluateOutputs(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T>& qd, const VecXT<T>& qdd,
-                     VecXT<T>& y, const VecXT<T>* u, const AeroInflow* frozen) {
+                     VecXT<T>& y, const VecXT<T>* u, const AeroInflow* frozen, const AdPass& pass) {
   bool points = false, rotor = false;
   for (const Output& o : m.outputs) {
     points = points || o.kind == OutputKind::Point;
     rotor = rotor || o.kind == OutputKind::Rotor;
   }
-  if (points || rotor) forwardKinematics(m, ws, q, qd, qdd);
+  if (points || rotor) forwardKinematics(m, ws, q, qd, qdd, pass);
   RotorTotals<T> totals;
   T generator_torque(0), generator_speed(0), rotor_speed(0);
   if (rotor) {

@@ -15,9 +15,13 @@ namespace whirl {
 /// \param[in]  frozen      aerodynamic induced velocities held fixed (frozen wake, aero_inflow.hpp);
 ///                         null: the induction is solved at this geometry (BEM)
 /// \param[out] record      if not null (double only): the state of every blade element
+/// \param[in]  pass        an AD pass that reads only derivatives (AdPass) may leave terms out
+/// \return whether every term was evaluated, so that the values of e are complete (always, unless
+///         `pass` reads only derivatives)
 template <class T>
-void residual(const Model& model, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T>& qd, const VecXT<T>& qdd,
-              const VecXT<T>& u, VecXT<T>& e, const AeroInflow* frozen = nullptr, AeroRecord* record = nullptr);
+bool residual(const Model& model, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T>& qd, const VecXT<T>& qdd,
+              const VecXT<T>& u, VecXT<T>& e, const AeroInflow* frozen = nullptr, AeroRecord* record = nullptr,
+              const AdPass& pass = {});
 
 /// Adds the terms of e that inputs scale (point loads and DOF loads, dim model.ndof()) at the
 /// kinematics already in ws (forwardKinematics): e += Σ_l u_l g_l(q). The kinematics scalar TK and

@@ -1,4 +1,5 @@
 #pragma once
+#include <cassert>
 #include "src/dynamics/aero_loads.hxx"
 #include "src/dynamics/body_forces.hxx"
 #include "src/dynamics/generator_torque.hpp"
@@ -133,10 +134,11 @@ void addInputLoads(const Model& m, const Workspace<TK>& ws, const VecXT<TK>& qd,
 }
 
 template <class T>
-void residual(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T>& qd, const VecXT<T>& qdd,
-              const VecXT<T>& u, VecXT<T>& e, const AeroInflow* frozen, AeroRecord* record) {
-  forwardKinematics(m, ws, q, qd, qdd);
-  ws.complete = true;
+bool residual(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T>& qd, const VecXT<T>& qdd,
+              const VecXT<T>& u, VecXT<T>& e, const AeroInflow* frozen, AeroRecord* record, const AdPass& pass) {
+  assert(u.size() == m.ninput() && e.size() == m.ndof());
+  forwardKinematics(m, ws, q, qd, qdd, pass);
+  bool complete = true;
   const int nb = static_cast<int>(m.bodies.size());
   for (int k = 0; k < m.ndof(); ++k) e(k) = T(0);
   const Vec3T<T> gravity = m.gravity.cast<T>();
@@ -144,8 +146,8 @@ void residual(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T
   for (int i = 0; i < nb; ++i) {
     const Body& b = m.bodies[i];
     if constexpr (!std::is_same_v<T, double>)
-      if (ws.derivatives_only && !detail::bodyVaries(m, i, q, qd, qdd)) {
-        ws.complete = false;
+      if (pass.derivativesOnly() && !detail::bodyVaries(m, i, q, qd, qdd)) {
+        complete = false;
         continue;
       }
     const FrameState<T>& f = ws.frames[i];
@@ -170,7 +172,7 @@ void residual(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T
   // seeding none of these (q̈ columns, or q̇ without them) skips them.
   bool loads = true;
   if constexpr (!std::is_same_v<T, double>)
-    if (ws.derivatives_only)
+    if (pass.derivativesOnly())
       loads = detail::anySeeded(q) || detail::anySeeded(u) ||
               ((m.aero.active() || m.generator.active()) && detail::anySeeded(qd));
   if (loads) {
@@ -179,14 +181,14 @@ void residual(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T
     // inputs) leaves that blade out, as the inertia forces of an unseeded body are left out above.
     std::uint64_t skip = 0;
     if constexpr (!std::is_same_v<T, double>)
-      if (ws.derivatives_only && !detail::anySeeded(u))
+      if (pass.derivativesOnly() && !detail::anySeeded(u))
         for (std::size_t b = 0; b < m.aero.blades.size() && b < 64; ++b)
           if (!detail::bodyVaries(m, m.aero.blades[b].body, q, qd, qdd)) skip |= std::uint64_t{1} << b;
-    if (skip) ws.complete = false;
+    if (skip) complete = false;
     addAeroLoads(m, ws, q, u, frozen, record, e, skip);
     detail::addMooringLoads(m, ws, e);
   } else {
-    ws.complete = false;
+    complete = false;
   }
   for (const DofSpring& s : m.springs) e(s.dof) -= s.k * (q(s.dof) - s.q0) + s.c * qd(s.dof);
   for (const BodyMatrices& bm : m.body_matrices) {
@@ -198,6 +200,7 @@ void residual(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T
       e(d0 + r) -= s;
     }
   }
+  return complete;
 }
 
 }  // namespace whirl

@@ -143,18 +143,18 @@ struct Workspace {
   std::vector<ConstantBasis> constant_basis; ///< per body, for AD passes
   MassScratch mass;                          ///< mass-matrix assembly (double)
   VecXT<T> g;                 ///< Σ_k ∫ P_kᵀ (a_P)_k dm
-  /// Set by AD Jacobian passes, which read only derivatives: residual() then skips the inertia
-  /// forces of bodies none of whose coordinates carries a seeded direction (their values in e are
-  /// then incomplete). Never set when the values of e are used.
-  bool derivatives_only = false;
-  /// AD passes under derivatives_only: the frames of bodies whose support carries no seeded
-  /// direction are copied from here — the double kinematics at the same (q, q̇, q̈), which the caller
-  /// keeps current — instead of recomputed.
-  const Workspace<double>* constant_frames = nullptr;
-  /// Set by residual(): whether the last evaluation computed every term (nothing skipped under
-  /// derivatives_only), so that the values of e are complete.
-  bool complete = true;
   VecXT<T> h;                 ///< elastic generalized inertia forces of one body (largest ne)
+};
+
+/// What an AD Jacobian pass asks of forwardKinematics(), residual() and evaluateOutputs()
+/// (linearize/jacobian.cpp). The default evaluates everything, values and derivatives.
+struct AdPass {
+  /// The double kinematics at the same (q, q̇, q̈), kept current by the caller. Given, the pass reads
+  /// only derivatives: the frames of bodies whose support carries no seeded direction are copied from
+  /// here instead of recomputed, and residual() leaves out the inertia forces of bodies and the loads
+  /// that no seeded direction reaches (the values of e are then incomplete; residual() says so).
+  const Workspace<double>* kinematics = nullptr;
+  bool derivativesOnly() const { return kinematics != nullptr; }
 };
 
 }  // namespace whirl
