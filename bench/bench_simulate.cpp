@@ -7,7 +7,7 @@
 //    cases/nrel5mw/Main_Aero.fst (8 m/s steady wind, pitch 0, ServoDyn's simple torque law, AeroDyn's
 //    BEMT re-solved at every residual), the rotor released from rest at the parked static equilibrium;
 //    it settles at 9.13 rpm (tests/validation/test_simulate_aero.cpp checks it against `whirl steady`).
-// Run: build/bench/whirl_bench --benchmark_filter='nrel5mwSimulate|nrel5mwAeroStartup' 
+// Run: build/bench/whirl_bench --benchmark_filter='nrel5mwSimulate|nrel5mwAeroStartup'
 #include <benchmark/benchmark.h>
 
 #include <numbers>

@@ -10,13 +10,22 @@ namespace whirl {
 namespace {
 
 // idaNlsConvTest's constants (SUNDIALS 6.4.1, ida_nls.c / ida.c).
-constexpr double kRateMax = 0.9;     // RATEMAX: a larger contraction factor is a divergence
+constexpr double kRateMax = 0.9;      // RATEMAX: a larger contraction factor is a divergence
 constexpr double kSsAfterSetup = 20;  // ss after a linear-solver setup (idaNlsLSetup)
 
 struct Content {
   Content(int size, void* mem, IterationBlocksFn fn, const BlockSolverOptions& o)
-      : n(size), ida(mem), blocks(std::move(fn)), opt(o), dedq(size, size), dedqd(size, size), M(size, size),
-        S(size, size), lu(size), rhs(size), x1(size) {}
+      : n(size),
+        ida(mem),
+        blocks(std::move(fn)),
+        opt(o),
+        dedq(size, size),
+        dedqd(size, size),
+        M(size, size),
+        S(size, size),
+        lu(size),
+        rhs(size),
+        x1(size) {}
   int n;
   void* ida;
   IterationBlocksFn blocks;
@@ -27,10 +36,10 @@ struct Content {
   VecX rhs, x1;
 
   bool have_blocks = false, factored = false, refresh = false;
-  double c = NAN;                     // of the factorization
-  double t_last = NAN;                // the Newton iteration of the last solve: its time, step count,
-  long nst_last = -1, ncfn_last = 0;  // failed steps so far
-  long nst_blocks = 0;                // step count when the blocks were evaluated
+  double c = NAN;                           // of the factorization
+  double t_last = NAN;                      // the Newton iteration of the last solve: its time, step count,
+  long nst_last = -1, ncfn_last = 0;        // failed steps so far
+  long nst_blocks = 0;                      // step count when the blocks were evaluated
   double angle_blocks = 0, angle_mass = 0;  // rotor angle when the blocks, M were evaluated
   double ss = kSsAfterSetup, oldnrm = 0;    // the convergence test's rate estimate and first correction
   sunindextype last_flag = SUNLS_SUCCESS;

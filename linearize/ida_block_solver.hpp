@@ -39,15 +39,15 @@ namespace whirl {
 /// n × n in the order of the states; with `mass_only` only M (the others are left as they are).
 /// Returns 0 on success, > 0 for a recoverable failure (a non-finite entry: IDA retries with a smaller
 /// step), < 0 to stop the integration.
-using IterationBlocksFn = std::function<int(double t, const double* y, const double* yp, bool mass_only, MatX& dedq,
-                                            MatX& dedqd, MatX& M)>;
+using IterationBlocksFn =
+    std::function<int(double t, const double* y, const double* yp, bool mass_only, MatX& dedq, MatX& dedqd, MatX& M)>;
 
 struct BlockSolverOptions {
   double max_rate = 0.2;  ///< evaluate the blocks when a Newton iteration contracts less than this
   long max_age = 1000;    ///< evaluate the blocks after this many steps
   /// The rotor angle at (t, y) [rad], or null (no rotor).
   std::function<double(double t, const double* y)> angle;
-  double max_turn = 1.0;        ///< evaluate the blocks after the rotor turned this much [rad]
+  double max_turn = 1.0;       ///< evaluate the blocks after the rotor turned this much [rad]
   double max_mass_turn = 0.1;  ///< evaluate M alone after the rotor turned this much [rad]
 };
 

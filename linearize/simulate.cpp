@@ -3,8 +3,8 @@
 #include <fmt/format.h>
 #include <ida/ida.h>
 #include <nvector/nvector_serial.h>
-#include <sunnonlinsol/sunnonlinsol_newton.h>
 #include <sundials/sundials_context.h>
+#include <sunnonlinsol/sunnonlinsol_newton.h>
 
 #include <algorithm>
 #include <cmath>

@@ -66,9 +66,9 @@ struct Simulation {
   std::vector<int> states;   ///< the coordinates integrated (the others are prescribed)
   long steps = 0, residual_evaluations = 0, jacobian_evaluations = 0;  ///< IDA statistics
   long mass_matrix_evaluations = 0;  ///< M alone, to refresh IDA's iteration matrix between Jacobians
-  long nonlinear_iterations = 0;   ///< Newton iterations (one residual and one linear solve each)
-  long convergence_failures = 0;   ///< Newton iterations that failed to converge (the step is retried)
-  long error_test_failures = 0;    ///< steps rejected by the local error test
+  long nonlinear_iterations = 0;     ///< Newton iterations (one residual and one linear solve each)
+  long convergence_failures = 0;     ///< Newton iterations that failed to converge (the step is retried)
+  long error_test_failures = 0;      ///< steps rejected by the local error test
 };
 
 /// Integrates from `start` (coordinates, rates and inputs at t = 0; its q̈ is not used: the initial

@@ -38,8 +38,8 @@ struct Vectors {
 
 TEST(IdaVector, LinearSumEveryCaseMatchesSundialsBitwise) {
   // The special cases of N_VLinearSum_Serial (a, b = ±1, a = ±b, in place) and the general one.
-  const std::vector<std::pair<double, double>> ab = {{1, 1},     {1, -1},  {-1, 1},   {1, 0.3},    {0.3, 1},
-                                                     {-1, 0.3},  {0.3, -1}, {0.7, 0.7}, {0.7, -0.7}, {0.3, -2.9}};
+  const std::vector<std::pair<double, double>> ab = {{1, 1},    {1, -1},   {-1, 1},    {1, 0.3},    {0.3, 1},
+                                                     {-1, 0.3}, {0.3, -1}, {0.7, 0.7}, {0.7, -0.7}, {0.3, -2.9}};
   for (const auto& [a, b] : ab)
     for (int target : {2, 0, 1}) {  // z separate, z = x, z = y
       Vectors v(3);

@@ -139,10 +139,11 @@ TEST(SimulateAeroSlow, StartUpSettlesAtTheTrimmedRotorSpeed) {
   ASSERT_NEAR(sim.time[before], 540, 1e-9);
   const double mean = (sim.q(last, az) - sim.q(before, az)) / (sim.time[last] - sim.time[before]);
   const SteadyState trim = trimAtWindSpeed(m, 8.0);
-  std::printf("start-up: mean rotor speed over 540-600 s %.7f rpm, trim %.7f rpm (%ld steps, %ld residuals, "
-              "%ld Jacobians)\n",
-              mean * 30 / std::numbers::pi, trim.condition.rotor_speed * 30 / std::numbers::pi, sim.steps,
-              sim.residual_evaluations, sim.jacobian_evaluations);
+  std::printf(
+      "start-up: mean rotor speed over 540-600 s %.7f rpm, trim %.7f rpm (%ld steps, %ld residuals, "
+      "%ld Jacobians)\n",
+      mean * 30 / std::numbers::pi, trim.condition.rotor_speed * 30 / std::numbers::pi, sim.steps,
+      sim.residual_evaluations, sim.jacobian_evaluations);
   EXPECT_NEAR(mean, trim.condition.rotor_speed, 1e-4 * trim.condition.rotor_speed);
   // Started from rest: it did spin up (not a trivial agreement of two stopped rotors).
   EXPECT_LT(std::abs(sim.qd(0, az)), 1e-12);

@@ -22,7 +22,8 @@ TEST(SimulateToleranceSlow, Nrel5mwDefaultToleranceAgreesWithTightOne) {
   // the model's range of validity, the rotor free.
   for (const char* name : {"tower FA 1", "tower SS 1"}) start.q(*m.findDof(name)) += 0.2;
   for (int b = 1; b <= 3; ++b)
-    for (const char* shape : {"flap 1", "edge 1"}) start.q(*m.findDof("blade " + std::to_string(b) + " " + shape)) += 0.5;
+    for (const char* shape : {"flap 1", "edge 1"})
+      start.q(*m.findDof("blade " + std::to_string(b) + " " + shape)) += 0.5;
   SimulationOptions o;
   o.t_end = 30;
   o.dt_out = 0.05;
