@@ -4,8 +4,7 @@
 #include <ida/ida.h>
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
-#include <sunlinsol/sunlinsol_dense.h>
-#include <sunmatrix/sunmatrix_dense.h>
+#include <sunnonlinsol/sunnonlinsol_newton.h>
 
 #include <algorithm>
 #include <cmath>
@@ -14,6 +13,8 @@
 #include <memory>
 #include <string>
 
+#include "linearize/ida_block_solver.hpp"
+#include "linearize/ida_vector.hpp"
 #include "linearize/jacobian.hpp"
 #include "src/dynamics/mass_matrix.hpp"
 #include "src/dynamics/outputs.hpp"
@@ -27,13 +28,13 @@ namespace {
 struct IdaHandles {
   SUNContext ctx = nullptr;
   N_Vector y = nullptr, yp = nullptr;
-  SUNMatrix A = nullptr;
   SUNLinearSolver ls = nullptr;
+  SUNNonlinearSolver nls = nullptr;
   void* mem = nullptr;
   ~IdaHandles() {
     if (mem) IDAFree(&mem);
+    if (nls) SUNNonlinSolFree(nls);
     if (ls) SUNLinSolFree(ls);
-    if (A) SUNMatDestroy(A);
     if (yp) N_VDestroy(yp);
     if (y) N_VDestroy(y);
     if (ctx) SUNContext_Free(&ctx);
@@ -53,7 +54,6 @@ struct Problem {
   MatX Mfull;
   std::string ida_message;       // the last message IDA reported
   std::exception_ptr error;      // an exception thrown inside a callback, rethrown after IDASolve
-  long jacobians = 0;
 
   Problem(const Model& model, const OperatingPoint& s, const SimulationOptions& o)
       : m(model), start(s), opt(o), ws(model), jw(model), e(VecX::Zero(model.ndof())) {}
@@ -118,32 +118,28 @@ int residualFn(double t, N_Vector yy, N_Vector yp, N_Vector rr, void* data) {
   }
 }
 
-// ∂F/∂y + c ∂F/∂ẏ = [[c I, −I], [∂e/∂q, ∂e/∂q̇ + c ∂e/∂q̈]] = [[c I, −I], [−K, −C − c M]].
-int jacobianFn(double t, double c, N_Vector yy, N_Vector yp, N_Vector, SUNMatrix J, void* data, N_Vector, N_Vector,
-               N_Vector) {
-  Problem& p = *static_cast<Problem*>(data);
-  try {
-    p.load(t, N_VGetArrayPointer(yy), N_VGetArrayPointer(yp));
-    const int ns = p.n();
-    const MatX dq = residualJacobian(p.m, p.jw, p.q, p.qd, p.qdd, p.u, Wrt::Q, p.states);
-    const MatX dqd = residualJacobian(p.m, p.jw, p.q, p.qd, p.qdd, p.u, Wrt::Qd, p.states);
+// The blocks of IDA's iteration matrix at (t, y, ẏ) (linearize/ida_block_solver.hpp): ∂e/∂q and
+// ∂e/∂q̇ from the AD passes of the linearization, M from the mass-matrix assembly, on the states.
+int iterationBlocks(Problem& p, double t, const double* y, const double* yp, bool mass_only, MatX& dedq, MatX& dedqd,
+                    MatX& M) {
+  p.load(t, y, yp);
+  const int ns = p.n();
+  if (mass_only) {
     massMatrix(p.m, p.ws, p.q, p.Mfull);
-    Eigen::Map<MatX> A(SUNDenseMatrix_Data(J), 2 * ns, 2 * ns);  // column-major, as SUNDIALS' dense matrix
-    A.setZero();
-    for (int r = 0; r < ns; ++r) {
-      A(r, r) = c;
-      A(r, ns + r) = -1.0;
-      for (int k = 0; k < ns; ++k) {
-        A(ns + r, k) = dq(p.states[r], k);
-        A(ns + r, ns + k) = dqd(p.states[r], k) - c * p.Mfull(p.states[r], p.states[k]);
-      }
-    }
-    ++p.jacobians;
-    return A.allFinite() ? 0 : 1;
-  } catch (...) {
-    p.error = std::current_exception();
-    return -1;
+    for (int r = 0; r < ns; ++r)
+      for (int k = 0; k < ns; ++k) M(r, k) = p.Mfull(p.states[r], p.states[k]);
+    return M.allFinite() ? 0 : 1;
   }
+  const MatX dq = residualJacobian(p.m, p.jw, p.q, p.qd, p.qdd, p.u, Wrt::Q, p.states);
+  const MatX dqd = residualJacobian(p.m, p.jw, p.q, p.qd, p.qdd, p.u, Wrt::Qd, p.states);
+  massMatrix(p.m, p.ws, p.q, p.Mfull);
+  for (int r = 0; r < ns; ++r)
+    for (int k = 0; k < ns; ++k) {
+      dedq(r, k) = dq(p.states[r], k);
+      dedqd(r, k) = dqd(p.states[r], k);
+      M(r, k) = p.Mfull(p.states[r], p.states[k]);
+    }
+  return dedq.allFinite() && dedqd.allFinite() && M.allFinite() ? 0 : 1;
 }
 
 void errorHandler(int, const char*, const char*, char* msg, void* data) {
@@ -186,11 +182,16 @@ std::string flagName(int flag) {
 
 // IDA's counters of the segment since the last (re)initialization.
 void addStatistics(void* mem, Simulation& sim) {
-  long nsteps = 0, nres = 0;
+  long nsteps = 0, nres = 0, nni = 0, nnf = 0, netf = 0;
   IDAGetNumSteps(mem, &nsteps);
   IDAGetNumResEvals(mem, &nres);
+  IDAGetNonlinSolvStats(mem, &nni, &nnf);
+  IDAGetNumErrTestFails(mem, &netf);
   sim.steps += nsteps;
   sim.residual_evaluations += nres;
+  sim.nonlinear_iterations += nni;
+  sim.convergence_failures += nnf;
+  sim.error_test_failures += netf;
 }
 
 }  // namespace
@@ -259,8 +260,8 @@ Simulation simulate(const Model& m, const OperatingPoint& start, const Simulatio
 
   IdaHandles h;
   check(SUNContext_Create(nullptr, &h.ctx), "SUNContext_Create");
-  h.y = N_VNew_Serial(2 * ns, h.ctx);
-  h.yp = N_VNew_Serial(2 * ns, h.ctx);
+  h.y = newFastSerialVector(2 * ns, h.ctx);
+  h.yp = newFastSerialVector(2 * ns, h.ctx);
   if (!h.y || !h.yp) throw ComputeError("simulate: SUNDIALS: cannot allocate the state vectors");
   double* y = N_VGetArrayPointer(h.y);
   double* yp = N_VGetArrayPointer(h.yp);
@@ -275,11 +276,35 @@ Simulation simulate(const Model& m, const OperatingPoint& start, const Simulatio
   check(IDAInit(h.mem, residualFn, 0.0, h.y, h.yp), "IDAInit");
   check(IDASStolerances(h.mem, opt.rtol, opt.atol), "IDASStolerances");
   check(IDASetUserData(h.mem, &p), "IDASetUserData");
-  h.A = SUNDenseMatrix(2 * ns, 2 * ns, h.ctx);
-  h.ls = SUNLinSol_Dense(h.y, h.A, h.ctx);
-  if (!h.A || !h.ls) throw ComputeError("simulate: SUNDIALS: cannot allocate the dense linear solver");
-  check(IDASetLinearSolver(h.mem, h.ls, h.A), "IDASetLinearSolver");
-  check(IDASetJacFn(h.mem, jacobianFn), "IDASetJacFn");
+  // The rotor angle tells the linear solver when M's coupling of rotating and fixed coordinates has
+  // turned too far (linearize/ida_block_solver.hpp): the azimuth state, or its prescribed motion.
+  BlockSolverOptions bo;
+  if (!m.roles.azimuth.empty()) {
+    const int az = m.roles.azimuth.front();
+    bo.angle = [&p, az](double t, const double* yy) {
+      for (int k = 0; k < p.n(); ++k)
+        if (p.states[k] == az) return yy[k];
+      p.prescribe(t);
+      return p.q(az);
+    };
+  }
+  h.ls = newBlockEliminationSolver(
+      ns, h.mem,
+      [&p](double t, const double* yy, const double* ypp, bool mass_only, MatX& dq, MatX& dqd, MatX& M) {
+        try {
+          return iterationBlocks(p, t, yy, ypp, mass_only, dq, dqd, M);
+        } catch (...) {
+          p.error = std::current_exception();
+          return -1;
+        }
+      },
+      bo, h.ctx);
+  if (!h.ls) throw ComputeError("simulate: SUNDIALS: cannot allocate the linear solver");
+  check(IDASetLinearSolver(h.mem, h.ls, nullptr), "IDASetLinearSolver");
+  h.nls = SUNNonlinSol_Newton(h.y, h.ctx);
+  if (!h.nls) throw ComputeError("simulate: SUNDIALS: cannot allocate the Newton solver");
+  check(IDASetNonlinearSolver(h.mem, h.nls), "IDASetNonlinearSolver");
+  check(attachConvergenceTest(h.nls, h.ls), "SUNNonlinSolSetConvTestFn");
   check(IDASetMaxNumSteps(h.mem, opt.max_steps), "IDASetMaxNumSteps");
   size_t next_stop = 0;
   check(IDASetStopTime(h.mem, stops[next_stop]), "IDASetStopTime");
@@ -309,7 +334,8 @@ Simulation simulate(const Model& m, const OperatingPoint& start, const Simulatio
     record(k, tout, y, yp);
   }
   addStatistics(h.mem, sim);
-  sim.jacobian_evaluations = p.jacobians;
+  sim.jacobian_evaluations = blockSolverStatistics(h.ls).evaluations;
+  sim.mass_matrix_evaluations = blockSolverStatistics(h.ls).mass_evaluations;
   return sim;
 }
 

@@ -9,7 +9,10 @@
 ///   F(t, y, ẏ) = [ q̇ − v ; e(q, v, v̇, u(t), t) ] = 0,
 /// whose iteration matrix ∂F/∂y + c ∂F/∂ẏ = [[c I, −I], [−K, −C − c M]] takes K = −∂e/∂q and
 /// C = −∂e/∂q̇ from the same AD passes as the linearization (residualJacobian) and M from the mass
-/// matrix assembly (linearize/linearize.hpp): no finite differences.
+/// matrix assembly (linearize/linearize.hpp): no finite differences. IDA's Newton iteration solves
+/// with it by block elimination, K + c C + c² M of size n, re-factored for every c, K and C re-evaluated
+/// when the Newton iteration slows down or the rotor has turned by 1 rad, M by 0.1 rad
+/// (linearize/ida_block_solver.hpp); the vector kernels are linearize/ida_vector.hpp's.
 ///
 /// Rheonomic coordinates — frozen ones (moving at their rate), the rotating ones of a driven rotor,
 /// those on a prescribed motion (DrivenDof), those an input drives (q = value + gain u(t), e.g. a
@@ -62,6 +65,10 @@ struct Simulation {
   MatX y;                    ///< the model's outputs (noutput columns)
   std::vector<int> states;   ///< the coordinates integrated (the others are prescribed)
   long steps = 0, residual_evaluations = 0, jacobian_evaluations = 0;  ///< IDA statistics
+  long mass_matrix_evaluations = 0;  ///< M alone, to refresh IDA's iteration matrix between Jacobians
+  long nonlinear_iterations = 0;     ///< Newton iterations (one residual and one linear solve each)
+  long convergence_failures = 0;     ///< Newton iterations that failed to converge (the step is retried)
+  long error_test_failures = 0;      ///< steps rejected by the local error test
 };
 
 /// Integrates from `start` (coordinates, rates and inputs at t = 0; its q̈ is not used: the initial

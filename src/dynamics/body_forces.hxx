@@ -32,6 +32,29 @@ void matvec(const MatX& S, const VecXT<T>& x, int rows, int cols, VecXT<T>& y) {
   }
 }
 
+// y[0..rows) = S x over the nonzero entries of S (BodyInertia::S_nonzero), visited column by column:
+// each row sums in the order of the dense loop above, so the results are bitwise the same.
+// (Raw restricted pointers: through Eigen's accessors the compiler reloads the data pointers after
+// every store, twice the instructions.)
+template <class T>
+void matvec(const std::vector<ShapeIntegralEntry>& S, const VecXT<T>& x, int rows, VecXT<T>& y) {
+  T* __restrict yd = y.data();
+  const T* __restrict xd = x.data();
+  for (int i = 0; i < rows; ++i) yd[i] = T(0);
+  const ShapeIntegralEntry* __restrict e = S.data();
+  for (const ShapeIntegralEntry* end = e + S.size(); e != end; ++e) yd[e->row] += e->value * xd[e->col];
+}
+
+// y = S_k x (k = 3j + l, len[j] × len[l]): sparse for a finalized body (Strace set), dense otherwise.
+template <class T>
+void shapeProduct(const BodyInertia& in, int k, const VecXT<T>& x, VecXT<T>& y) {
+  const int rows = in.len[k / 3], cols = in.len[k % 3];
+  if (in.Strace.rows() == in.nc())
+    matvec(in.S_nonzero[k], x, rows, y);
+  else
+    matvec(in.S[k], x, rows, cols, y);
+}
+
 // Σ_k a[k·stride] x(k), k < n.
 template <class T>
 T dot(const double* a, int stride, const VecXT<T>& x, int n) {
@@ -50,7 +73,7 @@ template <class TQ, class TR>
 void basisPositionProducts(const BodyInertia& in, const VecXT<TQ>& c, BasisProducts<TQ, TR>& p) {
   const std::array<int, 3>& len = in.len;
   for (int k = 0; k < 3; ++k)
-    for (int l = 0; l < 3; ++l) detail::matvec(in.S[3 * k + l], c, len[k], len[l], p.y[3 * k + l]);
+    for (int l = 0; l < 3; ++l) detail::shapeProduct(in, 3 * k + l, c, p.y[3 * k + l]);
   for (int l = 0; l < 3; ++l)
     for (int j = 0; j < 3; ++j) {
       const VecXT<TQ>& y = p.y[3 * l + j];
@@ -68,7 +91,7 @@ void basisRateProducts(const BodyInertia& in, const VecXT<TR>& cd, const VecXT<T
   if (in.ne > 0)
     for (int k = 0; k < 3; ++k)
       for (int l = 0; l < 3; ++l)
-        if (k != l) detail::matvec(in.S[3 * k + l], cd, len[k], len[l], p.z[3 * k + l]);
+        if (k != l) detail::shapeProduct(in, 3 * k + l, cd, p.z[3 * k + l]);
   for (int l = 0; l < 3; ++l)
     for (int j = 0; j < 3; ++j) {
       const VecXT<TQ>& y = p.y[3 * l + j];
@@ -87,7 +110,7 @@ void basisRateProducts(const BodyInertia& in, const VecXT<TR>& cd, const VecXT<T
   if (in.ne == 0) return;
   const int nc = in.nc();
   if (in.Strace.rows() == nc) {
-    detail::matvec(in.Strace, cdd, nc, nc, p.scdd);
+    detail::matvec(in.Strace_nonzero, cdd, nc, p.scdd);
   } else {  // a body that was never finalized
     for (int r = 0; r < nc; ++r) p.scdd(r) = TR(0);
     for (int k = 0; k < 3; ++k) {

@@ -31,7 +31,10 @@ void bodyMassMatrixInto(const BodyInertia& in, const BasisState<double>& b, std:
   for (int j = 0; j < 3; ++j)
     for (int l = 0; l < 3; ++l) {
       VecX& yjl = y[3 * j + l];
-      detail::matvec(in.S[3 * j + l], c, len[j], len[l], yjl);
+      if (finalized)
+        detail::shapeProduct(in, 3 * j + l, c, yjl);
+      else
+        detail::matvec(in.S[3 * j + l], c, len[j], len[l], yjl);
       double q = 0;
       for (int p = 0; p < len[j]; ++p) q += c(p) * yjl(p);
       Q(j, l) = q;

@@ -52,6 +52,16 @@ void setActiveLengths(BodyInertia& in) {
     in.len[j] = len;
   }
   in.Strace = in.S[0] + in.S[4] + in.S[8];
+  auto nonzeros = [](const MatX& S, int rows, int cols) {
+    std::vector<ShapeIntegralEntry> out;
+    for (int c = 0; c < cols; ++c)
+      for (int r = 0; r < rows; ++r)
+        if (S(r, c) != 0.0) out.push_back({r, c, S(r, c)});
+    return out;
+  };
+  for (int j = 0; j < 3; ++j)
+    for (int l = 0; l < 3; ++l) in.S_nonzero[3 * j + l] = nonzeros(in.S[3 * j + l], in.len[j], in.len[l]);
+  in.Strace_nonzero = nonzeros(in.Strace, nc, nc);
 }
 
 void checkInertia(const Body& b) {

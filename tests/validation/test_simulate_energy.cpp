@@ -67,8 +67,9 @@ TEST(SimulateEnergySlow, Nrel5mwFreeRotor) {
     if (m.dofs[i].kind == DofKind::Elastic) start.q(i) = 0.05;  // every elastic coordinate displaced
   SimulationOptions o;
   // 100 periods of tower 1 (0.32 Hz), the lowest structural mode (the yaw on its weak spring, 2300 s,
-  // excepted). Measured drift 5.2e-7 at rtol 4e-10; 1.1e-6 at 1e-9; at 1e-10 IDA runs out of steps
-  // near 98 s (IDA_TOO_MUCH_WORK; not investigated — rounding of loads of 1e9 N is a suspect).
+  // excepted). Measured drift 4.1e-7 at rtol 4e-10 (5.2e-7 with SUNDIALS' dense solver); with that
+  // solver 1.1e-6 at 1e-9, and at 1e-10 IDA ran out of steps near 98 s (IDA_TOO_MUCH_WORK; not
+  // investigated — rounding of loads of 1e9 N is a suspect).
   o.t_end = 100 / 0.32;
   o.dt_out = 0.25;
   o.rtol = 4e-10;
