@@ -65,6 +65,30 @@ void shorteningColumns(Mat3X& P, const MatX& G) {
     for (int j = i; j < ne; ++j) P(0, pairIndex(ne, i, j)) = (i == j ? -0.5 : -1.0) * G(i, j);
 }
 
+// The axial motion each shape gives a curved mean line (pre-sweep y0, pre-bend z0), to first order:
+// −∫₀ˣ (y0' u_y,i' + z0' u_z,i') dx' (ne). An inextensible curved beam bent by u_i must move along x
+// to keep its length; it is how a centrifugal or other axial load straightens a pre-bent blade
+// ([Branlard2019, §5.4]: the spun-up pre-bent beam's tip from −0.5 m to about −0.13 m). y0, z0 are
+// linear between stations, so each interval adds its slope times the shape's change over it: exact.
+// Left out: the cross motion a twist gives the bent part (−∫ t_x z0', ∫ t_x y0'), whose centrifugal
+// softening needs the second-order bending–torsion terms to stay consistent.
+VecX meanLineAxialMotion(const BeamProperties& p, const std::vector<ShapePtr>& shapes, double x) {
+  const int ne = static_cast<int>(shapes.size());
+  VecX c = VecX::Zero(ne);
+  if (p.y0.size() == 0 && p.z0.size() == 0) return c;
+  for (Eigen::Index s = 0; s + 1 < p.x.size() && p.x(s) < x; ++s) {
+    const double a = p.x(s), b = std::min(p.x(s + 1), x), h = p.x(s + 1) - p.x(s);
+    const double dy = p.y0.size() ? (p.y0(s + 1) - p.y0(s)) / h : 0.0;
+    const double dz = p.z0.size() ? (p.z0(s + 1) - p.z0(s)) / h : 0.0;
+    if (dy == 0 && dz == 0) continue;
+    for (int i = 0; i < ne; ++i) {
+      const ShapeValue va = shapes[i]->eval(a), vb = shapes[i]->eval(b);
+      c(i) -= dy * (vb.uy - va.uy) + dz * (vb.uz - va.uz);
+    }
+  }
+  return c;
+}
+
 }  // namespace
 
 void validateBeam(const BeamProperties& p, const std::string& body) {
@@ -139,7 +163,10 @@ BeamBody buildBeamBody(const BeamProperties& p, const std::vector<ShapePtr>& sha
     Mat3X P = Mat3X::Zero(3, nc);
     P.col(0) << x, interpolateStations(p.x, p.y0, x) + cgy, interpolateStations(p.x, p.z0, x) + cgz;
     for (int i = 0; i < ne; ++i) P.col(1 + i) << 0.0, v[i].uy - cgz * v[i].tx, v[i].uz + cgy * v[i].tx;
-    if (in.quadratic) shorteningColumns(P, slopeProductIntegral(shapes, x));
+    if (in.quadratic) {
+      P.block(0, 1, 1, ne) = meanLineAxialMotion(p, shapes, x).transpose();
+      shorteningColumns(P, slopeProductIntegral(shapes, x));
+    }
     in.mass += w * m;
     in.m1 += w * m * P;
     for (int j = 0; j < 3; ++j)
@@ -214,7 +241,10 @@ BodyPoint beamPoint(const BeamProperties& p, const std::vector<ShapePtr>& shapes
     pt.P.col(1 + i) << 0.0, v.uy, v.uz;
     pt.theta.col(i) << v.tx, -v.uz1, v.uy1;
   }
-  if (tmp.quadratic) shorteningColumns(pt.P, slopeProductIntegral(shapes, x));
+  if (tmp.quadratic) {
+    pt.P.block(0, 1, 1, ne) = meanLineAxialMotion(p, shapes, x).transpose();
+    shorteningColumns(pt.P, slopeProductIntegral(shapes, x));
+  }
   return pt;
 }
 

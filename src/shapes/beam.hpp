@@ -8,7 +8,8 @@
 /// displace it along y and z and twist it about x. Mass sits on the COG line (mean line + COG
 /// offset); torsion moves the COG by eq. 30 and the section's polar inertia j_G adds eq. 31 (rotary
 /// inertia of the sections about the beam axis only, the thin-beam convention).
-/// With axial shortening on, a bent beam's points move by −½ Σ q_i q_j ∫₀ˣ ν_i·ν_j dx' along x:
+/// With axial shortening on, a bent beam's points move along x by −½ Σ q_i q_j ∫₀ˣ ν_i·ν_j dx' and, on a
+/// curved mean line (pre-sweep y0, pre-bend z0), by −Σ q_i ∫₀ˣ (y0' u_y,i' + z0' u_z,i') dx' (beam.cpp):
 /// the geometric stiffness of any axial load (gravity, masses carried, centrifugal, body
 /// acceleration) and the axial-inertia terms of the mass matrix [Branlard2019, eq. 26–29] follow.
 #include <string>

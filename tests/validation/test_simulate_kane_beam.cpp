@@ -13,6 +13,7 @@
 #include "linearize/simulate.hpp"
 #include "modal/modes.hpp"
 #include "src/io/case_file.hpp"
+#include "tests/support/kane_spin_up.hpp"
 #include "tests/support/reference.hpp"
 
 namespace whirl {
@@ -22,16 +23,7 @@ Simulation spinUp(const std::vector<std::string>& sets, Model& m) {
   std::vector<CaseOverride> o;
   for (const auto& s : sets) o.push_back(parseOverride(s));
   m = readCase(std::string(WHIRL_SOURCE_DIR) + "/cases/kane_beam/kane_beam.yaml", o);
-  SimulationOptions so;
-  so.t_end = 20;
-  so.dt_out = 0.05;
-  so.rtol = 1e-8;
-  so.atol = 1e-10;
-  TimeSignal s;
-  s.kind = TimeSignal::Kind::Spinup;
-  s.parameters = {15, 6};
-  so.driven.push_back({*m.findDof("theta"), s});
-  return simulate(m, initialPoint(m), so);
+  return test::kaneSpinUp(m);
 }
 
 // Tip deflection in the plane of rotation (the case's output), min over time and at the end.

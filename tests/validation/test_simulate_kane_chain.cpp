@@ -18,6 +18,7 @@
 #include "linearize/simulate.hpp"
 #include "modal/modes.hpp"
 #include "src/io/case_file.hpp"
+#include "tests/support/kane_spin_up.hpp"
 #include "tests/support/reference.hpp"
 
 namespace whirl {
@@ -56,16 +57,7 @@ Model chain(int n, const std::vector<std::string>& sets = {}) {
 // The tip deflection in the plane of rotation over 0–20 s at 0.05 s: θ̈ = (2/5)(1 − cos(πt/7.5)) for
 // 15 s, then 6 rad/s.
 VecX spinUpTip(const Model& m) {
-  SimulationOptions so;
-  so.t_end = 20;
-  so.dt_out = 0.05;
-  so.rtol = 1e-8;
-  so.atol = 1e-10;
-  TimeSignal s;
-  s.kind = TimeSignal::Kind::Spinup;
-  s.parameters = {15, 6};
-  so.driven.push_back({*m.findDof("theta"), s});
-  const Simulation sim = simulate(m, initialPoint(m), so);
+  const Simulation sim = test::kaneSpinUp(m);
   return sim.y.col(*m.findOutput("tip deflection"));
 }
 
