@@ -57,9 +57,9 @@ struct PendingBlade {
 // The pitch coordinate named by `aero.pitch`: the blade body's own revolute joint about −x (positive
 // pitch towards feather, as ElastoDyn's pitch axis and the θ = twist + pitch of aero_loads.hxx).
 int pitchDof(const CaseNode& p, int body, CaseBuild& build) {
-  const int k = build.dofIndex(p.text(), p.where());
-  const Dof& d = build.model.dofs[k];
-  const Body& b = build.model.bodies[body];
+  const int k = build.builder.dofIndex(p.text(), p.where());
+  const Dof& d = build.model().dofs[k];
+  const Body& b = build.model().bodies[body];
   if (d.body != body || d.kind != DofKind::Joint || b.joint != JointType::Revolute)
     p.fail("DOF '" + d.name + "' is not the revolute joint of body '" + b.name + "' (the blade's pitch bearing)");
   if ((b.axis.normalized() + Vec3::UnitX()).norm() > 1e-9)
@@ -77,11 +77,11 @@ PendingBlade readBlade(const CaseNode& n, int body, const CaseBuild::Beam& beam,
   out.blade.body = body;
   if (const auto p = n.find("pitch")) {
     out.blade.pitch_dof = pitchDof(*p, body, build);
-  } else if (const Body& b = build.model.bodies[body];
+  } else if (const Body& b = build.model().bodies[body];
              b.joint == JointType::Revolute && (b.axis.normalized() + Vec3::UnitX()).norm() <= 1e-9) {
     // The body's own revolute joint about −x is its pitch bearing: the element angles need it apart.
-    for (int k = 0; k < build.model.ndof(); ++k)
-      if (build.model.dofs[k].body == body && build.model.dofs[k].kind == DofKind::Joint) out.blade.pitch_dof = k;
+    for (int k = 0; k < build.model().ndof(); ++k)
+      if (build.model().dofs[k].body == body && build.model().dofs[k].kind == DofKind::Joint) out.blade.pitch_dof = k;
   }
   const CaseNode table = n.at("stations");
   const Columns c = readColumns(table, kStationColumns, {});
@@ -107,7 +107,7 @@ PendingBlade readBlade(const CaseNode& n, int body, const CaseBuild::Beam& beam,
   const VecX zero = VecX::Zero(x.size());
   const VecX ac_y = c.count("ac_y") ? c.at("ac_y").values : zero, ac_z = c.count("ac_z") ? c.at("ac_z").values : zero;
 
-  Body& b = build.model.bodies[body];
+  Body& b = build.model().bodies[body];
   const int n_el = static_cast<int>(x.size());
   for (int j = 0; j < n_el; ++j) {
     const double id = airfoil.values(j);
@@ -155,7 +155,7 @@ std::vector<aero::Polar> readAirfoils(const CaseNode& list, bool use_cm) {
 
 void readWind(const CaseNode& w, CaseBuild& build) {
   w.allowKeys({"speed", "reference_height", "shear_exponent", "direction", "direction_deg", "upflow", "upflow_deg"});
-  Model& m = build.model;
+  Model& m = build.model();
   if (m.findInput("wind speed")) w.fail("the case already has an input named 'wind speed' (the wind adds it)");
   const CaseNode speed = w.at("speed");
   Input in;
@@ -178,7 +178,7 @@ void readWind(const CaseNode& w, CaseBuild& build) {
 }  // namespace
 
 void readAerodynamics(const CaseNode& top, CaseBuild& build) {
-  Model& m = build.model;
+  Model& m = build.model();
   AeroModel& am = m.aero;
   const auto wind = top.find("wind"), rotor = top.find("aero");
   std::vector<std::pair<CaseNode, int>> blade_nodes;  // each body's `aero:` and the body
@@ -196,7 +196,7 @@ void readAerodynamics(const CaseNode& top, CaseBuild& build) {
   if (blade_nodes.empty()) r.fail("no beam body has an aero: block (its blade elements)");
   if (!wind) r.fail("aerodynamics need a top-level wind: block (at least its speed)");
   const CaseNode hub = r.at("hub");
-  am.hub_body = build.bodyIndex(hub.text(), hub.where());
+  am.hub_body = build.builder.bodyIndex(hub.text(), hub.where());
   am.air_density = r.number("air_density", 1.225);
   if (!(am.air_density > 0)) r.at("air_density").fail("must be positive");
   am.induction = r.boolean("induction", true);

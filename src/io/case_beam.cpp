@@ -137,7 +137,7 @@ void readBeamBody(const CaseNode& n, int index, CaseBuild& build) {
   fe.props = p;
   if (sh && sh->isMap()) fe = readFemShapeSettings(*sh, p);
   build.beams.push_back({index, p, shapes, fe, opt.axial_shortening});
-  Body& b = build.model.bodies[index];
+  Body& b = build.model().bodies[index];
   try {
     const BeamBody bb = buildBeamBody(p, shapes, opt, b.name);
     b.inertia = bb.inertia;

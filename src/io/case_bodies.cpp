@@ -30,7 +30,7 @@ Mat3 elementary(char axis, double angle) {
 
 // The joint of `node` (default fixed) and its DOFs.
 void readJoint(const CaseNode& body_node, int index, CaseBuild& build) {
-  Body& b = build.model.bodies[index];
+  Body& b = build.model().bodies[index];
   const auto j = body_node.find("joint");
   if (!j) return;
   const std::string type = j->at("type").text();
@@ -88,7 +88,7 @@ Mat3 readRotation(const CaseNode& node) {
 }
 
 void readBodies(const CaseNode& list, CaseBuild& build) {
-  Model& m = build.model;
+  Model& m = build.model();
   const std::vector<CaseNode> items = list.items();
   if (items.empty()) list.fail("a case needs at least one body");
   struct Link { std::optional<CaseNode> parent, at; };
@@ -106,12 +106,11 @@ void readBodies(const CaseNode& list, CaseBuild& build) {
     b.name = name.text();
     if (b.name.empty() || b.name == "ground") name.fail("'" + b.name + "' cannot name a body");
     if (const auto k = m.findBody(b.name))
-      name.fail("body name '" + b.name + "' is already used at line " + std::to_string(build.body_where[*k].line));
+      name.fail("body name '" + b.name + "' is already used at line " +
+                std::to_string(build.builder.bodyWhere(*k).line));
     b.offset = n.vec3("offset", Vec3::Zero());
     if (const auto r = n.find("rotation")) b.rotation = readRotation(*r);
-    const int index = static_cast<int>(m.bodies.size());
-    m.bodies.push_back(b);
-    build.body_where.push_back(n.where());
+    const int index = build.builder.addBody(b, n.where());
     links.push_back({n.find("parent"), n.find("at")});
     readJoint(n, index, build);
     if (type == "rigid") readRigidBody(n, m.bodies[index]);
@@ -123,10 +122,10 @@ void readBodies(const CaseNode& list, CaseBuild& build) {
     const Link& l = links[i];
     const std::string parent = l.parent ? l.parent->text() : "ground";
     if (parent == b.name) l.parent->fail("a body cannot be its own parent");
-    b.parent = parent == "ground" ? -1 : build.bodyIndex(parent, l.parent->where());
+    b.parent = parent == "ground" ? -1 : build.builder.bodyIndex(parent, l.parent->where());
     if (!l.at) continue;
     if (b.parent < 0) l.at->fail("a point needs a parent body; on the ground, give the position as offset");
-    b.parent_point = build.pointIndex(b.parent, l.at->text(), l.at->where());
+    b.parent_point = build.builder.pointIndex(b.parent, l.at->text(), l.at->where());
   }
 }
 

@@ -242,7 +242,7 @@ void readFemDamping(const CaseNode& n, Body& b) {
 /// DOF names "<body> <point or n<k>> <ux…rz>" and "<body> CB j".
 void addFemDofs(const fem::FemBody& fb, const std::map<int, std::string>& point_name, int index,
                 const CaseNode& n, CaseBuild& build) {
-  const std::string& body = build.model.bodies[index].name;
+  const std::string& body = build.model().bodies[index].name;
   for (size_t k = 0; k < fb.dof_names.size(); ++k) {
     std::string s = fb.dof_names[k];
     if (s[0] == 'n') {
@@ -256,7 +256,7 @@ void addFemDofs(const fem::FemBody& fb, const std::map<int, std::string>& point_
 }  // namespace
 
 void readFemBody(const CaseNode& n, int index, CaseBuild& build) {
-  Body& b = build.model.bodies[index];
+  Body& b = build.model().bodies[index];
   const CaseNode len = n.at("length");
   const double L = len.number();
   if (!(L > 0)) len.fail("the length must be positive");

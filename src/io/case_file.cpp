@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <utility>
 
 #include "src/io/case_reader.hpp"
 #include "src/model/error.hpp"
@@ -47,7 +48,7 @@ Model readCase(const std::string& path, const std::vector<CaseOverride>& overrid
                  "wind", "aero", "generator"});
 
   CaseBuild build;
-  Model& m = build.model;
+  Model& m = build.model();
   m.name = top.text("name", std::filesystem::path(path).stem().string());
   if (!top.has("name")) requirePrintable(m.name, path, 0, "name (the case file's name)");
   if (const auto d = top.find("description")) d->freeText();
@@ -64,13 +65,14 @@ Model readCase(const std::string& path, const std::vector<CaseOverride>& overrid
   // Body indices of build.beams are those before finalize() sorts the bodies.
   if (beams)
     for (const CaseBuild::Beam& b : build.beams) beams->push_back({m.bodies[b.body].name, b.fem, b.shapes});
+  Model model;
   try {
-    finalize(m);
+    model = std::move(build.builder).finish();
   } catch (const InputError& e) {
     rethrowAt(Where{path, 0, "", ""}, e);
   }
-  addFemGeometricStiffness(m, build.fem);
-  return m;
+  addFemGeometricStiffness(model, build.fem);
+  return model;
 }
 
 }  // namespace whirl

@@ -9,9 +9,9 @@ namespace whirl {
 
 void readGenerator(const CaseNode& g, CaseBuild& build) {
   g.allowKeys({"torque_input", "speed_output", "VS_RtGnSp", "VS_RtTq", "VS_Rgn2K", "VS_SlPc", "GenEff"});
-  Model& m = build.model;
+  Model& m = build.model();
   const CaseNode in = g.at("torque_input");
-  const int input = build.inputIndex(in.text(), in.where());
+  const int input = build.builder.inputIndex(in.text(), in.where());
   bool applied = false;
   for (const PointLoad& l : m.point_loads) applied = applied || l.input == input;
   if (!applied)

@@ -22,8 +22,8 @@ void pointLoad(const CaseNode& n, CaseBuild& build) {
   n.allowKeys({"type", "body", "point", "force", "moment", "frame", "input"});
   PointLoad l;
   const CaseNode body = n.at("body");
-  l.body = build.bodyIndex(body.text(), body.where());
-  if (const auto p = n.find("point")) l.point = build.pointIndex(l.body, p->text(), p->where());
+  l.body = build.builder.bodyIndex(body.text(), body.where());
+  if (const auto p = n.find("point")) l.point = build.builder.pointIndex(l.body, p->text(), p->where());
   l.force = n.vec3("force", Vec3::Zero());
   l.moment = n.vec3("moment", Vec3::Zero());
   if (const auto f = n.find("frame")) {
@@ -31,38 +31,38 @@ void pointLoad(const CaseNode& n, CaseBuild& build) {
     if (s != "body" && s != "ground") f->fail("expected body or ground, got '" + s + "'");
     l.body_frame = s == "body";
   }
-  if (const auto u = n.find("input")) l.input = build.inputIndex(u->text(), u->where());
-  build.model.point_loads.push_back(l);
+  if (const auto u = n.find("input")) l.input = build.builder.inputIndex(u->text(), u->where());
+  build.model().point_loads.push_back(l);
 }
 
 void dofLoad(const CaseNode& n, CaseBuild& build) {
   n.allowKeys({"type", "dof", "value", "input"});
   DofLoad l;
   const CaseNode dof = n.at("dof");
-  l.dof = build.dofIndex(dof.text(), dof.where());
+  l.dof = build.builder.dofIndex(dof.text(), dof.where());
   l.value = n.at("value").number();
-  if (const auto u = n.find("input")) l.input = build.inputIndex(u->text(), u->where());
-  build.model.dof_loads.push_back(l);
+  if (const auto u = n.find("input")) l.input = build.builder.inputIndex(u->text(), u->where());
+  build.model().dof_loads.push_back(l);
 }
 
 void spring(const CaseNode& n, CaseBuild& build) {
   n.allowKeys({"type", "dof", "k", "c", "q0"});
   DofSpring s;
   const CaseNode dof = n.at("dof");
-  s.dof = build.dofIndex(dof.text(), dof.where());
+  s.dof = build.builder.dofIndex(dof.text(), dof.where());
   if (!n.has("k") && !n.has("c")) n.fail("a spring needs k and/or c");
   s.k = n.number("k", 0);
   s.c = n.number("c", 0);
   s.q0 = n.number("q0", 0);
-  build.model.springs.push_back(s);
+  build.model().springs.push_back(s);
 }
 
 void bodyMatrices(const CaseNode& n, CaseBuild& build) {
   n.allowKeys({"type", "body", "K", "C", "A", "x0"});
   BodyMatrices bm;
   const CaseNode body = n.at("body");
-  bm.body = build.bodyIndex(body.text(), body.where());
-  if (build.model.bodies[bm.body].joint != JointType::Free)
+  bm.body = build.builder.bodyIndex(body.text(), body.where());
+  if (build.model().bodies[bm.body].joint != JointType::Free)
     body.fail("body '" + body.text() + "' has no free joint: 6×6 matrices act on the 6 coordinates of a free joint");
   if (const auto k = n.find("K")) bm.K = k->matrix(6, 6);
   if (const auto c = n.find("C")) bm.C = c->matrix(6, 6);
@@ -72,7 +72,7 @@ void bodyMatrices(const CaseNode& n, CaseBuild& build) {
     if (v.size() != 6) x->fail("expected 6 numbers (surge, sway, heave, roll, pitch, yaw), got " + std::to_string(v.size()));
     for (int i = 0; i < 6; ++i) bm.x0(i) = v[i];
   }
-  build.model.body_matrices.push_back(bm);
+  build.model().body_matrices.push_back(bm);
 }
 
 }  // namespace
@@ -84,23 +84,23 @@ void readInputs(const CaseNode& list, CaseBuild& build) {
     const CaseNode name = n.at("name");
     in.name = name.text();
     if (in.name.empty()) name.fail("an input name must not be empty");
-    if (build.model.findInput(in.name)) name.fail("input name '" + in.name + "' is used twice");
+    if (build.model().findInput(in.name)) name.fail("input name '" + in.name + "' is used twice");
     in.value = n.number("value", 0);
     in.unit = n.text("unit", "");
     if (const auto b = n.find("blade")) {
       in.blade = b->integer() - 1;
       if (in.blade < 0) b->fail("blades are numbered from 1");
     }
-    build.model.inputs.push_back(in);
+    build.model().inputs.push_back(in);
   }
 }
 
 void readDofSettings(const CaseNode& map, CaseBuild& build) {
   for (const MapEntry& e : map.entries()) {
-    const int k = build.dofIndex(e.key, e.key_where);
+    const int k = build.builder.dofIndex(e.key, e.key_where);
     const CaseNode& n = e.value;
     n.allowKeys({"value", "value_deg", "frozen", "rotating", "rate", "rate_rpm"});
-    Dof& d = build.model.dofs[k];
+    Dof& d = build.model().dofs[k];
     const bool ang = build.dof_angular[k];
     const std::string why = "DOF '" + d.name + "' is a displacement [m], not an angle";
     d.value = oneOf(n, "value", "value_deg", kDeg, d.value, ang, why);

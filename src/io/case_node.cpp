@@ -37,8 +37,6 @@ bool isYamlNonFinite(const std::string& s) {
 
 }  // namespace
 
-void Where::fail(const std::string& reason) const { throw InputError(whirl::where(file, line, key, reason + note)); }
-
 std::string CaseSource::resolve(const std::string& relative) const {
   const std::filesystem::path p(relative);
   if (p.is_absolute() || folder.empty()) return p.string();

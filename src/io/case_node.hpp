@@ -12,19 +12,10 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "src/model/error.hpp"
 #include "src/model/types.hpp"
 
 namespace whirl {
-
-/// Where a value came from, for messages.
-struct Where {
-  std::string file;
-  int line = 0;      ///< 1-based, 0 = unknown
-  std::string key;   ///< dotted path or column name
-  std::string note;  ///< appended to the reason, e.g. " (value from --set k=v)"
-  /// \throws InputError "file:line: key: reason note".
-  [[noreturn]] void fail(const std::string& reason) const;
-};
 
 /// The file a case came from and the overrides applied to it (for messages).
 struct CaseSource {

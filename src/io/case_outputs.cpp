@@ -22,11 +22,12 @@ int orderOf(const CaseNode& n) {
 std::vector<std::pair<int, double>> dofTerms(const CaseNode& n, CaseBuild& build) {
   std::vector<std::pair<int, double>> terms;
   if (n.isMap()) {
-    for (const MapEntry& e : n.entries()) terms.push_back({build.dofIndex(e.key, e.key_where), e.value.number()});
+    for (const MapEntry& e : n.entries())
+      terms.push_back({build.builder.dofIndex(e.key, e.key_where), e.value.number()});
   } else if (n.isList()) {
-    for (const CaseNode& d : n.items()) terms.push_back({build.dofIndex(d.text(), d.where()), 1.0});
+    for (const CaseNode& d : n.items()) terms.push_back({build.builder.dofIndex(d.text(), d.where()), 1.0});
   } else {
-    terms.push_back({build.dofIndex(n.text(), n.where()), 1.0});
+    terms.push_back({build.builder.dofIndex(n.text(), n.where()), 1.0});
   }
   if (terms.empty()) n.fail("at least one DOF");
   return terms;
@@ -50,11 +51,11 @@ Output pointOutput(const CaseNode& n, CaseBuild& build) {
   o.kind = OutputKind::Point;
   o.order = orderOf(n);
   const CaseNode body = n.at("body");
-  o.body = build.bodyIndex(body.text(), body.where());
-  if (const auto p = n.find("point")) o.point = build.pointIndex(o.body, p->text(), p->where());
+  o.body = build.builder.bodyIndex(body.text(), body.where());
+  if (const auto p = n.find("point")) o.point = build.builder.pointIndex(o.body, p->text(), p->where());
   if (const auto f = n.find("frame")) {
     const std::string s = f->text();
-    o.frame_body = s == "ground" ? -1 : build.bodyIndex(s, f->where());
+    o.frame_body = s == "ground" ? -1 : build.builder.bodyIndex(s, f->where());
   }
   o.direction = n.vec3("direction", Vec3::UnitX());
   if (o.direction.norm() < 1e-12) n.at("direction").fail("the direction must not be zero");
@@ -64,7 +65,7 @@ Output pointOutput(const CaseNode& n, CaseBuild& build) {
 Output momentOutput(const CaseNode& n, CaseBuild& build) {
   n.allowKeys({"name", "type", "unit", "body", "fraction", "x", "component", "blade"});
   const CaseNode body = n.at("body");
-  const int b = build.bodyIndex(body.text(), body.where());
+  const int b = build.builder.bodyIndex(body.text(), body.where());
   const CaseBuild::Beam* beam = nullptr;
   for (const auto& bm : build.beams)
     if (bm.body == b) beam = &bm;
@@ -81,8 +82,8 @@ Output momentOutput(const CaseNode& n, CaseBuild& build) {
   o.kind = OutputKind::DofCombination;
   for (int j = 0; j < G.cols(); ++j) {
     int dof = -1;
-    for (int k = 0; k < build.model.ndof(); ++k) {
-      const Dof& d = build.model.dofs[k];
+    for (int k = 0; k < build.model().ndof(); ++k) {
+      const Dof& d = build.model().dofs[k];
       if (d.body == b && d.kind == DofKind::Elastic && d.local == j) dof = k;
     }
     o.terms.push_back({dof, G(c == "y" ? 0 : 1, j)});
@@ -98,10 +99,10 @@ void readInputTargets(const CaseNode& list, CaseBuild& build) {
   for (const CaseNode& n : list.items()) {
     const auto d = n.find("dofs");
     if (!d) continue;
-    Input& in = build.model.inputs[*build.model.findInput(n.at("name").text())];
+    Input& in = build.model().inputs[*build.model().findInput(n.at("name").text())];
     for (const auto& [dof, gain] : dofTerms(*d, build)) {
-      if (!build.model.dofs[dof].frozen)
-        d->fail("DOF '" + build.model.dofs[dof].name + "' is not frozen: an input sets frozen coordinates only " +
+      if (!build.model().dofs[dof].frozen)
+        d->fail("DOF '" + build.model().dofs[dof].name + "' is not frozen: an input sets frozen coordinates only " +
                 "(add `frozen: true` under dofs:)");
       in.dofs.push_back({dof, gain});
     }
@@ -109,7 +110,7 @@ void readInputTargets(const CaseNode& list, CaseBuild& build) {
 }
 
 void assignRoles(CaseBuild& build) {
-  Model& m = build.model;
+  Model& m = build.model();
   std::vector<int> pitch, inputs;  // per blade
   for (int i = 0; i < m.ninput(); ++i) {
     const Input& in = m.inputs[i];
@@ -152,7 +153,7 @@ void readOutputs(const CaseNode& list, CaseBuild& build) {
     const CaseNode name = n.at("name");
     o.name = name.text();
     if (o.name.empty()) name.fail("an output name must not be empty");
-    if (build.model.findOutput(o.name)) name.fail("output name '" + o.name + "' is used twice");
+    if (build.model().findOutput(o.name)) name.fail("output name '" + o.name + "' is used twice");
     if (n.has("unit")) o.unit = n.at("unit").text();
     if (o.unit.empty()) {  // SI from the kind: m or rad, per s, per s²
       bool angular = o.kind == OutputKind::DofCombination;
@@ -163,7 +164,7 @@ void readOutputs(const CaseNode& list, CaseBuild& build) {
       o.blade = b->integer() - 1;
       if (o.blade < 0) b->fail("blades are numbered from 1");
     }
-    build.model.outputs.push_back(o);
+    build.model().outputs.push_back(o);
   }
 }
 

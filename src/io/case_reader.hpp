@@ -6,10 +6,11 @@
 #include <string>
 #include <vector>
 
+#include "src/fem/mode_shapes.hpp"
 #include "src/io/case_file.hpp"
 #include "src/io/case_node.hpp"
-#include "src/fem/mode_shapes.hpp"
 #include "src/model/model.hpp"
+#include "src/model/model_builder.hpp"
 #include "src/shapes/beam.hpp"
 #include "src/shapes/shape.hpp"
 
@@ -17,8 +18,8 @@ namespace whirl {
 
 struct FemPending;
 
-/// The model being built, with where its bodies and DOFs were written (indices as in `model`,
-/// before finalize() reorders them).
+/// The model being built (ModelBuilder: indices before finalize() reorders them) with what only a
+/// case file has: its beams, which DOFs are angles, the FE bodies awaiting their geometric stiffness.
 struct CaseBuild {
   /// A beam body's properties and shapes, kept for its bending-moment outputs and `whirl shapes`.
   struct Beam {
@@ -28,23 +29,15 @@ struct CaseBuild {
     fem::ModeShapeInput fem;  ///< FE input for `whirl shapes`: the `{from: fem}` settings, else properties only
     bool axial_shortening = true;  ///< as built (the points of the blade elements follow it)
   };
-  Model model;
+  ModelBuilder builder;  ///< the model, where its bodies and DOFs were written, the lookups by name
   std::vector<Beam> beams;
-  std::vector<Where> body_where;
-  std::vector<Where> dof_where;    ///< where the DOF's name was given (or its joint/shape)
   std::vector<bool> dof_angular;   ///< an angle [rad]: `value_deg` and `rate_rpm` allowed
   std::vector<std::shared_ptr<FemPending>> fem;  ///< FE bodies awaiting their geometric stiffness
 
-  /// Appends a DOF; fails at `w` when the name is already used.
+  Model& model() { return builder.model(); }
+  const Model& model() const { return builder.model(); }
+  /// Appends a DOF; fails at `w` when the name is empty or already used (ModelBuilder::addDof).
   void addDof(const std::string& name, DofKind kind, int body, int local, const Where& w, bool angular);
-  /// Index of a DOF by name; fails at `w` listing the DOFs when there is none.
-  int dofIndex(const std::string& name, const Where& w) const;
-  /// Index of a body by name; fails at `w` listing the bodies when there is none.
-  int bodyIndex(const std::string& name, const Where& w) const;
-  /// Index of an input by name; fails at `w` listing the inputs when there is none.
-  int inputIndex(const std::string& name, const Where& w) const;
-  /// Index of a point of body `b` by name; fails at `w` listing its points when there is none.
-  int pointIndex(int b, const std::string& name, const Where& w) const;
 };
 
 /// Applies `--set` overrides to the parsed document (case_overrides.cpp); records them in `source`.

@@ -14,4 +14,6 @@ std::string where(const std::string& file, int line, const std::string& key, con
   return escapeControlCharacters(s + reason);
 }
 
+void Where::fail(const std::string& reason) const { throw InputError(whirl::where(file, line, key, reason + note)); }
+
 }  // namespace whirl

@@ -22,4 +22,14 @@ class ComputeError : public std::runtime_error {
 /// "file:line: key: reason" with the empty parts left out; control characters written as escapes (\n).
 std::string where(const std::string& file, int line, const std::string& key, const std::string& reason);
 
+/// Where a value came from, for messages.
+struct Where {
+  std::string file;
+  int line = 0;      ///< 1-based, 0 = unknown
+  std::string key;   ///< dotted path or column name
+  std::string note;  ///< appended to the reason, e.g. " (value from --set k=v)"
+  /// \throws InputError "file:line: key: reason note".
+  [[noreturn]] void fail(const std::string& reason) const;
+};
+
 }  // namespace whirl

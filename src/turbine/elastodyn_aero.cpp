@@ -26,7 +26,7 @@ AeroBlade bladeElements(Builder& b, const BladeParts& blade, const io::AeroDynBl
   AeroBlade out;
   out.body = blade.body;
   out.pitch_dof = blade.pitch;
-  Body& body = b.model.bodies[blade.body];
+  Body& body = b.model().bodies[blade.body];
   const int n = file.NumBlNds;
   double z = hub_radius;
   Vec3 previous = Vec3::Zero();
@@ -63,7 +63,7 @@ AeroBlade bladeElements(Builder& b, const BladeParts& blade, const io::AeroDynBl
 
 void addAerodynamics(Builder& b, const DrivetrainParts& dt, const RotorParts& rotor, const io::AeroDeckInput& deck) {
   const io::ElastoDynConfiguration& c = b.ed.config;
-  Model& m = b.model;
+  Model& m = b.model();
   AeroModel& am = m.aero;
   for (const io::AirfoilInput& af : deck.airfoils) am.polars.push_back(io::airfoil_polar(af, deck.aerodyn.UseBlCm));
   const double length = c.TipRad - c.HubRad;
@@ -117,9 +117,9 @@ void addGeneratorTorqueLaw(Builder& b, const io::ServoDynInput& servo) {
   if (law.mode != io::TorqueControl::SimpleVariableSpeed)
     throw InputError(servo.source.where("VSContrl", "0 (simple induction generator): whirl models only the simple "
                                                     "variable-speed law (VSContrl = 1) in an aerodynamic model"));
-  GeneratorTorqueLaw& g = b.model.generator;
-  g.speed_output = outputIndex(b.model, "GenSpeed");
-  if (!g.active() || b.model.roles.generator_torque_input < 0)
+  GeneratorTorqueLaw& g = b.model().generator;
+  g.speed_output = outputIndex(b.model(), "GenSpeed");
+  if (!g.active() || b.model().roles.generator_torque_input < 0)
     throw InputError("ServoDyn torque law: the model has no generator torque input or GenSpeed output");
   const double rpm = std::numbers::pi / 30.0;  // rad/s per rpm
   g.rated_speed = law.VS_RtGnSp * rpm;
@@ -127,7 +127,7 @@ void addGeneratorTorqueLaw(Builder& b, const io::ServoDynInput& servo) {
   g.k2 = law.VS_Rgn2K / (rpm * rpm);
   g.slip = law.VS_SlPc / 100.0;
   g.efficiency = law.GenEff / 100.0;
-  for (Output& o : generatorOutputs()) b.model.outputs.push_back(std::move(o));
+  for (Output& o : generatorOutputs()) b.model().outputs.push_back(std::move(o));
 }
 
 }  // namespace whirl::elastodyn

@@ -10,7 +10,7 @@ namespace {
 constexpr double deg = std::numbers::pi / 180.0;
 
 void addInputs(Builder& b, const TowerParts& tower, const DrivetrainParts& dt, const RotorParts& rotor) {
-  Model& m = b.model;
+  Model& m = b.model();
   auto input = [&](const char* name, const char* unit) {
     Input in;
     in.name = name;
@@ -87,7 +87,7 @@ Output pointOutput(std::string name, std::string unit, int order, int body, int 
 }
 
 void addOutputs(Builder& b, const TowerParts& tower, const DrivetrainParts& dt, const RotorParts& rotor) {
-  std::vector<Output>& y = b.model.outputs;
+  std::vector<Output>& y = b.model().outputs;
   const double ratio = b.ed.drivetrain.GBRatio;
   y.push_back(dofOutput("GenSpeed", "rad/s", 1, {{dt.generator_azimuth, ratio}}));
   y.push_back(dofOutput("RotSpeed", "rad/s", 1, {{dt.generator_azimuth, 1.0}, {dt.drivetrain, 1.0}}));

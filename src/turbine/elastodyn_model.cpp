@@ -18,11 +18,6 @@
 namespace whirl {
 namespace elastodyn {
 
-int Builder::addBody(Body body) {
-  model.bodies.push_back(std::move(body));
-  return static_cast<int>(model.bodies.size()) - 1;
-}
-
 int Builder::addDof(const std::string& name, int body, DofKind kind, int local, bool active, double value,
                     double rate) {
   Dof d;
@@ -33,8 +28,7 @@ int Builder::addDof(const std::string& name, int body, DofKind kind, int local, 
   d.frozen = !active;
   d.value = value;
   d.rate = rate;
-  model.dofs.push_back(d);
-  return static_cast<int>(model.dofs.size()) - 1;
+  return builder.addDof(d, Where{ed.source.path().string(), 0, "", ""});
 }
 
 }  // namespace elastodyn
@@ -66,11 +60,11 @@ std::optional<io::ServoDynInput> yawSpring(const io::OpenFastTurbine& t, const E
 Model buildElastoDynModel(const io::OpenFastTurbine& t, const ElastoDynModelOptions& opt) {
   io::require_supported(t);
   const io::ElastoDynInput& ed = t.elastodyn;
-  elastodyn::Builder b{ed, opt, Model{}};
+  elastodyn::Builder b{ed, opt, ModelBuilder{}};
   // The title names the model and titles the Campbell plot.
   requirePrintable(ed.source.title(), ed.source.path().string(), ed.source.title_line(), "title");
-  b.model.name = ed.source.title();
-  b.model.gravity = Vec3(0, 0, -gravityOf(t, opt));
+  b.model().name = ed.source.title();
+  b.model().gravity = Vec3(0, 0, -gravityOf(t, opt));
 
   const elastodyn::PlatformParts platform = t.subdyn ? elastodyn::addSubstructurePlatform(b, *t.subdyn)
                                                      : elastodyn::addPlatform(b);
@@ -86,12 +80,11 @@ Model buildElastoDynModel(const io::OpenFastTurbine& t, const ElastoDynModelOpti
   }
 
   elastodyn::addOffshoreLoads(b, platform, t);
-  if (ed.dof.DrTrDOF) b.model.springs.push_back({dt.drivetrain, ed.drivetrain.DTTorSpr, ed.drivetrain.DTTorDmp, 0.0});
+  if (ed.dof.DrTrDOF) b.model().springs.push_back({dt.drivetrain, ed.drivetrain.DTTorSpr, ed.drivetrain.DTTorDmp, 0.0});
   if (const std::optional<io::ServoDynInput> s = yawSpring(t, opt))
-    b.model.springs.push_back({dt.yaw, s->YawSpr, s->YawDamp, s->YawNeut * deg});
+    b.model().springs.push_back({dt.yaw, s->YawSpr, s->YawDamp, s->YawNeut * deg});
 
-  finalize(b.model);
-  return std::move(b.model);
+  return std::move(b.builder).finish();
 }
 
 io::OpenFastTurbine readElastoDynTurbine(const std::string& path, const std::vector<std::string>& overrides,

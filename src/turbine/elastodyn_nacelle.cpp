@@ -65,7 +65,7 @@ DrivetrainParts addNacelleAndDrivetrain(Builder& b, const TowerParts& tower) {
   // Azimuth 0 = blade 1 up (ElastoDyn's internal azimuth is this minus 90°); AzimB1Up is I/O only.
   out.generator_azimuth = b.addDof("generator azimuth", out.shaft, DofKind::Joint, 0, ed.dof.GenDOF,
                                    (ed.init.Azimuth - c.AzimB1Up) * deg, ed.init.RotSpeed * std::numbers::pi / 30.0);
-  b.model.dofs[out.generator_azimuth].rotating = true;
+  b.model().dofs[out.generator_azimuth].rotating = true;
   // Generator on the high-speed shaft, geared to the generator azimuth at GBRatio: its kinetic energy
   // ½ GenIner (ω_c + GBRatio θ̇)² is ElastoDyn's, nacelle roll and gyroscopic terms included.
   Body gen;

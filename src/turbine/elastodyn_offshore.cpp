@@ -13,7 +13,7 @@
 namespace whirl::elastodyn {
 namespace {
 
-double gravityOf(const Builder& b) { return -b.model.gravity(2); }
+double gravityOf(const Builder& b) { return -b.model().gravity(2); }
 
 // Water density and depth: HydroDyn (v2, v3) or the .fst (v3.5+).
 double water(const io::OpenFastTurbine& t, std::optional<double> hd, std::optional<double> fst, const char* key) {
@@ -53,9 +53,9 @@ void addHydroDyn(Builder& b, const PlatformParts& p, const io::OpenFastTurbine& 
     const double B = rho * g * hd.PtfmVol0;
     f0 += (Eigen::Matrix<double, 6, 1>() << 0, 0, B, B * hd.PtfmCOByt, -B * hd.PtfmCOBxt, 0).finished();
   }
-  b.model.body_matrices.push_back(bm);
+  b.model().body_matrices.push_back(bm);
   for (int k = 0; k < 6; ++k)
-    if (f0(k) != 0.0) b.model.dof_loads.push_back({p.dofs[k], f0(k), -1});
+    if (f0(k) != 0.0) b.model().dof_loads.push_back({p.dofs[k], f0(k), -1});
 }
 
 // MAP++ lines, each checked at the undisplaced platform so that a line that cannot reach its anchor
@@ -71,7 +71,7 @@ void addMooring(Builder& b, const PlatformParts& p, const io::OpenFastTurbine& t
     } catch (const ComputeError& e) {
       throw InputError(e.what());
     }
-    b.model.mooring.push_back(ln);
+    b.model().mooring.push_back(ln);
   }
 }
 

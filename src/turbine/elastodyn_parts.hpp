@@ -5,6 +5,7 @@
 /// indices are those of the unfinalized model; finalize() renumbers them.
 #include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "src/io/aero_deck.hpp"
@@ -12,21 +13,24 @@
 #include "src/io/openfast_turbine.hpp"
 #include "src/io/servodyn_input.hpp"
 #include "src/io/subdyn_input.hpp"
+#include "src/model/model_builder.hpp"
 #include "src/turbine/elastodyn_blade_shapes.hpp"
 #include "src/turbine/elastodyn_model.hpp"
 
 namespace whirl::elastodyn {
 
-/// The model under construction and where its data come from.
+/// The model under construction (ModelBuilder) and the ElastoDyn deck and options it comes from.
 struct Builder {
   const io::ElastoDynInput& ed;
   const ElastoDynModelOptions& opt;
-  Model model;
+  ModelBuilder builder;
 
+  Model& model() { return builder.model(); }
+  const Model& model() const { return builder.model(); }
   /// Appends a body; returns its index.
-  int addBody(Body body);
+  int addBody(Body body) { return builder.addBody(std::move(body)); }
   /// Appends a DOF of `body` (joint coordinate or elastic coordinate `local`); frozen unless `active`.
-  /// Returns its index in model.dofs.
+  /// Returns its index in model().dofs; a repeated name is an error naming the ElastoDyn file.
   int addDof(const std::string& name, int body, DofKind kind, int local, bool active, double value = 0.0,
              double rate = 0.0);
   /// "ElastoDyn file:line: key: reason".

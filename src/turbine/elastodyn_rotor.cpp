@@ -74,7 +74,7 @@ RotorParts addBlades(Builder& b, const RotorHub& hub) {
     std::array<int, 3> dofs{};
     for (int s = 0; s < 3; ++s) {
       const int d = b.addDof(name + " " + beam.shapes[s]->name, body, DofKind::Elastic, s, on[s]);
-      b.model.dofs[d].blade = k;  // rotating frame, blade k: multiblade coordinates
+      b.model().dofs[d].blade = k;  // rotating frame, blade k: multiblade coordinates
       dofs[s] = d;
     }
     out.shape_dofs.push_back(dofs);

@@ -93,7 +93,7 @@ RotorHub addTeeteringHub(Builder& b, const DrivetrainParts& dt) {
         piece(dof, *t.TeetHStP * deg, ref, *t.TeetHSSp, 0.0, "teeter hard-stop spring (TeetHSSp)", "TeetHStP"),
         piece(dof, *t.TeetDmpP * deg, ref, 0.0, *t.TeetDmp, "teeter damper (TeetDmp)", "TeetDmpP")};
     for (const DofSpring& s : laws)
-      if (s.k != 0.0 || s.c != 0.0 || !s.law.empty()) b.model.springs.push_back(s);
+      if (s.k != 0.0 || s.c != 0.0 || !s.law.empty()) b.model().springs.push_back(s);
   }
   return {body, Vec3(-c.UndSling, 0, 0), c.Delta3 * deg, dof};
 }

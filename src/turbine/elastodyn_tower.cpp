@@ -64,7 +64,7 @@ TowerParts addTower(Builder& b, const PlatformParts& platform) {
   const BeamProperties& p = beam.props;
   const double L = p.length, base = beam.base;
   // Or (shapes=fem) the FE modes of the same properties with the rotor-nacelle top mass and gravity.
-  if (b.opt.fem_shapes) beam.shapes = elastoDynTowerFemShapes(elastoDynTowerModeInput(ed, p, -b.model.gravity(2)));
+  if (b.opt.fem_shapes) beam.shapes = elastoDynTowerFemShapes(elastoDynTowerModeInput(ed, p, -b.model().gravity(2)));
   const std::vector<ShapePtr>& shapes = beam.shapes;
   BeamOptions o;
   o.integration = {BeamIntegration::Midpoint, ed.TwrNodes};
