@@ -2,11 +2,11 @@
 // WHIRL_FUZZ_READER): the bytes are the file and only that reader (and what turns its result into
 // model data) runs: 30–800 inputs/s under ASan against the 1–3 of fuzz_aerodyn & co.,
 // which build and linearize the whole NREL 5MW aeroelastic model behind each input.
-//   1 fuzz_read_aerodyn     read_aerodyn (AeroDyn v15 main file; named files are not opened)
-//   2 fuzz_read_ad_blade    read_aerodyn_blade
-//   3 fuzz_read_airfoil     read_airfoil, then airfoil_polar (the polar AeroDyn uses)
-//   4 fuzz_read_inflowwind  read_inflowwind
-//   5 fuzz_read_servodyn    read_servodyn, then generator_torque_law
+//   1 fuzz_read_aerodyn     readAeroDyn (AeroDyn v15 main file; named files are not opened)
+//   2 fuzz_read_ad_blade    readAeroDynBlade
+//   3 fuzz_read_airfoil     readAirfoil, then airfoilPolar (the polar AeroDyn uses)
+//   4 fuzz_read_inflowwind  readInflowWind
+//   5 fuzz_read_servodyn    readServoDyn, then generatorTorqueLaw
 #include "fuzz/fuzz_support.hpp"
 #include "src/io/aerodyn_blade_input.hpp"
 #include "src/io/aerodyn_input.hpp"
@@ -19,15 +19,15 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   whirl::fuzz::expectOnlyInputErrors([&] {
     namespace io = whirl::io;
 #if WHIRL_FUZZ_READER == 1
-    (void)io::read_aerodyn(path);
+    (void)io::readAeroDyn(path);
 #elif WHIRL_FUZZ_READER == 2
-    (void)io::read_aerodyn_blade(path);
+    (void)io::readAeroDynBlade(path);
 #elif WHIRL_FUZZ_READER == 3
-    (void)io::airfoil_polar(io::read_airfoil(path), true);
+    (void)io::airfoilPolar(io::readAirfoil(path), true);
 #elif WHIRL_FUZZ_READER == 4
-    (void)io::read_inflowwind(path);
+    (void)io::readInflowWind(path);
 #elif WHIRL_FUZZ_READER == 5
-    (void)io::generator_torque_law(io::read_servodyn(path));
+    (void)io::generatorTorqueLaw(io::readServoDyn(path));
 #else
 #error "WHIRL_FUZZ_READER must be 1 to 5"
 #endif

@@ -17,15 +17,15 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       }
     };
     for (const auto& e : f.entries()) {
-      quietly([&] { (void)f.get_double(e.key); });
-      quietly([&] { (void)f.get_int(e.key); });
-      quietly([&] { (void)f.get_bool(e.key); });
-      quietly([&] { (void)f.get_doubles(e.key); });
-      quietly([&] { (void)f.get_string(e.key); });
-      quietly([&] { (void)f.get_double_or_default(e.key); });
+      quietly([&] { (void)f.getDouble(e.key); });
+      quietly([&] { (void)f.getInt(e.key); });
+      quietly([&] { (void)f.getBool(e.key); });
+      quietly([&] { (void)f.getDoubles(e.key); });
+      quietly([&] { (void)f.getString(e.key); });
+      quietly([&] { (void)f.getDoubleOrDefault(e.key); });
     }
     for (const auto& t : f.tables())
-      for (const auto& c : t.columns) (void)f.find_table(c);
+      for (const auto& c : t.columns) (void)f.findTable(c);
   });
   return 0;
 }

@@ -1,5 +1,5 @@
 // libFuzzer harness for the SubDyn reader: the bytes are a SubDyn input file, read as `whirl modes`
-// reads a deck's SubFile (io::read_subdyn) and turned into the substructure body (SubDyn's
+// reads a deck's SubFile (io::readSubDyn) and turned into the substructure body (SubDyn's
 // discretization, the transition-piece tie, the Guyan or Craig–Bampton reduction) as the turbine
 // builder does, with the transition piece at the OC3 monopile's platform reference point.
 #include "fuzz/fuzz_support.hpp"
@@ -9,7 +9,7 @@
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string path = whirl::fuzz::writeInput("fuzz_SubDyn.dat", data, size);
   whirl::fuzz::expectOnlyInputErrors([&] {
-    const whirl::io::SubDynInput sd = whirl::io::read_subdyn(path);
+    const whirl::io::SubDynInput sd = whirl::io::readSubDyn(path);
     whirl::buildSubDynBody(sd, whirl::Vec3(0, 0, 10));
   });
   return 0;

@@ -8,21 +8,21 @@
 namespace whirl::io {
 namespace {
 
-std::vector<AirfoilInput> read_airfoils(const AeroDynInput& ad) {
+std::vector<AirfoilInput> readAirfoils(const AeroDynInput& ad) {
   std::vector<AirfoilInput> out;
   const std::string file = ad.source.path().string();
   for (std::size_t i = 0; i < ad.AFNames.size(); ++i) {
     const std::filesystem::path& p = ad.AFNames[i];
     std::error_code ec;
     if (!std::filesystem::is_regular_file(p, ec))
-      throw InputError(where(file, ad.AFNames_lines[i], indexed_key("AFNames", static_cast<int>(i) + 1),
+      throw InputError(where(file, ad.AFNames_lines[i], indexedKey("AFNames", static_cast<int>(i) + 1),
                              "file not found: " + p.string()));
-    out.push_back(read_airfoil(p, ad.InCol));
+    out.push_back(readAirfoil(p, ad.InCol));
   }
   return out;
 }
 
-void check_airfoil_ids(const AeroDynInput& ad, const AeroDynBladeInput& blade) {
+void checkAirfoilIds(const AeroDynInput& ad, const AeroDynBladeInput& blade) {
   const int n = static_cast<int>(ad.AFNames.size());
   for (std::size_t r = 0; r < blade.BlAFID.size(); ++r)
     if (blade.BlAFID[r] > n)
@@ -35,25 +35,25 @@ void check_airfoil_ids(const AeroDynInput& ad, const AeroDynBladeInput& blade) {
 }  // namespace
 
 AeroDeckInput readAeroDeck(const FstInput& fst, OverrideSet* overrides) {
-  throw_if_any(unsupported_aero_options(fst));
+  throwIfAny(unsupportedAeroOptions(fst));
   const OpenFastFile& f = fst.source;
   const char* aero_key = f.has("AeroFile") || !f.has("ADFile") ? "AeroFile" : "ADFile";
-  const std::filesystem::path aero_file = f.get_existing_path(aero_key);
-  const std::filesystem::path inflow_file = f.get_existing_path("InflowFile");
+  const std::filesystem::path aero_file = f.getExistingPath(aero_key);
+  const std::filesystem::path inflow_file = f.getExistingPath("InflowFile");
 
   AeroDeckInput deck;
-  deck.aerodyn = read_aerodyn(aero_file, aerodyn_environment(fst), overrides);
-  require_supported(deck.aerodyn);
-  deck.inflow = read_inflowwind(inflow_file, overrides);
-  require_supported(deck.inflow);
+  deck.aerodyn = readAeroDyn(aero_file, aerodynEnvironment(fst), overrides);
+  requireSupported(deck.aerodyn);
+  deck.inflow = readInflowWind(inflow_file, overrides);
+  requireSupported(deck.inflow);
 
   const AeroDynInput& ad = deck.aerodyn;
   for (std::size_t k = 0; k < ad.ADBlFile.size(); ++k) {
-    const std::filesystem::path p = ad.source.get_existing_path(indexed_key("ADBlFile", static_cast<int>(k) + 1));
-    deck.blades.push_back(read_aerodyn_blade(p, overrides));
-    check_airfoil_ids(ad, deck.blades.back());
+    const std::filesystem::path p = ad.source.getExistingPath(indexedKey("ADBlFile", static_cast<int>(k) + 1));
+    deck.blades.push_back(readAeroDynBlade(p, overrides));
+    checkAirfoilIds(ad, deck.blades.back());
   }
-  deck.airfoils = read_airfoils(ad);
+  deck.airfoils = readAirfoils(ad);
   return deck;
 }
 

@@ -6,7 +6,7 @@
 namespace whirl::io {
 namespace {
 
-std::string wake_model_name(int m) {
+std::string wakeModelName(int m) {
   switch (m) {
     case 2: return "dynamic BEMT";
     case 3: return "OLAF free-vortex wake";
@@ -16,64 +16,65 @@ std::string wake_model_name(int m) {
 
 }  // namespace
 
-std::vector<std::string> unsupported_aero_options(const FstInput& fst) {
+std::vector<std::string> unsupportedAeroOptions(const FstInput& fst) {
   Refusals r(fst.source);
   const std::string aero = "CompAero = 2 (AeroDyn v15)";
-  r.add_if(fst.CompAero == 0, "CompAero", "aerodynamics are off in this deck", aero);
-  r.add_if(fst.CompAero == 1, "CompAero", "AeroDyn v14 (OpenFAST v3) or AeroDisk (v4+)", aero);
-  r.add_if(fst.CompAero == 3, "CompAero", "external loads (ExtLoads)", aero);
-  r.add_if(fst.CompAero < 0 || fst.CompAero > 3, "CompAero", "unknown aerodynamics module", aero);
+  r.addIf(fst.CompAero == 0, "CompAero", "aerodynamics are off in this deck", aero);
+  r.addIf(fst.CompAero == 1, "CompAero", "AeroDyn v14 (OpenFAST v3) or AeroDisk (v4+)", aero);
+  r.addIf(fst.CompAero == 3, "CompAero", "external loads (ExtLoads)", aero);
+  r.addIf(fst.CompAero < 0 || fst.CompAero > 3, "CompAero", "unknown aerodynamics module", aero);
   const std::string inflow = "CompInflow = 1 (InflowWind)";
-  r.add_if(fst.CompInflow == 0, "CompInflow", "still air", inflow);
-  r.add_if(fst.CompInflow == 2, "CompInflow", "inflow from an external code", inflow);
-  r.add_if(fst.CompInflow < 0 || fst.CompInflow > 2, "CompInflow", "unknown inflow module", inflow);
+  r.addIf(fst.CompInflow == 0, "CompInflow", "still air", inflow);
+  r.addIf(fst.CompInflow == 2, "CompInflow", "inflow from an external code", inflow);
+  r.addIf(fst.CompInflow < 0 || fst.CompInflow > 2, "CompInflow", "unknown inflow module", inflow);
   return r.take();
 }
 
-std::vector<std::string> unsupported_options(const AeroDynInput& ad) {
+std::vector<std::string> unsupportedOptions(const AeroDynInput& ad) {
   Refusals r(ad.source);
   const OpenFastFile& f = ad.source;
   const bool legacy_dbemt = ad.dbemt_key == "WakeMod";  // WakeMod = 2: reported on WakeMod itself
-  r.add_if(ad.Wake_Mod != 0 && ad.Wake_Mod != 1, ad.wake_key, wake_model_name(ad.Wake_Mod),
-           ad.wake_key + " = 0 (no induction) or 1 (BEMT)");
-  r.add_if(legacy_dbemt, "WakeMod", "dynamic BEMT", "WakeMod = 0 (no induction) or 1 (BEMT)");
-  r.add_if(!legacy_dbemt && ad.Wake_Mod == 1 && ad.DBEMT_Mod > 0, ad.dbemt_key, "dynamic BEMT",
-           "DBEMT_Mod = 0 (quasi-steady BEMT) or -1 (frozen wake)");
+  r.addIf(ad.Wake_Mod != 0 && ad.Wake_Mod != 1, ad.wake_key, wakeModelName(ad.Wake_Mod),
+          ad.wake_key + " = 0 (no induction) or 1 (BEMT)");
+  r.addIf(legacy_dbemt, "WakeMod", "dynamic BEMT", "WakeMod = 0 (no induction) or 1 (BEMT)");
+  r.addIf(!legacy_dbemt && ad.Wake_Mod == 1 && ad.DBEMT_Mod > 0, ad.dbemt_key, "dynamic BEMT",
+          "DBEMT_Mod = 0 (quasi-steady BEMT) or -1 (frozen wake)");
   if (ad.ua_key == "AFAeroMod")
-    r.add_if(ad.unsteady_aero(), "AFAeroMod", "Beddoes-Leishman unsteady airfoil aerodynamics",
-             "AFAeroMod = 1 (steady airfoil tables)");
+    r.addIf(ad.unsteadyAero(), "AFAeroMod", "Beddoes-Leishman unsteady airfoil aerodynamics",
+            "AFAeroMod = 1 (steady airfoil tables)");
   else
-    r.add_if(ad.unsteady_aero(), ad.ua_key, "unsteady airfoil aerodynamics", ad.ua_key + " = 0 (quasi-steady airfoil tables)");
-  r.add_if(ad.TwrPotent != 0, "TwrPotent", "tower potential flow", "TwrPotent = 0 (no tower influence)");
+    r.addIf(ad.unsteadyAero(), ad.ua_key, "unsteady airfoil aerodynamics",
+            ad.ua_key + " = 0 (quasi-steady airfoil tables)");
+  r.addIf(ad.TwrPotent != 0, "TwrPotent", "tower potential flow", "TwrPotent = 0 (no tower influence)");
   const OpenFastEntry* shadow = f.find("TwrShadow");
-  const bool shadow_is_flag = shadow && !parse_fortran_double(shadow->raw);  // AeroDyn v15.0x: True/False
-  r.add_if(ad.TwrShadow != 0, "TwrShadow", "tower shadow",
-           shadow_is_flag ? "TwrShadow = False (no tower shadow)" : "TwrShadow = 0 (no tower shadow)");
-  r.add_if(ad.TwrAero, "TwrAero", "tower drag loads", "TwrAero = False");
-  r.add_if(ad.Buoyancy, "Buoyancy", "buoyancy", "Buoyancy = False");
-  r.add_if(ad.CavitCheck, "CavitCheck", "cavitation check", "CavitCheck = False");
-  r.add_if(ad.CompAA, "CompAA", "aeroacoustics", "CompAA = False");
-  r.add_if(ad.NacelleDrag, "NacelleDrag", "nacelle drag", "NacelleDrag = False");
-  r.add_if(ad.SectAvg, "SectAvg", "sector-averaged inflow", "SectAvg = False");
-  r.add_if(ad.TFinAero, "TFinAero", "tail-fin aerodynamics", "TFinAero = False");
-  r.add_if(ad.AFTabMod != 1, "AFTabMod", "interpolation between airfoil tables",
-           "AFTabMod = 1 (the first table of each airfoil file)");
-  r.add_if(ad.skew == SkewModel::Coupled, "SkewMod", "the coupled skewed-wake model (dropped in OpenFAST v4)",
-           "SkewMod = 0, 1 or 2");
+  const bool shadow_is_flag = shadow && !parseFortranDouble(shadow->raw);  // AeroDyn v15.0x: True/False
+  r.addIf(ad.TwrShadow != 0, "TwrShadow", "tower shadow",
+          shadow_is_flag ? "TwrShadow = False (no tower shadow)" : "TwrShadow = 0 (no tower shadow)");
+  r.addIf(ad.TwrAero, "TwrAero", "tower drag loads", "TwrAero = False");
+  r.addIf(ad.Buoyancy, "Buoyancy", "buoyancy", "Buoyancy = False");
+  r.addIf(ad.CavitCheck, "CavitCheck", "cavitation check", "CavitCheck = False");
+  r.addIf(ad.CompAA, "CompAA", "aeroacoustics", "CompAA = False");
+  r.addIf(ad.NacelleDrag, "NacelleDrag", "nacelle drag", "NacelleDrag = False");
+  r.addIf(ad.SectAvg, "SectAvg", "sector-averaged inflow", "SectAvg = False");
+  r.addIf(ad.TFinAero, "TFinAero", "tail-fin aerodynamics", "TFinAero = False");
+  r.addIf(ad.AFTabMod != 1, "AFTabMod", "interpolation between airfoil tables",
+          "AFTabMod = 1 (the first table of each airfoil file)");
+  r.addIf(ad.skew == SkewModel::Coupled, "SkewMod", "the coupled skewed-wake model (dropped in OpenFAST v4)",
+          "SkewMod = 0, 1 or 2");
   return r.take();
 }
 
-std::vector<std::string> unsupported_options(const InflowWindInput& wind) {
+std::vector<std::string> unsupportedOptions(const InflowWindInput& wind) {
   Refusals r(wind.source);
   static const char* names[] = {"", "steady", "uniform wind file", "TurbSim full field", "Bladed-style full field",
                                 "HAWC full field", "user-defined wind", "native Bladed full field"};
   const bool known = wind.WindType >= 1 && wind.WindType <= 7;
-  r.add_if(wind.WindType != 1, "WindType", known ? std::string(names[wind.WindType]) + " wind" : "unknown wind type",
-           "WindType = 1 (steady wind)");
+  r.addIf(wind.WindType != 1, "WindType", known ? std::string(names[wind.WindType]) + " wind" : "unknown wind type",
+          "WindType = 1 (steady wind)");
   return r.take();
 }
 
-void require_supported(const AeroDynInput& ad) { throw_if_any(unsupported_options(ad)); }
-void require_supported(const InflowWindInput& wind) { throw_if_any(unsupported_options(wind)); }
+void requireSupported(const AeroDynInput& ad) { throwIfAny(unsupportedOptions(ad)); }
+void requireSupported(const InflowWindInput& wind) { throwIfAny(unsupportedOptions(wind)); }
 
 }  // namespace whirl::io

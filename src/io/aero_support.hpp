@@ -16,20 +16,20 @@ namespace whirl::io {
 
 /// The .fst's aero switches: CompAero other than 2 (1 = AeroDyn14 / AeroDisk, 3 = ExtLoads, 0 = none),
 /// CompInflow other than 1 (0 = still air, 2 = external inflow).
-std::vector<std::string> unsupported_aero_options(const FstInput& fst);
+std::vector<std::string> unsupportedAeroOptions(const FstInput& fst);
 
 /// AeroDyn options whirl does not model: a wake model other than none/BEMT (legacy WakeMod = 2 DBEMT,
 /// 3 OLAF), dynamic BEMT (DBEMT_Mod > 0; −1 frozen and 0 quasi-steady are fine), unsteady airfoil
 /// aerodynamics (AFAeroMod = 2, UA_Mod > 0), tower potential flow, tower shadow, tower loads, buoyancy,
 /// cavitation check, aeroacoustics, nacelle drag, sector averaging, tail fin, AFTabMod != 1, and the
 /// legacy "coupled" SkewMod = 3.
-std::vector<std::string> unsupported_options(const AeroDynInput& ad);
+std::vector<std::string> unsupportedOptions(const AeroDynInput& ad);
 
 /// InflowWind: WindType other than 1 (steady wind).
-std::vector<std::string> unsupported_options(const InflowWindInput& wind);
+std::vector<std::string> unsupportedOptions(const InflowWindInput& wind);
 
 /// Throws InputError listing every refusal ("; "-separated) when there is any.
-void require_supported(const AeroDynInput& ad);
-void require_supported(const InflowWindInput& wind);
+void requireSupported(const AeroDynInput& ad);
+void requireSupported(const InflowWindInput& wind);
 
 }  // namespace whirl::io

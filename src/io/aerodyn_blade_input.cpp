@@ -9,17 +9,17 @@
 
 namespace whirl::io {
 
-AeroDynBladeInput read_aerodyn_blade(const std::filesystem::path& file, OverrideSet* overrides) {
+AeroDynBladeInput readAeroDynBlade(const std::filesystem::path& file, OverrideSet* overrides) {
   AeroDynBladeInput b;
   b.source = OpenFastFile::read(file);
-  if (overrides) overrides->apply_to(b.source);
+  if (overrides) overrides->applyTo(b.source);
   const OpenFastFile& f = b.source;
 
-  b.NumBlNds = f.get_int("NumBlNds");
+  b.NumBlNds = f.getInt("NumBlNds");
   if (b.NumBlNds < 2)
     throw InputError(f.where("NumBlNds", "must be at least 2 (is " + std::to_string(b.NumBlNds) + ")"));
-  const DistributedTable t = read_distributed_table(f, "NumBlNds", "BlSpn",
-                                                    {"BlSpn", "BlCrvAC", "BlSwpAC", "BlTwist", "BlChord", "BlAFID"});
+  const DistributedTable t = readDistributedTable(f, "NumBlNds", "BlSpn",
+                                                  {"BlSpn", "BlCrvAC", "BlSwpAC", "BlTwist", "BlChord", "BlAFID"});
   b.row_lines = t.row_lines;
   b.BlSpn = t.column("BlSpn");
   b.BlCrvAC = t.column("BlCrvAC");
@@ -31,18 +31,19 @@ AeroDynBladeInput read_aerodyn_blade(const std::filesystem::path& file, Override
 
   const std::string name = f.path().string();
   if (b.BlSpn.front() != 0.0)
-    throw InputError(where(name, t.row_lines.front(), "BlSpn", "must start at 0 (is " + number_text(b.BlSpn.front()) + ")"));
+    throw InputError(
+        where(name, t.row_lines.front(), "BlSpn", "must start at 0 (is " + numberText(b.BlSpn.front()) + ")"));
   for (std::size_t r = 1; r < t.rows(); ++r)
     if (!(b.BlSpn[r] > b.BlSpn[r - 1]))
       throw InputError(where(name, t.row_lines[r], "BlSpn",
-                             "must increase from node to node (" + number_text(b.BlSpn[r]) + " after " +
-                                 number_text(b.BlSpn[r - 1]) + ")"));
-  require_positive_column(t, "BlChord");
+                             "must increase from node to node (" + numberText(b.BlSpn[r]) + " after " +
+                                 numberText(b.BlSpn[r - 1]) + ")"));
+  requirePositiveColumn(t, "BlChord");
   for (std::size_t r = 0; r < t.rows(); ++r) {
     const double id = t.column("BlAFID")[r];
     if (id != std::floor(id) || id < 1.0 || id > 1.0e6)
       throw InputError(where(name, t.row_lines[r], "BlAFID",
-                             "must be a whole number >= 1 (an index into AFNames), is " + number_text(id)));
+                             "must be a whole number >= 1 (an index into AFNames), is " + numberText(id)));
     b.BlAFID.push_back(static_cast<int>(id));
   }
   return b;

@@ -35,6 +35,6 @@ struct AeroDynBladeInput {
 /// required columns present (BlSpn, BlCrvAC, BlSwpAC, BlTwist, BlChord, BlAFID), finite numbers, BlSpn
 /// starting at 0 and strictly increasing, BlChord > 0, BlAFID a whole number >= 1 (its upper bound,
 /// NumAFfiles, is checked by readAeroDeck). Throws InputError "file:line: key: reason".
-AeroDynBladeInput read_aerodyn_blade(const std::filesystem::path& file, OverrideSet* overrides = nullptr);
+AeroDynBladeInput readAeroDynBlade(const std::filesystem::path& file, OverrideSet* overrides = nullptr);
 
 }  // namespace whirl::io

@@ -58,7 +58,7 @@ struct AeroDynEnvironment {
 
 /// The environment of a .fst: its AirDens, KinVisc, SpdSound, Patm, Pvap where it has them (OpenFAST
 /// v3+), OpenFAST's defaults otherwise.
-AeroDynEnvironment aerodyn_environment(const FstInput& fst);
+AeroDynEnvironment aerodynEnvironment(const FstInput& fst);
 
 /// An AeroDyn v15 main file, normalized.
 struct AeroDynInput {
@@ -82,7 +82,7 @@ struct AeroDynInput {
   /// (legacy AFAeroMod = 2 reads as the file's UAMod).
   int UA_Mod = 0;
   std::string ua_key = "AFAeroMod";  ///< key that decided it ("AFAeroMod" or "UA_Mod")
-  bool unsteady_aero() const { return UA_Mod > 0; }
+  bool unsteadyAero() const { return UA_Mod > 0; }
 
   // ---- other physics switches (0 / false = off) ----
   int TwrPotent = 0;        ///< tower potential flow {0 none, 1 baseline, 2 Bak correction}
@@ -138,7 +138,7 @@ struct AeroDynInput {
 /// names, InCol_Alfa/Cl/Cd >= 1 and InCol_Cm/Cpmin >= 0, known Skew_Mod/SkewMod values, not both a key and
 /// its legacy spelling, the tower table complete. Files named are not opened (see readAeroDeck).
 /// Throws InputError "file:line: key: reason".
-AeroDynInput read_aerodyn(const std::filesystem::path& file, const AeroDynEnvironment& env = {},
-                          OverrideSet* overrides = nullptr);
+AeroDynInput readAeroDyn(const std::filesystem::path& file, const AeroDynEnvironment& env = {},
+                         OverrideSet* overrides = nullptr);
 
 }  // namespace whirl::io

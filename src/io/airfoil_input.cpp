@@ -15,28 +15,26 @@ namespace {
 /// The file's text for OpenFastFile::parse: comment lines and lines outside [from, to] blanked (line
 /// numbers unchanged). With `title`, line 1 becomes a placeholder title so that the tokenizer does not
 /// take the first value line for the file's title.
-std::string keep_lines(const OpenFastLines& lines, int from, int to, bool title) {
+std::string keepLines(const OpenFastLines& lines, int from, int to, bool title) {
   std::string out;
   for (int n = 1; n <= lines.count(); ++n) {
     const std::string& l = lines.line(n);
-    if (n == 1 && title && (is_comment_line(l) || is_blank_line(l)))
-      out += "AirfoilInfo";
-    else if (n >= from && n <= to && !is_comment_line(l))
-      out += l;
+    if (n == 1 && title && (isCommentLine(l) || isBlankLine(l))) out += "AirfoilInfo";
+    else if (n >= from && n <= to && !isCommentLine(l)) out += l;
     out += '\n';
   }
   return out;
 }
 
 /// Entry `key` (case-insensitive) after line `after`, first in file order; nullptr when none.
-const OpenFastEntry* entry_after(const OpenFastFile& f, std::string_view key, int after) {
-  const std::string k = to_lower(key);
+const OpenFastEntry* entryAfter(const OpenFastFile& f, std::string_view key, int after) {
+  const std::string k = toLower(key);
   for (const OpenFastEntry& e : f.entries())
-    if (e.line > after && to_lower(e.key) == k) return &e;
+    if (e.line > after && toLower(e.key) == k) return &e;
   return nullptr;
 }
 
-void read_ua(const OpenFastFile& t, AirfoilUAData& ua) {
+void readUa(const OpenFastFile& t, AirfoilUAData& ua) {
   struct Field {
     const char* key;
     std::optional<double> AirfoilUAData::*member;
@@ -62,22 +60,22 @@ void read_ua(const OpenFastFile& t, AirfoilUAData& ua) {
       {"UACutout_delta", &AirfoilUAData::UACutout_delta}, {"filtCutOff", &AirfoilUAData::filtCutOff},
   };
   for (const Field& fd : fields)
-    if (t.has(fd.key)) ua.*fd.member = t.get_double_or_default(fd.key);
+    if (t.has(fd.key)) ua.*fd.member = t.getDoubleOrDefault(fd.key);
 }
 
 /// Reads the NumAlf rows after line `num_alf_line` into `tab`.
-void read_rows(const OpenFastLines& lines, const OpenFastFile& t, int num_alf, int num_alf_line,
-               const AirfoilColumns& col, AirfoilTable& tab) {
+void readRows(const OpenFastLines& lines, const OpenFastFile& t, int num_alf, int num_alf_line,
+              const AirfoilColumns& col, AirfoilTable& tab) {
   const std::string file = lines.path().string();
   const int needed = std::max({col.alpha, col.cl, col.cd, col.cm});
   int at = num_alf_line;
   for (int r = 0; r < num_alf; ++r) {
-    const std::optional<int> next = lines.next_content_line(at);
+    const std::optional<int> next = lines.nextContentLine(at);
     const std::string got = "table has " + std::to_string(r) + " rows, " + std::to_string(num_alf) + " expected: ";
     if (!next)
       throw InputError(t.where("NumAlf", got + "the file ends at line " + std::to_string(lines.count()) +
                                              " (truncated table?)"));
-    const std::optional<std::vector<double>> row = parse_number_row(lines.line(*next));
+    const std::optional<std::vector<double>> row = parseNumberRow(lines.line(*next));
     if (!row)
       throw InputError(t.where("NumAlf", got + "line " + std::to_string(*next) +
                                              " is not a row of numbers (truncated table?)"));
@@ -104,31 +102,31 @@ void read_rows(const OpenFastLines& lines, const OpenFastFile& t, int num_alf, i
     const std::size_t n = tab.alpha_deg.size();
     if (n >= 2 && !(tab.alpha_deg[n - 1] > tab.alpha_deg[n - 2]))
       throw InputError(whirl::where(file, *next, "Alpha",
-                                    "must increase from row to row (" + number_text(tab.alpha_deg[n - 1]) +
-                                        " after " + number_text(tab.alpha_deg[n - 2]) + ")"));
+                                    "must increase from row to row (" + numberText(tab.alpha_deg[n - 1]) + " after " +
+                                        numberText(tab.alpha_deg[n - 2]) + ")"));
     tab.row_lines.push_back(*next);
     at = *next;
   }
   tab.first_row_line = tab.row_lines.empty() ? 0 : tab.row_lines.front();
 }
 
-AirfoilTable read_table(const OpenFastLines& lines, int re_line, int num_alf_line, const AirfoilColumns& col) {
-  const OpenFastFile t = OpenFastFile::parse(keep_lines(lines, re_line, num_alf_line, false), lines.path());
+AirfoilTable readTable(const OpenFastLines& lines, int re_line, int num_alf_line, const AirfoilColumns& col) {
+  const OpenFastFile t = OpenFastFile::parse(keepLines(lines, re_line, num_alf_line, false), lines.path());
   AirfoilTable tab;
   tab.re_line = re_line;
   tab.num_alf_line = num_alf_line;
-  tab.re = t.get_double("Re");
-  require_positive(t, "Re", tab.re);
-  tab.user_prop = t.has("UserProp") || !t.has("Ctrl") ? t.get_double("UserProp") : t.get_double("Ctrl");
-  tab.ua.included = t.find_bool("InclUAdata").value_or(false);
-  if (tab.ua.included) read_ua(t, tab.ua);
-  const int num_alf = t.get_int("NumAlf");
+  tab.re = t.getDouble("Re");
+  requirePositive(t, "Re", tab.re);
+  tab.user_prop = t.has("UserProp") || !t.has("Ctrl") ? t.getDouble("UserProp") : t.getDouble("Ctrl");
+  tab.ua.included = t.findBool("InclUAdata").value_or(false);
+  if (tab.ua.included) readUa(t, tab.ua);
+  const int num_alf = t.getInt("NumAlf");
   if (num_alf < 1) throw InputError(t.where("NumAlf", "must be at least 1 (is " + std::to_string(num_alf) + ")"));
-  read_rows(lines, t, num_alf, num_alf_line, col, tab);
+  readRows(lines, t, num_alf, num_alf_line, col, tab);
   return tab;
 }
 
-void check_columns(const std::filesystem::path& file, const AirfoilColumns& c) {
+void checkColumns(const std::filesystem::path& file, const AirfoilColumns& c) {
   if (c.alpha < 1 || c.cl < 1 || c.cd < 1 || c.cm < 0)
     throw InputError(whirl::where(file.string(), 0, "InCol_*",
                                   "airfoil table columns must be >= 1 (InCol_Cm >= 0), are " + std::to_string(c.alpha) +
@@ -138,58 +136,58 @@ void check_columns(const std::filesystem::path& file, const AirfoilColumns& c) {
 
 }  // namespace
 
-AirfoilInput read_airfoil(const std::filesystem::path& file, const AirfoilColumns& columns) {
-  check_columns(file, columns);
+AirfoilInput readAirfoil(const std::filesystem::path& file, const AirfoilColumns& columns) {
+  checkColumns(file, columns);
   const OpenFastLines lines = OpenFastLines::read(file);
-  if (lines.count() > 0 && !is_comment_line(lines.line(1)) && !is_blank_line(lines.line(1)))
+  if (lines.count() > 0 && !isCommentLine(lines.line(1)) && !isBlankLine(lines.line(1)))
     throw InputError(whirl::where(file.string(), 1, "",
                                   "the first line of an airfoil file must be a comment (starting with '!')"));
-  const OpenFastFile f = OpenFastFile::parse(keep_lines(lines, 1, lines.count(), true), file);
+  const OpenFastFile f = OpenFastFile::parse(keepLines(lines, 1, lines.count(), true), file);
 
   AirfoilInput a;
   a.path = file;
   a.name = file.stem().string();
-  const std::optional<double> order = f.get_double_or_default("InterpOrd");
+  const std::optional<double> order = f.getDoubleOrDefault("InterpOrd");
   a.interp_order_default = !order;
   if (order) {
     if (*order != 1.0 && *order != 3.0)
       throw InputError(f.where("InterpOrd", "must be 1 (linear) or 3 (cubic spline) or \"default\" (is " +
-                                                number_text(*order) + ")"));
+                                                numberText(*order) + ")"));
     a.interp_order = static_cast<int>(*order);
   }
-  if (f.has("RelThickness")) a.rel_thickness = f.get_double_or_default("RelThickness");
-  a.non_dim_area = f.get_double("NonDimArea");
+  if (f.has("RelThickness")) a.rel_thickness = f.getDoubleOrDefault("RelThickness");
+  a.non_dim_area = f.getDouble("NonDimArea");
   const OpenFastEntry* coords = f.find("NumCoords");
   if (coords && coords->tokens.size() == 1 && coords->tokens.front().rfind('@', 0) == 0) {
     std::string name = unquoted(coords->tokens.front().substr(1));
     std::replace(name.begin(), name.end(), '\\', '/');
     a.coords_file = (file.parent_path() / name).lexically_normal();
   } else {
-    a.num_coords = f.get_int("NumCoords");
-    require_nonnegative(f, "NumCoords", *a.num_coords);
+    a.num_coords = f.getInt("NumCoords");
+    requireNonnegative(f, "NumCoords", *a.num_coords);
   }
-  if (f.has("BL_file")) a.bl_file = f.get_string("BL_file");
+  if (f.has("BL_file")) a.bl_file = f.getString("BL_file");
 
-  const int num_tabs = f.get_int("NumTabs");
+  const int num_tabs = f.getInt("NumTabs");
   if (num_tabs < 1) throw InputError(f.where("NumTabs", "must be at least 1 (is " + std::to_string(num_tabs) + ")"));
   int cursor = f.find("NumTabs")->line;
   for (int t = 1; t <= num_tabs; ++t) {
-    const OpenFastEntry* re = entry_after(f, "Re", cursor);
+    const OpenFastEntry* re = entryAfter(f, "Re", cursor);
     const std::string announced = std::to_string(num_tabs) + " tables announced, ";
     if (!re)
       throw InputError(f.where("NumTabs", announced + "no 'Re' line for table " + std::to_string(t) +
                                               " after line " + std::to_string(cursor) + " (truncated file?)"));
-    const OpenFastEntry* num_alf = entry_after(f, "NumAlf", re->line);
+    const OpenFastEntry* num_alf = entryAfter(f, "NumAlf", re->line);
     if (!num_alf)
       throw InputError(whirl::where(file.string(), re->line, "NumAlf",
                                     "key not found after 'Re' of table " + std::to_string(t) + " (truncated file?)"));
-    a.tables.push_back(read_table(lines, re->line, num_alf->line, columns));
+    a.tables.push_back(readTable(lines, re->line, num_alf->line, columns));
     cursor = a.tables.back().row_lines.back();
   }
   return a;
 }
 
-aero::Polar airfoil_polar(const AirfoilInput& af, bool use_cm) {
+aero::Polar airfoilPolar(const AirfoilInput& af, bool use_cm) {
   if (af.tables.empty()) throw InputError(af.path.string() + ": no airfoil table");
   const AirfoilTable& t = af.tables.front();
   constexpr double deg = std::numbers::pi / 180.0;

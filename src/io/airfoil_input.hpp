@@ -85,13 +85,13 @@ struct AirfoilInput {
 /// `InterpOrd` is not 1 or 3, `Re` is not positive, a table has fewer rows than `NumAlf` (truncated),
 /// a row has fewer numbers than the columns asked for, a value is NaN or infinite, or α does not
 /// strictly increase.
-AirfoilInput read_airfoil(const std::filesystem::path& file, const AirfoilColumns& columns = {});
+AirfoilInput readAirfoil(const std::filesystem::path& file, const AirfoilColumns& columns = {});
 
 /// The quasi-steady polar of an airfoil file as AeroDyn uses it with AFTabMod = 1: the first table, α
 /// in rad, `InterpOrd` 3 as the cubic spline, Cm zero when the file has none or `use_cm` is false
 /// (AeroDyn's UseBlCm). Shared by the OpenFAST deck and the YAML case.
 /// \throws InputError "file:line: reason" when the file has no table or the table is not a valid polar
 ///         (makePolar: α must cover −180° to 180°).
-aero::Polar airfoil_polar(const AirfoilInput& af, bool use_cm);
+aero::Polar airfoilPolar(const AirfoilInput& af, bool use_cm);
 
 }  // namespace whirl::io

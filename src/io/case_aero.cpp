@@ -148,7 +148,7 @@ std::vector<aero::Polar> readAirfoils(const CaseNode& list, bool use_cm) {
     if (!std::filesystem::is_regular_file(path, ec))
       f.fail("cannot open the airfoil file '" + path + "' (relative paths start at the case folder)");
     // The airfoil reader's own errors name the airfoil file and line.
-    polars.push_back(io::airfoil_polar(io::read_airfoil(path), use_cm));
+    polars.push_back(io::airfoilPolar(io::readAirfoil(path), use_cm));
   }
   return polars;
 }

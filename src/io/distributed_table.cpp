@@ -14,23 +14,23 @@ std::string joined(const std::vector<std::string>& names) {
   return s;
 }
 
-int index_of(const DistributedTable& t, std::string_view name) {
-  const std::string n = to_lower(name);
+int indexOf(const DistributedTable& t, std::string_view name) {
+  const std::string n = toLower(name);
   for (std::size_t i = 0; i < t.names.size(); ++i)
-    if (to_lower(t.names[i]) == n) return static_cast<int>(i);
+    if (toLower(t.names[i]) == n) return static_cast<int>(i);
   return -1;
 }
 
 /// The column's name as written in the file (for messages).
-std::string written_name(const DistributedTable& t, std::string_view name) {
-  const int i = index_of(t, name);
+std::string writtenName(const DistributedTable& t, std::string_view name) {
+  const int i = indexOf(t, name);
   return i < 0 ? std::string(name) : t.names[static_cast<std::size_t>(i)];
 }
 
 }  // namespace
 
 const std::vector<double>* DistributedTable::find(std::string_view name) const {
-  const int i = index_of(*this, name);
+  const int i = indexOf(*this, name);
   return i < 0 ? nullptr : &values[static_cast<std::size_t>(i)];
 }
 
@@ -39,14 +39,13 @@ const std::vector<double>& DistributedTable::column(std::string_view name) const
   throw InputError(where(file, 0, std::string(name), "no such column (columns: " + joined(names) + ")"));
 }
 
-DistributedTable read_distributed_table(const OpenFastFile& f, std::string_view count_key,
-                                        std::string_view first_column,
-                                        std::initializer_list<std::string_view> required) {
+DistributedTable readDistributedTable(const OpenFastFile& f, std::string_view count_key, std::string_view first_column,
+                                      std::initializer_list<std::string_view> required) {
   const std::string file = f.path().string();
   const std::string key(count_key);
-  const int count = f.get_int(count_key);
+  const int count = f.getInt(count_key);
   if (count < 1) throw InputError(f.where(count_key, "must be at least 1, is " + std::to_string(count)));
-  const OpenFastTable* tab = f.find_table(first_column);
+  const OpenFastTable* tab = f.findTable(first_column);
   if (!tab)
     throw InputError(f.where(count_key, "no table with a '" + std::string(first_column) +
                                             "' column found (truncated file?)"));
@@ -90,11 +89,11 @@ DistributedTable read_distributed_table(const OpenFastFile& f, std::string_view 
     // One station: ElastoDyn holds its properties over the whole span (InterpStp of one point; the
     // fraction must be 0, ValidateTowerData/ValidateBladeData). Two equal stations at fractions 0 and
     // 1 interpolate to the same constant everywhere, and every later use needs no special case.
-    const int c = index_of(t, first_column);
+    const int c = indexOf(t, first_column);
     if (t.values[static_cast<std::size_t>(c)].front() != 0.0)
       throw InputError(where(file, t.row_lines.front(), t.names[static_cast<std::size_t>(c)],
                              "the only station must be at 0 (is " +
-                                 number_text(t.values[static_cast<std::size_t>(c)].front()) + ")"));
+                                 numberText(t.values[static_cast<std::size_t>(c)].front()) + ")"));
     for (std::vector<double>& v : t.values) v.push_back(v.front());
     t.values[static_cast<std::size_t>(c)].back() = 1.0;
     t.row_lines.push_back(t.row_lines.front());
@@ -103,34 +102,34 @@ DistributedTable read_distributed_table(const OpenFastFile& f, std::string_view 
   return t;
 }
 
-void require_fraction_column(const DistributedTable& t, std::string_view name) {
+void requireFractionColumn(const DistributedTable& t, std::string_view name) {
   const std::vector<double>& x = t.column(name);
-  const std::string n = written_name(t, name);
+  const std::string n = writtenName(t, name);
   if (x.front() != 0.0)
-    throw InputError(where(t.file, t.row_lines.front(), n, "must start at 0 (is " + number_text(x.front()) + ")"));
+    throw InputError(where(t.file, t.row_lines.front(), n, "must start at 0 (is " + numberText(x.front()) + ")"));
   for (std::size_t r = 1; r < x.size(); ++r)
     if (!(x[r] > x[r - 1]))
-      throw InputError(where(t.file, t.row_lines[r], n,
-                             "must increase from station to station (" + number_text(x[r]) + " after " +
-                                 number_text(x[r - 1]) + ")"));
+      throw InputError(
+          where(t.file, t.row_lines[r], n,
+                "must increase from station to station (" + numberText(x[r]) + " after " + numberText(x[r - 1]) + ")"));
   if (x.back() != 1.0)
-    throw InputError(where(t.file, t.row_lines.back(), n, "must end at 1 (is " + number_text(x.back()) + ")"));
+    throw InputError(where(t.file, t.row_lines.back(), n, "must end at 1 (is " + numberText(x.back()) + ")"));
 }
 
-void require_nonnegative_column(const DistributedTable& t, std::string_view name) {
+void requireNonnegativeColumn(const DistributedTable& t, std::string_view name) {
   const std::vector<double>& v = t.column(name);
   for (std::size_t r = 0; r < v.size(); ++r)
     if (v[r] < 0.0)
-      throw InputError(where(t.file, t.row_lines[r], written_name(t, name),
-                             "must not be negative (is " + number_text(v[r]) + ")"));
+      throw InputError(
+          where(t.file, t.row_lines[r], writtenName(t, name), "must not be negative (is " + numberText(v[r]) + ")"));
 }
 
-void require_positive_column(const DistributedTable& t, std::string_view name) {
+void requirePositiveColumn(const DistributedTable& t, std::string_view name) {
   const std::vector<double>& v = t.column(name);
   for (std::size_t r = 0; r < v.size(); ++r)
     if (!(v[r] > 0.0))
-      throw InputError(where(t.file, t.row_lines[r], written_name(t, name),
-                             "must be positive (is " + number_text(v[r]) + ")"));
+      throw InputError(
+          where(t.file, t.row_lines[r], writtenName(t, name), "must be positive (is " + numberText(v[r]) + ")"));
 }
 
 }  // namespace whirl::io

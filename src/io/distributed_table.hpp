@@ -34,15 +34,14 @@ struct DistributedTable {
 /// column in every row, no NaN or inf, and every column of `required` present. Errors name file, line
 /// and key or column. One station (constant properties, which ElastoDyn accepts: SWRT and AWT-27
 /// towers) must sit at 0 in `first_column`; it is returned as two equal rows at 0 and 1 (`constant`).
-DistributedTable read_distributed_table(const OpenFastFile& f, std::string_view count_key,
-                                        std::string_view first_column,
-                                        std::initializer_list<std::string_view> required);
+DistributedTable readDistributedTable(const OpenFastFile& f, std::string_view count_key, std::string_view first_column,
+                                      std::initializer_list<std::string_view> required);
 
 /// Checks a station fraction column: starts at 0, ends at 1, strictly increasing.
-void require_fraction_column(const DistributedTable& t, std::string_view name);
+void requireFractionColumn(const DistributedTable& t, std::string_view name);
 /// Checks that every value of the column is >= 0 (mass densities).
-void require_nonnegative_column(const DistributedTable& t, std::string_view name);
+void requireNonnegativeColumn(const DistributedTable& t, std::string_view name);
 /// Checks that every value of the column is > 0 (stiffnesses).
-void require_positive_column(const DistributedTable& t, std::string_view name);
+void requirePositiveColumn(const DistributedTable& t, std::string_view name);
 
 }  // namespace whirl::io

@@ -18,44 +18,44 @@ const OpenFastLayout& layout() {
 
 }  // namespace
 
-const std::vector<double>* ElastoDynBlade::pitch_axis() const {
+const std::vector<double>* ElastoDynBlade::pitchAxis() const {
   if (const std::vector<double>* c = distributed.find("PitchAxis")) return c;
   return distributed.find("AeroCent");
 }
 
-ElastoDynBlade read_elastodyn_blade(const std::filesystem::path& file, OverrideSet* overrides) {
+ElastoDynBlade readElastoDynBlade(const std::filesystem::path& file, OverrideSet* overrides) {
   ElastoDynBlade b;
   b.source = OpenFastFile::read(file);
-  b.source.check_layout(layout());
-  if (overrides) overrides->apply_to(b.source);
+  b.source.checkLayout(layout());
+  if (overrides) overrides->applyTo(b.source);
   const OpenFastFile& f = b.source;
 
-  b.NBlInpSt = f.get_int("NBlInpSt");
-  b.BldFlDmp = get_indexed<2>(f, "BldFlDmp");
-  b.BldEdDmp = f.get_double("BldEdDmp(1)");
-  b.FlStTunr = get_indexed<2>(f, "FlStTunr");
-  b.AdjBlMs = f.get_double("AdjBlMs");
-  b.AdjFlSt = f.get_double("AdjFlSt");
-  b.AdjEdSt = f.get_double("AdjEdSt");
+  b.NBlInpSt = f.getInt("NBlInpSt");
+  b.BldFlDmp = getIndexed<2>(f, "BldFlDmp");
+  b.BldEdDmp = f.getDouble("BldEdDmp(1)");
+  b.FlStTunr = getIndexed<2>(f, "FlStTunr");
+  b.AdjBlMs = f.getDouble("AdjBlMs");
+  b.AdjFlSt = f.getDouble("AdjFlSt");
+  b.AdjEdSt = f.getDouble("AdjEdSt");
   for (int m = 1; m <= 2; ++m) {
-    require_nonnegative(f, indexed_key("BldFlDmp", m), b.BldFlDmp[m - 1]);
-    require_positive(f, indexed_key("FlStTunr", m), b.FlStTunr[m - 1]);
+    requireNonnegative(f, indexedKey("BldFlDmp", m), b.BldFlDmp[m - 1]);
+    requirePositive(f, indexedKey("FlStTunr", m), b.FlStTunr[m - 1]);
   }
-  require_nonnegative(f, "BldEdDmp(1)", b.BldEdDmp);
-  require_positive(f, "AdjBlMs", b.AdjBlMs);
-  require_positive(f, "AdjFlSt", b.AdjFlSt);
-  require_positive(f, "AdjEdSt", b.AdjEdSt);
+  requireNonnegative(f, "BldEdDmp(1)", b.BldEdDmp);
+  requirePositive(f, "AdjBlMs", b.AdjBlMs);
+  requirePositive(f, "AdjFlSt", b.AdjFlSt);
+  requirePositive(f, "AdjEdSt", b.AdjEdSt);
 
-  b.distributed = read_distributed_table(f, "NBlInpSt", "BlFract",
-                                         {"BlFract", "StrcTwst", "BMassDen", "FlpStff", "EdgStff"});
-  require_fraction_column(b.distributed, "BlFract");
-  require_nonnegative_column(b.distributed, "BMassDen");
-  require_positive_column(b.distributed, "FlpStff");
-  require_positive_column(b.distributed, "EdgStff");
+  b.distributed = readDistributedTable(f, "NBlInpSt", "BlFract",
+                                       {"BlFract", "StrcTwst", "BMassDen", "FlpStff", "EdgStff"});
+  requireFractionColumn(b.distributed, "BlFract");
+  requireNonnegativeColumn(b.distributed, "BMassDen");
+  requirePositiveColumn(b.distributed, "FlpStff");
+  requirePositiveColumn(b.distributed, "EdgStff");
 
-  b.BldFl1Sh = read_mode_shape(f, "BldFl1Sh");
-  b.BldFl2Sh = read_mode_shape(f, "BldFl2Sh");
-  b.BldEdgSh = read_mode_shape(f, "BldEdgSh");
+  b.BldFl1Sh = readModeShape(f, "BldFl1Sh");
+  b.BldFl2Sh = readModeShape(f, "BldFl2Sh");
+  b.BldEdgSh = readModeShape(f, "BldEdgSh");
   return b;
 }
 

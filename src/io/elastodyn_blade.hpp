@@ -29,7 +29,7 @@ struct ElastoDynBlade {
   /// Distributed properties, NBlInpSt stations. Always present and checked: BlFract (-), fraction of
   /// the blade length from root, 0 → 1 increasing; StrcTwst (deg, structural twist); BMassDen (kg/m)
   /// >= 0; FlpStff, EdgStff (N·m²) > 0. PitchAxis (-, chord fraction) is in v1–v3 files, AeroCent in
-  /// older ones, neither from OpenFAST v4 on: see pitch_axis(). Other columns (GJStff, EAStff, FlpIner,
+  /// older ones, neither from OpenFAST v4 on: see pitchAxis(). Other columns (GJStff, EAStff, FlpIner,
   /// EdgIner, PrecrvRef, PreswpRef, FlpcgOf, EdgcgOf, FlpEAOf, EdgEAOf …) are kept as read.
   /// Values are as written: ElastoDyn multiplies BMassDen by AdjBlMs, FlpStff by AdjFlSt and EdgStff by
   /// AdjEdSt, and the flap modal stiffnesses by FlStTunr; the model builder must do the same.
@@ -40,11 +40,11 @@ struct ElastoDynBlade {
   ModeShapeCoeffs BldEdgSh{};  ///< edge mode 1
 
   /// The PitchAxis column, else the AeroCent column of older files, else nullptr (OpenFAST v4+ files).
-  const std::vector<double>* pitch_axis() const;
+  const std::vector<double>* pitchAxis() const;
 };
 
 /// Reads and checks a blade file. `overrides` (may be null) are applied before reading values.
 /// Throws InputError naming file, line and key (or table column) for anything missing or invalid.
-ElastoDynBlade read_elastodyn_blade(const std::filesystem::path& file, OverrideSet* overrides = nullptr);
+ElastoDynBlade readElastoDynBlade(const std::filesystem::path& file, OverrideSet* overrides = nullptr);
 
 }  // namespace whirl::io

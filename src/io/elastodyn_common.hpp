@@ -17,35 +17,35 @@ namespace whirl::io {
 using ModeShapeCoeffs = std::array<double, 5>;
 
 /// "BlPitch(2)" from ("BlPitch", 2).
-std::string indexed_key(std::string_view base, int index);
+std::string indexedKey(std::string_view base, int index);
 
 /// Values of `base(first)` … `base(first+N-1)`; InputError when any is missing or not a finite number.
 template <std::size_t N>
-std::array<double, N> get_indexed(const OpenFastFile& f, std::string_view base, int first = 1) {
+std::array<double, N> getIndexed(const OpenFastFile& f, std::string_view base, int first = 1) {
   std::array<double, N> out{};
-  for (std::size_t i = 0; i < N; ++i) out[i] = f.get_double(indexed_key(base, first + static_cast<int>(i)));
+  for (std::size_t i = 0; i < N; ++i) out[i] = f.getDouble(indexedKey(base, first + static_cast<int>(i)));
   return out;
 }
 
-/// Like get_indexed, but nullopt when `base(first)` is absent (keys added in later file versions).
+/// Like getIndexed, but nullopt when `base(first)` is absent (keys added in later file versions).
 template <std::size_t N>
-std::optional<std::array<double, N>> find_indexed(const OpenFastFile& f, std::string_view base, int first = 1) {
-  if (!f.has(indexed_key(base, first))) return std::nullopt;
-  return get_indexed<N>(f, base, first);
+std::optional<std::array<double, N>> findIndexed(const OpenFastFile& f, std::string_view base, int first = 1) {
+  if (!f.has(indexedKey(base, first))) return std::nullopt;
+  return getIndexed<N>(f, base, first);
 }
 
 /// Reads `base(2)` … `base(6)` and checks that they sum to 1 within 0.01: a shape normalised to a unit
 /// tip deflection, as ElastoDyn's DOFs assume. The tolerance is loose on purpose: coefficients printed
 /// to 4–6 digits sum to 0.999 (NREL 5MW TwSSM2Sh) or 1.0001 (BldFl2Sh); the check is there to catch a
 /// mistyped coefficient, which moves the sum far more.
-ModeShapeCoeffs read_mode_shape(const OpenFastFile& f, std::string_view base);
+ModeShapeCoeffs readModeShape(const OpenFastFile& f, std::string_view base);
 
 /// InputError "file:line: key: must be positive (is -1)" unless value > 0.
-void require_positive(const OpenFastFile& f, std::string_view key, double value);
+void requirePositive(const OpenFastFile& f, std::string_view key, double value);
 /// InputError "file:line: key: must not be negative (is -1)" unless value >= 0.
-void require_nonnegative(const OpenFastFile& f, std::string_view key, double value);
+void requireNonnegative(const OpenFastFile& f, std::string_view key, double value);
 
 /// Shortest round-trip text of a number, for messages.
-std::string number_text(double v);
+std::string numberText(double v);
 
 }  // namespace whirl::io

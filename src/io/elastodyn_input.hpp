@@ -169,6 +169,6 @@ struct ElastoDynInput {
 /// non-negative masses, TipRad > HubRad, GBRatio > 0 …) but not whether whirl supports the options.
 /// Throws InputError naming file, line and key for anything missing, malformed or out of range,
 /// including a tower or blade file that does not exist.
-ElastoDynInput read_elastodyn(const std::filesystem::path& file, OverrideSet* overrides = nullptr);
+ElastoDynInput readElastoDyn(const std::filesystem::path& file, OverrideSet* overrides = nullptr);
 
 }  // namespace whirl::io

@@ -18,41 +18,41 @@ const OpenFastLayout& layout() {
 
 }  // namespace
 
-ElastoDynTower read_elastodyn_tower(const std::filesystem::path& file, OverrideSet* overrides) {
+ElastoDynTower readElastoDynTower(const std::filesystem::path& file, OverrideSet* overrides) {
   ElastoDynTower t;
   t.source = OpenFastFile::read(file);
-  t.source.check_layout(layout());
-  if (overrides) overrides->apply_to(t.source);
+  t.source.checkLayout(layout());
+  if (overrides) overrides->applyTo(t.source);
   const OpenFastFile& f = t.source;
 
-  t.NTwInpSt = f.get_int("NTwInpSt");
-  t.TwrFADmp = get_indexed<2>(f, "TwrFADmp");
-  t.TwrSSDmp = get_indexed<2>(f, "TwrSSDmp");
-  t.FAStTunr = get_indexed<2>(f, "FAStTunr");
-  t.SSStTunr = get_indexed<2>(f, "SSStTunr");
-  t.AdjTwMa = f.get_double("AdjTwMa");
-  t.AdjFASt = f.get_double("AdjFASt");
-  t.AdjSSSt = f.get_double("AdjSSSt");
+  t.NTwInpSt = f.getInt("NTwInpSt");
+  t.TwrFADmp = getIndexed<2>(f, "TwrFADmp");
+  t.TwrSSDmp = getIndexed<2>(f, "TwrSSDmp");
+  t.FAStTunr = getIndexed<2>(f, "FAStTunr");
+  t.SSStTunr = getIndexed<2>(f, "SSStTunr");
+  t.AdjTwMa = f.getDouble("AdjTwMa");
+  t.AdjFASt = f.getDouble("AdjFASt");
+  t.AdjSSSt = f.getDouble("AdjSSSt");
   for (int m = 1; m <= 2; ++m) {
-    require_nonnegative(f, indexed_key("TwrFADmp", m), t.TwrFADmp[m - 1]);
-    require_nonnegative(f, indexed_key("TwrSSDmp", m), t.TwrSSDmp[m - 1]);
-    require_positive(f, indexed_key("FAStTunr", m), t.FAStTunr[m - 1]);
-    require_positive(f, indexed_key("SSStTunr", m), t.SSStTunr[m - 1]);
+    requireNonnegative(f, indexedKey("TwrFADmp", m), t.TwrFADmp[m - 1]);
+    requireNonnegative(f, indexedKey("TwrSSDmp", m), t.TwrSSDmp[m - 1]);
+    requirePositive(f, indexedKey("FAStTunr", m), t.FAStTunr[m - 1]);
+    requirePositive(f, indexedKey("SSStTunr", m), t.SSStTunr[m - 1]);
   }
-  require_positive(f, "AdjTwMa", t.AdjTwMa);
-  require_positive(f, "AdjFASt", t.AdjFASt);
-  require_positive(f, "AdjSSSt", t.AdjSSSt);
+  requirePositive(f, "AdjTwMa", t.AdjTwMa);
+  requirePositive(f, "AdjFASt", t.AdjFASt);
+  requirePositive(f, "AdjSSSt", t.AdjSSSt);
 
-  t.distributed = read_distributed_table(f, "NTwInpSt", "HtFract", {"HtFract", "TMassDen", "TwFAStif", "TwSSStif"});
-  require_fraction_column(t.distributed, "HtFract");
-  require_nonnegative_column(t.distributed, "TMassDen");
-  require_positive_column(t.distributed, "TwFAStif");
-  require_positive_column(t.distributed, "TwSSStif");
+  t.distributed = readDistributedTable(f, "NTwInpSt", "HtFract", {"HtFract", "TMassDen", "TwFAStif", "TwSSStif"});
+  requireFractionColumn(t.distributed, "HtFract");
+  requireNonnegativeColumn(t.distributed, "TMassDen");
+  requirePositiveColumn(t.distributed, "TwFAStif");
+  requirePositiveColumn(t.distributed, "TwSSStif");
 
-  t.TwFAM1Sh = read_mode_shape(f, "TwFAM1Sh");
-  t.TwFAM2Sh = read_mode_shape(f, "TwFAM2Sh");
-  t.TwSSM1Sh = read_mode_shape(f, "TwSSM1Sh");
-  t.TwSSM2Sh = read_mode_shape(f, "TwSSM2Sh");
+  t.TwFAM1Sh = readModeShape(f, "TwFAM1Sh");
+  t.TwFAM2Sh = readModeShape(f, "TwFAM2Sh");
+  t.TwSSM1Sh = readModeShape(f, "TwSSM1Sh");
+  t.TwSSM2Sh = readModeShape(f, "TwSSM2Sh");
   return t;
 }
 

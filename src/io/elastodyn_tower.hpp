@@ -42,6 +42,6 @@ struct ElastoDynTower {
 
 /// Reads and checks a tower file. `overrides` (may be null) are applied before reading values.
 /// Throws InputError naming file, line and key (or table column) for anything missing or invalid.
-ElastoDynTower read_elastodyn_tower(const std::filesystem::path& file, OverrideSet* overrides = nullptr);
+ElastoDynTower readElastoDynTower(const std::filesystem::path& file, OverrideSet* overrides = nullptr);
 
 }  // namespace whirl::io

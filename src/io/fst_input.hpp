@@ -48,6 +48,6 @@ struct FstInput {
 /// Reads a `.fst` file. Switches absent from a layout read as 0 (CompElast as 1: ElastoDyn was the only
 /// structural module); FAST 8.0x True/False switches read as 1/0. `overrides` may be null.
 /// Throws InputError naming file, line and key.
-FstInput read_fst(const std::filesystem::path& file, OverrideSet* overrides = nullptr);
+FstInput readFst(const std::filesystem::path& file, OverrideSet* overrides = nullptr);
 
 }  // namespace whirl::io

@@ -25,7 +25,7 @@ std::optional<std::vector<double>> leadingNumbers(const std::string& line, int n
   std::istringstream ss(line);
   std::vector<double> v;
   for (std::string tok; static_cast<int>(v.size()) < n && ss >> tok;) {
-    const std::optional<double> x = parse_fortran_double(tok);
+    const std::optional<double> x = parseFortranDouble(tok);
     if (!x || !std::isfinite(*x)) return std::nullopt;
     v.push_back(*x);
   }
@@ -38,7 +38,7 @@ Mat6 matrixAt(const OpenFastFile& f, const std::vector<std::string>& lines, cons
   const OpenFastEntry* e = f.find(key);
   if (!e) throw InputError(f.where(key, "key not found in this file"));
   Mat6 M;
-  const std::vector<double> first = f.get_doubles(key);
+  const std::vector<double> first = f.getDoubles(key);
   if (first.size() != 6) throw InputError(f.where(key, "expected 6 numbers on the first row of the 6×6 matrix"));
   for (int c = 0; c < 6; ++c) M(0, c) = first[c];
   for (int r = 1; r < 6; ++r) {
@@ -55,7 +55,7 @@ Mat6 matrixAt(const OpenFastFile& f, const std::vector<std::string>& lines, cons
 
 // PropPot of each member row below NMembers (header and unit rows first): false for a strip-theory member.
 void checkMembers(const OpenFastFile& f, const std::vector<std::string>& lines, Refusals& r) {
-  const std::optional<int> n = f.find_int("NMembers");
+  const std::optional<int> n = f.findInt("NMembers");
   if (!n || *n <= 0) return;
   const int first = f.find("NMembers")->line + 3;  // 1-based line of member 1
   for (int k = 0; k < *n; ++k) {
@@ -64,12 +64,12 @@ void checkMembers(const OpenFastFile& f, const std::vector<std::string>& lines, 
     std::istringstream ss(lines[line - 1]);
     std::vector<std::string> tok;
     for (std::string t; ss >> t && tok.size() < 8;) tok.push_back(t);
-    const std::string prop = tok.size() == 8 ? to_lower(tok[7]) : "";
+    const std::string prop = tok.size() == 8 ? toLower(tok[7]) : "";
     const bool pot = prop == "true" || prop == "t" || prop == ".true.";
     if (!pot) {
-      r.add_if(true, "NMembers", "member on line " + std::to_string(line) + " has PropPot = " +
-                                     (tok.size() == 8 ? tok[7] : "?") +
-                                     ": strip-theory buoyancy and added mass are not modelled (only potential-flow members)");
+      r.addIf(true, "NMembers",
+              "member on line " + std::to_string(line) + " has PropPot = " + (tok.size() == 8 ? tok[7] : "?") +
+                  ": strip-theory buoyancy and added mass are not modelled (only potential-flow members)");
       return;
     }
   }
@@ -77,60 +77,61 @@ void checkMembers(const OpenFastFile& f, const std::vector<std::string>& lines, 
 
 }  // namespace
 
-HydroDynInput read_hydrodyn(const std::filesystem::path& file, OverrideSet* overrides) {
+HydroDynInput readHydroDyn(const std::filesystem::path& file, OverrideSet* overrides) {
   HydroDynInput h;
   h.source = OpenFastFile::read(file);
-  if (overrides) overrides->apply_to(h.source);
+  if (overrides) overrides->applyTo(h.source);
   const OpenFastFile& f = h.source;
   const std::vector<std::string> lines = fileLines(file);
-  h.WtrDens = f.find_double("WtrDens");
-  h.WtrDpth = f.find_double("WtrDpth");
-  if (h.WtrDens) require_positive(f, "WtrDens", *h.WtrDens);
-  if (h.WtrDpth) require_positive(f, "WtrDpth", *h.WtrDpth);
-  h.PotMod = f.get_int("PotMod");
-  h.NBody = f.find_int("NBody");
+  h.WtrDens = f.findDouble("WtrDens");
+  h.WtrDpth = f.findDouble("WtrDpth");
+  if (h.WtrDens) requirePositive(f, "WtrDens", *h.WtrDens);
+  if (h.WtrDpth) requirePositive(f, "WtrDpth", *h.WtrDpth);
+  h.PotMod = f.getInt("PotMod");
+  h.NBody = f.findInt("NBody");
   Refusals r(f);
-  r.add_if(h.PotMod == 2, "PotMod", "fluid-impulse theory (FIT) is not modelled", "PotMod = 0 or 1 (WAMIT)");
-  r.add_if(h.PotMod != 0 && h.PotMod != 1 && h.PotMod != 2, "PotMod", "unknown potential-flow model", "PotMod = 0 or 1");
-  r.add_if(h.NBody.value_or(1) != 1, "NBody", "several potential-flow bodies are not modelled", "NBody = 1");
+  r.addIf(h.PotMod == 2, "PotMod", "fluid-impulse theory (FIT) is not modelled", "PotMod = 0 or 1 (WAMIT)");
+  r.addIf(h.PotMod != 0 && h.PotMod != 1 && h.PotMod != 2, "PotMod", "unknown potential-flow model", "PotMod = 0 or 1");
+  r.addIf(h.NBody.value_or(1) != 1, "NBody", "several potential-flow bodies are not modelled", "NBody = 1");
   if (h.PotMod == 1) {
-    h.PotFile = f.has("PotFile") ? f.get_path("PotFile") : f.get_path("PotFile(1)");
-    h.WAMITULEN = f.get_double("WAMITULEN");
-    require_positive(f, "WAMITULEN", h.WAMITULEN);
-    h.PtfmVol0 = f.get_double("PtfmVol0");
-    require_nonnegative(f, "PtfmVol0", h.PtfmVol0);
-    h.PtfmCOBxt = f.get_double("PtfmCOBxt");
-    h.PtfmCOByt = f.get_double("PtfmCOByt");
-    h.RdtnMod = f.get_int("RdtnMod");
-    r.add_if(h.RdtnMod == 1, "RdtnMod",
-             "the radiation convolution has no linearization (OpenFAST refuses it too); --set RdtnMod=0 leaves "
-             "the radiation memory out, keeping the infinite-frequency added mass",
-             "RdtnMod = 0");
-    r.add_if(h.RdtnMod == 2, "RdtnMod", "state-space radiation (.ss) is not modelled yet", "RdtnMod = 0");
+    h.PotFile = f.has("PotFile") ? f.getPath("PotFile") : f.getPath("PotFile(1)");
+    h.WAMITULEN = f.getDouble("WAMITULEN");
+    requirePositive(f, "WAMITULEN", h.WAMITULEN);
+    h.PtfmVol0 = f.getDouble("PtfmVol0");
+    requireNonnegative(f, "PtfmVol0", h.PtfmVol0);
+    h.PtfmCOBxt = f.getDouble("PtfmCOBxt");
+    h.PtfmCOByt = f.getDouble("PtfmCOByt");
+    h.RdtnMod = f.getInt("RdtnMod");
+    r.addIf(h.RdtnMod == 1, "RdtnMod",
+            "the radiation convolution has no linearization (OpenFAST refuses it too); --set RdtnMod=0 leaves "
+            "the radiation memory out, keeping the infinite-frequency added mass",
+            "RdtnMod = 0");
+    r.addIf(h.RdtnMod == 2, "RdtnMod", "state-space radiation (.ss) is not modelled yet", "RdtnMod = 0");
     for (const char* key : {"PtfmRefxt", "PtfmRefyt", "PtfmRefzt", "PtfmRefztRot"})
-      r.add_if(f.find_double(key).value_or(0.0) != 0.0, key,
-               "a WAMIT body away from the platform reference point is not modelled", "0");
+      r.addIf(f.findDouble(key).value_or(0.0) != 0.0, key,
+              "a WAMIT body away from the platform reference point is not modelled", "0");
   }
   for (const char* key : {"MnDrift", "NewmanApp", "DiffQTF", "SumQTF"})
-    if (f.find_int(key).value_or(0) != 0) h.notes.push_back(f.where(key, "second-order wave forces ignored (no waves in a linearization)"));
+    if (f.findInt(key).value_or(0) != 0)
+      h.notes.push_back(f.where(key, "second-order wave forces ignored (no waves in a linearization)"));
   // WaveMod may carry a phase ("1P0.0"): any value but 0 means waves.
   if (const OpenFastEntry* e = f.find("WaveMod"); e && e->raw != "0")
     h.notes.push_back(f.where("WaveMod", "incident waves ignored: the linearization is about still water"));
-  if (f.find_int("CurrMod").value_or(0) != 0)
+  if (f.findInt("CurrMod").value_or(0) != 0)
     h.notes.push_back(f.where("CurrMod", "current ignored: the linearization is about still water"));
   // HydroDyn v2's force flags: False switches a platform direction's hydrodynamic loads off.
   for (const char* key : {"PtfmSgF", "PtfmSwF", "PtfmHvF", "PtfmRF", "PtfmPF", "PtfmYF"})
     if (const OpenFastEntry* e = f.find(key)) {
-      const std::string v = to_lower(e->raw);
-      r.add_if(v != "true" && v != "t" && v != "default" && v != "\"default\"", key,
-               "switching a direction's hydrodynamic loads off is not modelled", "True or DEFAULT");
+      const std::string v = toLower(e->raw);
+      r.addIf(v != "true" && v != "t" && v != "default" && v != "\"default\"", key,
+              "switching a direction's hydrodynamic loads off is not modelled", "True or DEFAULT");
     }
-  r.add_if(f.find_int("NFillGroups").value_or(0) != 0, "NFillGroups", "filled (ballasted) members are not modelled");
-  r.add_if(f.find_int("NMGDepths").value_or(0) != 0, "NMGDepths", "marine growth is not modelled");
+  r.addIf(f.findInt("NFillGroups").value_or(0) != 0, "NFillGroups", "filled (ballasted) members are not modelled");
+  r.addIf(f.findInt("NMGDepths").value_or(0) != 0, "NMGDepths", "marine growth is not modelled");
   checkMembers(f, lines, r);
-  throw_if_any(r.take());
+  throwIfAny(r.take());
 
-  const std::vector<double> f0 = f.get_doubles("AddF0");
+  const std::vector<double> f0 = f.getDoubles("AddF0");
   if (f0.size() != 6) throw InputError(f.where("AddF0", "expected 6 numbers"));
   for (int k = 0; k < 6; ++k) h.AddF0(k) = f0[k];
   h.AddCLin = matrixAt(f, lines, "AddCLin");

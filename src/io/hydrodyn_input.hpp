@@ -46,6 +46,6 @@ struct HydroDynInput {
 /// which OpenFAST refuses for linearization too), RdtnMod = 2 (state-space radiation, not yet
 /// modelled), NBody > 1, strip-theory members (PropPot = False: their buoyancy and added mass), filled
 /// members, marine growth, and a v2 force flag (PtfmSgF … PtfmYF) set to False. A 6×6 matrix whose rows are missing or not numbers names the key's line.
-HydroDynInput read_hydrodyn(const std::filesystem::path& file, OverrideSet* overrides = nullptr);
+HydroDynInput readHydroDyn(const std::filesystem::path& file, OverrideSet* overrides = nullptr);
 
 }  // namespace whirl::io

@@ -5,21 +5,21 @@
 
 namespace whirl::io {
 
-InflowWindInput read_inflowwind(const std::filesystem::path& file, OverrideSet* overrides) {
+InflowWindInput readInflowWind(const std::filesystem::path& file, OverrideSet* overrides) {
   InflowWindInput w;
   w.source = OpenFastFile::read(file);
-  if (overrides) overrides->apply_to(w.source);
+  if (overrides) overrides->applyTo(w.source);
   const OpenFastFile& f = w.source;
 
-  w.WindType = f.get_int("WindType");
-  w.PropagationDir = f.get_double("PropagationDir");
+  w.WindType = f.getInt("WindType");
+  w.PropagationDir = f.getDouble("PropagationDir");
   w.has_VFlowAng = f.has("VFlowAng");
-  w.VFlowAng = f.find_double("VFlowAng").value_or(0.0);
-  w.HWindSpeed = f.get_double("HWindSpeed");
-  w.RefHt = f.get_double("RefHt");
-  w.PLExp = f.get_double("PLExp");
-  require_nonnegative(f, "HWindSpeed", w.HWindSpeed);
-  require_positive(f, "RefHt", w.RefHt);
+  w.VFlowAng = f.findDouble("VFlowAng").value_or(0.0);
+  w.HWindSpeed = f.getDouble("HWindSpeed");
+  w.RefHt = f.getDouble("RefHt");
+  w.PLExp = f.getDouble("PLExp");
+  requireNonnegative(f, "HWindSpeed", w.HWindSpeed);
+  requirePositive(f, "RefHt", w.RefHt);
   return w;
 }
 

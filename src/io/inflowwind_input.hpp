@@ -30,6 +30,6 @@ struct InflowWindInput {
 /// Reads an InflowWind file. The steady-wind keys (HWindSpeed, RefHt, PLExp) are read whatever the
 /// WindType (every layout has them). Throws InputError "file:line: key: reason" when a key is missing or
 /// malformed, HWindSpeed < 0 or RefHt <= 0.
-InflowWindInput read_inflowwind(const std::filesystem::path& file, OverrideSet* overrides = nullptr);
+InflowWindInput readInflowWind(const std::filesystem::path& file, OverrideSet* overrides = nullptr);
 
 }  // namespace whirl::io

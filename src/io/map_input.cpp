@@ -28,7 +28,7 @@ struct Reader {
     return InputError(whirl::where(file, line, key, reason));
   }
   double number(const std::string& tok, const std::string& key) const {
-    const std::optional<double> x = parse_fortran_double(tok);
+    const std::optional<double> x = parseFortranDouble(tok);
     if (!x || !std::isfinite(*x)) throw fail(key, "'" + tok + "' is not a finite number");
     return *x;
   }
@@ -41,7 +41,7 @@ struct Reader {
 
 }  // namespace
 
-MapInput read_map(const std::filesystem::path& file) {
+MapInput readMap(const std::filesystem::path& file) {
   std::ifstream in(file);
   if (!in) throw InputError(whirl::where(file.string(), 0, "", "cannot open file"));
   MapInput m;
@@ -54,7 +54,7 @@ MapInput read_map(const std::filesystem::path& file) {
     const std::vector<std::string> t = tokens(s);
     if (t.empty()) continue;
     if (s.rfind("---", 0) == 0 || t[0].rfind("---", 0) == 0) {
-      const std::string u = to_lower(s);
+      const std::string u = toLower(s);
       sec = u.find("dictionary") != std::string::npos ? Section::Dictionary
             : u.find("node") != std::string::npos     ? Section::Nodes
             : u.find("line prop") != std::string::npos ? Section::Lines
@@ -84,7 +84,7 @@ MapInput read_map(const std::filesystem::path& file) {
         MapNode n;
         n.id = r.integer(t[0], "Node");
         n.line = r.line;
-        const std::string type = to_lower(t[1]);
+        const std::string type = toLower(t[1]);
         if (type == "fix" || type == "fixed")
           n.fixed = true;
         else if (type == "connect")
@@ -93,8 +93,7 @@ MapInput read_map(const std::filesystem::path& file) {
           throw r.fail("Type", "'" + t[1] + "' is not fix, vessel or connect");
         n.position(0) = r.number(t[2], "X");
         n.position(1) = r.number(t[3], "Y");
-        if (to_lower(t[4]) == "depth")
-          n.at_depth = true;
+        if (toLower(t[4]) == "depth") n.at_depth = true;
         else
           n.position(2) = r.number(t[4], "Z");
         if (r.number(t[5], "M") != 0.0 || r.number(t[6], "B") != 0.0)
@@ -111,7 +110,7 @@ MapInput read_map(const std::filesystem::path& file) {
         break;
       }
       case Section::Options: {
-        if (to_lower(t[0]) == "repeat")
+        if (toLower(t[0]) == "repeat")
           for (std::size_t k = 1; k < t.size(); ++k) m.repeat_deg.push_back(r.number(t[k], "repeat"));
         break;  // the other options tune MAP++'s solver
       }
@@ -122,7 +121,7 @@ MapInput read_map(const std::filesystem::path& file) {
   return m;
 }
 
-std::vector<MooringLine> map_mooring_lines(const MapInput& map, int body, double depth, double rho, double g) {
+std::vector<MooringLine> mapMooringLines(const MapInput& map, int body, double depth, double rho, double g) {
   const std::string file = map.path.string();
   auto node = [&](int id, const MapLine& l, const char* key) -> const MapNode& {
     for (const MapNode& n : map.nodes)
@@ -133,7 +132,7 @@ std::vector<MooringLine> map_mooring_lines(const MapInput& map, int body, double
   for (const MapLine& l : map.lines) {
     const MapLineType* type = nullptr;
     for (const MapLineType& t : map.types)
-      if (to_lower(t.name) == to_lower(l.type)) type = &t;
+      if (toLower(t.name) == toLower(l.type)) type = &t;
     if (!type) throw InputError(whirl::where(file, l.line, "LineType", "no line type '" + l.type + "' in the dictionary"));
     const MapNode& a = node(l.anchor, l, "NodeAnch");
     const MapNode& f = node(l.fairlead, l, "NodeFair");
@@ -151,10 +150,10 @@ std::vector<MooringLine> map_mooring_lines(const MapInput& map, int body, double
     ml.CB = type->CB;
     if (!(ml.weight > 0))
       throw InputError(whirl::where(file, type->line, "MassDenInAir",
-                                    "the line floats (weight in water " + number_text(ml.weight) +
+                                    "the line floats (weight in water " + numberText(ml.weight) +
                                         " N/m ≤ 0): a catenary needs a positive weight in water"));
     if (ml.anchor(2) < -depth * (1 + 1e-9))
-      throw InputError(whirl::where(file, a.line, "Z", "anchor below the seabed (depth " + number_text(depth) + " m)"));
+      throw InputError(whirl::where(file, a.line, "Z", "anchor below the seabed (depth " + numberText(depth) + " m)"));
     if (!(ml.anchor(2) < ml.fairlead(2)))
       throw InputError(whirl::where(file, l.line, "NodeAnch", "the anchor must be below its fairlead"));
     if (std::hypot(ml.fairlead(0) - ml.anchor(0), ml.fairlead(1) - ml.anchor(1)) <= 0)
@@ -177,7 +176,8 @@ std::vector<MooringLine> map_mooring_lines(const MapInput& map, int body, double
   for (std::size_t k = 0; k < out.size(); ++k) {
     const MapLine& l = map.lines[k % map.lines.size()];
     out[k].name = file + ":" + std::to_string(l.line) + ": Line " + std::to_string(l.id);
-    if (k >= map.lines.size()) out[k].name += " (repeat " + number_text(map.repeat_deg[k / map.lines.size() - 1]) + " deg)";
+    if (k >= map.lines.size())
+      out[k].name += " (repeat " + numberText(map.repeat_deg[k / map.lines.size() - 1]) + " deg)";
   }
   return out;
 }

@@ -44,13 +44,13 @@ struct MapInput {
 };
 
 /// Reads a MAP++ input file. InputError "file:line: key: reason" on anything malformed or refused.
-MapInput read_map(const std::filesystem::path& file);
+MapInput readMap(const std::filesystem::path& file);
 
 /// The mooring lines of `map` on body `body` (fairleads in its frame, whose origin is the platform
 /// reference point), for water depth `depth` [m], density `rho` [kg/m³] and gravity `g` [m/s²]: the
 /// weight in water w = (MassDenInAir − ρ π Diam²/4) g. InputError when a line floats (w ≤ 0), its
 /// anchor is not below its fairlead, straight below it (a vertical tendon: no catenary), or below the
 /// seabed.
-std::vector<MooringLine> map_mooring_lines(const MapInput& map, int body, double depth, double rho, double g);
+std::vector<MooringLine> mapMooringLines(const MapInput& map, int body, double depth, double rho, double g);
 
 }  // namespace whirl::io

@@ -19,11 +19,11 @@ struct Token {
   std::size_t end = 0;    ///< one past the last character
 };
 
-bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
-bool is_alpha(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_'; }
+bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
+bool isAlpha(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_'; }
 
-bool starts_with_ci(std::string_view s, std::string_view prefix) {
-  return s.size() >= prefix.size() && to_lower(s.substr(0, prefix.size())) == prefix;
+bool startsWithCi(std::string_view s, std::string_view prefix) {
+  return s.size() >= prefix.size() && toLower(s.substr(0, prefix.size())) == prefix;
 }
 
 /// Splits a line into tokens at blanks and commas; a token opening with a quote runs to the matching quote.
@@ -31,7 +31,7 @@ std::vector<Token> tokenize(std::string_view line) {
   std::vector<Token> out;
   std::size_t i = 0;
   while (i < line.size()) {
-    if (is_blank(line[i]) || line[i] == ',') {
+    if (isBlank(line[i]) || line[i] == ',') {
       ++i;
       continue;
     }
@@ -40,57 +40,53 @@ std::vector<Token> tokenize(std::string_view line) {
       const std::size_t close = line.find(line[i], i + 1);
       i = close == std::string_view::npos ? line.size() : close + 1;
     } else {
-      while (i < line.size() && !is_blank(line[i]) && line[i] != ',') ++i;
+      while (i < line.size() && !isBlank(line[i]) && line[i] != ',') ++i;
     }
     out.push_back({std::string(line.substr(b, i - b)), b, i});
   }
   return out;
 }
 
-bool is_quoted(std::string_view t) { return !t.empty() && (t.front() == '"' || t.front() == '\''); }
+bool isQuoted(std::string_view t) { return !t.empty() && (t.front() == '"' || t.front() == '\''); }
 
 std::string unquote(std::string_view t) {
-  if (!is_quoted(t)) return std::string(t);
+  if (!isQuoted(t)) return std::string(t);
   t.remove_prefix(1);
   if (!t.empty() && (t.back() == '"' || t.back() == '\'')) t.remove_suffix(1);
   return std::string(t);
 }
 
-std::optional<bool> parse_bool(std::string_view t) {
-  const std::string s = to_lower(unquote(t));
+std::optional<bool> parseBool(std::string_view t) {
+  const std::string s = toLower(unquote(t));
   if (s == "true" || s == "t" || s == ".true." || s == ".t.") return true;
   if (s == "false" || s == "f" || s == ".false." || s == ".f.") return false;
   return std::nullopt;
 }
 
-bool is_default(std::string_view t) { return to_lower(unquote(t)) == "default"; }
+bool isDefault(std::string_view t) { return toLower(unquote(t)) == "default"; }
 
 /// A token that can be (part of) a value rather than a key.
-bool is_value_token(std::string_view t) {
-  return is_quoted(t) || parse_fortran_double(t).has_value() || parse_bool(t).has_value() || is_default(t);
+bool isValueToken(std::string_view t) {
+  return isQuoted(t) || parseFortranDouble(t).has_value() || parseBool(t).has_value() || isDefault(t);
 }
 
 /// A token that looks like a key or a column name: starts with a letter or '_'.
-bool is_identifier(std::string_view t) { return !t.empty() && is_alpha(t.front()); }
+bool isIdentifier(std::string_view t) { return !t.empty() && isAlpha(t.front()); }
 
-bool is_separator(std::string_view trimmed) {
-  return trimmed.substr(0, 3) == "---" || trimmed.substr(0, 3) == "===";
+bool isSeparator(std::string_view trimmed) { return trimmed.substr(0, 3) == "---" || trimmed.substr(0, 3) == "==="; }
+
+bool isNumberRow(const std::vector<Token>& toks) {
+  return !toks.empty() &&
+         std::all_of(toks.begin(), toks.end(), [](const Token& t) { return parseFortranDouble(t.text).has_value(); });
 }
 
-bool is_number_row(const std::vector<Token>& toks) {
-  return !toks.empty() && std::all_of(toks.begin(), toks.end(), [](const Token& t) {
-           return parse_fortran_double(t.text).has_value();
-         });
-}
-
-bool is_table_header(const std::vector<Token>& toks) {
-  return toks.size() >= 2 && std::all_of(toks.begin(), toks.end(), [](const Token& t) {
-           return is_identifier(t.text) && !is_value_token(t.text);
-         });
+bool isTableHeader(const std::vector<Token>& toks) {
+  return toks.size() >= 2 && std::all_of(toks.begin(), toks.end(),
+                                         [](const Token& t) { return isIdentifier(t.text) && !isValueToken(t.text); });
 }
 
 /// "(-)  (kg/m)  (N m^2)" → {"(-)", "(kg/m)", "(N m^2)"}.
-std::vector<std::string> split_units(std::string_view line) {
+std::vector<std::string> splitUnits(std::string_view line) {
   std::vector<std::string> out;
   std::size_t i = 0;
   while ((i = line.find('(', i)) != std::string_view::npos) {
@@ -102,7 +98,7 @@ std::vector<std::string> split_units(std::string_view line) {
   return out;
 }
 
-std::vector<std::string_view> split_lines(std::string_view text) {
+std::vector<std::string_view> splitLines(std::string_view text) {
   std::vector<std::string_view> lines;
   std::size_t b = 0;
   while (b < text.size()) {
@@ -118,14 +114,14 @@ std::vector<std::string_view> split_lines(std::string_view text) {
 
 }  // namespace
 
-std::string to_lower(std::string_view s) {
+std::string toLower(std::string_view s) {
   std::string out(s);
   for (char& c : out)
     if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
   return out;
 }
 
-std::optional<double> parse_fortran_double(std::string_view text) {
+std::optional<double> parseFortranDouble(std::string_view text) {
   if (text.empty()) return std::nullopt;
   std::string s(text);
   if (s.front() == '+') s.erase(0, 1);
@@ -139,17 +135,17 @@ std::optional<double> parse_fortran_double(std::string_view text) {
   return v;
 }
 
-std::string canonical_key(std::string_view key) {
+std::string canonicalKey(std::string_view key) {
   std::string out;
   for (const char c : key)
-    if (c != '(' && c != ')' && !is_blank(c)) out += c;
-  return to_lower(out);
+    if (c != '(' && c != ')' && !isBlank(c)) out += c;
+  return toLower(out);
 }
 
-int OpenFastTable::column_index(std::string_view name) const {
-  const std::string n = to_lower(name);
+int OpenFastTable::columnIndex(std::string_view name) const {
+  const std::string n = toLower(name);
   for (std::size_t i = 0; i < columns.size(); ++i)
-    if (to_lower(columns[i]) == n) return static_cast<int>(i);
+    if (toLower(columns[i]) == n) return static_cast<int>(i);
   return -1;
 }
 
@@ -165,17 +161,17 @@ OpenFastFile OpenFastFile::read(const std::filesystem::path& file) {
 OpenFastFile OpenFastFile::parse(std::string_view text, const std::filesystem::path& file) {
   OpenFastFile f;
   f.path_ = file;
-  const std::vector<std::string_view> lines = split_lines(text);
+  const std::vector<std::string_view> lines = splitLines(text);
   bool in_outlist = false;
   bool title_seen = false;
   for (std::size_t i = 0; i < lines.size(); ++i) {
     const int lineno = static_cast<int>(i) + 1;
     const std::string_view t = trimBlanks(lines[i]);
     if (in_outlist) {
-      if (starts_with_ci(t, "end")) in_outlist = false;
+      if (startsWithCi(t, "end")) in_outlist = false;
       continue;
     }
-    if (t.empty() || is_separator(t)) continue;
+    if (t.empty() || isSeparator(t)) continue;
     if (!title_seen) {
       title_seen = true;
       if (lineno <= 3) {
@@ -185,17 +181,17 @@ OpenFastFile OpenFastFile::parse(std::string_view text, const std::filesystem::p
       }
     }
     const std::vector<Token> toks = tokenize(lines[i]);
-    if (is_table_header(toks) && i + 1 < lines.size() && trimBlanks(lines[i + 1]).substr(0, 1) == "(") {
+    if (isTableHeader(toks) && i + 1 < lines.size() && trimBlanks(lines[i + 1]).substr(0, 1) == "(") {
       OpenFastTable tab;
       tab.header_line = lineno;
       for (const Token& tk : toks) tab.columns.push_back(tk.text);
-      tab.units = split_units(lines[i + 1]);
+      tab.units = splitUnits(lines[i + 1]);
       std::size_t r = i + 2;
       for (; r < lines.size(); ++r) {
         const std::vector<Token> row = tokenize(lines[r]);
-        if (!is_number_row(row)) break;
+        if (!isNumberRow(row)) break;
         std::vector<double> values;
-        for (const Token& tk : row) values.push_back(*parse_fortran_double(tk.text));
+        for (const Token& tk : row) values.push_back(*parseFortranDouble(tk.text));
         tab.rows.push_back(std::move(values));
         tab.row_lines.push_back(static_cast<int>(r) + 1);
       }
@@ -207,15 +203,15 @@ OpenFastFile OpenFastFile::parse(std::string_view text, const std::filesystem::p
     }
     if (toks.empty()) continue;
     // A key without a value, e.g. "OutList  - The next line(s) contains a list of output parameters".
-    if (is_identifier(toks[0].text) && (toks.size() == 1 || toks[1].text.front() == '-')) {
+    if (isIdentifier(toks[0].text) && (toks.size() == 1 || toks[1].text.front() == '-')) {
       // "OutList", and the nodal "OutListED"/"OutList_Nodes" blocks of OpenFAST v3+, run to "END".
-      if (starts_with_ci(toks[0].text, "outlist")) in_outlist = true;
+      if (startsWithCi(toks[0].text, "outlist")) in_outlist = true;
       continue;
     }
     // value tokens (the first always), then the key.
     std::size_t k = 1;
-    while (k < toks.size() && is_value_token(toks[k].text)) ++k;
-    if (k >= toks.size() || !is_identifier(toks[k].text)) continue;  // no key: not a value line
+    while (k < toks.size() && isValueToken(toks[k].text)) ++k;
+    if (k >= toks.size() || !isIdentifier(toks[k].text)) continue;  // no key: not a value line
     OpenFastEntry e;
     e.key = toks[k].text;
     // "BldFile( 1 )": the index was split off at the blanks; join it back up to the closing parenthesis.
@@ -228,14 +224,14 @@ OpenFastFile OpenFastFile::parse(std::string_view text, const std::filesystem::p
     e.raw = std::string(lines[i].substr(toks[0].begin, toks[k - 1].end - toks[0].begin));
     for (std::size_t j = 0; j < k; ++j) e.tokens.push_back(toks[j].text);
     e.line = lineno;
-    f.index_.emplace(canonical_key(e.key), f.entries_.size());  // keeps the first of duplicated keys
+    f.index_.emplace(canonicalKey(e.key), f.entries_.size());  // keeps the first of duplicated keys
     f.entries_.push_back(std::move(e));
   }
   return f;
 }
 
 const OpenFastEntry* OpenFastFile::find(std::string_view key) const {
-  const auto it = index_.find(canonical_key(key));
+  const auto it = index_.find(canonicalKey(key));
   return it == index_.end() ? nullptr : &entries_[it->second];
 }
 
@@ -254,7 +250,7 @@ std::string OpenFastFile::where(const OpenFastEntry& e, const std::string& reaso
   return whirl::where(path_.string(), e.line, e.key, e.overridden ? reason + " (value set by override)" : reason);
 }
 
-std::string OpenFastFile::single_token(const OpenFastEntry& e, const char* what) const {
+std::string OpenFastFile::singleToken(const OpenFastEntry& e, const char* what) const {
   if (e.tokens.empty()) throw InputError(where(e, std::string("no value, expected ") + what));
   if (e.tokens.size() > 1)
     throw InputError(where(e, "expected one " + std::string(what) + ", found '" + e.raw + "'"));
@@ -262,8 +258,8 @@ std::string OpenFastFile::single_token(const OpenFastEntry& e, const char* what)
 }
 
 namespace {
-double finite_or_throw(const OpenFastFile& f, std::string_view key, std::string_view tok) {
-  const std::optional<double> v = parse_fortran_double(tok);
+double finiteOrThrow(const OpenFastFile& f, std::string_view key, std::string_view tok) {
+  const std::optional<double> v = parseFortranDouble(tok);
   if (!v) throw InputError(f.where(key, "'" + std::string(tok) + "' is not a number"));
   if (std::isnan(*v)) throw InputError(f.where(key, "value is NaN"));
   if (std::isinf(*v)) throw InputError(f.where(key, "value is infinite"));
@@ -271,18 +267,18 @@ double finite_or_throw(const OpenFastFile& f, std::string_view key, std::string_
 }
 }  // namespace
 
-double OpenFastFile::get_double(std::string_view key) const {
-  return finite_or_throw(*this, key, single_token(require(key), "number"));
+double OpenFastFile::getDouble(std::string_view key) const {
+  return finiteOrThrow(*this, key, singleToken(require(key), "number"));
 }
 
-std::optional<double> OpenFastFile::get_double_or_default(std::string_view key) const {
-  const std::string tok = single_token(require(key), "number or \"default\"");
-  if (is_default(tok)) return std::nullopt;
-  return finite_or_throw(*this, key, tok);
+std::optional<double> OpenFastFile::getDoubleOrDefault(std::string_view key) const {
+  const std::string tok = singleToken(require(key), "number or \"default\"");
+  if (isDefault(tok)) return std::nullopt;
+  return finiteOrThrow(*this, key, tok);
 }
 
-int OpenFastFile::get_int(std::string_view key) const {
-  std::string tok = single_token(require(key), "integer");
+int OpenFastFile::getInt(std::string_view key) const {
+  std::string tok = singleToken(require(key), "integer");
   const std::string shown = tok;
   if (!tok.empty() && tok.front() == '+') tok.erase(0, 1);
   long long v = 0;
@@ -294,19 +290,17 @@ int OpenFastFile::get_int(std::string_view key) const {
   return static_cast<int>(v);
 }
 
-bool OpenFastFile::get_bool(std::string_view key) const {
-  const std::string tok = single_token(require(key), "True/False flag");
-  const std::optional<bool> b = parse_bool(tok);
+bool OpenFastFile::getBool(std::string_view key) const {
+  const std::string tok = singleToken(require(key), "True/False flag");
+  const std::optional<bool> b = parseBool(tok);
   if (!b) throw InputError(where(key, "'" + tok + "' is not True or False"));
   return *b;
 }
 
-std::string OpenFastFile::get_string(std::string_view key) const {
-  return unquote(single_token(require(key), "string"));
-}
+std::string OpenFastFile::getString(std::string_view key) const { return unquote(singleToken(require(key), "string")); }
 
-std::filesystem::path OpenFastFile::get_path(std::string_view key) const {
-  std::string s = get_string(key);
+std::filesystem::path OpenFastFile::getPath(std::string_view key) const {
+  std::string s = getString(key);
   std::replace(s.begin(), s.end(), '\\', '/');
   if (s.empty()) throw InputError(where(key, "empty file name"));
   const std::filesystem::path p(s);
@@ -314,41 +308,41 @@ std::filesystem::path OpenFastFile::get_path(std::string_view key) const {
   return (path_.parent_path() / p).lexically_normal();
 }
 
-std::filesystem::path OpenFastFile::get_existing_path(std::string_view key) const {
-  const std::filesystem::path p = get_path(key);
+std::filesystem::path OpenFastFile::getExistingPath(std::string_view key) const {
+  const std::filesystem::path p = getPath(key);
   std::error_code ec;
   if (!std::filesystem::is_regular_file(p, ec)) throw InputError(where(key, "file not found: " + p.string()));
   return p;
 }
 
-std::vector<double> OpenFastFile::get_doubles(std::string_view key) const {
+std::vector<double> OpenFastFile::getDoubles(std::string_view key) const {
   const OpenFastEntry& e = require(key);
   if (e.tokens.empty()) throw InputError(where(e, "no value, expected a list of numbers"));
   std::vector<double> out;
-  for (const std::string& tok : e.tokens) out.push_back(finite_or_throw(*this, key, tok));
+  for (const std::string& tok : e.tokens) out.push_back(finiteOrThrow(*this, key, tok));
   return out;
 }
 
-std::optional<double> OpenFastFile::find_double(std::string_view key) const {
-  return has(key) ? std::optional<double>(get_double(key)) : std::nullopt;
+std::optional<double> OpenFastFile::findDouble(std::string_view key) const {
+  return has(key) ? std::optional<double>(getDouble(key)) : std::nullopt;
 }
 
-std::optional<int> OpenFastFile::find_int(std::string_view key) const {
-  return has(key) ? std::optional<int>(get_int(key)) : std::nullopt;
+std::optional<int> OpenFastFile::findInt(std::string_view key) const {
+  return has(key) ? std::optional<int>(getInt(key)) : std::nullopt;
 }
 
-std::optional<bool> OpenFastFile::find_bool(std::string_view key) const {
-  return has(key) ? std::optional<bool>(get_bool(key)) : std::nullopt;
+std::optional<bool> OpenFastFile::findBool(std::string_view key) const {
+  return has(key) ? std::optional<bool>(getBool(key)) : std::nullopt;
 }
 
-void OpenFastFile::check_layout(const OpenFastLayout& layout) const {
-  // Position in `keys` of the key spelled `key` (any spelling canonical_key accepts), or npos. A layout
+void OpenFastFile::checkLayout(const OpenFastLayout& layout) const {
+  // Position in `keys` of the key spelled `key` (any spelling canonicalKey accepts), or npos. A layout
   // key written `Name(k)` is an array: `Name` and an index ("bldfile1" from BldFile(1) or BldFile1).
   auto position = [](const std::vector<std::string_view>& keys, const std::string& key) {
-    const std::string c = canonical_key(key);
+    const std::string c = canonicalKey(key);
     for (std::size_t i = 0; i < keys.size(); ++i) {
       const bool array = keys[i].size() > 3 && keys[i].substr(keys[i].size() - 3) == "(k)";
-      const std::string k = to_lower(array ? keys[i].substr(0, keys[i].size() - 3) : keys[i]);
+      const std::string k = toLower(array ? keys[i].substr(0, keys[i].size() - 3) : keys[i]);
       if (!array && c == k) return i;
       if (array && c.size() > k.size() && c.compare(0, k.size(), k) == 0 &&
           c.find_first_not_of("0123456789", k.size()) == std::string::npos)
@@ -383,7 +377,7 @@ void OpenFastFile::check_layout(const OpenFastLayout& layout) const {
                                         "value; remove it (or check the file type)"));
     }
     previous = at[i];
-    const auto [it, inserted] = first_line.emplace(canonical_key(e.key), e.line);
+    const auto [it, inserted] = first_line.emplace(canonicalKey(e.key), e.line);
     if (!inserted && position(layout.repeatable, e.key) == std::string::npos)
       throw InputError(whirl::where(path_.string(), e.line, e.key,
                                     "given twice (first on line " + std::to_string(it->second) +
@@ -392,14 +386,14 @@ void OpenFastFile::check_layout(const OpenFastLayout& layout) const {
   }
 }
 
-const OpenFastTable* OpenFastFile::find_table(std::string_view column) const {
+const OpenFastTable* OpenFastFile::findTable(std::string_view column) const {
   for (const OpenFastTable& t : tables_)
-    if (t.column_index(column) >= 0) return &t;
+    if (t.columnIndex(column) >= 0) return &t;
   return nullptr;
 }
 
-void OpenFastFile::set_value(std::string_view key, const std::string& value) {
-  const auto it = index_.find(canonical_key(key));
+void OpenFastFile::setValue(std::string_view key, const std::string& value) {
+  const auto it = index_.find(canonicalKey(key));
   if (it == index_.end())
     throw InputError(whirl::where(path_.string(), 0, std::string(key), "unknown key (not in this file)"));
   OpenFastEntry& e = entries_[it->second];

@@ -13,11 +13,11 @@
 ///   per line (the count is given by a key such as `NTwInpSt`; checking it is the typed reader's job).
 ///
 /// Each key keeps its raw value and line number so that every error reads "file:line: key: reason".
-/// Keys are matched by `canonical_key` (case-insensitive, `Name(k)` = `Namek`). When a key appears twice (e.g. `EDFile` of a
-/// second rotor in OpenFAST v5), the first occurrence is the one returned and overridden; the typed
-/// readers call `check_layout` first, which refuses keys given twice (except those a layout repeats)
-/// and keys the layout does not have: OpenFAST reads these files by position, so an extra or repeated
-/// line shifts every later value, and whirl, reading by key, would silently disagree with OpenFAST.
+/// Keys are matched by `canonicalKey` (case-insensitive, `Name(k)` = `Namek`). When a key appears twice (e.g. `EDFile`
+/// of a second rotor in OpenFAST v5), the first occurrence is the one returned and overridden; the typed readers call
+/// `checkLayout` first, which refuses keys given twice (except those a layout repeats) and keys the layout does not
+/// have: OpenFAST reads these files by position, so an extra or repeated line shifts every later value, and whirl,
+/// reading by key, would silently disagree with OpenFAST.
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -47,10 +47,10 @@ struct OpenFastTable {
   bool ends_at_eof = false;               ///< true when the file ended right after the last row
 
   /// Index of a column by name, case-insensitive; -1 when absent.
-  int column_index(std::string_view name) const;
+  int columnIndex(std::string_view name) const;
 };
 
-/// The keys of one OpenFAST file type, over the versions whirl reads (for OpenFastFile::check_layout).
+/// The keys of one OpenFAST file type, over the versions whirl reads (for OpenFastFile::checkLayout).
 struct OpenFastLayout {
   const char* name = "";                     ///< file type for messages, e.g. "ElastoDyn"
   /// Every key in file order (versions merged); an array written `Name(k)` (its entries `Name(1)`,
@@ -59,7 +59,7 @@ struct OpenFastLayout {
   std::vector<std::string_view> repeatable;  ///< keys that may appear more than once (same spelling rule)
 };
 
-/// A parsed OpenFAST input file. Read-only apart from `set_value` (overrides).
+/// A parsed OpenFAST input file. Read-only apart from `setValue` (overrides).
 class OpenFastFile {
  public:
   /// Reads and tokenizes a file. Throws InputError("file: cannot open file") when it cannot be read.
@@ -70,11 +70,11 @@ class OpenFastFile {
   const std::filesystem::path& path() const { return path_; }
   /// The title line, tabs turned into spaces (it may hold other control characters: check before use).
   const std::string& title() const { return title_; }
-  int title_line() const { return title_line_; }  ///< 1-based, 0 without a title
+  int titleLine() const { return title_line_; }  ///< 1-based, 0 without a title
   const std::vector<OpenFastEntry>& entries() const { return entries_; }
   const std::vector<OpenFastTable>& tables() const { return tables_; }
 
-  /// The entry of `key` (matched by canonical_key: case-insensitive, `BldFile(1)` finds `BldFile1`), or nullptr.
+  /// The entry of `key` (matched by canonicalKey: case-insensitive, `BldFile(1)` finds `BldFile1`), or nullptr.
   const OpenFastEntry* find(std::string_view key) const;
   bool has(std::string_view key) const { return find(key) != nullptr; }
 
@@ -83,43 +83,43 @@ class OpenFastFile {
 
   // Typed getters. Each throws InputError naming file, line and key when the key is missing, when the
   // value is not of the type asked for, or (numbers) when it is NaN or infinite.
-  double get_double(std::string_view key) const;
+  double getDouble(std::string_view key) const;
   /// nullopt when the value is `default` (any case, quoted or not).
-  std::optional<double> get_double_or_default(std::string_view key) const;
-  int get_int(std::string_view key) const;
+  std::optional<double> getDoubleOrDefault(std::string_view key) const;
+  int getInt(std::string_view key) const;
   /// True/False, T/F, .true./.false. in any case.
-  bool get_bool(std::string_view key) const;
+  bool getBool(std::string_view key) const;
   /// The value with its quotes removed.
-  std::string get_string(std::string_view key) const;
+  std::string getString(std::string_view key) const;
   /// A file name, resolved against the folder of this file (backslashes read as '/').
-  std::filesystem::path get_path(std::string_view key) const;
-  /// Like get_path, but throws InputError("file:line: key: file not found: …") when it does not exist.
-  std::filesystem::path get_existing_path(std::string_view key) const;
+  std::filesystem::path getPath(std::string_view key) const;
+  /// Like getPath, but throws InputError("file:line: key: file not found: …") when it does not exist.
+  std::filesystem::path getExistingPath(std::string_view key) const;
   /// All numbers of a list value such as `10, 19, 28`.
-  std::vector<double> get_doubles(std::string_view key) const;
+  std::vector<double> getDoubles(std::string_view key) const;
 
   // Optional variants: nullopt when the key is absent, same errors as above when it is present but bad.
-  std::optional<double> find_double(std::string_view key) const;
-  std::optional<int> find_int(std::string_view key) const;
-  std::optional<bool> find_bool(std::string_view key) const;
+  std::optional<double> findDouble(std::string_view key) const;
+  std::optional<int> findInt(std::string_view key) const;
+  std::optional<bool> findBool(std::string_view key) const;
 
   /// Refuses a key given twice ("file:line: key: given twice (first on line N) …") unless the layout
   /// lists it as repeatable (`BldFile1` and `BldFile(1)` are the same key), and a key the layout does
   /// not have ("file:line: key: not a key of a … file (expected K here)", K being the layout keys the
   /// file lacks between the known keys around that line).
-  void check_layout(const OpenFastLayout& layout) const;
+  void checkLayout(const OpenFastLayout& layout) const;
 
   /// The first table that has a column `column` (case-insensitive), or nullptr.
-  const OpenFastTable* find_table(std::string_view column) const;
+  const OpenFastTable* findTable(std::string_view column) const;
 
   /// Replaces the value of an existing key (the `--set KEY=VALUE` override).
   /// Throws InputError("file: key: unknown key") when the key is not in this file.
-  void set_value(std::string_view key, const std::string& value);
+  void setValue(std::string_view key, const std::string& value);
 
  private:
   const OpenFastEntry& require(std::string_view key) const;
   std::string where(const OpenFastEntry& e, const std::string& reason) const;
-  std::string single_token(const OpenFastEntry& e, const char* what) const;
+  std::string singleToken(const OpenFastEntry& e, const char* what) const;
 
   std::filesystem::path path_;
   std::string title_;
@@ -131,7 +131,7 @@ class OpenFastFile {
 
 /// Number parsing shared by the OpenFAST readers: accepts a leading '+' and Fortran 'D' exponents;
 /// nullopt unless the whole text is a number. NaN and inf are returned as such (callers reject them).
-std::optional<double> parse_fortran_double(std::string_view text);
+std::optional<double> parseFortranDouble(std::string_view text);
 
 /// The one rule by which whirl matches the label of a value line to the key it expects, the labels of
 /// every OpenFAST version being accepted: case-insensitive (as Fortran), and an array entry written
@@ -140,9 +140,9 @@ std::optional<double> parse_fortran_double(std::string_view text);
 /// only loosely (ElastoDyn reads `BldFile(k)` with ReadVar, which ignores the label), so files written
 /// with either spelling run there. Returns the lower-case label without parentheses and blanks:
 /// "BldFile(1)", "BldFile( 1 )" and "BldFile1" all give "bldfile1".
-std::string canonical_key(std::string_view key);
+std::string canonicalKey(std::string_view key);
 
 /// Lower-case copy (ASCII), for case-insensitive key and column names.
-std::string to_lower(std::string_view s);
+std::string toLower(std::string_view s);
 
 }  // namespace whirl::io

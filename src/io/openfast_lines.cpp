@@ -9,29 +9,29 @@
 namespace whirl::io {
 namespace {
 
-bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
+bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
 
-char first_nonblank(std::string_view line) {
+char firstNonblank(std::string_view line) {
   for (char c : line)
-    if (!is_blank(c)) return c;
+    if (!isBlank(c)) return c;
   return '\0';
 }
 
 }  // namespace
 
-bool is_comment_line(std::string_view line) {
-  const char c = first_nonblank(line);
+bool isCommentLine(std::string_view line) {
+  const char c = firstNonblank(line);
   return c == '!' || c == '#' || c == '%';
 }
 
-bool is_blank_line(std::string_view line) { return first_nonblank(line) == '\0'; }
+bool isBlankLine(std::string_view line) { return firstNonblank(line) == '\0'; }
 
-std::vector<std::string> split_words(std::string_view line) {
+std::vector<std::string> splitWords(std::string_view line) {
   std::vector<std::string> out;
   std::size_t i = 0;
   while (i < line.size()) {
     const char c = line[i];
-    if (is_blank(c) || c == ',') {
+    if (isBlank(c) || c == ',') {
       ++i;
       continue;
     }
@@ -41,7 +41,7 @@ std::vector<std::string> split_words(std::string_view line) {
       const std::size_t close = line.find(c, i + 1);
       i = close == std::string_view::npos ? line.size() : close + 1;
     } else {
-      while (i < line.size() && !is_blank(line[i]) && line[i] != ',' && line[i] != '!') ++i;
+      while (i < line.size() && !isBlank(line[i]) && line[i] != ',' && line[i] != '!') ++i;
     }
     out.emplace_back(line.substr(b, i - b));
   }
@@ -56,13 +56,13 @@ std::string unquoted(std::string_view word) {
   return std::string(word);
 }
 
-std::optional<std::vector<double>> parse_number_row(std::string_view line) {
-  const std::vector<std::string> words = split_words(line);
+std::optional<std::vector<double>> parseNumberRow(std::string_view line) {
+  const std::vector<std::string> words = splitWords(line);
   if (words.empty()) return std::nullopt;
   std::vector<double> out;
   out.reserve(words.size());
   for (const std::string& w : words) {
-    const std::optional<double> v = parse_fortran_double(w);
+    const std::optional<double> v = parseFortranDouble(w);
     if (!v) return std::nullopt;
     out.push_back(*v);
   }
@@ -75,10 +75,10 @@ OpenFastLines OpenFastLines::read(const std::filesystem::path& file) {
     throw InputError(whirl::where(file.string(), 0, "", "cannot open file"));
   std::ostringstream ss;
   ss << in.rdbuf();
-  return from_text(ss.str(), file);
+  return fromText(ss.str(), file);
 }
 
-OpenFastLines OpenFastLines::from_text(std::string_view text, const std::filesystem::path& file) {
+OpenFastLines OpenFastLines::fromText(std::string_view text, const std::filesystem::path& file) {
   OpenFastLines l;
   l.path_ = file;
   std::size_t b = 0;
@@ -105,16 +105,16 @@ std::string OpenFastLines::text() const {
   return out;
 }
 
-std::string OpenFastLines::text_without_comments() const {
+std::string OpenFastLines::textWithoutComments() const {
   std::string out;
-  for (const std::string& l : lines_) out += (is_comment_line(l) ? std::string() : l) + '\n';
+  for (const std::string& l : lines_) out += (isCommentLine(l) ? std::string() : l) + '\n';
   return out;
 }
 
-std::optional<int> OpenFastLines::next_content_line(int n) const {
+std::optional<int> OpenFastLines::nextContentLine(int n) const {
   for (int i = n + 1; i <= count(); ++i) {
     const std::string& l = line(i);
-    if (!is_blank_line(l) && !is_comment_line(l)) return i;
+    if (!isBlankLine(l) && !isCommentLine(l)) return i;
   }
   return std::nullopt;
 }

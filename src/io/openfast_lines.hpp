@@ -21,7 +21,7 @@ class OpenFastLines {
   /// Reads a file. Throws InputError("file: cannot open file") when it cannot be read.
   static OpenFastLines read(const std::filesystem::path& file);
   /// Splits `text`; `file` is only used in messages.
-  static OpenFastLines from_text(std::string_view text, const std::filesystem::path& file);
+  static OpenFastLines fromText(std::string_view text, const std::filesystem::path& file);
 
   const std::filesystem::path& path() const { return path_; }
   int count() const { return static_cast<int>(lines_.size()); }
@@ -30,10 +30,10 @@ class OpenFastLines {
   /// The whole text again, lines joined with '\n'.
   std::string text() const;
   /// The text with every comment line replaced by an empty line (line numbers unchanged).
-  std::string text_without_comments() const;
+  std::string textWithoutComments() const;
 
   /// The first line after `n` that is neither blank nor a comment; nullopt at the end of the file.
-  std::optional<int> next_content_line(int n) const;
+  std::optional<int> nextContentLine(int n) const;
 
  private:
   std::filesystem::path path_;
@@ -41,13 +41,13 @@ class OpenFastLines {
 };
 
 /// True when the first non-blank character is '!', '#' or '%'.
-bool is_comment_line(std::string_view line);
+bool isCommentLine(std::string_view line);
 /// True when the line holds only blanks.
-bool is_blank_line(std::string_view line);
+bool isBlankLine(std::string_view line);
 
 /// Splits a line into words at blanks and commas; a word opening with a quote runs to the closing quote
 /// (quotes kept). Text from a '!' outside quotes onwards is a comment and is dropped.
-std::vector<std::string> split_words(std::string_view line);
+std::vector<std::string> splitWords(std::string_view line);
 
 /// The word without its surrounding quotes.
 std::string unquoted(std::string_view word);
@@ -55,6 +55,6 @@ std::string unquoted(std::string_view word);
 /// The numbers of a row such as "-180.00  0.000  0.0185  0.0000" (Fortran 'D' exponents accepted;
 /// NaN and inf returned as such for the caller to report); nullopt when any word is not a number or
 /// the line is empty. Words after a '!' are ignored.
-std::optional<std::vector<double>> parse_number_row(std::string_view line);
+std::optional<std::vector<double>> parseNumberRow(std::string_view line);
 
 }  // namespace whirl::io

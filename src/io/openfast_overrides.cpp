@@ -6,7 +6,7 @@
 
 namespace whirl::io {
 
-KeyOverride parse_override(std::string_view text) {
+KeyOverride parseOverride(std::string_view text) {
   const std::size_t eq = text.find('=');
   auto bad = [&](const char* reason) {
     return InputError("--set '" + std::string(text) + "': " + reason);
@@ -26,17 +26,17 @@ KeyOverride parse_override(std::string_view text) {
 OverrideSet::OverrideSet(std::vector<KeyOverride> overrides)
     : overrides_(std::move(overrides)), used_(overrides_.size(), false) {}
 
-void OverrideSet::apply_to(OpenFastFile& file) {
+void OverrideSet::applyTo(OpenFastFile& file) {
   const std::string name = file.path().string();
   if (std::find(files_.begin(), files_.end(), name) == files_.end()) files_.push_back(name);
   for (std::size_t i = 0; i < overrides_.size(); ++i) {
     if (!file.has(overrides_[i].key)) continue;
-    file.set_value(overrides_[i].key, overrides_[i].value);
+    file.setValue(overrides_[i].key, overrides_[i].value);
     used_[i] = true;
   }
 }
 
-void OverrideSet::require_all_used() const {
+void OverrideSet::requireAllUsed() const {
   const auto it = std::find(used_.begin(), used_.end(), false);
   if (it == used_.end()) return;
   std::string list;

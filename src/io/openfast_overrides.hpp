@@ -5,7 +5,7 @@
 /// An override replaces the value of a key wherever a reader meets that key: a run reads several files
 /// (.fst, ElastoDyn, tower, blade, ServoDyn), and `--set NacMass=250000` or `--set TwFAM1Sh(2)=0.71`
 /// should not need to say which. A key that no file read contains is an error ("unknown key"), checked
-/// once all files are read by `require_all_used`.
+/// once all files are read by `requireAllUsed`.
 #include <string>
 #include <string_view>
 #include <vector>
@@ -21,7 +21,7 @@ struct KeyOverride {
 };
 
 /// Parses "KEY=VALUE". Throws InputError("--set 'text': reason") when '=' is missing or a side is empty.
-KeyOverride parse_override(std::string_view text);
+KeyOverride parseOverride(std::string_view text);
 
 /// Overrides to apply to every file read, with a record of which ones some file used.
 class OverrideSet {
@@ -30,11 +30,11 @@ class OverrideSet {
   explicit OverrideSet(std::vector<KeyOverride> overrides);
 
   /// Sets each override whose key `file` contains; remembers the file name for messages.
-  void apply_to(OpenFastFile& file);
+  void applyTo(OpenFastFile& file);
 
   /// Throws InputError("key: unknown key (not in any file read: a.fst, b.dat)") for the first override
   /// that no file contained.
-  void require_all_used() const;
+  void requireAllUsed() const;
 
   bool empty() const { return overrides_.empty(); }
 

@@ -5,25 +5,25 @@
 
 namespace whirl::io {
 
-OpenFastTurbine read_openfast_turbine(const std::filesystem::path& fst, OverrideSet* overrides) {
+OpenFastTurbine readOpenFastTurbine(const std::filesystem::path& fst, OverrideSet* overrides) {
   OpenFastTurbine t;
-  t.fst = read_fst(fst, overrides);
-  t.elastodyn = read_elastodyn(t.fst.source.get_existing_path("EDFile"), overrides);
+  t.fst = readFst(fst, overrides);
+  t.elastodyn = readElastoDyn(t.fst.source.getExistingPath("EDFile"), overrides);
   if (t.fst.CompSub == 1) {
-    // HydroDyn and moorings on a SubDyn substructure are refused by require_supported, unread.
-    t.subdyn = read_subdyn(t.fst.source.get_existing_path("SubFile"), overrides);
-  } else if (has_platform_dofs(t.elastodyn)) {
-    if (t.fst.CompHydro == 1) t.hydrodyn = read_hydrodyn(t.fst.source.get_existing_path("HydroFile"), overrides);
-    if (t.fst.CompMooring == 1) t.mooring = read_map(t.fst.source.get_existing_path("MooringFile"));
+    // HydroDyn and moorings on a SubDyn substructure are refused by requireSupported, unread.
+    t.subdyn = readSubDyn(t.fst.source.getExistingPath("SubFile"), overrides);
+  } else if (hasPlatformDofs(t.elastodyn)) {
+    if (t.fst.CompHydro == 1) t.hydrodyn = readHydroDyn(t.fst.source.getExistingPath("HydroFile"), overrides);
+    if (t.fst.CompMooring == 1) t.mooring = readMap(t.fst.source.getExistingPath("MooringFile"));
   }
   return t;
 }
 
-std::optional<ServoDynInput> read_servodyn_if_enabled(const FstInput& fst, OverrideSet* overrides) {
+std::optional<ServoDynInput> readServoDynIfEnabled(const FstInput& fst, OverrideSet* overrides) {
   if (fst.CompServo == 0) return std::nullopt;
   const OpenFastFile& f = fst.source;
   const char* key = f.has("ServoFile") || !f.has("SrvDFile") ? "ServoFile" : "SrvDFile";
-  return read_servodyn(f.get_existing_path(key), overrides);
+  return readServoDyn(f.getExistingPath(key), overrides);
 }
 
 double gravity(const OpenFastTurbine& turbine) {

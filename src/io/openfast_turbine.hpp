@@ -28,13 +28,13 @@ struct OpenFastTurbine {
 
 /// Reads `fst` and the ElastoDyn files it names, its SubDyn file (CompSub = 1), and otherwise, with a
 /// platform DOF on, its HydroDyn (CompHydro = 1) and MAP++ (CompMooring = 1) files. `overrides` (may be null) apply to
-/// every file read; call overrides->require_all_used() once all the files the run needs are read. Throws InputError
+/// every file read; call overrides->requireAllUsed() once all the files the run needs are read. Throws InputError
 /// naming file, line and key, e.g. "a.fst:33: EDFile: file not found: …".
-OpenFastTurbine read_openfast_turbine(const std::filesystem::path& fst, OverrideSet* overrides = nullptr);
+OpenFastTurbine readOpenFastTurbine(const std::filesystem::path& fst, OverrideSet* overrides = nullptr);
 
 /// The ServoDyn file when CompServo = 1, nullopt when ServoDyn is off (no yaw spring). Throws
 /// InputError("a.fst:39: ServoFile: file not found: …") when ServoDyn is on and its file is missing.
-std::optional<ServoDynInput> read_servodyn_if_enabled(const FstInput& fst, OverrideSet* overrides = nullptr);
+std::optional<ServoDynInput> readServoDynIfEnabled(const FstInput& fst, OverrideSet* overrides = nullptr);
 
 /// Gravity (m/s²): from the `.fst` when it has it (OpenFAST v3+), else from ElastoDyn (older layouts).
 /// Throws InputError when neither file gives it.

@@ -14,15 +14,15 @@ class Refusals {
  public:
   explicit Refusals(const OpenFastFile& f) : f_(f) {}
   /// Adds "file:line: key: <raw value> not supported by whirl (reason)" when `refused`.
-  void add_if(bool refused, const std::string& key, const std::string& reason) {
+  void addIf(bool refused, const std::string& key, const std::string& reason) {
     if (!refused) return;
     const OpenFastEntry* e = f_.find(key);
     const std::string value = e ? e->raw : "?";
     out_.push_back(f_.where(key, value + " not supported by whirl (" + reason + ")"));
   }
   /// The same with the reason "<what>; whirl supports only <supported>".
-  void add_if(bool refused, const std::string& key, const std::string& what, const std::string& supported) {
-    add_if(refused, key, what + "; whirl supports only " + supported);
+  void addIf(bool refused, const std::string& key, const std::string& what, const std::string& supported) {
+    addIf(refused, key, what + "; whirl supports only " + supported);
   }
   std::vector<std::string> take() { return std::move(out_); }
 
@@ -32,7 +32,7 @@ class Refusals {
 };
 
 /// Throws InputError with every message, "; "-separated, when there is any.
-inline void throw_if_any(const std::vector<std::string>& issues) {
+inline void throwIfAny(const std::vector<std::string>& issues) {
   if (issues.empty()) return;
   std::string msg;
   for (const std::string& s : issues) msg += (msg.empty() ? "" : "; ") + s;

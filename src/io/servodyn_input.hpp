@@ -16,7 +16,7 @@ class OverrideSet;
 /// Yaw spring/damper, control switches and generator keys of a ServoDyn file, in the file's units
 /// (YawNeut deg, speeds rpm on the high-speed shaft, torques N·m on the high-speed shaft, GenEff and
 /// slips in %). The control and generator keys are optional here so that a file cut down to its yaw
-/// section still reads; generator_torque_law() requires them.
+/// section still reads; generatorTorqueLaw() requires them.
 struct ServoDynInput {
   OpenFastFile source;   ///< the parsed file (path, line of every key: source.where(key, reason))
   int YCMode = 0;        ///< yaw control mode {0 none, 3 user routine, 4 Simulink, 5 DLL} (switch)
@@ -40,7 +40,7 @@ struct ServoDynInput {
 
 /// Reads the yaw keys of a ServoDyn file (YawSpr and YawDamp must not be negative) and, when present,
 /// the control and generator keys. Throws InputError naming file, line and key.
-ServoDynInput read_servodyn(const std::filesystem::path& file, OverrideSet* overrides = nullptr);
+ServoDynInput readServoDyn(const std::filesystem::path& file, OverrideSet* overrides = nullptr);
 
 /// How ServoDyn sets the generator torque.
 enum class TorqueControl {
@@ -67,6 +67,6 @@ struct GeneratorTorqueLaw {
 /// controller in user code (VSContrl = 3 routine, 4 Simulink/LabVIEW, 5 Bladed-style DLL) and, with
 /// VSContrl = 0, a generator model other than the simple induction generator (GenModel = 2 Thevenin,
 /// 3 user routine). Throws InputError when a key the law needs is missing or out of range.
-GeneratorTorqueLaw generator_torque_law(const ServoDynInput& servo);
+GeneratorTorqueLaw generatorTorqueLaw(const ServoDynInput& servo);
 
 }  // namespace whirl::io

@@ -38,9 +38,9 @@ class Reader {
   int count(const OpenFastEntry& e, int lo, int hi) const {
     int n = 0;
     if (f_.find(e.key) == &e) {
-      n = f_.get_int(e.key);
+      n = f_.getInt(e.key);
     } else {
-      const std::optional<double> v = e.tokens.size() == 1 ? parse_fortran_double(e.tokens[0]) : std::nullopt;
+      const std::optional<double> v = e.tokens.size() == 1 ? parseFortranDouble(e.tokens[0]) : std::nullopt;
       if (!v || *v != std::floor(*v) || std::abs(*v) > 1e9)
         throw InputError(where(e, "'" + e.raw + "' is not an integer"));
       n = static_cast<int>(*v);
@@ -64,7 +64,7 @@ class Reader {
             where(e, std::to_string(n) +
                          " rows expected below it (after the column-name and unit rows), the file ends after " +
                          std::to_string(k)));
-      const std::vector<std::string> w = split_words(lines_.line(ln));
+      const std::vector<std::string> w = splitWords(lines_.line(ln));
       if (w.empty() || isSection(lines_.line(ln)))
         throw InputError(where(e, std::to_string(n) +
                                       " rows expected below it (after the column-name and unit rows), line " +
@@ -73,14 +73,14 @@ class Reader {
       r.lines.push_back(ln);
     }
     const int next = e.line + 3 + n;
-    if (next <= lines_.count() && !isSection(lines_.line(next)) && !is_blank_line(lines_.line(next)))
+    if (next <= lines_.count() && !isSection(lines_.line(next)) && !isBlankLine(lines_.line(next)))
       throw InputError(where(e, "is " + std::to_string(n) + " but line " + std::to_string(next) +
                                     " is another row (expected a '---' section line after the table)"));
     return r;
   }
 
   double number(const std::string& w, int line, const std::string& key) const {
-    const std::optional<double> v = parse_fortran_double(w);
+    const std::optional<double> v = parseFortranDouble(w);
     if (!v) throw InputError(in_.where(line, key, "'" + w + "' is not a number"));
     if (!std::isfinite(*v)) throw InputError(in_.where(line, key, "'" + w + "' is not a finite number"));
     return *v;
@@ -96,7 +96,7 @@ class Reader {
   // The leading numeric words of a row (stops at the first word that is not a number).
   static int numericWords(const std::vector<std::string>& w) {
     int n = 0;
-    while (n < static_cast<int>(w.size()) && parse_fortran_double(w[n])) ++n;
+    while (n < static_cast<int>(w.size()) && parseFortranDouble(w[n])) ++n;
     return n;
   }
 
@@ -126,17 +126,17 @@ void checkDuplicates(const OpenFastFile& f) {
                         "NInterf",         "NMembers",     "NXPropSets",    "NCablePropSets", "NRigidPropSets",
                         "NSpringPropSets", "NCOSMs",       "NCmass"};
   for (const OpenFastEntry& e : f.entries()) {
-    const std::string k = canonical_key(e.key);
+    const std::string k = canonicalKey(e.key);
     const OpenFastEntry* first = f.find(e.key);
     if (first == &e) continue;
     if (k == "npropsets") {
       int seen = 0;
       for (const OpenFastEntry& x : f.entries())
-        if (canonical_key(x.key) == k && &x != &e && x.line < e.line) ++seen;
+        if (canonicalKey(x.key) == k && &x != &e && x.line < e.line) ++seen;
       if (seen < 2) continue;
     } else {
       bool ours = false;
-      for (const char* key : keys) ours = ours || canonical_key(key) == k;
+      for (const char* key : keys) ours = ours || canonicalKey(key) == k;
       if (!ours) continue;
     }
     throw InputError(whirl::where(f.path().string(), e.line, e.key,
@@ -148,27 +148,27 @@ void checkDuplicates(const OpenFastFile& f) {
 std::vector<const OpenFastEntry*> entriesOf(const OpenFastFile& f, const char* key) {
   std::vector<const OpenFastEntry*> out;
   for (const OpenFastEntry& e : f.entries())
-    if (canonical_key(e.key) == canonical_key(key)) out.push_back(&e);
+    if (canonicalKey(e.key) == canonicalKey(key)) out.push_back(&e);
   return out;
 }
 
 void readModes(SubDynInput& sd, Refusals& r) {
   const OpenFastFile& f = sd.source;
-  sd.FEMMod = f.get_int("FEMMod");
-  r.add_if(sd.FEMMod == 2 || sd.FEMMod == 4, "FEMMod", "tapered elements are not implemented (in SubDyn either)",
-           "1 (Euler-Bernoulli) or 3 (Timoshenko)");
+  sd.FEMMod = f.getInt("FEMMod");
+  r.addIf(sd.FEMMod == 2 || sd.FEMMod == 4, "FEMMod", "tapered elements are not implemented (in SubDyn either)",
+          "1 (Euler-Bernoulli) or 3 (Timoshenko)");
   if (sd.FEMMod != 1 && sd.FEMMod != 2 && sd.FEMMod != 3 && sd.FEMMod != 4)
     throw InputError(f.where("FEMMod", "must be 1 (Euler-Bernoulli) or 3 (Timoshenko)"));
-  sd.NDiv = f.get_int("NDiv");
+  sd.NDiv = f.getInt("NDiv");
   if (sd.NDiv < 1 || sd.NDiv > limits::kMaxSubDynNDiv)
     throw InputError(
         f.where("NDiv", "must be between 1 and " + std::to_string(limits::kMaxSubDynNDiv) + " (src/model/limits.hpp)"));
-  const int nmodes = f.get_int("Nmodes");
+  const int nmodes = f.getInt("Nmodes");
   if (nmodes > limits::kMaxReducedModes)
     throw InputError(
         f.where("Nmodes", "must be at most " + std::to_string(limits::kMaxReducedModes) + " (src/model/limits.hpp)"));
   // v1.01: CBMod = False keeps every mode (Nmodes ignored); from OpenFAST v2, Nmodes < 0 does.
-  const std::optional<bool> cb = f.find_bool("CBMod");
+  const std::optional<bool> cb = f.findBool("CBMod");
   if (cb && !*cb) {
     sd.Nmodes = -1;
   } else if (cb && nmodes < 0) {
@@ -177,7 +177,7 @@ void readModes(SubDynInput& sd, Refusals& r) {
     sd.Nmodes = nmodes < 0 ? -1 : nmodes;
   }
   if (sd.Nmodes == 0) return;  // Guyan: SubDyn reads the JDampings line as a comment
-  const std::vector<double> d = f.get_doubles("JDampings");
+  const std::vector<double> d = f.getDoubles("JDampings");
   if (d.empty()) throw InputError(f.where("JDampings", "expected at least one damping ratio (%)"));
   for (double x : d)
     if (!(x >= 0)) throw InputError(f.where("JDampings", "damping ratios must not be negative"));
@@ -187,23 +187,23 @@ void readModes(SubDynInput& sd, Refusals& r) {
 
 void readGuyanDamping(SubDynInput& sd, const Reader& rd) {
   const OpenFastFile& f = sd.source;
-  const std::optional<int> mod = f.find_int("GuyanDampMod");
+  const std::optional<int> mod = f.findInt("GuyanDampMod");
   if (!mod) return;  // v1.01: no Guyan damping
   sd.GuyanDampMod = *mod;
   if (sd.GuyanDampMod < 0 || sd.GuyanDampMod > 2)
     throw InputError(f.where("GuyanDampMod", "must be 0 (none), 1 (Rayleigh) or 2 (matrix)"));
   if (sd.GuyanDampMod == 1) {
-    const std::vector<double> ab = f.get_doubles("RayleighDamp");
+    const std::vector<double> ab = f.getDoubles("RayleighDamp");
     if (ab.size() < 2) throw InputError(f.where("RayleighDamp", "expected the two coefficients alpha, beta"));
     sd.RayleighDamp = {ab[0], ab[1]};
   }
   if (sd.GuyanDampMod == 2) {
     const OpenFastEntry& e = rd.entry("GuyanDampSize");
-    if (f.get_int("GuyanDampSize") != 6)
+    if (f.getInt("GuyanDampSize") != 6)
       throw InputError(f.where("GuyanDampSize", "must be 6 (one transition piece of a fixed-bottom substructure)"));
     for (int r = 0; r < 6; ++r) {
       const int ln = e.line + 1 + r;
-      const std::vector<std::string> w = split_words(rd.lines().line(ln));
+      const std::vector<std::string> w = splitWords(rd.lines().line(ln));
       if (w.size() < 6)
         throw InputError(
             sd.where(ln, "GuyanDampMat", "row " + std::to_string(r + 1) + " of the 6×6 matrix is not 6 numbers"));
@@ -334,7 +334,7 @@ void readMembers(SubDynInput& sd, const Reader& rd, std::vector<std::string>& re
   const Rows rows = rd.rows(e, n);
   // OpenFAST v2.5+ has an MType column (1 or 1c circular beam, 1r rectangular, 2 cable, 3 rigid link,
   // 4 arbitrary section, 5 spring); v1.01 members are all circular beams.
-  const bool typed = to_lower(rd.lines().line(rows.header_line)).find("mtype") != std::string::npos;
+  const bool typed = toLower(rd.lines().line(rows.header_line)).find("mtype") != std::string::npos;
   for (std::size_t k = 0; k < rows.words.size(); ++k) {
     const auto& w = rows.words[k];
     const int ln = rows.lines[k];
@@ -353,7 +353,7 @@ void readMembers(SubDynInput& sd, const Reader& rd, std::vector<std::string>& re
     for (const SubDynMember& o : sd.members)
       if (o.id == m.id) throw InputError(sd.where(ln, "MemberID", "member " + w[0] + " defined twice"));
     if (typed) {
-      const std::string t = to_lower(w[5]);
+      const std::string t = toLower(w[5]);
       const char* what = t == "1r"  ? "rectangular beams"
                          : t == "2" ? "pretension cables"
                          : t == "3" ? "rigid links"
@@ -499,10 +499,10 @@ std::string SubDynInput::where(int line, const std::string& key, const std::stri
   return whirl::where(source.path().string(), line, key, reason);
 }
 
-SubDynInput read_subdyn(const std::filesystem::path& file, OverrideSet* overrides) {
+SubDynInput readSubDyn(const std::filesystem::path& file, OverrideSet* overrides) {
   SubDynInput sd;
   sd.source = OpenFastFile::read(file);
-  if (overrides) overrides->apply_to(sd.source);
+  if (overrides) overrides->applyTo(sd.source);
   const OpenFastLines lines = OpenFastLines::read(file);
   checkDuplicates(sd.source);
   Refusals r(sd.source);
@@ -517,7 +517,7 @@ SubDynInput read_subdyn(const std::filesystem::path& file, OverrideSet* override
   readSections(sd, rd);
   checkMemberSections(sd, rd, refused);
   readMasses(sd, rd, refused);
-  throw_if_any(refused);
+  throwIfAny(refused);
   return sd;
 }
 

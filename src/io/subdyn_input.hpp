@@ -112,6 +112,6 @@ struct SubDynInput {
 /// each other (ids unique, members between distinct joints at distinct positions, property sets that
 /// exist and are circular, reaction and interface joints that exist and differ) and throws InputError
 /// `file:line: key: reason` for the first problem, or one message with every refusal.
-SubDynInput read_subdyn(const std::filesystem::path& file, OverrideSet* overrides = nullptr);
+SubDynInput readSubDyn(const std::filesystem::path& file, OverrideSet* overrides = nullptr);
 
 }  // namespace whirl::io

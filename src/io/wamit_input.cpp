@@ -18,9 +18,9 @@ std::filesystem::path wamitFile(const HydroDynInput& hd, const std::string& ext)
   if (std::filesystem::is_regular_file(p, ec)) return p;
   std::filesystem::path found;
   int matches = 0;
-  const std::string want = to_lower(p.filename().string());
+  const std::string want = toLower(p.filename().string());
   for (const auto& entry : std::filesystem::directory_iterator(p.parent_path(), ec))
-    if (to_lower(entry.path().filename().string()) == want) {
+    if (toLower(entry.path().filename().string()) == want) {
       found = entry.path();
       ++matches;
     }
@@ -47,7 +47,7 @@ std::vector<Row> numericRows(const std::filesystem::path& file, std::size_t min_
     Row r;
     r.line = n;
     for (std::string tok; ss >> tok;) {
-      const std::optional<double> x = parse_fortran_double(tok);
+      const std::optional<double> x = parseFortranDouble(tok);
       if (!x || !std::isfinite(*x)) throw InputError(whirl::where(file.string(), n, "", "'" + tok + "' is not a finite number"));
       r.v.push_back(*x);
     }
@@ -61,13 +61,13 @@ std::vector<Row> numericRows(const std::filesystem::path& file, std::size_t min_
 
 int index1to6(const std::filesystem::path& file, const Row& r, double x) {
   if (!(x >= 1 && x <= 6 && x == std::floor(x)))
-    throw InputError(whirl::where(file.string(), r.line, "", "mode index " + number_text(x) + " is not 1 to 6"));
+    throw InputError(whirl::where(file.string(), r.line, "", "mode index " + numberText(x) + " is not 1 to 6"));
   return static_cast<int>(x) - 1;
 }
 
 }  // namespace
 
-WamitMatrices read_wamit(const HydroDynInput& hd, double rho, double g) {
+WamitMatrices readWamit(const HydroDynInput& hd, double rho, double g) {
   WamitMatrices w;
   const double L = hd.WAMITULEN;
   const std::filesystem::path hst = wamitFile(hd, ".hst");

@@ -18,6 +18,6 @@ struct WamitMatrices {
 /// 4, 5). A file missing, a row that is not numbers, an index outside 1..6, or no infinite-frequency
 /// row → InputError "file:line: reason". A name that differs from the files only by case is accepted
 /// when the match is unique (the certification decks were written on Windows: `Spar` for `spar.hst`).
-WamitMatrices read_wamit(const HydroDynInput& hd, double rho, double g);
+WamitMatrices readWamit(const HydroDynInput& hd, double rho, double g);
 
 }  // namespace whirl::io

@@ -65,7 +65,7 @@ void addAerodynamics(Builder& b, const DrivetrainParts& dt, const RotorParts& ro
   const io::ElastoDynConfiguration& c = b.ed.config;
   Model& m = b.model();
   AeroModel& am = m.aero;
-  for (const io::AirfoilInput& af : deck.airfoils) am.polars.push_back(io::airfoil_polar(af, deck.aerodyn.UseBlCm));
+  for (const io::AirfoilInput& af : deck.airfoils) am.polars.push_back(io::airfoilPolar(af, deck.aerodyn.UseBlCm));
   const double length = c.TipRad - c.HubRad;
   // AeroDyn needs a blade file per blade, ADBlFile(1) to ADBlFile(NumBl); the reader takes those present.
   if (deck.blades.size() < rotor.blades.size())
@@ -113,7 +113,7 @@ void addAerodynamics(Builder& b, const DrivetrainParts& dt, const RotorParts& ro
 
 void addGeneratorTorqueLaw(Builder& b, const io::ServoDynInput& servo) {
   if (servo.VSContrl.value_or(0) == 0 && servo.GenModel.value_or(1) == 1 && !servo.SIG_SySp) return;
-  const io::GeneratorTorqueLaw law = io::generator_torque_law(servo);  // refuses controllers in user code
+  const io::GeneratorTorqueLaw law = io::generatorTorqueLaw(servo);  // refuses controllers in user code
   if (law.mode != io::TorqueControl::SimpleVariableSpeed)
     throw InputError(servo.source.where("VSContrl", "0 (simple induction generator): whirl models only the simple "
                                                     "variable-speed law (VSContrl = 1) in an aerodynamic model"));

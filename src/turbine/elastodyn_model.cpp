@@ -52,17 +52,17 @@ double gravityOf(const io::OpenFastTurbine& t, const ElastoDynModelOptions& opt)
 std::optional<io::ServoDynInput> yawSpring(const io::OpenFastTurbine& t, const ElastoDynModelOptions& opt) {
   if (!opt.yaw_spring_from_servodyn || !t.elastodyn.dof.YawDOF || t.fst.CompServo == 0) return std::nullopt;
   if (opt.servodyn) return opt.servodyn;
-  return io::read_servodyn_if_enabled(t.fst);  // InputError naming the .fst line when the file is missing
+  return io::readServoDynIfEnabled(t.fst);  // InputError naming the .fst line when the file is missing
 }
 
 }  // namespace
 
 Model buildElastoDynModel(const io::OpenFastTurbine& t, const ElastoDynModelOptions& opt) {
-  io::require_supported(t);
+  io::requireSupported(t);
   const io::ElastoDynInput& ed = t.elastodyn;
   elastodyn::Builder b{ed, opt, ModelBuilder{}};
   // The title names the model and titles the Campbell plot.
-  requirePrintable(ed.source.title(), ed.source.path().string(), ed.source.title_line(), "title");
+  requirePrintable(ed.source.title(), ed.source.path().string(), ed.source.titleLine(), "title");
   b.model().name = ed.source.title();
   b.model().gravity = Vec3(0, 0, -gravityOf(t, opt));
 
@@ -91,15 +91,15 @@ io::OpenFastTurbine readElastoDynTurbine(const std::string& path, const std::vec
                                          ElastoDynModelOptions& opt) {
   std::vector<io::KeyOverride> file_overrides;
   for (const std::string& text : overrides) {
-    io::KeyOverride o = io::parse_override(text);
-    if (io::to_lower(o.key) == "gravity") {  // a whirl option, whichever file has (or lacks) Gravity
-      const std::optional<double> g = io::parse_fortran_double(o.value);
+    io::KeyOverride o = io::parseOverride(text);
+    if (io::toLower(o.key) == "gravity") {  // a whirl option, whichever file has (or lacks) Gravity
+      const std::optional<double> g = io::parseFortranDouble(o.value);
       if (!g || !std::isfinite(*g)) throw InputError("--set '" + text + "': gravity: not a finite number");
       opt.gravity = *g;
       continue;
     }
-    if (io::to_lower(o.key) == "shapes") {  // a whirl option: the tower and blade shape functions
-      const std::string v = io::to_lower(o.value);
+    if (io::toLower(o.key) == "shapes") {  // a whirl option: the tower and blade shape functions
+      const std::string v = io::toLower(o.value);
       if (v != "fem" && v != "polynomial")
         throw InputError("--set '" + text + "': shapes: expected polynomial (the files' mode-shape polynomials) or fem");
       opt.fem_shapes = v == "fem";
@@ -110,22 +110,20 @@ io::OpenFastTurbine readElastoDynTurbine(const std::string& path, const std::vec
   io::OverrideSet set(std::move(file_overrides));
   const std::filesystem::path p(path);
   io::OpenFastTurbine t;
-  if (io::to_lower(p.extension().string()) == ".fst")
-    t = io::read_openfast_turbine(p, &set);
-  else
-    t.elastodyn = io::read_elastodyn(p, &set);
+  if (io::toLower(p.extension().string()) == ".fst") t = io::readOpenFastTurbine(p, &set);
+  else t.elastodyn = io::readElastoDyn(p, &set);
   if (opt.yaw_spring_from_servodyn && t.elastodyn.dof.YawDOF && t.fst.CompServo != 0)
-    opt.servodyn = io::read_servodyn_if_enabled(t.fst, &set);
+    opt.servodyn = io::readServoDynIfEnabled(t.fst, &set);
   // Aerodynamics follows the deck: CompAero = 2 reads AeroDyn, its blades and airfoils and InflowWind
   // (`--set CompAero=0` gives the structural model of the same deck).
   if (t.fst.CompAero != 0) {
     io::AeroDeckInput deck = io::readAeroDeck(t.fst, &set);
-    io::require_supported(deck.aerodyn);
-    io::require_supported(deck.inflow);
+    io::requireSupported(deck.aerodyn);
+    io::requireSupported(deck.inflow);
     opt.aero = std::move(deck);
-    opt.torque_law = io::read_servodyn_if_enabled(t.fst, &set);
+    opt.torque_law = io::readServoDynIfEnabled(t.fst, &set);
   }
-  set.require_all_used();
+  set.requireAllUsed();
   return t;
 }
 
@@ -140,7 +138,7 @@ std::vector<fem::FlexibleBeam> readElastoDynFlexibleBeams(const std::string& pat
                                                           std::optional<double> rpm) {
   ElastoDynModelOptions opt;
   const io::OpenFastTurbine t = readElastoDynTurbine(path, overrides, opt);
-  io::require_supported(t);
+  io::requireSupported(t);
   const io::ElastoDynInput& ed = t.elastodyn;
   std::vector<fem::FlexibleBeam> out;
   // Tower: the FE input of shapes=fem; current shapes as the model would have them.

@@ -93,7 +93,7 @@ struct ElastoDynModelOptions {
 
 /// Builds and finalizes the model of the turbine read from an OpenFAST .fst (or an ElastoDyn .dat alone:
 /// then `turbine.fst` is default-constructed, with an empty path and CompServo = 0).
-/// Throws InputError naming file, line and key for unsupported options (io::require_supported), a
+/// Throws InputError naming file, line and key for unsupported options (io::requireSupported), a
 /// missing ServoDyn file when the yaw spring is needed, or inconsistent values.
 Model buildElastoDynModel(const io::OpenFastTurbine& turbine, const ElastoDynModelOptions& opt = {});
 

@@ -40,7 +40,7 @@ void addHydroDyn(Builder& b, const PlatformParts& p, const io::OpenFastTurbine& 
     if (p.reference.norm() != 0.0)
       throw InputError(b.where(b.ed.config.PtfmRefzt ? "PtfmRefzt" : "PtfmRef",
                                "the platform reference point must be the WAMIT origin (0, 0, 0) with PotMod = 1"));
-    const io::WamitMatrices w = io::read_wamit(hd, rho, g);
+    const io::WamitMatrices w = io::readWamit(hd, rho, g);
     bm.K += w.hydrostatic;
     // WAMIT's added mass is symmetric up to its panel discretization (A15 and A51 of the OC3 spar
     // differ in the 6th digit); the mass matrix wants it symmetric.
@@ -48,8 +48,10 @@ void addHydroDyn(Builder& b, const PlatformParts& p, const io::OpenFastTurbine& 
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> es(bm.A, Eigen::EigenvaluesOnly);
     const double scale = bm.A.cwiseAbs().maxCoeff();
     if (es.eigenvalues().minCoeff() < -1e-9 * scale)
-      throw InputError(hd.source.where("PotFile", "the added mass at infinite frequency is not positive semi-definite "
-                                                  "(eigenvalue " + io::number_text(es.eigenvalues().minCoeff()) + ")"));
+      throw InputError(hd.source.where("PotFile",
+                                       "the added mass at infinite frequency is not positive semi-definite "
+                                       "(eigenvalue " +
+                                           io::numberText(es.eigenvalues().minCoeff()) + ")"));
     const double B = rho * g * hd.PtfmVol0;
     f0 += (Eigen::Matrix<double, 6, 1>() << 0, 0, B, B * hd.PtfmCOByt, -B * hd.PtfmCOBxt, 0).finished();
   }
@@ -63,7 +65,7 @@ void addHydroDyn(Builder& b, const PlatformParts& p, const io::OpenFastTurbine& 
 void addMooring(Builder& b, const PlatformParts& p, const io::OpenFastTurbine& t) {
   const double rho = water(t, t.hydrodyn ? t.hydrodyn->WtrDens : std::nullopt, t.fst.WtrDens, "WtrDens");
   const double depth = water(t, t.hydrodyn ? t.hydrodyn->WtrDpth : std::nullopt, t.fst.WtrDpth, "WtrDpth");
-  std::vector<MooringLine> lines = io::map_mooring_lines(*t.mooring, p.body, depth, rho, gravityOf(b));
+  std::vector<MooringLine> lines = io::mapMooringLines(*t.mooring, p.body, depth, rho, gravityOf(b));
   for (const MooringLine& ln : lines) {
     const Vec3 d = p.reference + ln.fairlead - ln.anchor;
     try {

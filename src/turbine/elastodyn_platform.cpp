@@ -35,7 +35,7 @@ PlatformDescription describePlatform(const Builder& b) {
 
 PlatformParts addPlatform(Builder& b) {
   PlatformParts out;
-  if (!io::has_platform_dofs(b.ed)) return out;
+  if (!io::hasPlatformDofs(b.ed)) return out;
   const PlatformDescription d = describePlatform(b);
   out.reference = d.reference;
   Body p;

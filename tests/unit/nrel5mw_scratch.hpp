@@ -15,20 +15,20 @@ inline const char* kNrelBlade = "NRELOffshrBsline5MW_Blade.dat";
 
 /// The NREL 5MW case in `dir` with the ElastoDyn main file replaced by `ed`; returns the .fst.
 inline std::filesystem::path nrelWith(const ScratchDir& dir, const std::string& ed) {
-  dir.copy(nrel5mw_dir() / kNrelTower);
-  dir.copy(nrel5mw_dir() / kNrelBlade);
+  dir.copy(nrel5mwDir() / kNrelTower);
+  dir.copy(nrel5mwDir() / kNrelBlade);
   dir.write(kNrelEd, ed);
-  return dir.copy(nrel5mw_dir() / "Main_Onshore.fst");
+  return dir.copy(nrel5mwDir() / "Main_Onshore.fst");
 }
 
 /// The NREL 5MW ElastoDyn main file as text.
-inline std::string nrelEd() { return read_text(nrel5mw_dir() / kNrelEd); }
+inline std::string nrelEd() { return readText(nrel5mwDir() / kNrelEd); }
 
 /// The InputError message of reading the turbine whose ElastoDyn main file is `ed`.
 inline std::string turbineError(const std::string& ed) {
   ScratchDir dir;
   const auto fst = nrelWith(dir, ed);
-  return input_error_message([&] { io::read_openfast_turbine(fst); });
+  return inputErrorMessage([&] { io::readOpenFastTurbine(fst); });
 }
 
 }  // namespace whirl::test

@@ -13,11 +13,11 @@
 
 namespace whirl::test {
 
-inline std::filesystem::path source_dir() { return std::filesystem::path(WHIRL_SOURCE_DIR); }
-inline std::filesystem::path nrel5mw_dir() { return source_dir() / "cases" / "nrel5mw"; }
-inline std::filesystem::path openfast_data_dir() { return source_dir() / "tests" / "data" / "openfast"; }
+inline std::filesystem::path sourceDir() { return std::filesystem::path(WHIRL_SOURCE_DIR); }
+inline std::filesystem::path nrel5mwDir() { return sourceDir() / "cases" / "nrel5mw"; }
+inline std::filesystem::path openfastDataDir() { return sourceDir() / "tests" / "data" / "openfast"; }
 
-inline std::string read_text(const std::filesystem::path& p) {
+inline std::string readText(const std::filesystem::path& p) {
   std::ifstream in(p, std::ios::binary);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
@@ -52,7 +52,7 @@ class ScratchDir {
 
   /// Copies `from` into the folder under `name` (default: same file name).
   std::filesystem::path copy(const std::filesystem::path& from, const std::string& name = "") const {
-    return write(name.empty() ? from.filename().string() : name, read_text(from));
+    return write(name.empty() ? from.filename().string() : name, readText(from));
   }
 
  private:
@@ -60,7 +60,7 @@ class ScratchDir {
 };
 
 /// Replaces the first occurrence of `from` in `text` (the test fails when it is absent).
-inline std::string replace_once(std::string text, const std::string& from, const std::string& to) {
+inline std::string replaceOnce(std::string text, const std::string& from, const std::string& to) {
   const std::size_t at = text.find(from);
   EXPECT_NE(at, std::string::npos) << "'" << from << "' not found";
   if (at != std::string::npos) text.replace(at, from.size(), to);
@@ -68,7 +68,7 @@ inline std::string replace_once(std::string text, const std::string& from, const
 }
 
 /// Removes the whole line that contains `fragment` (the test fails when it is absent).
-inline std::string remove_line(std::string text, const std::string& fragment) {
+inline std::string removeLine(std::string text, const std::string& fragment) {
   const std::size_t at = text.find(fragment);
   EXPECT_NE(at, std::string::npos) << "'" << fragment << "' not found";
   if (at == std::string::npos) return text;
@@ -81,7 +81,7 @@ inline std::string remove_line(std::string text, const std::string& fragment) {
 
 /// Runs `f`, expects an InputError, and returns its message ("" when nothing was thrown).
 template <class F>
-std::string input_error_message(F&& f) {
+std::string inputErrorMessage(F&& f) {
   try {
     f();
   } catch (const whirl::InputError& e) {

@@ -13,13 +13,13 @@ namespace {
 
 using testing::HasSubstr;
 using whirl::io::AeroDeckInput;
-using whirl::io::read_fst;
 using whirl::io::readAeroDeck;
-using whirl::test::aero_dir;
+using whirl::io::readFst;
+using whirl::test::aeroDir;
 using whirl::test::AeroScratch;
-using whirl::test::input_error_message;
+using whirl::test::inputErrorMessage;
 
-void expect_nrel5mw_deck(const AeroDeckInput& d) {
+void expectNrel5mwDeck(const AeroDeckInput& d) {
   ASSERT_EQ(d.blades.size(), 3u);
   for (const auto& b : d.blades) {
     EXPECT_EQ(b.NumBlNds, 19);
@@ -36,21 +36,21 @@ void expect_nrel5mw_deck(const AeroDeckInput& d) {
 }
 
 TEST(AeroDeck, ToolboxOpenFast3Deck) {
-  const AeroDeckInput d = readAeroDeck(read_fst(aero_dir() / "toolbox" / "Main.fst"));
-  expect_nrel5mw_deck(d);
+  const AeroDeckInput d = readAeroDeck(readFst(aeroDir() / "toolbox" / "Main.fst"));
+  expectNrel5mwDeck(d);
   EXPECT_EQ(d.aerodyn.layout, whirl::io::AeroDynLayout::V15);
 }
 
 TEST(AeroDeck, OpenFast5Deck) {
-  const AeroDeckInput d = readAeroDeck(read_fst(aero_dir() / "v5" / "main.fst"));
-  expect_nrel5mw_deck(d);
+  const AeroDeckInput d = readAeroDeck(readFst(aeroDir() / "v5" / "main.fst"));
+  expectNrel5mwDeck(d);
   EXPECT_EQ(d.aerodyn.layout, whirl::io::AeroDynLayout::V4);
 }
 
 TEST(AeroDeck, EnvironmentDefaultsComeFromTheFst) {
   AeroScratch s;
   s.edit("toolbox/Main.fst", "1.225         AirDens", "1.2           AirDens");
-  const AeroDeckInput d = readAeroDeck(read_fst(s.path("toolbox/Main.fst")));
+  const AeroDeckInput d = readAeroDeck(readFst(s.path("toolbox/Main.fst")));
   EXPECT_DOUBLE_EQ(d.aerodyn.AirDens, 1.2);  // AeroDyn says "default"
   EXPECT_TRUE(d.aerodyn.AirDens_default);
 }
@@ -78,7 +78,7 @@ TEST(AeroDeck, ModuleSwitchesRefused) {
     SCOPED_TRACE(c.to);
     AeroScratch s;
     s.edit("toolbox/Main.fst", c.from, c.to);
-    EXPECT_EQ(input_error_message([&] { readAeroDeck(read_fst(s.path("toolbox/Main.fst"))); }),
+    EXPECT_EQ(inputErrorMessage([&] { readAeroDeck(readFst(s.path("toolbox/Main.fst"))); }),
               s.path("toolbox/Main.fst").string() + c.message);
   }
 }
@@ -88,26 +88,26 @@ TEST(AeroDeck, MissingFilesNamedWithTheLineThatNamesThem) {
   {
     AeroScratch s;
     s.remove("toolbox/AeroDyn.dat");
-    EXPECT_EQ(input_error_message([&] { readAeroDeck(read_fst(s.path(fst))); }),
+    EXPECT_EQ(inputErrorMessage([&] { readAeroDeck(readFst(s.path(fst))); }),
               s.path(fst).string() + ":38: AeroFile: file not found: " + s.path("toolbox/AeroDyn.dat").string());
   }
   {
     AeroScratch s;
     s.remove("toolbox/InflowWind.dat");
-    EXPECT_EQ(input_error_message([&] { readAeroDeck(read_fst(s.path(fst))); }),
+    EXPECT_EQ(inputErrorMessage([&] { readAeroDeck(readFst(s.path(fst))); }),
               s.path(fst).string() + ":37: InflowFile: file not found: " + s.path("toolbox/InflowWind.dat").string());
   }
   {
     AeroScratch s;
     s.remove("5MW_Baseline/Airfoils/DU25_A17.dat");
-    EXPECT_EQ(input_error_message([&] { readAeroDeck(read_fst(s.path(fst))); }),
-              s.path("toolbox/AeroDyn.dat").string() + ":55: AFNames(6): file not found: " +
-                  s.path("5MW_Baseline/Airfoils/DU25_A17.dat").string());
+    EXPECT_EQ(inputErrorMessage([&] { readAeroDeck(readFst(s.path(fst))); }),
+              s.path("toolbox/AeroDyn.dat").string() +
+                  ":55: AFNames(6): file not found: " + s.path("5MW_Baseline/Airfoils/DU25_A17.dat").string());
   }
   {
     AeroScratch s;
     s.remove("5MW_Baseline/NRELOffshrBsline5MW_AeroDyn_blade.dat");
-    EXPECT_EQ(input_error_message([&] { readAeroDeck(read_fst(s.path(fst))); }),
+    EXPECT_EQ(inputErrorMessage([&] { readAeroDeck(readFst(s.path(fst))); }),
               s.path("toolbox/AeroDyn.dat").string() + ":60: ADBlFile(1): file not found: " +
                   s.path("5MW_Baseline/NRELOffshrBsline5MW_AeroDyn_blade.dat").string());
   }
@@ -117,14 +117,14 @@ TEST(AeroDeck, UnsupportedAeroDynOptionReportedBeforeMissingAirfoils) {
   AeroScratch s;
   s.edit("toolbox/AeroDyn.dat", "          1   WakeMod", "          3   WakeMod");
   s.remove("5MW_Baseline/Airfoils/DU25_A17.dat");
-  EXPECT_THAT(input_error_message([&] { readAeroDeck(read_fst(s.path("toolbox/Main.fst"))); }),
+  EXPECT_THAT(inputErrorMessage([&] { readAeroDeck(readFst(s.path("toolbox/Main.fst"))); }),
               HasSubstr(":6: WakeMod: 3 not supported by whirl (OLAF free-vortex wake;"));
 }
 
 TEST(AeroDeck, UnsupportedWindTypeRefused) {
   AeroScratch s;
   s.edit("v5/InflowWind.dat", "          1   WindType", "          2   WindType");
-  EXPECT_EQ(input_error_message([&] { readAeroDeck(read_fst(s.path("v5/main.fst"))); }),
+  EXPECT_EQ(inputErrorMessage([&] { readAeroDeck(readFst(s.path("v5/main.fst"))); }),
             s.path("v5/InflowWind.dat").string() +
                 ":5: WindType: 2 not supported by whirl (uniform wind file wind; whirl supports only WindType = 1 "
                 "(steady wind))");
@@ -133,7 +133,7 @@ TEST(AeroDeck, UnsupportedWindTypeRefused) {
 TEST(AeroDeck, AirfoilIdBeyondNumAFfiles) {
   AeroScratch s;
   s.edit("toolbox/AeroDyn.dat", "          8   NumAFfiles", "          7   NumAFfiles");
-  EXPECT_EQ(input_error_message([&] { readAeroDeck(read_fst(s.path("toolbox/Main.fst"))); }),
+  EXPECT_EQ(inputErrorMessage([&] { readAeroDeck(readFst(s.path("toolbox/Main.fst"))); }),
             s.path("5MW_Baseline/NRELOffshrBsline5MW_AeroDyn_blade.dat").string() +
                 ":19: BlAFID: is 8, beyond NumAFfiles = 7 (" + s.path("toolbox/AeroDyn.dat").string() + ":49)");
 }
@@ -142,13 +142,13 @@ TEST(AeroDeck, OverridesReachAeroDynBladeAndInflowFiles) {
   whirl::io::OverrideSet set({{"HWindSpeed", "11.4"}, {"SkewMod", "1"}, {"NumBlNds", "18"}});
   AeroScratch s;
   // NumBlNds = 18 is one row short of the table: the blade file saw the override.
-  EXPECT_THAT(input_error_message([&] { readAeroDeck(read_fst(s.path("toolbox/Main.fst")), &set); }),
+  EXPECT_THAT(inputErrorMessage([&] { readAeroDeck(readFst(s.path("toolbox/Main.fst")), &set); }),
               HasSubstr("NRELOffshrBsline5MW_AeroDyn_blade.dat:25: NumBlNds: table has 19 rows, only 18 expected"));
   whirl::io::OverrideSet ok({{"HWindSpeed", "11.4"}, {"SkewMod", "1"}});
-  const AeroDeckInput d = readAeroDeck(read_fst(s.path("toolbox/Main.fst")), &ok);
+  const AeroDeckInput d = readAeroDeck(readFst(s.path("toolbox/Main.fst")), &ok);
   EXPECT_DOUBLE_EQ(d.inflow.HWindSpeed, 11.4);
   EXPECT_EQ(d.aerodyn.skew, whirl::io::SkewModel::None);
-  EXPECT_NO_THROW(ok.require_all_used());
+  EXPECT_NO_THROW(ok.requireAllUsed());
 }
 
 }  // namespace

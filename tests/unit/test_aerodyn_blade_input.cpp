@@ -10,14 +10,14 @@ namespace {
 
 using testing::HasSubstr;
 using whirl::io::AeroDynBladeInput;
-using whirl::io::read_aerodyn_blade;
+using whirl::io::readAeroDynBlade;
 using whirl::test::AeroScratch;
-using whirl::test::input_error_message;
+using whirl::test::inputErrorMessage;
 
 const std::string kBlade = "5MW_Baseline/NRELOffshrBsline5MW_AeroDyn_blade.dat";
 
 TEST(AeroDynBladeInput, Nrel5mwBlade) {
-  const AeroDynBladeInput b = read_aerodyn_blade(whirl::test::aero_blade_file());
+  const AeroDynBladeInput b = readAeroDynBlade(whirl::test::aeroBladeFile());
   EXPECT_EQ(b.NumBlNds, 19);
   ASSERT_EQ(b.BlSpn.size(), 19u);
   EXPECT_DOUBLE_EQ(b.BlSpn.front(), 0.0);
@@ -53,7 +53,7 @@ TEST(AeroDynBladeInput, NewerLayoutWithOptionalColumnsInAnotherOrder) {
       "  30.0      3.0       6.5      2         0.1      -0.2     0.3   0.0    0.0\n"
       "  61.5      1.4       0.1      2         0.3      -0.1     0.2   0.0    0.0\n";
   whirl::test::ScratchDir dir;
-  const AeroDynBladeInput b = read_aerodyn_blade(dir.write("blade.dat", text));
+  const AeroDynBladeInput b = readAeroDynBlade(dir.write("blade.dat", text));
   EXPECT_EQ(b.NumBlNds, 3);
   EXPECT_FALSE(b.has_BlCrvAng);
   EXPECT_EQ(b.BlCrvAng, (std::vector<double>{0.0, 0.0, 0.0}));
@@ -64,45 +64,45 @@ TEST(AeroDynBladeInput, NewerLayoutWithOptionalColumnsInAnotherOrder) {
 }
 
 /// The blade file in a scratch folder, edited; the error message of reading it, its path shown as "<file>".
-std::string blade_error(const std::string& from, const std::string& to) {
+std::string bladeError(const std::string& from, const std::string& to) {
   AeroScratch s;
   s.edit(kBlade, from, to);
-  return whirl::test::with_file_placeholder(input_error_message([&] { read_aerodyn_blade(s.path(kBlade)); }),
-                                            s.path(kBlade));
+  return whirl::test::withFilePlaceholder(inputErrorMessage([&] { readAeroDynBlade(s.path(kBlade)); }), s.path(kBlade));
 }
 
 TEST(AeroDynBladeInputErrors, RowCount) {
-  EXPECT_EQ(blade_error("         19   NumBlNds", "         20   NumBlNds"),
+  EXPECT_EQ(bladeError("         19   NumBlNds", "         20   NumBlNds"),
             "<file>:26: NumBlNds: table has 19 rows, 20 expected: line 26 is not a row of numbers (truncated table?)");
-  EXPECT_EQ(blade_error("         19   NumBlNds", "         18   NumBlNds"),
+  EXPECT_EQ(bladeError("         19   NumBlNds", "         18   NumBlNds"),
             "<file>:25: NumBlNds: table has 19 rows, only 18 expected");
-  EXPECT_EQ(blade_error("         19   NumBlNds", "          1   NumBlNds"), "<file>:4: NumBlNds: must be at least 2 (is 1)");
+  EXPECT_EQ(bladeError("         19   NumBlNds", "          1   NumBlNds"),
+            "<file>:4: NumBlNds: must be at least 2 (is 1)");
 }
 
 TEST(AeroDynBladeInputErrors, SpanMustStartAtZeroAndIncrease) {
-  EXPECT_EQ(blade_error("4.1000000E+00 -2.4839790E-02", "1.0000000E+00 -2.4839790E-02"),
+  EXPECT_EQ(bladeError("4.1000000E+00 -2.4839790E-02", "1.0000000E+00 -2.4839790E-02"),
             "<file>:9: BlSpn: must increase from node to node (1 after 1.3667)");
-  EXPECT_EQ(blade_error("0.0000000E+00  0.0000000E+00  0.0000000E+00 0.0000000E+00  1.3308000E+01",
-                        "1.0000000E-01  0.0000000E+00  0.0000000E+00 0.0000000E+00  1.3308000E+01"),
+  EXPECT_EQ(bladeError("0.0000000E+00  0.0000000E+00  0.0000000E+00 0.0000000E+00  1.3308000E+01",
+                       "1.0000000E-01  0.0000000E+00  0.0000000E+00 0.0000000E+00  1.3308000E+01"),
             "<file>:7: BlSpn: must start at 0 (is 0.1)");
 }
 
 TEST(AeroDynBladeInputErrors, ChordAirfoilIdAndNumbers) {
-  EXPECT_EQ(blade_error("1.3308000E+01  3.5420000E+00        1", "1.3308000E+01  0.0000000E+00        1"),
+  EXPECT_EQ(bladeError("1.3308000E+01  3.5420000E+00        1", "1.3308000E+01  0.0000000E+00        1"),
             "<file>:7: BlChord: must be positive (is 0)");
-  EXPECT_EQ(blade_error("1.4190000E+00        8", "1.4190000E+00        8.5"),
+  EXPECT_EQ(bladeError("1.4190000E+00        8", "1.4190000E+00        8.5"),
             "<file>:24: BlAFID: must be a whole number >= 1 (an index into AFNames), is 8.5");
-  EXPECT_EQ(blade_error("1.3308000E+01  3.5420000E+00        1", "1.3308000E+01  3.5420000E+00        0"),
+  EXPECT_EQ(bladeError("1.3308000E+01  3.5420000E+00        1", "1.3308000E+01  3.5420000E+00        0"),
             "<file>:7: BlAFID: must be a whole number >= 1 (an index into AFNames), is 0");
-  EXPECT_EQ(blade_error("1.3308000E+01  3.5420000E+00        1", "1.3308000E+01  NaN        1"),
+  EXPECT_EQ(bladeError("1.3308000E+01  3.5420000E+00        1", "1.3308000E+01  NaN        1"),
             "<file>:7: BlChord: value is NaN");
-  EXPECT_THAT(blade_error("BlChord          BlAFID", "BlChord          BlAirfoil"),
+  EXPECT_THAT(bladeError("BlChord          BlAFID", "BlChord          BlAirfoil"),
               HasSubstr("<file>:5: BlAFID: column missing from the table"));
 }
 
 TEST(AeroDynBladeInputErrors, MissingFile) {
-  const std::filesystem::path f = whirl::test::aero_dir() / "no_blade.dat";
-  EXPECT_EQ(input_error_message([&] { read_aerodyn_blade(f); }), f.string() + ": cannot open file");
+  const std::filesystem::path f = whirl::test::aeroDir() / "no_blade.dat";
+  EXPECT_EQ(inputErrorMessage([&] { readAeroDynBlade(f); }), f.string() + ": cannot open file");
 }
 
 }  // namespace

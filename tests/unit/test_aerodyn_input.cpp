@@ -18,18 +18,18 @@ using testing::HasSubstr;
 using whirl::io::AeroDynEnvironment;
 using whirl::io::AeroDynInput;
 using whirl::io::AeroDynLayout;
-using whirl::io::read_aerodyn;
+using whirl::io::readAeroDyn;
 using whirl::io::SkewModel;
-using whirl::test::aero_dir;
+using whirl::test::aeroDir;
 using whirl::test::AeroScratch;
-using whirl::test::input_error_message;
+using whirl::test::inputErrorMessage;
 
 const std::string kV3 = "toolbox/AeroDyn.dat";
 const std::string kV5 = "v5/AeroDyn.dat";
 const double kPi = 3.14159265358979323846;
 
 TEST(AeroDynInput, OpenFast3ToolboxLayout) {
-  const AeroDynInput a = read_aerodyn(aero_dir() / kV3);
+  const AeroDynInput a = readAeroDyn(aeroDir() / kV3);
   EXPECT_EQ(a.layout, AeroDynLayout::V15);
   EXPECT_EQ(a.wake_key, "WakeMod");
   EXPECT_EQ(a.Wake_Mod, 1);
@@ -38,7 +38,7 @@ TEST(AeroDynInput, OpenFast3ToolboxLayout) {
   EXPECT_EQ(a.dbemt_key, "FrozenWake");  // DBEMT_Mod = 2 in the file is unused with WakeMod = 1
   EXPECT_EQ(a.ua_key, "AFAeroMod");
   EXPECT_EQ(a.UA_Mod, 0);
-  EXPECT_FALSE(a.unsteady_aero());
+  EXPECT_FALSE(a.unsteadyAero());
   EXPECT_EQ(a.TwrPotent, 0);
   EXPECT_EQ(a.TwrShadow, 0);
   EXPECT_FALSE(a.TwrAero || a.Buoyancy || a.CavitCheck || a.CompAA || a.NacelleDrag || a.SectAvg || a.TFinAero);
@@ -66,25 +66,25 @@ TEST(AeroDynInput, OpenFast3ToolboxLayout) {
   EXPECT_EQ(a.InCol.cm, 4);
   EXPECT_EQ(a.InCol_Cpmin, 0);
   ASSERT_EQ(a.AFNames.size(), 8u);
-  const std::filesystem::path af = (aero_dir() / "5MW_Baseline" / "Airfoils").lexically_normal();
+  const std::filesystem::path af = (aeroDir() / "5MW_Baseline" / "Airfoils").lexically_normal();
   EXPECT_EQ(a.AFNames.front(), af / "Cylinder1.dat");
   EXPECT_EQ(a.AFNames[2], af / "DU40_A17.dat");
   EXPECT_EQ(a.AFNames.back(), af / "NACA64_A17.dat");
   EXPECT_EQ(a.AFNames_lines, (std::vector<int>{50, 51, 52, 53, 54, 55, 56, 57}));
   EXPECT_TRUE(a.UseBlCm);
   ASSERT_EQ(a.ADBlFile.size(), 3u);
-  for (const auto& p : a.ADBlFile) EXPECT_EQ(p, whirl::test::aero_blade_file().lexically_normal());
+  for (const auto& p : a.ADBlFile) EXPECT_EQ(p, whirl::test::aeroBladeFile().lexically_normal());
   EXPECT_EQ(a.NumTwrNds, 12);
   EXPECT_EQ(a.tower.names, (std::vector<std::string>{"TwrElev", "TwrDiam", "TwrCd", "TwrTI", "TwrCb"}));
   ASSERT_EQ(a.tower.rows(), 12u);
   EXPECT_DOUBLE_EQ(a.tower.column("TwrElev").back(), 87.6);
   EXPECT_DOUBLE_EQ(a.tower.column("TwrDiam").front(), 6.0);
   EXPECT_EQ(a.tower.row_lines.front(), 76);
-  EXPECT_TRUE(whirl::io::unsupported_options(a).empty());
+  EXPECT_TRUE(whirl::io::unsupportedOptions(a).empty());
 }
 
 TEST(AeroDynInput, OpenFast5Layout) {
-  const AeroDynInput a = read_aerodyn(aero_dir() / kV5);
+  const AeroDynInput a = readAeroDyn(aeroDir() / kV5);
   EXPECT_EQ(a.layout, AeroDynLayout::V4);
   EXPECT_EQ(a.wake_key, "Wake_Mod");
   EXPECT_EQ(a.Wake_Mod, 1);
@@ -107,20 +107,20 @@ TEST(AeroDynInput, OpenFast5Layout) {
   EXPECT_EQ(a.ADBlFile.size(), 3u);
   EXPECT_EQ(a.tower.names.size(), 7u);  // TwrElev … TwrCa
   EXPECT_EQ(a.tower.rows(), 12u);
-  EXPECT_TRUE(whirl::io::unsupported_options(a).empty());
+  EXPECT_TRUE(whirl::io::unsupportedOptions(a).empty());
 }
 
 TEST(AeroDynInput, AeroDyn1503LayoutOfTheCertificationTests) {
   // AeroDyn v15.03 (FAST 8 certification tests, OpenFAST v1): TwrShadow a flag, no FrozenWake,
   // CavitCheck, Buoyancy, CompAA, Patm/Pvap, DBEMT, OLAF, AFTabMod, hub/nacelle/tail-fin sections.
   AeroScratch s;
-  std::string text = whirl::test::read_text(s.path(kV3));
+  std::string text = whirl::test::readText(s.path(kV3));
   for (const char* key : {"FrozenWake", "CavitCheck", "Buoyancy", "CompAA", "AA_InputFile", "Patm", "Pvap",
                           "SkewModFactor", "DBEMT_Mod", "tau1_const", "OLAFInputFileName", "UAStartRad", "UAEndRad",
                           "AFTabMod", "VolHub", "HubCenBx", "VolNac", "NacCenB", "TFinAero", "TFinFile"})
-    text = whirl::test::remove_line(text, key);
-  text = whirl::test::replace_once(text, "          0   TwrShadow", "False         TwrShadow");
-  const AeroDynInput a = read_aerodyn(s.write(kV3, text));
+    text = whirl::test::removeLine(text, key);
+  text = whirl::test::replaceOnce(text, "          0   TwrShadow", "False         TwrShadow");
+  const AeroDynInput a = readAeroDyn(s.write(kV3, text));
   EXPECT_EQ(a.layout, AeroDynLayout::V15);
   EXPECT_EQ(a.Wake_Mod, 1);
   EXPECT_FALSE(a.frozen_wake);  // no FrozenWake key: quasi-steady BEMT
@@ -131,19 +131,19 @@ TEST(AeroDynInput, AeroDyn1503LayoutOfTheCertificationTests) {
   EXPECT_DOUBLE_EQ(a.SkewModFactor, 15.0 * kPi / 32.0);
   EXPECT_EQ(a.AFNames.size(), 8u);
   EXPECT_EQ(a.tower.rows(), 12u);
-  EXPECT_TRUE(whirl::io::unsupported_options(a).empty());
+  EXPECT_TRUE(whirl::io::unsupportedOptions(a).empty());
 }
 
 TEST(AeroDynInput, DefaultEnvironmentFromTheFstAndExplicitValues) {
   AeroDynEnvironment env;
   env.AirDens = 1.1;
   env.KinVisc = 1.5e-5;
-  const AeroDynInput a = read_aerodyn(aero_dir() / kV5, env);
+  const AeroDynInput a = readAeroDyn(aeroDir() / kV5, env);
   EXPECT_DOUBLE_EQ(a.AirDens, 1.1);
   EXPECT_DOUBLE_EQ(a.KinVisc, 1.5e-5);
   AeroScratch s;
   s.edit(kV5, "\"default\"     AirDens", "      1.2     AirDens");
-  const AeroDynInput b = read_aerodyn(s.path(kV5), env);
+  const AeroDynInput b = readAeroDyn(s.path(kV5), env);
   EXPECT_DOUBLE_EQ(b.AirDens, 1.2);
   EXPECT_FALSE(b.AirDens_default);
   EXPECT_DOUBLE_EQ(b.KinVisc, 1.5e-5);
@@ -153,24 +153,24 @@ TEST(AeroDynInput, LegacyMappings) {
   AeroScratch s;
   // WakeMod = 0: no induction (allowed); FrozenWake = False: quasi-steady BEMT when WakeMod = 1.
   s.edit(kV3, "          1   WakeMod", "          0   WakeMod");
-  AeroDynInput a = read_aerodyn(s.path(kV3));
+  AeroDynInput a = readAeroDyn(s.path(kV3));
   EXPECT_EQ(a.Wake_Mod, 0);
-  EXPECT_TRUE(whirl::io::unsupported_options(a).empty());
+  EXPECT_TRUE(whirl::io::unsupportedOptions(a).empty());
   s.edit(kV3, "          0   WakeMod", "          1   WakeMod");
   s.edit(kV3, "True          FrozenWake", "False         FrozenWake");
-  a = read_aerodyn(s.path(kV3));
+  a = readAeroDyn(s.path(kV3));
   EXPECT_FALSE(a.frozen_wake);
   EXPECT_EQ(a.DBEMT_Mod, 0);
   // SkewMod 0 / 1 → orthogonal / none.
   s.edit(kV3, "          2   SkewMod", "          0   SkewMod");
-  EXPECT_EQ(read_aerodyn(s.path(kV3)).skew, SkewModel::Orthogonal);
+  EXPECT_EQ(readAeroDyn(s.path(kV3)).skew, SkewModel::Orthogonal);
   s.edit(kV3, "          0   SkewMod", "          1   SkewMod");
-  EXPECT_EQ(read_aerodyn(s.path(kV3)).skew, SkewModel::None);
+  EXPECT_EQ(readAeroDyn(s.path(kV3)).skew, SkewModel::None);
   // v5: DBEMT_Mod = 0 is quasi-steady BEMT (allowed), not frozen.
   s.edit(kV5, "         -1   DBEMT_Mod", "          0   DBEMT_Mod");
-  const AeroDynInput b = read_aerodyn(s.path(kV5));
+  const AeroDynInput b = readAeroDyn(s.path(kV5));
   EXPECT_FALSE(b.frozen_wake);
-  EXPECT_TRUE(whirl::io::unsupported_options(b).empty());
+  EXPECT_TRUE(whirl::io::unsupportedOptions(b).empty());
 }
 
 /// One option whirl refuses: file, text replaced, and the message after "<scratch file>:".
@@ -188,8 +188,8 @@ TEST_P(AeroDynRefusal, NamesKeyValueAndWhatWhirlSupports) {
   const Refusal& r = GetParam();
   AeroScratch s;
   s.edit(r.file, r.from, r.to);
-  const AeroDynInput a = read_aerodyn(s.path(r.file));  // reads: refusing is aero_support's job
-  EXPECT_EQ(input_error_message([&] { whirl::io::require_supported(a); }), s.path(r.file).string() + ":" + r.message);
+  const AeroDynInput a = readAeroDyn(s.path(r.file));  // reads: refusing is aero_support's job
+  EXPECT_EQ(inputErrorMessage([&] { whirl::io::requireSupported(a); }), s.path(r.file).string() + ":" + r.message);
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -252,51 +252,58 @@ TEST(AeroDynInput, SeveralRefusalsListedTogether) {
   AeroScratch s;
   s.edit(kV3, "          1   AFAeroMod", "          2   AFAeroMod");
   s.edit(kV3, "False         TwrAero", "True          TwrAero");
-  const AeroDynInput a = read_aerodyn(s.path(kV3));
-  EXPECT_EQ(whirl::io::unsupported_options(a).size(), 2u);
-  EXPECT_THAT(input_error_message([&] { whirl::io::require_supported(a); }),
+  const AeroDynInput a = readAeroDyn(s.path(kV3));
+  EXPECT_EQ(whirl::io::unsupportedOptions(a).size(), 2u);
+  EXPECT_THAT(inputErrorMessage([&] { whirl::io::requireSupported(a); }),
               HasSubstr("(steady airfoil tables)); " + s.path(kV3).string() + ":10: TwrAero: True not supported"));
 }
 
 /// The toolbox or v5 file edited; the message of reading it, its path shown as "<file>".
-std::string edited_error(const std::string& file, const std::string& from, const std::string& to) {
+std::string editedError(const std::string& file, const std::string& from, const std::string& to) {
   AeroScratch s;
   s.edit(file, from, to);
-  return whirl::test::with_file_placeholder(input_error_message([&] { read_aerodyn(s.path(file)); }), s.path(file));
+  return whirl::test::withFilePlaceholder(inputErrorMessage([&] { readAeroDyn(s.path(file)); }), s.path(file));
 }
 
 TEST(AeroDynInputErrors, MalformedValues) {
-  EXPECT_EQ(edited_error(kV3, "\"default\"     AirDens", "       -1     AirDens"), "<file>:17: AirDens: must be positive (is -1)");
-  EXPECT_EQ(edited_error(kV3, "        100   MaxIter", "          0   MaxIter"), "<file>:31: MaxIter: must be at least 1 (is 0)");
-  EXPECT_EQ(edited_error(kV3, "\"Default\"     IndToler", "          0   IndToler"), "<file>:30: IndToler: must be positive (is 0)");
-  EXPECT_EQ(edited_error(kV3, "True          TipLoss", "Maybe         TipLoss"), "<file>:25: TipLoss: 'Maybe' is not True or False");
-  EXPECT_EQ(edited_error(kV3, "          1   InCol_Alfa", "          0   InCol_Alfa"), "<file>:44: InCol_Alfa: must be positive (is 0)");
-  EXPECT_EQ(edited_error(kV3, "          2   SkewMod", "          5   SkewMod"), "<file>:23: SkewMod: must be 0, 1, 2 or 3, is 5");
-  EXPECT_EQ(edited_error(kV5, "          1   Skew_Mod", "          2   Skew_Mod"), "<file>:23: Skew_Mod: must be -1, 0 or 1, is 2");
-  EXPECT_EQ(edited_error(kV3, "          1   AFAeroMod", "          3   AFAeroMod"),
+  EXPECT_EQ(editedError(kV3, "\"default\"     AirDens", "       -1     AirDens"),
+            "<file>:17: AirDens: must be positive (is -1)");
+  EXPECT_EQ(editedError(kV3, "        100   MaxIter", "          0   MaxIter"),
+            "<file>:31: MaxIter: must be at least 1 (is 0)");
+  EXPECT_EQ(editedError(kV3, "\"Default\"     IndToler", "          0   IndToler"),
+            "<file>:30: IndToler: must be positive (is 0)");
+  EXPECT_EQ(editedError(kV3, "True          TipLoss", "Maybe         TipLoss"),
+            "<file>:25: TipLoss: 'Maybe' is not True or False");
+  EXPECT_EQ(editedError(kV3, "          1   InCol_Alfa", "          0   InCol_Alfa"),
+            "<file>:44: InCol_Alfa: must be positive (is 0)");
+  EXPECT_EQ(editedError(kV3, "          2   SkewMod", "          5   SkewMod"),
+            "<file>:23: SkewMod: must be 0, 1, 2 or 3, is 5");
+  EXPECT_EQ(editedError(kV5, "          1   Skew_Mod", "          2   Skew_Mod"),
+            "<file>:23: Skew_Mod: must be -1, 0 or 1, is 2");
+  EXPECT_EQ(editedError(kV3, "          1   AFAeroMod", "          3   AFAeroMod"),
             "<file>:7: AFAeroMod: must be 1 (steady) or 2 (unsteady), is 3");
 }
 
 TEST(AeroDynInputErrors, MissingKeysAndBothSpellings) {
   AeroScratch s;
-  s.write(kV3, whirl::test::remove_line(whirl::test::read_text(s.path(kV3)), "TipLoss"));
-  EXPECT_EQ(input_error_message([&] { read_aerodyn(s.path(kV3)); }),
+  s.write(kV3, whirl::test::removeLine(whirl::test::readText(s.path(kV3)), "TipLoss"));
+  EXPECT_EQ(inputErrorMessage([&] { readAeroDyn(s.path(kV3)); }),
             s.path(kV3).string() + ": TipLoss: key not found in this file");
-  EXPECT_EQ(edited_error(kV5, "          1   Wake_Mod ", "          1   Wake_Mod\n          1   WakeMod "),
+  EXPECT_EQ(editedError(kV5, "          1   Wake_Mod ", "          1   Wake_Mod\n          1   WakeMod "),
             "<file>:6: Wake_Mod: cannot have both Wake_Mod and its legacy spelling WakeMod (line 7)");
-  EXPECT_EQ(edited_error(kV5, "          1   Wake_Mod ", "          1   Wake_Model "),
+  EXPECT_EQ(editedError(kV5, "          1   Wake_Mod ", "          1   Wake_Model "),
             "<file>: Wake_Mod: key not found in this file (nor its legacy spelling WakeMod)");
 }
 
 TEST(AeroDynInputErrors, AirfoilListShorterThanNumAFfiles) {
-  EXPECT_EQ(edited_error(kV3, "          8   NumAFfiles", "          9   NumAFfiles"),
+  EXPECT_EQ(editedError(kV3, "          8   NumAFfiles", "          9   NumAFfiles"),
             "<file>:49: NumAFfiles: announces 9 airfoil files, only 8 names follow AFNames (line 50)");
 }
 
 TEST(AeroDynInputErrors, TruncatedTowerTable) {
-  EXPECT_EQ(edited_error(kV3, "         12   NumTwrNds", "         13   NumTwrNds"),
+  EXPECT_EQ(editedError(kV3, "         12   NumTwrNds", "         13   NumTwrNds"),
             "<file>:73: NumTwrNds: table has 12 rows, 13 expected: line 88 is not a row of numbers (truncated table?)");
-  EXPECT_EQ(edited_error(kV3, "8.7600000E+01  3.8700000E+00  1.0000000E+00", "8.7600000E+01  nan  1.0000000E+00"),
+  EXPECT_EQ(editedError(kV3, "8.7600000E+01  3.8700000E+00  1.0000000E+00", "8.7600000E+01  nan  1.0000000E+00"),
             "<file>:87: TwrDiam: value is NaN");
 }
 

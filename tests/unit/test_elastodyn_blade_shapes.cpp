@@ -14,7 +14,7 @@ namespace whirl {
 namespace {
 
 const io::ElastoDynInput& nrel5mw() {
-  static const io::ElastoDynInput ed = io::read_openfast_turbine(test::nrel5mw_dir() / "Main_Onshore.fst").elastodyn;
+  static const io::ElastoDynInput ed = io::readOpenFastTurbine(test::nrel5mwDir() / "Main_Onshore.fst").elastodyn;
   return ed;
 }
 

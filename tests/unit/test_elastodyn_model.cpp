@@ -16,7 +16,7 @@ namespace {
 
 constexpr double pi = std::numbers::pi, deg = pi / 180;
 
-std::string fst() { return (test::nrel5mw_dir() / "Main_Onshore.fst").string(); }
+std::string fst() { return (test::nrel5mwDir() / "Main_Onshore.fst").string(); }
 
 double bodyMass(const Model& m, const std::string& name) { return m.bodies[*m.findBody(name)].inertia.mass; }
 

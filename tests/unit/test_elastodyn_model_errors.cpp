@@ -9,8 +9,8 @@
 namespace whirl {
 namespace {
 
+using test::inputErrorMessage;
 using testing::HasSubstr;
-using test::input_error_message;
 
 constexpr const char* kFst = "Main_Onshore.fst";
 constexpr const char* kEd = "NRELOffshrBsline5MW_Onshore_ElastoDyn.dat";
@@ -21,14 +21,14 @@ constexpr const char* kServo = "NRELOffshrBsline5MW_Onshore_ServoDyn.dat";
 class ElastoDynModelErrors : public testing::Test {
  protected:
   void SetUp() override {
-    for (const char* f : {kFst, kEd, kTower, kBlade, kServo}) dir_.copy(test::nrel5mw_dir() / f);
+    for (const char* f : {kFst, kEd, kTower, kBlade, kServo}) dir_.copy(test::nrel5mwDir() / f);
   }
   std::string path(const char* name) const { return (dir_.path() / name).string(); }
   std::string error(const std::vector<std::string>& overrides, const char* file = kFst) {
-    return input_error_message([&] { readElastoDynModel(path(file), overrides); });
+    return inputErrorMessage([&] { readElastoDynModel(path(file), overrides); });
   }
   void edit(const char* name, const std::string& from, const std::string& to) {
-    dir_.write(name, test::replace_once(test::read_text(dir_.path() / name), from, to));
+    dir_.write(name, test::replaceOnce(test::readText(dir_.path() / name), from, to));
   }
   test::ScratchDir dir_;
 };

@@ -15,17 +15,17 @@ namespace {
 
 using testing::HasSubstr;
 using whirl::io::InflowWindInput;
-using whirl::io::read_inflowwind;
-using whirl::io::read_servodyn;
+using whirl::io::readInflowWind;
+using whirl::io::readServoDyn;
 using whirl::io::ServoDynInput;
-using whirl::test::aero_dir;
+using whirl::test::aeroDir;
 using whirl::test::AeroScratch;
-using whirl::test::input_error_message;
+using whirl::test::inputErrorMessage;
 
 TEST(InflowWindInput, ToolboxAndV5SteadyWind) {
   for (const char* rel : {"toolbox/InflowWind.dat", "v5/InflowWind.dat"}) {
     SCOPED_TRACE(rel);
-    const InflowWindInput w = read_inflowwind(aero_dir() / rel);
+    const InflowWindInput w = readInflowWind(aeroDir() / rel);
     EXPECT_EQ(w.WindType, 1);
     EXPECT_DOUBLE_EQ(w.PropagationDir, 0.0);
     EXPECT_TRUE(w.has_VFlowAng);
@@ -33,7 +33,7 @@ TEST(InflowWindInput, ToolboxAndV5SteadyWind) {
     EXPECT_DOUBLE_EQ(w.HWindSpeed, 8.0);
     EXPECT_DOUBLE_EQ(w.RefHt, 90.0);
     EXPECT_DOUBLE_EQ(w.PLExp, 0.0);
-    EXPECT_TRUE(whirl::io::unsupported_options(w).empty());
+    EXPECT_TRUE(whirl::io::unsupportedOptions(w).empty());
   }
 }
 
@@ -55,7 +55,7 @@ TEST(InflowWindInput, OldLayoutWithoutVFlowAng) {
       "         90   RefHt          - Reference height for horizontal wind speed      (m)\n"
       "        0.2   PLexp          - Power law exponent                              (-)\n";
   whirl::test::ScratchDir dir;
-  const InflowWindInput w = read_inflowwind(dir.write("ifw.dat", text));
+  const InflowWindInput w = readInflowWind(dir.write("ifw.dat", text));
   EXPECT_FALSE(w.has_VFlowAng);
   EXPECT_DOUBLE_EQ(w.VFlowAng, 0.0);
   EXPECT_DOUBLE_EQ(w.PropagationDir, 10.0);
@@ -68,20 +68,21 @@ TEST(InflowWindInput, RefusalsAndErrors) {
   const std::string rel = "toolbox/InflowWind.dat";
   const std::string p = s.path(rel).string();
   s.edit(rel, "          1   WindType", "          3   WindType");
-  const InflowWindInput w = read_inflowwind(s.path(rel));  // reads; refusing is aero_support's job
-  EXPECT_EQ(input_error_message([&] { whirl::io::require_supported(w); }),
+  const InflowWindInput w = readInflowWind(s.path(rel));  // reads; refusing is aero_support's job
+  EXPECT_EQ(inputErrorMessage([&] { whirl::io::requireSupported(w); }),
             p + ":5: WindType: 3 not supported by whirl (TurbSim full field wind; whirl supports only WindType = 1 "
                 "(steady wind))");
   s.edit(rel, "          3   WindType", "          1   WindType");
   s.edit(rel, "         90   RefHt ", "          0   RefHt ");
-  EXPECT_EQ(input_error_message([&] { read_inflowwind(s.path(rel)); }), p + ":15: RefHt: must be positive (is 0)");
+  EXPECT_EQ(inputErrorMessage([&] { readInflowWind(s.path(rel)); }), p + ":15: RefHt: must be positive (is 0)");
   s.edit(rel, "          0   RefHt ", "         90   RefHt ");
   s.edit(rel, "          8   HWindSpeed", "         -8   HWindSpeed");
-  EXPECT_EQ(input_error_message([&] { read_inflowwind(s.path(rel)); }), p + ":14: HWindSpeed: must not be negative (is -8)");
+  EXPECT_EQ(inputErrorMessage([&] { readInflowWind(s.path(rel)); }),
+            p + ":14: HWindSpeed: must not be negative (is -8)");
 }
 
 TEST(ServoDynInput, ToolboxSimpleVariableSpeedLaw) {
-  const ServoDynInput s = read_servodyn(aero_dir() / "toolbox" / "ServoDyn.dat");
+  const ServoDynInput s = readServoDyn(aeroDir() / "toolbox" / "ServoDyn.dat");
   EXPECT_EQ(s.PCMode, std::optional<int>(0));
   EXPECT_EQ(s.VSContrl, std::optional<int>(1));
   EXPECT_EQ(s.GenModel, std::optional<int>(1));
@@ -92,7 +93,7 @@ TEST(ServoDynInput, ToolboxSimpleVariableSpeedLaw) {
   EXPECT_DOUBLE_EQ(s.YawSpr, 9.02832e9);
   EXPECT_DOUBLE_EQ(s.YawDamp, 1.916e7);
 
-  const whirl::io::GeneratorTorqueLaw law = whirl::io::generator_torque_law(s);
+  const whirl::io::GeneratorTorqueLaw law = whirl::io::generatorTorqueLaw(s);
   EXPECT_EQ(law.mode, whirl::io::TorqueControl::SimpleVariableSpeed);
   EXPECT_DOUBLE_EQ(law.GenEff, 94.4);
   EXPECT_DOUBLE_EQ(law.VS_RtGnSp, 1162.0);
@@ -110,9 +111,9 @@ TEST(ServoDynInput, ControllersInUserCodeRefusedOnlyForTheTorqueLaw) {
     SCOPED_TRACE(value);
     AeroScratch s;
     s.edit("toolbox/ServoDyn.dat", "          1   VSContrl", std::string("          ") + value + "   VSContrl");
-    const ServoDynInput servo = read_servodyn(s.path("toolbox/ServoDyn.dat"));  // structural users: fine
+    const ServoDynInput servo = readServoDyn(s.path("toolbox/ServoDyn.dat"));  // structural users: fine
     EXPECT_DOUBLE_EQ(servo.YawSpr, 9.02832e9);
-    EXPECT_EQ(input_error_message([&] { whirl::io::generator_torque_law(servo); }),
+    EXPECT_EQ(inputErrorMessage([&] { whirl::io::generatorTorqueLaw(servo); }),
               s.path("toolbox/ServoDyn.dat").string() + ":19: VSContrl: " + value + " not supported by whirl (" + what +
                   "; whirl supports only VSContrl = 1 (simple variable-speed law) or 0 with GenModel = 1 (simple "
                   "induction generator))");
@@ -123,25 +124,26 @@ TEST(ServoDynInput, GeneratorModelsWithoutVariableSpeedControl) {
   AeroScratch s;
   const std::string rel = "toolbox/ServoDyn.dat";
   s.edit(rel, "          1   VSContrl", "          0   VSContrl");
-  const whirl::io::GeneratorTorqueLaw law = whirl::io::generator_torque_law(read_servodyn(s.path(rel)));
+  const whirl::io::GeneratorTorqueLaw law = whirl::io::generatorTorqueLaw(readServoDyn(s.path(rel)));
   EXPECT_EQ(law.mode, whirl::io::TorqueControl::SimpleInductionGenerator);
   EXPECT_DOUBLE_EQ(law.SIG_SySp, 9999.9);
   s.edit(rel, "          1   GenModel", "          2   GenModel");
-  const ServoDynInput thevenin = read_servodyn(s.path(rel));
-  EXPECT_EQ(input_error_message([&] { whirl::io::generator_torque_law(thevenin); }),
-            s.path(rel).string() + ":20: GenModel: 2 not supported by whirl (Thevenin-equivalent induction generator; "
-                                   "whirl supports only GenModel = 1 (simple induction generator) when VSContrl = 0)");
+  const ServoDynInput thevenin = readServoDyn(s.path(rel));
+  EXPECT_EQ(inputErrorMessage([&] { whirl::io::generatorTorqueLaw(thevenin); }),
+            s.path(rel).string() +
+                ":20: GenModel: 2 not supported by whirl (Thevenin-equivalent induction generator; "
+                "whirl supports only GenModel = 1 (simple induction generator) when VSContrl = 0)");
 }
 
 TEST(ServoDynInput, TorqueLawValuesChecked) {
   AeroScratch s;
   const std::string rel = "toolbox/ServoDyn.dat";
   s.edit(rel, "       94.4   GenEff", "      104.4   GenEff");
-  EXPECT_EQ(input_error_message([&] { whirl::io::generator_torque_law(read_servodyn(s.path(rel))); }),
+  EXPECT_EQ(inputErrorMessage([&] { whirl::io::generatorTorqueLaw(readServoDyn(s.path(rel))); }),
             s.path(rel).string() + ":21: GenEff: must be in (0, 100] % (is 104.4)");
   s.edit(rel, "      104.4   GenEff", "       94.4   GenEff");
   s.edit(rel, "   0.025576   VS_Rgn2K", "  -0.025576   VS_Rgn2K");
-  EXPECT_EQ(input_error_message([&] { whirl::io::generator_torque_law(read_servodyn(s.path(rel))); }),
+  EXPECT_EQ(inputErrorMessage([&] { whirl::io::generatorTorqueLaw(readServoDyn(s.path(rel))); }),
             s.path(rel).string() + ":30: VS_Rgn2K: must not be negative (is -0.025576)");
   // A file cut down to its yaw section reads, but has no torque law.
   const std::string yaw_only =
@@ -150,36 +152,36 @@ TEST(ServoDynInput, TorqueLawValuesChecked) {
       "          0   YawNeut      - Neutral yaw position (degrees)\n"
       "9.02832E+09   YawSpr       - Nacelle-yaw spring constant (N-m/rad)\n"
       "  1.916E+07   YawDamp      - Nacelle-yaw damping constant (N-m/(rad/s))\n";
-  const ServoDynInput y = read_servodyn(s.write("yaw.dat", yaw_only));
+  const ServoDynInput y = readServoDyn(s.write("yaw.dat", yaw_only));
   EXPECT_FALSE(y.VSContrl.has_value());
-  EXPECT_EQ(input_error_message([&] { whirl::io::generator_torque_law(y); }),
+  EXPECT_EQ(inputErrorMessage([&] { whirl::io::generatorTorqueLaw(y); }),
             s.path("yaw.dat").string() + ": VSContrl: key not found in this file");
 }
 
 TEST(FstInput, InflowFileAndEnvironment) {
-  const whirl::io::FstInput f = whirl::io::read_fst(aero_dir() / "toolbox" / "Main.fst");
+  const whirl::io::FstInput f = whirl::io::readFst(aeroDir() / "toolbox" / "Main.fst");
   EXPECT_EQ(f.CompAero, 2);
   EXPECT_EQ(f.CompInflow, 1);
-  EXPECT_EQ(f.InflowFile, aero_dir() / "toolbox" / "InflowWind.dat");
-  EXPECT_EQ(f.AeroFile, aero_dir() / "toolbox" / "AeroDyn.dat");
+  EXPECT_EQ(f.InflowFile, aeroDir() / "toolbox" / "InflowWind.dat");
+  EXPECT_EQ(f.AeroFile, aeroDir() / "toolbox" / "AeroDyn.dat");
   EXPECT_EQ(f.AirDens, std::optional<double>(1.225));
   EXPECT_EQ(f.KinVisc, std::optional<double>(1.464e-5));
   EXPECT_EQ(f.SpdSound, std::optional<double>(335.0));
   EXPECT_EQ(f.Patm, std::optional<double>(103500.0));
   EXPECT_EQ(f.Pvap, std::optional<double>(1700.0));
-  const whirl::io::AeroDynEnvironment env = whirl::io::aerodyn_environment(f);
+  const whirl::io::AeroDynEnvironment env = whirl::io::aerodynEnvironment(f);
   EXPECT_DOUBLE_EQ(env.AirDens, 1.225);
   EXPECT_DOUBLE_EQ(env.KinVisc, 1.464e-5);
-  const whirl::io::FstInput v5 = whirl::io::read_fst(aero_dir() / "v5" / "main.fst");
-  EXPECT_EQ(v5.InflowFile, aero_dir() / "v5" / "InflowWind.dat");
+  const whirl::io::FstInput v5 = whirl::io::readFst(aeroDir() / "v5" / "main.fst");
+  EXPECT_EQ(v5.InflowFile, aeroDir() / "v5" / "InflowWind.dat");
   EXPECT_EQ(v5.AirDens, std::optional<double>(1.225));
-  EXPECT_TRUE(whirl::io::unsupported_aero_options(v5).empty());
+  EXPECT_TRUE(whirl::io::unsupportedAeroOptions(v5).empty());
 }
 
 TEST(FstInput, OlderLayoutsHaveNoEnvironment) {
-  const whirl::io::FstInput f = whirl::io::read_fst(whirl::test::openfast_data_dir() / "ws03" / "ws03.0.fst");
+  const whirl::io::FstInput f = whirl::io::readFst(whirl::test::openfastDataDir() / "ws03" / "ws03.0.fst");
   EXPECT_FALSE(f.AirDens.has_value());
-  const whirl::io::AeroDynEnvironment env = whirl::io::aerodyn_environment(f);
+  const whirl::io::AeroDynEnvironment env = whirl::io::aerodynEnvironment(f);
   EXPECT_DOUBLE_EQ(env.AirDens, 1.225);  // OpenFAST's defaults
   EXPECT_DOUBLE_EQ(env.KinVisc, 1.464e-5);
   EXPECT_DOUBLE_EQ(env.SpdSound, 335.0);

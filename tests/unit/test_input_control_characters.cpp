@@ -87,10 +87,10 @@ TEST_F(YamlControlCharacters, MultiLineDescriptionStaysAllowed) {
 class OpenFastControlCharacters : public ::testing::Test {
  protected:
   void SetUp() override {
-    for (const char* f : {kFst, kEd, kTower, kBlade, kServo}) dir.copy(test::nrel5mw_dir() / f);
+    for (const char* f : {kFst, kEd, kTower, kBlade, kServo}) dir.copy(test::nrel5mwDir() / f);
   }
   void edit(const char* name, const std::string& from, const std::string& to) {
-    dir.write(name, test::replace_once(test::read_text(dir.path() / name), from, to));
+    dir.write(name, test::replaceOnce(test::readText(dir.path() / name), from, to));
   }
   std::string fst() const { return (dir.path() / kFst).string(); }
   static constexpr const char* kFst = "Main_Onshore.fst";
@@ -103,14 +103,14 @@ class OpenFastControlCharacters : public ::testing::Test {
 
 TEST_F(OpenFastControlCharacters, ElastoDynTitleWithControlCharacterIsRefused) {
   // The ElastoDyn title is the model's name and the Campbell plot's title.
-  const std::string ed = test::read_text(dir.path() / kEd);
+  const std::string ed = test::readText(dir.path() / kEd);
   const std::string title = ed.substr(ed.find('\n') + 1, ed.find('\n', ed.find('\n') + 1) - ed.find('\n') - 1);
   edit(kEd, title, title.substr(0, 10) + "\x1b]0;pwned\x07" + title.substr(10));
   expectRefused(inputErrorOf([&] { readElastoDynModel(fst(), {}); }), (dir.path() / kEd).string(), 2, "title: ");
 }
 
 TEST_F(OpenFastControlCharacters, TabsInTheTitleAreSpacing) {
-  const std::string ed = test::read_text(dir.path() / kEd);
+  const std::string ed = test::readText(dir.path() / kEd);
   const std::string title = ed.substr(ed.find('\n') + 1, ed.find('\n', ed.find('\n') + 1) - ed.find('\n') - 1);
   edit(kEd, title, "Tabbed\ttitle");
   EXPECT_EQ(readElastoDynModel(fst(), {}).name, "Tabbed title");
@@ -118,15 +118,15 @@ TEST_F(OpenFastControlCharacters, TabsInTheTitleAreSpacing) {
 
 TEST(LinControlCharacters, DescriptionWithControlCharacterIsRefused) {
   test::ScratchDir dir;
-  const auto src = test::source_dir() / "tests/data/openfast-lin/ws03/ws03.0.1.lin";
-  const std::string text = test::read_text(src);
+  const auto src = test::sourceDir() / "tests/data/openfast-lin/ws03/ws03.0.1.lin";
+  const std::string text = test::readText(src);
   const std::string key = "ED 1st tower fore-aft bending mode DOF";
   ASSERT_NE(text.find(key), std::string::npos);
-  const auto path = dir.write("bad.lin", test::replace_once(text, key, "ED 1st\x1b[2J tower fore-aft bending mode DOF"));
+  const auto path = dir.write("bad.lin", test::replaceOnce(text, key, "ED 1st\x1b[2J tower fore-aft bending mode DOF"));
   const int line = testing::lineOf(text, key);
   expectRefused(inputErrorOf([&] { readOpenFastLin(path.string()); }), path.string(), line, "description");
   // Tabs are spacing in the free-text column, as in the decks.
-  const auto tabbed = dir.write("tab.lin", test::replace_once(text, key, "ED 1st\ttower fore-aft bending mode DOF"));
+  const auto tabbed = dir.write("tab.lin", test::replaceOnce(text, key, "ED 1st\ttower fore-aft bending mode DOF"));
   const OpenFastLin lin = readOpenFastLin(tabbed.string());
   bool found = false;
   for (const auto& v : lin.x) found = found || v.description.find("ED 1st tower fore-aft") == 0;

@@ -16,10 +16,10 @@
 namespace {
 
 using testing::HasSubstr;
-using whirl::test::input_error_message;
-using whirl::test::nrel5mw_dir;
-using whirl::test::read_text;
-using whirl::test::replace_once;
+using whirl::test::inputErrorMessage;
+using whirl::test::nrel5mwDir;
+using whirl::test::readText;
+using whirl::test::replaceOnce;
 using whirl::test::ScratchDir;
 
 using whirl::test::nrelEd;
@@ -30,8 +30,7 @@ const char* kEd = whirl::test::kNrelEd;
 // --- bounds -----------------------------------------------------------------------------------
 
 TEST(InputLimits, ElastoDynNodeCountsAreBounded) {
-  const std::string msg =
-      turbineError(replace_once(nrelEd(), "         20   TwrNodes", "  100000000   TwrNodes"));
+  const std::string msg = turbineError(replaceOnce(nrelEd(), "         20   TwrNodes", "  100000000   TwrNodes"));
   EXPECT_THAT(msg, HasSubstr(std::string(kEd) + ":107: TwrNodes: at most 1000 nodes (is 100000000"));
 }
 
@@ -50,18 +49,19 @@ bodies:
     clamped: [root]
     reduction: {type: craig_bampton, interface: [top], modes: 2}
 )");
-  EXPECT_THAT(input_error_message([&] { whirl::readCase(path.string()); }),
+  EXPECT_THAT(inputErrorMessage([&] { whirl::readCase(path.string()); }),
               HasSubstr("fe.yaml:7: bodies.pile.elements: must be between 1 and 2000"));
 }
 
 std::string lin(const std::string& name) {
-  return read_text(whirl::test::source_dir() / "tests/data/openfast-lin/rotating-9rpm" / name);
+  return readText(whirl::test::sourceDir() / "tests/data/openfast-lin/rotating-9rpm" / name);
 }
 
 TEST(InputLimits, LinHeaderCountsAreBoundedAndNamed) {
   ScratchDir dir;
-  const auto p = dir.write("x.lin", replace_once(lin("Main.1.lin"), "Number of inputs:", "Number of inputs: 2000000000 "));
-  EXPECT_THAT(input_error_message([&] { whirl::readOpenFastLin(p.string()); }),
+  const auto p = dir.write("x.lin",
+                           replaceOnce(lin("Main.1.lin"), "Number of inputs:", "Number of inputs: 2000000000 "));
+  EXPECT_THAT(inputErrorMessage([&] { whirl::readOpenFastLin(p.string()); }),
               HasSubstr("Number of inputs: 2000000000 is above the limit of 100000"));
 }
 
@@ -75,14 +75,14 @@ TEST(InputLimits, LinAllocationFollowsTheRowsRead) {
   const auto end = text.find('\n', at);
   text.replace(at, end - at, "Number of continuous states: 90000");
   const auto p = dir.write("x.lin", text);
-  EXPECT_THAT(input_error_message([&] { whirl::readOpenFastLin(p.string()); }),
+  EXPECT_THAT(inputErrorMessage([&] { whirl::readOpenFastLin(p.string()); }),
               HasSubstr("continuous states: truncated: 20 rows where the header declares 90000"));
 }
 
 TEST(InputLimits, LinMatrixSizeOutOfIntRangeIsNamed) {
   ScratchDir dir;
-  const auto p = dir.write("x.lin", replace_once(lin("Main.1.lin"), "\nA: 20 x", "\nA: 123456789012 x"));
-  const std::string msg = input_error_message([&] { whirl::readOpenFastLin(p.string()); });
+  const auto p = dir.write("x.lin", replaceOnce(lin("Main.1.lin"), "\nA: 20 x", "\nA: 123456789012 x"));
+  const std::string msg = inputErrorMessage([&] { whirl::readOpenFastLin(p.string()); });
   EXPECT_THAT(msg, HasSubstr("x.lin:"));
   EXPECT_THAT(msg, HasSubstr("A rows: '123456789012' is out of the integer range"));
 }
@@ -94,12 +94,12 @@ namespace {
 std::string caseError(const std::string& yaml) {
   ScratchDir dir;
   const auto path = dir.write("c.yaml", yaml);
-  return input_error_message([&] { whirl::readCase(path.string()); });
+  return inputErrorMessage([&] { whirl::readCase(path.string()); });
 }
 
 TEST(InputLimits, ShapeModeNumbersAndReducedModesAreBounded) {
-  const std::string topmass = read_text(whirl::test::source_dir() / "cases/tower_topmass/tower_topmass_eq32.yaml");
-  EXPECT_THAT(caseError(replace_once(topmass, "type: clamped_topmass, mode: 4,", "type: clamped_topmass, mode: 1001,")),
+  const std::string topmass = readText(whirl::test::sourceDir() / "cases/tower_topmass/tower_topmass_eq32.yaml");
+  EXPECT_THAT(caseError(replaceOnce(topmass, "type: clamped_topmass, mode: 4,", "type: clamped_topmass, mode: 1001,")),
               HasSubstr("c.yaml:17: bodies.tower.shapes.tower FA 4.mode: the mode number must be from 1 to 1000"));
   EXPECT_THAT(caseError(R"(name: fe
 gravity: 0

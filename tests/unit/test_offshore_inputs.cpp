@@ -28,8 +28,8 @@ const std::string kHydro = kDir + "NRELOffshrBsline5MW_OC3Hywind_HydroDyn.dat";
 const std::string kMap = kDir + "NRELOffshrBsline5MW_OC3Hywind_MAP.dat";
 
 io::HydroDynInput hydroWithRdtn0() {
-  io::OverrideSet set({io::parse_override("RdtnMod=0")});
-  return io::read_hydrodyn(kHydro, &set);
+  io::OverrideSet set({io::parseOverride("RdtnMod=0")});
+  return io::readHydroDyn(kHydro, &set);
 }
 
 std::string errorOf(const std::function<void()>& f) {
@@ -58,23 +58,24 @@ TEST(HydroDynInput, Oc3HywindValues) {
 }
 
 TEST(HydroDynInput, RadiationConvolutionIsRefusedAsInOpenFast) {
-  const std::string msg = errorOf([] { io::read_hydrodyn(kHydro); });
+  const std::string msg = errorOf([] { io::readHydroDyn(kHydro); });
   EXPECT_THAT(msg, StartsWith(kHydro + ":53: RdtnMod: 1 not supported by whirl (the radiation convolution has no "
                                       "linearization (OpenFAST refuses it too)"));
   EXPECT_EQ(msg.find('\n'), std::string::npos);
 }
 
 TEST(HydroDynInput, ForceFlagOffIsRefused) {
-  io::OverrideSet set({io::parse_override("RdtnMod=0"), io::parse_override("PtfmPF=False")});
-  EXPECT_EQ(errorOf([&] { io::read_hydrodyn(kHydro, &set); }),
-            kHydro + ":66: PtfmPF: False not supported by whirl (switching a direction's hydrodynamic loads off is "
-                     "not modelled; whirl supports only True or DEFAULT) (value set by override)");
+  io::OverrideSet set({io::parseOverride("RdtnMod=0"), io::parseOverride("PtfmPF=False")});
+  EXPECT_EQ(errorOf([&] { io::readHydroDyn(kHydro, &set); }),
+            kHydro +
+                ":66: PtfmPF: False not supported by whirl (switching a direction's hydrodynamic loads off is "
+                "not modelled; whirl supports only True or DEFAULT) (value set by override)");
 }
 
 TEST(HydroDynInput, Oc3HywindWamitMatrices) {
   const io::HydroDynInput h = hydroWithRdtn0();
   const double rho = 1025, g = 9.80665;
-  const io::WamitMatrices w = io::read_wamit(h, rho, g);  // PotFile "HydroData/Spar" finds spar.hst
+  const io::WamitMatrices w = io::readWamit(h, rho, g);  // PotFile "HydroData/Spar" finds spar.hst
   // spar.hst row "3 3 3.312247E+01", L = 1: C33 = 33.12247 ρ g.
   EXPECT_DOUBLE_EQ(w.hydrostatic(2, 2), 3.312247e1 * rho * g);
   EXPECT_DOUBLE_EQ(w.hydrostatic(4, 4), -4.973414e5 * rho * g);
@@ -90,17 +91,17 @@ TEST(HydroDynInput, MissingWamitFileNamesPotFile) {
   const std::string from = "\"HydroData/Spar\"";
   text.replace(text.find(from), from.size(), "\"nowhere/Spar\"");
   const std::string file = dir.write("hd.dat", text);
-  io::OverrideSet set({io::parse_override("RdtnMod=0")});
-  const io::HydroDynInput h = io::read_hydrodyn(file, &set);
-  EXPECT_THAT(errorOf([&] { io::read_wamit(h, 1025, 9.80665); }),
+  io::OverrideSet set({io::parseOverride("RdtnMod=0")});
+  const io::HydroDynInput h = io::readHydroDyn(file, &set);
+  EXPECT_THAT(errorOf([&] { io::readWamit(h, 1025, 9.80665); }),
               StartsWith(file + ":48: PotFile: WAMIT file not found: "));
 }
 
 TEST(MapInput, Oc3HywindThreeLinesByRepeat) {
-  const io::MapInput m = io::read_map(kMap);
+  const io::MapInput m = io::readMap(kMap);
   ASSERT_EQ(m.lines.size(), 1u);
   ASSERT_EQ(m.repeat_deg.size(), 2u);
-  const std::vector<MooringLine> lines = io::map_mooring_lines(m, 0, 320, 1025, 9.80665);
+  const std::vector<MooringLine> lines = io::mapMooringLines(m, 0, 320, 1025, 9.80665);
   ASSERT_EQ(lines.size(), 3u);
   // Apparent weight in water from the dictionary row: (MassDenInAir − ρ π Diam²/4) g.
   EXPECT_NEAR(lines[0].weight, (77.7066 - 1025 * std::numbers::pi * 0.09 * 0.09 / 4) * 9.80665, 1e-9);
@@ -117,8 +118,9 @@ TEST(MapInput, ConnectNodesAreRefusedOnTheirLine) {
   std::string text = test::slurp(kMap);
   text.replace(text.find("fix "), 4, "Connect ");
   const std::string file = dir.write("map.dat", text);
-  EXPECT_EQ(errorOf([&] { io::read_map(file); }),
-            file + ":8: Type: connect nodes (multi-segment lines) are not supported by whirl: only anchor-to-fairlead lines");
+  EXPECT_EQ(
+      errorOf([&] { io::readMap(file); }),
+      file + ":8: Type: connect nodes (multi-segment lines) are not supported by whirl: only anchor-to-fairlead lines");
 }
 
 TEST(MapInput, VerticalTendonIsRefused) {
@@ -126,14 +128,14 @@ TEST(MapInput, VerticalTendonIsRefused) {
   std::string text = test::slurp(kMap);
   text.replace(text.find("853.87"), 6, "5.2");
   const std::string file = dir.write("map.dat", text);
-  const io::MapInput m = io::read_map(file);
-  EXPECT_THAT(errorOf([&] { io::map_mooring_lines(m, 0, 320, 1025, 9.80665); }),
+  const io::MapInput m = io::readMap(file);
+  EXPECT_THAT(errorOf([&] { io::mapMooringLines(m, 0, 320, 1025, 9.80665); }),
               StartsWith(file + ":13: NodeAnch: the anchor is straight below its fairlead: vertical lines"));
 }
 
 TEST(MapInput, FloatingLineIsAnInputError) {
-  const io::MapInput m = io::read_map(kMap);
-  EXPECT_THAT(errorOf([&] { io::map_mooring_lines(m, 0, 320, 20000, 9.80665); }),
+  const io::MapInput m = io::readMap(kMap);
+  EXPECT_THAT(errorOf([&] { io::mapMooringLines(m, 0, 320, 20000, 9.80665); }),
               StartsWith(kMap + ":4: MassDenInAir: the line floats"));
 }
 

@@ -13,7 +13,7 @@ namespace {
 
 using testing::HasSubstr;
 using whirl::io::OpenFastFile;
-using whirl::test::input_error_message;
+using whirl::test::inputErrorMessage;
 
 const char* kSmall =
     "------- TEST INPUT FILE -------------------------------------------\n"
@@ -49,20 +49,20 @@ OpenFastFile small() { return OpenFastFile::parse(kSmall, "/cases/x/small.dat");
 TEST(OpenFastInput, ValueLinesAndTypes) {
   const OpenFastFile f = small();
   EXPECT_EQ(f.title(), "A title line with 5.0 numbers and words");
-  EXPECT_FALSE(f.get_bool("Echo"));
-  EXPECT_TRUE(f.get_bool("YawDOF"));
-  EXPECT_TRUE(f.get_bool("ShortFlag"));
-  EXPECT_FALSE(f.get_double_or_default("DT").has_value());
-  EXPECT_FALSE(f.get_double_or_default("DT2").has_value());
-  EXPECT_DOUBLE_EQ(*f.get_double_or_default("Gravity"), 9.80665);
-  EXPECT_DOUBLE_EQ(f.get_double("gravity"), 9.80665);  // keys are case-insensitive
-  EXPECT_EQ(f.get_int("NumBl"), 3);                    // first of two NumBl lines
-  EXPECT_DOUBLE_EQ(f.get_double("FortranD"), 1500.0);
-  EXPECT_EQ(f.get_int("PrescribedForcesCoord"), 0);
-  EXPECT_EQ(f.get_path("BldFile(1)"), std::filesystem::path("/cases/x/sub dir/blade file.dat"));
-  EXPECT_EQ(f.get_doubles("TwrGagNd"), (std::vector<double>{10, 19, 28}));
-  EXPECT_EQ(f.get_doubles("BldGagNd"), (std::vector<double>{5}));
-  EXPECT_DOUBLE_EQ(f.get_double("TwFAM1Sh(2)"), 0.7004);
+  EXPECT_FALSE(f.getBool("Echo"));
+  EXPECT_TRUE(f.getBool("YawDOF"));
+  EXPECT_TRUE(f.getBool("ShortFlag"));
+  EXPECT_FALSE(f.getDoubleOrDefault("DT").has_value());
+  EXPECT_FALSE(f.getDoubleOrDefault("DT2").has_value());
+  EXPECT_DOUBLE_EQ(*f.getDoubleOrDefault("Gravity"), 9.80665);
+  EXPECT_DOUBLE_EQ(f.getDouble("gravity"), 9.80665);  // keys are case-insensitive
+  EXPECT_EQ(f.getInt("NumBl"), 3);                    // first of two NumBl lines
+  EXPECT_DOUBLE_EQ(f.getDouble("FortranD"), 1500.0);
+  EXPECT_EQ(f.getInt("PrescribedForcesCoord"), 0);
+  EXPECT_EQ(f.getPath("BldFile(1)"), std::filesystem::path("/cases/x/sub dir/blade file.dat"));
+  EXPECT_EQ(f.getDoubles("TwrGagNd"), (std::vector<double>{10, 19, 28}));
+  EXPECT_EQ(f.getDoubles("BldGagNd"), (std::vector<double>{5}));
+  EXPECT_DOUBLE_EQ(f.getDouble("TwFAM1Sh(2)"), 0.7004);
 }
 
 TEST(OpenFastInput, RawValueAndLineKept) {
@@ -85,7 +85,7 @@ TEST(OpenFastInput, OutListBlockIsSkipped) {
 
 TEST(OpenFastInput, TableWithHeaderAndUnits) {
   const OpenFastFile f = small();
-  const whirl::io::OpenFastTable* t = f.find_table("twfastif");
+  const whirl::io::OpenFastTable* t = f.findTable("twfastif");
   ASSERT_NE(t, nullptr);
   EXPECT_EQ(t->columns, (std::vector<std::string>{"HtFract", "TMassDen", "TwFAStif"}));
   EXPECT_EQ(t->units, (std::vector<std::string>{"(-)", "(kg/m)", "(N m^2)"}));
@@ -95,7 +95,7 @@ TEST(OpenFastInput, TableWithHeaderAndUnits) {
   EXPECT_DOUBLE_EQ(t->rows[1][2], 1.1582e11);
   EXPECT_EQ(t->end_line, 25);
   EXPECT_FALSE(t->ends_at_eof);
-  EXPECT_EQ(f.find_table("NoSuchColumn"), nullptr);
+  EXPECT_EQ(f.findTable("NoSuchColumn"), nullptr);
 }
 
 TEST(OpenFastInput, TitleAfterTwoSeparators) {
@@ -106,25 +106,25 @@ TEST(OpenFastInput, TitleAfterTwoSeparators) {
       "t.dat");
   EXPECT_EQ(f.title(), "FAST v7.02 tower file for turbine \"WP1.5\"");
   EXPECT_EQ(f.entries().size(), 1u);
-  EXPECT_EQ(f.get_int("NTwInpSt"), 10);
+  EXPECT_EQ(f.getInt("NTwInpSt"), 10);
 }
 
 TEST(OpenFastInput, CrLfLineEndings) {
   const OpenFastFile f = OpenFastFile::parse("---\r\ntitle\r\n  2.5  X  - x\r\nTrue  Y - y\r\n", "w.dat");
-  EXPECT_DOUBLE_EQ(f.get_double("X"), 2.5);
-  EXPECT_TRUE(f.get_bool("Y"));
+  EXPECT_DOUBLE_EQ(f.getDouble("X"), 2.5);
+  EXPECT_TRUE(f.getBool("Y"));
 }
 
 TEST(OpenFastInput, ParseFortranDouble) {
-  using whirl::io::parse_fortran_double;
-  EXPECT_DOUBLE_EQ(*parse_fortran_double("+2"), 2.0);
-  EXPECT_DOUBLE_EQ(*parse_fortran_double("-1.25d-2"), -0.0125);
-  EXPECT_DOUBLE_EQ(*parse_fortran_double("8.67637E+08"), 8.67637e8);
-  EXPECT_TRUE(std::isnan(*parse_fortran_double("NaN")));
-  EXPECT_TRUE(std::isinf(*parse_fortran_double("inf")));
-  EXPECT_FALSE(parse_fortran_double("1.0e").has_value());
-  EXPECT_FALSE(parse_fortran_double("default").has_value());
-  EXPECT_FALSE(parse_fortran_double("12abc").has_value());
+  using whirl::io::parseFortranDouble;
+  EXPECT_DOUBLE_EQ(*parseFortranDouble("+2"), 2.0);
+  EXPECT_DOUBLE_EQ(*parseFortranDouble("-1.25d-2"), -0.0125);
+  EXPECT_DOUBLE_EQ(*parseFortranDouble("8.67637E+08"), 8.67637e8);
+  EXPECT_TRUE(std::isnan(*parseFortranDouble("NaN")));
+  EXPECT_TRUE(std::isinf(*parseFortranDouble("inf")));
+  EXPECT_FALSE(parseFortranDouble("1.0e").has_value());
+  EXPECT_FALSE(parseFortranDouble("default").has_value());
+  EXPECT_FALSE(parseFortranDouble("12abc").has_value());
 }
 
 TEST(OpenFastInput, ErrorsNameFileLineKeyAndReason) {
@@ -132,77 +132,74 @@ TEST(OpenFastInput, ErrorsNameFileLineKeyAndReason) {
       "---\ntitle\n  abc  Mass  - m\n  nan  Stiff - k\n  -inf  Damp - c\n  3.5  Count - n\n"
       "  maybe  Flag - f\n  1, 2  Scalar - s\n",
       "bad.dat");
-  EXPECT_EQ(input_error_message([&] { f.get_double("Mass"); }), "bad.dat:3: Mass: 'abc' is not a number");
-  EXPECT_EQ(input_error_message([&] { f.get_double("Stiff"); }), "bad.dat:4: Stiff: value is NaN");
-  EXPECT_EQ(input_error_message([&] { f.get_double("Damp"); }), "bad.dat:5: Damp: value is infinite");
-  EXPECT_EQ(input_error_message([&] { f.get_int("Count"); }), "bad.dat:6: Count: '3.5' is not an integer");
-  EXPECT_EQ(input_error_message([&] { f.get_bool("Flag"); }), "bad.dat:7: Flag: 'maybe' is not True or False");
-  EXPECT_EQ(input_error_message([&] { f.get_double("Scalar"); }),
-            "bad.dat:8: Scalar: expected one number, found '1, 2'");
-  EXPECT_EQ(input_error_message([&] { f.get_double("NacMass"); }), "bad.dat: NacMass: key not found in this file");
-  EXPECT_EQ(input_error_message([&] { f.get_existing_path("Mass"); }),
-            "bad.dat:3: Mass: file not found: abc");
-  EXPECT_FALSE(f.find_double("Missing").has_value());
-  EXPECT_THAT(input_error_message([&] { f.find_double("Mass"); }), HasSubstr("bad.dat:3: Mass:"));
+  EXPECT_EQ(inputErrorMessage([&] { f.getDouble("Mass"); }), "bad.dat:3: Mass: 'abc' is not a number");
+  EXPECT_EQ(inputErrorMessage([&] { f.getDouble("Stiff"); }), "bad.dat:4: Stiff: value is NaN");
+  EXPECT_EQ(inputErrorMessage([&] { f.getDouble("Damp"); }), "bad.dat:5: Damp: value is infinite");
+  EXPECT_EQ(inputErrorMessage([&] { f.getInt("Count"); }), "bad.dat:6: Count: '3.5' is not an integer");
+  EXPECT_EQ(inputErrorMessage([&] { f.getBool("Flag"); }), "bad.dat:7: Flag: 'maybe' is not True or False");
+  EXPECT_EQ(inputErrorMessage([&] { f.getDouble("Scalar"); }), "bad.dat:8: Scalar: expected one number, found '1, 2'");
+  EXPECT_EQ(inputErrorMessage([&] { f.getDouble("NacMass"); }), "bad.dat: NacMass: key not found in this file");
+  EXPECT_EQ(inputErrorMessage([&] { f.getExistingPath("Mass"); }), "bad.dat:3: Mass: file not found: abc");
+  EXPECT_FALSE(f.findDouble("Missing").has_value());
+  EXPECT_THAT(inputErrorMessage([&] { f.findDouble("Mass"); }), HasSubstr("bad.dat:3: Mass:"));
 }
 
 TEST(OpenFastInput, MissingFile) {
-  EXPECT_EQ(input_error_message([] { OpenFastFile::read("/nonexistent/whirl/x.dat"); }),
+  EXPECT_EQ(inputErrorMessage([] { OpenFastFile::read("/nonexistent/whirl/x.dat"); }),
             "/nonexistent/whirl/x.dat: cannot open file");
 }
 
 TEST(OpenFastInput, SetValueReplacesAndMarksOverride) {
   OpenFastFile f = small();
-  f.set_value("gravity", "9.81");
-  EXPECT_DOUBLE_EQ(f.get_double("Gravity"), 9.81);
+  f.setValue("gravity", "9.81");
+  EXPECT_DOUBLE_EQ(f.getDouble("Gravity"), 9.81);
   EXPECT_TRUE(f.find("Gravity")->overridden);
   EXPECT_EQ(f.find("Gravity")->line, 7);
-  f.set_value("TwrGagNd", "1,2");
-  EXPECT_EQ(f.get_doubles("TwrGagNd"), (std::vector<double>{1, 2}));
-  f.set_value("NumBl", "x");
-  EXPECT_EQ(input_error_message([&] { f.get_int("NumBl"); }),
+  f.setValue("TwrGagNd", "1,2");
+  EXPECT_EQ(f.getDoubles("TwrGagNd"), (std::vector<double>{1, 2}));
+  f.setValue("NumBl", "x");
+  EXPECT_EQ(inputErrorMessage([&] { f.getInt("NumBl"); }),
             "/cases/x/small.dat:8: NumBl: 'x' is not an integer (value set by override)");
-  EXPECT_EQ(input_error_message([&] { f.set_value("NoSuchKey", "1"); }),
+  EXPECT_EQ(inputErrorMessage([&] { f.setValue("NoSuchKey", "1"); }),
             "/cases/x/small.dat: NoSuchKey: unknown key (not in this file)");
 }
 
 TEST(OpenFastOverrides, ParseAndApplyAcrossFiles) {
   using whirl::io::OverrideSet;
-  using whirl::io::parse_override;
-  const whirl::io::KeyOverride o = parse_override(" NacMass = 250000 ");
+  using whirl::io::parseOverride;
+  const whirl::io::KeyOverride o = parseOverride(" NacMass = 250000 ");
   EXPECT_EQ(o.key, "NacMass");
   EXPECT_EQ(o.value, "250000");
-  EXPECT_THAT(input_error_message([] { parse_override("NacMass"); }), HasSubstr("expected KEY=VALUE"));
-  EXPECT_THAT(input_error_message([] { parse_override("=3"); }), HasSubstr("empty key"));
-  EXPECT_THAT(input_error_message([] { parse_override("NacMass="); }), HasSubstr("empty value"));
+  EXPECT_THAT(inputErrorMessage([] { parseOverride("NacMass"); }), HasSubstr("expected KEY=VALUE"));
+  EXPECT_THAT(inputErrorMessage([] { parseOverride("=3"); }), HasSubstr("empty key"));
+  EXPECT_THAT(inputErrorMessage([] { parseOverride("NacMass="); }), HasSubstr("empty value"));
 
   OverrideSet set({{"Gravity", "9.81"}, {"NoSuchKey", "1"}});
   OpenFastFile f = small();
   OpenFastFile g = OpenFastFile::parse("---\ntitle\n 1 Other - o\n", "other.dat");
-  set.apply_to(f);
-  set.apply_to(g);
-  EXPECT_DOUBLE_EQ(f.get_double("Gravity"), 9.81);
-  EXPECT_EQ(input_error_message([&] { set.require_all_used(); }),
+  set.applyTo(f);
+  set.applyTo(g);
+  EXPECT_DOUBLE_EQ(f.getDouble("Gravity"), 9.81);
+  EXPECT_EQ(inputErrorMessage([&] { set.requireAllUsed(); }),
             "NoSuchKey: unknown key (not in any file read: /cases/x/small.dat, other.dat)");
   OverrideSet ok(std::vector<whirl::io::KeyOverride>{{"Other", "2"}});
-  ok.apply_to(g);
-  EXPECT_NO_THROW(ok.require_all_used());
-  EXPECT_DOUBLE_EQ(g.get_double("Other"), 2.0);
+  ok.applyTo(g);
+  EXPECT_NO_THROW(ok.requireAllUsed());
+  EXPECT_DOUBLE_EQ(g.getDouble("Other"), 2.0);
 }
 
 TEST(OpenFastInput, ReadsTheNrel5mwElastoDynFile) {
-  const OpenFastFile f =
-      OpenFastFile::read(whirl::test::nrel5mw_dir() / "NRELOffshrBsline5MW_Onshore_ElastoDyn.dat");
-  EXPECT_DOUBLE_EQ(f.get_double("TowerHt"), 87.6);
+  const OpenFastFile f = OpenFastFile::read(whirl::test::nrel5mwDir() / "NRELOffshrBsline5MW_Onshore_ElastoDyn.dat");
+  EXPECT_DOUBLE_EQ(f.getDouble("TowerHt"), 87.6);
   EXPECT_EQ(f.find("TowerHt")->line, 64);
-  EXPECT_DOUBLE_EQ(f.get_double("RotSpeed"), 10.0);
+  EXPECT_DOUBLE_EQ(f.getDouble("RotSpeed"), 10.0);
   EXPECT_EQ(f.find("RotSpeed")->line, 33);
-  EXPECT_FALSE(f.get_double_or_default("DT").has_value());
+  EXPECT_FALSE(f.getDoubleOrDefault("DT").has_value());
   // Keys after the first OutList block (which lists quoted and unquoted channels) are read again.
-  EXPECT_EQ(f.get_int("BldNd_BladesOut"), 1);
+  EXPECT_EQ(f.getInt("BldNd_BladesOut"), 1);
   EXPECT_FALSE(f.has("BldPitch1"));
-  EXPECT_EQ(f.get_path("TwrFile"),
-            (whirl::test::nrel5mw_dir() / "NRELOffshrBsline5MW_Onshore_ElastoDyn_Tower.dat").lexically_normal());
+  EXPECT_EQ(f.getPath("TwrFile"),
+            (whirl::test::nrel5mwDir() / "NRELOffshrBsline5MW_Onshore_ElastoDyn_Tower.dat").lexically_normal());
 }
 
 }  // namespace

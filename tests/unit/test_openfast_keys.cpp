@@ -15,10 +15,10 @@
 namespace {
 
 using testing::HasSubstr;
-using whirl::test::input_error_message;
-using whirl::test::nrel5mw_dir;
-using whirl::test::read_text;
-using whirl::test::replace_once;
+using whirl::test::inputErrorMessage;
+using whirl::test::nrel5mwDir;
+using whirl::test::readText;
+using whirl::test::replaceOnce;
 using whirl::test::ScratchDir;
 
 using whirl::test::nrelEd;
@@ -32,40 +32,39 @@ const char* kBlade = whirl::test::kNrelBlade;
 
 TEST(OpenFastKeys, ElastoDynKeyGivenTwiceIsRefused) {
   // Whirl took the first NacMass (1 kg); OpenFAST, reading by position, a different line for each value.
-  const std::string msg = turbineError(replace_once(
-      nrelEd(), "     240000   NacMass", "          1   NacMass     - Nacelle mass (kg)\n     240000   NacMass"));
+  const std::string msg = turbineError(
+      replaceOnce(nrelEd(), "     240000   NacMass",
+                  "          1   NacMass     - Nacelle mass (kg)\n     240000   NacMass"));
   EXPECT_THAT(msg, HasSubstr(std::string(kEd) + ":78: NacMass: given twice (first on line 77)"));
 }
 
 TEST(OpenFastKeys, ElastoDynUnknownKeyIsRefused) {
-  const std::string msg = turbineError(replace_once(
-      nrelEd(), "     240000   NacMass", "        1.5   NacMas2     - typo\n     240000   NacMass"));
+  const std::string msg = turbineError(
+      replaceOnce(nrelEd(), "     240000   NacMass", "        1.5   NacMas2     - typo\n     240000   NacMass"));
   EXPECT_THAT(msg, HasSubstr(std::string(kEd) + ":77: NacMas2: not a key of an OpenFAST ElastoDyn file"));
 }
 
 TEST(OpenFastKeys, TowerAndBladeKeysGivenTwiceAreRefused) {
   ScratchDir dir;
-  const std::string tower = read_text(nrel5mw_dir() / kTower);
-  const auto t = dir.write("t.dat", replace_once(tower, "AdjTwMa", "AdjTwMa - a\n  1   AdjTwMa"));
-  EXPECT_THAT(input_error_message([&] { whirl::io::read_elastodyn_tower(t); }),
-              HasSubstr("AdjTwMa: given twice"));
-  const std::string blade = read_text(nrel5mw_dir() / kBlade);
-  const auto b = dir.write("b.dat", replace_once(blade, "AdjBlMs", "AdjBlMs - a\n  1   AdjEdStt"));
-  EXPECT_THAT(input_error_message([&] { whirl::io::read_elastodyn_blade(b); }),
+  const std::string tower = readText(nrel5mwDir() / kTower);
+  const auto t = dir.write("t.dat", replaceOnce(tower, "AdjTwMa", "AdjTwMa - a\n  1   AdjTwMa"));
+  EXPECT_THAT(inputErrorMessage([&] { whirl::io::readElastoDynTower(t); }), HasSubstr("AdjTwMa: given twice"));
+  const std::string blade = readText(nrel5mwDir() / kBlade);
+  const auto b = dir.write("b.dat", replaceOnce(blade, "AdjBlMs", "AdjBlMs - a\n  1   AdjEdStt"));
+  EXPECT_THAT(inputErrorMessage([&] { whirl::io::readElastoDynBlade(b); }),
               HasSubstr("AdjEdStt: not a key of an OpenFAST ElastoDyn blade file"));
 }
 
 TEST(OpenFastKeys, FstRepeatsEdFileForASecondRotorButNothingElse) {
   ScratchDir dir;
-  const std::string fst = read_text(nrel5mw_dir() / "Main_Onshore.fst");
+  const std::string fst = readText(nrel5mwDir() / "Main_Onshore.fst");
   nrelWith(dir, nrelEd());
-  const auto two = dir.write("two.fst", replace_once(fst, "          1   CompElast",
-                                                     "          1   CompElast       - again\n          1   CompElast"));
-  EXPECT_THAT(input_error_message([&] { whirl::io::read_openfast_turbine(two); }),
-              HasSubstr("CompElast: given twice"));
+  const auto two = dir.write("two.fst", replaceOnce(fst, "          1   CompElast",
+                                                    "          1   CompElast       - again\n          1   CompElast"));
+  EXPECT_THAT(inputErrorMessage([&] { whirl::io::readOpenFastTurbine(two); }), HasSubstr("CompElast: given twice"));
   const std::string ed_line = "\"" + std::string(kEd) + "\"    EDFile - second rotor\n";
   const auto v5 = dir.write("v5.fst", fst + ed_line);
-  EXPECT_NO_THROW(whirl::io::read_openfast_turbine(v5));
+  EXPECT_NO_THROW(whirl::io::readOpenFastTurbine(v5));
 }
 
 }  // namespace

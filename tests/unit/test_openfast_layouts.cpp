@@ -14,13 +14,13 @@ namespace {
 using testing::ElementsAre;
 using testing::HasSubstr;
 using whirl::io::OpenFastTurbine;
-using whirl::io::read_openfast_turbine;
-using whirl::test::input_error_message;
-using whirl::test::nrel5mw_dir;
-using whirl::test::openfast_data_dir;
-using whirl::test::read_text;
-using whirl::test::remove_line;
-using whirl::test::replace_once;
+using whirl::io::readOpenFastTurbine;
+using whirl::test::inputErrorMessage;
+using whirl::test::nrel5mwDir;
+using whirl::test::openfastDataDir;
+using whirl::test::readText;
+using whirl::test::removeLine;
+using whirl::test::replaceOnce;
 using whirl::test::ScratchDir;
 
 const char* kEd = "NRELOffshrBsline5MW_Onshore_ElastoDyn.dat";
@@ -28,65 +28,66 @@ const char* kTower = "NRELOffshrBsline5MW_Onshore_ElastoDyn_Tower.dat";
 const char* kBlade = "NRELOffshrBsline5MW_Blade.dat";
 
 /// The NREL 5MW case copied into a scratch folder, with the ElastoDyn main file replaced by `ed_text`.
-std::filesystem::path write_case(const ScratchDir& dir, const std::string& ed_text) {
-  dir.copy(nrel5mw_dir() / kTower);
-  dir.copy(nrel5mw_dir() / kBlade);
+std::filesystem::path writeCase(const ScratchDir& dir, const std::string& ed_text) {
+  dir.copy(nrel5mwDir() / kTower);
+  dir.copy(nrel5mwDir() / kBlade);
   dir.write(kEd, ed_text);
-  return dir.copy(nrel5mw_dir() / "Main_Onshore.fst");
+  return dir.copy(nrel5mwDir() / "Main_Onshore.fst");
 }
 
-std::string nrel_ed() { return read_text(nrel5mw_dir() / kEd); }
+std::string nrelEd() { return readText(nrel5mwDir() / kEd); }
 
 TEST(OpenFastLayouts, Ws03ElastoDynV103GravityInElastoDyn) {
-  const OpenFastTurbine t = read_openfast_turbine(openfast_data_dir() / "ws03" / "ws03.0.fst");
+  const OpenFastTurbine t = readOpenFastTurbine(openfastDataDir() / "ws03" / "ws03.0.fst");
   EXPECT_FALSE(t.fst.Gravity.has_value());
   ASSERT_TRUE(t.elastodyn.Gravity.has_value());
   EXPECT_DOUBLE_EQ(whirl::io::gravity(t), 9.80665);
   EXPECT_EQ(t.fst.CompServo, 0);
-  EXPECT_FALSE(whirl::io::read_servodyn_if_enabled(t.fst).has_value());  // ServoDyn off: not read
+  EXPECT_FALSE(whirl::io::readServoDynIfEnabled(t.fst).has_value());  // ServoDyn off: not read
   EXPECT_DOUBLE_EQ(t.elastodyn.init.RotSpeed, 6.972);
   EXPECT_FALSE(t.elastodyn.dof.GenDOF);
   EXPECT_TRUE(t.elastodyn.dof.YawDOF);
   EXPECT_EQ(t.elastodyn.TwrFile,
-            (openfast_data_dir() / "5MW_Baseline" / kTower).lexically_normal());  // "../5MW_Baseline/…"
-  EXPECT_EQ(t.elastodyn.source.get_doubles("TwrGagNd"), (std::vector<double>{10, 19, 28}));
+            (openfastDataDir() / "5MW_Baseline" / kTower).lexically_normal());  // "../5MW_Baseline/…"
+  EXPECT_EQ(t.elastodyn.source.getDoubles("TwrGagNd"), (std::vector<double>{10, 19, 28}));
   EXPECT_DOUBLE_EQ(t.elastodyn.tower.TwFAM1Sh[0], 0.7004);
   EXPECT_EQ(t.elastodyn.blades.size(), 3u);
-  EXPECT_NO_THROW(whirl::io::require_supported(t));
+  EXPECT_NO_THROW(whirl::io::requireSupported(t));
 }
 
 TEST(OpenFastLayouts, Rotating9rpmOpenFast32) {
-  const OpenFastTurbine t = read_openfast_turbine(openfast_data_dir() / "rotating-9rpm" / "Main.fst");
+  const OpenFastTurbine t = readOpenFastTurbine(openfastDataDir() / "rotating-9rpm" / "Main.fst");
   EXPECT_DOUBLE_EQ(whirl::io::gravity(t), 9.80665);
   EXPECT_FALSE(t.elastodyn.Gravity.has_value());
   EXPECT_EQ(t.fst.MHK, 0);
   EXPECT_DOUBLE_EQ(t.elastodyn.init.RotSpeed, 9.0);
   EXPECT_TRUE(t.elastodyn.dof.GenDOF);
   EXPECT_FALSE(t.elastodyn.dof.DrTrDOF || t.elastodyn.dof.YawDOF || t.elastodyn.dof.TwFADOF1);
-  EXPECT_EQ(t.elastodyn.source.get_doubles("BldGagNd"), (std::vector<double>{5}));  // "5,"
+  EXPECT_EQ(t.elastodyn.source.getDoubles("BldGagNd"), (std::vector<double>{5}));  // "5,"
   EXPECT_EQ(t.elastodyn.blades[2].NBlInpSt, 49);
-  EXPECT_NO_THROW(whirl::io::require_supported(t));
+  EXPECT_NO_THROW(whirl::io::requireSupported(t));
   // ServoDyn is on, but its file was not copied: the error names the .fst line, and only when asked.
-  EXPECT_THAT(input_error_message([&] { whirl::io::read_servodyn_if_enabled(t.fst); }),
+  EXPECT_THAT(inputErrorMessage([&] { whirl::io::readServoDynIfEnabled(t.fst); }),
               HasSubstr("Main.fst:39: ServoFile: file not found: "));
 }
 
 TEST(OpenFastLayouts, ElastoDynV100) {
   // FAST 8.0x ElastoDyn: Gravity here, no BldNodes, TwrRBHt/TwrDraft/PtfmRef instead of TowerBsHt and
   // PtfmRefzt, no PtfmCMxt/PtfmCMyt.
-  std::string ed = nrel_ed();
-  ed = replace_once(ed, "---------------------- DEGREES OF FREEDOM",
-                    "---------------------- ENVIRONMENTAL CONDITION ---\n"
-                    "    9.80665   Gravity     - Gravitational acceleration (m/s^2)\n"
-                    "---------------------- DEGREES OF FREEDOM");
-  ed = replace_once(ed, "          0   TowerBsHt   - Height", "          0   TwrRBHt     - Tower rigid base height (meters)\n"
-                                                          "          0   TwrDraft    - Height");
-  ed = remove_line(ed, "PtfmCMxt");
-  ed = remove_line(ed, "PtfmCMyt");
-  ed = replace_once(ed, "PtfmRefzt   - Vertical", "PtfmRef     - Downward");
-  ed = remove_line(ed, "BldNodes");
+  std::string ed = nrelEd();
+  ed = replaceOnce(ed, "---------------------- DEGREES OF FREEDOM",
+                   "---------------------- ENVIRONMENTAL CONDITION ---\n"
+                   "    9.80665   Gravity     - Gravitational acceleration (m/s^2)\n"
+                   "---------------------- DEGREES OF FREEDOM");
+  ed = replaceOnce(ed, "          0   TowerBsHt   - Height",
+                   "          0   TwrRBHt     - Tower rigid base height (meters)\n"
+                   "          0   TwrDraft    - Height");
+  ed = removeLine(ed, "PtfmCMxt");
+  ed = removeLine(ed, "PtfmCMyt");
+  ed = replaceOnce(ed, "PtfmRefzt   - Vertical", "PtfmRef     - Downward");
+  ed = removeLine(ed, "BldNodes");
   ScratchDir dir;
-  const OpenFastTurbine t = read_openfast_turbine(write_case(dir, ed));
+  const OpenFastTurbine t = readOpenFastTurbine(writeCase(dir, ed));
   EXPECT_EQ(t.elastodyn.Gravity, 9.80665);
   EXPECT_DOUBLE_EQ(whirl::io::gravity(t), 9.80665);  // the .fst value wins when both have one
   EXPECT_FALSE(t.elastodyn.BldNodes.has_value());
@@ -97,31 +98,36 @@ TEST(OpenFastLayouts, ElastoDynV100) {
   EXPECT_FALSE(t.elastodyn.config.PtfmCMxt.has_value());
   EXPECT_FALSE(t.elastodyn.config.PtfmRefzt.has_value());
   EXPECT_DOUBLE_EQ(t.elastodyn.config.TowerHt, 87.6);
-  EXPECT_NO_THROW(whirl::io::require_supported(t));
+  EXPECT_NO_THROW(whirl::io::requireSupported(t));
 }
 
 TEST(OpenFastLayouts, OpenFastV5) {
   // v4/v5 additions: PitchDOF, PtfmRefxt/yt, PBrIner/BlPIner, HubIner_Teeter, products of inertia,
   // YAW-FRICTION section; blade table without PitchAxis; .fst with NRotors.
-  std::string ed = nrel_ed();
-  ed = replace_once(ed, "False         TeetDOF", "False         PitchDOF    - Blade pitch DOF (flag)\n"
-                                                "False         TeetDOF");
-  ed = replace_once(ed, "          0   PtfmRefzt", "          0   PtfmRefxt   - x\n          0   PtfmRefyt   - y\n"
-                                                    "          0   PtfmRefzt");
-  ed = replace_once(ed, "      56780   HubMass", "        200   PBrIner(1)  - a\n        200   PBrIner(2)  - a\n"
-                                                "        200   PBrIner(3)  - a\n      28578   BlPIner(1)  - b\n"
-                                                "      28578   BlPIner(2)  - b\n      28578   BlPIner(3)  - b\n"
-                                                "      56780   HubMass");
-  ed = replace_once(ed, "    534.116   GenIner", "          0   HubIner_Teeter - t\n    534.116   GenIner");
-  ed = replace_once(ed, "---------------------- BLADE ----", "          0   PtfmXYIner  - xy\n          0   PtfmYZIner  - yz\n"
-                                                             "          0   PtfmXZIner  - xz\n---------------------- BLADE ----");
-  ed = replace_once(ed, "---------------------- FURLING", "---------------------- YAW-FRICTION ---\n"
-                                                          "          0   YawFrctMod  - Yaw-friction model\n"
-                                                          "        300   M_CSmax     - Maximum static Coulomb friction torque (N-m)\n"
-                                                          "---------------------- FURLING");
-  std::string blade = read_text(nrel5mw_dir() / kBlade);
-  blade = replace_once(blade, "BlFract      PitchAxis      StrcTwst", "BlFract      StrcTwst");
-  blade = replace_once(blade, "(-)           (-)          (deg)", "(-)          (deg)");
+  std::string ed = nrelEd();
+  ed = replaceOnce(ed, "False         TeetDOF",
+                   "False         PitchDOF    - Blade pitch DOF (flag)\n"
+                   "False         TeetDOF");
+  ed = replaceOnce(ed, "          0   PtfmRefzt",
+                   "          0   PtfmRefxt   - x\n          0   PtfmRefyt   - y\n"
+                   "          0   PtfmRefzt");
+  ed = replaceOnce(ed, "      56780   HubMass",
+                   "        200   PBrIner(1)  - a\n        200   PBrIner(2)  - a\n"
+                   "        200   PBrIner(3)  - a\n      28578   BlPIner(1)  - b\n"
+                   "      28578   BlPIner(2)  - b\n      28578   BlPIner(3)  - b\n"
+                   "      56780   HubMass");
+  ed = replaceOnce(ed, "    534.116   GenIner", "          0   HubIner_Teeter - t\n    534.116   GenIner");
+  ed = replaceOnce(ed, "---------------------- BLADE ----",
+                   "          0   PtfmXYIner  - xy\n          0   PtfmYZIner  - yz\n"
+                   "          0   PtfmXZIner  - xz\n---------------------- BLADE ----");
+  ed = replaceOnce(ed, "---------------------- FURLING",
+                   "---------------------- YAW-FRICTION ---\n"
+                   "          0   YawFrctMod  - Yaw-friction model\n"
+                   "        300   M_CSmax     - Maximum static Coulomb friction torque (N-m)\n"
+                   "---------------------- FURLING");
+  std::string blade = readText(nrel5mwDir() / kBlade);
+  blade = replaceOnce(blade, "BlFract      PitchAxis      StrcTwst", "BlFract      StrcTwst");
+  blade = replaceOnce(blade, "(-)           (-)          (deg)", "(-)          (deg)");
   std::string stripped;  // drop the second number of every table row
   for (std::size_t b = 0, e; b < blade.size(); b = e + 1) {
     e = blade.find('\n', b);
@@ -130,13 +136,14 @@ TEST(OpenFastLayouts, OpenFastV5) {
     stripped += line + "\n";
     if (e == std::string::npos) break;
   }
-  std::string fst = read_text(nrel5mw_dir() / "Main_Onshore.fst");
-  fst = replace_once(fst, "          1   CompElast", "          1   NRotors         - Number of rotors (-)\n"
-                                                    "          1   CompElast");
+  std::string fst = readText(nrel5mwDir() / "Main_Onshore.fst");
+  fst = replaceOnce(fst, "          1   CompElast",
+                    "          1   NRotors         - Number of rotors (-)\n"
+                    "          1   CompElast");
   ScratchDir dir;
-  write_case(dir, ed);
+  writeCase(dir, ed);
   dir.write(kBlade, stripped);
-  const OpenFastTurbine t = read_openfast_turbine(dir.write("Main_Onshore.fst", fst));
+  const OpenFastTurbine t = readOpenFastTurbine(dir.write("Main_Onshore.fst", fst));
   EXPECT_EQ(t.fst.NRotors, 1);
   EXPECT_EQ(t.elastodyn.dof.PitchDOF, false);
   EXPECT_EQ(t.elastodyn.config.PtfmRefxt, 0.0);
@@ -146,11 +153,11 @@ TEST(OpenFastLayouts, OpenFastV5) {
   EXPECT_EQ(t.elastodyn.mass.PtfmXZIner, 0.0);
   EXPECT_EQ(t.elastodyn.YawFrctMod, 0);
   const whirl::io::ElastoDynBlade& b = t.elastodyn.blades[0];
-  EXPECT_EQ(b.pitch_axis(), nullptr);
+  EXPECT_EQ(b.pitchAxis(), nullptr);
   EXPECT_THAT(b.distributed.names, ElementsAre("BlFract", "StrcTwst", "BMassDen", "FlpStff", "EdgStff"));
   EXPECT_DOUBLE_EQ(b.distributed.column("StrcTwst")[0], 13.308);
   EXPECT_DOUBLE_EQ(b.distributed.column("EdgStff")[48], 5.01e6);
-  EXPECT_NO_THROW(whirl::io::require_supported(t));
+  EXPECT_NO_THROW(whirl::io::requireSupported(t));
 }
 
 TEST(OpenFastLayouts, WideTablesOfOlderFiles) {
@@ -171,16 +178,16 @@ TEST(OpenFastLayouts, WideTablesOfOlderFiles) {
       "  1 BldFl2Sh(2) - c\n  0 BldFl2Sh(3) - c\n  0 BldFl2Sh(4) - c\n  0 BldFl2Sh(5) - c\n  0 BldFl2Sh(6) - c\n"
       "  1 BldEdgSh(2) - c\n  0 BldEdgSh(3) - c\n  0 BldEdgSh(4) - c\n  0 BldEdgSh(5) - c\n  0 BldEdgSh(6) - c\n";
   ScratchDir dir;
-  const whirl::io::ElastoDynBlade b = whirl::io::read_elastodyn_blade(dir.write("b.dat", blade));
-  ASSERT_NE(b.pitch_axis(), nullptr);
-  EXPECT_THAT(*b.pitch_axis(), ElementsAre(0.25, 0.25, 0.25));
+  const whirl::io::ElastoDynBlade b = whirl::io::readElastoDynBlade(dir.write("b.dat", blade));
+  ASSERT_NE(b.pitchAxis(), nullptr);
+  EXPECT_THAT(*b.pitchAxis(), ElementsAre(0.25, 0.25, 0.25));
   EXPECT_EQ(b.distributed.names.size(), 17u);
   EXPECT_THAT(b.distributed.column("EAStff"), ElementsAre(1e10, 1e9, 1e8));
   EXPECT_EQ(b.distributed.units[7], "(N)");
 
-  std::string tower = read_text(nrel5mw_dir() / kTower);
-  tower = replace_once(tower, "TwSSStif\n", "TwSSStif TwGJStif TwEAStif TwFAIner TwSSIner TwFAcgOf TwSScgOf\n");
-  tower = replace_once(tower, "(Nm^2)         (Nm^2)\n", "(Nm^2) (Nm^2) (Nm^2) (N) (kg m) (kg m) (m) (m)\n");
+  std::string tower = readText(nrel5mwDir() / kTower);
+  tower = replaceOnce(tower, "TwSSStif\n", "TwSSStif TwGJStif TwEAStif TwFAIner TwSSIner TwFAcgOf TwSScgOf\n");
+  tower = replaceOnce(tower, "(Nm^2)         (Nm^2)\n", "(Nm^2) (Nm^2) (Nm^2) (N) (kg m) (kg m) (m) (m)\n");
   std::string wide;
   for (std::size_t b0 = 0, e; b0 < tower.size(); b0 = e + 1) {
     e = tower.find('\n', b0);
@@ -189,7 +196,7 @@ TEST(OpenFastLayouts, WideTablesOfOlderFiles) {
     wide += line + "\n";
     if (e == std::string::npos) break;
   }
-  const whirl::io::ElastoDynTower t = whirl::io::read_elastodyn_tower(dir.write("t.dat", wide));
+  const whirl::io::ElastoDynTower t = whirl::io::readElastoDynTower(dir.write("t.dat", wide));
   EXPECT_EQ(t.distributed.names.size(), 10u);
   EXPECT_EQ(t.distributed.rows(), 11u);
   EXPECT_DOUBLE_EQ(t.distributed.column("TwGJStif")[3], 1e11);
@@ -216,17 +223,17 @@ TEST(OpenFastLayouts, Fast8FstWithFlagSwitchesAndServoDyn) {
       "9.02832E+09   YawSpr       - Nacelle-yaw spring constant (N-m/rad)\n"
       "  1.916E+07   YawDamp      - Nacelle-yaw damping constant (N-m/(rad/s))\n";
   ScratchDir dir;
-  write_case(dir, nrel_ed());
+  writeCase(dir, nrelEd());
   dir.write("srvd/ServoDyn.dat", servo);
-  const OpenFastTurbine t = read_openfast_turbine(dir.write("old.fst", fst));
+  const OpenFastTurbine t = readOpenFastTurbine(dir.write("old.fst", fst));
   EXPECT_EQ(t.fst.CompElast, 1);
   EXPECT_EQ(t.fst.CompAero, 1);
   EXPECT_EQ(t.fst.CompServo, 1);
   EXPECT_EQ(t.fst.CompHydro, 0);
   EXPECT_EQ(t.fst.AeroFile, dir.path() / "ad.ipt");
-  EXPECT_THAT(input_error_message([&] { whirl::io::gravity(t); }),
+  EXPECT_THAT(inputErrorMessage([&] { whirl::io::gravity(t); }),
               HasSubstr("old.fst: Gravity: not in this file nor in "));
-  const std::optional<whirl::io::ServoDynInput> s = whirl::io::read_servodyn_if_enabled(t.fst);
+  const std::optional<whirl::io::ServoDynInput> s = whirl::io::readServoDynIfEnabled(t.fst);
   ASSERT_TRUE(s.has_value());
   EXPECT_EQ(s->YCMode, 0);
   EXPECT_DOUBLE_EQ(s->YawNeut, 0.0);

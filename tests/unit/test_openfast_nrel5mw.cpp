@@ -11,18 +11,18 @@
 
 namespace {
 
-using testing::ElementsAre;
 using testing::DoubleEq;
+using testing::ElementsAre;
 using testing::HasSubstr;
 using whirl::io::OpenFastTurbine;
-using whirl::test::nrel5mw_dir;
+using whirl::test::nrel5mwDir;
 
 const OpenFastTurbine& nrel5mw() {
-  static const OpenFastTurbine t = whirl::io::read_openfast_turbine(nrel5mw_dir() / "Main_Onshore.fst");
+  static const OpenFastTurbine t = whirl::io::readOpenFastTurbine(nrel5mwDir() / "Main_Onshore.fst");
   return t;
 }
 
-std::filesystem::path in_case(const char* name) { return (nrel5mw_dir() / name).lexically_normal(); }
+std::filesystem::path inCase(const char* name) { return (nrel5mwDir() / name).lexically_normal(); }
 
 TEST(OpenFastNrel5mw, Fst) {
   const whirl::io::FstInput& f = nrel5mw().fst;
@@ -39,9 +39,9 @@ TEST(OpenFastNrel5mw, Fst) {
   EXPECT_EQ(f.CompMooring, 0);
   EXPECT_EQ(f.MHK, 0);
   EXPECT_FALSE(f.NRotors.has_value());
-  EXPECT_EQ(f.EDFile, in_case("NRELOffshrBsline5MW_Onshore_ElastoDyn.dat"));
-  EXPECT_EQ(f.ServoFile, in_case("NRELOffshrBsline5MW_Onshore_ServoDyn.dat"));
-  EXPECT_EQ(f.AeroFile, in_case("onshore/AeroDyn.dat"));
+  EXPECT_EQ(f.EDFile, inCase("NRELOffshrBsline5MW_Onshore_ElastoDyn.dat"));
+  EXPECT_EQ(f.ServoFile, inCase("NRELOffshrBsline5MW_Onshore_ServoDyn.dat"));
+  EXPECT_EQ(f.AeroFile, inCase("onshore/AeroDyn.dat"));
   EXPECT_DOUBLE_EQ(whirl::io::gravity(nrel5mw()), 9.80665);
 }
 
@@ -130,7 +130,7 @@ TEST(OpenFastNrel5mw, BladeTeeterDrivetrainFurlingTower) {
   const whirl::io::ElastoDynInput& ed = nrel5mw().elastodyn;
   EXPECT_EQ(ed.BldNodes, 17);
   ASSERT_EQ(ed.BldFile.size(), 3u);
-  for (const auto& p : ed.BldFile) EXPECT_EQ(p, in_case("NRELOffshrBsline5MW_Blade.dat"));
+  for (const auto& p : ed.BldFile) EXPECT_EQ(p, inCase("NRELOffshrBsline5MW_Blade.dat"));
   EXPECT_EQ(ed.teeter.TeetMod, 0);
   for (const auto& v : {ed.teeter.TeetDmpP, ed.teeter.TeetDmp, ed.teeter.TeetCDmp, ed.teeter.TeetSStP,
                         ed.teeter.TeetHStP, ed.teeter.TeetSSSp, ed.teeter.TeetHSSp})
@@ -141,9 +141,9 @@ TEST(OpenFastNrel5mw, BladeTeeterDrivetrainFurlingTower) {
   EXPECT_DOUBLE_EQ(ed.drivetrain.DTTorDmp, 6.215e6);
   EXPECT_FALSE(ed.YawFrctMod.has_value());
   EXPECT_FALSE(ed.Furling);
-  EXPECT_EQ(ed.FurlFile, in_case("unused"));
+  EXPECT_EQ(ed.FurlFile, inCase("unused"));
   EXPECT_EQ(ed.TwrNodes, 20);
-  EXPECT_EQ(ed.TwrFile, in_case("NRELOffshrBsline5MW_Onshore_ElastoDyn_Tower.dat"));
+  EXPECT_EQ(ed.TwrFile, inCase("NRELOffshrBsline5MW_Onshore_ElastoDyn_Tower.dat"));
 }
 
 TEST(OpenFastNrel5mw, Tower) {
@@ -190,8 +190,8 @@ TEST(OpenFastNrel5mw, Blades) {
   EXPECT_THAT(d.names, ElementsAre("BlFract", "PitchAxis", "StrcTwst", "BMassDen", "FlpStff", "EdgStff"));
   EXPECT_DOUBLE_EQ(d.column("BlFract")[0], 0.0);
   EXPECT_DOUBLE_EQ(d.column("BlFract")[48], 1.0);
-  ASSERT_NE(b.pitch_axis(), nullptr);
-  EXPECT_DOUBLE_EQ((*b.pitch_axis())[0], 0.25);
+  ASSERT_NE(b.pitchAxis(), nullptr);
+  EXPECT_DOUBLE_EQ((*b.pitchAxis())[0], 0.25);
   EXPECT_DOUBLE_EQ(d.column("StrcTwst")[0], 13.308);  // deg
   EXPECT_DOUBLE_EQ(d.column("BMassDen")[0], 678.935);  // as in the file: AdjBlMs not applied
   EXPECT_DOUBLE_EQ(d.column("FlpStff")[0], 1.811e10);
@@ -203,9 +203,9 @@ TEST(OpenFastNrel5mw, Blades) {
 }
 
 TEST(OpenFastNrel5mw, SupportedAndServoDynYawSpring) {
-  EXPECT_NO_THROW(whirl::io::require_supported(nrel5mw()));
+  EXPECT_NO_THROW(whirl::io::requireSupported(nrel5mw()));
   // CompServo = 1: the minimal ServoDyn file written for whirl (r-test NREL 5MW yaw spring and damper).
-  const std::optional<whirl::io::ServoDynInput> s = whirl::io::read_servodyn_if_enabled(nrel5mw().fst);
+  const std::optional<whirl::io::ServoDynInput> s = whirl::io::readServoDynIfEnabled(nrel5mw().fst);
   ASSERT_TRUE(s.has_value());
   EXPECT_EQ(s->YCMode, 0);
   EXPECT_DOUBLE_EQ(s->YawNeut, 0.0);
@@ -217,16 +217,16 @@ TEST(OpenFastNrel5mw, OverridesReachEveryFile) {
   whirl::io::OverrideSet set(std::vector<whirl::io::KeyOverride>{
       {"NacMass", "250000"}, {"TwFAM1Sh(2)", "0.7104"}, {"TwFAM1Sh(3)", "2.1863"}, {"AdjBlMs", "1.0"},
       {"Gravity", "9.81"}});
-  const OpenFastTurbine t = whirl::io::read_openfast_turbine(nrel5mw_dir() / "Main_Onshore.fst", &set);
-  EXPECT_NO_THROW(set.require_all_used());
+  const OpenFastTurbine t = whirl::io::readOpenFastTurbine(nrel5mwDir() / "Main_Onshore.fst", &set);
+  EXPECT_NO_THROW(set.requireAllUsed());
   EXPECT_DOUBLE_EQ(t.elastodyn.mass.NacMass, 250000.0);
   EXPECT_DOUBLE_EQ(t.elastodyn.tower.TwFAM1Sh[0], 0.7104);
   for (const auto& b : t.elastodyn.blades) EXPECT_DOUBLE_EQ(b.AdjBlMs, 1.0);
   EXPECT_DOUBLE_EQ(whirl::io::gravity(t), 9.81);
 
   whirl::io::OverrideSet unknown(std::vector<whirl::io::KeyOverride>{{"NacMas", "1"}});
-  whirl::io::read_openfast_turbine(nrel5mw_dir() / "Main_Onshore.fst", &unknown);
-  const std::string msg = whirl::test::input_error_message([&] { unknown.require_all_used(); });
+  whirl::io::readOpenFastTurbine(nrel5mwDir() / "Main_Onshore.fst", &unknown);
+  const std::string msg = whirl::test::inputErrorMessage([&] { unknown.requireAllUsed(); });
   EXPECT_THAT(msg, HasSubstr("NacMas: unknown key (not in any file read: "));
   EXPECT_THAT(msg, HasSubstr("NRELOffshrBsline5MW_Blade.dat"));
 }

@@ -20,16 +20,16 @@ namespace {
 
 using testing::HasSubstr;
 using testing::Not;
-using whirl::io::canonical_key;
+using whirl::io::canonicalKey;
 using whirl::io::OpenFastFile;
 using whirl::io::OpenFastTurbine;
-using whirl::io::read_openfast_turbine;
-using whirl::test::input_error_message;
-using whirl::test::nrel5mw_dir;
+using whirl::io::readOpenFastTurbine;
+using whirl::test::inputErrorMessage;
+using whirl::test::nrel5mwDir;
 using whirl::test::nrelEd;
-using whirl::test::openfast_data_dir;
-using whirl::test::read_text;
-using whirl::test::replace_once;
+using whirl::test::openfastDataDir;
+using whirl::test::readText;
+using whirl::test::replaceOnce;
 using whirl::test::ScratchDir;
 const char* kEd = whirl::test::kNrelEd;
 const char* kTower = whirl::test::kNrelTower;
@@ -45,37 +45,37 @@ std::string respell(const std::string& text, const char* replacement) {
 template <class Edit>
 std::filesystem::path nrelEdited(const ScratchDir& dir, Edit edit) {
   dir.write(kEd, edit(nrelEd()));
-  dir.write(kTower, edit(read_text(nrel5mw_dir() / kTower)));
-  dir.write(kBlade, edit(read_text(nrel5mw_dir() / kBlade)));
-  return dir.copy(nrel5mw_dir() / "Main_Onshore.fst");
+  dir.write(kTower, edit(readText(nrel5mwDir() / kTower)));
+  dir.write(kBlade, edit(readText(nrel5mwDir() / kBlade)));
+  return dir.copy(nrel5mwDir() / "Main_Onshore.fst");
 }
 
 // --- key spellings ---------------------------------------------------------------------------
 
 TEST(OpenFastSpellings, CanonicalKeyIsTheOneRule) {
-  EXPECT_EQ(canonical_key("BldFile(1)"), "bldfile1");
-  EXPECT_EQ(canonical_key("BldFile1"), "bldfile1");
-  EXPECT_EQ(canonical_key("bldfile( 1 )"), "bldfile1");
-  EXPECT_EQ(canonical_key("TwFAM1Sh(2)"), "twfam1sh2");
-  EXPECT_EQ(canonical_key("NacMass"), "nacmass");
+  EXPECT_EQ(canonicalKey("BldFile(1)"), "bldfile1");
+  EXPECT_EQ(canonicalKey("BldFile1"), "bldfile1");
+  EXPECT_EQ(canonicalKey("bldfile( 1 )"), "bldfile1");
+  EXPECT_EQ(canonicalKey("TwFAM1Sh(2)"), "twfam1sh2");
+  EXPECT_EQ(canonicalKey("NacMass"), "nacmass");
 }
 
 TEST(OpenFastSpellings, IndexWithBlanksIsOneKey) {
   const OpenFastFile f = OpenFastFile::parse(
       "title\n\"blade.dat\"  BldFile( 1 )  - blade 1\n  2.5  BlPitch(2 ) - pitch\n", "x.dat");
   ASSERT_EQ(f.entries().size(), 2u);
-  EXPECT_EQ(f.get_string("BldFile(1)"), "blade.dat");
-  EXPECT_EQ(f.get_string("BldFile1"), "blade.dat");
-  EXPECT_DOUBLE_EQ(f.get_double("BlPitch(2)"), 2.5);
+  EXPECT_EQ(f.getString("BldFile(1)"), "blade.dat");
+  EXPECT_EQ(f.getString("BldFile1"), "blade.dat");
+  EXPECT_DOUBLE_EQ(f.getDouble("BlPitch(2)"), 2.5);
 }
 
 // WISDEM/WEIS write `BldFile1`, `BlPitch1`, `TwrFADmp1`, `BldFlDmp1`, `BldFl1Sh2` …: the same turbine.
 TEST(OpenFastSpellings, WisdemSpellingReadsTheSameTurbine) {
-  const OpenFastTurbine ref = read_openfast_turbine(nrel5mw_dir() / "Main_Onshore.fst");
+  const OpenFastTurbine ref = readOpenFastTurbine(nrel5mwDir() / "Main_Onshore.fst");
   for (const char* spelling : {"$1$2", "$1( $2 )", "$1($2 )"}) {
     ScratchDir dir;
     const auto fst = nrelEdited(dir, [&](const std::string& t) { return respell(t, spelling); });
-    const OpenFastTurbine t = read_openfast_turbine(fst);
+    const OpenFastTurbine t = readOpenFastTurbine(fst);
     const auto& e = t.elastodyn;
     const auto& r = ref.elastodyn;
     EXPECT_EQ(e.init.BlPitch, r.init.BlPitch) << spelling;
@@ -90,15 +90,15 @@ TEST(OpenFastSpellings, WisdemSpellingReadsTheSameTurbine) {
     EXPECT_EQ(e.blades[1].BldEdDmp, r.blades[1].BldEdDmp) << spelling;
     EXPECT_EQ(e.blades[1].FlStTunr, r.blades[1].FlStTunr) << spelling;
     EXPECT_EQ(e.blades[1].BldEdgSh, r.blades[1].BldEdgSh) << spelling;
-    EXPECT_NO_THROW(whirl::io::require_supported(t)) << spelling;
+    EXPECT_NO_THROW(whirl::io::requireSupported(t)) << spelling;
   }
 }
 
 // The IEA 3.4 MW reference turbine as its repository ships it (WISDEM spelling; before issue 16 it
 // stopped at "BldFile1: not a key of an OpenFAST ElastoDyn file").
 TEST(OpenFastSpellings, Iea34DeckReads) {
-  const auto fst = openfast_data_dir() / "decks" / "IEA-3.4-130-RWT" / "IEA-3.4-130-RWT.fst";
-  const OpenFastTurbine t = read_openfast_turbine(fst);
+  const auto fst = openfastDataDir() / "decks" / "IEA-3.4-130-RWT" / "IEA-3.4-130-RWT.fst";
+  const OpenFastTurbine t = readOpenFastTurbine(fst);
   const auto& e = t.elastodyn;
   EXPECT_DOUBLE_EQ(e.config.TipRad, 64.90852112228899);                   // ElastoDyn.dat line 45
   ASSERT_EQ(e.blades.size(), 3u);                                         // BldFile1..3, lines 86–88
@@ -107,11 +107,11 @@ TEST(OpenFastSpellings, Iea34DeckReads) {
   EXPECT_DOUBLE_EQ(e.blades[0].BldEdDmp, 3.0);                            // BldEdDmp1
   EXPECT_DOUBLE_EQ(e.blades[0].BldFl1Sh[0], 0.2979932369894798);          // BldFl1Sh(2), blade line 48
   EXPECT_EQ(e.tower.NTwInpSt, 10);
-  EXPECT_NO_THROW(whirl::io::require_supported(t));
+  EXPECT_NO_THROW(whirl::io::requireSupported(t));
 }
 
 TEST(OpenFastSpellings, BothSpellingsOfOneKeyAreGivenTwice) {
-  const std::string msg = whirl::test::turbineError(replace_once(
+  const std::string msg = whirl::test::turbineError(replaceOnce(
       nrelEd(), "\"NRELOffshrBsline5MW_Blade.dat\"    BldFile(2)",
       "\"NRELOffshrBsline5MW_Blade.dat\"    BldFile1 - again\n\"NRELOffshrBsline5MW_Blade.dat\"    BldFile(2)"));
   EXPECT_THAT(msg, HasSubstr(std::string(kEd) + ":87: BldFile1: given twice (first on line 86)"));
@@ -119,11 +119,11 @@ TEST(OpenFastSpellings, BothSpellingsOfOneKeyAreGivenTwice) {
 
 TEST(OpenFastSpellings, UnknownLabelNamesTheExpectedKey) {
   // A mistyped label in place of NacMass: OpenFAST would stop there too (ParseVar checks it).
-  const std::string msg = whirl::test::turbineError(replace_once(nrelEd(), "240000   NacMass", "240000   NacMas"));
+  const std::string msg = whirl::test::turbineError(replaceOnce(nrelEd(), "240000   NacMass", "240000   NacMas"));
   EXPECT_THAT(msg, HasSubstr(std::string(kEd) + ":77: NacMas: not a key of an OpenFAST ElastoDyn file "
                                                 "(expected NacMass here)"));
   // An index on a key that is no array is no spelling of it (NacMass1 is not NacMass).
-  const std::string idx = whirl::test::turbineError(replace_once(nrelEd(), "240000   NacMass", "240000   NacMass1"));
+  const std::string idx = whirl::test::turbineError(replaceOnce(nrelEd(), "240000   NacMass", "240000   NacMass1"));
   EXPECT_THAT(idx, HasSubstr(":77: NacMass1: not a key of an OpenFAST ElastoDyn file"));
 }
 
@@ -131,22 +131,22 @@ TEST(OpenFastSpellings, UnknownLabelNamesTheExpectedKey) {
 
 /// The NREL 5MW tower table replaced by `rows` (each "HtFract TMassDen TwFAStif TwSSStif").
 std::string towerWith(const std::vector<std::string>& rows) {
-  std::string t = read_text(nrel5mw_dir() / kTower);
+  std::string t = readText(nrel5mwDir() / kTower);
   const std::size_t b = t.find("0.0000000E+00  5.5908700E+03"), e = t.find("-----", b);
   std::string table;
   for (const std::string& r : rows) table += r + "\n";
   t = t.substr(0, b) + table + t.substr(e);
-  return replace_once(t, "         11   NTwInpSt", "         " + std::to_string(rows.size()) + "   NTwInpSt");
+  return replaceOnce(t, "         11   NTwInpSt", "         " + std::to_string(rows.size()) + "   NTwInpSt");
 }
 
 /// The NREL 5MW blade table replaced by `rows`.
 std::string bladeWith(const std::vector<std::string>& rows) {
-  std::string t = read_text(nrel5mw_dir() / kBlade);
+  std::string t = readText(nrel5mwDir() / kBlade);
   const std::size_t b = t.find("0.0000000E+00  2.5000000E-01"), e = t.find("-----", b);
   std::string table;
   for (const std::string& r : rows) table += r + "\n";
   t = t.substr(0, b) + table + t.substr(e);
-  return replace_once(t, "         49   NBlInpSt", "         " + std::to_string(rows.size()) + "   NBlInpSt");
+  return replaceOnce(t, "         49   NBlInpSt", "         " + std::to_string(rows.size()) + "   NBlInpSt");
 }
 
 whirl::LinearModel linearModel(const std::string& tower, const std::string& blade) {
@@ -154,8 +154,8 @@ whirl::LinearModel linearModel(const std::string& tower, const std::string& blad
   dir.write(kEd, nrelEd());
   dir.write(kTower, tower);
   dir.write(kBlade, blade);
-  dir.copy(nrel5mw_dir() / "NRELOffshrBsline5MW_Onshore_ServoDyn.dat");  // yaw spring
-  const auto fst = dir.copy(nrel5mw_dir() / "Main_Onshore.fst");
+  dir.copy(nrel5mwDir() / "NRELOffshrBsline5MW_Onshore_ServoDyn.dat");  // yaw spring
+  const auto fst = dir.copy(nrel5mwDir() / "Main_Onshore.fst");
   const whirl::Model m = whirl::readElastoDynModel(fst.string(), {"RotSpeed=0"});
   return whirl::linearize(m, whirl::solveOperatingPoint(m, whirl::initialPoint(m)));
 }
@@ -165,7 +165,7 @@ double maxDifference(const whirl::MatX& a, const whirl::MatX& b) { return (a - b
 TEST(OpenFastOneStation, TowerTableIsHeldConstant) {
   ScratchDir dir;
   const auto p = dir.write("t.dat", towerWith({"0.0  4.0E+03  3.0E+11  2.5E+11"}));
-  const whirl::io::ElastoDynTower t = whirl::io::read_elastodyn_tower(p);
+  const whirl::io::ElastoDynTower t = whirl::io::readElastoDynTower(p);
   EXPECT_EQ(t.NTwInpSt, 1);
   EXPECT_TRUE(t.distributed.constant);
   EXPECT_EQ(t.distributed.column("HtFract"), (std::vector<double>{0.0, 1.0}));
@@ -175,7 +175,7 @@ TEST(OpenFastOneStation, TowerTableIsHeldConstant) {
 // ElastoDyn holds one station's properties over the span: the model equals that of a two-station
 // table with equal rows at 0 and 1.
 TEST(OpenFastOneStation, SameModelAsTwoEqualStations) {
-  const std::string blade = read_text(nrel5mw_dir() / kBlade);
+  const std::string blade = readText(nrel5mwDir() / kBlade);
   const std::string row = "  4.0E+03  3.0E+11  2.5E+11";
   const whirl::LinearModel one = linearModel(towerWith({"0.0" + row}), blade);
   const whirl::LinearModel two = linearModel(towerWith({"0.0" + row, "1.0" + row}), blade);
@@ -183,7 +183,7 @@ TEST(OpenFastOneStation, SameModelAsTwoEqualStations) {
   EXPECT_EQ(maxDifference(one.K, two.K), 0.0);
   EXPECT_EQ(maxDifference(one.C, two.C), 0.0);
 
-  const std::string tower = read_text(nrel5mw_dir() / kTower);
+  const std::string tower = readText(nrel5mwDir() / kTower);
   const std::string brow = "  2.5E-01  1.0E+01  3.0E+02  4.0E+09  6.0E+09";
   const whirl::LinearModel bone = linearModel(tower, bladeWith({"0.0" + brow}));
   const whirl::LinearModel btwo = linearModel(tower, bladeWith({"0.0" + brow, "1.0" + brow}));
@@ -195,18 +195,18 @@ TEST(OpenFastOneStation, SameModelAsTwoEqualStations) {
 TEST(OpenFastOneStation, TheStationMustBeAtZero) {
   ScratchDir dir;
   const auto p = dir.write("t.dat", towerWith({"0.5  4.0E+03  3.0E+11  2.5E+11"}));
-  EXPECT_THAT(input_error_message([&] { whirl::io::read_elastodyn_tower(p); }),
+  EXPECT_THAT(inputErrorMessage([&] { whirl::io::readElastoDynTower(p); }),
               HasSubstr("t.dat:20: HtFract: the only station must be at 0 (is 0.5)"));
-  const auto none = dir.write("n.dat", replace_once(towerWith({"0.0  4.0E+03  3.0E+11  2.5E+11"}),
-                                                    "         1   NTwInpSt", "         0   NTwInpSt"));
-  EXPECT_THAT(input_error_message([&] { whirl::io::read_elastodyn_tower(none); }),
+  const auto none = dir.write("n.dat", replaceOnce(towerWith({"0.0  4.0E+03  3.0E+11  2.5E+11"}),
+                                                   "         1   NTwInpSt", "         0   NTwInpSt"));
+  EXPECT_THAT(inputErrorMessage([&] { whirl::io::readElastoDynTower(none); }),
               HasSubstr("n.dat:4: NTwInpSt: must be at least 1, is 0"));
 }
 
 // The SWRT tower as the certification test ships it (Test15–17): one station.
 TEST(OpenFastOneStation, SwrtTowerFileReads) {
-  const auto p = openfast_data_dir() / "decks" / "certtest" / "SWRT" / "SWRT_Tower.dat";
-  const whirl::io::ElastoDynTower t = whirl::io::read_elastodyn_tower(p);
+  const auto p = openfastDataDir() / "decks" / "certtest" / "SWRT" / "SWRT_Tower.dat";
+  const whirl::io::ElastoDynTower t = whirl::io::readElastoDynTower(p);
   EXPECT_EQ(t.NTwInpSt, 1);
   EXPECT_EQ(t.distributed.column("TMassDen"), (std::vector<double>{879.16, 879.16}));  // SWRT_Tower.dat line 20
 }
@@ -214,8 +214,8 @@ TEST(OpenFastOneStation, SwrtTowerFileReads) {
 // --- FAST v7 and one-line refusals -------------------------------------------------------------
 
 TEST(OpenFastDecks, FastV7PrimaryFileIsNamed) {
-  const auto p = openfast_data_dir() / "decks" / "certtest" / "FAST_v7" / "Test01.fst";
-  const std::string msg = input_error_message([&] { read_openfast_turbine(p); });
+  const auto p = openfastDataDir() / "decks" / "certtest" / "FAST_v7" / "Test01.fst";
+  const std::string msg = inputErrorMessage([&] { readOpenFastTurbine(p); });
   EXPECT_THAT(msg, HasSubstr("Test01.fst:7: ADAMSPrep: this is a FAST v7 primary input file"));
   EXPECT_THAT(msg, HasSubstr("ConvertFAST7to8"));
   EXPECT_THAT(msg, Not(HasSubstr("key not found")));
@@ -225,10 +225,10 @@ TEST(OpenFastDecks, FastV7PrimaryFileIsNamed) {
 TEST(OpenFastDecks, PlatformDofsAreOneRefusal) {
   std::string ed = nrelEd();
   for (const char* key : {"PtfmSgDOF", "PtfmSwDOF", "PtfmHvDOF", "PtfmRDOF", "PtfmPDOF", "PtfmYDOF"})
-    ed = replace_once(ed, std::string("False         ") + key, std::string("True          ") + key);
+    ed = replaceOnce(ed, std::string("False         ") + key, std::string("True          ") + key);
   ScratchDir dir;
   const auto fst = whirl::test::nrelWith(dir, ed);
-  const std::string msg = input_error_message([&] { whirl::io::require_supported(read_openfast_turbine(fst)); });
+  const std::string msg = inputErrorMessage([&] { whirl::io::requireSupported(readOpenFastTurbine(fst)); });
   EXPECT_THAT(msg, HasSubstr(std::string(kEd) + ":19: PtfmSgDOF: True not supported by whirl (platform DOFs are not "
                                                 "modelled, and PtfmSwDOF, PtfmHvDOF, PtfmRDOF, PtfmPDOF, PtfmYDOF are "
                                                 "on too: no hydrostatics or mooring (CompHydro = 0, CompMooring = 0) "

@@ -18,7 +18,7 @@ using testing::HasSubstr;
 // --- operating-point validity -----------------------------------------------------------------
 
 whirl::Model landbased(const std::string& gravity) {
-  return whirl::readCase((whirl::test::source_dir() / "cases/landbased_2dof/landbased_2dof.yaml").string(),
+  return whirl::readCase((whirl::test::sourceDir() / "cases/landbased_2dof/landbased_2dof.yaml").string(),
                          {whirl::parseOverride("gravity=" + gravity)});
 }
 
@@ -30,8 +30,8 @@ TEST(PointValidity, NominalPointIsValid) {
 
 TEST(PointValidity, HugeGravityGivesADeflectionBeyondTheBodyLength) {
   // NREL 5MW at 1e6 m/s²: Newton converges to blade tip deflections of about twice the blade length.
-  const whirl::Model m =
-      whirl::readElastoDynModel((whirl::test::nrel5mw_dir() / "Main_Onshore.fst").string(), {"gravity=1e6"});
+  const whirl::Model m = whirl::readElastoDynModel((whirl::test::nrel5mwDir() / "Main_Onshore.fst").string(),
+                                                   {"gravity=1e6"});
   const whirl::OperatingPoint op = whirl::solveOperatingPoint(m, whirl::initialPoint(m));
   const std::vector<std::string> problems = whirl::checkPointValidity(m, op);
   ASSERT_FALSE(problems.empty());
@@ -39,7 +39,7 @@ TEST(PointValidity, HugeGravityGivesADeflectionBeyondTheBodyLength) {
   EXPECT_THAT(problems.front(), HasSubstr("elastic deflection"));
   EXPECT_THAT(problems.front(), HasSubstr("its length 61.5 m (limit 0.3)"));
   // The same turbine at Earth's gravity is valid.
-  const whirl::Model nominal = whirl::readElastoDynModel((whirl::test::nrel5mw_dir() / "Main_Onshore.fst").string());
+  const whirl::Model nominal = whirl::readElastoDynModel((whirl::test::nrel5mwDir() / "Main_Onshore.fst").string());
   EXPECT_TRUE(whirl::checkPointValidity(nominal, whirl::solveOperatingPoint(nominal, whirl::initialPoint(nominal))).empty());
 }
 

@@ -232,7 +232,7 @@ TEST(StateSpaceFiles, ScipyLoadsTheMatFile) {
                            "print('ok')\n";
   const std::string out = (dir.path() / "out.txt").string();
   const int rc = std::system((python + " " + script + " " + mat + " " + ref + " > " + out + " 2>&1").c_str());
-  EXPECT_EQ(rc, 0) << test::read_text(out);
+  EXPECT_EQ(rc, 0) << test::readText(out);
 }
 
 }  // namespace

@@ -27,9 +27,9 @@ const std::string kTubeV4 = std::string(WHIRL_SOURCE_DIR) + "/tests/data/subdyn/
 
 io::SubDynInput tube(const std::vector<std::string>& sets = {}) {
   std::vector<io::KeyOverride> o;
-  for (const std::string& s : sets) o.push_back(io::parse_override(s));
+  for (const std::string& s : sets) o.push_back(io::parseOverride(s));
   io::OverrideSet set(o);
-  return io::read_subdyn(kTube, &set);
+  return io::readSubDyn(kTube, &set);
 }
 
 // EI/m of the tube, from its section: r_o = D/2, r_i = r_o − t.
@@ -120,9 +120,9 @@ TEST(SubDynFem, CraigBamptonModesHaveTheirJDampings) {
 // Rayleigh Guyan damping (GuyanDampMod = 1, OpenFAST v3+ layout): C_BB = α M_BB + β K_BB gives each
 // mode of the Guyan model the ratio ζ = α/(2ω) + βω/2 (Rayleigh damping's classical result).
 TEST(SubDynFem, RayleighGuyanDampingGivesTheClassicalRatios) {
-  io::OverrideSet set({io::parse_override("Nmodes=0"), io::parse_override("GuyanDampMod=1"),
-                       io::parse_override("RayleighDamp=0.05,0.002")});
-  const SubDynBody b = buildSubDynBody(io::read_subdyn(kTubeV4, &set), Vec3::Zero());
+  io::OverrideSet set({io::parseOverride("Nmodes=0"), io::parseOverride("GuyanDampMod=1"),
+                       io::parseOverride("RayleighDamp=0.05,0.002")});
+  const SubDynBody b = buildSubDynBody(io::readSubDyn(kTubeV4, &set), Vec3::Zero());
   const MatX M = fem::elasticMass(b.fem.body.inertia);
   const std::vector<Mode> modes = computeModes(M, b.damping, b.fem.body.elastic.K,
                                                {"ux", "uy", "uz", "rx", "ry", "rz"});

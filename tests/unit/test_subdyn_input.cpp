@@ -59,11 +59,11 @@ std::string edited(const std::string& path, int n, const std::string& text, bool
 
 std::string errorOfEdit(const std::string& path, int n, const std::string& text, bool remove = false) {
   const std::string f = edited(path, n, text, remove);
-  return errorOf([&] { io::read_subdyn(f); });
+  return errorOf([&] { io::readSubDyn(f); });
 }
 
 TEST(SubDynInput, Oc3MonopileValues) {
-  const io::SubDynInput sd = io::read_subdyn(kMonopile);
+  const io::SubDynInput sd = io::readSubDyn(kMonopile);
   EXPECT_EQ(sd.FEMMod, 3);
   EXPECT_EQ(sd.NDiv, 3);
   EXPECT_EQ(sd.Nmodes, 0);  // CBMod = True, Nmodes = 0: Guyan
@@ -92,17 +92,17 @@ TEST(SubDynInput, Oc3MonopileValues) {
 }
 
 TEST(SubDynInput, OverridesReachTheScalars) {
-  io::OverrideSet set({io::parse_override("Nmodes=4"), io::parse_override("JDampings=2")});
-  const io::SubDynInput sd = io::read_subdyn(kMonopile, &set);
+  io::OverrideSet set({io::parseOverride("Nmodes=4"), io::parseOverride("JDampings=2")});
+  const io::SubDynInput sd = io::readSubDyn(kMonopile, &set);
   EXPECT_EQ(sd.Nmodes, 4);
   ASSERT_EQ(sd.JDampings.size(), 4u);  // one value repeated over the modes, as SubDyn does
   for (double z : sd.JDampings) EXPECT_DOUBLE_EQ(z, 0.02);
-  io::OverrideSet full({io::parse_override("CBMod=False")});
-  EXPECT_EQ(io::read_subdyn(kMonopile, &full).Nmodes, -1);
+  io::OverrideSet full({io::parseOverride("CBMod=False")});
+  EXPECT_EQ(io::readSubDyn(kMonopile, &full).Nmodes, -1);
 }
 
 TEST(SubDynInput, LayoutsV101AndV4ReadTheSameStructure) {
-  const io::SubDynInput a = io::read_subdyn(kV101), b = io::read_subdyn(kV4);
+  const io::SubDynInput a = io::readSubDyn(kV101), b = io::readSubDyn(kV4);
   EXPECT_EQ(a.Nmodes, -1);  // CBMod = False
   EXPECT_EQ(b.Nmodes, -1);  // Nmodes = -1
   EXPECT_EQ(a.JDampings, b.JDampings);
@@ -177,13 +177,13 @@ TEST(SubDynInput, RefusalsAreExplicit) {
       HasSubstr(
           "_SubDyn.dat:26: SSIfile: 'soil.txt' not supported by whirl (soil-structure interaction is not modelled"));
   // Tapered elements, as SubDyn.
-  io::OverrideSet tapered({io::parse_override("FEMMod=4")});
-  EXPECT_THAT(errorOf([&] { io::read_subdyn(kMonopile, &tapered); }),
+  io::OverrideSet tapered({io::parseOverride("FEMMod=4")});
+  EXPECT_THAT(errorOf([&] { io::readSubDyn(kMonopile, &tapered); }),
               HasSubstr("_SubDyn.dat:9: FEMMod: 4 not supported by whirl (tapered elements are not implemented"));
   // A floating substructure.
   const std::string noReact = edited(kMonopile, 23,
                                      "             0   NReact      - Number of Joints with reaction forces");
-  EXPECT_THAT(errorOf([&] { io::read_subdyn(noReact); }),
+  EXPECT_THAT(errorOf([&] { io::readSubDyn(noReact); }),
               HasSubstr("_SubDyn.dat:23: NReact: 0 not supported by whirl (a floating substructure"));
   // Rigid links and cables in the v4 layout.
   EXPECT_THAT(errorOfEdit(kV4, 46, "   2           2           3            1             1          3          0"),

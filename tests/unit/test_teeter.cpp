@@ -28,7 +28,7 @@ namespace whirl {
 namespace {
 
 constexpr double pi = std::numbers::pi;
-const std::filesystem::path kAwt = test::openfast_data_dir() / "decks" / "certtest" / "AWT27";
+const std::filesystem::path kAwt = test::openfastDataDir() / "decks" / "certtest" / "AWT27";
 
 // AWT-27's ElastoDyn and tower files, and a uniform blade (40 kg/m from root to tip) in its format.
 class RigidTeeter : public testing::Test {
@@ -36,7 +36,7 @@ class RigidTeeter : public testing::Test {
   void SetUp() override {
     ed_ = dir_.copy(kAwt / "Test01_ElastoDyn.dat");
     dir_.copy(kAwt / "AWT_Tower.dat");
-    std::istringstream in(test::read_text(kAwt / "AWT_Blades.dat"));
+    std::istringstream in(test::readText(kAwt / "AWT_Blades.dat"));
     std::string line, out;
     for (int n = 1; std::getline(in, line); ++n) {
       if (n == 4) line = "          2   NBlInpSt    - Number of blade input stations (-)";
@@ -123,8 +123,9 @@ TEST_F(RigidTeeter, Delta3UnderslingConeAndHubOffset) {
 TEST_F(RigidTeeter, HubInertiaAboutTheTeeterAxisWhenTheFileGivesIt) {
   // OpenFAST's newer files add HubIner_Teeter after HubIner (HubIner then about the shaft only).
   dir_.write(ed_.filename().string(),
-             test::replace_once(test::read_text(ed_), "      59.26   GenIner",
-                                "        900   HubIner_Teeter - Hub inertia about teeter axis (kg m^2)\n      59.26   GenIner"));
+             test::replaceOnce(
+                 test::readText(ed_), "      59.26   GenIner",
+                 "        900   HubIner_Teeter - Hub inertia about teeter axis (kg m^2)\n      59.26   GenIner"));
   const Model m = readElastoDynModel(
       ed_.string(), overrides({"UndSling=0.3", "Delta3=30", "PreCone(1)=5", "PreCone(2)=5", "HubCM=0.1"}));
   const double expected = closedForm(0.1, 0.3, 30, 5, true, 900);

@@ -19,7 +19,7 @@ namespace {
 
 using testing::HasSubstr;
 constexpr double deg = std::numbers::pi / 180;
-const std::string kEd = (test::openfast_data_dir() / "decks" / "certtest" / "AWT27" / "Test01_ElastoDyn.dat").string();
+const std::string kEd = (test::openfastDataDir() / "decks" / "certtest" / "AWT27" / "Test01_ElastoDyn.dat").string();
 
 // AWT-27 (Test01: TeetMod = 1, soft stop from 0 deg at 1 N m/rad, hard stop at 180 deg, damper from
 // 0 deg) with the rotor alone flexible: the teeter and the blades.

@@ -140,8 +140,8 @@ TEST(Nrel5mwFemShapes, UntwistedBladeMatchesTheFemModesFile) {
 // Each tolerance sits just under its measured value (the gap is a property of the files, not of a
 // precision); the largest gap, flap 2, is where the files' polynomials and the FE disagree most.
 TEST(Nrel5mwFemShapes, FittedPolynomialsAgainstTheElastoDynFiles) {
-  const io::ElastoDynTower tw = io::read_elastodyn_tower(kDir + "NRELOffshrBsline5MW_Onshore_ElastoDyn_Tower.dat");
-  const io::ElastoDynBlade bl = io::read_elastodyn_blade(kDir + "NRELOffshrBsline5MW_Blade.dat");
+  const io::ElastoDynTower tw = io::readElastoDynTower(kDir + "NRELOffshrBsline5MW_Onshore_ElastoDyn_Tower.dat");
+  const io::ElastoDynBlade bl = io::readElastoDynBlade(kDir + "NRELOffshrBsline5MW_Blade.dat");
   const std::map<std::string, std::pair<io::ModeShapeCoeffs, double>> file = {
       {"tower FA 1", {tw.TwFAM1Sh, 0.9998}}, {"tower SS 1", {tw.TwSSM1Sh, 0.9998}},
       {"tower FA 2", {tw.TwFAM2Sh, 0.9989}}, {"tower SS 2", {tw.TwSSM2Sh, 0.9985}},
