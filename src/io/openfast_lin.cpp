@@ -18,12 +18,6 @@
 namespace whirl {
 namespace {
 
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
-  return s;
-}
-
 bool startsWith(std::string_view s, std::string_view prefix) { return s.substr(0, prefix.size()) == prefix; }
 
 /// Next whitespace-separated token of `s` from `pos` (pos is advanced past it); empty at the end.
@@ -137,13 +131,13 @@ void LinParser::header(OpenFastLin& f, std::size_t& i) {
   int* const counts[5] = {&f.n_x, &f.n_xd, &f.n_z, &f.n_u, &f.n_y};
   auto value = [&](std::string_view line, std::string_view key) {
     std::size_t pos = key.size();
-    return number(nextToken(line, pos), i, std::string(trim(key.substr(0, key.size() - 1))));
+    return number(nextToken(line, pos), i, std::string(trimBlanks(key.substr(0, key.size() - 1))));
   };
   for (; i < lines_.size(); ++i) {
-    const std::string_view l = trim(lines_[i]);
+    const std::string_view l = trimBlanks(lines_[i]);
     if (startsWith(l, "Order of") || startsWith(l, "Linearized state matrices") || startsWith(l, "Jacobian matrices"))
       break;
-    if (startsWith(l, "Linearized model:")) f.generator = std::string(trim(l.substr(17)));
+    if (startsWith(l, "Linearized model:")) f.generator = std::string(trimBlanks(l.substr(17)));
     if (startsWith(l, "Simulation time:")) f.time = value(l, "Simulation time:"), have_time = true;
     if (startsWith(l, "Rotor Speed:")) f.rotor_speed = value(l, "Rotor Speed:"), have_speed = true;
     if (startsWith(l, "Azimuth:")) f.azimuth = value(l, "Azimuth:"), have_azimuth = true;
@@ -180,7 +174,7 @@ std::vector<LinVariable> LinParser::table(std::size_t& i, int n, const std::stri
   rows.reserve(std::min(static_cast<std::size_t>(n), lines_.size() - i));
   for (int r = 0; r < n; ++r) {
     ++i;
-    if (i >= lines_.size() || trim(lines_[i]).empty())
+    if (i >= lines_.size() || trimBlanks(lines_[i]).empty())
       truncated(i, key, std::to_string(r) + " rows where the header declares " + std::to_string(n));
     const std::string_view l = lines_[i];
     std::size_t pos = 0;
@@ -202,7 +196,7 @@ std::vector<LinVariable> LinParser::table(std::size_t& i, int n, const std::stri
       fail(i, key, "rotating-frame flag '" + std::string(flag) + "' is not T or F");
     if (has_order) v.derivative_order = integer(nextToken(l, pos), i, key);
     // Descriptions become DOF and mode names: tabs are spacing, other control characters an error.
-    v.description = tabsToSpaces(trim(l.substr(std::min(pos, l.size()))));
+    v.description = tabsToSpaces(trimBlanks(l.substr(std::min(pos, l.size()))));
     requirePrintable(v.description, path_, static_cast<int>(i + 1), key + " description");
   }
   return rows;
@@ -215,7 +209,7 @@ Eigen::MatrixXd LinParser::matrix(std::size_t& i, int rows, int cols, const std:
   std::vector<double> values;  // grows with the rows read, not with the title's claim
   for (int r = 0; r < rows; ++r) {
     ++i;
-    if (i >= lines_.size() || trim(lines_[i]).empty())
+    if (i >= lines_.size() || trimBlanks(lines_[i]).empty())
       truncated(i, key, std::to_string(r) + " of " + std::to_string(rows) + " rows");
     const std::string_view l = lines_[i];
     std::size_t pos = 0;
@@ -240,7 +234,7 @@ OpenFastLin LinParser::parse() {
   static const std::regex mat_title(R"(^\s*([A-Za-z][A-Za-z0-9_]*)\s*:\s*(\d+)\s*x\s*(\d+)\s*$)");
   bool have_x = false, have_xdot = false, have_u = false, have_y = false, have_xd = false, have_z = false;
   for (; i < lines_.size(); ++i) {
-    const std::string_view l = trim(lines_[i]);
+    const std::string_view l = trimBlanks(lines_[i]);
     if (startsWith(l, "Order of continuous states:")) f.x = table(i, f.n_x, "continuous states"), have_x = true;
     else if (startsWith(l, "Order of continuous state derivatives:"))
       f.xdot = table(i, f.n_x, "continuous state derivatives"), have_xdot = true;

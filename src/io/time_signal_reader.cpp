@@ -8,15 +8,12 @@
 
 #include "src/io/csv_table.hpp"
 #include "src/model/error.hpp"
+#include "src/model/text.hpp"
 
 namespace whirl {
 namespace {
 
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t");
-  if (b == std::string::npos) return "";
-  return s.substr(b, s.find_last_not_of(" \t") - b + 1);
-}
+std::string trim(std::string_view s) { return std::string(trimBlanks(s)); }
 
 // "name(a,b,...)" with `count` finite numbers, or nullopt-like empty when the name differs.
 bool parseCall(const std::string& text, const std::string& name, size_t count, const std::string& key,
