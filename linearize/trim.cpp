@@ -192,7 +192,8 @@ SteadyState trimAtWindSpeed(const Model& m, double wind, const TrimOptions& opt)
 SteadyState trimAtWindSpeed(const Model& m, double wind, const TrimGuess& guess, const TrimOptions& opt) {
   const std::string at = "trim at " + std::to_string(wind) + " m/s: ";
   requireSteadyModel(m, at);
-  if (!m.generator.active()) throw InputError(at + "the model has no generator torque law (ServoDyn VSContrl = 1)");
+  if (!m.generator.active())
+    throw InputError(at + "the model has no generator torque law (ServoDyn VSContrl = 1, or 0 with GenModel = 1 or 2)");
   if (!(wind > 0) || !std::isfinite(wind)) throw InputError(at + "the wind speed must be positive");
   const int az = m.roles.azimuth.front();
   const double gear = gearRatio(m, az);
@@ -203,10 +204,30 @@ SteadyState trimAtWindSpeed(const Model& m, double wind, const TrimGuess& guess,
   const double ftol = opt.tolerance * scale;
   TorqueBalance balance(m, wind, opt);
 
-  const Balance at_rated = balance(rated, opt.min_pitch);
   double omega = rated, pitch = opt.min_pitch;
   bool above = false;
   const double nan = std::numeric_limits<double>::quiet_NaN();
+  if (law.induction()) {
+    // A fixed-speed rotor: the speed where the torque-slip curve meets the aerodynamic torque, at fine
+    // pitch, between the motoring and generating pull-out slips.
+    const auto [glo, ghi] = pulloutSpeeds(law);
+    const double lo = glo / gear, hi = ghi / gear;
+    auto f = [&](double w) { return balance(w, opt.min_pitch).f; };
+    const double flo = f(lo), fhi = f(hi);
+    if (fhi > 0 || flo < 0)
+      throw ComputeError(at + "no torque balance between the induction generator's pull-out slips (" + rpmText(lo) +
+                         " to " + rpmText(hi) + "): the aerodynamic torque " +
+                         (fhi > 0 ? "exceeds the pull-out torque (runaway)" : "is below the motoring pull-out torque"));
+    const BrentResult r = brent(f, lo, hi, flo, fhi, ftol, 1e-10, 100);
+    if (!r.converged) throw ComputeError(at + "the rotor-speed trim did not converge");
+    omega = r.x;
+    OperatingCondition c;
+    c.wind_speed = wind;
+    c.rotor_speed = omega;
+    c.collective_pitch = pitch;
+    return stateOf(m, c, balance(omega, pitch), balance.evaluations);
+  }
+  const Balance at_rated = balance(rated, opt.min_pitch);
   if (at_rated.f > 0) {
     // Above rated: pitch to feather until the excess torque is gone.
     auto f = [&](double p) { return balance(rated, p).f; };

@@ -46,8 +46,9 @@ struct SteadyState {
 SteadyState steadyState(const Model& model, const OperatingCondition& condition, const TrimOptions& opt = {});
 
 /// The trimmed point at `wind_speed` [m/s]. Needs aerodynamics, a rotating coordinate and a generator
-/// torque law (ServoDyn VSContrl = 1). Throws ComputeError saying what was tried when no balance exists
-/// (wind too low to turn the rotor, rated power not reachable below the maximum pitch).
+/// torque law (ServoDyn VSContrl = 1, or an induction generator: then the speed on its torque-slip curve
+/// at fine pitch). Throws ComputeError saying what was tried when no balance exists (wind too low to turn
+/// the rotor, rated power not reachable below the maximum pitch, torque beyond the pull-out torque).
 SteadyState trimAtWindSpeed(const Model& model, double wind_speed, const TrimOptions& opt = {});
 
 /// Where the trim at a wind speed is expected, from its neighbours in a schedule: the search brackets

@@ -22,7 +22,10 @@ Each primary file of `../shared/data/decks` (FAST v8 certification tests, OpenFA
 IEA 3.4 MW reference turbine; its README names the sources) given to `whirl modes DECK` as shipped
 and with `--set CompAero=0` (the structural model of the same deck, no AeroDyn read). The offshore
 certification tests Test19–25 are left out (HydroDyn, SubDyn, moorings: another issue). "refused"
-quotes the first line of the message; paths are relative to the decks folder.
+quotes the error line of the message; paths are relative to the decks folder. "notes:" lists the keys
+whirl noted: the time-domain options of a simulation deck it linearizes as their steady counterpart
+(dynamic BEMT, unsteady airfoils, tower influence, wind files) and a controller it does not run (README,
+*Aerodynamics*).
 Regenerate with `bash scripts/deck-table.sh > docs/decks.md` (after building `build/whirl`).
 The slow CTest suite `EveryDeckSlow` (`tests/cli/test_cli_every_deck.cpp`, on copies of these decks in
 `tests/data/openfast/decks`) runs each of them with `whirl modes --rpm 0` and `whirl campbell` from 0 to
@@ -30,8 +33,11 @@ rated rotor speed, as shipped and structure only, and fails on a refusal it does
 reason below, on a crash or on an operating point that does not converge. The AWT-27 decks (Test01–05)
 cannot be parked with their teeter free (the rotor's weight acts 0.38 m off the teeter pin, the deck's
 teeter spring is 1 N m/rad: README, *Two-bladed and teetered rotors*); the table runs each deck at its
-own RotSpeed, so Test01, 03 and 04 (53.3 rpm) run and Test02 and 05 (0 rpm) are refused, and the suite
-runs their Campbell sweeps from half the rated speed.
+own RotSpeed, so Test01, 03 and 04 (53.3 rpm) run, and of Test02 and 05 (0 rpm) only Test02 with its
+aerodynamics (12 m/s) finds a parked equilibrium; the suite runs their Campbell sweeps from half the
+rated speed. AOC Test08 runs parked but is refused turning: at
+the blade root the in-plane wind of its yaw error exceeds the rotational speed and BEM has no valid
+solution there, a point OpenFAST's linearization refuses too.
 
 HEAD
 echo "| deck | \`whirl modes DECK\` | \`whirl modes DECK --set CompAero=0\` (structure only) |"
@@ -39,13 +45,17 @@ echo "|---|---|---|"
 # One cell: "runs (N modes)" or "refused: <first line of the message>".
 cell() {
   if timeout 600 "$whirl" modes "$@" > "$tmp/out" 2> "$tmp/err"; then
-    echo "runs ($(($(grep -c . "$tmp/out") - 1)) modes)"
+    # The keys of the notes (time-domain options linearized as their steady counterpart, HydroDyn
+    # inputs left out, a controller whirl does not run), e.g. "; notes: WakeMod, AFAeroMod".
+    local keys
+    keys=$(sed -n 's/^whirl: note: [^:]*:[0-9]*: \([A-Za-z_0-9()]*\): .*/\1/p' "$tmp/err" | paste -sd, - | sed 's/,/, /g')
+    echo "runs ($(($(grep -c . "$tmp/out") - 1)) modes${keys:+; notes: $keys})"
     return 0
   fi
   local code=$?
   [ "$code" -eq 124 ] && { echo "timed out after 600 s"; return 1; }
   # Paths under DECKS_DIR shortened; table pipes escaped.
-  echo "refused: $(head -n 1 "$tmp/err" | sed -e "s|$decks/||g" -e 's/^whirl: error: //' -e 's/|/\\|/g')"
+  echo "refused: $(grep -m 1 '^whirl: error: ' "$tmp/err" | sed -e "s|$decks/||g" -e 's/^whirl: error: //' -e 's/|/\\|/g')"
   return 1
 }
 runs=0

@@ -70,6 +70,10 @@ Model loadModel(const ModelOptions& opt) {
     if (t.hydrodyn && parallel::rank() == 0)
       for (const std::string& n : t.hydrodyn->notes)
         std::fprintf(stderr, "whirl: note: %s\n", escapeControlCharacters(n).c_str());
+    // AeroDyn's time-domain options replaced by their steady counterpart: one line each.
+    if (eo.aero && parallel::rank() == 0)
+      for (const std::string& n : eo.aero->notes)
+        std::fprintf(stderr, "whirl: note: %s\n", escapeControlCharacters(n).c_str());
     // SubDyn inputs read and ignored (an SSIfile on a joint whose DOFs are all locked): one line each.
     if (t.subdyn && parallel::rank() == 0)
       for (const std::string& n : t.subdyn->notes)

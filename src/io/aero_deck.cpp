@@ -44,8 +44,10 @@ AeroDeckInput readAeroDeck(const FstInput& fst, OverrideSet* overrides) {
   AeroDeckInput deck;
   deck.aerodyn = readAeroDyn(aero_file, aerodynEnvironment(fst), overrides);
   requireSupported(deck.aerodyn);
+  deck.notes = steadySubstitutes(deck.aerodyn);
   deck.inflow = readInflowWind(inflow_file, overrides);
   requireSupported(deck.inflow);
+  for (std::string& n : steadySubstitutes(deck.inflow)) deck.notes.push_back(std::move(n));
 
   const AeroDynInput& ad = deck.aerodyn;
   for (std::size_t k = 0; k < ad.ADBlFile.size(); ++k) {

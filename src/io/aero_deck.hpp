@@ -20,6 +20,9 @@ struct AeroDeckInput {
   std::vector<AeroDynBladeInput> blades;  ///< blades[k − 1] from ADBlFile(k), as many as the file names (3)
   std::vector<AirfoilInput> airfoils;     ///< airfoils[i] from AFNames(i + 1); a station's BlAFID − 1 indexes it
   InflowWindInput inflow;                 ///< InflowWind file
+  /// Time-domain options replaced by their steady counterpart (aero_support.hpp steadySubstitutes),
+  /// one "file:line: key: value: what whirl does instead" each.
+  std::vector<std::string> notes;
 };
 
 /// Reads the AeroDyn main file (`AeroFile`), every blade file and airfoil file it names, and the
@@ -28,7 +31,8 @@ struct AeroDeckInput {
 ///
 /// Refuses, "file:line: key: value not supported by whirl (…; whirl supports only …)", CompAero other
 /// than 2 (1 AeroDyn14/AeroDisk, 3 ExtLoads, 0 none), CompInflow other than 1, and the AeroDyn and
-/// InflowWind options of aero_support.hpp, before reading blade and airfoil files. A missing file is
+/// InflowWind options of aero_support.hpp, before reading blade and airfoil files; notes the options it
+/// replaces by their steady counterpart (`notes`). A missing file is
 /// named with the line that names it ("AeroDyn.dat:52: AFNames(3): file not found: …"); a station's
 /// BlAFID beyond NumAFfiles is reported at its blade-file line. Other errors as the per-file readers.
 AeroDeckInput readAeroDeck(const FstInput& fst, OverrideSet* overrides = nullptr);

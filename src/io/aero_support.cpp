@@ -1,5 +1,7 @@
 #include "src/io/aero_support.hpp"
 
+#include <fmt/format.h>
+
 #include "src/io/refusals.hpp"
 #include "src/model/error.hpp"
 
@@ -8,7 +10,6 @@ namespace {
 
 std::string wakeModelName(int m) {
   switch (m) {
-    case 2: return "dynamic BEMT";
     case 3: return "OLAF free-vortex wake";
     default: return "unknown wake model";
   }
@@ -32,25 +33,8 @@ std::vector<std::string> unsupportedAeroOptions(const FstInput& fst) {
 
 std::vector<std::string> unsupportedOptions(const AeroDynInput& ad) {
   Refusals r(ad.source);
-  const OpenFastFile& f = ad.source;
-  const bool legacy_dbemt = ad.dbemt_key == "WakeMod";  // WakeMod = 2: reported on WakeMod itself
   r.addIf(ad.Wake_Mod != 0 && ad.Wake_Mod != 1, ad.wake_key, wakeModelName(ad.Wake_Mod),
           ad.wake_key + " = 0 (no induction) or 1 (BEMT)");
-  r.addIf(legacy_dbemt, "WakeMod", "dynamic BEMT", "WakeMod = 0 (no induction) or 1 (BEMT)");
-  r.addIf(!legacy_dbemt && ad.Wake_Mod == 1 && ad.DBEMT_Mod > 0, ad.dbemt_key, "dynamic BEMT",
-          "DBEMT_Mod = 0 (quasi-steady BEMT) or -1 (frozen wake)");
-  if (ad.ua_key == "AFAeroMod")
-    r.addIf(ad.unsteadyAero(), "AFAeroMod", "Beddoes-Leishman unsteady airfoil aerodynamics",
-            "AFAeroMod = 1 (steady airfoil tables)");
-  else
-    r.addIf(ad.unsteadyAero(), ad.ua_key, "unsteady airfoil aerodynamics",
-            ad.ua_key + " = 0 (quasi-steady airfoil tables)");
-  r.addIf(ad.TwrPotent != 0, "TwrPotent", "tower potential flow", "TwrPotent = 0 (no tower influence)");
-  const OpenFastEntry* shadow = f.find("TwrShadow");
-  const bool shadow_is_flag = shadow && !parseFortranDouble(shadow->raw);  // AeroDyn v15.0x: True/False
-  r.addIf(ad.TwrShadow != 0, "TwrShadow", "tower shadow",
-          shadow_is_flag ? "TwrShadow = False (no tower shadow)" : "TwrShadow = 0 (no tower shadow)");
-  r.addIf(ad.TwrAero, "TwrAero", "tower drag loads", "TwrAero = False");
   r.addIf(ad.Buoyancy, "Buoyancy", "buoyancy", "Buoyancy = False");
   r.addIf(ad.CavitCheck, "CavitCheck", "cavitation check", "CavitCheck = False");
   r.addIf(ad.CompAA, "CompAA", "aeroacoustics", "CompAA = False");
@@ -64,14 +48,54 @@ std::vector<std::string> unsupportedOptions(const AeroDynInput& ad) {
   return r.take();
 }
 
-std::vector<std::string> unsupportedOptions(const InflowWindInput& wind) {
-  Refusals r(wind.source);
+std::vector<std::string> steadySubstitutes(const AeroDynInput& ad) {
+  std::vector<std::string> notes;
+  const OpenFastFile& f = ad.source;
+  auto note = [&](bool on, const std::string& key, const std::string& what) {
+    if (!on) return;
+    const OpenFastEntry* e = f.find(key);
+    notes.push_back(f.where(key, (e ? e->raw : std::string("?")) + ": " + what));
+  };
+  const bool legacy_dbemt = ad.dbemt_key == "WakeMod";  // WakeMod = 2: reported on WakeMod itself
+  const std::string dbemt =
+      "dynamic BEMT: whirl solves the quasi-steady BEMT, the steady state of DBEMT's "
+      "inflow states, which are not in the linear model";
+  note(legacy_dbemt, "WakeMod", dbemt);
+  note(!legacy_dbemt && ad.Wake_Mod == 1 && ad.DBEMT_Mod > 0, ad.dbemt_key, dbemt);
+  note(ad.unsteadyAero(), ad.ua_key,
+       "unsteady airfoil aerodynamics: whirl uses the static airfoil tables, the steady state of the "
+       "unsteady-airfoil model, whose states are not in the linear model");
+  note(ad.TwrPotent != 0, "TwrPotent", "tower potential flow left out: the blades see the undisturbed wind");
+  note(ad.TwrShadow != 0, "TwrShadow", "tower shadow left out: the blades see the undisturbed wind");
+  note(ad.TwrAero, "TwrAero", "aerodynamic drag on the tower left out");
+  return notes;
+}
+
+namespace {
+
+const char* windTypeName(int type) {
   static const char* names[] = {"", "steady", "uniform wind file", "TurbSim full field", "Bladed-style full field",
                                 "HAWC full field", "user-defined wind", "native Bladed full field"};
-  const bool known = wind.WindType >= 1 && wind.WindType <= 7;
-  r.addIf(wind.WindType != 1, "WindType", known ? std::string(names[wind.WindType]) + " wind" : "unknown wind type",
-          "WindType = 1 (steady wind)");
+  return type >= 1 && type <= 7 ? names[type] : nullptr;
+}
+
+}  // namespace
+
+std::vector<std::string> unsupportedOptions(const InflowWindInput& wind) {
+  Refusals r(wind.source);
+  r.addIf(!windTypeName(wind.WindType), "WindType", "unknown wind type", "WindType = 1 to 7");
   return r.take();
+}
+
+std::vector<std::string> steadySubstitutes(const InflowWindInput& wind) {
+  if (wind.WindType == 1 || !windTypeName(wind.WindType)) return {};
+  const OpenFastFile& f = wind.source;
+  const std::string speed = fmt::format("{:g} m/s", wind.HWindSpeed);
+  return {f.where("WindType", fmt::format("{}: {} wind: whirl linearizes in the steady wind of the file's "
+                                          "steady-wind section, HWindSpeed = {}{} at RefHt = {:g} m with PLExp = "
+                                          "{:g} (--wind or --set HWindSpeed=… for another speed)",
+                                          wind.WindType, windTypeName(wind.WindType), speed,
+                                          wind.HWindSpeed == 0 ? " (still air)" : "", wind.RefHt, wind.PLExp))};
 }
 
 void requireSupported(const AeroDynInput& ad) { throwIfAny(unsupportedOptions(ad)); }

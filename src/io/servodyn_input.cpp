@@ -48,7 +48,7 @@ GeneratorTorqueLaw generatorTorqueLaw(const ServoDynInput& servo) {
   const OpenFastFile& f = servo.source;
   GeneratorTorqueLaw law;
   const int vs = f.getInt("VSContrl");
-  const char* supported = "VSContrl = 1 (simple variable-speed law) or 0 with GenModel = 1 (simple induction generator)";
+  const char* supported = "VSContrl = 1 (simple variable-speed law) or 0 with GenModel = 1 or 2 (induction generator)";
   if (vs == 3) throw refusal(f, "VSContrl", "torque from the user routine UserVSCont", supported);
   if (vs == 4) throw refusal(f, "VSContrl", "torque from Simulink/LabVIEW", supported);
   if (vs == 5) throw refusal(f, "VSContrl", "torque from a Bladed-style controller DLL", supported);
@@ -69,10 +69,31 @@ GeneratorTorqueLaw generatorTorqueLaw(const ServoDynInput& servo) {
     return law;
   }
   const int gen = f.getInt("GenModel");
-  const char* gen_supported = "GenModel = 1 (simple induction generator) when VSContrl = 0";
-  if (gen == 2) throw refusal(f, "GenModel", "Thevenin-equivalent induction generator", gen_supported);
+  const char* gen_supported = "GenModel = 1 (simple induction generator) or 2 (Thevenin) when VSContrl = 0";
   if (gen == 3) throw refusal(f, "GenModel", "generator from the user routine UserGen", gen_supported);
-  if (gen != 1) throw InputError(f.where("GenModel", "must be 1, 2 or 3 (is " + std::to_string(gen) + ")"));
+  if (gen != 1 && gen != 2) throw InputError(f.where("GenModel", "must be 1, 2 or 3 (is " + std::to_string(gen) + ")"));
+  if (gen == 2) {
+    law.mode = TorqueControl::TheveninInductionGenerator;
+    law.TEC_Freq = f.getDouble("TEC_Freq");
+    law.TEC_NPol = f.getInt("TEC_NPol");
+    law.TEC_SRes = f.getDouble("TEC_SRes");
+    law.TEC_RRes = f.getDouble("TEC_RRes");
+    law.TEC_VLL = f.getDouble("TEC_VLL");
+    law.TEC_SLR = f.getDouble("TEC_SLR");
+    law.TEC_RLR = f.getDouble("TEC_RLR");
+    law.TEC_MR = f.getDouble("TEC_MR");
+    requirePositive(f, "TEC_Freq", law.TEC_Freq);
+    if (!(law.TEC_NPol > 0 && law.TEC_NPol % 2 == 0))
+      throw InputError(
+          f.where("TEC_NPol", "must be a positive even number of poles (is " + std::to_string(law.TEC_NPol) + ")"));
+    requireNonnegative(f, "TEC_SRes", law.TEC_SRes);
+    requirePositive(f, "TEC_RRes", law.TEC_RRes);
+    requirePositive(f, "TEC_VLL", law.TEC_VLL);
+    requireNonnegative(f, "TEC_SLR", law.TEC_SLR);
+    requireNonnegative(f, "TEC_RLR", law.TEC_RLR);
+    requirePositive(f, "TEC_MR", law.TEC_MR);
+    return law;
+  }
   law.mode = TorqueControl::SimpleInductionGenerator;
   law.SIG_SlPc = f.getDouble("SIG_SlPc");
   law.SIG_SySp = f.getDouble("SIG_SySp");
@@ -85,6 +106,20 @@ GeneratorTorqueLaw generatorTorqueLaw(const ServoDynInput& servo) {
     throw InputError(
         f.where("SIG_PORt", "must be at least 1 (pull-out over rated torque, is " + numberText(law.SIG_PORt) + ")"));
   return law;
+}
+
+std::optional<std::string> externalTorqueController(const ServoDynInput& servo) {
+  const int vs = servo.VSContrl.value_or(0);
+  const char* what = vs == 3   ? "torque from the user routine UserVSCont"
+                     : vs == 4 ? "torque from Simulink/LabVIEW"
+                     : vs == 5 ? "torque from a Bladed-style controller DLL"
+                               : nullptr;
+  if (!what) return std::nullopt;
+  const OpenFastFile& f = servo.source;
+  return f.where("VSContrl", f.find("VSContrl")->raw + ": " + what +
+                                 ", which whirl does not run: the linear model is open loop (the generator torque "
+                                 "is an input, its speed feedback left out); trimming along the wind needs a torque "
+                                 "law (VSContrl = 1)");
 }
 
 }  // namespace whirl::io

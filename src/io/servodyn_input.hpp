@@ -44,8 +44,9 @@ ServoDynInput readServoDyn(const std::filesystem::path& file, OverrideSet* overr
 
 /// How ServoDyn sets the generator torque.
 enum class TorqueControl {
-  SimpleVariableSpeed,       ///< VSContrl = 1: ServoDyn's simple variable-speed law (VS_* keys)
-  SimpleInductionGenerator,  ///< VSContrl = 0, GenModel = 1: torque from the slip (SIG_* keys)
+  SimpleVariableSpeed,         ///< VSContrl = 1: ServoDyn's simple variable-speed law (VS_* keys)
+  SimpleInductionGenerator,    ///< VSContrl = 0, GenModel = 1: torque from the slip (SIG_* keys)
+  TheveninInductionGenerator,  ///< VSContrl = 0, GenModel = 2: Thevenin-equivalent circuit (TEC_* keys)
 };
 
 /// The generator-torque law of a ServoDyn file, in the file's units (HSS side).
@@ -60,13 +61,27 @@ struct GeneratorTorqueLaw {
   double SIG_SySp = 0.0;   ///< [SimpleInductionGenerator] synchronous speed (rpm), > 0
   double SIG_RtTq = 0.0;   ///< [SimpleInductionGenerator] rated torque (N·m), >= 0
   double SIG_PORt = 0.0;   ///< [SimpleInductionGenerator] pull-out ratio (-), >= 1
+  double TEC_Freq = 0.0;   ///< [TheveninInductionGenerator] line frequency (Hz), > 0
+  int TEC_NPol = 0;        ///< [TheveninInductionGenerator] number of poles, even, > 0
+  double TEC_SRes = 0.0;   ///< [TheveninInductionGenerator] stator resistance (ohms), >= 0
+  double TEC_RRes = 0.0;   ///< [TheveninInductionGenerator] rotor resistance (ohms), > 0
+  double TEC_VLL = 0.0;    ///< [TheveninInductionGenerator] line-to-line RMS voltage (volts), > 0
+  double TEC_SLR = 0.0;    ///< [TheveninInductionGenerator] stator leakage reactance (ohms), >= 0
+  double TEC_RLR = 0.0;    ///< [TheveninInductionGenerator] rotor leakage reactance (ohms), >= 0
+  double TEC_MR = 0.0;     ///< [TheveninInductionGenerator] magnetizing reactance (ohms), > 0
 };
 
 /// The torque law, for callers that need the generator torque (aerodynamic operating points).
 /// Refuses, with "file:line: key: value not supported by whirl (…; whirl supports only …)", a
 /// controller in user code (VSContrl = 3 routine, 4 Simulink/LabVIEW, 5 Bladed-style DLL) and, with
-/// VSContrl = 0, a generator model other than the simple induction generator (GenModel = 2 Thevenin,
-/// 3 user routine). Throws InputError when a key the law needs is missing or out of range.
+/// VSContrl = 0, a generator in a user routine (GenModel = 3). Throws InputError when a key the law
+/// needs is missing or out of range.
 GeneratorTorqueLaw generatorTorqueLaw(const ServoDynInput& servo);
+
+/// A generator torque from a controller in user code (VSContrl = 3 routine, 4 Simulink/LabVIEW, 5
+/// Bladed-style DLL), which whirl cannot run: "file:line: VSContrl: value: what it is: the linear model
+/// is open loop …", the note under which an aerodynamic model is built without a torque law (generator
+/// torque an input, as a controller designer's plant model has it). Nothing for the laws whirl models.
+std::optional<std::string> externalTorqueController(const ServoDynInput& servo);
 
 }  // namespace whirl::io

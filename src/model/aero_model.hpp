@@ -80,6 +80,17 @@ struct GeneratorTorqueLaw {
   double k2 = 0;           ///< VS_Rgn2K [N m s²/rad²]
   double slip = 0;         ///< VS_SlPc / 100 [-]
   double efficiency = 1;   ///< GenEff / 100: electrical over mechanical power [-]
+  /// Which law: ServoDyn's simple variable-speed law (VSContrl = 1: rated_speed, rated_torque, k2,
+  /// slip), its simple induction generator (VSContrl = 0, GenModel = 1: torque rated_torque (ω − ω_sync)
+  /// / (rated_speed − ω_sync) within ± pullout_ratio · rated_torque, rated_speed = ω_sync (1 +
+  /// SIG_SlPc/100)) or its Thevenin-equivalent induction generator (GenModel = 2: the tec_* terms).
+  enum class Kind { VariableSpeed, SimpleInduction, Thevenin } kind = Kind::VariableSpeed;
+  double sync_speed = 0;     ///< SIG_SySp, or 4π TEC_Freq / TEC_NPol [rad/s]
+  double pullout_ratio = 1;  ///< SIG_PORt: pull-out over rated torque [-]
+  /// Thevenin: torque = tec_a (s) / (tec_c0 + tec_c1 s + tec_c2 s²), s = (ω − ω_sync)/ω_sync; tec_a =
+  /// A0 · TEC_VLL² (ServoDyn's A0 = TEC_RRes K2 / ω_sync) [N m], tec_c* [Ω²].
+  double tec_a = 0, tec_c0 = 0, tec_c1 = 0, tec_c2 = 0;
+  bool induction() const { return kind != Kind::VariableSpeed; }
   bool active() const { return speed_output >= 0; }
 };
 

@@ -1,12 +1,13 @@
 // AeroDyn's blade elements, airfoils and InflowWind's steady wind on the ElastoDyn turbine, and
-// ServoDyn's simple variable-speed torque law on its generator.
+// ServoDyn's generator torque law (simple variable-speed law or induction generator) on its generator.
 #include <cmath>
 #include <numbers>
 #include <string>
 
-#include "src/turbine/elastodyn_parts.hpp"
+#include "src/dynamics/generator_torque.hpp"
 #include "src/model/error.hpp"
 #include "src/shapes/beam.hpp"
+#include "src/turbine/elastodyn_parts.hpp"
 
 namespace whirl::elastodyn {
 namespace {
@@ -114,18 +115,37 @@ void addAerodynamics(Builder& b, const DrivetrainParts& dt, const RotorParts& ro
 void addGeneratorTorqueLaw(Builder& b, const io::ServoDynInput& servo) {
   if (servo.VSContrl.value_or(0) == 0 && servo.GenModel.value_or(1) == 1 && !servo.SIG_SySp) return;
   const io::GeneratorTorqueLaw law = io::generatorTorqueLaw(servo);  // refuses controllers in user code
-  if (law.mode != io::TorqueControl::SimpleVariableSpeed)
-    throw InputError(servo.source.where("VSContrl", "0 (simple induction generator): whirl models only the simple "
-                                                    "variable-speed law (VSContrl = 1) in an aerodynamic model"));
   GeneratorTorqueLaw& g = b.model().generator;
   g.speed_output = outputIndex(b.model(), "GenSpeed");
   if (!g.active() || b.model().roles.generator_torque_input < 0)
     throw InputError("ServoDyn torque law: the model has no generator torque input or GenSpeed output");
   const double rpm = std::numbers::pi / 30.0;  // rad/s per rpm
-  g.rated_speed = law.VS_RtGnSp * rpm;
-  g.rated_torque = law.VS_RtTq;
-  g.k2 = law.VS_Rgn2K / (rpm * rpm);
-  g.slip = law.VS_SlPc / 100.0;
+  if (law.mode == io::TorqueControl::SimpleInductionGenerator) {
+    g.kind = GeneratorTorqueLaw::Kind::SimpleInduction;
+    g.sync_speed = law.SIG_SySp * rpm;
+    g.rated_speed = g.sync_speed * (1.0 + law.SIG_SlPc / 100.0);
+    g.rated_torque = law.SIG_RtTq;
+    g.pullout_ratio = law.SIG_PORt;
+  } else if (law.mode == io::TorqueControl::TheveninInductionGenerator) {
+    // ServoDyn's initialization of the equivalent circuit (SrvD_SetParameters, GenModel = 2).
+    g.kind = GeneratorTorqueLaw::Kind::Thevenin;
+    const double den = law.TEC_SRes * law.TEC_SRes + std::pow(law.TEC_SLR + law.TEC_MR, 2);
+    const double re1 = law.TEC_SRes * law.TEC_MR * law.TEC_MR / den;
+    const double xe1 = law.TEC_MR * (law.TEC_SRes * law.TEC_SRes + law.TEC_SLR * (law.TEC_SLR + law.TEC_MR)) / den;
+    g.sync_speed = 4.0 * std::numbers::pi * law.TEC_Freq / law.TEC_NPol;
+    const double k1 = std::pow(xe1 + law.TEC_RLR, 2), k2 = law.TEC_MR * law.TEC_MR / den;
+    g.tec_a = law.TEC_RRes * k2 / g.sync_speed * law.TEC_VLL * law.TEC_VLL;
+    g.tec_c0 = law.TEC_RRes * law.TEC_RRes;
+    g.tec_c1 = -2.0 * re1 * law.TEC_RRes;
+    g.tec_c2 = re1 * re1 + k1;
+    g.rated_speed = pulloutSpeeds(g).second;  // the top of the trim's speed bracket
+    g.rated_torque = generatorTorque(g, g.rated_speed);
+  } else {
+    g.rated_speed = law.VS_RtGnSp * rpm;
+    g.rated_torque = law.VS_RtTq;
+    g.k2 = law.VS_Rgn2K / (rpm * rpm);
+    g.slip = law.VS_SlPc / 100.0;
+  }
   g.efficiency = law.GenEff / 100.0;
   for (Output& o : generatorOutputs()) b.model().outputs.push_back(std::move(o));
 }

@@ -122,6 +122,11 @@ io::OpenFastTurbine readElastoDynTurbine(const std::string& path, const std::vec
     io::requireSupported(deck.inflow);
     opt.aero = std::move(deck);
     opt.torque_law = io::readServoDynIfEnabled(t.fst, &set);
+    if (opt.torque_law)
+      if (std::optional<std::string> note = io::externalTorqueController(*opt.torque_law)) {
+        opt.aero->notes.push_back(std::move(*note));
+        opt.torque_law.reset();
+      }
   }
   set.requireAllUsed();
   return t;

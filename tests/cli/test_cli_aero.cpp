@@ -67,6 +67,26 @@ TEST(CliAero, ParkedAndFeatheredRotorsInWind) {
   EXPECT_EQ(feathered.code, 0) << feathered.err;
 }
 
+// A simulation deck (OpenFAST toolbox Main_Onshore: DBEMT, unsteady airfoils, tower potential flow and
+// drag) linearizes as the same deck with those options switched off by hand, the substitutions it notes;
+// the notes name file, line, key and value.
+TEST(CliAero, SimulationDeckOptionsLinearizeAsTheirSteadyCounterpart) {
+  const std::string deck = "tests/data/openfast/decks/toolbox-nrel5mw/Main_Onshore.fst";
+  const auto shipped = whirl("modes " + deck + " --rpm 9 --format csv");
+  ASSERT_EQ(shipped.code, 0) << shipped.err;
+  const auto by_hand = whirl(
+      "modes " + deck +
+      " --rpm 9 --format csv --set WakeMod=1 --set AFAeroMod=1 --set TwrPotent=0 --set TwrAero=False");
+  ASSERT_EQ(by_hand.code, 0) << by_hand.err;
+  EXPECT_EQ(shipped.out, by_hand.out);
+  EXPECT_EQ(by_hand.err.find("whirl: note:"), std::string::npos) << by_hand.err;
+  const std::string ad = "tests/data/openfast/decks/toolbox-nrel5mw/onshore/AeroDyn.dat";
+  for (const std::string& note : {ad + ":6: WakeMod: 2: dynamic BEMT", ad + ":7: AFAeroMod: 2: unsteady airfoil",
+                                  ad + ":8: TwrPotent: 1: tower potential flow left out",
+                                  ad + ":10: TwrAero: True: aerodynamic drag on the tower left out"})
+    EXPECT_NE(shipped.err.find("whirl: note: " + note), std::string::npos) << note << "\n" << shipped.err;
+}
+
 TEST(CliAero, BrokenAirfoilListNamesTheFileAndLine) {
   const auto r = whirl("modes " + kAero + " --set NumAFfiles=9");
   EXPECT_NE(r.code, 0);

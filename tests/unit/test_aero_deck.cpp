@@ -121,13 +121,23 @@ TEST(AeroDeck, UnsupportedAeroDynOptionReportedBeforeMissingAirfoils) {
               HasSubstr(":6: WakeMod: 3 not supported by whirl (OLAF free-vortex wake;"));
 }
 
-TEST(AeroDeck, UnsupportedWindTypeRefused) {
+// A simulation deck's time-domain options are read and noted, each at its line, not refused; unknown
+// wind types still are.
+TEST(AeroDeck, TimeDomainOptionsNotedNotRefused) {
   AeroScratch s;
   s.edit("v5/InflowWind.dat", "          1   WindType", "          2   WindType");
+  s.edit("v5/AeroDyn.dat", "          0   UA_Mod", "          3   UA_Mod");
+  const whirl::io::AeroDeckInput deck = readAeroDeck(readFst(s.path("v5/main.fst")));
+  ASSERT_EQ(deck.notes.size(), 2u);
+  EXPECT_THAT(deck.notes[0], testing::StartsWith(s.path("v5/AeroDyn.dat").string() + ":48: UA_Mod: 3: "));
+  EXPECT_THAT(deck.notes[1], testing::StartsWith(s.path("v5/InflowWind.dat").string() +
+                                                 ":5: WindType: 2: uniform wind file wind: whirl linearizes in the "
+                                                 "steady wind of the file's steady-wind section"));
+  EXPECT_TRUE(readAeroDeck(readFst(s.path("toolbox/Main.fst"))).notes.empty());
+  s.edit("v5/InflowWind.dat", "          2   WindType", "          8   WindType");
   EXPECT_EQ(inputErrorMessage([&] { readAeroDeck(readFst(s.path("v5/main.fst"))); }),
             s.path("v5/InflowWind.dat").string() +
-                ":5: WindType: 2 not supported by whirl (uniform wind file wind; whirl supports only WindType = 1 "
-                "(steady wind))");
+                ":5: WindType: 8 not supported by whirl (unknown wind type; whirl supports only WindType = 1 to 7)");
 }
 
 TEST(AeroDeck, AirfoilIdBeyondNumAFfiles) {

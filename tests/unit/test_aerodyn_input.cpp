@@ -195,35 +195,12 @@ TEST_P(AeroDynRefusal, NamesKeyValueAndWhatWhirlSupports) {
 INSTANTIATE_TEST_SUITE_P(
     AeroDynInput, AeroDynRefusal,
     testing::Values(
-        Refusal{"WakeModDbemt", kV3, "          1   WakeMod", "          2   WakeMod",
-                "6: WakeMod: 2 not supported by whirl (dynamic BEMT; whirl supports only WakeMod = 0 (no induction) "
-                "or 1 (BEMT))"},
         Refusal{"WakeModOlaf", kV3, "          1   WakeMod", "          3   WakeMod",
                 "6: WakeMod: 3 not supported by whirl (OLAF free-vortex wake; whirl supports only WakeMod = 0 (no "
                 "induction) or 1 (BEMT))"},
         Refusal{"Wake_ModOlaf", kV5, "          1   Wake_Mod", "          3   Wake_Mod",
                 "6: Wake_Mod: 3 not supported by whirl (OLAF free-vortex wake; whirl supports only Wake_Mod = 0 (no "
                 "induction) or 1 (BEMT))"},
-        Refusal{"DynamicBemt", kV5, "         -1   DBEMT_Mod", "          2   DBEMT_Mod",
-                "42: DBEMT_Mod: 2 not supported by whirl (dynamic BEMT; whirl supports only DBEMT_Mod = 0 "
-                "(quasi-steady BEMT) or -1 (frozen wake))"},
-        Refusal{"AFAeroModUnsteady", kV3, "          1   AFAeroMod", "          2   AFAeroMod",
-                "7: AFAeroMod: 2 not supported by whirl (Beddoes-Leishman unsteady airfoil aerodynamics; whirl "
-                "supports only AFAeroMod = 1 (steady airfoil tables))"},
-        Refusal{"UA_ModUnsteady", kV5, "          0   UA_Mod", "          3   UA_Mod",
-                "48: UA_Mod: 3 not supported by whirl (unsteady airfoil aerodynamics; whirl supports only UA_Mod = 0 "
-                "(quasi-steady airfoil tables))"},
-        Refusal{"TowerPotentialFlow", kV3, "          0   TwrPotent", "          1   TwrPotent",
-                "8: TwrPotent: 1 not supported by whirl (tower potential flow; whirl supports only TwrPotent = 0 "
-                "(no tower influence))"},
-        Refusal{"TowerShadow", kV3, "          0   TwrShadow", "          2   TwrShadow",
-                "9: TwrShadow: 2 not supported by whirl (tower shadow; whirl supports only TwrShadow = 0 (no tower "
-                "shadow))"},
-        Refusal{"TowerShadowFlag", kV3, "          0   TwrShadow", "True          TwrShadow",
-                "9: TwrShadow: True not supported by whirl (tower shadow; whirl supports only TwrShadow = False (no "
-                "tower shadow))"},
-        Refusal{"TowerAero", kV3, "False         TwrAero", "True          TwrAero",
-                "10: TwrAero: True not supported by whirl (tower drag loads; whirl supports only TwrAero = False)"},
         Refusal{"Cavitation", kV3, "False         CavitCheck", "True          CavitCheck",
                 "12: CavitCheck: True not supported by whirl (cavitation check; whirl supports only CavitCheck = "
                 "False)"},
@@ -250,12 +227,62 @@ INSTANTIATE_TEST_SUITE_P(
 
 TEST(AeroDynInput, SeveralRefusalsListedTogether) {
   AeroScratch s;
-  s.edit(kV3, "          1   AFAeroMod", "          2   AFAeroMod");
-  s.edit(kV3, "False         TwrAero", "True          TwrAero");
+  s.edit(kV3, "False         CavitCheck", "True          CavitCheck");
+  s.edit(kV3, "False         CompAA", "True          CompAA");
   const AeroDynInput a = readAeroDyn(s.path(kV3));
   EXPECT_EQ(whirl::io::unsupportedOptions(a).size(), 2u);
   EXPECT_THAT(inputErrorMessage([&] { whirl::io::requireSupported(a); }),
-              HasSubstr("(steady airfoil tables)); " + s.path(kV3).string() + ":10: TwrAero: True not supported"));
+              HasSubstr("CavitCheck = False); " + s.path(kV3).string() + ":14: CompAA: True not supported"));
+}
+
+// Time-domain options whose steady state whirl models (or whose effect it leaves out) are accepted with
+// a note each, naming the file, line, key and value and what whirl does instead; OpenFAST's own
+// linearization refuses them (AeroDyn v15 input template: "WakeMod cannot be 2 or 3 when linearizing").
+struct Substitute {
+  const char* name;
+  std::string file;
+  std::string from;
+  std::string to;
+  std::string note;  ///< "<line>: key: value: what whirl does" (the path in front)
+};
+
+class AeroDynSteadySubstitute : public testing::TestWithParam<Substitute> {};
+
+TEST_P(AeroDynSteadySubstitute, AcceptedWithANote) {
+  const Substitute& c = GetParam();
+  AeroScratch s;
+  s.edit(c.file, c.from, c.to);
+  const AeroDynInput a = readAeroDyn(s.path(c.file));
+  EXPECT_NO_THROW(whirl::io::requireSupported(a));
+  const std::vector<std::string> notes = whirl::io::steadySubstitutes(a);
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_THAT(notes[0], testing::StartsWith(s.path(c.file).string() + ":" + c.note));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    AeroDynInput, AeroDynSteadySubstitute,
+    testing::Values(Substitute{"WakeModDbemt", kV3, "          1   WakeMod", "          2   WakeMod",
+                               "6: WakeMod: 2: dynamic BEMT: whirl solves the quasi-steady BEMT"},
+                    Substitute{"DynamicBemt", kV5, "         -1   DBEMT_Mod", "          2   DBEMT_Mod",
+                               "42: DBEMT_Mod: 2: dynamic BEMT: whirl solves the quasi-steady BEMT"},
+                    Substitute{"AFAeroModUnsteady", kV3, "          1   AFAeroMod", "          2   AFAeroMod",
+                               "7: AFAeroMod: 2: unsteady airfoil aerodynamics: whirl uses the static airfoil tables"},
+                    Substitute{"UA_ModUnsteady", kV5, "          0   UA_Mod", "          3   UA_Mod",
+                               "48: UA_Mod: 3: unsteady airfoil aerodynamics: whirl uses the static airfoil tables"},
+                    Substitute{"TowerPotentialFlow", kV3, "          0   TwrPotent", "          1   TwrPotent",
+                               "8: TwrPotent: 1: tower potential flow left out"},
+                    Substitute{"TowerShadow", kV3, "          0   TwrShadow", "          2   TwrShadow",
+                               "9: TwrShadow: 2: tower shadow left out"},
+                    Substitute{"TowerShadowFlag", kV3, "          0   TwrShadow", "True          TwrShadow",
+                               "9: TwrShadow: True: tower shadow left out"},
+                    Substitute{"TowerAero", kV3, "False         TwrAero", "True          TwrAero",
+                               "10: TwrAero: True: aerodynamic drag on the tower left out"}),
+    [](const testing::TestParamInfo<Substitute>& p) { return std::string(p.param.name); });
+
+TEST(AeroDynInput, SteadyDeckHasNoNotes) {
+  AeroScratch s;
+  EXPECT_TRUE(whirl::io::steadySubstitutes(readAeroDyn(s.path(kV3))).empty());
+  EXPECT_TRUE(whirl::io::steadySubstitutes(readAeroDyn(s.path(kV5))).empty());
 }
 
 /// The toolbox or v5 file edited; the message of reading it, its path shown as "<file>".

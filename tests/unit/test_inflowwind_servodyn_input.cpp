@@ -67,12 +67,20 @@ TEST(InflowWindInput, RefusalsAndErrors) {
   AeroScratch s;
   const std::string rel = "toolbox/InflowWind.dat";
   const std::string p = s.path(rel).string();
+  EXPECT_TRUE(whirl::io::steadySubstitutes(readInflowWind(s.path(rel))).empty());
+  // A wind file: linearized in the steady wind of the file's steady-wind section, said in a note.
   s.edit(rel, "          1   WindType", "          3   WindType");
   const InflowWindInput w = readInflowWind(s.path(rel));  // reads; refusing is aero_support's job
-  EXPECT_EQ(inputErrorMessage([&] { whirl::io::requireSupported(w); }),
-            p + ":5: WindType: 3 not supported by whirl (TurbSim full field wind; whirl supports only WindType = 1 "
-                "(steady wind))");
-  s.edit(rel, "          3   WindType", "          1   WindType");
+  EXPECT_NO_THROW(whirl::io::requireSupported(w));
+  const std::vector<std::string> notes = whirl::io::steadySubstitutes(w);
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_THAT(notes[0], testing::StartsWith(p + ":5: WindType: 3: TurbSim full field wind: whirl linearizes in the "
+                                                "steady wind of the file's steady-wind section, HWindSpeed = 8 m/s "
+                                                "at RefHt = 90 m with PLExp = 0"));
+  s.edit(rel, "          3   WindType", "          9   WindType");
+  EXPECT_EQ(inputErrorMessage([&] { whirl::io::requireSupported(readInflowWind(s.path(rel))); }),
+            p + ":5: WindType: 9 not supported by whirl (unknown wind type; whirl supports only WindType = 1 to 7)");
+  s.edit(rel, "          9   WindType", "          1   WindType");
   s.edit(rel, "         90   RefHt ", "          0   RefHt ");
   EXPECT_EQ(inputErrorMessage([&] { readInflowWind(s.path(rel)); }), p + ":15: RefHt: must be positive (is 0)");
   s.edit(rel, "          0   RefHt ", "         90   RefHt ");
@@ -115,9 +123,17 @@ TEST(ServoDynInput, ControllersInUserCodeRefusedOnlyForTheTorqueLaw) {
     EXPECT_DOUBLE_EQ(servo.YawSpr, 9.02832e9);
     EXPECT_EQ(inputErrorMessage([&] { whirl::io::generatorTorqueLaw(servo); }),
               s.path("toolbox/ServoDyn.dat").string() + ":19: VSContrl: " + value + " not supported by whirl (" + what +
-                  "; whirl supports only VSContrl = 1 (simple variable-speed law) or 0 with GenModel = 1 (simple "
-                  "induction generator))");
+                  "; whirl supports only VSContrl = 1 (simple variable-speed law) or 0 with GenModel = 1 or 2 "
+                  "(induction generator))");
+    // An aerodynamic model is built open loop instead, with this note.
+    const std::optional<std::string> note = whirl::io::externalTorqueController(servo);
+    ASSERT_TRUE(note.has_value());
+    EXPECT_EQ(*note, s.path("toolbox/ServoDyn.dat").string() + ":19: VSContrl: " + value + ": " + what +
+                         ", which whirl does not run: the linear model is open loop (the generator torque is an "
+                         "input, its speed feedback left out); trimming along the wind needs a torque law "
+                         "(VSContrl = 1)");
   }
+  EXPECT_FALSE(whirl::io::externalTorqueController(readServoDyn(aeroDir() / "toolbox" / "ServoDyn.dat")));
 }
 
 TEST(ServoDynInput, GeneratorModelsWithoutVariableSpeedControl) {
@@ -128,11 +144,19 @@ TEST(ServoDynInput, GeneratorModelsWithoutVariableSpeedControl) {
   EXPECT_EQ(law.mode, whirl::io::TorqueControl::SimpleInductionGenerator);
   EXPECT_DOUBLE_EQ(law.SIG_SySp, 9999.9);
   s.edit(rel, "          1   GenModel", "          2   GenModel");
-  const ServoDynInput thevenin = readServoDyn(s.path(rel));
-  EXPECT_EQ(inputErrorMessage([&] { whirl::io::generatorTorqueLaw(thevenin); }),
+  const whirl::io::GeneratorTorqueLaw thevenin = whirl::io::generatorTorqueLaw(readServoDyn(s.path(rel)));
+  EXPECT_EQ(thevenin.mode, whirl::io::TorqueControl::TheveninInductionGenerator);
+  EXPECT_DOUBLE_EQ(thevenin.TEC_Freq, 9999.9);
+  EXPECT_EQ(thevenin.TEC_NPol, 9998);
+  EXPECT_DOUBLE_EQ(thevenin.TEC_MR, 9999.9);
+  s.edit(rel, "       9998   TEC_NPol", "          3   TEC_NPol");
+  EXPECT_EQ(inputErrorMessage([&] { whirl::io::generatorTorqueLaw(readServoDyn(s.path(rel))); }),
+            s.path(rel).string() + ":39: TEC_NPol: must be a positive even number of poles (is 3)");
+  s.edit(rel, "          2   GenModel", "          3   GenModel");
+  EXPECT_EQ(inputErrorMessage([&] { whirl::io::generatorTorqueLaw(readServoDyn(s.path(rel))); }),
             s.path(rel).string() +
-                ":20: GenModel: 2 not supported by whirl (Thevenin-equivalent induction generator; "
-                "whirl supports only GenModel = 1 (simple induction generator) when VSContrl = 0)");
+                ":20: GenModel: 3 not supported by whirl (generator from the user routine UserGen; "
+                "whirl supports only GenModel = 1 (simple induction generator) or 2 (Thevenin) when VSContrl = 0)");
 }
 
 TEST(ServoDynInput, TorqueLawValuesChecked) {
