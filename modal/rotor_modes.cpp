@@ -207,7 +207,10 @@ RotorModes multibladeModes(const RotorCoordinates& c, const MbcLayout& layout, c
   std::vector<NamingCoordinate> coords(n);
   MbcResult mbc;
   const bool teeter = std::find(c.teeter.begin(), c.teeter.end(), true) != c.teeter.end();
-  if ((nb > 0 || teeter) && nb < 3 && std::abs(rotor_speed) > 0 && samples.size() >= 2) {
+  // A single blade with no fixed-frame coordinate (a blade-only deck) needs no transform: its rotating
+  // coordinates are its multiblade ones (N = 1), and the azimuth average of A is MBC3's.
+  const bool blade_only = nb == 1 && !teeter && std::find(c.blade.begin(), c.blade.end(), -1) == c.blade.end();
+  if ((nb > 0 || teeter) && nb < 3 && !blade_only && std::abs(rotor_speed) > 0 && samples.size() >= 2) {
     // With fewer than 3 blades (or a teeter, which only 2 blades have) the transformed system stays
     // periodic: Floquet analysis, when the azimuths cover the revolution evenly (else the first
     // sample, as below).
@@ -216,11 +219,16 @@ RotorModes multibladeModes(const RotorCoordinates& c, const MbcLayout& layout, c
       even = even && std::abs(samples[k].azimuth - samples[0].azimuth - 2 * std::numbers::pi * double(k) / double(samples.size())) < 1e-6;
     if (even) return floquetModes(c, samples);
   }
-  if ((nb > 0 || teeter) && nb < 3 && !by_participation)
-    return parkedRotorModes(c, samples.front());  // parked (or uneven azimuths): the first model, fixed-frame names
+  // Parked (or uneven azimuths): the first model, fixed-frame names; a single blade (a blade-only deck)
+  // has no pattern across blades to name, its modes take its coordinates' names below.
+  if ((nb > 1 || teeter) && nb < 3 && !by_participation) return parkedRotorModes(c, samples.front());
   if (nb < 3) {
     // No transform: with fewer than 3 blades the transformed system stays periodic.
     out.A = samples.front().A;
+    if (blade_only) {
+      for (std::size_t k = 1; k < samples.size(); ++k) out.A += samples[k].A;
+      out.A /= static_cast<double>(samples.size());
+    }
     for (int i = 0; i < n; ++i) coords[i].group = groupOf(i);
     out.coordinates = c.names;
   } else {

@@ -57,7 +57,11 @@ void run(const ModesOptions& opt) {
     header["rotor_speed_rpm"] = lin.rotor_speed * 30 / 3.141592653589793;
     header["azimuths"] = opt.azimuths;
     header["multiblade"] = bladeCount(m) >= 3;
-    header["floquet"] = bladeCount(m) < 3;  // fewer blades, turning: modal/floquet.hpp
+    // Fewer blades, turning: modal/floquet.hpp; a single blade without fixed-frame coordinates (a
+    // blade-only deck) needs no transform.
+    bool fixed_frame = false;
+    for (int i : m.activeDofs()) fixed_frame = fixed_frame || m.dofs[i].blade < 0;
+    header["floquet"] = bladeCount(m) < 3 && (bladeCount(m) != 1 || fixed_frame);
     printModes(r.modes, r.coordinates, opt.format, header);
     return;
   }

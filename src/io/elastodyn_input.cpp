@@ -80,8 +80,8 @@ ElastoDynInitialConditions readInitialConditions(const OpenFastFile& f) {
 ElastoDynConfiguration readConfiguration(const OpenFastFile& f) {
   ElastoDynConfiguration c;
   c.NumBl = f.getInt("NumBl");
-  if (c.NumBl < 2 || c.NumBl > 3)
-    throw InputError(f.where("NumBl", "must be 2 or 3 (is " + std::to_string(c.NumBl) + ")"));
+  if (c.NumBl < 1 || c.NumBl > 3)
+    throw InputError(f.where("NumBl", "must be 1, 2 or 3 (is " + std::to_string(c.NumBl) + ")"));
   c.TipRad = f.getDouble("TipRad");
   c.HubRad = f.getDouble("HubRad");
   requireNonnegative(f, "HubRad", c.HubRad);

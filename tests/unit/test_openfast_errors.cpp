@@ -197,11 +197,11 @@ TEST_F(BadInput, TeeterOnThreeBladesIsRefused) {
                 "3); set TeetDOF = False)");
 }
 
-TEST_F(BadInput, OneOrFourBladesAreAnInputError) {
-  edit(kEd, "          3   NumBl", "          1   NumBl");
-  EXPECT_EQ(readError(), path(kEd) + ":44: NumBl: must be 2 or 3 (is 1)");
-  edit(kEd, "          1   NumBl", "          4   NumBl");
-  EXPECT_EQ(readError(), path(kEd) + ":44: NumBl: must be 2 or 3 (is 4)");
+TEST_F(BadInput, NoOrFourBladesAreAnInputError) {
+  edit(kEd, "          3   NumBl", "          0   NumBl");
+  EXPECT_EQ(readError(), path(kEd) + ":44: NumBl: must be 1, 2 or 3 (is 0)");
+  edit(kEd, "          0   NumBl", "          4   NumBl");
+  EXPECT_EQ(readError(), path(kEd) + ":44: NumBl: must be 1, 2 or 3 (is 4)");
 }
 
 // A 2-bladed rotor needs the ROTOR-TEETER section, with ElastoDyn's ranges (ValidatePrimaryData).
