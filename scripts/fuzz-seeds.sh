@@ -31,4 +31,5 @@ add fuzz_compare cases/*/table9_1.csv cases/*/reference.csv fuzz/seeds/compare/*
 add fuzz_tracking fuzz/seeds/tracking/*
 for h in aerodyn ad_blade airfoil inflowwind; do cp -r "$out/fuzz_$h" "$out/fuzz_read_$h"; done
 cp -r "$out/fuzz_servodyn_aero" "$out/fuzz_read_servodyn"
+for h in case_yaml fst elastodyn ed_tower ed_blade; do cp -r "$out/fuzz_$h" "$out/fuzz_read_$h"; done
 for d in "$out"/*; do echo "$(basename "$d"): $(ls "$d" | wc -l) seeds"; done

@@ -1,0 +1,58 @@
+// libFuzzer harness for one reader alone, compiled once per reader (fuzz/CMakeLists.txt,
+// WHIRL_FUZZ_READER): the bytes are the file and only that reader (and what turns its result into
+// model data) runs: hundreds to thousands of inputs/s under ASan, where the harnesses of the model
+// behind each file (fuzz_case_yaml, fuzz_elastodyn, fuzz_aerodyn & co.) solve and linearize it at
+// 1–100 inputs/s — so that each parser gets its 10⁶ executions.
+//   1 fuzz_read_aerodyn     readAeroDyn (AeroDyn v15 main file; named files are not opened)
+//   2 fuzz_read_ad_blade    readAeroDynBlade
+//   3 fuzz_read_airfoil     readAirfoil, then airfoilPolar (the polar AeroDyn uses)
+//   4 fuzz_read_inflowwind  readInflowWind
+//   5 fuzz_read_servodyn    readServoDyn, then generatorTorqueLaw
+//   6 fuzz_read_case_yaml   readCase (the YAML case and the model it builds, no operating point)
+//   7 fuzz_read_fst         readFst
+//   8 fuzz_read_elastodyn   readElastoDyn (the tower and blade files it names do not exist: the keys
+//                           before them are what is read)
+//   9 fuzz_read_ed_tower    readElastoDynTower
+//  10 fuzz_read_ed_blade    readElastoDynBlade
+#include "fuzz/fuzz_support.hpp"
+#include "src/io/aerodyn_blade_input.hpp"
+#include "src/io/aerodyn_input.hpp"
+#include "src/io/airfoil_input.hpp"
+#include "src/io/case_file.hpp"
+#include "src/io/elastodyn_blade.hpp"
+#include "src/io/elastodyn_input.hpp"
+#include "src/io/elastodyn_tower.hpp"
+#include "src/io/fst_input.hpp"
+#include "src/io/inflowwind_input.hpp"
+#include "src/io/servodyn_input.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  const std::string path = whirl::fuzz::writeInput("fuzz_aero.dat", data, size);
+  whirl::fuzz::expectOnlyInputErrors([&] {
+    namespace io = whirl::io;
+#if WHIRL_FUZZ_READER == 1
+    (void)io::readAeroDyn(path);
+#elif WHIRL_FUZZ_READER == 2
+    (void)io::readAeroDynBlade(path);
+#elif WHIRL_FUZZ_READER == 3
+    (void)io::airfoilPolar(io::readAirfoil(path), true);
+#elif WHIRL_FUZZ_READER == 4
+    (void)io::readInflowWind(path);
+#elif WHIRL_FUZZ_READER == 5
+    (void)io::generatorTorqueLaw(io::readServoDyn(path));
+#elif WHIRL_FUZZ_READER == 6
+    (void)whirl::readCase(path);
+#elif WHIRL_FUZZ_READER == 7
+    (void)io::readFst(path);
+#elif WHIRL_FUZZ_READER == 8
+    (void)io::readElastoDyn(path);
+#elif WHIRL_FUZZ_READER == 9
+    (void)io::readElastoDynTower(path);
+#elif WHIRL_FUZZ_READER == 10
+    (void)io::readElastoDynBlade(path);
+#else
+#error "WHIRL_FUZZ_READER must be 1 to 10"
+#endif
+  });
+  return 0;
+}
