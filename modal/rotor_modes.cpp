@@ -49,9 +49,13 @@ void nameRotorMode(Mode& mode, const std::vector<NamingCoordinate>& coords, cons
   // is their own zero pair, split by weak couplings however fast it turns out (SWRT at 188 rpm: free
   // yaw and free azimuth, 95 % yaw, 0.0086 Hz, damping −0.26, the same for 12, 36 and 72 azimuths):
   // naming it after a group with a share of 5e-6 would give a confident wrong name.
+  // Likewise a mode an azimuth carries almost alone: the parked, unbraked rotor turning as a whole
+  // (AWT-27 Test02 in 12 m/s: 100 % generator azimuth at 0.083 Hz, held by the weight of its teetered
+  // rotor and the aerodynamics), not a vibration of the group with a share of 1e-6.
   double next = 0;
   for (const auto& [g, v] : share) next = std::max(next, v);
   if (share.empty() || ((mode.freq_hz < kRigidAzimuthHz || mode.damped_freq_hz == 0) && az > 0.5) ||
+      (az > 0.5 && next < kHeldAloneShare * az) ||
       (hd > 0.5 && (mode.freq_hz < kRigidAzimuthHz || mode.damped_freq_hz == 0 || next < kHeldAloneShare * hd))) {
     mode.rigid_body = true;
     share = rigid_share;

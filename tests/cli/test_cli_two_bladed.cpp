@@ -10,6 +10,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include <cmath>
 #include <map>
 #include <set>
@@ -84,6 +86,25 @@ TEST(TwoBladed, ParkedFreeTeeterSaysHowToHoldIt) {
   EXPECT_THAT(r.err, HasSubstr("hold it with --set TeetDOF=False"));
   const auto held = test::whirl("modes " + deck + " --set TeetDOF=False --format csv");
   EXPECT_EQ(held.code, 0) << held.err;
+}
+
+// As shipped (AeroDyn in 12 m/s, Thevenin induction generator, no brake), the parked AWT-27 of Test02
+// finds an equilibrium; its slow mode is the whole rotor turning on the shaft (100 % generator azimuth)
+// and is named so, not after a blade group with a share of 1e-6 ("edge 1 cos" before).
+TEST(TwoBladed, ParkedUnbrakedRotorTurningIsRigidBody) {
+  const auto r = test::whirl("modes tests/data/openfast/decks/certtest/Test02.fst --rpm 0 --format json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  bool found = false;
+  for (const auto& m : j["modes"]) {
+    if (m["freq_hz"].get<double>() > 0.5) continue;
+    EXPECT_NE(m["name"], "edge 1 cos");
+    if (m["name"] == "generator azimuth (rigid body)") {
+      found = true;
+      EXPECT_GT(m["participation"]["generator azimuth"].get<double>(), 0.99);
+    }
+  }
+  EXPECT_TRUE(found) << r.out;
 }
 
 }  // namespace
