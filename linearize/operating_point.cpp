@@ -169,16 +169,28 @@ OperatingPoint solveOperatingPoint(const Model& m, const OperatingPoint& start, 
   JacobianWorkspace& jw = lw.jw;
   VecX e(m.ndof());
   const int ns = static_cast<int>(op.solved.size());
+  // Every residual records the blade elements, so that the last one, at the solution, is the record
+  // (no evaluation again at the end); `fresh`: e and the record are those of op.q.
+  AeroRecord* record = m.aero.active() ? &op.aero : nullptr;
+  bool fresh = true;
   auto solvedResidual = [&]() {
-    residual(m, ws, op.q, op.qd, op.qdd, op.u, e);
+    residual(m, ws, op.q, op.qd, op.qdd, op.u, e, nullptr, record);
     VecX es(ns);
     for (int k = 0; k < ns; ++k) es(k) = e(op.solved[k]);
     return es;
   };
+  double cold_scale = -1;
+  if (!(opt.load_scale > 0) && opt.scale_from) {
+    const OperatingPoint& c = *opt.scale_from;
+    residual(m, ws, c.q, c.qd, c.qdd, c.u, e);
+    cold_scale = 0;
+    for (int i : op.solved) cold_scale = std::max(cold_scale, std::abs(e(i)));
+  }
   VecX es = solvedResidual();
   if (!e.allFinite()) throw ComputeError("operating point: the residual is not finite (NaN in the model or inputs)");
   // Load scale: the residual at the undeflected start, or the gravity/centrifugal loads it holds.
-  const double scale = opt.load_scale > 0 ? opt.load_scale : std::max(1.0, es.lpNorm<Eigen::Infinity>());
+  double scale = opt.load_scale;
+  if (!(scale > 0)) scale = std::max(1.0, cold_scale >= 0 ? cold_scale : es.lpNorm<Eigen::Infinity>());
   op.load_scale = scale;
   op.iterations = 0;
   const double target = opt.tolerance * scale;
@@ -186,22 +198,27 @@ OperatingPoint solveOperatingPoint(const Model& m, const OperatingPoint& start, 
   // loads seen on each solved coordinate over the iterations.
   VecX load_seen = es.cwiseAbs();
   MatX K_first;
-  if (opt.chord && ns > 0 && es.lpNorm<Eigen::Infinity>() > target) {
+  if ((opt.chord || opt.chord_matrix) && ns > 0 && es.lpNorm<Eigen::Infinity>() > target) {
     // Chord steps are a residual and a back-substitution each, a fifth of a Newton step (which
     // needs the AD stiffness); a step that gains less than 4× is undone and Newton goes on.
-    const MatX Kc = chordMatrix(*opt.chord, op.solved);
-    if (Kc.size() > 0) {
-      const Eigen::CompleteOrthogonalDecomposition<MatX> cod(Kc);
+    MatX Kc = opt.chord ? chordMatrix(*opt.chord, op.solved) : *opt.chord_matrix;
+    if (Kc.rows() == ns && Kc.cols() == ns) {
+      Eigen::CompleteOrthogonalDecomposition<MatX> cod(Kc);
       double prev = es.lpNorm<Eigen::Infinity>();
       while (op.iterations < 8 && prev > target) {
+        if (op.iterations > 0) cod.compute(Kc);
         const VecX dq = cod.solve(es);
         for (int k = 0; k < ns; ++k) op.q(op.solved[k]) += dq(k);
         const VecX next = solvedResidual();
         const double now = next.lpNorm<Eigen::Infinity>();
         if (!(now < 0.25 * prev)) {
           for (int k = 0; k < ns; ++k) op.q(op.solved[k]) -= dq(k);
+          fresh = false;
           break;
         }
+        // Broyden's update (Broyden 1965): the matrix that maps this step onto the residual's change,
+        // Kc dq = es − next, nearest the last one; as Kc dq = es, the correction is −next dqᵀ / dqᵀdq.
+        Kc -= next * dq.transpose() / dq.squaredNorm();
         es = next;
         prev = now;
         ++op.iterations;
@@ -228,8 +245,7 @@ OperatingPoint solveOperatingPoint(const Model& m, const OperatingPoint& start, 
           again.chord = nullptr;
           again.held = &held;
           const OperatingPoint h = solveOperatingPoint(m, start, again, lw);
-          residual(m, ws, h.q, h.qd, h.qdd, h.u, e);
-          load = fmt::format("{:.4g}", e(d));
+          load = fmt::format("{:.4g}", h.e(d));
         } catch (const ComputeError&) {
         }
         const std::string unit = loadUnit(m, d);
@@ -246,6 +262,7 @@ OperatingPoint solveOperatingPoint(const Model& m, const OperatingPoint& start, 
     MatX K(ns, ns);
     for (int r = 0; r < ns; ++r) K.row(r) = -J.row(op.solved[r]);
     if (K_first.size() == 0) K_first = K;
+    if (opt.newton_matrix) *opt.newton_matrix = K;
     // Coordinates without stiffness are held above; a singular K left (a rigid-body motion the rule
     // does not catch, e.g. with a spring of zero stiffness elsewhere in the chain) is fine as long as
     // nothing pushes along it. Minimum-norm step; refuse a load in the null space.
@@ -265,13 +282,15 @@ OperatingPoint solveOperatingPoint(const Model& m, const OperatingPoint& start, 
     for (int k = 0; k < ns; ++k) op.q(op.solved[k]) += dq(k);
     ++op.iterations;
     es = solvedResidual();
+    fresh = true;
     if (!es.allFinite()) throw ComputeError("operating point: Newton diverged (residual not finite)");
     load_seen = load_seen.cwiseMax(es.cwiseAbs());
     if (dq.lpNorm<Eigen::Infinity>() < 1e-14 * (1.0 + op.q.lpNorm<Eigen::Infinity>())) break;
   }
   op.residual_norm = es.norm();
-  op.aero = AeroRecord{};
-  residual(m, ws, op.q, op.qd, op.qdd, op.u, e, nullptr, m.aero.active() ? &op.aero : nullptr);
+  if (!fresh) residual(m, ws, op.q, op.qd, op.qdd, op.u, e, nullptr, record);
+  if (!record) op.aero = AeroRecord{};
+  op.e = e;
   op.inflow = op.aero.inflow();
   op.held_load.resize(static_cast<Eigen::Index>(op.held.size()));
   for (size_t k = 0; k < op.held.size(); ++k) op.held_load(static_cast<Eigen::Index>(k)) = e(op.held[k]);

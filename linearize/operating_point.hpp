@@ -32,6 +32,7 @@ struct OperatingPoint {
   /// its induced velocities, which a frozen-wake linearization holds fixed. Empty without aerodynamics.
   AeroRecord aero;
   AeroInflow inflow;
+  VecX e;  ///< the residual at the solution, every coordinate (dim ndof; rotating and held ones too) [N, N m]
 };
 
 struct EquilibriumOptions {
@@ -41,9 +42,19 @@ struct EquilibriumOptions {
   /// as the Newton matrix (chord iterations, no Jacobian) while the residual falls at least 4× per
   /// step; full Newton takes over otherwise. Must outlive the call.
   const LinearModel* chord = nullptr;
+  /// As `chord`, the Newton matrix itself: K on the solved coordinates in their order (a solve of the
+  /// same model at a nearby condition, `newton_matrix`). Used when `chord` is null. Must outlive the call.
+  const MatX* chord_matrix = nullptr;
+  /// If not null: receives the last Newton matrix (K on the solved coordinates), untouched when the
+  /// solve took no Newton step.
+  MatX* newton_matrix = nullptr;
   /// The tolerance's reference [N, N m]; 0: max(1, ‖e_solved‖∞ at the start). A warm start (a
   /// neighbouring point's equilibrium) passes the scale of the cold start it continues.
   double load_scale = 0;
+  /// With load_scale 0: the point whose residual sets the reference instead of the start's — the cold
+  /// start (initialPoint) that a warm start from a neighbouring condition stands in for, so that the
+  /// tolerance is the cold start's. Must outlive the call.
+  const OperatingPoint* scale_from = nullptr;
   /// The unrestrained coordinates, decided by an earlier solve of the same model at a neighbouring
   /// point (OperatingPoint::held of a periodic sweep's first azimuth), so that every azimuth holds
   /// the same ones and the decision (one structural Jacobian) is made once. Null: decided here

@@ -51,8 +51,14 @@ double tipDeflection(const Model& m, const VecX& q) {
 class TorqueBalance {
  public:
   TorqueBalance(const Model& m, double wind, const TrimOptions& opt)
-      : m_(m), wind_(wind), opt_(opt), lw_(m), guess_(opt.azimuths), e_(m.ndof()), y_(m.noutput()) {
+      : m_(m), wind_(wind), opt_(opt), lw_(m), guess_(opt.azimuths), y_(m.noutput()) {
     tower_ = m.findOutput("TTDspFA").value_or(-1);
+  }
+  /// Starts from a neighbouring wind speed's equilibria (TrimGuess::q, stiffness).
+  TorqueBalance(const Model& m, double wind, const TrimGuess& g, const TrimOptions& opt) : TorqueBalance(m, wind, opt) {
+    if (g.q.size() != guess_.size() || g.stiffness.size() != stiffness_.size()) return;
+    guess_ = g.q;
+    stiffness_ = g.stiffness;
   }
 
   Balance operator()(double omega, double pitch) {
@@ -63,6 +69,9 @@ class TorqueBalance {
   }
 
   int evaluations = 0;
+  /// The last evaluation's equilibria (all coordinates) and Newton matrices, per azimuth.
+  const std::vector<VecX>& equilibria() const { return guess_; }
+  const std::vector<MatX>& stiffness() const { return stiffness_; }
 
  private:
   Balance evaluate(double omega, double pitch) {
@@ -77,19 +86,23 @@ class TorqueBalance {
       c.collective_pitch = pitch;
       c.azimuth = 2 * std::numbers::pi * k / (blades * opt_.azimuths);
       OperatingPoint start = initialPoint(m_, c);
-      // Warm start: the previous evaluation's deflections at this azimuth.
+      // Warm start: the previous evaluation's deflections at this azimuth, and its Newton matrix for
+      // chord steps (the stiffness barely changes between the trim's nearby rotor speeds or pitches).
       EquilibriumOptions eq;
+      eq.newton_matrix = &stiffness_[k];
+      const OperatingPoint cold = start;
       if (guess_[k].size() == start.q.size()) {
         for (int i : m_.activeDofs())
           if (!m_.dofs[i].rotating) start.q(i) = guess_[k](i);
-        eq.load_scale = scale_[k];  // the tolerance of the cold start this continues
+        eq.load_scale = scale_[k];  // the tolerance of the cold start this continues (0: not solved here yet)
+        eq.scale_from = &cold;
+        if (stiffness_[k].size() > 0) eq.chord_matrix = &stiffness_[k];
       }
       const OperatingPoint op = solveOperatingPoint(m_, start, eq, lw_);
       guess_[k] = op.q;
       scale_[k] = op.load_scale;
-      residual(m_, lw_.ws, op.q, op.qd, op.qdd, op.u, e_);
       const double w = 1.0 / opt_.azimuths;
-      b.f += w * e_(az);
+      b.f += w * op.e(az);
       b.torque += w * op.aero.torque;
       b.thrust += w * op.aero.thrust;
       b.tip += w * tipDeflection(m_, op.q);
@@ -106,8 +119,9 @@ class TorqueBalance {
   const TrimOptions& opt_;
   LinearizeWorkspace lw_;
   std::vector<VecX> guess_;
+  std::vector<MatX> stiffness_ = std::vector<MatX>(static_cast<std::size_t>(opt_.azimuths));
   std::vector<double> scale_ = std::vector<double>(static_cast<std::size_t>(opt_.azimuths), 0.0);
-  VecX e_, y_;
+  VecX y_;
   int tower_ = -1;
   std::vector<std::tuple<double, double, Balance>> done_;
 };
@@ -118,7 +132,8 @@ void requireSteadyModel(const Model& m, const std::string& at) {
   if (m.roles.azimuth.empty()) throw InputError(at + "the model has no rotating coordinate");
 }
 
-SteadyState stateOf(const Model& m, const OperatingCondition& c, const Balance& b, int evaluations) {
+SteadyState stateOf(const Model& m, const OperatingCondition& c, TorqueBalance& balance) {
+  const Balance b = balance(c.rotor_speed, *c.collective_pitch);
   SteadyState out;
   out.condition = c;
   out.aero_torque = b.torque;
@@ -126,7 +141,9 @@ SteadyState stateOf(const Model& m, const OperatingCondition& c, const Balance& 
   out.imbalance = b.f;
   out.tip_deflection = b.tip;
   out.tower_top_fa = b.tower;
-  out.evaluations = evaluations;
+  out.evaluations = balance.evaluations;
+  out.azimuth_q = balance.equilibria();
+  out.azimuth_stiffness = balance.stiffness();
   if (m.generator.active()) {
     out.generator_speed = gearRatio(m, m.roles.azimuth.front()) * c.rotor_speed;
     out.generator_torque = generatorTorque(m.generator, out.generator_speed);
@@ -144,8 +161,7 @@ SteadyState steadyState(const Model& m, const OperatingCondition& c, const TrimO
   TorqueBalance balance(m, *c.wind_speed, opt);
   OperatingCondition cp = c;
   cp.collective_pitch = c.collective_pitch.value_or(opt.min_pitch);
-  const Balance b = balance(cp.rotor_speed, *cp.collective_pitch);
-  return stateOf(m, cp, b, balance.evaluations);
+  return stateOf(m, cp, balance);
 }
 
 namespace {
@@ -202,7 +218,7 @@ SteadyState trimAtWindSpeed(const Model& m, double wind, const TrimGuess& guess,
   const double rated = law.rated_speed / gear;
   const double scale = std::max(1.0, gear * law.rated_torque);
   const double ftol = opt.tolerance * scale;
-  TorqueBalance balance(m, wind, opt);
+  TorqueBalance balance(m, wind, guess, opt);
 
   double omega = rated, pitch = opt.min_pitch;
   bool above = false;
@@ -221,14 +237,7 @@ SteadyState trimAtWindSpeed(const Model& m, double wind, const TrimGuess& guess,
     const BrentResult r = brent(f, lo, hi, flo, fhi, ftol, 1e-10, 100);
     if (!r.converged) throw ComputeError(at + "the rotor-speed trim did not converge");
     omega = r.x;
-    OperatingCondition c;
-    c.wind_speed = wind;
-    c.rotor_speed = omega;
-    c.collective_pitch = pitch;
-    return stateOf(m, c, balance(omega, pitch), balance.evaluations);
-  }
-  const Balance at_rated = balance(rated, opt.min_pitch);
-  if (at_rated.f > 0) {
+  } else if (const Balance at_rated = balance(rated, opt.min_pitch); at_rated.f > 0) {
     // Above rated: pitch to feather until the excess torque is gone.
     auto f = [&](double p) { return balance(rated, p).f; };
     auto top = [&](double p) {
@@ -270,8 +279,7 @@ SteadyState trimAtWindSpeed(const Model& m, double wind, const TrimGuess& guess,
   c.wind_speed = wind;
   c.rotor_speed = omega;
   c.collective_pitch = pitch;
-  const Balance fin = balance(omega, pitch);
-  SteadyState out = stateOf(m, c, fin, balance.evaluations);
+  SteadyState out = stateOf(m, c, balance);
   out.above_rated = above;
   return out;
 }
@@ -293,6 +301,8 @@ std::vector<SteadyState> trimSchedule(const Model& m, const std::vector<double>&
       const double pw = *p.condition.wind_speed;
       g.rotor_speed = p.condition.rotor_speed / pw * w;  // the tip-speed ratio held
       g.pitch = *p.condition.collective_pitch;
+      g.q = p.azimuth_q;
+      g.stiffness = p.azimuth_stiffness;
       if (n >= 2 && out[n - 2].above_rated && p.above_rated) {
         const SteadyState& pp = out[n - 2];
         const double dw = pw - *pp.condition.wind_speed;

@@ -40,6 +40,10 @@ struct SteadyState {
   double tip_deflection = 0;     ///< blade 1 tip, out of the (coned) rotor plane, downwind positive [m]
   double tower_top_fa = 0;       ///< tower-top displacement downwind (output TTDspFA) [m], 0 without it
   int evaluations = 0;           ///< torque evaluations (each: `azimuths` equilibria)
+  /// The equilibria at the azimuths k·2π/(B n) of the last evaluation (all coordinates), and the last
+  /// Newton matrix of each (K on its solved coordinates): warm starts for a neighbouring wind speed.
+  std::vector<VecX> azimuth_q;
+  std::vector<MatX> azimuth_stiffness;
 };
 
 /// The steady state at a given condition (wind speed, rotor speed, pitch; no trim).
@@ -57,6 +61,11 @@ SteadyState trimAtWindSpeed(const Model& model, double wind_speed, const TrimOpt
 struct TrimGuess {
   double rotor_speed = 0;  ///< [rad/s], used below rated
   double pitch = 0;        ///< [rad], used above rated
+  /// The neighbour's equilibria and Newton matrices (SteadyState::azimuth_q, azimuth_stiffness): each
+  /// equilibrium starts from the deflections there instead of the undeflected turbine, its tolerance
+  /// still that of the cold start. Empty: cold starts.
+  std::vector<VecX> q;
+  std::vector<MatX> stiffness;
 };
 
 /// As above, the search starting next to `guess`. The result equals the unguessed trim to the trim's

@@ -258,9 +258,10 @@ namespace {
 
 // A root of f in [a, b] (fa, fb of opposite signs) from x0 inside, by secant steps that keep a
 // bracket and fall back to Brent on it when a step leaves it or stalls. Stops as brent() does.
+// `slope`: f' near x0 for the first step (0: a small step measures it); receives the last secant slope.
 template <class F>
-BrentResult secantFrom(F&& f, double a, double b, double fa, double fb, double x0, double ftol, double xtol,
-                       int maxit) {
+BrentResult secantFrom(F&& f, double a, double b, double fa, double fb, double x0, double ftol, double xtol, int maxit,
+                       double& slope) {
   int evals = 0;
   auto shrink = [&](double x, double fx) {
     if ((fx > 0) == (fa > 0)) a = x, fa = fx;
@@ -270,17 +271,23 @@ BrentResult secantFrom(F&& f, double a, double b, double fa, double fb, double x
   ++evals;
   if (std::abs(f0) < ftol) return {x0, f0, evals, true};
   shrink(x0, f0);
-  // The second point a small step towards the root side: the slope is then the local one.
-  const double h = std::max(1e-7, 1e-7 * std::abs(x0));
-  double x1 = (f0 > 0) == (fa > 0) ? x0 + h : x0 - h;
+  // The second point: a Newton step with the neighbouring solve's slope, or else a small step towards
+  // the root side, so that the slope is the local one.
+  double x1 = std::isfinite(slope) && slope != 0.0 ? x0 - f0 / slope : std::nan("");
+  if (!(x1 > a && x1 < b)) {
+    const double h = std::max(1e-7, 1e-7 * std::abs(x0));
+    x1 = (f0 > 0) == (fa > 0) ? x0 + h : x0 - h;
+  }
   if (!(x1 > a && x1 < b)) x1 = 0.5 * (a + b);
   double f1 = f(x1);
   ++evals;
+  slope = f1 != f0 ? (f1 - f0) / (x1 - x0) : 0.0;
   if (std::abs(f1) < ftol) return {x1, f1, evals, true};
   shrink(x1, f1);
   for (int it = 0; it < 6; ++it) {
     if (f1 == f0) break;
-    const double x2 = x1 - f1 * (x1 - x0) / (f1 - f0);
+    slope = (f1 - f0) / (x1 - x0);
+    const double x2 = x1 - f1 / slope;
     if (!(x2 > a && x2 < b)) break;
     const double f2 = f(x2);
     ++evals;
@@ -296,8 +303,8 @@ BrentResult secantFrom(F&& f, double a, double b, double fa, double fb, double x
 
 }  // namespace
 
-BemSolution solveInflow(const BemStation& s, double Vx, double Vy, const BemOptions& o,
-                        std::optional<double> phi_hint) {
+BemSolution solveInflow(const BemStation& s, double Vx, double Vy, const BemOptions& o, std::optional<double> phi_hint,
+                        double slope_hint) {
   checkStation(s);
   if (!std::isfinite(Vx) || !std::isfinite(Vy))
     throw ComputeError("BEM at r = " + num(s.r) + " m: non-finite velocity (Vx = " + num(Vx) + " m/s, Vy = " +
@@ -352,9 +359,12 @@ BemSolution solveInflow(const BemStation& s, double Vx, double Vy, const BemOpti
         found = true;
       } else if ((f1 >= 0) != (f2 >= 0)) {
         auto Rp = [&](double p) { return R(p).residual; };
-        const BrentResult b = phi_hint && *phi_hint > lo && *phi_hint < hi
-                                  ? secantFrom(Rp, lo, hi, f1, f2, *phi_hint, o.tolerance, o.phi_tolerance, o.max_iter)
-                                  : brent(Rp, lo, hi, f1, f2, o.tolerance, o.phi_tolerance, o.max_iter);
+        const bool from_hint = phi_hint && *phi_hint > lo && *phi_hint < hi;
+        double slope = slope_hint;
+        const BrentResult b = from_hint ? secantFrom(Rp, lo, hi, f1, f2, *phi_hint, o.tolerance, o.phi_tolerance,
+                                                     o.max_iter, slope)
+                                        : brent(Rp, lo, hi, f1, f2, o.tolerance, o.phi_tolerance, o.max_iter);
+        out.slope = from_hint ? slope : 0.0;
         out.iterations += b.evals;
         if (!b.converged)
           throw ComputeError("BEM at r = " + num(s.r) + " m, Vx = " + num(Vx) + " m/s, Vy = " + num(Vy) +

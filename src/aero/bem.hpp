@@ -104,6 +104,7 @@ struct BemSolution {
   double ax_ind_vel = 0;   ///< induced velocity along x, −Vx·a (what frozen wake holds, AeroDyn AxInd_op) [m/s]
   double tan_ind_vel = 0;  ///< induced velocity along y, Vy·a' (AeroDyn TnInd_op) [m/s]
   int iterations = 0;      ///< residual evaluations in the root finder (0 for the special cases)
+  double slope = 0;        ///< ∂R/∂φ of the secant search's last step (0 without one): a next solve's slope_hint
   int bracket = -1;        ///< which bracket held the root (0-based, AeroDyn's order), −1 for special cases
   bool valid = true;       ///< false only with geometric_fallback when no solution exists
 };
@@ -155,9 +156,11 @@ T bemResidual(const BemStation& s, const T& phi, const T& Vx, const T& Vy, const
 /// iterate of an equilibrium): when it lies inside the bracket AeroDyn's search selects, the root is
 /// searched from it by safeguarded secant steps inside that bracket (a few residuals instead of a
 /// dozen); it is the same root as Brent's wherever the bracket holds one root, and equal to it within
-/// the tolerances. The brackets are selected as without a hint.
+/// the tolerances. The brackets are selected as without a hint. `slope_hint`: ∂R/∂φ near the hint
+/// (BemSolution::slope of that solve; 0: unknown) takes the first step, instead of a small step that
+/// measures the slope.
 BemSolution solveInflow(const BemStation& s, double Vx, double Vy, const BemOptions& o,
-                        std::optional<double> phi_hint = std::nullopt);
+                        std::optional<double> phi_hint = std::nullopt, double slope_hint = 0.0);
 
 /// Inflow angle as an implicit function of (Vx, Vy, θ): phi0 must solve R at the values of the inputs.
 /// Returns phi0 − R(phi0; Vx, Vy, θ) / ∂R/∂φ(phi0) with ∂R/∂φ in double, so the value is phi0 (to the

@@ -34,7 +34,10 @@ void addAeroLoads(const Model& m, Workspace<TK>& ws, const VecXT<TK>& q, const V
   // AD passes with the induction frozen chain each blade's preaccumulated derivatives
   // (aero_blade_jet.hxx) instead of evaluating its elements in the AD scalar.
   const bool jet_pass = std::is_same_v<T, ADChunk> && frozen && !record && !totals;
-  if (record) *record = AeroRecord{};
+  if (record) {  // keeps the element vector's storage: an equilibrium solve records every residual
+    record->elements.clear();
+    record->thrust = record->torque = 0;
+  }
   const detail::RotorInflow<TK, T> inflow{hub.r, disk, speed, wind_dir, weight, frozen};
   int index0 = 0;  // first element of the blade, over all blades
   for (std::size_t bi = 0; bi < am.blades.size(); ++bi) {

@@ -122,9 +122,11 @@ SectionState<T> bemSection(const AeroModel& am, const AeroStation& st, const T& 
   if (!(root.valid && std::abs(root.vx - x) <= vscale && std::abs(root.vy - y) <= vscale &&
         std::abs(root.theta - b.theta) <= tol && std::abs(root.r - b.r) <= tol * b.r)) {
     // The element's last root starts the search: the equilibrium iterates move it a little.
-    const aero::BemSolution sol =
-        aero::solveInflow(b, x, y, am.bem, root.valid ? std::optional<double>(root.phi) : std::nullopt);
+    const aero::BemSolution sol = aero::solveInflow(b, x, y, am.bem,
+                                                    root.valid ? std::optional<double>(root.phi) : std::nullopt,
+                                                    root.valid ? root.search_slope : 0.0);
     root = BemRoot{true, x, y, b.theta, b.r, sol.phi, sol.a, sol.ap};
+    root.search_slope = sol.slope;
   }
   SectionState<T> s;
   const bool blended = valueOf(weight) < 1.0;

@@ -154,26 +154,32 @@ TEST(Bem, InductionWeightIsAeroDynsBlend) {
 TEST(Bem, HintedSolveFindsTheColdRootWithFewerEvaluations) {
   const auto& P = nrelPolars();
   const BemOptions o;
-  int cold_evals = 0, warm_evals = 0;
+  int cold_evals = 0, warm_evals = 0, sloped_evals = 0;
   for (int af : {2, 4, 6, 7})
     for (double Vx : {-6.0, 3.0, 8.0, 15.0})
       for (double Vy : {5.0, 20.0, 60.0}) {
         const BemStation s = station(10.0 + 6.0 * af, 4.0 - 0.3 * af, 0.05, P[af]);
         const BemSolution cold = solveInflow(s, Vx, Vy, o);
-        const double near = solveInflow(s, Vx * (1 + 1e-4), Vy * (1 - 1e-4), o).phi;
-        for (double hint : {near, cold.phi + 0.3, -cold.phi, 10.0}) {
-          const BemSolution warm = solveInflow(s, Vx, Vy, o, hint);
-          // |R| < 1e-13 at both; |dR/dφ| ≥ 0.1 here, so the roots agree to ~1e-12.
-          EXPECT_NEAR(warm.phi, cold.phi, 1e-11) << af << " " << Vx << " " << Vy << " hint " << hint;
-          EXPECT_EQ(warm.valid, cold.valid);
-          EXPECT_NEAR(warm.a, cold.a, 1e-10);
-          EXPECT_NEAR(warm.ap, cold.ap, 1e-10);
-        }
+        const BemSolution neighbour = solveInflow(s, Vx * (1 + 1e-4), Vy * (1 - 1e-4), o, cold.phi);
+        const double near = neighbour.phi;
+        for (double slope : {0.0, neighbour.slope, -neighbour.slope, 1e-300})
+          for (double hint : {near, cold.phi + 0.3, -cold.phi, 10.0}) {
+            const BemSolution warm = solveInflow(s, Vx, Vy, o, hint, slope);
+            // |R| < 1e-13 at both; |dR/dφ| ≥ 0.1 here, so the roots agree to ~1e-12.
+            EXPECT_NEAR(warm.phi, cold.phi, 1e-11)
+                << af << " " << Vx << " " << Vy << " hint " << hint << " slope " << slope;
+            EXPECT_EQ(warm.valid, cold.valid);
+            EXPECT_NEAR(warm.a, cold.a, 1e-10);
+            EXPECT_NEAR(warm.ap, cold.ap, 1e-10);
+          }
         cold_evals += cold.iterations;
         warm_evals += solveInflow(s, Vx, Vy, o, near).iterations;
+        sloped_evals += solveInflow(s, Vx, Vy, o, near, neighbour.slope).iterations;
       }
-  // Measured: 396 cold, 319 hinted (the hint 1e-4 away; equilibrium iterates are far closer).
+  // Measured: 396 cold, 319 hinted (the hint 1e-4 away; equilibrium iterates are far closer), fewer
+  // again with the neighbour's slope (its first step is then a Newton step, not a slope measurement).
   EXPECT_LT(warm_evals, cold_evals) << "cold " << cold_evals << ", hinted " << warm_evals;
+  EXPECT_LT(sloped_evals, warm_evals) << "hinted " << warm_evals << ", with the slope " << sloped_evals;
 }
 
 // ∂φ/∂(Vx, Vy, θ) of inflowAngle (implicit-function theorem) against central differences of solveInflow.
