@@ -18,6 +18,7 @@ ExportPoint exportOperatingPoint(const Model& m, const OperatingPoint& start, co
   } else {
     PeriodicOptions popt;
     popt.azimuths = opt.azimuths;
+    popt.deflections = opt.deflections;
     const PeriodicLinearization p = linearizePeriodic(m, start, popt);
     e.equilibrium = p.points.front();
     for (size_t k = 0; k < p.models.size(); ++k)

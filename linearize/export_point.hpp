@@ -32,6 +32,7 @@ struct ExportOptions {
   std::vector<std::string> inputs;   ///< keep these, in this order (empty = all)
   std::vector<std::string> outputs;  ///< keep these, in this order (empty = all)
   bool drop_azimuth = false;         ///< remove the azimuth displacement state (dropAzimuth)
+  const VecX* deflections = nullptr;  ///< a trim's equilibrium to start from (PeriodicOptions::deflections)
 };
 
 /// Solves the operating point of `model` from `start` (rates, pitch and inputs as set in the model) and

@@ -9,7 +9,9 @@ std::vector<ExportPoint> exportSweep(const Model& model, const std::vector<Sweep
   return sweepOperatingPoints<ExportPoint>(
       model, points,
       [&](const Model& m, const SweepPoint& sp, const OperatingPoint& start) {
-        ExportPoint p = exportOperatingPoint(m, start, opt);
+        ExportOptions o = opt;
+        if (sp.deflections.size() > 0) o.deflections = &sp.deflections;
+        ExportPoint p = exportOperatingPoint(m, start, o);
         if (sweep.check_point) sweep.check_point(m, {p.equilibrium}, sp);
         p.rpm = sp.rpm;
         p.wind_speed = sp.wind_speed;

@@ -48,6 +48,10 @@ PeriodicLinearization linearizePeriodic(const Model& m, const OperatingPoint& st
   if (opt.azimuths < 1) throw InputError("--azimuths: must be at least 1");
   p.rotor_speed = start.qd(p.azimuth_dof);
   OperatingPoint guess = start;
+  const bool warm = opt.deflections && opt.deflections->size() == start.q.size();
+  if (warm)
+    for (int i : m.activeDofs())
+      if (!m.dofs[i].rotating) guess.q(i) = (*opt.deflections)(i);
   const double psi0 = start.q(p.azimuth_dof);
   // A parked rotor is a time-invariant system at its azimuth: one linearization, whose multiblade
   // transform is exact (averaging the azimuth-dependent parked models would blur them).
@@ -57,6 +61,7 @@ PeriodicLinearization linearizePeriodic(const Model& m, const OperatingPoint& st
     const double psi = psi0 + 2 * std::numbers::pi * k / n;
     guess.q(p.azimuth_dof) = psi;
     EquilibriumOptions eq;
+    if (k == 0 && warm) eq.scale_from = &start;
     if (k > 0) {
       eq.chord = &p.models.back();  // the stiffness barely changes from one azimuth to the next
       eq.load_scale = p.points.front().load_scale;

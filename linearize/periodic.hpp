@@ -16,6 +16,9 @@ struct PeriodicOptions {
   int azimuths = 36;     ///< number of equally spaced azimuths over 2π
   int azimuth_dof = -1;  ///< the coordinate stepped; −1 = the first rotating coordinate
   LinearizeOptions linearize;  ///< of each azimuth's linearization
+  /// If not null (dim ndof): the first azimuth's equilibrium starts from these values of the
+  /// non-rotating coordinates (a trim's equilibrium), its tolerance still that of `start`.
+  const VecX* deflections = nullptr;
 };
 
 struct PeriodicLinearization {

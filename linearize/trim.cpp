@@ -288,6 +288,7 @@ SweepPoint sweepPointOf(const SteadyState& t) {
   const double rpm = t.condition.rotor_speed * 30 / std::numbers::pi;
   SweepPoint p = sweepPoint(rpm, t.condition.wind_speed, *t.condition.collective_pitch * 180 / std::numbers::pi);
   p.condition = t.condition;  // the trimmed values, not their round trip through rpm and degrees
+  if (!t.azimuth_q.empty()) p.deflections = t.azimuth_q.front();
   return p;
 }
 

@@ -11,6 +11,7 @@ CampbellPoint campbellPoint(const Model& m, const SweepPoint& point, const Opera
   PeriodicOptions popt;
   popt.azimuths = opt.azimuths;
   popt.linearize.inputs = false;  // modes only
+  if (point.deflections.size() > 0) popt.deflections = &point.deflections;
   const PeriodicLinearization p = linearizePeriodic(m, start, popt);
   std::vector<std::string> problems;
   if (opt.check_point) problems = opt.check_point(m, p.points, point);

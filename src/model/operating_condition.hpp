@@ -13,6 +13,8 @@
 #include <optional>
 #include <vector>
 
+#include "src/model/types.hpp"
+
 namespace whirl {
 
 struct Model;
@@ -63,6 +65,9 @@ struct SweepPoint {
   std::optional<double> wind_speed;  ///< wind speed as given [m/s] (a schedule's)
   std::optional<double> pitch_deg;   ///< collective pitch as given [deg] (a schedule's)
   OperatingCondition condition;      ///< rotor speed [rad/s], and whatever else is set explicitly
+  /// A trimmed point's equilibrium at azimuth 0 (all coordinates, dim ndof): where the point's first
+  /// equilibrium starts. Empty: from the undeflected turbine.
+  VecX deflections;
 };
 
 /// The point at `rpm` [rpm] (condition.rotor_speed = rpmToRadPerSec(rpm)) with a schedule's

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "linearize/operating_point.hpp"
+#include "linearize/periodic.hpp"
 #include "src/dynamics/residual.hpp"
 #include "tests/support/aero_rotor_model.hpp"
 
@@ -76,6 +77,31 @@ TEST(EquilibriumWarmStart, NeighbourStartKeepsTheColdToleranceAndFindsTheSameEqu
   // shows that the option is what keeps the cold tolerance.
   const OperatingPoint own = solveOperatingPoint(m, warmStart(cold9, at8));
   EXPECT_LT(own.load_scale, 0.5 * ref.load_scale);
+}
+
+// A periodic linearization whose first azimuth starts at a trim's equilibrium (PeriodicOptions::
+// deflections, what a trimmed sweep point carries) needs no iteration there, keeps the cold start's
+// tolerance and gives the cold start's linear models.
+TEST(EquilibriumWarmStart, PeriodicLinearizationFromATrimmedEquilibrium) {
+  const Model m = test::aeroRotorModel();
+  const OperatingPoint cold = coldStart(m, 9.0);
+  const OperatingPoint solved = solveOperatingPoint(m, cold);
+  PeriodicOptions opt;
+  opt.azimuths = 4;
+  const PeriodicLinearization ref = linearizePeriodic(m, cold, opt);
+  opt.deflections = &solved.q;
+  const PeriodicLinearization warm = linearizePeriodic(m, cold, opt);
+  EXPECT_GT(ref.points.front().iterations, 0);
+  EXPECT_EQ(warm.points.front().iterations, 0);
+  EXPECT_NEAR(warm.points.front().load_scale, ref.points.front().load_scale, 1e-12 * ref.points.front().load_scale);
+  ASSERT_EQ(warm.models.size(), ref.models.size());
+  for (std::size_t k = 0; k < ref.models.size(); ++k) {
+    // Two equilibria within the solver's tolerance (1e-10 of the load scale): K and C agree to ~1e-9.
+    const double scale = ref.models[k].K.cwiseAbs().maxCoeff();
+    EXPECT_LT((warm.models[k].K - ref.models[k].K).cwiseAbs().maxCoeff(), 1e-8 * scale) << "azimuth " << k;
+    EXPECT_LT((warm.models[k].C - ref.models[k].C).cwiseAbs().maxCoeff(), 1e-8 * ref.models[k].C.cwiseAbs().maxCoeff())
+        << "azimuth " << k;
+  }
 }
 
 }  // namespace
