@@ -1,6 +1,8 @@
 #include "src/io/aero_deck.hpp"
 
+#include "src/io/aero_deck14.hpp"
 #include "src/io/aero_support.hpp"
+#include "src/io/airfoil14_input.hpp"
 #include "src/io/elastodyn_common.hpp"
 #include "src/io/refusals.hpp"
 #include "src/model/error.hpp"
@@ -8,7 +10,8 @@
 namespace whirl::io {
 namespace {
 
-std::vector<AirfoilInput> readAirfoils(const AeroDynInput& ad) {
+template <class Read>
+std::vector<AirfoilInput> readAirfoils(const AeroDynInput& ad, Read read) {
   std::vector<AirfoilInput> out;
   const std::string file = ad.source.path().string();
   for (std::size_t i = 0; i < ad.AFNames.size(); ++i) {
@@ -17,7 +20,7 @@ std::vector<AirfoilInput> readAirfoils(const AeroDynInput& ad) {
     if (!std::filesystem::is_regular_file(p, ec))
       throw InputError(where(file, ad.AFNames_lines[i], indexedKey("AFNames", static_cast<int>(i) + 1),
                              "file not found: " + p.string()));
-    out.push_back(readAirfoil(p, ad.InCol));
+    out.push_back(read(p));
   }
   return out;
 }
@@ -42,20 +45,45 @@ AeroDeckInput readAeroDeck(const FstInput& fst, OverrideSet* overrides) {
   const std::filesystem::path inflow_file = f.getExistingPath("InflowFile");
 
   AeroDeckInput deck;
-  deck.aerodyn = readAeroDyn(aero_file, aerodynEnvironment(fst), overrides);
-  requireSupported(deck.aerodyn);
-  deck.notes = steadySubstitutes(deck.aerodyn);
+  std::optional<AeroDyn14Input> v14;
+  if (fst.CompAero == 1) {
+    if (!OpenFastFile::read(aero_file).has("StallMod")) {
+      Refusals r(f);
+      r.addIf(true, "CompAero",
+              "AeroDisk (OpenFAST v4+): " + aero_file.filename().string() + " is not an AeroDyn v14 file (no StallMod)",
+              kAeroModules);
+      throwIfAny(r.take());
+    }
+    v14 = readAeroDyn14(aero_file, overrides);
+    deck.aerodyn = aerodynFromV14(*v14);
+    deck.notes = steadySubstitutes(*v14);
+  } else {
+    deck.aerodyn = readAeroDyn(aero_file, aerodynEnvironment(fst), overrides);
+    requireSupported(deck.aerodyn);
+    deck.notes = steadySubstitutes(deck.aerodyn);
+  }
   deck.inflow = readInflowWind(inflow_file, overrides);
   requireSupported(deck.inflow);
   for (std::string& n : steadySubstitutes(deck.inflow)) deck.notes.push_back(std::move(n));
 
   const AeroDynInput& ad = deck.aerodyn;
+  if (v14) {
+    deck.blades.assign(3, bladeFromV14(*v14));  // one element table serves every blade
+    deck.airfoils = readAirfoils(ad, [&](const std::filesystem::path& p) { return readAirfoil14(p, v14->UseCm); });
+    for (const AirfoilInput& af : deck.airfoils)
+      if (af.tables.size() > 1)
+        deck.notes.push_back(whirl::where(af.path.string(), af.tables.front().re_line, "table ID",
+                                          std::to_string(af.tables.size()) +
+                                              " tables: whirl uses the first, as AeroDyn v14 does with the table "
+                                              "locator FAST v8 gives it (MulTabLoc = 0)"));
+    return deck;
+  }
   for (std::size_t k = 0; k < ad.ADBlFile.size(); ++k) {
     const std::filesystem::path p = ad.source.getExistingPath(indexedKey("ADBlFile", static_cast<int>(k) + 1));
     deck.blades.push_back(readAeroDynBlade(p, overrides));
     checkAirfoilIds(ad, deck.blades.back());
   }
-  deck.airfoils = readAirfoils(ad);
+  deck.airfoils = readAirfoils(ad, [&](const std::filesystem::path& p) { return readAirfoil(p, ad.InCol); });
   return deck;
 }
 

@@ -19,9 +19,8 @@ std::string wakeModelName(int m) {
 
 std::vector<std::string> unsupportedAeroOptions(const FstInput& fst) {
   Refusals r(fst.source);
-  const std::string aero = "CompAero = 2 (AeroDyn v15)";
+  const std::string aero = kAeroModules;
   r.addIf(fst.CompAero == 0, "CompAero", "aerodynamics are off in this deck", aero);
-  r.addIf(fst.CompAero == 1, "CompAero", "AeroDyn v14 (OpenFAST v3) or AeroDisk (v4+)", aero);
   r.addIf(fst.CompAero == 3, "CompAero", "external loads (ExtLoads)", aero);
   r.addIf(fst.CompAero < 0 || fst.CompAero > 3, "CompAero", "unknown aerodynamics module", aero);
   const std::string inflow = "CompInflow = 1 (InflowWind)";

@@ -16,8 +16,12 @@
 
 namespace whirl::io {
 
-/// The .fst's aero switches: CompAero other than 2 (1 = AeroDyn14 / AeroDisk, 3 = ExtLoads, 0 = none),
-/// CompInflow other than 1 (0 = still air, 2 = external inflow).
+/// The aerodynamics modules whirl reads, as refusals name them.
+inline constexpr const char* kAeroModules = "CompAero = 1 with an AeroDyn v14 file, or 2 (AeroDyn v15)";
+
+/// The .fst's aero switches: CompAero other than 1 and 2 (3 = ExtLoads, 0 = none), CompInflow other than
+/// 1 (0 = still air, 2 = external inflow). CompAero = 1 is AeroDyn v14 up to OpenFAST v3 and AeroDisk
+/// from v4: readAeroDeck tells them apart by the file.
 std::vector<std::string> unsupportedAeroOptions(const FstInput& fst);
 
 /// AeroDyn options whirl does not model: the OLAF free-vortex wake (Wake_Mod = 3), buoyancy, cavitation

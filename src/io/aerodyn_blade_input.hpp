@@ -28,6 +28,11 @@ struct AeroDynBladeInput {
   std::vector<double> BlChord;   ///< chord (m), > 0
   std::vector<int> BlAFID;       ///< airfoil of each station, 1-based index into AeroDyn's AFNames list
   bool has_BlCrvAng = false;     ///< the file has a BlCrvAng column
+  /// AeroDyn v14 elements (readAeroDeck of a CompAero = 1 deck): BlSpn holds RNodes, the element centres
+  /// measured from the rotor centre (hub radius included), and each element carries its width DRNodes (m),
+  /// its loads being the centre values times the width (midpoint rule). Empty for v15 files, whose nodes
+  /// start at the blade root and carry trapezoid weights.
+  std::vector<double> element_width;
   std::vector<int> row_lines;    ///< file line of each station
 };
 

@@ -32,13 +32,6 @@ std::string oneOf(const OpenFastFile& f, const char* current, const char* legacy
   return has_current ? current : legacy;
 }
 
-/// A file name as AeroDyn resolves it: relative to the folder of `from`, backslashes read as '/'.
-std::filesystem::path resolve(const std::filesystem::path& from, std::string name) {
-  std::replace(name.begin(), name.end(), '\\', '/');
-  const std::filesystem::path p(name);
-  return (p.is_absolute() ? p : from.parent_path() / p).lexically_normal();
-}
-
 double envValue(const OpenFastFile& f, const char* key, double fallback, bool* defaulted = nullptr) {
   const std::optional<double> v = f.has(key) ? f.getDoubleOrDefault(key) : std::nullopt;
   if (defaulted) *defaulted = !v;
@@ -100,35 +93,13 @@ void readSkew(const OpenFastFile& f, AeroDynInput& a) {
     if (const std::optional<double> k = f.getDoubleOrDefault(factor)) a.SkewModFactor = *k;
 }
 
-/// The entry on line `line`, or nullptr.
-const OpenFastEntry* entryAt(const OpenFastFile& f, int line) {
-  for (const OpenFastEntry& e : f.entries())
-    if (e.line == line) return &e;
-  return nullptr;
-}
-
 /// AFNames: the first name on the key's line, the others alone on the next content lines.
 void readAirfoilNames(const OpenFastFile& f, const OpenFastLines& lines, AeroDynInput& a) {
   const int n = f.getInt("NumAFfiles");
   if (n < 1) throw InputError(f.where("NumAFfiles", "must be at least 1 (is " + std::to_string(n) + ")"));
-  const OpenFastEntry* first = f.find("AFNames");
-  if (!first) throw InputError(f.where("AFNames", "key not found in this file"));
-  a.AFNames.push_back(resolve(f.path(), f.getString("AFNames")));
-  a.AFNames_lines.push_back(first->line);
-  int at = first->line;
-  for (int k = 2; k <= n; ++k) {
-    const std::optional<int> next = lines.nextContentLine(at);
-    const std::vector<std::string> words = next ? splitWords(lines.line(*next)) : std::vector<std::string>{};
-    const OpenFastEntry* keyed = next ? entryAt(f, *next) : nullptr;  // e.g. "True  UseBlCm": the list ended
-    if (!next || words.empty() || parseFortranDouble(words.front()) || words.front().rfind("==", 0) == 0 ||
-        words.front().rfind("--", 0) == 0 || (keyed && toLower(keyed->key).rfind("afnames", 0) != 0))
-      throw InputError(f.where("NumAFfiles", "announces " + std::to_string(n) + " airfoil files, only " +
-                                                 std::to_string(k - 1) + " names follow AFNames (line " +
-                                                 std::to_string(first->line) + ")"));
-    a.AFNames.push_back(resolve(f.path(), unquoted(words.front())));
-    a.AFNames_lines.push_back(*next);
-    at = *next;
-  }
+  AirfoilNameList names = readAirfoilNameList(f, lines, "NumAFfiles", "AFNames", n);
+  a.AFNames = std::move(names.paths);
+  a.AFNames_lines = std::move(names.lines);
 }
 
 /// The tower table after NumTwrNds: a header row (a trailing '!' comment allowed), a unit row, NumTwrNds rows.

@@ -3,11 +3,14 @@
 /// Small helpers shared by the ElastoDyn readers: indexed keys such as `BlPitch(1..3)`, polynomial mode
 /// shapes, and sign checks that report "file:line: key: reason".
 #include <array>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "src/io/openfast_input.hpp"
+#include "src/io/openfast_lines.hpp"
 
 namespace whirl::io {
 
@@ -44,6 +47,21 @@ ModeShapeCoeffs readModeShape(const OpenFastFile& f, std::string_view base);
 void requirePositive(const OpenFastFile& f, std::string_view key, double value);
 /// InputError "file:line: key: must not be negative (is -1)" unless value >= 0.
 void requireNonnegative(const OpenFastFile& f, std::string_view key, double value);
+
+/// A file name as OpenFAST resolves it: relative to the folder of `from`, backslashes read as '/'.
+std::filesystem::path resolveInputPath(const std::filesystem::path& from, std::string name);
+
+/// Airfoil file names given over several lines (AeroDyn's `AFNames`, AeroDyn v14's `FoilNm`).
+struct AirfoilNameList {
+  std::vector<std::filesystem::path> paths;  ///< resolved against the folder of the file read
+  std::vector<int> lines;                    ///< file line of each name
+};
+
+/// `count` names: the first is the value of `list_key`, the others alone on the next content lines.
+/// InputError "file:line: count_key: announces N airfoil files, only K names follow list_key (line L)" when the
+/// list ends early (a number, a separator or another key where a name should be).
+AirfoilNameList readAirfoilNameList(const OpenFastFile& f, const OpenFastLines& lines, std::string_view count_key,
+                                    std::string_view list_key, int count);
 
 /// Shortest round-trip text of a number, for messages.
 std::string numberText(double v);

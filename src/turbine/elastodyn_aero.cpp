@@ -29,14 +29,18 @@ AeroBlade bladeElements(Builder& b, const BladeParts& blade, const io::AeroDynBl
   out.pitch_dof = blade.pitch;
   Body& body = b.model().bodies[blade.body];
   const int n = file.NumBlNds;
+  const bool v14 = !file.element_width.empty();  // element centres from the rotor centre, with widths
   double z = hub_radius;
   Vec3 previous = Vec3::Zero();
   for (int j = 0; j < n; ++j) {
-    const double span = file.BlSpn[j];
+    const double span = file.BlSpn[j] - (v14 ? hub_radius : 0.0);
     if (span > length * (1 + 1e-9) || span < 0)
-      throw InputError(file.source.path().string() + ":" + std::to_string(file.row_lines[j]) + ": BlSpn: " +
-                       std::to_string(span) + " m lies outside the blade (0 to TipRad − HubRad = " +
-                       std::to_string(length) + " m)");
+      throw InputError(
+          file.source.path().string() + ":" + std::to_string(file.row_lines[j]) +
+          (v14 ? ": RNodes: " + std::to_string(file.BlSpn[j]) + " m lies outside the blade (HubRad to TipRad = " +
+                     std::to_string(hub_radius) + " to " + std::to_string(hub_radius + length) + " m)"
+               : ": BlSpn: " + std::to_string(span) +
+                     " m lies outside the blade (0 to TipRad − HubRad = " + std::to_string(length) + " m)"));
     BodyPoint pt = beamPoint(blade.beam.props, blade.beam.shapes, b.opt.axial_shortening, std::min(span, length),
                              "aero " + std::to_string(j + 1));
     // AeroDyn's (x, y) offsets of the aerodynamic centre are body (y, z): aero_model.hpp.
@@ -53,8 +57,8 @@ AeroBlade bladeElements(Builder& b, const BladeParts& blade, const io::AeroDynBl
     st.chord = file.BlChord[j];
     st.twist = file.BlTwist[j] * deg;
     st.polar = file.BlAFID[j] - 1;
-    const double lo = j > 0 ? file.BlSpn[j - 1] : span, hi = j + 1 < n ? file.BlSpn[j + 1] : span;
-    st.weight = 0.5 * (hi - lo);
+    const double lo = j > 0 ? file.BlSpn[j - 1] : file.BlSpn[j], hi = j + 1 < n ? file.BlSpn[j + 1] : file.BlSpn[j];
+    st.weight = v14 ? file.element_width[j] : 0.5 * (hi - lo);
     out.stations.push_back(st);
   }
   return out;
@@ -84,8 +88,10 @@ void addAerodynamics(Builder& b, const DrivetrainParts& dt, const RotorParts& ro
   }
   am.hub_body = dt.hub;
   am.hub_radius = c.HubRad;
-  am.rotor_radius = (c.HubRad + deck.blades.front().BlSpn.back()) * std::cos(c.PreCone.front() * deg);
-  am.tip_radius = 0;
+  // AeroDyn v14's elements are strips whose outer edge is the tip (TipRad); v15's last node is the tip.
+  const bool v14 = !deck.blades.front().element_width.empty();
+  am.rotor_radius = (v14 ? c.TipRad : c.HubRad + deck.blades.front().BlSpn.back()) * std::cos(c.PreCone.front() * deg);
+  am.tip_radius = v14 ? c.TipRad : 0;
   for (const AeroBlade& bl : am.blades) am.tip_radius = std::max(am.tip_radius, bl.stations.back().z);
   const io::AeroDynInput& ad = deck.aerodyn;
   am.air_density = ad.AirDens;

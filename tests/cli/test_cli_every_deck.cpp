@@ -26,7 +26,12 @@ struct Deck {
 };
 
 // Reasons whirl does not support yet, as its messages say them (docs/decks.md).
-constexpr const char* kAeroDyn14 = "CompAero: 1 not supported by whirl (AeroDyn v14";
+// SWRT with its AeroDyn v14 file (Test16, 17: untwisted elements, the first of each airfoil's Reynolds
+// tables) turning at its 188 rpm in still air: Newton stalls on the flap of one blade. Parked and at
+// 94 rpm it converges, and so does the same rotor with the AeroDyn v15 file of Test15 at 188 rpm; the
+// cause is not found yet.
+constexpr const char* kSwrtV14StillAir =
+    "did not converge in 50 Newton iterations: residual -0.471515 on DOF 'blade 2 flap 1'";
 // AOC Test08 (fixed yaw error) turning: at the blade root the in-plane wind of the yaw error exceeds
 // the rotational speed (Vy < 0 at some azimuths) and BEM has no valid solution; AeroDyn's time
 // simulation falls back to no induction there, its linearization refuses the point, and so does whirl.
@@ -52,23 +57,23 @@ constexpr const char* kFastV7 = "this is a FAST v7 primary input file";
 const Deck kDecks[] = {
     {"IEA-3.4-130-RWT/IEA-3.4-130-RWT.fst", 11.63, nullptr, nullptr},
     {"certtest/FAST_v7/Test01.fst", 53.333, kFastV7, kFastV7},
-    {"certtest/Test01.fst", 53.333, kAeroDyn14, kTeeterParked},
+    {"certtest/Test01.fst", 53.333, nullptr, kTeeterParked},
     {"certtest/Test02.fst", 53.333, nullptr, kTeeterParked},
     {"certtest/Test03.fst", 53.333, kStillAirTeeter, kTeeterParked},
-    {"certtest/Test04.fst", 53.333, kAeroDyn14, kTeeterParked},
+    {"certtest/Test04.fst", 53.333, kTeeterParked, kTeeterParked},
     {"certtest/Test05.fst", 53.333, kStillAirTeeter, kTeeterParked},
-    {"certtest/Test06.fst", 64.14, kAeroDyn14, nullptr},
+    {"certtest/Test06.fst", 64.14, nullptr, nullptr},
     {"certtest/Test07.fst", 64.14, nullptr, nullptr},
     {"certtest/Test08.fst", 64.14, kNoBemSolution, nullptr},
-    {"certtest/Test09.fst", 71.9, kAeroDyn14, nullptr},
+    {"certtest/Test09.fst", 71.9, nullptr, nullptr},
     {"certtest/Test10.fst", 71.9, kNoActiveDof, kNoActiveDof},  // every DOF switched off
-    {"certtest/Test11.fst", 20, kAeroDyn14, nullptr},
+    {"certtest/Test11.fst", 20, nullptr, nullptr},
     {"certtest/Test12.fst", 20, nullptr, nullptr},
     {"certtest/Test13.fst", 20, nullptr, nullptr},
     {"certtest/Test14.fst", 20, nullptr, nullptr},
     {"certtest/Test15.fst", 188, nullptr, nullptr},
-    {"certtest/Test16.fst", 188, kAeroDyn14, nullptr},
-    {"certtest/Test17.fst", 188, kAeroDyn14, nullptr},
+    {"certtest/Test16.fst", 188, kSwrtV14StillAir, nullptr},
+    {"certtest/Test17.fst", 188, kSwrtV14StillAir, nullptr},
     {"certtest/Test18.fst", 12.1, nullptr, nullptr},
     {"certtest/Test26.fst", 12.1, kBeamDyn, kBeamDyn},
     {"toolbox-nrel5mw/5MW_Land_Lin_BladeOnly/Main.fst", 12.1, nullptr, nullptr},

@@ -60,14 +60,14 @@ TEST(AeroDeck, ModuleSwitchesRefused) {
     std::string from, to, message;
   } cases[] = {
       {"          2   CompAero", "          1   CompAero",
-       ":15: CompAero: 1 not supported by whirl (AeroDyn v14 (OpenFAST v3) or AeroDisk (v4+); whirl supports only "
-       "CompAero = 2 (AeroDyn v15))"},
+       ":15: CompAero: 1 not supported by whirl (AeroDisk (OpenFAST v4+): AeroDyn.dat is not an AeroDyn v14 file (no "
+       "StallMod); whirl supports only CompAero = 1 with an AeroDyn v14 file, or 2 (AeroDyn v15))"},
       {"          2   CompAero", "          3   CompAero",
-       ":15: CompAero: 3 not supported by whirl (external loads (ExtLoads); whirl supports only CompAero = 2 (AeroDyn "
-       "v15))"},
+       ":15: CompAero: 3 not supported by whirl (external loads (ExtLoads); whirl supports only CompAero = 1 with an "
+       "AeroDyn v14 file, or 2 (AeroDyn v15))"},
       {"          2   CompAero", "          0   CompAero",
-       ":15: CompAero: 0 not supported by whirl (aerodynamics are off in this deck; whirl supports only CompAero = 2 "
-       "(AeroDyn v15))"},
+       ":15: CompAero: 0 not supported by whirl (aerodynamics are off in this deck; whirl supports only CompAero = 1 "
+       "with an AeroDyn v14 file, or 2 (AeroDyn v15))"},
       {"          1   CompInflow", "          0   CompInflow",
        ":14: CompInflow: 0 not supported by whirl (still air; whirl supports only CompInflow = 1 (InflowWind))"},
       {"          1   CompInflow", "          2   CompInflow",
