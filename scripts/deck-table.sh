@@ -37,7 +37,10 @@ own RotSpeed, so Test01, 03 and 04 (53.3 rpm) run, and of Test02 and 05 (0 rpm) 
 aerodynamics (12 m/s) finds a parked equilibrium; the suite runs their Campbell sweeps from half the
 rated speed. AOC Test08 runs parked but is refused turning: at
 the blade root the in-plane wind of its yaw error exceeds the rotational speed and BEM has no valid
-solution there, a point OpenFAST's linearization refuses too.
+solution there, a point OpenFAST's linearization refuses too. UAE VI Test09 (30 deg yaw, 11 m/s) runs at
+its 71.9 rpm and is refused for the same reason parked and at half that speed. The decks with AeroDyn v14
+(`CompAero = 1`: Test01, 04, 06, 09, 11, 16, 17) run through its conversion to AeroDyn v15's elements
+and BEMT (README, *Aerodynamics*).
 
 HEAD
 echo "| deck | \`whirl modes DECK\` | \`whirl modes DECK --set CompAero=0\` (structure only) |"

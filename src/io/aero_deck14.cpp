@@ -17,6 +17,10 @@ AeroDynInput aerodynFromV14(const AeroDyn14Input& v14) {
   a.TanInd = v14.IndModel == "SWIRL";
   a.TipLoss = v14.TLModel == "PRANDTL";
   a.HubLoss = v14.HLModel == "PRANDTL";
+  // Drag out of both inductions: so NREL set the AeroDyn v15 files it made from these v14 files for the
+  // FAST 8 certification tests (AWT-27, AOC, UAE VI, WindPACT, SWRT: AIDrag = TIDrag = False).
+  a.AIDrag = false;
+  a.TIDrag = false;
   a.AirDens = v14.AirDens;
   a.KinVisc = v14.KinVisc;
   a.UseBlCm = v14.UseCm;
@@ -32,7 +36,7 @@ std::vector<std::string> steadySubstitutes(const AeroDyn14Input& v14) {
     if (on) notes.push_back(f.where(key, f.find(key)->raw + ": " + what));
   };
   note(v14.IndModel != "NONE", "IndModel",
-       "AeroDyn v14 file: whirl solves AeroDyn v15's BEMT on its elements (inflow-angle residual, drag in both "
+       "AeroDyn v14 file: whirl solves AeroDyn v15's BEMT on its elements (inflow-angle residual, no drag in the "
        "inductions, Buhl's high-thrust correction), not AeroDyn v14's induction-factor iteration");
   note(v14.InfModel == "DYNIN", "InfModel",
        "dynamic inflow: whirl solves the equilibrium BEMT (InfModel = EQUIL), the steady state of the "

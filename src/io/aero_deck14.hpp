@@ -6,7 +6,8 @@
 /// What carries over: the induction model (IndModel NONE → no induction, WAKE → axial only, SWIRL →
 /// axial and tangential), Prandtl tip and hub losses (TLModel, HLModel), air density, UseCm, the airfoil
 /// files and the element table. What whirl does instead of AeroDyn v14 (notes): the equilibrium BEMT of
-/// AeroDyn v15 (inflow-angle residual, drag in both inductions, Buhl's high-thrust correction) rather than
+/// AeroDyn v15 (inflow-angle residual, no drag in the inductions as in NREL's v15 versions of the
+/// certification-test files, Buhl's high-thrust correction) rather than
 /// AeroDyn v14's induction-factor iteration; quasi-steady inflow for dynamic inflow (InfModel = DYNIN),
 /// static airfoil tables for Beddoes' dynamic stall (StallMod = BEDDOES); no tower shadow (TwrShad).
 /// Refused: the Georgia Tech tip loss (TLModel = GTECH), which AeroDyn v15 does not have.

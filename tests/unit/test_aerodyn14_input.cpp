@@ -140,6 +140,8 @@ TEST(AeroDyn14, DeckBecomesV15Elements) {
   EXPECT_TRUE(deck.aerodyn.TanInd);    // SWIRL
   EXPECT_FALSE(deck.aerodyn.HubLoss);  // HLModel = NONE
   EXPECT_FALSE(deck.aerodyn.UseBlCm);  // NO_CM
+  EXPECT_FALSE(deck.aerodyn.AIDrag);   // as NREL's v15 version of the file, Test01_AD15.ipt
+  EXPECT_FALSE(deck.aerodyn.TIDrag);
   ASSERT_EQ(deck.blades.size(), 3u);
   EXPECT_EQ(deck.blades[1].element_width.size(), 10u);
   EXPECT_EQ(deck.airfoils.size(), 10u);
