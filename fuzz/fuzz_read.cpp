@@ -14,9 +14,13 @@
 //                           before them are what is read)
 //   9 fuzz_read_ed_tower    readElastoDynTower
 //  10 fuzz_read_ed_blade    readElastoDynBlade
+//  11 fuzz_read_aerodyn14   readAeroDyn14, then its AeroDyn v15 description and blade (FAST v8 CompAero = 1)
+//  12 fuzz_read_airfoil14   readAirfoil14 with and without Cm columns, then airfoilPolar
 #include "fuzz/fuzz_support.hpp"
+#include "src/io/aero_deck14.hpp"
 #include "src/io/aerodyn_blade_input.hpp"
 #include "src/io/aerodyn_input.hpp"
+#include "src/io/airfoil14_input.hpp"
 #include "src/io/airfoil_input.hpp"
 #include "src/io/case_file.hpp"
 #include "src/io/elastodyn_blade.hpp"
@@ -50,8 +54,15 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     (void)io::readElastoDynTower(path);
 #elif WHIRL_FUZZ_READER == 10
     (void)io::readElastoDynBlade(path);
+#elif WHIRL_FUZZ_READER == 11
+    const io::AeroDyn14Input v14 = io::readAeroDyn14(path);
+    (void)io::aerodynFromV14(v14);
+    (void)io::bladeFromV14(v14);
+    (void)io::steadySubstitutes(v14);
+#elif WHIRL_FUZZ_READER == 12
+    for (bool cm : {false, true}) (void)io::airfoilPolar(io::readAirfoil14(path, cm), cm);
 #else
-#error "WHIRL_FUZZ_READER must be 1 to 10"
+#error "WHIRL_FUZZ_READER must be 1 to 12"
 #endif
   });
   return 0;
