@@ -86,6 +86,11 @@ OperatingPoint initialPoint(const Model& m) {
   return op;
 }
 
+void copyDeflections(const Model& m, const VecX& from, VecX& q) {
+  for (int i : m.activeDofs())
+    if (!m.dofs[i].rotating) q(i) = from(i);
+}
+
 OperatingPoint initialPoint(const Model& m, const OperatingCondition& c) {
   const ModelRoles& r = m.roles;
   auto finite = [](double v, const char* field) {

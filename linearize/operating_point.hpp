@@ -78,6 +78,11 @@ OperatingPoint initialPoint(const Model& model);
 /// wind-speed input"), or a value that is not finite.
 OperatingPoint initialPoint(const Model& model, const OperatingCondition& condition);
 
+/// Sets the deflections of `q` to those of `from` (both model.ndof()): the active coordinates that do not
+/// rotate; the azimuth and the frozen coordinates stay. The warm start of an equilibrium from a
+/// neighbouring one (another wind speed, rotor speed or pitch).
+void copyDeflections(const Model& model, const VecX& from, VecX& q);
+
 /// Solves the equilibrium of the non-rotating active coordinates starting from `start`; the
 /// unrestrained ones (unrestrainedCoordinates, or EquilibriumOptions::held) stay at their start value.
 /// Throws ComputeError when K is singular or Newton does not converge, or when a load acts on a held

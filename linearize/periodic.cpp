@@ -49,9 +49,7 @@ PeriodicLinearization linearizePeriodic(const Model& m, const OperatingPoint& st
   p.rotor_speed = start.qd(p.azimuth_dof);
   OperatingPoint guess = start;
   const bool warm = opt.deflections && opt.deflections->size() == start.q.size();
-  if (warm)
-    for (int i : m.activeDofs())
-      if (!m.dofs[i].rotating) guess.q(i) = (*opt.deflections)(i);
+  if (warm) copyDeflections(m, *opt.deflections, guess.q);
   const double psi0 = start.q(p.azimuth_dof);
   // A parked rotor is a time-invariant system at its azimuth: one linearization, whose multiblade
   // transform is exact (averaging the azimuth-dependent parked models would blur them).

@@ -90,10 +90,10 @@ class TorqueBalance {
       // chord steps (the stiffness barely changes between the trim's nearby rotor speeds or pitches).
       EquilibriumOptions eq;
       eq.newton_matrix = &stiffness_[k];
-      const OperatingPoint cold = start;
+      OperatingPoint cold;
       if (guess_[k].size() == start.q.size()) {
-        for (int i : m_.activeDofs())
-          if (!m_.dofs[i].rotating) start.q(i) = guess_[k](i);
+        cold = start;
+        copyDeflections(m_, guess_[k], start.q);
         eq.load_scale = scale_[k];  // the tolerance of the cold start this continues (0: not solved here yet)
         eq.scale_from = &cold;
         if (stiffness_[k].size() > 0) eq.chord_matrix = &stiffness_[k];

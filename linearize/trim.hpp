@@ -73,7 +73,8 @@ struct TrimGuess {
 SteadyState trimAtWindSpeed(const Model& model, double wind_speed, const TrimGuess& guess, const TrimOptions& opt = {});
 
 /// The trimmed points at increasing or decreasing wind speeds, each search started from its
-/// predecessors (tip-speed ratio held, pitch extrapolated linearly in the wind speed).
+/// predecessors (tip-speed ratio held, pitch extrapolated linearly in the wind speed) and each
+/// equilibrium from the predecessor's at the same azimuth (TrimGuess::q, stiffness).
 std::vector<SteadyState> trimSchedule(const Model& model, const std::vector<double>& wind_speeds,
                                       const TrimOptions& opt = {});
 

@@ -286,7 +286,7 @@ BrentResult secantFrom(F&& f, double a, double b, double fa, double fb, double x
   shrink(x1, f1);
   for (int it = 0; it < 6; ++it) {
     if (f1 == f0) break;
-    slope = (f1 - f0) / (x1 - x0);
+    if (it > 0) slope = (f1 - f0) / (x1 - x0);  // the first is the one just measured
     const double x2 = x1 - f1 / slope;
     if (!(x2 > a && x2 < b)) break;
     const double f2 = f(x2);

@@ -70,12 +70,7 @@ AeroDeckInput readAeroDeck(const FstInput& fst, OverrideSet* overrides) {
   if (v14) {
     deck.blades.assign(3, bladeFromV14(*v14));  // one element table serves every blade
     deck.airfoils = readAirfoils(ad, [&](const std::filesystem::path& p) { return readAirfoil14(p, v14->UseCm); });
-    for (const AirfoilInput& af : deck.airfoils)
-      if (af.tables.size() > 1)
-        deck.notes.push_back(whirl::where(af.path.string(), af.tables.front().re_line, "table ID",
-                                          std::to_string(af.tables.size()) +
-                                              " tables: whirl uses the first, as AeroDyn v14 does with the table "
-                                              "locator FAST v8 gives it (MulTabLoc = 0)"));
+    if (std::optional<std::string> note = multipleTables(*v14, deck.airfoils)) deck.notes.push_back(std::move(*note));
     return deck;
   }
   for (std::size_t k = 0; k < ad.ADBlFile.size(); ++k) {

@@ -2,6 +2,7 @@
 
 #include "src/io/aero_support.hpp"
 #include "src/io/refusals.hpp"
+#include "src/model/error.hpp"
 
 namespace whirl::io {
 
@@ -17,10 +18,11 @@ AeroDynInput aerodynFromV14(const AeroDyn14Input& v14) {
   a.TanInd = v14.IndModel == "SWIRL";
   a.TipLoss = v14.TLModel == "PRANDTL";
   a.HubLoss = v14.HLModel == "PRANDTL";
-  // Drag out of both inductions: so NREL set the AeroDyn v15 files it made from these v14 files for the
-  // FAST 8 certification tests (AWT-27, AOC, UAE VI, WindPACT, SWRT: AIDrag = TIDrag = False).
-  a.AIDrag = false;
-  a.TIDrag = false;
+  // Drag in the inductions only with EQUILDA/DT/DB; plain EQUIL and DYNIN (solved here as equilibrium)
+  // have none, and so NREL set the v15 files it made from the certification tests' v14 files (AIDrag =
+  // TIDrag = False).
+  a.AIDrag = v14.InfModel == "EQUILDA" || v14.InfModel == "EQUILDB";
+  a.TIDrag = v14.InfModel == "EQUILDT" || v14.InfModel == "EQUILDB";
   a.AirDens = v14.AirDens;
   a.KinVisc = v14.KinVisc;
   a.UseBlCm = v14.UseCm;
@@ -36,8 +38,8 @@ std::vector<std::string> steadySubstitutes(const AeroDyn14Input& v14) {
     if (on) notes.push_back(f.where(key, f.find(key)->raw + ": " + what));
   };
   note(v14.IndModel != "NONE", "IndModel",
-       "AeroDyn v14 file: whirl solves AeroDyn v15's BEMT on its elements (inflow-angle residual, no drag in the "
-       "inductions, Buhl's high-thrust correction), not AeroDyn v14's induction-factor iteration");
+       "AeroDyn v14 file: whirl solves AeroDyn v15's BEMT on its elements (inflow-angle residual, Buhl's "
+       "high-thrust correction), not AeroDyn v14's induction-factor iteration");
   note(v14.InfModel == "DYNIN", "InfModel",
        "dynamic inflow: whirl solves the equilibrium BEMT (InfModel = EQUIL), the steady state of the "
        "dynamic-inflow states, which are not in the linear model");
@@ -46,6 +48,24 @@ std::vector<std::string> steadySubstitutes(const AeroDyn14Input& v14) {
        "model, whose states are not in the linear model");
   note(v14.TwrShad != 0, "TwrShad", "tower shadow left out: the blades see the undisturbed wind");
   return notes;
+}
+
+std::optional<std::string> multipleTables(const AeroDyn14Input& v14, const std::vector<AirfoilInput>& airfoils) {
+  std::string several;
+  for (const AirfoilInput& af : airfoils)
+    if (af.tables.size() > 1) several += (several.empty() ? "" : ", ") + af.path.filename().string();
+  if (several.empty() || v14.MultiTab == "SINGLE") return std::nullopt;
+  const std::string file = v14.source.path().string();
+  if (v14.MultiTab.empty())
+    return whirl::where(file, 0, "MultiTab",
+                        "absent at the end of the file: the first table of each airfoil file with several (" + several +
+                            "), as AeroDyn v14 does");
+  const std::string what = v14.MultiTab == "RENUM"  ? "interpolation between airfoil tables on the Reynolds number"
+                           : v14.MultiTab == "USER" ? "interpolation between airfoil tables on a user value"
+                                                    : "not an option of AeroDyn v14 (USER, RENUM or SINGLE)";
+  throw InputError(whirl::where(file, v14.MultiTab_line, "MultiTab",
+                                v14.MultiTab + " not supported by whirl (" + what + ", for " + several +
+                                    "; whirl supports only SINGLE, the first table of each file)"));
 }
 
 AeroDynBladeInput bladeFromV14(const AeroDyn14Input& v14) {

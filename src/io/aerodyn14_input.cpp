@@ -119,7 +119,7 @@ AeroDyn14Input readAeroDyn14(const std::filesystem::path& file, OverrideSet* ove
   if (f.has("SysUnits")) choice(f, "SysUnits", {"SI"});
   a.StallMod = choice(f, "StallMod", {"BEDDOES", "STEADY"});
   a.UseCm = choice(f, "UseCm", {"USE_CM", "NO_CM"}) == "USE_CM";
-  a.InfModel = choice(f, "InfModel", {"DYNIN", "EQUIL"});
+  a.InfModel = choice(f, "InfModel", {"DYNIN", "EQUIL", "EQUILDA", "EQUILDT", "EQUILDB"});
   a.IndModel = choice(f, "IndModel", {"NONE", "WAKE", "SWIRL"});
   a.AToler = f.getDouble("AToler");
   requirePositive(f, "AToler", a.AToler);
@@ -146,6 +146,11 @@ AeroDyn14Input readAeroDyn14(const std::filesystem::path& file, OverrideSet* ove
     throw InputError(f.where("BldNodes", std::to_string(nodes) + " elements announced, the file has " +
                                              std::to_string(lines.count()) + " lines (truncated table?)"));
   readElements(f, lines, nodes, a);
+  if (const std::optional<int> next = lines.nextContentLine(a.row_lines.back())) {
+    const std::vector<std::string> words = splitWords(lines.line(*next));
+    a.MultiTab = words.empty() ? "" : upper(unquoted(words.front()));
+    a.MultiTab_line = *next;
+  }
   return a;
 }
 

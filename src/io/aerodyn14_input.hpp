@@ -9,8 +9,12 @@
 /// `ShadHWid`, `T_Shad_Refpt`, `AirDens`, `KinVisc`, `DTAero`, `NumFoil`, `FoilNm` (NumFoil names, the
 /// first on the key's line, the others alone on the lines after it), `BldNodes`, then a header row
 /// `RNodes AeroTwst DRNodes Chord NFoil PrnElm` and BldNodes element rows (no unit row; the last word of
-/// a row is PRINT or NOPRINT). Switch values are matched case-insensitively, quoted or not. One element
-/// table serves every blade. Older files may open with `SysUnits` (only SI is accepted).
+/// a row is PRINT or NOPRINT), then — read by AeroDyn only when an airfoil file has several tables — the
+/// multiple-table option {USER, RENUM, SINGLE} (AeroDyn v14's AD14_GetInput: at the end of the file it
+/// uses the first table of each file). Switch values are matched case-insensitively, quoted or not. One
+/// element table serves every blade. Older files may open with `SysUnits` (only SI is accepted).
+/// `InfModel` also takes EQUILDA, EQUILDT and EQUILDB: equilibrium inflow with drag in the axial, the
+/// tangential or both inductions (plain EQUIL: none).
 ///
 /// Elements, unlike AeroDyn v15's nodes, are strips: `RNodes` is the radius of the element centre
 /// measured from the rotor centre (hub radius included) along the blade, `DRNodes` its width, and the
@@ -31,7 +35,7 @@ struct AeroDyn14Input {
 
   std::string StallMod;  ///< "BEDDOES" or "STEADY" (upper case)
   bool UseCm = false;    ///< UseCm = USE_CM: the airfoil tables carry Cm columns, used
-  std::string InfModel;  ///< "DYNIN" or "EQUIL"
+  std::string InfModel;  ///< "DYNIN", "EQUIL", "EQUILDA", "EQUILDT" or "EQUILDB"
   std::string IndModel;  ///< "NONE", "WAKE" or "SWIRL"
   double AToler = 0.0;   ///< induction-factor tolerance (-), > 0
   std::string TLModel;   ///< "PRANDTL", "GTECH" or "NONE"
@@ -49,6 +53,10 @@ struct AeroDyn14Input {
   std::vector<double> Chord;     ///< chord (m), > 0
   std::vector<int> NFoil;        ///< airfoil of each element, 1-based index into FoilNm
   std::vector<int> row_lines;    ///< file line of each element
+  /// The first word after the element table, upper case ("USER", "RENUM", "SINGLE" or anything else;
+  /// "" at the end of the file), and its line; whether it matters depends on the airfoil files.
+  std::string MultiTab;
+  int MultiTab_line = 0;
 };
 
 /// Reads an AeroDyn v14 main file. Checks: every key of the layout once and in it nothing else (as

@@ -150,4 +150,43 @@ TEST(AeroDyn14, DeckBecomesV15Elements) {
   EXPECT_NE(deck.notes[1].find(":5: InfModel: \"DYNIN\": dynamic inflow"), std::string::npos) << deck.notes[1];
 }
 
+TEST(AeroDyn14, DragInTheInductionsAsInfModelSays) {
+  const std::string text = readText(certtest() / "AWT27" / "Test01_AD.ipt");
+  const struct {
+    const char* inf;
+    bool axial, tangential;
+  } cases[] = {{"EQUIL", false, false}, {"EQUILDA", true, false}, {"EQUILDT", false, true}, {"EQUILDB", true, true}};
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.inf);
+    ScratchDir s;
+    const auto p = s.write("AD.ipt", replaceOnce(text, "\"DYNIN\" ", std::string("\"") + c.inf + "\""));
+    const auto a = whirl::io::aerodynFromV14(readAeroDyn14(p));
+    EXPECT_EQ(a.AIDrag, c.axial);
+    EXPECT_EQ(a.TIDrag, c.tangential);
+  }
+}
+
+// SWRT: three Reynolds tables per airfoil file and RENUM after the element table (SWRT_AeroDyn.dat:38).
+TEST(AeroDyn14, InterpolationBetweenTablesRefusedFirstTableOtherwise) {
+  const auto swrt = certtest() / "SWRT" / "SWRT_AeroDyn.dat";
+  const auto v14 = readAeroDyn14(swrt);
+  EXPECT_EQ(v14.MultiTab, "RENUM");
+  const auto af = readAirfoil14(certtest() / "SWRT" / "AeroData" / "SH3052Mod_AllRe_Hanley.dat", false);
+  EXPECT_EQ(inputErrorMessage([&] { whirl::io::multipleTables(v14, {af}); }),
+            swrt.string() + ":" + std::to_string(v14.MultiTab_line) +
+                ": MultiTab: RENUM not supported by whirl (interpolation between airfoil tables on the Reynolds "
+                "number, for SH3052Mod_AllRe_Hanley.dat; whirl supports only SINGLE, the first table of each file)");
+  ScratchDir s;
+  const std::string text = readText(swrt);
+  const auto single = s.write("single.dat", replaceOnce(text, "ReNum", "SINGLE"));
+  EXPECT_FALSE(whirl::io::multipleTables(readAeroDyn14(single), {af}));
+  const auto absent = s.write("absent.dat", replaceOnce(text, "ReNum", ""));
+  const auto note = whirl::io::multipleTables(readAeroDyn14(absent), {af});
+  ASSERT_TRUE(note);
+  EXPECT_NE(note->find("MultiTab: absent at the end of the file: the first table"), std::string::npos) << *note;
+  // One table per file: the option does not matter.
+  const auto one = readAirfoil14(certtest() / "AWT27" / "AeroData" / "AWT27_05.dat", false);
+  EXPECT_FALSE(whirl::io::multipleTables(v14, {one}));
+}
+
 }  // namespace
