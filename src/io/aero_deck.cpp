@@ -10,15 +10,16 @@
 namespace whirl::io {
 namespace {
 
+// `list_key`: the key of the names in the messages (AFNames, or FoilNm in AeroDyn v14).
 template <class Read>
-std::vector<AirfoilInput> readAirfoils(const AeroDynInput& ad, Read read) {
+std::vector<AirfoilInput> readAirfoils(const AeroDynInput& ad, const char* list_key, Read read) {
   std::vector<AirfoilInput> out;
   const std::string file = ad.source.path().string();
   for (std::size_t i = 0; i < ad.AFNames.size(); ++i) {
     const std::filesystem::path& p = ad.AFNames[i];
     std::error_code ec;
     if (!std::filesystem::is_regular_file(p, ec))
-      throw InputError(where(file, ad.AFNames_lines[i], indexedKey("AFNames", static_cast<int>(i) + 1),
+      throw InputError(where(file, ad.AFNames_lines[i], indexedKey(list_key, static_cast<int>(i) + 1),
                              "file not found: " + p.string()));
     out.push_back(read(p));
   }
@@ -69,7 +70,7 @@ AeroDeckInput readAeroDeck(const FstInput& fst, OverrideSet* overrides) {
   const AeroDynInput& ad = deck.aerodyn;
   if (v14) {
     deck.blades.assign(3, bladeFromV14(*v14));  // one element table serves every blade
-    deck.airfoils = readAirfoils(ad, [&](const std::filesystem::path& p) { return readAirfoil14(p, v14->UseCm); });
+    deck.airfoils = readAirfoils(ad, "FoilNm", [&](const std::filesystem::path& p) { return readAirfoil14(p, v14->UseCm); });
     if (std::optional<std::string> note = multipleTables(*v14, deck.airfoils)) deck.notes.push_back(std::move(*note));
     return deck;
   }
@@ -78,7 +79,7 @@ AeroDeckInput readAeroDeck(const FstInput& fst, OverrideSet* overrides) {
     deck.blades.push_back(readAeroDynBlade(p, overrides));
     checkAirfoilIds(ad, deck.blades.back());
   }
-  deck.airfoils = readAirfoils(ad, [&](const std::filesystem::path& p) { return readAirfoil(p, ad.InCol); });
+  deck.airfoils = readAirfoils(ad, "AFNames", [&](const std::filesystem::path& p) { return readAirfoil(p, ad.InCol); });
   return deck;
 }
 

@@ -145,6 +145,17 @@ TEST(AeroDyn14, DeckBecomesV15Elements) {
   ASSERT_EQ(deck.blades.size(), 3u);
   EXPECT_EQ(deck.blades[1].element_width.size(), 10u);
   EXPECT_EQ(deck.airfoils.size(), 10u);
+  // A missing airfoil file is named with the line that names it.
+  {
+    ScratchDir s;
+    const auto fst = s.copy(certtest() / "Test06.fst");
+    for (const char* f : {"AOC/Test06_ElastoDyn.dat", "AOC/AOC_Blade.dat", "AOC/AOC_Tower.dat", "AOC/Test06_AD.ipt",
+                          "AOC/Test06_InflowWind.dat", "AOC/Test06_ServoDyn.dat", "AOC/AeroData/S814_1.dat"})
+      s.copy(certtest() / f, f);
+    EXPECT_EQ(inputErrorMessage([&] { whirl::io::readAeroDeck(whirl::io::readFst(fst)); }),
+              (s.path() / "AOC/Test06_AD.ipt").string() + ":18: FoilNm(2): file not found: " +
+                  (s.path() / "AOC/AeroData/S814_15.dat").string());
+  }
   // Notes: the BEMT, dynamic inflow, dynamic stall, tower shadow, then the wind file.
   ASSERT_GE(deck.notes.size(), 4u);
   EXPECT_NE(deck.notes[1].find(":5: InfModel: \"DYNIN\": dynamic inflow"), std::string::npos) << deck.notes[1];
