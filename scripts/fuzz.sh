@@ -3,7 +3,7 @@
 # SECONDS (default 45) from its seed corpus (scripts/fuzz-seeds.sh: cases/, tests/data/, fuzz/seeds/).
 #
 #   bash scripts/fuzz.sh [SECONDS] [HARNESS...]     # default: every harness, one after the other
-#   bash scripts/fuzz.sh --short                    # .ci/run: every harness for 30 s
+#   bash scripts/fuzz.sh --short                    # .ci/run: every harness for 20 s
 #
 # Per harness it prints executions, new findings (crash, timeout = a hang over 5 s, out-of-memory
 # over 2 GB, leak) and libFuzzer's exit status; it exits non-zero when any harness found something,
@@ -17,7 +17,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-45}
-if [ "$seconds" = --short ]; then seconds=30; fi
+if [ "$seconds" = --short ]; then seconds=20; fi
 shift || true
 out=${FUZZ_BUILD_DIR:-build-fuzz}
 all=(fuzz_case_yaml fuzz_openfast_parse fuzz_fst fuzz_elastodyn fuzz_servodyn fuzz_ed_tower fuzz_ed_blade fuzz_lin
