@@ -5,11 +5,13 @@
 
 #include <numbers>
 
+#include "linearize/jacobian.hpp"
 #include "linearize/linearize.hpp"
 #include "linearize/periodic.hpp"
 #include "linearize/trim.hpp"
-#include "src/dynamics/residual.hpp"
 #include "modal/campbell_sweep.hpp"
+#include "src/dynamics/mass_matrix.hpp"
+#include "src/dynamics/residual.hpp"
 #include "src/io/case_file.hpp"
 #include "src/turbine/elastodyn_model.hpp"
 #include "tests/support/rich_model.hpp"
@@ -62,6 +64,33 @@ WHIRL_CASE_BENCH(nrel5mw)
 // The 5MW with AeroDyn (19 elements × 3 blades, frozen wake), 10 rpm, 8 m/s; the residual is the
 // quasi-steady one (BEM solved at each of the 57 elements).
 WHIRL_CASE_BENCH(nrel5mw_aero)
+
+// The parts of one aeroelastic 5MW linearization: the AD passes of K (∂e/∂q), C (∂e/∂q̇) and Q (∂e/∂u),
+// and the double mass-matrix assembly, each timed alone at the operating point.
+void linearizationParts(benchmark::State& state, int part) {
+  const Model m = load("nrel5mw_aero");
+  const OperatingPoint op = solveOperatingPoint(m, initialPoint(m));
+  LinearizeWorkspace lw(m);
+  const std::vector<int> dofs = m.activeDofs();
+  std::vector<int> inputs(m.ninput());
+  for (int i = 0; i < m.ninput(); ++i) inputs[i] = i;
+  const AeroInflow* frozen = &op.inflow;
+  MatX M;
+  for (auto _ : state) {
+    if (part == 3) {
+      massMatrix(m, lw.ws, op.q, M);
+      benchmark::DoNotOptimize(M.data());
+      continue;
+    }
+    const Wrt wrt = part == 0 ? Wrt::Q : part == 1 ? Wrt::Qd : Wrt::U;
+    MatX J = residualJacobian(m, lw.jw, op.q, op.qd, op.qdd, op.u, wrt, part == 2 ? inputs : dofs, nullptr, frozen);
+    benchmark::DoNotOptimize(J.data());
+  }
+}
+BENCHMARK_CAPTURE(linearizationParts, K, 0)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(linearizationParts, C, 1)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(linearizationParts, Q, 2)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(linearizationParts, M, 3)->Unit(benchmark::kMicrosecond);
 
 // One linearization per azimuth of the 5MW turning at 12 rpm (36 azimuths, each its own equilibrium),
 // as in a Campbell sweep: every call sees a new point, so nothing cached per point is reused.

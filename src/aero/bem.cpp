@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <sstream>
 
 #include "src/model/scalar.hpp"
@@ -79,7 +80,8 @@ T lossFactor(const BemStation& s, const T& sphi, const BemOptions& o) {
     const double e = std::exp(-c / sv);
     if (!(e < 1.0)) return T(0.0);  // min(1, e) = 1 → acos(1) = 0 (station at or beyond the tip/root)
     if (e == 0.0) return T(1.0);    // acos(0)·2/π = 1, constant (huge or infinite constant, e.g. zHub = 0)
-    return T((2.0 / kPi) * acos(exp(-c / sabs)));
+    if constexpr (std::is_same_v<T, double>) return (2.0 / kPi) * std::acos(e);  // e is the same value
+    else return T((2.0 / kPi) * acos(exp(-c / sabs)));
   };
   if (o.tip_loss) F = F * part(tipLossConstant(s));
   if (o.hub_loss) F = F * part(hubLossConstant(s));
@@ -301,6 +303,38 @@ BrentResult secantFrom(F&& f, double a, double b, double fa, double fb, double x
   return r;
 }
 
+struct UnbracketedRoot {
+  double x = 0;
+  int evals = 0;
+  bool converged = false;
+};
+
+// Secant steps from x0 that must stay inside (a, b), with no bracket known: the first step is a
+// Newton step with `slope` (if finite and non-zero), else a small step; converged as secantFrom.
+// `slope` receives the last secant slope. Not converged: a step left (a, b) or stalled.
+template <class F>
+UnbracketedRoot secantInside(F&& f, double a, double b, double x0, double ftol, double xtol, double& slope) {
+  UnbracketedRoot r;
+  double f0 = f(x0);
+  ++r.evals;
+  if (std::abs(f0) < ftol) return UnbracketedRoot{x0, r.evals, true};
+  double x1 = std::isfinite(slope) && slope != 0.0 ? x0 - f0 / slope : x0 + std::max(1e-7, 1e-7 * std::abs(x0));
+  for (int it = 0; it < 6; ++it) {
+    if (!(x1 > a && x1 < b)) break;
+    const double f1 = f(x1);
+    ++r.evals;
+    if (std::abs(f1) < ftol || (it > 0 && std::abs(x1 - x0) <= 2.0 * DBL_EPSILON * std::abs(x1) + xtol)) {
+      if (f1 != f0) slope = (f1 - f0) / (x1 - x0);
+      return UnbracketedRoot{x1, r.evals, true};
+    }
+    if (f1 == f0) break;
+    slope = (f1 - f0) / (x1 - x0);
+    const double x2 = x1 - f1 / slope;
+    x0 = x1, f0 = f1, x1 = x2;
+  }
+  return r;
+}
+
 }  // namespace
 
 BemSolution solveInflow(const BemStation& s, double Vx, double Vy, const BemOptions& o, std::optional<double> phi_hint,
@@ -337,6 +371,24 @@ BemSolution solveInflow(const BemStation& s, double Vx, double Vy, const BemOpti
     std::array<Tried, 3> tried{};
     int ntried = 0;
     bool found = false;
+    // A hint inside the first bracket (the normal operating state, a warm Newton iterate) starts
+    // secant steps before the bracket's ends are evaluated: a valid root inside it ends the search in
+    // two or three residuals instead of four or five. Where that bracket holds one root, this is the
+    // root the bracketed search finds; steps that leave the bracket or stall fall back to it.
+    // (A bracket's ends are in AeroDyn's order: lower > upper for Vx < 0.)
+    const double first_lo = std::min(regions[0][0], regions[0][1]), first_hi = std::max(regions[0][0], regions[0][1]);
+    if (phi_hint && *phi_hint > first_lo && *phi_hint < first_hi) {
+      auto Rp = [&](double p) { return R(p).residual; };
+      double slope = slope_hint;
+      const UnbracketedRoot r = secantInside(Rp, first_lo, first_hi, *phi_hint, o.tolerance, o.phi_tolerance, slope);
+      out.iterations += r.evals;
+      if (r.converged && R(r.x).valid) {
+        phi = r.x;
+        found = true;
+        out.bracket = 0;
+        out.slope = slope;
+      }
+    }
     for (int i = 0; i < 3 && !found; ++i) {
       const double lo = regions[i][0], hi = regions[i][1];
       const Induction<double> il = R(lo), ih = R(hi);
@@ -359,10 +411,11 @@ BemSolution solveInflow(const BemStation& s, double Vx, double Vy, const BemOpti
         found = true;
       } else if ((f1 >= 0) != (f2 >= 0)) {
         auto Rp = [&](double p) { return R(p).residual; };
-        const bool from_hint = phi_hint && *phi_hint > lo && *phi_hint < hi;
+        const bool up = lo < hi;
+        const bool from_hint = phi_hint && *phi_hint > std::min(lo, hi) && *phi_hint < std::max(lo, hi);
         double slope = slope_hint;
-        const BrentResult b = from_hint ? secantFrom(Rp, lo, hi, f1, f2, *phi_hint, o.tolerance, o.phi_tolerance,
-                                                     o.max_iter, slope)
+        const BrentResult b = from_hint ? secantFrom(Rp, up ? lo : hi, up ? hi : lo, up ? f1 : f2, up ? f2 : f1,
+                                                     *phi_hint, o.tolerance, o.phi_tolerance, o.max_iter, slope)
                                         : brent(Rp, lo, hi, f1, f2, o.tolerance, o.phi_tolerance, o.max_iter);
         out.slope = from_hint ? slope : 0.0;
         out.iterations += b.evals;

@@ -153,10 +153,12 @@ T bemResidual(const BemStation& s, const T& phi, const T& Vx, const T& Vy, const
 /// when no bracket holds a valid root (unless o.geometric_fallback), InputError for an invalid station.
 ///
 /// `phi_hint` (optional) is the root of a neighbouring solve of the same element (the previous Newton
-/// iterate of an equilibrium): when it lies inside the bracket AeroDyn's search selects, the root is
-/// searched from it by safeguarded secant steps inside that bracket (a few residuals instead of a
-/// dozen); it is the same root as Brent's wherever the bracket holds one root, and equal to it within
-/// the tolerances. The brackets are selected as without a hint. `slope_hint`: ∂R/∂φ near the hint
+/// iterate of an equilibrium). Inside the first bracket (the operating rotor's), secant steps start
+/// from it before the bracket's ends are evaluated, and a valid root they reach inside it is taken
+/// (two to four residuals instead of eight); steps that leave the bracket or stall fall back to the
+/// bracketed search, which starts from the hint by safeguarded secant steps inside the bracket AeroDyn's
+/// search selects. Either way it is the root Brent's search finds wherever the bracket holds one root,
+/// equal to it within the tolerances; the brackets are tried in AeroDyn's order. `slope_hint`: ∂R/∂φ near the hint
 /// (BemSolution::slope of that solve; 0: unknown) takes the first step, instead of a small step that
 /// measures the slope.
 BemSolution solveInflow(const BemStation& s, double Vx, double Vy, const BemOptions& o,
