@@ -166,37 +166,44 @@ SteadyState steadyState(const Model& m, const OperatingCondition& c, const TrimO
 
 namespace {
 
-// A root of the decreasing function f on [lo, hi] (f(lo) > 0 > f(hi) known as flo, fhi), searched
-// first in [g − δ, g + δ] around the guess g: one or two evaluations next to g usually bracket it,
-// and Brent then needs a few steps instead of a dozen on the whole range. `outer` evaluates f at an
-// end not known yet (NaN in flo/fhi) when the root is not next to g.
+// A root of the decreasing function f on [lo, hi] (f(lo) > 0 > f(hi); flo, fhi when known, else
+// NaN), searched from the guess g: a step of δ towards the root, then secant steps aimed a fifth past
+// it, until a pair brackets the root; Brent then needs a few steps on that short bracket instead of a
+// dozen on the whole range. A guess far off (the first pitched wind speed after rated) costs a step
+// or two more, not the whole range. An end of the range is evaluated by `outer` (which may throw to
+// say the root is not in the range).
 template <class F>
 BrentResult guessedRoot(F&& f, double lo, double hi, double flo, double fhi, double g, double delta, double ftol,
                         const std::function<double(double)>& outer) {
-  g = std::clamp(g, lo, hi);
-  const double fg = f(g);
-  if (std::abs(fg) < ftol) return {g, fg, 1, true};
-  double a, b, fa, fb;
-  if (fg > 0) {  // the root is above g
-    const double g2 = std::min(hi, g + delta);
-    const double f2 = g2 == hi && !std::isnan(fhi) ? fhi : f(g2);
-    if (f2 <= 0) {
-      a = g, fa = fg, b = g2, fb = f2;
-    } else {
-      a = g2, fa = f2, b = hi, fb = std::isnan(fhi) ? outer(hi) : fhi;
+  auto at = [&](double x) {
+    if (x == lo) return std::isnan(flo) ? (flo = outer(lo)) : flo;
+    if (x == hi) return std::isnan(fhi) ? (fhi = outer(hi)) : fhi;
+    return f(x);
+  };
+  double x0 = std::clamp(g, lo, hi), f0 = at(x0);
+  int evals = 1;
+  if (std::abs(f0) < ftol) return {x0, f0, evals, true};
+  const double dir = f0 > 0 ? 1.0 : -1.0;  // f decreases: the root is above x0 where f > 0
+  double step = delta;
+  for (int k = 0; k < 8; ++k) {
+    const double x1 = std::clamp(x0 + dir * step, lo, hi);
+    if (x1 == x0) break;  // at an end with the root beyond it
+    const double f1 = at(x1);
+    ++evals;
+    if (f1 == 0) return {x1, f1, evals, true};
+    if ((f1 > 0) != (f0 > 0)) {
+      BrentResult r = brent(f, std::min(x0, x1), std::max(x0, x1), x0 < x1 ? f0 : f1, x0 < x1 ? f1 : f0, ftol, 1e-10,
+                            100);
+      r.evals += evals;
+      return r;
     }
-  } else {  // below g
-    const double g2 = std::max(lo, g - delta);
-    const double f2 = g2 == lo && !std::isnan(flo) ? flo : f(g2);
-    if (f2 >= 0) {
-      a = g2, fa = f2, b = g, fb = fg;
-    } else {
-      a = lo, fa = std::isnan(flo) ? outer(lo) : flo, b = g2, fb = f2;
-    }
+    const double slope = (f1 - f0) / (x1 - x0);
+    // The secant's distance to the root, 1.2× (to land past it), at least the last step, at most 8×.
+    const double reach = slope < 0 ? 1.2 * std::abs(f1 / slope) : 8 * step;
+    step = std::clamp(reach, std::abs(x1 - x0), 8 * std::abs(x1 - x0));
+    x0 = x1, f0 = f1;
   }
-  if (fa == 0) return {a, fa, 0, true};
-  if (fb == 0) return {b, fb, 0, true};
-  return brent(f, a, b, fa, fb, ftol, 1e-10, 100);
+  return {x0, f0, evals, false};
 }
 
 }  // namespace
@@ -237,43 +244,63 @@ SteadyState trimAtWindSpeed(const Model& m, double wind, const TrimGuess& guess,
     const BrentResult r = brent(f, lo, hi, flo, fhi, ftol, 1e-10, 100);
     if (!r.converged) throw ComputeError(at + "the rotor-speed trim did not converge");
     omega = r.x;
-  } else if (const Balance at_rated = balance(rated, opt.min_pitch); at_rated.f > 0) {
-    // Above rated: pitch to feather until the excess torque is gone.
-    auto f = [&](double p) { return balance(rated, p).f; };
+  } else {
+    // Above rated (excess torque at rated speed and fine pitch): the pitch that removes the excess;
+    // below: the rotor speed of the balance at fine pitch, above the tip-speed ratio opt.min_tsr (near
+    // standstill BEM has no solution on much of the blade, and AeroDyn itself blends the induction off
+    // at low tip-speed ratios). f decreases with pitch and with rotor speed (as every search here
+    // assumes), so a root bracketed next to a neighbour's pitch (speed) also shows the side of rated,
+    // without the balance at rated speed and fine pitch, whose equilibria are far from the root's.
+    auto fp = [&](double p) { return balance(rated, p).f; };
+    auto fw = [&](double w) { return balance(w, opt.min_pitch).f; };
     auto top = [&](double p) {
-      const double ft = f(p);
+      const double ft = fp(p);
       if (ft > 0)
         throw ComputeError(at + "the aerodynamic torque exceeds the rated generator torque even at " +
                            std::to_string(opt.max_pitch * 180 / std::numbers::pi) + " deg pitch");
       return ft;
     };
-    const BrentResult r =
-        guess.pitch > opt.min_pitch
-            ? guessedRoot(f, opt.min_pitch, opt.max_pitch, at_rated.f, nan, guess.pitch, 0.01, ftol, top)
-            : brent(f, opt.min_pitch, opt.max_pitch, at_rated.f, top(opt.max_pitch), ftol, 1e-10, 100);
-    if (!r.converged) throw ComputeError(at + "the pitch trim did not converge");
-    pitch = r.x;
-    above = true;
-  } else {
-    // Below rated: the rotor speed of the torque balance at fine pitch, above the tip-speed ratio
-    // opt.min_tsr (near standstill BEM has no solution on much of the blade, and AeroDyn itself
-    // blends the induction off at low tip-speed ratios).
     const double low = std::min(0.5 * rated, opt.min_tsr * wind / m.aero.rotor_radius);
-    auto f = [&](double w) { return balance(w, opt.min_pitch).f; };
     auto slow = [&](double w) {
-      const double fs = f(w);
+      const double fs = fw(w);
       if (fs <= 0)
         throw ComputeError(at + "no torque balance between " + rpmText(low) + " (tip-speed ratio " +
                            std::to_string(opt.min_tsr) + ") and rated " + rpmText(rated) +
                            ": the aerodynamic torque does not overcome the generator torque law (below cut-in?)");
       return fs;
     };
-    const BrentResult r =
-        guess.rotor_speed > low && guess.rotor_speed < rated
-            ? guessedRoot(f, low, rated, nan, at_rated.f, guess.rotor_speed, 0.01 * guess.rotor_speed, ftol, slow)
-            : brent(f, low, rated, slow(low), at_rated.f, ftol, 1e-10, 100);
-    if (!r.converged) throw ComputeError(at + "the rotor-speed trim did not converge");
-    omega = r.x;
+    struct OtherSide {};  // the guessed search met the balance at rated speed and fine pitch on the other side
+    std::optional<BrentResult> r;
+    try {
+      if (guess.pitch > opt.min_pitch) {
+        r = guessedRoot(fp, opt.min_pitch, opt.max_pitch, nan, nan, guess.pitch, 0.01, ftol, [&](double p) {
+          if (p != opt.min_pitch) return top(p);
+          const double f_fine = fp(p);
+          if (f_fine <= 0) throw OtherSide{};
+          return f_fine;
+        });
+        above = true;
+      } else if (guess.rotor_speed > low && guess.rotor_speed < rated) {
+        r = guessedRoot(fw, low, rated, nan, nan, guess.rotor_speed, 0.01 * guess.rotor_speed, ftol, [&](double w) {
+          if (w != rated) return slow(w);
+          const double f_rated = fw(w);
+          if (f_rated > 0) throw OtherSide{};
+          return f_rated;
+        });
+      }
+    } catch (const OtherSide&) {
+      r.reset();
+      above = false;
+    }
+    if (!r) {
+      const double at_rated = fw(rated);
+      above = at_rated > 0;
+      r = above ? brent(fp, opt.min_pitch, opt.max_pitch, at_rated, top(opt.max_pitch), ftol, 1e-10, 100)
+                : brent(fw, low, rated, slow(low), at_rated, ftol, 1e-10, 100);
+    }
+    if (!r->converged)
+      throw ComputeError(at + (above ? "the pitch trim did not converge" : "the rotor-speed trim did not converge"));
+    (above ? pitch : omega) = r->x;
   }
   OperatingCondition c;
   c.wind_speed = wind;

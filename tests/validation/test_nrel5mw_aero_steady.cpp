@@ -147,6 +147,24 @@ TEST(Nrel5mwAeroSteady, ScheduleTrimsEqualSeparateTrims) {
   EXPECT_LT(guessed, separate);
 }
 
+// Down the wind speeds, the search next to a pitched neighbour finds no excess torque at fine pitch at
+// 11 m/s (below rated) and must turn to the rotor-speed search: the schedule's trims are again the
+// separate ones, the side of rated included.
+TEST(Nrel5mwAeroSteady, ScheduleDownTheWindCrossesRated) {
+  const Model m = readElastoDynModel(kDir + "Main_Aero.fst");
+  const std::vector<double> winds{14, 12, 11, 9};
+  const std::vector<SteadyState> schedule = trimSchedule(m, winds);
+  ASSERT_EQ(schedule.size(), winds.size());
+  for (std::size_t i = 0; i < winds.size(); ++i) {
+    const SteadyState alone = trimAtWindSpeed(m, winds[i]);
+    EXPECT_EQ(schedule[i].above_rated, winds[i] >= 12) << winds[i];
+    EXPECT_EQ(schedule[i].above_rated, alone.above_rated) << winds[i];
+    EXPECT_NEAR(schedule[i].condition.rotor_speed, alone.condition.rotor_speed, 1e-8 * alone.condition.rotor_speed)
+        << winds[i];
+    EXPECT_NEAR(*schedule[i].condition.collective_pitch, *alone.condition.collective_pitch, 1e-8) << winds[i];
+  }
+}
+
 // A rotor whose aerodynamic torque cannot overcome the torque law (here: held feathered at 80 deg; the
 // simple VS law has no cut-in, so with fine pitch any wind finds a balance), and a rotor that cannot
 // shed its excess torque within the pitch range, stop with a message that says which and at what
