@@ -1,5 +1,7 @@
 #include "linearize/mbc.hpp"
 
+#include <Eigen/Sparse>
+
 #include <cmath>
 #include <numbers>
 
@@ -88,15 +90,51 @@ Sets findSets(const std::vector<int>& blade, const std::vector<int>& velocity_of
   return s;
 }
 
-/// T1 of a vector of inputs or outputs (no rate terms).
-Eigen::MatrixXd transformT1(const Sets& s, int N, Index n, double psi) {
-  Eigen::MatrixXd T = Eigen::MatrixXd::Zero(n, n);
+/// The transform of a vector and its inverse, sparse: per rotating set, the N × N block B(b, m) of the
+/// multiblade basis on its members (B on their rates too, and W ∂B/∂ψ from members to rates: the rates
+/// of the multiblade coordinates follow from q = B q_nr as q̇ = B q̇_nr + W B' q_nr); the identity on
+/// fixed entries. The inverse holds B⁻¹ per block and −B⁻¹ (W B') B⁻¹ from members to rates, so every
+/// sample costs products with a few non-zeros per column instead of a dense factorization.
+struct Transform {
+  Eigen::SparseMatrix<double> T, Tinv;
+};
+
+Transform transformOf(const Sets& s, int N, Index n, double psi, double W) {
+  Eigen::MatrixXd B(N, N), dB(N, N);
+  for (int b = 0; b < N; ++b)
+    for (int m = 0; m < N; ++m) {
+      B(b, m) = basis(m, N, b, psi, 0);
+      dB(b, m) = W * basis(m, N, b, psi, 1);
+    }
+  const Eigen::MatrixXd Bi = B.partialPivLu().inverse();
+  const Eigen::MatrixXd coupling = -Bi * dB * Bi;
+  std::vector<Eigen::Triplet<double>> t, ti;
   for (Index i = 0; i < n; ++i)
-    if (s.coords[i].kind == MbcKind::Fixed) T(i, i) = 1.0;
-  for (const auto& set : s.members)
+    if (s.coords[i].kind == MbcKind::Fixed) {
+      t.emplace_back(i, i, 1.0);
+      ti.emplace_back(i, i, 1.0);
+    }
+  for (std::size_t j = 0; j < s.members.size(); ++j) {
+    const std::vector<Index>& q = s.members[j];
+    const bool rates = !s.rates.empty() && s.rates[j][0] >= 0;
     for (int b = 0; b < N; ++b)
-      for (int m = 0; m < N; ++m) T(set[b], set[m]) = basis(m, N, b, psi, 0);
-  return T;
+      for (int m = 0; m < N; ++m) {
+        t.emplace_back(q[b], q[m], B(b, m));
+        ti.emplace_back(q[b], q[m], Bi(b, m));
+        if (!rates) continue;
+        const std::vector<Index>& v = s.rates[j];
+        t.emplace_back(v[b], v[m], B(b, m));
+        t.emplace_back(v[b], q[m], dB(b, m));
+        ti.emplace_back(v[b], v[m], Bi(b, m));
+        ti.emplace_back(v[b], q[m], coupling(b, m));
+      }
+  }
+  Transform x;
+  x.T.resize(n, n);
+  x.Tinv.resize(n, n);
+  x.T.setFromTriplets(t.begin(), t.end());
+  x.Tinv.setFromTriplets(ti.begin(), ti.end());
+  return x;
 }
 
 void checkMatrix(const Eigen::MatrixXd& X, Index rows, Index cols, const std::string& name) {
@@ -141,7 +179,7 @@ MbcSample transformPrepared(const Prepared& p, int N, const MbcSample& s, const 
     fail("azimuth" + tag, "azimuth, rotor speed and acceleration must be finite");
 
   const double psi = s.azimuth, W = s.rotor_speed, Wdot = s.rotor_acceleration;
-  Eigen::MatrixXd T = transformT1(p.x, N, p.nx, psi);
+  const Transform X = transformOf(p.x, N, p.nx, psi, W);
   Eigen::MatrixXd Tdot = Eigen::MatrixXd::Zero(p.nx, p.nx);
   for (std::size_t j = 0; j < p.x.members.size(); ++j) {
     const auto& q = p.x.members[j];
@@ -151,8 +189,6 @@ MbcSample transformPrepared(const Prepared& p, int N, const MbcSample& s, const 
         const double t2 = basis(m, N, b, psi, 1), t3 = basis(m, N, b, psi, 2);
         Tdot(q[b], q[m]) = W * t2;
         if (v[0] < 0) continue;  // first-order state
-        T(v[b], v[m]) = T(q[b], q[m]);
-        T(v[b], q[m]) = W * t2;
         Tdot(v[b], q[m]) = W * W * t3 + Wdot * t2;
         Tdot(v[b], v[m]) = W * t2;
       }
@@ -161,13 +197,12 @@ MbcSample transformPrepared(const Prepared& p, int N, const MbcSample& s, const 
   out.azimuth = s.azimuth;
   out.rotor_speed = s.rotor_speed;
   out.rotor_acceleration = s.rotor_acceleration;
-  const Eigen::PartialPivLU<Eigen::MatrixXd> Tlu(T);
-  out.A = Tlu.solve(s.A * T - Tdot);
-  const Eigen::MatrixXd Tu = transformT1(p.u, N, p.nu, psi);
-  const Eigen::PartialPivLU<Eigen::MatrixXd> Tylu(transformT1(p.y, N, p.ny, psi));
-  if (s.B.size()) out.B = Tlu.solve(s.B * Tu);
-  if (s.C.size()) out.C = Tylu.solve(s.C * T);
-  if (s.D.size()) out.D = Tylu.solve(s.D * Tu);
+  const Eigen::MatrixXd AT = s.A * X.T;
+  out.A = X.Tinv * (AT - Tdot);
+  const Transform U = transformOf(p.u, N, p.nu, psi, 0.0), Y = transformOf(p.y, N, p.ny, psi, 0.0);
+  if (s.B.size()) out.B = X.Tinv * Eigen::MatrixXd(s.B * U.T);
+  if (s.C.size()) out.C = Y.Tinv * Eigen::MatrixXd(s.C * X.T);
+  if (s.D.size()) out.D = Y.Tinv * Eigen::MatrixXd(s.D * U.T);
   return out;
 }
 
