@@ -167,39 +167,44 @@ SteadyState steadyState(const Model& m, const OperatingCondition& c, const TrimO
 namespace {
 
 // A root of the decreasing function f on [lo, hi] (f(lo) > 0 > f(hi); flo, fhi when known, else
-// NaN), searched from the guess g: a step of δ towards the root, then secant steps aimed a fifth past
-// it, until a pair brackets the root; Brent then needs a few steps on that short bracket instead of a
-// dozen on the whole range. A guess far off (the first pitched wind speed after rated) costs a step
-// or two more, not the whole range. An end of the range is evaluated by `outer` (which may throw to
-// say the root is not in the range).
+// NaN), searched from the guess g: a first step aimed at the root with `slope` (f' at a neighbour's
+// root, if negative), else a step of δ towards it; then secant steps aimed a fifth past it, until a
+// pair brackets the root or the balance is within ftol; Brent then needs a step or two on that short
+// bracket instead of a dozen on the whole range. A guess far off (the first pitched wind speed after
+// rated) costs a step or two more, not the whole range. An end of the range is evaluated by `outer`
+// (which may throw to say the root is not in the range). `slope` receives f' of the search's first
+// pair (0 if none).
 template <class F>
 BrentResult guessedRoot(F&& f, double lo, double hi, double flo, double fhi, double g, double delta, double ftol,
-                        const std::function<double(double)>& outer) {
+                        const std::function<double(double)>& outer, double& slope) {
   auto at = [&](double x) {
     if (x == lo) return std::isnan(flo) ? (flo = outer(lo)) : flo;
     if (x == hi) return std::isnan(fhi) ? (fhi = outer(hi)) : fhi;
     return f(x);
   };
+  const double hint = slope;
+  slope = 0;
   double x0 = std::clamp(g, lo, hi), f0 = at(x0);
   int evals = 1;
   if (std::abs(f0) < ftol) return {x0, f0, evals, true};
   const double dir = f0 > 0 ? 1.0 : -1.0;  // f decreases: the root is above x0 where f > 0
-  double step = delta;
+  double step = hint < 0 ? std::clamp(std::abs(f0 / hint), 1e-3 * delta, 8 * delta) : delta;
   for (int k = 0; k < 8; ++k) {
     const double x1 = std::clamp(x0 + dir * step, lo, hi);
     if (x1 == x0) break;  // at an end with the root beyond it
     const double f1 = at(x1);
     ++evals;
-    if (f1 == 0) return {x1, f1, evals, true};
+    const double secant = (f1 - f0) / (x1 - x0);
+    if (k == 0) slope = secant;
+    if (std::abs(f1) < ftol) return {x1, f1, evals, true};
     if ((f1 > 0) != (f0 > 0)) {
       BrentResult r = brent(f, std::min(x0, x1), std::max(x0, x1), x0 < x1 ? f0 : f1, x0 < x1 ? f1 : f0, ftol, 1e-10,
                             100);
       r.evals += evals;
       return r;
     }
-    const double slope = (f1 - f0) / (x1 - x0);
     // The secant's distance to the root, 1.2× (to land past it), at least the last step, at most 8×.
-    const double reach = slope < 0 ? 1.2 * std::abs(f1 / slope) : 8 * step;
+    const double reach = secant < 0 ? 1.2 * std::abs(f1 / secant) : 8 * step;
     step = std::clamp(reach, std::abs(x1 - x0), 8 * std::abs(x1 - x0));
     x0 = x1, f0 = f1;
   }
@@ -227,7 +232,7 @@ SteadyState trimAtWindSpeed(const Model& m, double wind, const TrimGuess& guess,
   const double ftol = opt.tolerance * scale;
   TorqueBalance balance(m, wind, guess, opt);
 
-  double omega = rated, pitch = opt.min_pitch;
+  double omega = rated, pitch = opt.min_pitch, search_slope = 0;
   bool above = false;
   const double nan = std::numeric_limits<double>::quiet_NaN();
   if (law.induction()) {
@@ -271,26 +276,36 @@ SteadyState trimAtWindSpeed(const Model& m, double wind, const TrimGuess& guess,
     };
     struct OtherSide {};  // the guessed search met the balance at rated speed and fine pitch on the other side
     std::optional<BrentResult> r;
+    double slope = 0;  // of the guessed search, for the next wind speed's
     try {
       if (guess.pitch > opt.min_pitch) {
-        r = guessedRoot(fp, opt.min_pitch, opt.max_pitch, nan, nan, guess.pitch, 0.01, ftol, [&](double p) {
-          if (p != opt.min_pitch) return top(p);
-          const double f_fine = fp(p);
-          if (f_fine <= 0) throw OtherSide{};
-          return f_fine;
-        });
+        slope = guess.pitch_slope;
+        r = guessedRoot(
+            fp, opt.min_pitch, opt.max_pitch, nan, nan, guess.pitch, 0.01, ftol,
+            [&](double p) {
+              if (p != opt.min_pitch) return top(p);
+              const double f_fine = fp(p);
+              if (f_fine <= 0) throw OtherSide{};
+              return f_fine;
+            },
+            slope);
         above = true;
       } else if (guess.rotor_speed > low && guess.rotor_speed < rated) {
-        r = guessedRoot(fw, low, rated, nan, nan, guess.rotor_speed, 0.01 * guess.rotor_speed, ftol, [&](double w) {
-          if (w != rated) return slow(w);
-          const double f_rated = fw(w);
-          if (f_rated > 0) throw OtherSide{};
-          return f_rated;
-        });
+        slope = guess.speed_slope;
+        r = guessedRoot(
+            fw, low, rated, nan, nan, guess.rotor_speed, 0.01 * guess.rotor_speed, ftol,
+            [&](double w) {
+              if (w != rated) return slow(w);
+              const double f_rated = fw(w);
+              if (f_rated > 0) throw OtherSide{};
+              return f_rated;
+            },
+            slope);
       }
     } catch (const OtherSide&) {
       r.reset();
       above = false;
+      slope = 0;
     }
     if (!r) {
       const double at_rated = fw(rated);
@@ -301,6 +316,7 @@ SteadyState trimAtWindSpeed(const Model& m, double wind, const TrimGuess& guess,
     if (!r->converged)
       throw ComputeError(at + (above ? "the pitch trim did not converge" : "the rotor-speed trim did not converge"));
     (above ? pitch : omega) = r->x;
+    search_slope = slope;
   }
   OperatingCondition c;
   c.wind_speed = wind;
@@ -308,6 +324,7 @@ SteadyState trimAtWindSpeed(const Model& m, double wind, const TrimGuess& guess,
   c.collective_pitch = pitch;
   SteadyState out = stateOf(m, c, balance);
   out.above_rated = above;
+  out.search_slope = search_slope;
   return out;
 }
 
@@ -331,6 +348,7 @@ std::vector<SteadyState> trimSchedule(const Model& m, const std::vector<double>&
       g.pitch = *p.condition.collective_pitch;
       g.q = p.azimuth_q;
       g.stiffness = p.azimuth_stiffness;
+      (p.above_rated ? g.pitch_slope : g.speed_slope) = p.search_slope;
       if (n >= 2 && out[n - 2].above_rated && p.above_rated) {
         const SteadyState& pp = out[n - 2];
         const double dw = pw - *pp.condition.wind_speed;

@@ -40,6 +40,10 @@ struct SteadyState {
   double tip_deflection = 0;     ///< blade 1 tip, out of the (coned) rotor plane, downwind positive [m]
   double tower_top_fa = 0;       ///< tower-top displacement downwind (output TTDspFA) [m], 0 without it
   int evaluations = 0;           ///< torque evaluations (each: `azimuths` equilibria)
+  /// ∂f/∂(pitch) above rated [N m/rad], ∂f/∂Ω below [N m s/rad], f the azimuth-averaged force on the
+  /// rotor azimuth, from the first two points of a search started next to a guess (0 otherwise): a
+  /// neighbouring wind speed's first step (TrimGuess).
+  double search_slope = 0;
   /// The equilibria at the azimuths k·2π/(B n) of the last evaluation (all coordinates), and the last
   /// Newton matrix of each (K on its solved coordinates): warm starts for a neighbouring wind speed.
   std::vector<VecX> azimuth_q;
@@ -61,6 +65,9 @@ SteadyState trimAtWindSpeed(const Model& model, double wind_speed, const TrimOpt
 struct TrimGuess {
   double rotor_speed = 0;  ///< [rad/s], used below rated
   double pitch = 0;        ///< [rad], used above rated
+  /// The neighbour's SteadyState::search_slope, by the variable it was searched in (0: unknown): the
+  /// first step is aimed at the root with it instead of a fixed step of 1 % (0.01 rad).
+  double speed_slope = 0, pitch_slope = 0;
   /// The neighbour's equilibria and Newton matrices (SteadyState::azimuth_q, azimuth_stiffness): each
   /// equilibrium starts from the deflections there instead of the undeflected turbine, its tolerance
   /// still that of the cold start. Empty: cold starts.
