@@ -258,6 +258,31 @@ T bemResidual(const BemStation& s, const T& phi, const T& Vx, const T& Vy, const
 
 namespace {
 
+struct SecantRoot {
+  double x = 0, fx = 0;
+  bool converged = false;
+};
+
+// Secant steps on from the pair (x0, f0), (x1, f1) while each next point is inside(x); every point
+// is shown to seen(x, f). Converged as brent() stops: |f| < ftol, or a step below xtol. `slope`
+// receives the secant slope of the last pair.
+template <class F, class Inside, class Seen>
+SecantRoot secantSteps(F& f, double x0, double f0, double x1, double f1, double ftol, double xtol, double& slope,
+                       int& evals, Inside inside, Seen seen) {
+  for (int it = 0; it < 6 && f1 != f0; ++it) {
+    slope = (f1 - f0) / (x1 - x0);
+    const double x2 = x1 - f1 / slope;
+    if (!inside(x2)) break;
+    const double f2 = f(x2);
+    ++evals;
+    if (f2 != f1) slope = (f2 - f1) / (x2 - x1);
+    if (std::abs(f2) < ftol || std::abs(x2 - x1) <= 2.0 * DBL_EPSILON * std::abs(x2) + xtol) return {x2, f2, true};
+    seen(x2, f2);
+    x0 = x1, f0 = f1, x1 = x2, f1 = f2;
+  }
+  return {};
+}
+
 // A root of f in [a, b] (fa, fb of opposite signs) from x0 inside, by secant steps that keep a
 // bracket and fall back to Brent on it when a step leaves it or stalls. Stops as brent() does.
 // `slope`: f' near x0 for the first step (0: a small step measures it); receives the last secant slope.
@@ -269,7 +294,7 @@ BrentResult secantFrom(F&& f, double a, double b, double fa, double fb, double x
     if ((fx > 0) == (fa > 0)) a = x, fa = fx;
     else b = x, fb = fx;
   };
-  double f0 = f(x0);
+  const double f0 = f(x0);
   ++evals;
   if (std::abs(f0) < ftol) return {x0, f0, evals, true};
   shrink(x0, f0);
@@ -281,26 +306,17 @@ BrentResult secantFrom(F&& f, double a, double b, double fa, double fb, double x
     x1 = (f0 > 0) == (fa > 0) ? x0 + h : x0 - h;
   }
   if (!(x1 > a && x1 < b)) x1 = 0.5 * (a + b);
-  double f1 = f(x1);
+  const double f1 = f(x1);
   ++evals;
   slope = f1 != f0 ? (f1 - f0) / (x1 - x0) : 0.0;
   if (std::abs(f1) < ftol) return {x1, f1, evals, true};
   shrink(x1, f1);
-  for (int it = 0; it < 6; ++it) {
-    if (f1 == f0) break;
-    if (it > 0) slope = (f1 - f0) / (x1 - x0);  // the first is the one just measured
-    const double x2 = x1 - f1 / slope;
-    if (!(x2 > a && x2 < b)) break;
-    const double f2 = f(x2);
-    ++evals;
-    if (std::abs(f2) < ftol || std::abs(x2 - x1) <= 2.0 * DBL_EPSILON * std::abs(x2) + xtol)
-      return {x2, f2, evals, true};
-    shrink(x2, f2);
-    x0 = x1, f0 = f1, x1 = x2, f1 = f2;
-  }
-  BrentResult r = brent(f, a, b, fa, fb, ftol, xtol, maxit);
-  r.evals += evals;
-  return r;
+  const SecantRoot r = secantSteps(
+      f, x0, f0, x1, f1, ftol, xtol, slope, evals, [&](double x) { return x > a && x < b; }, shrink);
+  if (r.converged) return {r.x, r.fx, evals, true};
+  BrentResult br = brent(f, a, b, fa, fb, ftol, xtol, maxit);
+  br.evals += evals;
+  return br;
 }
 
 struct UnbracketedRoot {
@@ -315,24 +331,18 @@ struct UnbracketedRoot {
 template <class F>
 UnbracketedRoot secantInside(F&& f, double a, double b, double x0, double ftol, double xtol, double& slope) {
   UnbracketedRoot r;
-  double f0 = f(x0);
+  const double f0 = f(x0);
   ++r.evals;
   if (std::abs(f0) < ftol) return UnbracketedRoot{x0, r.evals, true};
-  double x1 = std::isfinite(slope) && slope != 0.0 ? x0 - f0 / slope : x0 + std::max(1e-7, 1e-7 * std::abs(x0));
-  for (int it = 0; it < 6; ++it) {
-    if (!(x1 > a && x1 < b)) break;
-    const double f1 = f(x1);
-    ++r.evals;
-    if (std::abs(f1) < ftol || (it > 0 && std::abs(x1 - x0) <= 2.0 * DBL_EPSILON * std::abs(x1) + xtol)) {
-      if (f1 != f0) slope = (f1 - f0) / (x1 - x0);
-      return UnbracketedRoot{x1, r.evals, true};
-    }
-    if (f1 == f0) break;
-    slope = (f1 - f0) / (x1 - x0);
-    const double x2 = x1 - f1 / slope;
-    x0 = x1, f0 = f1, x1 = x2;
-  }
-  return r;
+  const double x1 = std::isfinite(slope) && slope != 0.0 ? x0 - f0 / slope : x0 + std::max(1e-7, 1e-7 * std::abs(x0));
+  if (!(x1 > a && x1 < b)) return r;
+  const double f1 = f(x1);
+  ++r.evals;
+  if (f1 != f0) slope = (f1 - f0) / (x1 - x0);
+  if (std::abs(f1) < ftol) return UnbracketedRoot{x1, r.evals, true};
+  const SecantRoot s = secantSteps(
+      f, x0, f0, x1, f1, ftol, xtol, slope, r.evals, [&](double x) { return x > a && x < b; }, [](double, double) {});
+  return s.converged ? UnbracketedRoot{s.x, r.evals, true} : r;
 }
 
 }  // namespace
