@@ -96,10 +96,42 @@ Sets findSets(const std::vector<int>& blade, const std::vector<int>& velocity_of
 /// fixed entries. The inverse holds B⁻¹ per block and −B⁻¹ (W B') B⁻¹ from members to rates, so every
 /// sample costs products with a few non-zeros per column instead of a dense factorization.
 struct Transform {
-  Eigen::SparseMatrix<double> T, Tinv;
+  Eigen::SparseMatrix<double> T, Tinv, Tdot;  ///< Tdot = dT/dt (states only; empty otherwise)
 };
 
-Transform transformOf(const Sets& s, int N, Index n, double psi, double W) {
+/// The sparsity of a set's transform, built once for all samples: the identity on fixed entries and
+/// the blade blocks (values set per sample by fillTransform).
+Transform transformPattern(const Sets& s, int N, Index n, bool rates_of_time) {
+  std::vector<Eigen::Triplet<double>> t, td;
+  for (Index i = 0; i < n; ++i)
+    if (s.coords[i].kind == MbcKind::Fixed) t.emplace_back(i, i, 1.0);
+  for (std::size_t j = 0; j < s.members.size(); ++j) {
+    const std::vector<Index>& q = s.members[j];
+    const std::vector<Index>& v = s.rates[j];
+    for (int b = 0; b < N; ++b)
+      for (int m = 0; m < N; ++m) {
+        t.emplace_back(q[b], q[m], 0.0);
+        td.emplace_back(q[b], q[m], 0.0);
+        if (v[0] < 0) continue;  // first-order state (or an input or output)
+        t.emplace_back(v[b], v[m], 0.0);
+        t.emplace_back(v[b], q[m], 0.0);
+        td.emplace_back(v[b], q[m], 0.0);
+        td.emplace_back(v[b], v[m], 0.0);
+      }
+  }
+  Transform x;
+  x.T.resize(n, n);
+  x.T.setFromTriplets(t.begin(), t.end());
+  x.Tinv = x.T;
+  if (rates_of_time) {
+    x.Tdot.resize(n, n);
+    x.Tdot.setFromTriplets(td.begin(), td.end());
+  }
+  return x;
+}
+
+/// The values of T, T⁻¹ (and Ṫ) at azimuth psi, rotor speed W and acceleration Wdot into the pattern.
+void fillTransform(const Sets& s, int N, double psi, double W, double Wdot, Transform& x) {
   Eigen::MatrixXd B(N, N), dB(N, N);
   for (int b = 0; b < N; ++b)
     for (int m = 0; m < N; ++m) {
@@ -108,33 +140,26 @@ Transform transformOf(const Sets& s, int N, Index n, double psi, double W) {
     }
   const Eigen::MatrixXd Bi = B.partialPivLu().inverse();
   const Eigen::MatrixXd coupling = -Bi * dB * Bi;
-  std::vector<Eigen::Triplet<double>> t, ti;
-  for (Index i = 0; i < n; ++i)
-    if (s.coords[i].kind == MbcKind::Fixed) {
-      t.emplace_back(i, i, 1.0);
-      ti.emplace_back(i, i, 1.0);
-    }
+  const bool tdot = x.Tdot.rows() > 0;
   for (std::size_t j = 0; j < s.members.size(); ++j) {
     const std::vector<Index>& q = s.members[j];
-    const bool rates = !s.rates.empty() && s.rates[j][0] >= 0;
+    const std::vector<Index>& v = s.rates[j];
     for (int b = 0; b < N; ++b)
       for (int m = 0; m < N; ++m) {
-        t.emplace_back(q[b], q[m], B(b, m));
-        ti.emplace_back(q[b], q[m], Bi(b, m));
-        if (!rates) continue;
-        const std::vector<Index>& v = s.rates[j];
-        t.emplace_back(v[b], v[m], B(b, m));
-        t.emplace_back(v[b], q[m], dB(b, m));
-        ti.emplace_back(v[b], v[m], Bi(b, m));
-        ti.emplace_back(v[b], q[m], coupling(b, m));
+        x.T.coeffRef(q[b], q[m]) = B(b, m);
+        x.Tinv.coeffRef(q[b], q[m]) = Bi(b, m);
+        const double t2 = tdot ? basis(m, N, b, psi, 1) : 0.0;
+        if (tdot) x.Tdot.coeffRef(q[b], q[m]) = W * t2;
+        if (v[0] < 0) continue;
+        x.T.coeffRef(v[b], v[m]) = B(b, m);
+        x.T.coeffRef(v[b], q[m]) = dB(b, m);
+        x.Tinv.coeffRef(v[b], v[m]) = Bi(b, m);
+        x.Tinv.coeffRef(v[b], q[m]) = coupling(b, m);
+        if (!tdot) continue;
+        x.Tdot.coeffRef(v[b], q[m]) = W * W * basis(m, N, b, psi, 2) + Wdot * t2;
+        x.Tdot.coeffRef(v[b], v[m]) = W * t2;
       }
   }
-  Transform x;
-  x.T.resize(n, n);
-  x.Tinv.resize(n, n);
-  x.T.setFromTriplets(t.begin(), t.end());
-  x.Tinv.setFromTriplets(ti.begin(), ti.end());
-  return x;
 }
 
 void checkMatrix(const Eigen::MatrixXd& X, Index rows, Index cols, const std::string& name) {
@@ -150,6 +175,7 @@ void checkMatrix(const Eigen::MatrixXd& X, Index rows, Index cols, const std::st
 struct Prepared {
   Sets x, u, y;
   Index nx = 0, nu = 0, ny = 0;
+  Transform tx, tu, ty;  ///< patterns; each sample fills them
 };
 
 Prepared prepare(const MbcLayout& L, const MbcSample& s) {
@@ -167,10 +193,13 @@ Prepared prepare(const MbcLayout& L, const MbcSample& s) {
   if (!L.output_blade.empty() && (s.C.size() || s.D.size())) p.y = findSets(L.output_blade, {}, L.num_blades, p.ny, "output_blade");
   else p.y.coords.assign(static_cast<std::size_t>(p.ny), MbcCoordinate{});
   p.x = findSets(L.state_blade, L.velocity_of, L.num_blades, p.nx, "state_blade");
+  p.tx = transformPattern(p.x, L.num_blades, p.nx, true);
+  p.tu = transformPattern(p.u, L.num_blades, p.nu, false);
+  p.ty = transformPattern(p.y, L.num_blades, p.ny, false);
   return p;
 }
 
-MbcSample transformPrepared(const Prepared& p, int N, const MbcSample& s, const std::string& tag) {
+MbcSample transformPrepared(Prepared& p, int N, const MbcSample& s, const std::string& tag) {
   checkMatrix(s.A, p.nx, p.nx, "A" + tag);
   if (s.B.size()) checkMatrix(s.B, p.nx, p.nu, "B" + tag);
   if (s.C.size()) checkMatrix(s.C, p.ny, p.nx, "C" + tag);
@@ -179,27 +208,18 @@ MbcSample transformPrepared(const Prepared& p, int N, const MbcSample& s, const 
     fail("azimuth" + tag, "azimuth, rotor speed and acceleration must be finite");
 
   const double psi = s.azimuth, W = s.rotor_speed, Wdot = s.rotor_acceleration;
-  const Transform X = transformOf(p.x, N, p.nx, psi, W);
-  Eigen::MatrixXd Tdot = Eigen::MatrixXd::Zero(p.nx, p.nx);
-  for (std::size_t j = 0; j < p.x.members.size(); ++j) {
-    const auto& q = p.x.members[j];
-    const auto& v = p.x.rates[j];
-    for (int b = 0; b < N; ++b)
-      for (int m = 0; m < N; ++m) {
-        const double t2 = basis(m, N, b, psi, 1), t3 = basis(m, N, b, psi, 2);
-        Tdot(q[b], q[m]) = W * t2;
-        if (v[0] < 0) continue;  // first-order state
-        Tdot(v[b], q[m]) = W * W * t3 + Wdot * t2;
-        Tdot(v[b], v[m]) = W * t2;
-      }
-  }
+  Transform& X = p.tx;
+  fillTransform(p.x, N, psi, W, Wdot, X);
   MbcSample out;
   out.azimuth = s.azimuth;
   out.rotor_speed = s.rotor_speed;
   out.rotor_acceleration = s.rotor_acceleration;
-  const Eigen::MatrixXd AT = s.A * X.T;
-  out.A = X.Tinv * (AT - Tdot);
-  const Transform U = transformOf(p.u, N, p.nu, psi, 0.0), Y = transformOf(p.y, N, p.ny, psi, 0.0);
+  Eigen::MatrixXd AT = s.A * X.T;
+  AT -= X.Tdot;
+  out.A = X.Tinv * AT;
+  Transform &U = p.tu, &Y = p.ty;
+  fillTransform(p.u, N, psi, 0.0, 0.0, U);
+  fillTransform(p.y, N, psi, 0.0, 0.0, Y);
   if (s.B.size()) out.B = X.Tinv * Eigen::MatrixXd(s.B * U.T);
   if (s.C.size()) out.C = Y.Tinv * Eigen::MatrixXd(s.C * X.T);
   if (s.D.size()) out.D = Y.Tinv * Eigen::MatrixXd(s.D * U.T);
@@ -233,12 +253,13 @@ MbcLayout secondOrderLayout(int num_blades, const std::vector<int>& dof_blade,
 }
 
 MbcSample mbcTransform(const MbcLayout& layout, const MbcSample& sample) {
-  return transformPrepared(prepare(layout, sample), layout.num_blades, sample, "");
+  Prepared p = prepare(layout, sample);
+  return transformPrepared(p, layout.num_blades, sample, "");
 }
 
 MbcResult mbcAverage(const MbcLayout& layout, const std::vector<MbcSample>& samples) {
   if (samples.empty()) fail("samples", "no azimuth given");
-  const Prepared p = prepare(layout, samples.front());
+  Prepared p = prepare(layout, samples.front());
   MbcResult r;
   r.states = p.x.coords;
   r.inputs = p.u.coords;
