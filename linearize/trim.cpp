@@ -232,7 +232,8 @@ SteadyState trimAtWindSpeed(const Model& m, double wind, const TrimGuess& guess,
   const double ftol = opt.tolerance * scale;
   TorqueBalance balance(m, wind, guess, opt);
 
-  double omega = rated, pitch = opt.min_pitch, search_slope = 0;
+  double omega = rated, pitch = opt.min_pitch;
+  double search_slope = 0;  // f' of the guessed search, for the next wind speed's (SteadyState::search_slope)
   bool above = false;
   const double nan = std::numeric_limits<double>::quiet_NaN();
   if (law.induction()) {
@@ -276,10 +277,9 @@ SteadyState trimAtWindSpeed(const Model& m, double wind, const TrimGuess& guess,
     };
     struct OtherSide {};  // the guessed search met the balance at rated speed and fine pitch on the other side
     std::optional<BrentResult> r;
-    double slope = 0;  // of the guessed search, for the next wind speed's
     try {
       if (guess.pitch > opt.min_pitch) {
-        slope = guess.pitch_slope;
+        search_slope = guess.pitch_slope;
         r = guessedRoot(
             fp, opt.min_pitch, opt.max_pitch, nan, nan, guess.pitch, 0.01, ftol,
             [&](double p) {
@@ -288,10 +288,10 @@ SteadyState trimAtWindSpeed(const Model& m, double wind, const TrimGuess& guess,
               if (f_fine <= 0) throw OtherSide{};
               return f_fine;
             },
-            slope);
+            search_slope);
         above = true;
       } else if (guess.rotor_speed > low && guess.rotor_speed < rated) {
-        slope = guess.speed_slope;
+        search_slope = guess.speed_slope;
         r = guessedRoot(
             fw, low, rated, nan, nan, guess.rotor_speed, 0.01 * guess.rotor_speed, ftol,
             [&](double w) {
@@ -300,12 +300,12 @@ SteadyState trimAtWindSpeed(const Model& m, double wind, const TrimGuess& guess,
               if (f_rated > 0) throw OtherSide{};
               return f_rated;
             },
-            slope);
+            search_slope);
       }
     } catch (const OtherSide&) {
       r.reset();
       above = false;
-      slope = 0;
+      search_slope = 0;
     }
     if (!r) {
       const double at_rated = fw(rated);
@@ -316,7 +316,6 @@ SteadyState trimAtWindSpeed(const Model& m, double wind, const TrimGuess& guess,
     if (!r->converged)
       throw ComputeError(at + (above ? "the pitch trim did not converge" : "the rotor-speed trim did not converge"));
     (above ? pitch : omega) = r->x;
-    search_slope = slope;
   }
   OperatingCondition c;
   c.wind_speed = wind;
