@@ -121,10 +121,17 @@ SectionState<T> bemSection(const AeroModel& am, const AeroStation& st, const T& 
   const double vscale = tol * (std::abs(x) + std::abs(y));
   if (!(root.valid && std::abs(root.vx - x) <= vscale && std::abs(root.vy - y) <= vscale &&
         std::abs(root.theta - b.theta) <= tol && std::abs(root.r - b.r) <= tol * b.r)) {
-    // The element's last root starts the search: the equilibrium iterates move it a little.
-    const aero::BemSolution sol = aero::solveInflow(b, x, y, am.bem,
-                                                    root.valid ? std::optional<double>(root.phi) : std::nullopt,
-                                                    root.valid ? root.search_slope : 0.0);
+    // The element's last root starts the search: the equilibrium iterates move it a little. Moved
+    // as the frozen-wake angle atan2(X, Y) (X = Vx(1−a), Y = Vy(1+a')) moves to first order, it is
+    // nearer still: what is left is the induction's response to the change.
+    std::optional<double> hint;
+    if (root.valid) {
+      const double X = root.vx * (1 - root.a), Y = root.vy * (1 + root.ap);
+      const double dX = (x - root.vx) * (1 - root.a), dY = (y - root.vy) * (1 + root.ap);
+      const double moved = (Y * dX - X * dY) / (X * X + Y * Y);
+      hint = root.phi + (std::abs(moved) < 0.05 ? moved : 0.0);
+    }
+    const aero::BemSolution sol = aero::solveInflow(b, x, y, am.bem, hint, root.valid ? root.search_slope : 0.0);
     root = BemRoot{true, x, y, b.theta, b.r, sol.phi, sol.a, sol.ap};
     root.search_slope = sol.slope;
   }
