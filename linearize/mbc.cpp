@@ -132,12 +132,14 @@ Transform transformPattern(const Sets& s, int N, Index n, bool rates_of_time) {
 
 /// The values of T, T⁻¹ (and Ṫ) at azimuth psi, rotor speed W and acceleration Wdot into the pattern.
 void fillTransform(const Sets& s, int N, double psi, double W, double Wdot, Transform& x) {
-  Eigen::MatrixXd B(N, N), dB(N, N);
+  Eigen::MatrixXd B(N, N), B1(N, N), B2(N, N);  // T1, ∂T1/∂ψ, ∂²T1/∂ψ² (blade b, coordinate m)
   for (int b = 0; b < N; ++b)
     for (int m = 0; m < N; ++m) {
       B(b, m) = basis(m, N, b, psi, 0);
-      dB(b, m) = W * basis(m, N, b, psi, 1);
+      B1(b, m) = basis(m, N, b, psi, 1);
+      B2(b, m) = basis(m, N, b, psi, 2);
     }
+  const Eigen::MatrixXd dB = W * B1;
   const Eigen::MatrixXd Bi = B.partialPivLu().inverse();
   const Eigen::MatrixXd coupling = -Bi * dB * Bi;
   const bool tdot = x.Tdot.rows() > 0;
@@ -148,7 +150,7 @@ void fillTransform(const Sets& s, int N, double psi, double W, double Wdot, Tran
       for (int m = 0; m < N; ++m) {
         x.T.coeffRef(q[b], q[m]) = B(b, m);
         x.Tinv.coeffRef(q[b], q[m]) = Bi(b, m);
-        const double t2 = tdot ? basis(m, N, b, psi, 1) : 0.0;
+        const double t2 = B1(b, m);
         if (tdot) x.Tdot.coeffRef(q[b], q[m]) = W * t2;
         if (v[0] < 0) continue;
         x.T.coeffRef(v[b], v[m]) = B(b, m);
@@ -156,7 +158,7 @@ void fillTransform(const Sets& s, int N, double psi, double W, double Wdot, Tran
         x.Tinv.coeffRef(v[b], v[m]) = Bi(b, m);
         x.Tinv.coeffRef(v[b], q[m]) = coupling(b, m);
         if (!tdot) continue;
-        x.Tdot.coeffRef(v[b], q[m]) = W * W * basis(m, N, b, psi, 2) + Wdot * t2;
+        x.Tdot.coeffRef(v[b], q[m]) = W * W * B2(b, m) + Wdot * t2;
         x.Tdot.coeffRef(v[b], v[m]) = W * t2;
       }
   }
