@@ -228,6 +228,9 @@ OperatingPoint solveOperatingPoint(const Model& m, const OperatingPoint& start, 
         prev = now;
         ++op.iterations;
       }
+      // The updated matrix is nearer the Jacobian here than the one given: a next solve nearby (the
+      // trim's next rotor speed or pitch) starts from it (a Newton step below replaces it).
+      if (opt.newton_matrix && op.iterations > 0) *opt.newton_matrix = Kc;
     }
   }
   while (ns > 0 && es.lpNorm<Eigen::Infinity>() > opt.tolerance * scale) {

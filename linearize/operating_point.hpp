@@ -45,8 +45,8 @@ struct EquilibriumOptions {
   /// As `chord`, the Newton matrix itself: K on the solved coordinates in their order (a solve of the
   /// same model at a nearby condition, `newton_matrix`). Used when `chord` is null. Must outlive the call.
   const MatX* chord_matrix = nullptr;
-  /// If not null: receives the last Newton matrix (K on the solved coordinates), untouched when the
-  /// solve took no Newton step.
+  /// If not null: receives the last Newton matrix (K on the solved coordinates) — after chord steps
+  /// only, the chord matrix with their Broyden updates; untouched when the solve took no step.
   MatX* newton_matrix = nullptr;
   /// The tolerance's reference [N, N m]; 0: max(1, ‖e_solved‖∞ at the start). A warm start (a
   /// neighbouring point's equilibrium) passes the scale of the cold start it continues.
