@@ -97,7 +97,8 @@ SectionLoads<T> loadsFromFlow(const BemStation& s, const T& x, const T& y, const
   using std::sqrt;
   SectionLoads<T> L;
   const double xv = valueOf(x), yv = valueOf(y);
-  L.phi = (equal(yv, 0.0) && equal(xv, 0.0)) ? T(0.0) : atan2T(x, y);
+  const bool still = equal(yv, 0.0) && equal(xv, 0.0);
+  L.phi = still ? T(0.0) : atan2T(x, y);
   L.alpha = L.phi - theta;
   const T W2 = x * x + y * y;
   L.W = valueOf(W2) > 0 ? T(sqrt(W2)) : T(0.0);
@@ -105,7 +106,9 @@ SectionLoads<T> loadsFromFlow(const BemStation& s, const T& x, const T& y, const
   L.cl = c.cl;
   L.cd = c.cd;
   L.cm = c.cm;
-  const T sphi = sin(L.phi), cphi = cos(L.phi);
+  // sin φ = x/W, cos φ = y/W: the flow's own direction, without evaluating the angle's sine again.
+  const bool direction = !still && valueOf(W2) > 0;
+  const T sphi = direction ? T(x / L.W) : T(0.0), cphi = direction ? T(y / L.W) : T(1.0);
   L.cx = c.cl * cphi + c.cd * sphi;
   L.cy = c.cl * sphi - c.cd * cphi;
   const T q = 0.5 * rho * W2;
