@@ -208,11 +208,16 @@ OperatingPoint solveOperatingPoint(const Model& m, const OperatingPoint& start, 
     // needs the AD stiffness); a step that gains less than 4× is undone and Newton goes on.
     MatX Kc = opt.chord ? chordMatrix(*opt.chord, op.solved) : *opt.chord_matrix;
     if (Kc.rows() == ns && Kc.cols() == ns) {
+      // A regular chord matrix is inverted once and its inverse follows the Broyden updates by
+      // Sherman–Morrison (n² per step instead of a factorization); a rank-deficient one (a rigid-body
+      // motion the hold rule does not catch) keeps the minimum-norm steps of its factorization.
       Eigen::CompleteOrthogonalDecomposition<MatX> cod(Kc);
+      MatX Kinv;
+      if (cod.rank() == ns) Kinv = Kc.partialPivLu().inverse();
       double prev = es.lpNorm<Eigen::Infinity>();
       while (op.iterations < 8 && prev > target) {
-        if (op.iterations > 0) cod.compute(Kc);
-        const VecX dq = cod.solve(es);
+        if (op.iterations > 0 && Kinv.size() == 0) cod.compute(Kc);
+        const VecX dq = Kinv.size() > 0 ? VecX(Kinv * es) : VecX(cod.solve(es));
         for (int k = 0; k < ns; ++k) op.q(op.solved[k]) += dq(k);
         const VecX next = solvedResidual();
         const double now = next.lpNorm<Eigen::Infinity>();
@@ -223,7 +228,19 @@ OperatingPoint solveOperatingPoint(const Model& m, const OperatingPoint& start, 
         }
         // Broyden's update (Broyden 1965): the matrix that maps this step onto the residual's change,
         // Kc dq = es − next, nearest the last one; as Kc dq = es, the correction is −next dqᵀ / dqᵀdq.
-        Kc -= next * dq.transpose() / dq.squaredNorm();
+        const double dq2 = dq.squaredNorm();
+        Kc -= next * dq.transpose() / dq2;
+        if (Kinv.size() > 0) {
+          // (Kc + u dqᵀ)⁻¹ = Kinv − (Kinv u)(dqᵀ Kinv) / (1 + dqᵀ Kinv u), u = −next / dqᵀdq.
+          const VecX Ku = -(Kinv * next) / dq2;
+          const double denom = 1.0 + dq.dot(Ku);
+          if (std::abs(denom) > 1e-8) {
+            const Eigen::RowVectorXd dK = dq.transpose() * Kinv;
+            Kinv -= Ku * dK / denom;
+          } else {  // nearly singular after the update: factorize it
+            Kinv.resize(0, 0);
+          }
+        }
         es = next;
         prev = now;
         ++op.iterations;
