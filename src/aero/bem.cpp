@@ -90,6 +90,13 @@ T lossFactor(const BemStation& s, const T& sphi, const BemOptions& o) {
 
 /// Relative flow (x, y) = (Vx(1−a), Vy(1+a')) → φ, α, W, coefficients and loads (AeroDyn
 /// ComputePhiWithInduction, SetInputs_for_UA, BEMT_CalcOutput with AIDrag = TIDrag = true, SetOutputsFromBEMT).
+// The element's Reynolds number at relative speed W [m/s] (AeroDyn GetReynoldsNumber, ≥ 0.001).
+template <class T>
+T reynolds(const BemStation& s, const T& W) {
+  const T re = W * (s.chord / s.kin_visc);
+  return valueOf(re) > 0.001 ? re : T(0.001);
+}
+
 template <class T>
 SectionLoads<T> loadsFromFlow(const BemStation& s, const T& x, const T& y, const T& theta, double rho) {
   using std::cos;
@@ -102,7 +109,8 @@ SectionLoads<T> loadsFromFlow(const BemStation& s, const T& x, const T& y, const
   L.alpha = L.phi - theta;
   const T W2 = x * x + y * y;
   L.W = valueOf(W2) > 0 ? T(sqrt(W2)) : T(0.0);
-  const Coefficients<T> c = evaluate(*s.polar, L.alpha);
+  const Coefficients<T> c = s.polar->re_tables.empty() ? evaluate(*s.polar, L.alpha)
+                                                       : evaluate(*s.polar, L.alpha, reynolds(s, L.W));
   L.cl = c.cl;
   L.cd = c.cd;
   L.cm = c.cm;
@@ -173,7 +181,9 @@ Induction<T> inductions(const BemStation& s, const T& phi, const T& Vx, const T&
     return r;
   }
   const T alpha = phi - theta;  // computeAirfoilOperatingAOA, BEMMod_2D
-  const Coefficients<T> c = evaluate(*s.polar, alpha);
+  const Coefficients<T> c = s.polar->re_tables.empty()
+                                ? evaluate(*s.polar, alpha)
+                                : evaluate(*s.polar, alpha, reynolds(s, T(sqrt(Vx * Vx + Vy * Vy))));
   const T sphi = sin(phi), cphi = cos(phi);
   // Transform_ClCd_to_CxCy honouring AIDrag / TIDrag (only for the inductions).
   const T cx = o.ai_drag ? T(c.cl * cphi + c.cd * sphi) : T(c.cl * cphi);

@@ -49,6 +49,10 @@ struct BemStation {
   double chord = 0;       ///< [m]
   double theta = 0;       ///< twist + pitch [rad] (used by the overloads that take no theta)
   const Polar* polar = nullptr;  ///< airfoil table (not owned)
+  /// Kinematic viscosity [m²/s] for the Reynolds number chord·W/ν of a polar with tables on it: the
+  /// undisturbed W = √(Vx² + Vy²) in the BEM residual, the one with the induction in the loads (as
+  /// AeroDyn's BEMT and its outputs); limited to ≥ 0.001 as AeroDyn does.
+  double kin_visc = 1.464e-5;
 };
 
 /// AeroDyn BEMT options (AeroDyn input keys in parentheses).

@@ -131,4 +131,43 @@ Coefficients<T> evaluate(const Polar& p, const T& alpha) {
 template Coefficients<double> evaluate<double>(const Polar&, const double&);
 template Coefficients<ADChunk> evaluate<ADChunk>(const Polar&, const ADChunk&);
 
+Polar reynoldsPolar(std::vector<Polar> tables, const std::vector<double>& re, ReynoldsInterp interp,
+                    const std::vector<std::string>& sources) {
+  if (tables.empty() || tables.size() != re.size() || sources.size() != re.size())
+    throw InputError("airfoil tables on the Reynolds number: " + std::to_string(tables.size()) + " tables, " +
+                     std::to_string(re.size()) + " Reynolds numbers");
+  for (std::size_t k = 0; k < re.size(); ++k) {
+    if (!(re[k] > 0) || !std::isfinite(re[k]))
+      throw InputError(sources[k] + ": Re: the Reynolds number of a table interpolated on it must be positive (is " +
+                       fmt(re[k]) + ")");
+    if (k > 0 && !(re[k] > re[k - 1]))
+      throw InputError(sources[k] + ": Re: the tables' Reynolds numbers must increase strictly (" + fmt(re[k]) +
+                       " follows " + fmt(re[k - 1]) + "), as AeroDyn requires for interpolating on them");
+  }
+  Polar p = tables.front();
+  if (interp == ReynoldsInterp::None || tables.size() == 1) return p;
+  p.re_log = interp == ReynoldsInterp::Log;
+  for (double r : re) p.re_axis.push_back(p.re_log ? std::log(r) : r);
+  p.re_tables = std::move(tables);
+  return p;
+}
+
+template <class T>
+Coefficients<T> evaluate(const Polar& p, const T& alpha, const T& re) {
+  if (p.re_tables.empty()) return evaluate(p, alpha);
+  using std::log;
+  const T x = p.re_log ? T(log(re)) : re;
+  const double xv = valueOf(x);
+  const std::vector<double>& ax = p.re_axis;
+  if (!(xv > ax.front())) return evaluate(p.re_tables.front(), alpha);  // AeroDyn: <= the first (and NaN)
+  if (xv >= ax.back()) return evaluate(p.re_tables.back(), alpha);
+  const std::size_t i = static_cast<std::size_t>(std::upper_bound(ax.begin(), ax.end(), xv) - ax.begin()) - 1;
+  const T w = (x - ax[i]) / (ax[i + 1] - ax[i]);
+  const Coefficients<T> lo = evaluate(p.re_tables[i], alpha), hi = evaluate(p.re_tables[i + 1], alpha);
+  return {T(lo.cl + w * (hi.cl - lo.cl)), T(lo.cd + w * (hi.cd - lo.cd)), T(lo.cm + w * (hi.cm - lo.cm))};
+}
+
+template Coefficients<double> evaluate<double>(const Polar&, const double&, const double&);
+template Coefficients<ADChunk> evaluate<ADChunk>(const Polar&, const ADChunk&, const ADChunk&);
+
 }  // namespace whirl::aero

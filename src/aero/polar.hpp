@@ -20,7 +20,11 @@
 ///   by the same forward elimination and back substitution.
 /// - A table with fewer than 3 rows, or whose rows are all equal, is constant (`ConstData`).
 ///
-/// Only one table per airfoil (AeroDyn `AFTabMod = 1`, no Reynolds-number or UserProp interpolation).
+/// Several tables on the Reynolds number (AeroDyn `AFTabMod = 2`, AeroDyn v14 `MultiTab = RENUM`): each
+/// table is evaluated at α as above and the two whose Reynolds numbers bracket the element's are
+/// interpolated linearly in log Re (AeroDyn v15, `AFI_ComputeAirfoilCoefs2D` with `secondVals` = log Re)
+/// or in Re (AeroDyn v14's table IDs); below the first (above the last) the end table alone. UserProp
+/// tables (`AFTabMod = 3`) are not modelled.
 #include <array>
 #include <string>
 #include <vector>
@@ -43,7 +47,24 @@ struct Polar {
   /// Polynomial coefficients per segment i (alpha[i] ≤ α < alpha[i+1]): y = c[0] + c[1] x + c[2] x² + c[3] x³,
   /// x = α − alpha[i]; one vector per coefficient (size alpha.size() − 1).
   std::vector<std::array<double, 4>> ccl, ccd, ccm;
+  /// Tables on the Reynolds number, the first being this one's own (empty: this table at every Re).
+  std::vector<Polar> re_tables;
+  std::vector<double> re_axis;  ///< per table: log Re (re_log) or Re, strictly increasing
+  bool re_log = true;           ///< interpolate in log Re (AeroDyn v15) or in Re (AeroDyn v14)
 };
+
+/// How an airfoil's tables on the Reynolds number are interpolated.
+enum class ReynoldsInterp {
+  None,   ///< the first table only (AFTabMod = 1, MultiTab = SINGLE)
+  Log,    ///< linear in log Re (AeroDyn v15, AFTabMod = 2)
+  Linear  ///< linear in Re (AeroDyn v14, MultiTab = RENUM)
+};
+
+/// `tables` (each from makePolar, at Reynolds number re[k] > 0) as one polar on the Reynolds number.
+/// Throws InputError (message starting with sources[k]) when the Reynolds numbers are not positive or
+/// not strictly increasing.
+Polar reynoldsPolar(std::vector<Polar> tables, const std::vector<double>& re, ReynoldsInterp interp,
+                    const std::vector<std::string>& sources);
 
 /// Builds a polar from a table (alpha in rad). Throws InputError (message starting with `source`, e.g.
 /// "file:line: ...") when alpha is not strictly increasing, sizes differ, the table is empty, values are
@@ -62,6 +83,12 @@ struct Coefficients {
 /// to the right, at a knot).
 template <class T>
 Coefficients<T> evaluate(const Polar& p, const T& alpha);
+
+/// Coefficients at alpha [rad] and Reynolds number re (> 0; AeroDyn limits it to ≥ 0.001): evaluate(p,
+/// alpha) when p has no tables on the Reynolds number, else the interpolation of the file comment, in T
+/// through both arguments (the bracket from their values).
+template <class T>
+Coefficients<T> evaluate(const Polar& p, const T& alpha, const T& re);
 
 /// Wraps an angle [rad] into (−π, π] exactly as NWTC MPi2Pi (modulo(a, 2π), then −2π above π).
 double wrapMPi2Pi(double a);

@@ -23,6 +23,7 @@ inline aero::BemStation bemStation(const AeroModel& am, const AeroStation& st, d
   b.blades = static_cast<int>(am.blades.size());
   b.chord = st.chord;
   b.polar = &am.polars[st.polar];
+  b.kin_visc = am.kinematic_viscosity;
   return b;
 }
 

@@ -53,6 +53,7 @@ struct AeroModel {
   std::vector<AeroBlade> blades;
   int hub_body = -1;            ///< its frame: origin at the rotor apex, x along the rotor axis (disk normal)
   double air_density = 1.225;   ///< [kg/m³]
+  double kinematic_viscosity = 1.464e-5;  ///< [m²/s], for polars with tables on the Reynolds number
   double hub_radius = 0;        ///< AeroDyn zHub: apex to blade root along the blade (hub loss) [m]
   double tip_radius = 0;        ///< AeroDyn zTip: apex to the last element along the blade (tip loss) [m]
   double rotor_radius = 0;      ///< radius of the swept disk (AeroDyn rTipFix: coned tip) for Cp, Ct, TSR [m]

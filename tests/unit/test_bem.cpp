@@ -477,3 +477,53 @@ TEST(Bem, Nrel5mwRigidRotorAt8mps) {
   EXPECT_NEAR(T / 1e3, 379.51, 0.03 * 379.51);
   EXPECT_NEAR(Q / 1e3, 1946.90, 0.03 * 1946.90);
 }
+
+// An airfoil with tables on the Reynolds number (AeroDyn AFTabMod = 2): DU21 at Re = 3e5 and a copy
+// with Cl × 1.1, Cd × 0.8 at 2e7. The BEM residual takes the Reynolds number of the undisturbed
+// relative speed √(Vx² + Vy²), the loads that of the speed with the induction (AeroDyn's BEMT and its
+// outputs): the root and both loads' derivatives, through the Reynolds number too, against central
+// differences; the loads' coefficients are the polar's at the loads' Reynolds number.
+TEST(Bem, ReynoldsTablesEnterResidualLoadsAndTheirDerivatives) {
+  const Polar& du21 = nrelPolarsCubic()[6];
+  std::vector<double> cl = du21.cl, cd = du21.cd;
+  for (double& v : cl) v *= 1.1;
+  for (double& v : cd) v *= 0.8;
+  const Polar high = makePolar("du21-high", du21.alpha, cl, cd, du21.cm, PolarInterp::CubicSpline, "test");
+  const Polar p = reynoldsPolar({du21, high}, {3e5, 2e7}, ReynoldsInterp::Log, {"test", "test"});
+  BemStation s = station(40.0, 3.1, 0.07, p);
+  s.kin_visc = 1.464e-5;
+  const BemOptions o;
+  const double rho = 1.225, Vx = 8.0, Vy = 38.0, h = 1e-6;
+  const BemSolution sol = solveInflow(s, Vx, Vy, o);
+  EXPECT_LT(std::abs(bemResidual<double>(s, sol.phi, Vx, Vy, o)), 1e-12);
+  // The loads' coefficients: the polar at the loads' Reynolds number W c/ν.
+  const Coefficients<double> c = evaluate(p, sol.alpha, sol.W * s.chord / s.kin_visc);
+  EXPECT_NEAR(sol.cl, c.cl, 1e-14);
+  EXPECT_NEAR(sol.cd, c.cd, 1e-14);
+  // Not the table at the residual's Reynolds number: the two differ by the induction's share of W.
+  EXPECT_GT(std::abs(evaluate(p, sol.alpha, std::hypot(Vx, Vy) * s.chord / s.kin_visc).cl - c.cl), 1e-5);
+  const auto Q = quasiSteadyLoads<ADChunk>(s, seed(Vx, 0), seed(Vy, 1), seed(s.theta, 2), sol.phi, rho, o);
+  const auto F = frozenLoads<ADChunk>(s, seed(Vx, 0), seed(Vy, 1), seed(s.theta, 2), sol.ax_ind_vel, sol.tan_ind_vel,
+                                      rho, o);
+  auto quasi = [&](double vx, double vy, double th) {
+    BemStation t = s;
+    t.theta = th;
+    const BemSolution q = solveInflow(t, vx, vy, o);
+    return quasiSteadyLoads<double>(t, vx, vy, th, q.phi, rho, o);
+  };
+  const double x[3] = {Vx, Vy, s.theta};
+  for (int i = 0; i < 3; ++i) {
+    double xp[3] = {x[0], x[1], x[2]}, xm[3] = {x[0], x[1], x[2]};
+    xp[i] += h;
+    xm[i] -= h;
+    const auto Qp = quasi(xp[0], xp[1], xp[2]), Qm = quasi(xm[0], xm[1], xm[2]);
+    const auto Fp = frozenLoads<double>(s, xp[0], xp[1], xp[2], sol.ax_ind_vel, sol.tan_ind_vel, rho, o);
+    const auto Fm = frozenLoads<double>(s, xm[0], xm[1], xm[2], sol.ax_ind_vel, sol.tan_ind_vel, rho, o);
+    const double dq = (Qp.fx - Qm.fx) / (2 * h), df = (Fp.fx - Fm.fx) / (2 * h);
+    const double dqy = (Qp.fy - Qm.fy) / (2 * h), dfy = (Fp.fy - Fm.fy) / (2 * h);
+    EXPECT_NEAR(Q.fx.derivatives()[i], dq, 1e-6 * (1 + std::abs(dq))) << i;
+    EXPECT_NEAR(Q.fy.derivatives()[i], dqy, 1e-6 * (1 + std::abs(dqy))) << i;
+    EXPECT_NEAR(F.fx.derivatives()[i], df, 1e-6 * (1 + std::abs(df))) << i;
+    EXPECT_NEAR(F.fy.derivatives()[i], dfy, 1e-6 * (1 + std::abs(dfy))) << i;
+  }
+}

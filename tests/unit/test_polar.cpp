@@ -166,3 +166,87 @@ TEST(Polar, BadTablesThrowInputErrorNamingTheSource) {
   expectError([&] { makePolar("x", {}, {}, {}, {}, PolarInterp::Linear, src); }, "empty");
   EXPECT_NO_THROW(makePolar("x", {-pi + 5e-4, 0.0, pi - 5e-4}, {0, 1, 0}, {0, 0, 0}, {0, 0, 0}, PolarInterp::CubicSpline, src));
 }
+
+// Tables on the Reynolds number (AeroDyn AFI_ComputeAirfoilCoefs2D: linear in log Re between the
+// bracketing tables, the end tables outside; AeroDyn v14 RENUM: linear in Re): three linear tables
+// whose coefficients differ by a constant per table, so each interpolated value is known by hand.
+namespace {
+
+Polar shifted(double dcl, double dcd, double dcm) {
+  const std::vector<double> a = {-std::numbers::pi, 0.0, std::numbers::pi};
+  return makePolar("t", a, {dcl - 1, dcl, dcl + 1}, {dcd, dcd + 0.01, dcd}, {dcm, dcm, dcm}, PolarInterp::Linear, "t");
+}
+
+Polar threeTables(ReynoldsInterp interp) {
+  return reynoldsPolar({shifted(0.0, 0.01, 0.0), shifted(0.2, 0.02, -0.1), shifted(0.5, 0.05, -0.3)}, {3e5, 5e5, 1.2e6},
+                       interp, {"f:4", "f:4", "f:4"});
+}
+
+}  // namespace
+
+TEST(Polar, ReynoldsTablesInterpolateInLogReAsAeroDyn) {
+  const Polar p = threeTables(ReynoldsInterp::Log);
+  ASSERT_EQ(p.re_tables.size(), 3u);
+  const double alpha = 0.3;  // cl = dcl + alpha/π, cd = dcd + 0.01 (1 − alpha/π), cm = dcm
+  const double base_cl = alpha / std::numbers::pi, base_cd = 0.01 * (1 - alpha / std::numbers::pi);
+  auto at = [&](double re) { return evaluate(p, alpha, re); };
+  // At a table's Reynolds number: that table.
+  EXPECT_NEAR(at(5e5).cl, 0.2 + base_cl, 1e-14);
+  EXPECT_NEAR(at(5e5).cd, 0.02 + base_cd, 1e-14);
+  // Log midpoint of 3e5 and 5e5 (√(3e5·5e5)): the mean of the two tables.
+  const Coefficients<double> mid = at(std::sqrt(3e5 * 5e5));
+  EXPECT_NEAR(mid.cl, 0.1 + base_cl, 1e-14);
+  EXPECT_NEAR(mid.cd, 0.015 + base_cd, 1e-14);
+  EXPECT_NEAR(mid.cm, -0.05, 1e-14);
+  // A quarter of the way from 5e5 to 1.2e6 in log Re.
+  const double re = std::exp(std::log(5e5) + 0.25 * (std::log(1.2e6) - std::log(5e5)));
+  EXPECT_NEAR(at(re).cl, 0.2 + 0.25 * 0.3 + base_cl, 1e-14);
+  EXPECT_NEAR(at(re).cm, -0.1 - 0.25 * 0.2, 1e-14);
+  // Outside the tables: the end tables.
+  EXPECT_NEAR(at(1e3).cl, base_cl, 1e-14);
+  EXPECT_NEAR(at(1e8).cl, 0.5 + base_cl, 1e-14);
+  // Linear in Re (AeroDyn v14): the arithmetic midpoint gives the mean.
+  const Polar q = threeTables(ReynoldsInterp::Linear);
+  EXPECT_NEAR(evaluate(q, alpha, 4e5).cl, 0.1 + base_cl, 1e-14);
+  EXPECT_NEAR(evaluate(q, alpha, std::sqrt(3e5 * 5e5)).cl, (std::sqrt(3e5 * 5e5) - 3e5) / 2e5 * 0.2 + base_cl, 1e-14);
+  // One table only, or None: the first table at every Reynolds number.
+  const Polar first = threeTables(ReynoldsInterp::None);
+  EXPECT_TRUE(first.re_tables.empty());
+  EXPECT_NEAR(evaluate(first, alpha, 1e6).cl, base_cl, 1e-14);
+}
+
+TEST(Polar, ReynoldsDerivativesEqualCentralDifferences) {
+  const Polar p = threeTables(ReynoldsInterp::Log);
+  for (double re : {4e5, 8e5}) {
+    ADChunk a(0.3), r(re);
+    a.derivatives().setZero();
+    r.derivatives().setZero();
+    a.derivatives()(0) = 1.0;
+    r.derivatives()(1) = 1.0;
+    const Coefficients<ADChunk> c = evaluate(p, a, r);
+    const double ha = 1e-6, hr = 1e-3 * re;
+    const double dcl_da = (evaluate(p, 0.3 + ha, re).cl - evaluate(p, 0.3 - ha, re).cl) / (2 * ha);
+    const double dcl_dre = (evaluate(p, 0.3, re + hr).cl - evaluate(p, 0.3, re - hr).cl) / (2 * hr);
+    const double dcd_dre = (evaluate(p, 0.3, re + hr).cd - evaluate(p, 0.3, re - hr).cd) / (2 * hr);
+    EXPECT_NEAR(c.cl.derivatives()(0), dcl_da, 1e-8) << re;
+    EXPECT_NEAR(c.cl.derivatives()(1), dcl_dre, 1e-6 * std::abs(dcl_dre)) << re;
+    EXPECT_NEAR(c.cd.derivatives()(1), dcd_dre, 1e-6 * std::abs(dcd_dre)) << re;
+  }
+}
+
+TEST(Polar, ReynoldsTablesMustIncrease) {
+  auto error = [](std::vector<double> re) {
+    try {
+      reynoldsPolar({shifted(0, 0.01, 0), shifted(0.1, 0.01, 0)}, re, ReynoldsInterp::Log, {"a.dat:4", "a.dat:9"});
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_EQ(error({5e5, 3e5}),
+            "a.dat:9: Re: the tables' Reynolds numbers must increase strictly (300000 follows "
+            "500000), as AeroDyn requires for interpolating on them");
+  EXPECT_EQ(
+      error({0.0, 3e5}).rfind("a.dat:4: Re: the Reynolds number of a table interpolated on it must be positive", 0),
+      0u);
+}
