@@ -40,8 +40,8 @@ the blade root the in-plane wind of its yaw error exceeds the rotational speed a
 solution there, a point OpenFAST's linearization refuses too. UAE VI Test09 (30 deg yaw, 11 m/s) runs at
 its 71.9 rpm and is refused for the same reason parked and at half that speed. The decks with AeroDyn v14
 (`CompAero = 1`: Test01, 04, 06, 09, 11, 16, 17) run through its conversion to AeroDyn v15's elements
-and BEMT (README, *Aerodynamics*), but for SWRT Test16 and 17, whose airfoil tables are interpolated on
-the Reynolds number (`RENUM`; with `SINGLE` in its place they run).
+and BEMT (README, *Aerodynamics*); SWRT Test16 and 17 interpolate their airfoil tables on the Reynolds
+number (`RENUM`), as AeroDyn v15's `AFTabMod = 2` does in log Re.
 
 HEAD
 echo "| deck | \`whirl modes DECK\` | \`whirl modes DECK --set CompAero=0\` (structure only) |"

@@ -72,6 +72,7 @@ AeroDeckInput readAeroDeck(const FstInput& fst, OverrideSet* overrides) {
     deck.blades.assign(3, bladeFromV14(*v14));  // one element table serves every blade
     deck.airfoils = readAirfoils(ad, "FoilNm", [&](const std::filesystem::path& p) { return readAirfoil14(p, v14->UseCm); });
     if (std::optional<std::string> note = multipleTables(*v14, deck.airfoils)) deck.notes.push_back(std::move(*note));
+    if (v14->MultiTab == "RENUM") deck.reynolds = aero::ReynoldsInterp::Linear;
     return deck;
   }
   for (std::size_t k = 0; k < ad.ADBlFile.size(); ++k) {
@@ -80,6 +81,7 @@ AeroDeckInput readAeroDeck(const FstInput& fst, OverrideSet* overrides) {
     checkAirfoilIds(ad, deck.blades.back());
   }
   deck.airfoils = readAirfoils(ad, "AFNames", [&](const std::filesystem::path& p) { return readAirfoil(p, ad.InCol); });
+  if (ad.AFTabMod == 2) deck.reynolds = aero::ReynoldsInterp::Log;
   return deck;
 }
 

@@ -19,6 +19,9 @@ struct AeroDeckInput {
   AeroDynInput aerodyn;                   ///< AeroDyn main file (environment "default"s resolved from the .fst)
   std::vector<AeroDynBladeInput> blades;  ///< blades[k − 1] from ADBlFile(k), as many as the file names (3)
   std::vector<AirfoilInput> airfoils;     ///< airfoils[i] from AFNames(i + 1); a station's BlAFID − 1 indexes it
+  /// How the airfoils' tables are interpolated on the Reynolds number: AFTabMod = 2 (log Re), AeroDyn
+  /// v14 MultiTab = RENUM (Re), else the first table only.
+  aero::ReynoldsInterp reynolds = aero::ReynoldsInterp::None;
   InflowWindInput inflow;                 ///< InflowWind file
   /// Time-domain options replaced by their steady counterpart (aero_support.hpp steadySubstitutes),
   /// one "file:line: key: value: what whirl does instead" each.

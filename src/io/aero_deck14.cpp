@@ -54,18 +54,17 @@ std::optional<std::string> multipleTables(const AeroDyn14Input& v14, const std::
   std::string several;
   for (const AirfoilInput& af : airfoils)
     if (af.tables.size() > 1) several += (several.empty() ? "" : ", ") + af.path.filename().string();
-  if (several.empty() || v14.MultiTab == "SINGLE") return std::nullopt;
+  if (several.empty() || v14.MultiTab == "SINGLE" || v14.MultiTab == "RENUM") return std::nullopt;
   const std::string file = v14.source.path().string();
   if (v14.MultiTab.empty())
     return whirl::where(file, 0, "MultiTab",
                         "absent at the end of the file: the first table of each airfoil file with several (" + several +
                             "), as AeroDyn v14 does");
-  const std::string what = v14.MultiTab == "RENUM"  ? "interpolation between airfoil tables on the Reynolds number"
-                           : v14.MultiTab == "USER" ? "interpolation between airfoil tables on a user value"
-                                                    : "not an option of AeroDyn v14 (USER, RENUM or SINGLE)";
+  const std::string what = v14.MultiTab == "USER" ? "interpolation between airfoil tables on a user value"
+                                                  : "not an option of AeroDyn v14 (USER, RENUM or SINGLE)";
   throw InputError(whirl::where(file, v14.MultiTab_line, "MultiTab",
                                 v14.MultiTab + " not supported by whirl (" + what + ", for " + several +
-                                    "; whirl supports only SINGLE, the first table of each file)"));
+                                    "; whirl supports SINGLE, the first table of each file, and RENUM)"));
 }
 
 AeroDynBladeInput bladeFromV14(const AeroDyn14Input& v14) {

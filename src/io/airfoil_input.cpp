@@ -187,16 +187,27 @@ AirfoilInput readAirfoil(const std::filesystem::path& file, const AirfoilColumns
   return a;
 }
 
-aero::Polar airfoilPolar(const AirfoilInput& af, bool use_cm) {
+aero::Polar airfoilPolar(const AirfoilInput& af, bool use_cm, aero::ReynoldsInterp reynolds) {
   if (af.tables.empty()) throw InputError(af.path.string() + ": no airfoil table");
-  const AirfoilTable& t = af.tables.front();
   constexpr double deg = std::numbers::pi / 180.0;
-  std::vector<double> alpha(t.alpha_deg.size());
-  for (std::size_t k = 0; k < alpha.size(); ++k) alpha[k] = t.alpha_deg[k] * deg;
-  std::vector<double> cm = t.cm.empty() || !use_cm ? std::vector<double>(alpha.size(), 0.0) : t.cm;
   const aero::PolarInterp interp = af.interp_order == 3 ? aero::PolarInterp::CubicSpline : aero::PolarInterp::Linear;
-  return aero::makePolar(af.name, alpha, t.cl, t.cd, cm, interp,
-                         af.path.string() + ":" + std::to_string(t.first_row_line));
+  auto polar = [&](const AirfoilTable& t) {
+    std::vector<double> alpha(t.alpha_deg.size());
+    for (std::size_t k = 0; k < alpha.size(); ++k) alpha[k] = t.alpha_deg[k] * deg;
+    std::vector<double> cm = t.cm.empty() || !use_cm ? std::vector<double>(alpha.size(), 0.0) : t.cm;
+    return aero::makePolar(af.name, alpha, t.cl, t.cd, cm, interp,
+                           af.path.string() + ":" + std::to_string(t.first_row_line));
+  };
+  if (reynolds == aero::ReynoldsInterp::None || af.tables.size() == 1) return polar(af.tables.front());
+  std::vector<aero::Polar> tables;
+  std::vector<double> re;  // the files give millions
+  std::vector<std::string> sources;
+  for (const AirfoilTable& t : af.tables) {
+    tables.push_back(polar(t));
+    re.push_back(t.re * 1e6);
+    sources.push_back(af.path.string() + ":" + std::to_string(t.re_line));
+  }
+  return aero::reynoldsPolar(std::move(tables), re, reynolds, sources);
 }
 
 }  // namespace whirl::io

@@ -92,6 +92,7 @@ AirfoilInput readAirfoil(const std::filesystem::path& file, const AirfoilColumns
 /// (AeroDyn's UseBlCm). Shared by the OpenFAST deck and the YAML case.
 /// \throws InputError "file:line: reason" when the file has no table or the table is not a valid polar
 ///         (makePolar: α must cover −180° to 180°).
-aero::Polar airfoilPolar(const AirfoilInput& af, bool use_cm);
+aero::Polar airfoilPolar(const AirfoilInput& af, bool use_cm,
+                         aero::ReynoldsInterp reynolds = aero::ReynoldsInterp::None);
 
 }  // namespace whirl::io

@@ -70,7 +70,8 @@ void addAerodynamics(Builder& b, const DrivetrainParts& dt, const RotorParts& ro
   const io::ElastoDynConfiguration& c = b.ed.config;
   Model& m = b.model();
   AeroModel& am = m.aero;
-  for (const io::AirfoilInput& af : deck.airfoils) am.polars.push_back(io::airfoilPolar(af, deck.aerodyn.UseBlCm));
+  for (const io::AirfoilInput& af : deck.airfoils)
+    am.polars.push_back(io::airfoilPolar(af, deck.aerodyn.UseBlCm, deck.reynolds));
   const double length = c.TipRad - c.HubRad;
   // AeroDyn needs a blade file per blade, ADBlFile(1) to ADBlFile(NumBl); the reader takes those present.
   if (deck.blades.size() < rotor.blades.size())
@@ -95,6 +96,7 @@ void addAerodynamics(Builder& b, const DrivetrainParts& dt, const RotorParts& ro
   for (const AeroBlade& bl : am.blades) am.tip_radius = std::max(am.tip_radius, bl.stations.back().z);
   const io::AeroDynInput& ad = deck.aerodyn;
   am.air_density = ad.AirDens;
+  am.kinematic_viscosity = ad.KinVisc;
   am.induction = ad.Wake_Mod == 1;
   am.bem.tip_loss = ad.TipLoss;
   am.bem.hub_loss = ad.HubLoss;

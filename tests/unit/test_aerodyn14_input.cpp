@@ -177,18 +177,22 @@ TEST(AeroDyn14, DragInTheInductionsAsInfModelSays) {
   }
 }
 
-// SWRT: three Reynolds tables per airfoil file and RENUM after the element table (SWRT_AeroDyn.dat:38).
-TEST(AeroDyn14, InterpolationBetweenTablesRefusedFirstTableOtherwise) {
+// SWRT: three Reynolds tables per airfoil file and RENUM after the element table (SWRT_AeroDyn.dat:38):
+// interpolated on the Reynolds number (no note); USER (a user value) is refused.
+TEST(AeroDyn14, InterpolationBetweenTablesOnReynoldsUserRefusedFirstTableOtherwise) {
   const auto swrt = certtest() / "SWRT" / "SWRT_AeroDyn.dat";
   const auto v14 = readAeroDyn14(swrt);
   EXPECT_EQ(v14.MultiTab, "RENUM");
   const auto af = readAirfoil14(certtest() / "SWRT" / "AeroData" / "SH3052Mod_AllRe_Hanley.dat", false);
-  EXPECT_EQ(inputErrorMessage([&] { whirl::io::multipleTables(v14, {af}); }),
-            swrt.string() + ":" + std::to_string(v14.MultiTab_line) +
-                ": MultiTab: RENUM not supported by whirl (interpolation between airfoil tables on the Reynolds "
-                "number, for SH3052Mod_AllRe_Hanley.dat; whirl supports only SINGLE, the first table of each file)");
+  EXPECT_FALSE(whirl::io::multipleTables(v14, {af}));
   ScratchDir s;
   const std::string text = readText(swrt);
+  const auto user_file = s.write("user.dat", replaceOnce(text, "ReNum", "USER"));
+  const auto user = readAeroDyn14(user_file);
+  EXPECT_EQ(inputErrorMessage([&] { whirl::io::multipleTables(user, {af}); }),
+            user_file.string() + ":" + std::to_string(user.MultiTab_line) +
+                ": MultiTab: USER not supported by whirl (interpolation between airfoil tables on a user value, for "
+                "SH3052Mod_AllRe_Hanley.dat; whirl supports SINGLE, the first table of each file, and RENUM)");
   const auto single = s.write("single.dat", replaceOnce(text, "ReNum", "SINGLE"));
   EXPECT_FALSE(whirl::io::multipleTables(readAeroDyn14(single), {af}));
   const auto absent = s.write("absent.dat", replaceOnce(text, "ReNum", ""));

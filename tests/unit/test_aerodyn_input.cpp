@@ -217,9 +217,10 @@ INSTANTIATE_TEST_SUITE_P(
         Refusal{"TailFin", kV3, "False         TFinAero", "True          TFinAero",
                 "70: TFinAero: True not supported by whirl (tail-fin aerodynamics; whirl supports only TFinAero = "
                 "False)"},
-        Refusal{"AirfoilTableInterpolation", kV3, "          1   AFTabMod", "          2   AFTabMod",
-                "43: AFTabMod: 2 not supported by whirl (interpolation between airfoil tables; whirl supports only "
-                "AFTabMod = 1 (the first table of each airfoil file))"},
+        Refusal{"AirfoilTableInterpolation", kV3, "          1   AFTabMod", "          3   AFTabMod",
+                "43: AFTabMod: 3 not supported by whirl (interpolation between airfoil tables on UserProp; whirl "
+                "supports only AFTabMod = 1 (the first table of each airfoil file) or 2 (tables on the Reynolds "
+                "number))"},
         Refusal{"CoupledSkew", kV3, "          2   SkewMod", "          3   SkewMod",
                 "23: SkewMod: 3 not supported by whirl (the coupled skewed-wake model (dropped in OpenFAST v4); "
                 "whirl supports only SkewMod = 0, 1 or 2)"}),
