@@ -5,7 +5,7 @@
 // 1–100 inputs/s — so that each parser gets its 10⁶ executions.
 //   1 fuzz_read_aerodyn     readAeroDyn (AeroDyn v15 main file; named files are not opened)
 //   2 fuzz_read_ad_blade    readAeroDynBlade
-//   3 fuzz_read_airfoil     readAirfoil, then airfoilPolar (the polar AeroDyn uses)
+//   3 fuzz_read_airfoil     readAirfoil, then airfoilPolar (the polar AeroDyn uses; first table, and on Re)
 //   4 fuzz_read_inflowwind  readInflowWind
 //   5 fuzz_read_servodyn    readServoDyn, then generatorTorqueLaw
 //   6 fuzz_read_case_yaml   readCase (the YAML case and the model it builds, no operating point)
@@ -15,7 +15,7 @@
 //   9 fuzz_read_ed_tower    readElastoDynTower
 //  10 fuzz_read_ed_blade    readElastoDynBlade
 //  11 fuzz_read_aerodyn14   readAeroDyn14, then its AeroDyn v15 description and blade (FAST v8 CompAero = 1)
-//  12 fuzz_read_airfoil14   readAirfoil14 with and without Cm columns, then airfoilPolar
+//  12 fuzz_read_airfoil14   readAirfoil14 with and without Cm columns, then airfoilPolar (first table, on Re)
 #include "fuzz/fuzz_support.hpp"
 #include "src/io/aero_deck14.hpp"
 #include "src/io/aerodyn_blade_input.hpp"
@@ -39,7 +39,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
 #elif WHIRL_FUZZ_READER == 2
     (void)io::readAeroDynBlade(path);
 #elif WHIRL_FUZZ_READER == 3
-    (void)io::airfoilPolar(io::readAirfoil(path), true);
+    const io::AirfoilInput af = io::readAirfoil(path);
+    // Every table on the Reynolds number (AFTabMod = 2) first: it checks the tables beyond the first.
+    whirl::fuzz::expectOnlyInputErrors([&] { (void)io::airfoilPolar(af, true, whirl::aero::ReynoldsInterp::Log); });
+    (void)io::airfoilPolar(af, true);
 #elif WHIRL_FUZZ_READER == 4
     (void)io::readInflowWind(path);
 #elif WHIRL_FUZZ_READER == 5
@@ -60,7 +63,12 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     (void)io::bladeFromV14(v14);
     (void)io::steadySubstitutes(v14);
 #elif WHIRL_FUZZ_READER == 12
-    for (bool cm : {false, true}) (void)io::airfoilPolar(io::readAirfoil14(path, cm), cm);
+    for (bool cm : {false, true}) {
+      const io::AirfoilInput af = io::readAirfoil14(path, cm);
+      whirl::fuzz::expectOnlyInputErrors(
+          [&] { (void)io::airfoilPolar(af, cm, whirl::aero::ReynoldsInterp::Linear); });  // MultiTab = RENUM
+      (void)io::airfoilPolar(af, cm);
+    }
 #else
 #error "WHIRL_FUZZ_READER must be 1 to 12"
 #endif
