@@ -88,8 +88,6 @@ T lossFactor(const BemStation& s, const T& sphi, const BemOptions& o) {
   return F;
 }
 
-/// Relative flow (x, y) = (Vx(1−a), Vy(1+a')) → φ, α, W, coefficients and loads (AeroDyn
-/// ComputePhiWithInduction, SetInputs_for_UA, BEMT_CalcOutput with AIDrag = TIDrag = true, SetOutputsFromBEMT).
 // The element's Reynolds number at relative speed W [m/s] (AeroDyn GetReynoldsNumber, ≥ 0.001).
 template <class T>
 T reynolds(const BemStation& s, const T& W) {
@@ -97,6 +95,8 @@ T reynolds(const BemStation& s, const T& W) {
   return valueOf(re) > 0.001 ? re : T(0.001);
 }
 
+/// Relative flow (x, y) = (Vx(1−a), Vy(1+a')) → φ, α, W, coefficients and loads (AeroDyn
+/// ComputePhiWithInduction, SetInputs_for_UA, BEMT_CalcOutput with AIDrag = TIDrag = true, SetOutputsFromBEMT).
 template <class T>
 SectionLoads<T> loadsFromFlow(const BemStation& s, const T& x, const T& y, const T& theta, double rho) {
   using std::cos;

@@ -1,6 +1,7 @@
 // Blade-element momentum at one station against hand solutions, finite differences and AeroDyn's behaviour.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -58,6 +59,39 @@ ADChunk seed(double v, int i) {
   ADChunk x(v);
   x.derivatives()[i] = 1.0;
   return x;
+}
+
+/// Central differences (step h) of section loads in (Vx, Vy, θ) about x: d[i] = ∂(fx, fy, mz)/∂x_i.
+template <class Loads>
+std::array<std::array<double, 3>, 3> centralDifferences(Loads loads, const std::array<double, 3>& x, double h) {
+  std::array<std::array<double, 3>, 3> d{};
+  for (int i = 0; i < 3; ++i) {
+    std::array<double, 3> xp = x, xm = x;
+    xp[i] += h;
+    xm[i] -= h;
+    const SectionLoads<double> p = loads(xp[0], xp[1], xp[2]), m = loads(xm[0], xm[1], xm[2]);
+    d[i] = {(p.fx - m.fx) / (2 * h), (p.fy - m.fy) / (2 * h), (p.mz - m.mz) / (2 * h)};
+  }
+  return d;
+}
+
+/// AD derivatives of fx, fy, mz with seeds (Vx, Vy, θ) equal the central differences d within 1e-6 relative.
+void expectLoadDerivatives(const SectionLoads<ADChunk>& L, const std::array<std::array<double, 3>, 3>& d) {
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_NEAR(L.fx.derivatives()[i], d[i][0], 1e-6 * (1 + std::abs(d[i][0]))) << i;
+    EXPECT_NEAR(L.fy.derivatives()[i], d[i][1], 1e-6 * (1 + std::abs(d[i][1]))) << i;
+    EXPECT_NEAR(L.mz.derivatives()[i], d[i][2], 1e-6 * (1 + std::abs(d[i][2]))) << i;
+  }
+}
+
+/// Quasi-steady loads with the inflow re-solved at each (Vx, Vy, θ): the reference for their AD derivatives.
+auto resolvedQuasiSteadyLoads(const BemStation& s, double rho, const BemOptions& o) {
+  return [&s, rho, &o](double vx, double vy, double th) {
+    BemStation t = s;
+    t.theta = th;
+    const BemSolution q = solveInflow(t, vx, vy, o);
+    return quasiSteadyLoads<double>(t, vx, vy, th, q.phi, rho, o);
+  };
 }
 
 }  // namespace
@@ -242,23 +276,7 @@ TEST(Bem, QuasiSteadyLoadDerivativesMatchCentralDifferences) {
   EXPECT_NEAR(L.alpha.value(), sol.alpha, 1e-12);
   EXPECT_NEAR(L.W.value(), sol.W, 1e-10);
   EXPECT_NEAR(L.cl.value(), sol.cl, 1e-12);
-  auto at = [&](double vx, double vy, double th) {
-    BemStation t = s;
-    t.theta = th;
-    const BemSolution q = solveInflow(t, vx, vy, o);
-    return quasiSteadyLoads<double>(t, vx, vy, th, q.phi, rho, o);
-  };
-  const double x[3] = {Vx, Vy, s.theta};
-  for (int i = 0; i < 3; ++i) {
-    double xp[3] = {x[0], x[1], x[2]}, xm[3] = {x[0], x[1], x[2]};
-    xp[i] += h;
-    xm[i] -= h;
-    const auto Lp = at(xp[0], xp[1], xp[2]), Lm = at(xm[0], xm[1], xm[2]);
-    const double dfx = (Lp.fx - Lm.fx) / (2 * h), dfy = (Lp.fy - Lm.fy) / (2 * h), dmz = (Lp.mz - Lm.mz) / (2 * h);
-    EXPECT_NEAR(L.fx.derivatives()[i], dfx, 1e-6 * (1 + std::abs(dfx))) << i;
-    EXPECT_NEAR(L.fy.derivatives()[i], dfy, 1e-6 * (1 + std::abs(dfy))) << i;
-    EXPECT_NEAR(L.mz.derivatives()[i], dmz, 1e-6 * (1 + std::abs(dmz))) << i;
-  }
+  expectLoadDerivatives(L, centralDifferences(resolvedQuasiSteadyLoads(s, rho, o), {Vx, Vy, s.theta}, h));
 }
 
 // A solved element's double loads from its root's inductions equal quasiSteadyLoads<double> at that root
@@ -321,18 +339,10 @@ TEST(Bem, FrozenWakeDerivativesMatchCentralDifferencesWithInducedVelocitiesHeld)
   EXPECT_NEAR(F.phi.derivatives()[0], Vy * (1 + sol.ap) / (sol.W * sol.W), 1e-14);
   EXPECT_NEAR(F.phi.derivatives()[2], 0.0, 0.0);
   EXPECT_NEAR(F.alpha.derivatives()[2], -1.0, 0.0);
-  const double x[3] = {Vx, Vy, s.theta};
-  for (int i = 0; i < 3; ++i) {
-    double xp[3] = {x[0], x[1], x[2]}, xm[3] = {x[0], x[1], x[2]};
-    xp[i] += h;
-    xm[i] -= h;
-    const auto Lp = frozenLoads<double>(s, xp[0], xp[1], xp[2], ax, tn, rho, o);
-    const auto Lm = frozenLoads<double>(s, xm[0], xm[1], xm[2], ax, tn, rho, o);
-    const double dfx = (Lp.fx - Lm.fx) / (2 * h), dfy = (Lp.fy - Lm.fy) / (2 * h), dmz = (Lp.mz - Lm.mz) / (2 * h);
-    EXPECT_NEAR(F.fx.derivatives()[i], dfx, 1e-6 * (1 + std::abs(dfx))) << i;
-    EXPECT_NEAR(F.fy.derivatives()[i], dfy, 1e-6 * (1 + std::abs(dfy))) << i;
-    EXPECT_NEAR(F.mz.derivatives()[i], dmz, 1e-6 * (1 + std::abs(dmz))) << i;
-  }
+  const auto frozen = [&](double vx, double vy, double th) {
+    return frozenLoads<double>(s, vx, vy, th, ax, tn, rho, o);
+  };
+  expectLoadDerivatives(F, centralDifferences(frozen, {Vx, Vy, s.theta}, h));
   // The frozen-wake thrust slope differs from the quasi-steady one (the induction responds there).
   EXPECT_GT(std::abs(F.fx.derivatives()[0] - Q.fx.derivatives()[0]), 0.05 * std::abs(F.fx.derivatives()[0]));
 }
@@ -505,25 +515,9 @@ TEST(Bem, ReynoldsTablesEnterResidualLoadsAndTheirDerivatives) {
   const auto Q = quasiSteadyLoads<ADChunk>(s, seed(Vx, 0), seed(Vy, 1), seed(s.theta, 2), sol.phi, rho, o);
   const auto F = frozenLoads<ADChunk>(s, seed(Vx, 0), seed(Vy, 1), seed(s.theta, 2), sol.ax_ind_vel, sol.tan_ind_vel,
                                       rho, o);
-  auto quasi = [&](double vx, double vy, double th) {
-    BemStation t = s;
-    t.theta = th;
-    const BemSolution q = solveInflow(t, vx, vy, o);
-    return quasiSteadyLoads<double>(t, vx, vy, th, q.phi, rho, o);
+  expectLoadDerivatives(Q, centralDifferences(resolvedQuasiSteadyLoads(s, rho, o), {Vx, Vy, s.theta}, h));
+  const auto frozen = [&](double vx, double vy, double th) {
+    return frozenLoads<double>(s, vx, vy, th, sol.ax_ind_vel, sol.tan_ind_vel, rho, o);
   };
-  const double x[3] = {Vx, Vy, s.theta};
-  for (int i = 0; i < 3; ++i) {
-    double xp[3] = {x[0], x[1], x[2]}, xm[3] = {x[0], x[1], x[2]};
-    xp[i] += h;
-    xm[i] -= h;
-    const auto Qp = quasi(xp[0], xp[1], xp[2]), Qm = quasi(xm[0], xm[1], xm[2]);
-    const auto Fp = frozenLoads<double>(s, xp[0], xp[1], xp[2], sol.ax_ind_vel, sol.tan_ind_vel, rho, o);
-    const auto Fm = frozenLoads<double>(s, xm[0], xm[1], xm[2], sol.ax_ind_vel, sol.tan_ind_vel, rho, o);
-    const double dq = (Qp.fx - Qm.fx) / (2 * h), df = (Fp.fx - Fm.fx) / (2 * h);
-    const double dqy = (Qp.fy - Qm.fy) / (2 * h), dfy = (Fp.fy - Fm.fy) / (2 * h);
-    EXPECT_NEAR(Q.fx.derivatives()[i], dq, 1e-6 * (1 + std::abs(dq))) << i;
-    EXPECT_NEAR(Q.fy.derivatives()[i], dqy, 1e-6 * (1 + std::abs(dqy))) << i;
-    EXPECT_NEAR(F.fx.derivatives()[i], df, 1e-6 * (1 + std::abs(df))) << i;
-    EXPECT_NEAR(F.fy.derivatives()[i], dfy, 1e-6 * (1 + std::abs(dfy))) << i;
-  }
+  expectLoadDerivatives(F, centralDifferences(frozen, {Vx, Vy, s.theta}, h));
 }
