@@ -233,7 +233,7 @@ Simulation simulate(const Model& m, const OperatingPoint& start, const Simulatio
     sim.time.push_back(t);
     sim.q.row(k) = p.q.transpose();
     sim.qd.row(k) = p.qd.transpose();
-    sim.u.row(k) = p.u.transpose();
+    if (m.ninput() > 0) sim.u.row(k) = p.u.transpose();  // row k of a 0-column matrix: offset on a null pointer
     if (m.noutput() > 0) {
       evaluateOutputs(m, wy, p.q, p.qd, p.qdd, y_out, &p.u);
       sim.y.row(k) = y_out.transpose();

@@ -8,12 +8,13 @@
 #include <regex>
 
 #include "linearize/linearize.hpp"
-#include "modal/mbc_lin.hpp"
 #include "linearize/operating_point.hpp"
+#include "linearize/simulate.hpp"
+#include "modal/mbc_lin.hpp"
 #include "src/io/case_file.hpp"
 #include "src/io/openfast_lin.hpp"
-#include "src/turbine/elastodyn_model.hpp"
 #include "src/model/error.hpp"
+#include "src/turbine/elastodyn_model.hpp"
 #include "test_util.hpp"
 
 namespace whirl {
@@ -28,6 +29,20 @@ TEST(SanitizerFindings, LinearizeModelWithoutInputs) {
   EXPECT_EQ(lin.Q.rows(), lin.K.rows());
   EXPECT_EQ(lin.Q.cols(), 0);
   EXPECT_GT(lin.K.rows(), 0);
+}
+
+// The sanitized test suite (SimulateFloating3Dof, 2026-11-27): simulate() recorded the inputs of every
+// instant as sim.u.row(k) also for a model without inputs, an offset applied to Eigen's null data
+// pointer from the second instant on (UBSan: pointer-overflow).
+TEST(SanitizerFindings, SimulateModelWithoutInputs) {
+  const Model m = readCase(std::string(WHIRL_SOURCE_DIR) + "/cases/tower_topmass/tower_topmass.yaml");
+  ASSERT_EQ(m.ninput(), 0);
+  SimulationOptions o;
+  o.t_end = 0.05;
+  const Simulation sim = simulate(m, solveOperatingPoint(m, initialPoint(m)), o);
+  EXPECT_EQ(sim.time.size(), 6u);
+  EXPECT_EQ(sim.u.cols(), 0);
+  EXPECT_EQ(sim.q.rows(), 6);
 }
 
 // The NREL 5MW .lin at 9 rpm of tests/data with one line replaced.
