@@ -73,6 +73,20 @@ NonlinearCheck checkAgainstLinear(const Model& m, const OperatingPoint& eq, cons
     std::vector<double> s(sim.time.size());
     for (size_t k = 0; k < s.size(); ++k) s[k] = sim.q(static_cast<Eigen::Index>(k), i);
     out.identified_dofs.push_back(m.dofs[i].name);
+    MatX y(sim.q.rows(), static_cast<Eigen::Index>(sim.states.size()));
+    for (size_t c = 0; c < sim.states.size(); ++c) {
+      const int j = sim.states[c];
+      for (Eigen::Index k = 0; k < y.rows(); ++k)
+        y(k, static_cast<Eigen::Index>(c)) = sim.q(k, j) - eq.q(j) - eq.qd(j) * sim.time[static_cast<size_t>(k)];
+    }
+    // The recorded instants are k Δ; a last one at t_end off that grid is left out of the realization.
+    const bool off_grid = sim.time.size() > 1 && std::abs(sim.time.back() - static_cast<double>(sim.time.size() - 1) *
+                                                                                opt.dt_out) > 1e-9 * opt.dt_out;
+    try {
+      out.poles.push_back(identifyPoles(off_grid ? MatX(y.topRows(y.rows() - 1)) : y, opt.dt_out));
+    } catch (const InputError&) {  // too few instants for the Hankel matrix (a short --tmax): none
+      out.poles.emplace_back();
+    }
     try {
       out.identified.push_back(identifyDecay(sim.time, s, eq.q(i)));
     } catch (const ComputeError&) {  // no oscillation along it (overdamped, or too short): NaN

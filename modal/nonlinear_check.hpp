@@ -6,8 +6,10 @@
 /// order ε² (the first neglected terms of the Taylor expansion), so halving ε divides it by 4: an
 /// observed order log2(err(ε)/err(ε/2)) ≥ 2 confirms that the exported A is the nonlinear system's
 /// Jacobian (an order near 1 would mean a wrong entry). It is 3 when the quadratic terms vanish by
-/// symmetry (the floating turbine's pitch, a pendulum: measured 2.94–2.99). The frequency and damping identified (identifyDecay) from a decay of each coordinate
-/// perturbed alone by ε are set next to the eigenvalues.
+/// symmetry (the floating turbine's pitch, a pendulum: measured 2.94–2.99). The frequency and damping identified
+/// from a decay of each coordinate perturbed alone by ε are set next to the eigenvalues: by the zero crossings and
+/// extrema of that coordinate (identifyDecay), and by the eigensystem realization of every state's response
+/// (identifyPoles), which separates the modes that share the coordinate.
 ///
 /// Only for time-invariant linear models: no rotor, or a rotor without blades (an axisymmetric rigid
 /// rotor, turning freely at its rate); a bladed rotor's model is periodic (linearizePeriodic).
@@ -17,6 +19,7 @@
 
 #include "linearize/simulate.hpp"
 #include "modal/decay_identification.hpp"
+#include "modal/era.hpp"
 #include "modal/modes.hpp"
 
 namespace whirl {
@@ -41,6 +44,8 @@ struct NonlinearCheck {
   std::vector<Mode> modes;                 ///< of the linear model at the equilibrium
   std::vector<std::string> identified_dofs;
   std::vector<IdentifiedDecay> identified;  ///< per perturbed coordinate, perturbed alone by the amplitude
+  /// Per perturbed coordinate: the poles realized (identifyPoles) from that decay's every state.
+  std::vector<std::vector<IdentifiedPole>> poles;
   /// Observed order of the difference between consecutive levels (≥ 2), one fewer than levels.
   std::vector<double> orders;
 };

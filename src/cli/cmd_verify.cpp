@@ -44,8 +44,8 @@ void run(const VerifyOptions& opt) {
       std::printf("  %-12.6g %-16.6g %-16.6g %.3f\n", l.amplitude, l.max_difference, l.max_response, c.orders[k - 1]);
   }
   std::printf("identified from the decay (amplitude %g) vs eigenvalues:\n", co.amplitude);
-  std::printf("  %-24s %-14s %-12s | %-24s %-14s %s\n", "coordinate", "damped f [Hz]", "damping", "mode",
-              "damped f [Hz]", "damping");
+  std::printf("  %-24s %-14s %-12s | %-14s %-12s | %-24s %-14s %s\n", "coordinate", "damped f [Hz]", "damping",
+              "realized [Hz]", "damping", "mode", "damped f [Hz]", "damping");
   const std::vector<int> active = m.activeDofs();  // the coordinates of the modes' participations
   for (size_t k = 0; k < c.identified.size(); ++k) {
     // The mode with the largest participation of this coordinate.
@@ -58,9 +58,15 @@ void run(const VerifyOptions& opt) {
           (!best || md.participation(j) > best->participation(j)))
         best = &md;
     const IdentifiedDecay& d = c.identified[k];
-    std::printf("  %-24s %-14.6g %-12.5g | %-24s %-14.6g %.5g\n", c.identified_dofs[k].c_str(), d.damped_freq_hz,
-                d.damping_ratio, best ? best->name.c_str() : "-", best ? best->damped_freq_hz : NAN,
-                best ? best->damping_ratio : NAN);
+    // The realized pole of this decay nearest the mode's damped frequency.
+    const IdentifiedPole* pole = nullptr;
+    for (const IdentifiedPole& p : c.poles[k])
+      if (best && (!pole || std::abs(p.damped_freq_hz - best->damped_freq_hz) <
+                                std::abs(pole->damped_freq_hz - best->damped_freq_hz)))
+        pole = &p;
+    std::printf("  %-24s %-14.6g %-12.5g | %-14.6g %-12.5g | %-24s %-14.6g %.5g\n", c.identified_dofs[k].c_str(),
+                d.damped_freq_hz, d.damping_ratio, pole ? pole->damped_freq_hz : NAN, pole ? pole->damping_ratio : NAN,
+                best ? best->name.c_str() : "-", best ? best->damped_freq_hz : NAN, best ? best->damping_ratio : NAN);
   }
 }
 
