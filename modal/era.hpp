@@ -18,13 +18,13 @@ struct IdentifiedPole {
   double freq_hz = 0;         ///< undamped f = |λ|/2π
   double damped_freq_hz = 0;  ///< |Im λ|/2π
   double damping_ratio = 0;   ///< −Re λ/|λ|
-  /// Share of the response [-]: this pole's part of the realized free response (‖Cφ‖·|φ⁺x0| summed
-  /// over the samples' span, relative to the largest pole's); a complex pair counts as one pole.
+  /// Share of the response [-]: this pole's mean amplitude in the realized free response over the record
+  /// (‖Cφ‖·|φ⁺x0| times the mean of |z|^k), relative to the largest pole's; a complex pair counts as one.
   double share = 0;
 };
 
 struct EraOptions {
-  int block_rows = 0;            ///< r; 0: enough that r·p ≥ 4 × the largest order kept, at least 20
+  int block_rows = 0;            ///< r; 0: max(20, ⌈40/p⌉)
   int max_order = 0;             ///< largest n kept; 0: r·p/2
   double rank_tolerance = 1e-7;  ///< singular values below this fraction of the largest are dropped
 };

@@ -10,6 +10,24 @@
 
 namespace whirl {
 
+std::vector<IdentifiedPole> realizedPoles(const Simulation& sim, const OperatingPoint& eq, double dt_out) {
+  const auto ns = static_cast<Eigen::Index>(sim.states.size());
+  const bool off_grid = sim.time.size() > 1 &&
+                        std::abs(sim.time.back() - static_cast<double>(sim.time.size() - 1) * dt_out) > 1e-9 * dt_out;
+  const Eigen::Index rows = static_cast<Eigen::Index>(sim.time.size()) - (off_grid ? 1 : 0);
+  MatX y(rows, ns);
+  for (Eigen::Index c = 0; c < ns; ++c) {
+    const int j = sim.states[static_cast<size_t>(c)];
+    for (Eigen::Index k = 0; k < rows; ++k)
+      y(k, c) = sim.q(k, j) - eq.q(j) - eq.qd(j) * sim.time[static_cast<size_t>(k)];
+  }
+  try {
+    return identifyPoles(y, dt_out);
+  } catch (const InputError&) {  // too few instants for the Hankel matrix (a short --tmax)
+    return {};
+  }
+}
+
 NonlinearCheck checkAgainstLinear(const Model& m, const OperatingPoint& eq, const NonlinearCheckOptions& opt) {
   for (const Dof& d : m.dofs)
     if (!d.frozen && d.blade >= 0)
@@ -73,20 +91,7 @@ NonlinearCheck checkAgainstLinear(const Model& m, const OperatingPoint& eq, cons
     std::vector<double> s(sim.time.size());
     for (size_t k = 0; k < s.size(); ++k) s[k] = sim.q(static_cast<Eigen::Index>(k), i);
     out.identified_dofs.push_back(m.dofs[i].name);
-    MatX y(sim.q.rows(), static_cast<Eigen::Index>(sim.states.size()));
-    for (size_t c = 0; c < sim.states.size(); ++c) {
-      const int j = sim.states[c];
-      for (Eigen::Index k = 0; k < y.rows(); ++k)
-        y(k, static_cast<Eigen::Index>(c)) = sim.q(k, j) - eq.q(j) - eq.qd(j) * sim.time[static_cast<size_t>(k)];
-    }
-    // The recorded instants are k Δ; a last one at t_end off that grid is left out of the realization.
-    const bool off_grid = sim.time.size() > 1 && std::abs(sim.time.back() - static_cast<double>(sim.time.size() - 1) *
-                                                                                opt.dt_out) > 1e-9 * opt.dt_out;
-    try {
-      out.poles.push_back(identifyPoles(off_grid ? MatX(y.topRows(y.rows() - 1)) : y, opt.dt_out));
-    } catch (const InputError&) {  // too few instants for the Hankel matrix (a short --tmax): none
-      out.poles.emplace_back();
-    }
+    out.poles.push_back(realizedPoles(sim, eq, opt.dt_out));
     try {
       out.identified.push_back(identifyDecay(sim.time, s, eq.q(i)));
     } catch (const ComputeError&) {  // no oscillation along it (overdamped, or too short): NaN

@@ -50,6 +50,11 @@ struct NonlinearCheck {
   std::vector<double> orders;
 };
 
+/// The poles of a simulated free response (identifyPoles): every integrated coordinate's deviation from
+/// the equilibrium's motion q_eq + q̇_eq t, at the recorded instants k·dt_out (a last instant at t_end off
+/// that grid is left out). Empty when there are too few instants for the Hankel matrix.
+std::vector<IdentifiedPole> realizedPoles(const Simulation& sim, const OperatingPoint& equilibrium, double dt_out);
+
 /// \param[in] equilibrium  a solved operating point (solveOperatingPoint)
 /// \throws InputError for a bladed rotor or an unknown / frozen coordinate; ComputeError from simulate
 NonlinearCheck checkAgainstLinear(const Model& model, const OperatingPoint& equilibrium,

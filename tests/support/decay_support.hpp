@@ -9,6 +9,7 @@
 #include "modal/decay_identification.hpp"
 #include "modal/era.hpp"
 #include "modal/modes.hpp"
+#include "modal/nonlinear_check.hpp"
 
 namespace whirl::test {
 
@@ -17,15 +18,6 @@ inline IdentifiedDecay identifyDofDecay(const Simulation& sim, int dof, double e
   std::vector<double> x(sim.time.size());
   for (size_t k = 0; k < x.size(); ++k) x[k] = sim.q(static_cast<Eigen::Index>(k), dof);
   return identifyDecay(sim.time, x, equilibrium);
-}
-
-/// Poles of a whole simulation (every integrated coordinate about `equilibrium`, sampled at dt):
-/// the eigensystem realization of its free response.
-inline std::vector<IdentifiedPole> identifySimulationPoles(const Simulation& sim, const VecX& equilibrium, double dt) {
-  MatX y(sim.q.rows(), static_cast<Eigen::Index>(sim.states.size()));
-  for (size_t c = 0; c < sim.states.size(); ++c)
-    y.col(static_cast<Eigen::Index>(c)) = sim.q.col(sim.states[c]).array() - equilibrium(sim.states[c]);
-  return identifyPoles(y, dt);
 }
 
 /// The pole nearest in frequency to f [Hz], nullptr if none.

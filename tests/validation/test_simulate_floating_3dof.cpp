@@ -38,7 +38,7 @@ TEST(SimulateFloating3Dof, SeedReleaseStateFrequencies) {
   const Simulation sim = simulate(m, start, o);
   // Both identifications: the zero crossings of the coordinate, and the eigensystem realization of all
   // three coordinates, which separates the pitch and tower modes that share q_T.
-  const std::vector<IdentifiedPole> poles = test::identifySimulationPoles(sim, eq.q, o.dt_out);
+  const std::vector<IdentifiedPole> poles = realizedPoles(sim, eq, o.dt_out);
   for (const auto& [dof, name] : {std::pair{pitch, "pitch"}, std::pair{fa, "tower FA 1"}}) {
     const IdentifiedDecay d = test::identifyDofDecay(sim, dof, eq.q(dof));
     const Mode* mode = test::modeNamed(modes, name);
@@ -95,7 +95,7 @@ TEST(SimulateFloating3Dof, SmallDecaysMatchEigenvaluesAndTheOffsetShrinks) {
   o.dt_out = 0.01;
   o.rtol = 1e-9;
   o.atol = 1e-11;
-  const std::vector<IdentifiedPole> poles = test::identifySimulationPoles(simulate(m, start, o), eq.q, o.dt_out);
+  const std::vector<IdentifiedPole> poles = realizedPoles(simulate(m, start, o), eq, o.dt_out);
   for (const char* name : {"pitch", "tower FA 1"}) {
     const Mode* md = test::modeNamed(modes, name);
     ASSERT_NE(md, nullptr) << name;
