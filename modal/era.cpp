@@ -22,12 +22,11 @@ std::vector<IdentifiedPole> identifyPoles(const MatX& y, double dt, const EraOpt
   if (r < 2 || s < r * p)
     throw InputError("pole identification: " + std::to_string(N) + " samples are too few for " + std::to_string(r) +
                      " block rows of " + std::to_string(p) + " channels");
-  MatX H0(r * p, s), H1(r * p, s);
-  for (Eigen::Index j = 0; j < s; ++j)
-    for (Eigen::Index i = 0; i < r; ++i) {
-      H0.block(i * p, j, p, 1) = y.row(i + j).transpose();
-      H1.block(i * p, j, p, 1) = y.row(i + j + 1).transpose();
-    }
+  // One Hankel matrix of s + 1 columns: H0 is its first s columns, the shifted H1 its last s.
+  MatX H(r * p, s + 1);
+  for (Eigen::Index j = 0; j <= s; ++j)
+    for (Eigen::Index i = 0; i < r; ++i) H.block(i * p, j, p, 1) = y.row(i + j).transpose();
+  const auto H0 = H.leftCols(s), H1 = H.rightCols(s);
   const Eigen::BDCSVD<MatX> svd(H0, Eigen::ComputeThinU | Eigen::ComputeThinV);
   const VecX& sv = svd.singularValues();
   if (sv.size() == 0 || !(sv(0) > 0)) return {};
@@ -64,6 +63,14 @@ std::vector<IdentifiedPole> identifyPoles(const MatX& y, double dt, const EraOpt
     for (IdentifiedPole& q : poles) q.share /= largest;
   std::sort(poles.begin(), poles.end(), [](const auto& a, const auto& b) { return a.share > b.share; });
   return poles;
+}
+
+const IdentifiedPole* nearestPole(const std::vector<IdentifiedPole>& poles, double damped_freq_hz) {
+  const IdentifiedPole* best = nullptr;
+  for (const IdentifiedPole& p : poles)
+    if (!best || std::abs(p.damped_freq_hz - damped_freq_hz) < std::abs(best->damped_freq_hz - damped_freq_hz))
+      best = &p;
+  return best;
 }
 
 }  // namespace whirl

@@ -35,4 +35,8 @@ struct EraOptions {
 /// \throws InputError when Δt ≤ 0 or there are too few samples for the Hankel matrix
 std::vector<IdentifiedPole> identifyPoles(const MatX& y, double dt, const EraOptions& options = {});
 
+/// The pole whose damped frequency |Im λ|/2π is nearest `damped_freq_hz` [Hz] (the first of equals);
+/// nullptr when `poles` is empty.
+const IdentifiedPole* nearestPole(const std::vector<IdentifiedPole>& poles, double damped_freq_hz);
+
 }  // namespace whirl

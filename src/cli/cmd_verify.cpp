@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "modal/era.hpp"
 #include "modal/nonlinear_check.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/common.hpp"
@@ -59,11 +60,7 @@ void run(const VerifyOptions& opt) {
         best = &md;
     const IdentifiedDecay& d = c.identified[k];
     // The realized pole of this decay nearest the mode's damped frequency.
-    const IdentifiedPole* pole = nullptr;
-    for (const IdentifiedPole& p : c.poles[k])
-      if (best && (!pole || std::abs(p.damped_freq_hz - best->damped_freq_hz) <
-                                std::abs(pole->damped_freq_hz - best->damped_freq_hz)))
-        pole = &p;
+    const IdentifiedPole* pole = best ? nearestPole(c.poles[k], best->damped_freq_hz) : nullptr;
     std::printf("  %-24s %-14.6g %-12.5g | %-14.6g %-12.5g | %-24s %-14.6g %.5g\n", c.identified_dofs[k].c_str(),
                 d.damped_freq_hz, d.damping_ratio, pole ? pole->damped_freq_hz : NAN, pole ? pole->damping_ratio : NAN,
                 best ? best->name.c_str() : "-", best ? best->damped_freq_hz : NAN, best ? best->damping_ratio : NAN);

@@ -20,14 +20,6 @@ inline IdentifiedDecay identifyDofDecay(const Simulation& sim, int dof, double e
   return identifyDecay(sim.time, x, equilibrium);
 }
 
-/// The pole nearest in frequency to f [Hz], nullptr if none.
-inline const IdentifiedPole* poleNear(const std::vector<IdentifiedPole>& poles, double f) {
-  const IdentifiedPole* best = nullptr;
-  for (const IdentifiedPole& p : poles)
-    if (!best || std::abs(p.damped_freq_hz - f) < std::abs(best->damped_freq_hz - f)) best = &p;
-  return best;
-}
-
 /// The mode named `name`, nullptr if none.
 inline const Mode* modeNamed(const std::vector<Mode>& modes, const std::string& name) {
   for (const Mode& md : modes)

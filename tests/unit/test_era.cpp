@@ -18,13 +18,6 @@ double mode(double t, double f, double zeta, double a, double psi) {
   return a * std::exp(-zeta * w * t) * std::cos(w * std::sqrt(1 - zeta * zeta) * t + psi);
 }
 
-const IdentifiedPole* nearest(const std::vector<IdentifiedPole>& poles, double f) {
-  const IdentifiedPole* best = nullptr;
-  for (const IdentifiedPole& p : poles)
-    if (!best || std::abs(p.freq_hz - f) < std::abs(best->freq_hz - f)) best = &p;
-  return best;
-}
-
 }  // namespace
 
 // Two modes sharing two channels (0.1 Hz undamped, 0.8 Hz with 2 % damping) and a constant offset
@@ -41,9 +34,9 @@ TEST(Era, SeparatesModesThatShareTheChannels) {
   }
   const std::vector<IdentifiedPole> poles = identifyPoles(y, dt);
   ASSERT_EQ(poles.size(), 3u);
-  const IdentifiedPole* slow = nearest(poles, 0.1);
-  const IdentifiedPole* fast = nearest(poles, 0.8);
-  const IdentifiedPole* still = nearest(poles, 0.0);
+  const IdentifiedPole* slow = nearestPole(poles, 0.1);
+  const IdentifiedPole* fast = nearestPole(poles, 0.8);
+  const IdentifiedPole* still = nearestPole(poles, 0.0);
   EXPECT_NEAR(slow->freq_hz, 0.1, 1e-9);
   EXPECT_NEAR(slow->damping_ratio, 0.0, 1e-8);
   EXPECT_NEAR(fast->freq_hz, 0.8, 1e-9);
@@ -64,11 +57,11 @@ TEST(Era, RealPoleHasUnitDamping) {
   for (int k = 0; k < N; ++k) y(k, 0) = std::exp(-rate * k * dt) + mode(k * dt, 0.5, 0.05, 0.5, 1.0);
   const std::vector<IdentifiedPole> poles = identifyPoles(y, dt);
   ASSERT_EQ(poles.size(), 2u);
-  const IdentifiedPole* real = nearest(poles, rate / kTwoPi);
+  const IdentifiedPole* real = nearestPole(poles, 0.0);
   EXPECT_NEAR(real->freq_hz, rate / kTwoPi, 1e-9);
   EXPECT_NEAR(real->damping_ratio, 1.0, 1e-12);
   EXPECT_EQ(real->damped_freq_hz, 0.0);
-  EXPECT_NEAR(nearest(poles, 0.5)->damping_ratio, 0.05, 1e-8);
+  EXPECT_NEAR(nearestPole(poles, 0.5)->damping_ratio, 0.05, 1e-8);
 }
 
 TEST(Era, TooFewSamplesOrABadIntervalAreInputErrors) {

@@ -43,7 +43,7 @@ TEST(SimulateFloating3Dof, SeedReleaseStateFrequencies) {
     const IdentifiedDecay d = test::identifyDofDecay(sim, dof, eq.q(dof));
     const Mode* mode = test::modeNamed(modes, name);
     ASSERT_NE(mode, nullptr) << name;
-    const IdentifiedPole* p = test::poleNear(poles, mode->damped_freq_hz);
+    const IdentifiedPole* p = nearestPole(poles, mode->damped_freq_hz);
     ASSERT_NE(p, nullptr) << name;
     std::printf("%s: eigenvalue %.6f Hz; zero crossings %.6f Hz (%+.3f %%); realization %.6f Hz (%+.3f %%)\n", name,
                 mode->damped_freq_hz, d.damped_freq_hz, 100 * (d.damped_freq_hz / mode->damped_freq_hz - 1),
@@ -99,7 +99,7 @@ TEST(SimulateFloating3Dof, SmallDecaysMatchEigenvaluesAndTheOffsetShrinks) {
   for (const char* name : {"pitch", "tower FA 1"}) {
     const Mode* md = test::modeNamed(modes, name);
     ASSERT_NE(md, nullptr) << name;
-    const double f = test::poleNear(poles, md->damped_freq_hz)->damped_freq_hz;
+    const double f = nearestPole(poles, md->damped_freq_hz)->damped_freq_hz;
     std::printf("%s realized at 0.5 deg: %.3e\n", name, f / md->damped_freq_hz - 1);
     EXPECT_NEAR(f, md->damped_freq_hz, 1e-3 * md->damped_freq_hz) << name;
   }

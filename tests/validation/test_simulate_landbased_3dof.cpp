@@ -73,7 +73,7 @@ TEST(SimulateLandbased3Dof, LinearModelIsTheJacobianOfTheNonlinearOne) {
     ASSERT_NE(mode, nullptr);
     EXPECT_NEAR(r.identified[k].damped_freq_hz, mode->damped_freq_hz, 1e-4 * mode->damped_freq_hz);
     EXPECT_NEAR(r.identified[k].damping_ratio, mode->damping_ratio, 0.01 * mode->damping_ratio);
-    const IdentifiedPole* p = test::poleNear(r.poles[k], mode->damped_freq_hz);
+    const IdentifiedPole* p = nearestPole(r.poles[k], mode->damped_freq_hz);
     ASSERT_NE(p, nullptr);
     std::printf("%s realized: frequency %+.2e, damping %+.2e relative\n", mode->name.c_str(),
                 p->damped_freq_hz / mode->damped_freq_hz - 1, p->damping_ratio / mode->damping_ratio - 1);
