@@ -67,8 +67,9 @@ BeamProperties tabulatedProperties(const CaseNode& n, double L) {
 BeamIntegration readIntegration(const CaseNode& n) {
   n.allowKeys({"method", "n"});
   BeamIntegration q;
+  std::string s = "gauss";
   if (const auto m = n.find("method")) {
-    const std::string s = m->text();
+    s = m->text();
     if (s == "gauss") q.method = BeamIntegration::Gauss;
     else if (s == "trapezoid") q.method = BeamIntegration::Trapezoid;
     else if (s == "midpoint") q.method = BeamIntegration::Midpoint;
@@ -78,8 +79,9 @@ BeamIntegration readIntegration(const CaseNode& n) {
   if (const auto k = n.find("n")) {
     if (q.method == BeamIntegration::Stations) k->fail("n has no meaning with method stations (the property stations are used)");
     q.n = k->integer();
-    if (q.n < 1 || q.n > limits::kMaxIntegrationPoints)
-      k->fail("must be between 1 and " + std::to_string(limits::kMaxIntegrationPoints) + " (src/model/limits.hpp)");
+    const int most = q.method == BeamIntegration::Gauss ? limits::kMaxGaussPoints : limits::kMaxIntegrationPoints;
+    if (q.n < 1 || q.n > most)
+      k->fail("must be between 1 and " + std::to_string(most) + " with method " + s + " (src/model/limits.hpp)");
   }
   return q;
 }

@@ -16,7 +16,8 @@
 /// | kMaxFemShapeElements | 200 | `shapes: {from: fem, elements:}` (a 2D beam for mode shapes) |
 /// | kMaxFemShapeMesh | 300 | the elements of that beam once every property station is a node |
 /// | kMaxReducedModes | 1000 | Craig–Bampton `modes:` of a `fem_beam` |
-/// | kMaxIntegrationPoints | 100000 | beam `integration: {n:}` |
+/// | kMaxIntegrationPoints | 10000 | beam `integration: {method: trapezoid or midpoint, n:}` |
+/// | kMaxGaussPoints | 500 | beam `integration: {method: gauss, n:}` |
 /// | kMaxFemShapeMode | 50 | mode numbers of FE shapes (`shapes: {from: fem, modes: [{mode:}]}`) |
 /// | kMaxAnalyticShapeMode | 1000 | mode numbers of analytic shapes (`clamped_topmass`, `torsion_sine`) |
 /// | kMaxLinDimension | 100000 | `.lin` header counts (states, inputs, outputs) and matrix sizes `A: n x m` |
@@ -38,7 +39,14 @@ inline constexpr int kMaxFemElements = 2000;
 inline constexpr int kMaxFemShapeElements = 200;
 inline constexpr int kMaxFemShapeMesh = 300;
 inline constexpr int kMaxReducedModes = 1000;
-inline constexpr int kMaxIntegrationPoints = 100000;
+// A beam's integrals cost O(n) in its points (each adds its sections' inertia and stiffness and one
+// interval of the slope-product integral); the trapezoid rule's relative error at 10 000 points is
+// ~1e-8, below which more points only cost time.
+inline constexpr int kMaxIntegrationPoints = 10000;
+// Gauss nodes come from the dense eigenproblem of the n × n Jacobi matrix (Golub and Welsch 1969),
+// O(n³): 3210 points took over two minutes under the sanitizers (a fuzz finding). n Gauss points
+// integrate polynomials of degree 2n − 1 exactly; the cases use 16–200.
+inline constexpr int kMaxGaussPoints = 500;
 inline constexpr int kMaxFemShapeMode = 50;
 inline constexpr int kMaxAnalyticShapeMode = 1000;
 inline constexpr int kMaxLinDimension = 100000;

@@ -88,8 +88,16 @@ void checkInertia(const Body& b) {
   if (in.ne > 0) {
     MatX mee = MatX::Zero(in.ne, in.ne);
     for (int k = 0; k < 3; ++k) mee += in.S[4 * k].block(1, 1, in.ne, in.ne);
-    Eigen::LLT<MatX> llt(0.5 * (mee + mee.transpose()));
-    if (llt.info() != Eigen::Success)
+    // Scaled to unit diagonal, so that the test does not depend on how each shape is normalized: two
+    // identical shapes give an eigenvalue 0 up to round-off, which a Cholesky factorization may pass.
+    const VecX d = mee.diagonal();
+    bool definite = (d.array() > 0).all();
+    if (definite) {
+      const VecX s = d.cwiseSqrt().cwiseInverse();
+      const MatX unit = s.asDiagonal() * (0.5 * (mee + mee.transpose())) * s.asDiagonal();
+      definite = Eigen::SelfAdjointEigenSolver<MatX>(unit, Eigen::EigenvaluesOnly).eigenvalues().minCoeff() > 1e-10;
+    }
+    if (!definite)
       throw InputError(bodyWhere(b, "elastic mass matrix is not positive definite (a shape function with no "
                                     "mass, or two identical shapes)"));
     if (b.elastic.K.rows() != in.ne || b.elastic.K.cols() != in.ne || b.elastic.D.rows() != in.ne ||

@@ -1,7 +1,9 @@
 #include "src/shapes/beam.hpp"
 
+#include "src/shapes/gauss_legendre.hpp"
 #include "src/shapes/interpolate.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "src/model/error.hpp"
@@ -38,13 +40,9 @@ void quadrature(const BeamProperties& p, const BeamIntegration& q, VecX& x, VecX
       return;
     }
     case BeamIntegration::Gauss: {
-      // Golub–Welsch: nodes are eigenvalues of the Jacobi matrix of the Legendre recurrence.
-      const int n = q.n;
-      MatX J = MatX::Zero(n, n);
-      for (int i = 1; i < n; ++i) J(i, i - 1) = J(i - 1, i) = i / std::sqrt(4.0 * i * i - 1.0);
-      Eigen::SelfAdjointEigenSolver<MatX> es(J);
-      x = (es.eigenvalues().array() + 1.0) * (L / 2);
-      w = 2.0 * es.eigenvectors().row(0).transpose().array().square() * (L / 2);
+      gaussLegendre(q.n, x, w);
+      x = (x.array() + 1.0) * (L / 2);
+      w *= L / 2;
       return;
     }
   }
@@ -118,23 +116,51 @@ void validateBeam(const BeamProperties& p, const std::string& body) {
     throw InputError(where("x", "stations must run from 0 to the length"));
 }
 
-MatX slopeProductIntegral(const std::vector<ShapePtr>& shapes, double x) {
-  const int ne = static_cast<int>(shapes.size());
-  MatX G = MatX::Zero(ne, ne);
-  if (x <= 0) return G;
-  // Composite Gauss (4 points per panel, 64 panels): exact for the polynomial shapes in use.
+namespace {
+
+// Adds ∫ₐᵇ (u_y,i' u_y,j' + u_z,i' u_z,j') dx to G by composite 4-point Gauss on `panels` equal panels.
+void addSlopeProducts(const std::vector<ShapePtr>& shapes, double a, double b, int panels, MatX& G) {
   static const double gx[4] = {-0.8611363115940526, -0.3399810435848563, 0.3399810435848563, 0.8611363115940526};
   static const double gw[4] = {0.3478548451374538, 0.6521451548625461, 0.6521451548625461, 0.3478548451374538};
-  const int panels = 64;
-  const double h = x / panels;
+  const int ne = static_cast<int>(shapes.size());
+  const double h = (b - a) / panels;
   std::vector<ShapeValue> v(ne);
   for (int p = 0; p < panels; ++p)
     for (int k = 0; k < 4; ++k) {
-      const double xi = (p + 0.5) * h + 0.5 * h * gx[k];
+      const double xi = a + (p + 0.5) * h + 0.5 * h * gx[k];
       for (int i = 0; i < ne; ++i) v[i] = shapes[i]->eval(xi);
       for (int i = 0; i < ne; ++i)
         for (int j = 0; j < ne; ++j) G(i, j) += 0.5 * h * gw[k] * (v[i].uy1 * v[j].uy1 + v[i].uz1 * v[j].uz1);
     }
+}
+
+// Panels of the slope-product integral from the root: exact for the polynomial shapes in use.
+constexpr int kSlopePanels = 64;
+
+// G(x_k) at every integration point (ascending x), accumulated interval by interval with panels no
+// wider than L/64: one pass along the beam rather than an integral from the root per point, which made
+// the cost of a beam grow with the square of its point count.
+std::vector<MatX> slopeProductIntegrals(const std::vector<ShapePtr>& shapes, const VecX& xs, double L) {
+  const int ne = static_cast<int>(shapes.size());
+  std::vector<MatX> out;
+  out.reserve(xs.size());
+  MatX G = MatX::Zero(ne, ne);
+  double a = 0;
+  for (Eigen::Index k = 0; k < xs.size(); ++k) {
+    const double b = std::max(a, xs(k));
+    if (b > a) addSlopeProducts(shapes, a, b, std::max(1, static_cast<int>(std::ceil(kSlopePanels * (b - a) / L))), G);
+    out.push_back(G);
+    a = b;
+  }
+  return out;
+}
+
+}  // namespace
+
+MatX slopeProductIntegral(const std::vector<ShapePtr>& shapes, double x) {
+  const int ne = static_cast<int>(shapes.size());
+  MatX G = MatX::Zero(ne, ne);
+  if (x > 0) addSlopeProducts(shapes, 0, x, kSlopePanels, G);
   return G;
 }
 
@@ -153,6 +179,7 @@ BeamBody buildBeamBody(const BeamProperties& p, const std::vector<ShapePtr>& sha
 
   VecX xs, ws;
   quadrature(p, opt.integration, xs, ws);
+  const std::vector<MatX> G = in.quadratic ? slopeProductIntegrals(shapes, xs, p.length) : std::vector<MatX>{};
   std::vector<ShapeValue> v(ne);
   for (Eigen::Index k = 0; k < xs.size(); ++k) {
     const double x = xs(k), w = ws(k);
@@ -165,7 +192,7 @@ BeamBody buildBeamBody(const BeamProperties& p, const std::vector<ShapePtr>& sha
     for (int i = 0; i < ne; ++i) P.col(1 + i) << 0.0, v[i].uy - cgz * v[i].tx, v[i].uz + cgy * v[i].tx;
     if (in.quadratic) {
       P.block(0, 1, 1, ne) = meanLineAxialMotion(p, shapes, x).transpose();
-      shorteningColumns(P, slopeProductIntegral(shapes, x));
+      shorteningColumns(P, G[k]);
     }
     in.mass += w * m;
     in.m1 += w * m * P;

@@ -191,6 +191,30 @@ TEST_F(CaseErrors, FemShapes) {
   expectText(text, lineOf(text, "      from: fem"), "only");
 }
 
+// `integration: {n:}` is bounded per method: Gauss nodes come from an O(n³) eigenproblem (3210 points
+// took over two minutes under the sanitizers, a fuzz finding), the other rules cost O(n) shape sums.
+TEST_F(CaseErrors, IntegrationPointCountsAreBounded) {
+  const std::string at = "    uniform: {m: 5000, EIy: 1.0e11, EIz: 1.0e11}";
+  auto with = [&](const std::string& integration) { return at + "\n    integration: " + integration; };
+  const std::string gauss = with("{method: gauss, n: 3210}");
+  expect(at, gauss, "integration.n: must be between 1 and 500 with method gauss",
+         lineOf(replaced(smallTurbineCase(), at, gauss), "integration:"));
+  const std::string implicit = with("{n: 501}");
+  expect(at, implicit, "must be between 1 and 500 with method gauss",
+         lineOf(replaced(smallTurbineCase(), at, implicit), "integration:"));
+  const std::string trapezoid = with("{n: 10001, method: trapezoid}");
+  expect(at, trapezoid, "must be between 1 and 10000 with method trapezoid",
+         lineOf(replaced(smallTurbineCase(), at, trapezoid), "integration:"));
+  const std::string midpoint = with("{method: midpoint, n: 0}");
+  expect(at, midpoint, "must be between 1 and 10000 with method midpoint",
+         lineOf(replaced(smallTurbineCase(), at, midpoint), "integration:"));
+  EXPECT_EQ(readCase(tmp.write("gauss.yaml", replaced(smallTurbineCase(), at, with("{method: gauss, n: 500}")))).ndof(),
+            2);
+  EXPECT_EQ(
+      readCase(tmp.write("trap.yaml", replaced(smallTurbineCase(), at, with("{method: trapezoid, n: 10000}")))).ndof(),
+      2);
+}
+
 TEST_F(CaseErrors, FemShapesValidCaseReads) {
   const std::string fa = "      - {name: tower FA 1, type: one_minus_cos, direction: z}";
   const std::string text = replaced(smallTurbineCase(), fa,
