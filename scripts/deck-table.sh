@@ -35,10 +35,10 @@ cannot be parked with their teeter free (the rotor's weight acts 0.38 m off the 
 teeter spring is 1 N m/rad: README, *Two-bladed and teetered rotors*); the table runs each deck at its
 own RotSpeed, so Test01, 03 and 04 (53.3 rpm) run, and of Test02 and 05 (0 rpm) only Test02 with its
 aerodynamics (12 m/s) finds a parked equilibrium; the suite runs their Campbell sweeps from half the
-rated speed. AOC Test08 runs parked but is refused turning: at
-the blade root the in-plane wind of its yaw error exceeds the rotational speed and BEM has no valid
-solution there, a point OpenFAST's linearization refuses too. UAE VI Test09 (30 deg yaw, 11 m/s) runs at
-its 71.9 rpm and is refused for the same reason parked and at half that speed. The decks with AeroDyn v14
+rated speed. In AOC Test08 (a fixed yaw error) and UAE VI Test09 (30 deg yaw, 11 m/s) the in-plane wind
+of the yaw exceeds the rotational speed at the blade root at some azimuths, and BEM has no valid inflow
+angle there: those elements take the geometric inflow angle without induction, as AeroDyn does in its
+simulation and its linearization (`BEMT_UnCoupledSolve`), and whirl says how many in one note. The decks with AeroDyn v14
 (`CompAero = 1`: Test01, 04, 06, 09, 11, 16, 17) run through its conversion to AeroDyn v15's elements
 and BEMT (README, *Aerodynamics*); SWRT Test16 and 17 interpolate their airfoil tables on the Reynolds
 number (`RENUM`), as AeroDyn v15's `AFTabMod = 2` does in log Re.

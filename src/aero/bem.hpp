@@ -72,10 +72,10 @@ struct BemOptions {
   /// The previous inflow angle: only orders the brackets, as AeroDyn's GetSolveRegionOrdering does with the
   /// previous φ (|φ| < π/4 → the [−π/4, −ε] bracket before [π/2+ε, π−ε]) [rad].
   double phi_guess = 0;
-  /// When no bracket holds a valid solution: false → throw ComputeError (AeroDyn refuses to linearize such an
-  /// operating point, CheckLinearizationInput); true → AeroDyn's time-domain behaviour: geometric φ, a = a' = 0,
-  /// `valid = false`.
-  bool geometric_fallback = false;
+  /// When no bracket holds a valid solution: true → AeroDyn's behaviour (BEMT_UnCoupledSolve, in its time
+  /// simulation and its linearization alike, with an informational message): the geometric φ = atan2(Vx, Vy),
+  /// a = a' = 0, `valid = false`; false → throw ComputeError listing the brackets tried.
+  bool geometric_fallback = true;
 };
 
 /// Inductions and residual at a given φ (AeroDyn BEMTU_InductionWithResidual / inductionFactors0).

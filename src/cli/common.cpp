@@ -87,9 +87,25 @@ Model loadModel(const ModelOptions& opt) {
 std::vector<std::string> checkSolvedPoints(const ModelOptions& opt, const Model& model,
                                            const std::vector<OperatingPoint>& points, const std::string& where) {
   std::vector<std::string> problems;
-  for (const OperatingPoint& op : points)
+  std::size_t geometric = 0, elements = 0, points_with = 0;
+  for (const OperatingPoint& op : points) {
     for (const std::string& p : checkPointValidity(model, op))
       if (std::find(problems.begin(), problems.end(), p) == problems.end()) problems.push_back(p);
+    const auto n = static_cast<std::size_t>(std::count_if(op.aero.elements.begin(), op.aero.elements.end(),
+                                                          [](const AeroElementState& e) { return !e.bem_valid; }));
+    geometric += n;
+    elements += op.aero.elements.size();
+    points_with += n > 0;
+  }
+  // AeroDyn's informational message, once per command: the elements are not an error there either.
+  if (geometric > 0 && parallel::rank() == 0)
+    std::fprintf(stderr,
+                 "whirl: note: %s: %s%zu of %zu blade elements at %zu of %zu operating points have no valid BEM "
+                 "inflow angle (in-plane wind against the rotation, e.g. at the root in yaw); they take the geometric "
+                 "inflow angle without induction, as AeroDyn does\n",
+                 escapeControlCharacters(opt.case_path).c_str(),
+                 where.empty() ? "" : (escapeControlCharacters(where) + ": ").c_str(), geometric, elements, points_with,
+                 points.size());
   if (problems.empty()) return problems;
   const std::string prefix = opt.case_path + ": " + (where.empty() ? "" : where + ": ");
   if (!opt.allow_invalid_point)

@@ -129,7 +129,8 @@ struct RotorInflow {
 
 /// sum += the loads of blade bi's elements (body components: BodyLoadSum::addBody), elements numbered
 /// from index0 over all blades; totals and record (double) accumulate when given.
-/// Throws ComputeError naming the blade and element when BEM has no solution.
+/// Throws ComputeError naming the blade and element when BEM fails (a non-finite velocity, a root finder
+/// that does not converge); where no bracket holds a valid root the inflow is geometric (bemSection).
 template <class TK, class T>
 void bladeLoads(const Model& m, int bi, int index0, const BladeMotion<TK>& bm, const RotorInflow<TK, T>& in,
                 std::vector<BemRoot>& bem, std::vector<SectionJet>& jets, AeroRecord* record,
@@ -190,6 +191,7 @@ void bladeLoads(const Model& m, int bi, int index0, const BladeMotion<TK>& bm, c
           es.fx = L.fx;
           es.fy = L.fy;
           es.m = L.mz;
+          es.bem_valid = sec.bem_valid;
           record->elements.push_back(es);
           record->thrust += st.weight * Fg.dot(in.disk);
           record->torque += st.weight * (d.cross(Fg) + Mg).dot(in.disk);

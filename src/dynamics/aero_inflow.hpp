@@ -17,6 +17,7 @@ struct AeroElementState {
   double w = 0;              ///< relative speed [m/s]
   double cl = 0, cd = 0, cm = 0;
   double fx = 0, fy = 0, m = 0;  ///< normal and in-plane force [N/m], pitching moment [N m/m]
+  bool bem_valid = true;         ///< false: BEM had no valid inflow angle, φ is the geometric one (AeroDyn GeomPhi)
 };
 
 /// Induced velocities per element, blades in order, elements root to tip (AeroModel::nstations()):

@@ -31,6 +31,7 @@ template <class T>
 struct SectionState {
   aero::SectionLoads<T> loads;
   double a = 0, ap = 0;  ///< induction factors (values)
+  bool bem_valid = true;  ///< false: BEM had no valid root, the inflow is geometric (BemRoot::bem_valid)
 };
 
 /// Loads with the induced velocities held fixed (AeroDyn `computeFrozenWake`).
@@ -134,7 +135,13 @@ SectionState<T> bemSection(const AeroModel& am, const AeroStation& st, const T& 
     }
     const aero::BemSolution sol = aero::solveInflow(b, x, y, am.bem, hint, root.valid ? root.search_slope : 0.0);
     root = BemRoot{true, x, y, b.theta, b.r, sol.phi, sol.a, sol.ap};
+    root.bem_valid = sol.valid;
     root.search_slope = sol.slope;
+  }
+  if (!root.bem_valid) {  // no valid BEM root: the geometric inflow, a = a' = 0 (AeroDyn's fallback)
+    SectionState<T> s = frozenSection(am, st, vx, vy, theta, valueOf(r), 0.0, 0.0);
+    s.bem_valid = false;
+    return s;
   }
   SectionState<T> s;
   const bool blended = valueOf(weight) < 1.0;

@@ -79,6 +79,7 @@ struct BemRoot {
   bool valid = false;
   double vx = 0, vy = 0, theta = 0, r = 0;  ///< the values it was solved at
   double phi = 0, a = 0, ap = 0;
+  bool bem_valid = true;  ///< a BEM root; false: no bracket held one, φ geometric without induction (as AeroDyn)
   double slope = 0;  ///< ∂R/∂φ at phi for the AD passes (aero::inflowAngle), 0 until evaluated
   double search_slope = 0;  ///< the root search's last secant slope (BemSolution::slope): the next search's first step
 };

@@ -1,6 +1,7 @@
 // Public OpenFAST decks as users bring them (issue 16; tests/data/openfast/README.md, `decks/`): the IEA
 // 3.4 MW reference turbine written by WISDEM (`BldFile1`, `BldFlDmp1`, …), a FAST v7 primary file,
-// and a deck with platform DOFs on, each refused on one line.
+// a deck with platform DOFs on, each refused on one line, and a yawed rotor with elements that have no
+// BEM root.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -37,6 +38,22 @@ TEST(CliDecks, FastV7PrimaryFileOneLine) {
   EXPECT_NE(r.code, 0);
   EXPECT_THAT(r.err, HasSubstr("Test01.fst:7: ADAMSPrep: this is a FAST v7 primary input file"));
   EXPECT_EQ(lines(r.err), 1) << r.err;
+}
+
+// AOC Test08 (fixed yaw error, 11 m/s) turning: at the root the in-plane wind of the yaw exceeds the
+// rotation at some azimuths; those elements take the geometric inflow (AeroDyn's fallback) and a note
+// per rotor speed says how many. Before: "no valid BEM inflow angle" refused the deck.
+TEST(CliDecks, YawedRotorWithoutABemRootAtTheRootRunsWithOneNote) {
+  const auto dir = test::freshDir("decks_test08");
+  const auto r = test::whirl("campbell " + kDecks + "certtest/Test08.fst --rpm 32.07:32.07:64.14 --no-plot --out " +
+                             dir.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_THAT(r.err, HasSubstr("have no valid BEM inflow angle"));
+  EXPECT_THAT(r.err, HasSubstr("they take the geometric inflow angle without induction, as AeroDyn does"));
+  // One note per rotor speed, naming it.
+  EXPECT_THAT(r.err, HasSubstr("Test08.fst: 32.07 rpm: "));
+  EXPECT_THAT(r.err, HasSubstr("Test08.fst: 64.14 rpm: "));
+  EXPECT_EQ(lines(r.err), 4) << "the two notes of the AeroDyn keys and one per rotor speed: " << r.err;
 }
 
 TEST(CliDecks, PlatformDofsOneLineOneReason) {

@@ -94,6 +94,32 @@ TEST(AeroLoads, QuasiSteadyJacobiansEqualCentralDifferences) {
   expectJacobiansMatch(m, perturbedPoint(m), nullptr);
 }
 
+// In a large yaw error the in-plane wind exceeds the rotation speed at the root at some azimuths, and
+// BEM has no valid inflow angle there (AOC Test08, UAE VI Test09): those elements take the geometric
+// angle without induction, as AeroDyn does, and the Jacobians stay those of the loads evaluated.
+TEST(AeroLoads, ElementsWithoutABemRootTakeTheGeometricInflowWithConsistentJacobians) {
+  Model m = aeroRotorModel(AeroRotorOptions{.rpm = 12, .wind = 8});
+  m.aero.wind.direction = 60 * std::numbers::pi / 180;
+  OperatingPoint op = perturbedPoint(m);
+  Workspace<double> ws(m);
+  VecX e(m.ndof());
+  int invalid = 0;
+  for (int k = 0; k < 36 && invalid == 0; ++k) {
+    op.q(*m.findDof("azimuth")) = k * std::numbers::pi / 18;
+    AeroRecord rec;
+    residual(m, ws, op.q, op.qd, op.qdd, op.u, e, nullptr, &rec);
+    for (const AeroElementState& el : rec.elements)
+      if (!el.bem_valid) {
+        ++invalid;
+        EXPECT_EQ(el.a, 0.0);
+        EXPECT_EQ(el.ap, 0.0);
+        EXPECT_NEAR(el.phi, std::atan2(el.vx, el.vy), 1e-14);
+      }
+  }
+  ASSERT_GT(invalid, 0) << "no element without a BEM root: the test does not reach the fallback";
+  expectJacobiansMatch(m, op, nullptr);
+}
+
 TEST(AeroLoads, FrozenInductionReproducesTheSolvedPoint) {
   // At the point it was taken from, the frozen wake gives the same residual as the BEM solution.
   const Model m = aeroRotorModel();
