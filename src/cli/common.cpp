@@ -97,7 +97,8 @@ std::vector<std::string> checkSolvedPoints(const ModelOptions& opt, const Model&
     elements += op.aero.elements.size();
     points_with += n > 0;
   }
-  // AeroDyn's informational message, once per command: the elements are not an error there either.
+  // AeroDyn's informational message, once per call (a sweep calls per operating condition): the
+  // elements are not an error there either.
   if (geometric > 0 && parallel::rank() == 0)
     std::fprintf(stderr,
                  "whirl: note: %s: %s%zu of %zu blade elements at %zu of %zu operating points have no valid BEM "

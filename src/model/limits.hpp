@@ -43,9 +43,9 @@ inline constexpr int kMaxReducedModes = 1000;
 // interval of the slope-product integral); the trapezoid rule's relative error at 10 000 points is
 // ~1e-8, below which more points only cost time.
 inline constexpr int kMaxIntegrationPoints = 10000;
-// Gauss nodes come from the dense eigenproblem of the n × n Jacobi matrix (Golub and Welsch 1969),
-// O(n³): 3210 points took over two minutes under the sanitizers (a fuzz finding). n Gauss points
-// integrate polynomials of degree 2n − 1 exactly; the cases use 16–200.
+// n Gauss points integrate polynomials of degree 2n − 1 exactly; the cases use 16–200, and more than
+// 500 only cost time (their nodes by Newton's method are O(n²); from the dense Jacobi eigenproblem they
+// were O(n³), and 3210 points took over two minutes under the sanitizers, a fuzz finding).
 inline constexpr int kMaxGaussPoints = 500;
 inline constexpr int kMaxFemShapeMode = 50;
 inline constexpr int kMaxAnalyticShapeMode = 1000;

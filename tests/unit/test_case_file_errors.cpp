@@ -191,8 +191,8 @@ TEST_F(CaseErrors, FemShapes) {
   expectText(text, lineOf(text, "      from: fem"), "only");
 }
 
-// `integration: {n:}` is bounded per method: Gauss nodes come from an O(n³) eigenproblem (3210 points
-// took over two minutes under the sanitizers, a fuzz finding), the other rules cost O(n) shape sums.
+// `integration: {n:}` is bounded per method at its key: 3210 Gauss points took over two minutes under
+// the sanitizers (a fuzz finding, when their nodes came from a dense eigenproblem).
 TEST_F(CaseErrors, IntegrationPointCountsAreBounded) {
   const std::string at = "    uniform: {m: 5000, EIy: 1.0e11, EIz: 1.0e11}";
   auto with = [&](const std::string& integration) { return at + "\n    integration: " + integration; };
