@@ -196,18 +196,14 @@ TEST_F(CaseErrors, FemShapes) {
 TEST_F(CaseErrors, IntegrationPointCountsAreBounded) {
   const std::string at = "    uniform: {m: 5000, EIy: 1.0e11, EIz: 1.0e11}";
   auto with = [&](const std::string& integration) { return at + "\n    integration: " + integration; };
-  const std::string gauss = with("{method: gauss, n: 3210}");
-  expect(at, gauss, "integration.n: must be between 1 and 500 with method gauss",
-         lineOf(replaced(smallTurbineCase(), at, gauss), "integration:"));
-  const std::string implicit = with("{n: 501}");
-  expect(at, implicit, "must be between 1 and 500 with method gauss",
-         lineOf(replaced(smallTurbineCase(), at, implicit), "integration:"));
-  const std::string trapezoid = with("{n: 10001, method: trapezoid}");
-  expect(at, trapezoid, "must be between 1 and 10000 with method trapezoid",
-         lineOf(replaced(smallTurbineCase(), at, trapezoid), "integration:"));
-  const std::string midpoint = with("{method: midpoint, n: 0}");
-  expect(at, midpoint, "must be between 1 and 10000 with method midpoint",
-         lineOf(replaced(smallTurbineCase(), at, midpoint), "integration:"));
+  auto refused = [&](const std::string& integration, const std::string& what) {
+    const std::string text = with(integration);
+    expect(at, text, what, lineOf(replaced(smallTurbineCase(), at, text), "integration:"));
+  };
+  refused("{method: gauss, n: 3210}", "integration.n: must be between 1 and 500 with method gauss");
+  refused("{n: 501}", "must be between 1 and 500 with method gauss");
+  refused("{n: 10001, method: trapezoid}", "must be between 1 and 10000 with method trapezoid");
+  refused("{method: midpoint, n: 0}", "must be between 1 and 10000 with method midpoint");
   EXPECT_EQ(readCase(tmp.write("gauss.yaml", replaced(smallTurbineCase(), at, with("{method: gauss, n: 500}")))).ndof(),
             2);
   EXPECT_EQ(
