@@ -202,6 +202,9 @@ OperatingPoint solveOperatingPoint(const Model& m, const OperatingPoint& start, 
   // For the message when Newton fails: the stiffness of the first Newton matrix and the largest
   // loads seen on each solved coordinate over the iterations.
   VecX load_seen = es.cwiseAbs();
+  // The two iterates before op.q and the residual at the last one: a jump of the loads between them.
+  VecX q_before, q_before2, es_before;
+  LoadJump jump;
   MatX K_first;
   if ((opt.chord || opt.chord_matrix) && ns > 0 && es.lpNorm<Eigen::Infinity>() > target) {
     // Chord steps are a residual and a back-substitution each, a fifth of a Newton step (which
@@ -257,6 +260,7 @@ OperatingPoint solveOperatingPoint(const Model& m, const OperatingPoint& start, 
       std::string msg = "operating point did not converge in " + std::to_string(opt.max_iterations) +
                         " Newton iterations: residual " + std::to_string(es(worst)) + " on DOF '" +
                         m.dofs[op.solved[worst]].name + "'";
+      if (jump.dof >= 0) msg += ": " + describe(m, jump);
       const int weak = weakJoint(m, op.solved, K_first, load_seen);
       if (weak >= 0) {
         // The load on it is what the rest of the structure pushes with while it is held: solve
@@ -304,12 +308,29 @@ OperatingPoint solveOperatingPoint(const Model& m, const OperatingPoint& start, 
         throw ComputeError(noEquilibrium(m, d, es(worst)));
       }
     }
+    q_before2 = std::move(q_before);
+    q_before = op.q;
+    es_before = es;
     for (int k = 0; k < ns; ++k) op.q(op.solved[k]) += dq(k);
     ++op.iterations;
     es = solvedResidual();
     fresh = true;
     if (!es.allFinite()) throw ComputeError("operating point: Newton diverged (residual not finite)");
     load_seen = load_seen.cwiseMax(es.cwiseAbs());
+    // Back where it was two steps ago: the two last iterates may straddle a jump of the loads.
+    if (q_before2.size() > 0 &&
+        (op.q - q_before2).lpNorm<Eigen::Infinity>() <= 1e-3 * (op.q - q_before).lpNorm<Eigen::Infinity>()) {
+      AeroRecord other;
+      VecX e_other(m.ndof());
+      residual(m, ws, q_before, op.qd, op.qdd, op.u, e_other, nullptr, record ? &other : nullptr);
+      jump = loadJump(op.solved, op.q, q_before, es, es_before, record, record ? &other : nullptr);
+      if (jump.dof >= 0 && jump.size <= kMaxLoadJump * scale) {
+        if (es_before.norm() < es.norm()) op.q = q_before;
+        es = solvedResidual();  // also the workspace's BEM roots, which the linearization starts from
+        op.load_jump = jump;
+        break;
+      }
+    }
     if (dq.lpNorm<Eigen::Infinity>() < 1e-14 * (1.0 + op.q.lpNorm<Eigen::Infinity>())) break;
   }
   op.residual_norm = es.norm();

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "linearize/linearize_workspace.hpp"
+#include "linearize/load_jump.hpp"
 #include "src/dynamics/aero_inflow.hpp"
 #include "src/model/model.hpp"
 #include "src/model/operating_condition.hpp"
@@ -33,6 +34,10 @@ struct OperatingPoint {
   AeroRecord aero;
   AeroInflow inflow;
   VecX e;  ///< the residual at the solution, every coordinate (dim ndof; rotating and held ones too) [N, N m]
+  /// Set (dof ≥ 0) when the equilibrium lies on a jump of the loads (linearize/load_jump.hpp): Newton
+  /// stepped back and forth across it, and the point is the side with the smaller residual, which is
+  /// then at most the jump's size.
+  LoadJump load_jump;
 };
 
 struct EquilibriumOptions {
@@ -85,6 +90,9 @@ void copyDeflections(const Model& model, const VecX& from, VecX& q);
 
 /// Solves the equilibrium of the non-rotating active coordinates starting from `start`; the
 /// unrestrained ones (unrestrainedCoordinates, or EquilibriumOptions::held) stay at their start value.
+/// Newton stepping back and forth between two points across a jump of the loads, with zero between
+/// the two sides' residuals and a jump below kMaxLoadJump of the load scale, ends there: the side with
+/// the smaller residual (OperatingPoint::load_jump).
 /// Throws ComputeError when K is singular or Newton does not converge, or when a load acts on a held
 /// coordinate at a time-invariant point (every rate 0: nothing turns, so nothing averages the load
 /// out — a body falling along a free prismatic joint); when a joint coordinate is (nearly) without

@@ -13,7 +13,8 @@
 /// - deflection |P_e q_e| ≤ `max_deflection_fraction` · L, L the largest distance of a body point from
 ///   the body origin (for a beam, its length; the shape coordinate of a beam is its tip deflection [m]);
 /// - slope |Θ q_e|∞ ≤ `max_slope` rad (the small-angle assumption);
-/// - the equilibrium residual over the solved coordinates ≤ `max_relative_residual` · the load scale;
+/// - the equilibrium residual over the solved coordinates ≤ `max_relative_residual` · the load scale, or
+///   on a jump of the loads (OperatingPoint::load_jump) ≤ the jump;
 /// - every joint rotation solved for equilibrium stays within half a turn of its start value (a
 ///   coordinate too weak for its loads swings round: a parked teeter under the rotor's weight);
 /// - every active coordinate with a spring law linearized on one piece (DofSpring::q_min … q_max, a

@@ -35,7 +35,8 @@ cannot be parked with their teeter free (the rotor's weight acts 0.38 m off the 
 teeter spring is 1 N m/rad: README, *Two-bladed and teetered rotors*); the table runs each deck at its
 own RotSpeed, so Test01, 03 and 04 (53.3 rpm) run, and of Test02 and 05 (0 rpm) only Test02 with its
 aerodynamics (12 m/s) finds a parked equilibrium; the suite runs their Campbell sweeps from half the
-rated speed. In AOC Test08 (a fixed yaw error) and UAE VI Test09 (30 deg yaw, 11 m/s) the in-plane wind
+rated speed (Test03 and 05 in still air, where the teeter's equilibrium at half the rated speed lies on a
+jump of one element's loads: README, *Aerodynamics*). In AOC Test08 (a fixed yaw error) and UAE VI Test09 (30 deg yaw, 11 m/s) the in-plane wind
 of the yaw exceeds the rotational speed at the blade root at some azimuths, and BEM has no valid inflow
 angle there: those elements take the geometric inflow angle without induction, as AeroDyn does in its
 simulation and its linearization (`BEMT_UnCoupledSolve`), and whirl says how many in one note. The decks with AeroDyn v14

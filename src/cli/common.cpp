@@ -12,12 +12,13 @@
 #include <memory>
 #include <unistd.h>
 
+#include "linearize/load_jump.hpp"
 #include "linearize/point_validity.hpp"
 #include "src/io/case_file.hpp"
-#include "src/turbine/elastodyn_model.hpp"
 #include "src/model/error.hpp"
 #include "src/model/text.hpp"
 #include "src/parallel/session.hpp"
+#include "src/turbine/elastodyn_model.hpp"
 
 namespace whirl::cli {
 
@@ -87,8 +88,14 @@ Model loadModel(const ModelOptions& opt) {
 std::vector<std::string> checkSolvedPoints(const ModelOptions& opt, const Model& model,
                                            const std::vector<OperatingPoint>& points, const std::string& where) {
   std::vector<std::string> problems;
-  std::size_t geometric = 0, elements = 0, points_with = 0;
+  std::size_t geometric = 0, elements = 0, points_with = 0, on_jump = 0;
+  const OperatingPoint* largest_jump = nullptr;
   for (const OperatingPoint& op : points) {
+    if (op.load_jump.dof >= 0) {
+      ++on_jump;
+      if (!largest_jump || op.load_jump.size / op.load_scale > largest_jump->load_jump.size / largest_jump->load_scale)
+        largest_jump = &op;
+    }
     for (const std::string& p : checkPointValidity(model, op))
       if (std::find(problems.begin(), problems.end(), p) == problems.end()) problems.push_back(p);
     const auto n = static_cast<std::size_t>(std::count_if(op.aero.elements.begin(), op.aero.elements.end(),
@@ -107,6 +114,13 @@ std::vector<std::string> checkSolvedPoints(const ModelOptions& opt, const Model&
                  escapeControlCharacters(opt.case_path).c_str(),
                  where.empty() ? "" : (escapeControlCharacters(where) + ": ").c_str(), geometric, elements, points_with,
                  points.size());
+  if (largest_jump && parallel::rank() == 0)
+    std::fprintf(stderr,
+                 "whirl: note: %s: %sat %zu of %zu operating points the equilibrium lies on a jump of the loads, "
+                 "taken on the side with the smaller residual (a Filippov equilibrium); the largest: %s\n",
+                 escapeControlCharacters(opt.case_path).c_str(),
+                 where.empty() ? "" : (escapeControlCharacters(where) + ": ").c_str(), on_jump, points.size(),
+                 escapeControlCharacters(describe(model, largest_jump->load_jump)).c_str());
   if (problems.empty()) return problems;
   const std::string prefix = opt.case_path + ": " + (where.empty() ? "" : where + ": ");
   if (!opt.allow_invalid_point)

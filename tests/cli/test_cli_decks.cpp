@@ -56,6 +56,38 @@ TEST(CliDecks, YawedRotorWithoutABemRootAtTheRootRunsWithOneNote) {
   EXPECT_EQ(lines(r.err), 4) << "the two notes of the AeroDyn keys and one per rotor speed: " << r.err;
 }
 
+// AWT-27 Test03 in its steady wind section's still air (HWindSpeed = 0), turning at half its rated speed:
+// with the teeter at equilibrium one blade element's normal velocity, from the rotor's own kinematics,
+// sits at AeroDyn's zero-velocity limit (|Vx| = 1e-3 m/s), where its loads jump (no induction below,
+// BEM above). Zero lies between the teeter loads of the two sides: the equilibrium of Filippov (1988),
+// taken at the jump. Before: "did not converge in 50 Newton iterations: residual 3.509651 on DOF
+// 'teeter'". Its modes are those of the nearly still air that converges without a jump (1e-4 m/s): the
+// largest relative frequency difference measured is 9.1e-5 (teeter BW, 93 % damped), the rigid-body yaw
+// (9e-5 Hz, a near-zero root) aside.
+TEST(CliDecks, StillAirTeeterEquilibriumOnALoadJump) {
+  const std::string deck = "modes " + kDecks + "certtest/Test03.fst --rpm 26.6665 --format json";
+  const auto still = test::whirl(deck);
+  ASSERT_EQ(still.code, 0) << still.err;
+  // A teetered two-bladed rotor: Floquet analysis over 36 azimuths, most of them on the jump.
+  EXPECT_THAT(still.err, HasSubstr(" of 36 operating points the equilibrium lies on a jump of the loads, taken on "
+                                   "the side with the smaller residual (a Filippov equilibrium)"));
+  EXPECT_THAT(still.err, HasSubstr("the load on DOF 'teeter' jumps from -3.5"));
+  EXPECT_THAT(still.err, HasSubstr("crosses AeroDyn's zero-velocity limit of its normal velocity (|Vx| = 0.001 m/s"));
+  const auto breeze = test::whirl(deck + " --set HWindSpeed=0.0001");
+  ASSERT_EQ(breeze.code, 0) << breeze.err;
+  EXPECT_THAT(breeze.err, Not(HasSubstr("jump")));
+  const auto a = nlohmann::json::parse(still.out).at("modes"), b = nlohmann::json::parse(breeze.out).at("modes");
+  ASSERT_EQ(a.size(), b.size());
+  for (size_t i = 0; i < a.size(); ++i) {
+    const std::string name = a[i].at("name");
+    ASSERT_EQ(name, b[i].at("name").get<std::string>());
+    if (name.find("rigid body") != std::string::npos) continue;
+    const double fa = a[i].at("freq_hz"), fb = b[i].at("freq_hz");
+    EXPECT_NEAR(fa, fb, 5e-4 * fb) << name;
+    EXPECT_NEAR(a[i].at("damping_ratio").get<double>(), b[i].at("damping_ratio").get<double>(), 5e-4) << name;
+  }
+}
+
 TEST(CliDecks, PlatformDofsOneLineOneReason) {
   const auto r = test::whirl("modes " + kDecks +
                              "IEA-3.4-130-RWT/IEA-3.4-130-RWT.fst --set CompAero=0 --set PtfmSgDOF=True "
