@@ -36,7 +36,7 @@ void evaluateOutputs(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const 
                      VecXT<T>& y, const VecXT<T>* u, const AeroInflow* frozen, const AdPass& pass) {
   bool points = false, rotor = false;
   for (const Output& o : m.outputs) {
-    points = points || o.kind == OutputKind::Point;
+    points = points || o.kind == OutputKind::Point || o.kind == OutputKind::Angular;
     rotor = rotor || o.kind == OutputKind::Rotor;
   }
   if (points || rotor) forwardKinematics(m, ws, q, qd, qdd, pass);
@@ -73,7 +73,8 @@ void evaluateOutputs(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const 
       y(i) = s;
       continue;
     }
-    const Vec3T<T> p = detail::pointMotion(m, ws, o.body, o.point, o.order);
+    const Vec3T<T> p = o.kind == OutputKind::Angular ? (o.order == 1 ? ws.frames[o.body].w : ws.frames[o.body].dw)
+                                                     : detail::pointMotion(m, ws, o.body, o.point, o.order);
     const Vec3T<T> dir = o.frame_body >= 0 ? Vec3T<T>(ws.frames[o.frame_body].R * o.direction.cast<T>())
                                            : Vec3T<T>(o.direction.cast<T>());
     y(i) = dir.dot(p);

@@ -45,11 +45,16 @@ Output dofOutput(const CaseNode& n, CaseBuild& build) {
   return o;
 }
 
-Output pointOutput(const CaseNode& n, CaseBuild& build) {
-  n.allowKeys({"name", "type", "unit", "order", "body", "point", "frame", "direction", "blade"});
+// `type: point` (a body point's motion) or `type: angular` (a body frame's angular velocity or
+// acceleration: no point, order rate or acceleration).
+Output pointOutput(const CaseNode& n, CaseBuild& build, OutputKind kind) {
+  const bool angular = kind == OutputKind::Angular;
+  if (angular) n.allowKeys({"name", "type", "unit", "order", "body", "frame", "direction", "blade"});
+  else n.allowKeys({"name", "type", "unit", "order", "body", "point", "frame", "direction", "blade"});
   Output o;
-  o.kind = OutputKind::Point;
-  o.order = orderOf(n);
+  o.kind = kind;
+  o.order = angular && !n.has("order") ? 1 : orderOf(n);
+  if (angular && o.order == 0) n.at("order").fail("an angular output is a rate (1) or an acceleration (2)");
   const CaseNode body = n.at("body");
   o.body = build.builder.bodyIndex(body.text(), body.where());
   if (const auto p = n.find("point")) o.point = build.builder.pointIndex(o.body, p->text(), p->where());
@@ -147,16 +152,17 @@ void readOutputs(const CaseNode& list, CaseBuild& build) {
     const std::string type = n.at("type").text();
     Output o;
     if (type == "dof") o = dofOutput(n, build);
-    else if (type == "point") o = pointOutput(n, build);
+    else if (type == "point") o = pointOutput(n, build, OutputKind::Point);
+    else if (type == "angular") o = pointOutput(n, build, OutputKind::Angular);
     else if (type == "moment") o = momentOutput(n, build);
-    else n.at("type").fail("unknown output type '" + type + "' (allowed: dof, point, moment)");
+    else n.at("type").fail("unknown output type '" + type + "' (allowed: dof, point, angular, moment)");
     const CaseNode name = n.at("name");
     o.name = name.text();
     if (o.name.empty()) name.fail("an output name must not be empty");
     if (build.model().findOutput(o.name)) name.fail("output name '" + o.name + "' is used twice");
     if (n.has("unit")) o.unit = n.at("unit").text();
     if (o.unit.empty()) {  // SI from the kind: m or rad, per s, per s²
-      bool angular = o.kind == OutputKind::DofCombination;
+      bool angular = o.kind == OutputKind::DofCombination || o.kind == OutputKind::Angular;
       for (const auto& t : o.terms) angular = angular && build.dof_angular[t.first];
       o.unit = std::string(angular ? "rad" : "m") + (o.order == 1 ? "/s" : o.order == 2 ? "/s^2" : "");
     }

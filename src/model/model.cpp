@@ -241,8 +241,11 @@ void finalizeInputsAndOutputs(Model& m, const std::vector<int>& new_dof) {
         blade = blade == -2 || blade == b ? b : -1;
       }
       if (o.blade < 0) o.blade = std::max(blade, -1);
-    } else if (o.kind == OutputKind::Point) {
-      if (o.point >= static_cast<int>(m.bodies[o.body].points.size())) throw InputError(what + ": no such point");
+    } else if (o.kind == OutputKind::Point || o.kind == OutputKind::Angular) {
+      if (o.kind == OutputKind::Angular && o.order == 0)
+        throw InputError(what + ": an angular output is a rate (order 1) or an acceleration (order 2)");
+      if (o.kind == OutputKind::Point && o.point >= static_cast<int>(m.bodies[o.body].points.size()))
+        throw InputError(what + ": no such point");
       if (!o.direction.allFinite() || o.direction.norm() < 1e-12) throw InputError(what + ": direction is zero");
       o.direction.normalize();
     }
@@ -343,7 +346,7 @@ void remapBodyReferences(Model& m, const std::vector<int>& new_index) {
   };
   for (auto& l : m.point_loads) remapBody(l.body, "point load");
   for (auto& o : m.outputs)
-    if (o.kind == OutputKind::Point) {
+    if (o.kind == OutputKind::Point || o.kind == OutputKind::Angular) {
       remapBody(o.body, "output '" + o.name + "'");
       if (o.frame_body >= 0) remapBody(o.frame_body, "output '" + o.name + "' frame");
     }

@@ -4,7 +4,7 @@
 /// Plain data inside the Model (indices are renumbered by finalize()); evaluated by
 /// evaluateOutputs() (src/dynamics/outputs.hpp) and differentiated by AD (linearize/state_space.hpp).
 ///
-/// Three kinds, the first two at a derivative order (0 value, 1 rate, 2 acceleration):
+/// Four kinds, the first three at a derivative order (0 value, 1 rate, 2 acceleration):
 /// - DofCombination: Σ_k gain_k q_k^(order), e.g. a DOF value/rate/acceleration (one term), the
 ///   rotor speed (generator azimuth + drivetrain rates), the generator speed (gear ratio × rate), or
 ///   an elastic bending moment EI·Σ φ''(x) q (gains from the shapes' curvature, see beamMomentGains).
@@ -12,6 +12,9 @@
 ///   (inertial) motion, projected on `direction` given in the axes of `frame_body` (−1 = ground):
 ///   y = direction · R_Fᵀ p^(order). With frame_body = the carrying body this is what a body-fixed
 ///   sensor (an IMU without gravity) measures along one axis.
+/// - Angular: ground (inertial) angular velocity (order 1) or acceleration (order 2) of a body's frame,
+///   y = direction · R_Fᵀ ω^(order−1), projected as a Point output: what a body-fixed gyroscope measures
+///   with frame_body = the body, or ElastoDyn's inertial-frame PtfmRVxi … with frame_body = −1.
 /// - Rotor: a rotor-level quantity (RotorQuantity: aerodynamic thrust, torque and power, generator
 ///   torque and power), functions of q, q̇ and u through the blade elements and the torque law.
 #include <string>
@@ -22,7 +25,7 @@
 
 namespace whirl {
 
-enum class OutputKind { DofCombination, Point, Rotor };
+enum class OutputKind { DofCombination, Point, Rotor, Angular };
 
 /// Rotor-level quantities (OutputKind::Rotor), from the aerodynamic model and the generator torque law.
 enum class RotorQuantity {
@@ -37,12 +40,12 @@ struct Output {
   std::string name;
   std::string unit;  ///< e.g. "rad/s", "m/s^2", "N m" (for exports)
   OutputKind kind = OutputKind::DofCombination;
-  int order = 0;     ///< 0 = value, 1 = rate, 2 = acceleration
+  int order = 0;                              ///< 0 = value, 1 = rate, 2 = acceleration (Angular: 1 or 2)
   std::vector<std::pair<int, double>> terms;  ///< DofCombination: (DOF, gain)
-  int body = -1;        ///< Point: the body carrying the point
+  int body = -1;                              ///< Point, Angular: the body carrying the point, or whose frame turns
   int point = -1;       ///< Point: point index of `body`, −1 = body origin
-  int frame_body = -1;  ///< Point: axes of `direction`, −1 = ground
-  Vec3 direction = Vec3::UnitX();  ///< Point: unit vector in those axes
+  int frame_body = -1;  ///< Point, Angular: axes of `direction`, −1 = ground
+  Vec3 direction = Vec3::UnitX();                            ///< Point, Angular: unit vector in those axes
   RotorQuantity rotor_quantity = RotorQuantity::AeroThrust;  ///< Rotor: which
   /// Rotor blade (0-based) of an output in the rotating frame, −1 = fixed frame (MBC, `.lin` flag).
   /// finalize() sets it for a DofCombination whose DOFs all belong to one blade, when left at −1.

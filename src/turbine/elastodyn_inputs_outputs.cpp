@@ -64,15 +64,6 @@ void addInputs(Builder& b, const TowerParts& tower, const DrivetrainParts& dt, c
   m.roles.teeter_dof = rotor.teeter;
 }
 
-Output dofOutput(std::string name, std::string unit, int order, std::vector<std::pair<int, double>> terms) {
-  Output o;
-  o.name = std::move(name);
-  o.unit = std::move(unit);
-  o.order = order;
-  o.terms = std::move(terms);
-  return o;
-}
-
 Output pointOutput(std::string name, std::string unit, int order, int body, int point, int frame, const Vec3& dir) {
   Output o;
   o.name = std::move(name);
@@ -119,6 +110,15 @@ void addOutputs(Builder& b, const TowerParts& tower, const DrivetrainParts& dt, 
 }
 
 }  // namespace
+
+Output dofOutput(std::string name, std::string unit, int order, std::vector<std::pair<int, double>> terms) {
+  Output o;
+  o.name = std::move(name);
+  o.unit = std::move(unit);
+  o.order = order;
+  o.terms = std::move(terms);
+  return o;
+}
 
 void addInputsAndOutputs(Builder& b, const TowerParts& tower, const DrivetrainParts& dt, const RotorParts& rotor) {
   addInputs(b, tower, dt, rotor);

@@ -74,6 +74,7 @@ Model buildElastoDynModel(const io::OpenFastTurbine& t, const ElastoDynModelOpti
       ed.config.NumBl == 2 ? elastodyn::addTeeteringHub(b, dt) : elastodyn::RotorHub{dt.hub, Vec3::Zero(), 0.0, -1};
   const elastodyn::RotorParts rotor = elastodyn::addBlades(b, hub);
   elastodyn::addInputsAndOutputs(b, tower, dt, rotor);
+  elastodyn::addPlatformOutputs(b, platform);
   if (opt.aero) {
     elastodyn::addAerodynamics(b, dt, rotor, *opt.aero);
     if (opt.torque_law) elastodyn::addGeneratorTorqueLaw(b, *opt.torque_law);

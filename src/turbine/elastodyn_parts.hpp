@@ -132,6 +132,16 @@ RotorParts addBlades(Builder& b, const RotorHub& hub);
 /// pitch) and the default outputs (elastodyn_outputs.cpp; names and definitions in elastodyn_model.hpp).
 void addInputsAndOutputs(Builder& b, const TowerParts& tower, const DrivetrainParts& dt, const RotorParts& rotor);
 
+/// An output Σ gain · q^(order) over (DOF, gain) terms.
+Output dofOutput(std::string name, std::string unit, int order, std::vector<std::pair<int, double>> terms);
+
+/// ElastoDyn's platform motions in the inertial frame (elastodyn_platform.cpp), SI units (ElastoDyn prints the
+/// angles in degrees): PtfmSurge, PtfmSway, PtfmHeave [m] and PtfmRoll, PtfmPitch, PtfmYaw [rad], the
+/// coordinates (PtfmTDxi … , PtfmRDxi …); their rates PtfmTVxi, PtfmTVyi, PtfmTVzi [m/s] and accelerations
+/// PtfmTAxi … [m/s²]; the platform's angular velocity PtfmRVxi, PtfmRVyi, PtfmRVzi [rad/s] and acceleration
+/// PtfmRAxi … [rad/s²] about the ground axes. Nothing without a platform.
+void addPlatformOutputs(Builder& b, const PlatformParts& platform);
+
 /// AeroDyn's blade elements and airfoils on the blades, InflowWind's steady wind, and the input
 /// "wind speed" (m/s, value HWindSpeed) (elastodyn_aero.cpp).
 void addAerodynamics(Builder& b, const DrivetrainParts& dt, const RotorParts& rotor, const io::AeroDeckInput& deck);

@@ -1,7 +1,9 @@
 // The ElastoDyn platform: a rigid body at the platform reference point carrying the tower base
 // [Jonkman2007] (ElastoDyn's platform DOFs), on a free joint for a floating platform, or tied to a
 // SubDyn substructure's transition piece (elastodyn_substructure.cpp).
+#include <array>
 #include <numbers>
+#include <string>
 
 #include "src/io/openfast_support.hpp"
 #include "src/turbine/elastodyn_parts.hpp"
@@ -47,6 +49,31 @@ PlatformParts addPlatform(Builder& b) {
   for (int k = 0; k < 6; ++k)
     out.dofs[k] = b.addDof(kPlatformDofNames[k], out.body, DofKind::Joint, k, d.on[k], d.value[k]);
   return out;
+}
+
+void addPlatformOutputs(Builder& b, const PlatformParts& p) {
+  if (p.body < 0) return;
+  std::vector<Output>& y = b.model().outputs;
+  constexpr std::array<const char*, 6> position = {"PtfmSurge", "PtfmSway",  "PtfmHeave",
+                                                   "PtfmRoll",  "PtfmPitch", "PtfmYaw"};
+  for (int k = 0; k < 6; ++k) y.push_back(dofOutput(position[k], k < 3 ? "m" : "rad", 0, {{p.dofs[k], 1.0}}));
+  for (int order : {1, 2})
+    for (int k = 0; k < 3; ++k)
+      y.push_back(dofOutput(std::string(order == 1 ? "PtfmTV" : "PtfmTA") + "xyz"[k] + "i",
+                            order == 1 ? "m/s" : "m/s^2", order, {{p.dofs[k], 1.0}}));
+  // ElastoDyn's PtfmRVxi … are the platform's angular velocity (AngVelEX), not the rates of its
+  // rotation coordinates: they differ once the platform is pitched (as under thrust).
+  for (int order : {1, 2})
+    for (int k = 0; k < 3; ++k) {
+      Output o;
+      o.name = std::string(order == 1 ? "PtfmRV" : "PtfmRA") + "xyz"[k] + "i";
+      o.unit = order == 1 ? "rad/s" : "rad/s^2";
+      o.kind = OutputKind::Angular;
+      o.order = order;
+      o.body = p.body;
+      o.direction = Vec3::Unit(k);
+      y.push_back(std::move(o));
+    }
 }
 
 }  // namespace whirl::elastodyn

@@ -5,7 +5,11 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <numbers>
+
 #include "case_file_test_util.hpp"
+#include "src/dynamics/outputs.hpp"
+#include "src/dynamics/workspace.hpp"
 
 namespace whirl {
 namespace {
@@ -209,6 +213,29 @@ TEST_F(CaseErrors, IntegrationPointCountsAreBounded) {
   EXPECT_EQ(
       readCase(tmp.write("trap.yaml", replaced(smallTurbineCase(), at, with("{method: trapezoid, n: 10000}")))).ndof(),
       2);
+}
+
+// `type: angular`: a body frame's angular velocity about ground axes (default order: rate, unit rad/s). The
+// rotor of the small turbine turns at 12.1 rpm about ground x.
+TEST_F(CaseErrors, AngularOutputsAreABodyFramesAngularVelocity) {
+  const std::string out =
+      "outputs:\n  - {name: spin, type: angular, body: rotor, direction: [1, 0, 0], frame: ground}\n";
+  const Model m = readCase(tmp.write("ok.yaml", smallTurbineCase() + out));
+  const Output& o = m.outputs[*m.findOutput("spin")];
+  EXPECT_EQ(o.kind, OutputKind::Angular);
+  EXPECT_EQ(o.order, 1);
+  EXPECT_EQ(o.unit, "rad/s");
+  Workspace<double> ws(m);
+  VecX q = VecX::Zero(m.ndof()), qd = VecX::Zero(m.ndof()), y(m.noutput());
+  qd(*m.findDof("azimuth")) = 12.1 * std::numbers::pi / 30;
+  evaluateOutputs(m, ws, q, qd, VecX::Zero(m.ndof()).eval(), y);
+  EXPECT_NEAR(y(*m.findOutput("spin")), 12.1 * std::numbers::pi / 30, 1e-12);
+  const std::string base = smallTurbineCase() + out;
+  const int line = lineOf(base, "  - {name: spin");
+  expectText(replaced(base, "frame: ground}", "frame: ground, order: 0}"), line,
+             "an angular output is a rate (1) or an acceleration (2)");
+  expectText(replaced(base, "frame: ground}", "frame: ground, point: hub}"), line, "point");
+  expectText(replaced(base, "type: angular", "type: angle"), line, "allowed: dof, point, angular, moment");
 }
 
 TEST_F(CaseErrors, FemShapesValidCaseReads) {

@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <numbers>
 
+#include "src/dynamics/outputs.hpp"
+#include "src/dynamics/workspace.hpp"
 #include "src/model/error.hpp"
 #include "src/turbine/elastodyn_model.hpp"
 #include "tests/unit/test_util.hpp"
@@ -52,6 +54,43 @@ TEST(OffshoreModel, SwitchedOffPlatformDofsAreFrozenAtTheirInitialValue) {
   const Dof& d = m.dofs[*m.findDof("platform yaw")];
   EXPECT_TRUE(d.frozen);
   EXPECT_NEAR(d.value, 2 * std::numbers::pi / 180, 1e-15);
+}
+
+// ElastoDyn's platform outputs: the coordinates and their derivatives (PtfmSurge … PtfmYaw, PtfmTVxi …,
+// PtfmTAxi …) and the platform's angular velocity about the ground axes (PtfmRVxi …). The angular
+// velocity is checked against the closed form of the free joint's yaw–pitch–roll rotation R = Rz(ψ) Ry(θ)
+// Rx(φ): ω = ψ̇ z + θ̇ Rz y + φ̇ Rz Ry x, at a platform pitched θ = 0.1 rad: a roll rate gives ωx = cos θ and
+// ωz = −sin θ, not the roll rate alone.
+TEST(OffshoreModel, PlatformOutputsAreTheCoordinatesAndTheAngularVelocity) {
+  const Model m = readElastoDynModel((kCase / "Test24.fst").string(),
+                                     {"CompAero=0", "RdtnMod=0", "PtfmPitch=5.729577951308232"});
+  const double pitch = 0.1;
+  Workspace<double> ws(m);
+  VecX q(m.ndof()), qd = VecX::Zero(m.ndof()), qdd = VecX::Zero(m.ndof()), y(m.noutput());
+  for (int i = 0; i < m.ndof(); ++i) q(i) = m.dofs[i].value;
+  ASSERT_NEAR(q(*m.findDof("platform pitch")), pitch, 1e-15);
+  auto out = [&](const char* name) { return y(*m.findOutput(name)); };
+  q(*m.findDof("platform surge")) = 2.5;
+  evaluateOutputs(m, ws, q, qd, qdd, y);
+  EXPECT_EQ(out("PtfmSurge"), 2.5);
+  EXPECT_EQ(out("PtfmPitch"), pitch);
+  EXPECT_EQ(m.outputs[*m.findOutput("PtfmPitch")].unit, "rad");
+  qd(*m.findDof("platform roll")) = 1.0;
+  qd(*m.findDof("platform heave")) = 0.5;
+  qdd(*m.findDof("platform sway")) = -3.0;
+  evaluateOutputs(m, ws, q, qd, qdd, y);
+  EXPECT_EQ(out("PtfmTVzi"), 0.5);
+  EXPECT_EQ(out("PtfmTAyi"), -3.0);
+  EXPECT_NEAR(out("PtfmRVxi"), std::cos(pitch), 1e-14);
+  EXPECT_NEAR(out("PtfmRVyi"), 0.0, 1e-14);
+  EXPECT_NEAR(out("PtfmRVzi"), -std::sin(pitch), 1e-14);
+  EXPECT_EQ(m.outputs[*m.findOutput("PtfmRVzi")].unit, "rad/s");
+  // No platform, no platform outputs.
+  const Model land = readElastoDynModel((kCase / "Test24.fst").string(),
+                                        {"CompAero=0", "CompHydro=0", "CompMooring=0", "PtfmSgDOF=False",
+                                         "PtfmSwDOF=False", "PtfmHvDOF=False", "PtfmRDOF=False", "PtfmPDOF=False",
+                                         "PtfmYDOF=False"});
+  EXPECT_FALSE(land.findOutput("PtfmSurge"));
 }
 
 // A copy of the case with one file edited.
