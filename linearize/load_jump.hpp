@@ -40,8 +40,9 @@ LoadJump loadJump(const std::vector<int>& solved, const VecX& qa, const VecX& qb
                   const AeroRecord* rec_a, const AeroRecord* rec_b);
 
 /// One clause for messages and notes: where the loads jump and why, e.g. "the load on DOF 'teeter' jumps
-/// from -3.509 to 3.51 N m across 1.07e-05 rad: blade 1 element 11 (r = 9.3 m) crosses AeroDyn's
-/// zero-velocity limit of its normal velocity (|Vx| = 1e-3 m/s), below which BEM is not solved".
+/// from -3.509 to 3.51 N m across 1.49e-05 rad: blade 1 element 11 crosses AeroDyn's zero-velocity limit
+/// of its normal velocity (|Vx| = 0.001 m/s, here -0.000999758 and -0.00100019 m/s), below which BEM is
+/// not solved".
 std::string describe(const Model& model, const LoadJump& jump);
 
 }  // namespace whirl

@@ -324,9 +324,11 @@ OperatingPoint solveOperatingPoint(const Model& m, const OperatingPoint& start, 
       VecX e_other(m.ndof());
       residual(m, ws, q_before, op.qd, op.qdd, op.u, e_other, nullptr, record ? &other : nullptr);
       jump = loadJump(op.solved, op.q, q_before, es, es_before, record, record ? &other : nullptr);
-      if (jump.dof >= 0 && jump.size <= kMaxLoadJump * scale) {
-        if (es_before.norm() < es.norm()) op.q = q_before;
-        es = solvedResidual();  // also the workspace's BEM roots, which the linearization starts from
+      const bool on_jump = jump.dof >= 0 && jump.size <= kMaxLoadJump * scale;
+      if (on_jump && es_before.norm() < es.norm()) op.q = q_before;
+      // Again at op.q: the workspace's BEM roots are those the next Jacobian (or the linearization) starts from.
+      es = solvedResidual();
+      if (on_jump) {
         op.load_jump = jump;
         break;
       }
