@@ -7,6 +7,7 @@
 
 #include "src/fem/rigid_interface.hpp"
 #include "src/model/error.hpp"
+#include "src/model/limits.hpp"
 
 namespace whirl::fem {
 
@@ -30,6 +31,17 @@ FemBody buildFemBody(const FemBodySpec& spec, const std::string& name, const Mod
     tie = rigidTie(spec.model, fb.map, spec.interface_nodes, *spec.rigid_interface);
     for (int k = 0; k < kNodeDofs; ++k) fb.dof_names.push_back(spec.rigid_interface_name + " " + kNodeDofNames[k]);
   }
+  // The body's coordinates, before any dense matrix of that size is allocated.
+  const long coordinates = spec.reduction == ReductionKind::None
+                               ? (spec.rigid_interface ? 6L + n - static_cast<long>(interface.size()) : n)
+                               : static_cast<long>(spec.rigid_interface ? 6 : interface.size()) +
+                                     (spec.reduction == ReductionKind::CraigBampton ? spec.modes : 0);
+  if (coordinates > limits::kMaxFemBodyCoordinates)
+    throw InputError(
+        "FE body '" + name + "': " + std::to_string(coordinates) + " coordinates (" +
+        (spec.reduction == ReductionKind::None ? "every free DOF of the unreduced model" : "interface DOFs and modes") +
+        "), more than " + std::to_string(limits::kMaxFemBodyCoordinates) +
+        " (src/model/limits.hpp): reduce it (guyan or craig_bampton) or use fewer elements");
   if (spec.reduction == ReductionKind::None && !spec.rigid_interface) {
     fb.basis = MatX::Identity(n, n);
     for (int f : fb.map.free) fb.dof_names.push_back(dofName(f));

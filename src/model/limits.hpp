@@ -12,26 +12,29 @@
 /// | bound | value | where it is read |
 /// |---|---|---|
 /// | kMaxElastoDynNodes | 1000 | ElastoDyn `TwrNodes`, `BldNodes` |
-/// | kMaxFemElements | 2000 | `fem_beam` `elements:` of a YAML case |
-/// | kMaxFemShapeElements | 200 | `shapes: {from: fem, elements:}` (a 2D beam for mode shapes) |
-/// | kMaxFemShapeMesh | 300 | the elements of that beam once every property station is a node |
-/// | kMaxReducedModes | 1000 | Craig–Bampton `modes:` of a `fem_beam` |
-/// | kMaxIntegrationPoints | 10000 | beam `integration: {method: trapezoid or midpoint, n:}` |
-/// | kMaxGaussPoints | 500 | beam `integration: {method: gauss, n:}` |
-/// | kMaxFemShapeMode | 50 | mode numbers of FE shapes (`shapes: {from: fem, modes: [{mode:}]}`) |
-/// | kMaxAnalyticShapeMode | 1000 | mode numbers of analytic shapes (`clamped_topmass`, `torsion_sine`) |
-/// | kMaxLinDimension | 100000 | `.lin` header counts (states, inputs, outputs) and matrix sizes `A: n x m` |
-/// | kMaxSweepPoints | 100000 | `--rpm START:STEP:STOP` points, `--schedule` rows |
-/// | kMaxAzimuths | 3600 | `--azimuths N` (CLI::Range in src/cli/cmd_*.cpp) |
-/// | kMaxSubDynJoints | 2000 | SubDyn `NJoints` (and `NReact`, `NInterf`, `NCmass`, which list joints) |
-/// | kMaxSubDynMembers | 2000 | SubDyn `NMembers`; with `NDiv` at most kMaxFemElements elements in all |
-/// | kMaxSubDynNDiv | 100 | SubDyn `NDiv` |
-/// | kMaxSubDynPropSets | 2000 | SubDyn property-set counts (`NPropSets`, `NXPropSets`) |
-/// | kMaxReducedModes | 1000 | SubDyn `Nmodes` too |
+/// | kMaxFemElements | 500 | `fem_beam` `elements:` of a YAML case |
+/// | kMaxFemBodyCoordinates | 1200 | the coordinates one FE body (`fem_beam`, SubDyn) brings: every free DOF unreduced
+/// | | kMaxFemShapeElements | 200 | `shapes: {from: fem, elements:}` (a 2D beam for mode shapes) | | kMaxFemShapeMesh |
+/// 300 | the elements of that beam once every property station is a node | | kMaxReducedModes | 1000 | Craig–Bampton
+/// `modes:` of a `fem_beam` | | kMaxIntegrationPoints | 10000 | beam `integration: {method: trapezoid or midpoint, n:}`
+/// | | kMaxGaussPoints | 500 | beam `integration: {method: gauss, n:}` | | kMaxFemShapeMode | 50 | mode numbers of FE
+/// shapes (`shapes: {from: fem, modes: [{mode:}]}`) | | kMaxAnalyticShapeMode | 1000 | mode numbers of analytic shapes
+/// (`clamped_topmass`, `torsion_sine`) | | kMaxLinDimension | 100000 | `.lin` header counts (states, inputs, outputs)
+/// and matrix sizes `A: n x m` | | kMaxSweepPoints | 100000 | `--rpm START:STEP:STOP` points, `--schedule` rows | |
+/// kMaxAzimuths | 3600 | `--azimuths N` (CLI::Range in src/cli/cmd_*.cpp) | | kMaxSubDynJoints | 2000 | SubDyn
+/// `NJoints` (and `NReact`, `NInterf`, `NCmass`, which list joints) | | kMaxSubDynMembers | 2000 | SubDyn `NMembers`;
+/// with `NDiv` at most kMaxFemElements elements in all | | kMaxSubDynNDiv | 100 | SubDyn `NDiv` | | kMaxSubDynPropSets
+/// | 2000 | SubDyn property-set counts (`NPropSets`, `NXPropSets`) | | kMaxReducedModes | 1000 | SubDyn `Nmodes` too |
 namespace whirl::limits {
 
 inline constexpr int kMaxElastoDynNodes = 1000;
-inline constexpr int kMaxFemElements = 2000;
+// The FE bodies' reductions solve dense eigenproblems of the free DOFs (6 per node): 500 elements are
+// about 3000 DOFs, 72 MB per dense matrix; at 2000 elements each was 1.15 GB (a fuzz finding ran out of
+// its 2 GB under the sanitizers). Cases use 50–100 elements, the SubDyn jacket 224.
+inline constexpr int kMaxFemElements = 500;
+// A body's Ritz integrals are dense: 9 (n + 1)² doubles for n coordinates (1200: 100 MB). An unreduced
+// FE body has one coordinate per free DOF: 671 elements without a reduction took 3 GB (a fuzz finding).
+inline constexpr int kMaxFemBodyCoordinates = 1200;
 // The FE shapes solve the dense generalized eigenproblem of the whole beam (LAPACK dsygvd, O(n³) in
 // its 4–5 DOFs per node): 300 elements are about 1500 DOFs, a few seconds with Debian's reference
 // LAPACK (measured: 1000 DOFs 2.4 s, 2000 DOFs 24 s on a loaded 2-core machine). The shapes are the

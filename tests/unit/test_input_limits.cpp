@@ -50,7 +50,33 @@ bodies:
     reduction: {type: craig_bampton, interface: [top], modes: 2}
 )");
   EXPECT_THAT(inputErrorMessage([&] { whirl::readCase(path.string()); }),
-              HasSubstr("fe.yaml:7: bodies.pile.elements: must be between 1 and 2000"));
+              HasSubstr("fe.yaml:7: bodies.pile.elements: must be between 1 and 500"));
+}
+
+// An unreduced FE body brings every free DOF as a coordinate, and its Ritz integrals are dense in them: 300
+// elements with all six DOFs are 1800 coordinates (the fuzz finding had 671 elements: 3 GB). Refused at
+// the body, before anything of that size is allocated; the same beam reduced reads.
+TEST(InputLimits, UnreducedFemBodyCoordinatesAreBounded) {
+  ScratchDir dir;
+  const std::string text = R"(name: fe
+gravity: 0
+bodies:
+  - name: pile
+    type: fem_beam
+    length: 10
+    elements: 300
+    uniform: {m: 100, EA: 1e9, EIy: 1e7, EIz: 1e7, GJ: 1e7, jG: 1}
+    points: [{name: root, x: 0}, {name: top, x: 10}]
+    clamped: [root]
+)";
+  const auto path = dir.write("fe.yaml", text);
+  const std::string msg = inputErrorMessage([&] { whirl::readCase(path.string()); });
+  EXPECT_THAT(msg, HasSubstr("fe.yaml:4: "));
+  EXPECT_THAT(msg, HasSubstr("FE body 'pile': 1800 coordinates (every free DOF of the unreduced model), more than "
+                             "1200 (src/model/limits.hpp): reduce it"));
+  const auto reduced = dir.write("cb.yaml",
+                                 text + "    reduction: {type: craig_bampton, interface: [top], modes: 4}\n");
+  EXPECT_EQ(whirl::readCase(reduced.string()).ndof(), 10);
 }
 
 std::string lin(const std::string& name) {
