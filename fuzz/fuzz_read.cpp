@@ -16,6 +16,7 @@
 //  10 fuzz_read_ed_blade    readElastoDynBlade
 //  11 fuzz_read_aerodyn14   readAeroDyn14, then its AeroDyn v15 description and blade (FAST v8 CompAero = 1)
 //  12 fuzz_read_airfoil14   readAirfoil14 with and without Cm columns, then airfoilPolar (first table, on Re)
+//  13 fuzz_read_wamit_ss    readRadiationStateSpace (HydroDyn's state-space radiation, WAMIT `.ss`)
 #include "fuzz/fuzz_support.hpp"
 #include "src/io/aero_deck14.hpp"
 #include "src/io/aerodyn_blade_input.hpp"
@@ -29,9 +30,14 @@
 #include "src/io/fst_input.hpp"
 #include "src/io/inflowwind_input.hpp"
 #include "src/io/servodyn_input.hpp"
+#include "src/io/wamit_state_space.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+#if WHIRL_FUZZ_READER == 13
+  const std::string path = whirl::fuzz::writeInput("fuzz_rad.ss", data, size);
+#else
   const std::string path = whirl::fuzz::writeInput("fuzz_aero.dat", data, size);
+#endif
   whirl::fuzz::expectOnlyInputErrors([&] {
     namespace io = whirl::io;
 #if WHIRL_FUZZ_READER == 1
@@ -69,8 +75,12 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
           [&] { (void)io::airfoilPolar(af, cm, whirl::aero::ReynoldsInterp::Linear); });  // MultiTab = RENUM
       (void)io::airfoilPolar(af, cm);
     }
+#elif WHIRL_FUZZ_READER == 13
+    io::HydroDynInput hd;
+    hd.PotFile = std::filesystem::path(path).replace_extension();
+    (void)io::readRadiationStateSpace(hd);
 #else
-#error "WHIRL_FUZZ_READER must be 1 to 12"
+#error "WHIRL_FUZZ_READER must be 1 to 13"
 #endif
   });
   return 0;

@@ -23,6 +23,33 @@ void ldltSolveInPlace(const Eigen::LDLT<MatX>& ldlt, MatX& X) {
   X = ldlt.transpositionsP().transpose() * Y;
 }
 
+// The first-order states of Model::body_states on the active coordinates: G (n × nz), the loads C z on
+// the free joints' coordinates, and Bz (nz × n), ż = A z + Bz q̇; names and groups into `lin`.
+void firstOrderStates(const Model& m, LinearModel& lin, MatX& G, MatX& Bz) {
+  const int n = static_cast<int>(lin.dofs.size());
+  int nz = 0;
+  for (const BodyStateSpace& bs : m.body_states) nz += static_cast<int>(bs.A.rows());
+  G = MatX::Zero(n, nz);
+  Bz = MatX::Zero(nz, n);
+  int z0 = 0;
+  for (const BodyStateSpace& bs : m.body_states) {
+    const int d0 = m.bodies[bs.body].joint_dof, k = static_cast<int>(bs.A.rows());
+    for (int c = 0; c < n; ++c) {
+      const int r = lin.dofs[c] - d0;  // a frozen coordinate does not move: no column
+      if (r < 0 || r >= 6) continue;
+      G.block(c, z0, 1, k) = bs.C.row(r);
+      Bz.block(z0, c, k, 1) = bs.B.col(r);
+    }
+    for (int j = 0; j < k; ++j) {
+      int within = 1;
+      for (int i = 0; i < j; ++i) within += bs.groups[i] == bs.groups[j];
+      lin.first_order_groups.push_back(bs.groups[j]);
+      lin.first_order_names.push_back(bs.groups[j] + " " + std::to_string(within));
+    }
+    z0 += k;
+  }
+}
+
 }  // namespace
 
 LinearModel linearize(const Model& m, const OperatingPoint& op, const LinearizeOptions& opt) {
@@ -75,14 +102,26 @@ LinearModel linearize(const Model& m, const OperatingPoint& op, LinearizeWorkspa
   if (ldlt.info() != Eigen::Success || !ldlt.isPositive() || ldlt.vectorD().minCoeff() <= 0)
     throw ComputeError("the mass matrix is not positive definite: a coordinate without inertia? (check masses, "
                        "inertias and which DOFs are frozen)");
-  // One solve with the right-hand sides [K C Q].
-  MatX rhs(n, 2 * n + nu);
-  rhs << lin.K, lin.C, lin.Q;
+  MatX G, Bz;  // loads of the first-order states on the coordinates, their drive by the rates
+  firstOrderStates(m, lin, G, Bz);
+  const int nz = static_cast<int>(G.cols());
+  // One solve with the right-hand sides [K C G Q].
+  MatX rhs(n, 2 * n + nz + nu);
+  rhs << lin.K, lin.C, G, lin.Q;
   ldltSolveInPlace(ldlt, rhs);
-  lin.A = MatX::Zero(2 * n, 2 * n);
+  lin.A = MatX::Zero(2 * n + nz, 2 * n + nz);
   lin.A.block(0, n, n, n).setIdentity();
   lin.A.block(n, 0, n, 2 * n) = -rhs.leftCols(2 * n);
-  lin.B = MatX::Zero(2 * n, nu);
+  if (nz > 0) {
+    lin.A.block(n, 2 * n, n, nz) = rhs.middleCols(2 * n, nz);
+    lin.A.block(2 * n, n, nz, n) = Bz;
+    int z0 = 0;
+    for (const BodyStateSpace& bs : m.body_states) {
+      lin.A.block(2 * n + z0, 2 * n + z0, bs.A.rows(), bs.A.rows()) = bs.A;
+      z0 += static_cast<int>(bs.A.rows());
+    }
+  }
+  lin.B = MatX::Zero(2 * n + nz, nu);
   if (nu > 0) lin.B.block(n, 0, n, nu) = rhs.rightCols(nu);
   return lin;
 }

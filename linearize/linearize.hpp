@@ -5,6 +5,9 @@
 /// on the active (non-frozen) coordinates; C, K, Q by chunked forward AD, M from the double
 /// assembly. State space x = [δq; δq̇]: A = [[0, I], [−M⁻¹K, −M⁻¹C]], B = [[0], [M⁻¹Q]] (solved
 /// with an LDLᵀ factorization of M, never inverted; ComputeError if M is not positive definite).
+/// First-order states z on free joints (Model::body_states, ż = A_z z + B_z q̇, loads C_z z) follow:
+/// x = [δq; δq̇; z], A = [[0, I, 0], [−M⁻¹K, −M⁻¹C, M⁻¹G], [0, B_z P, A_z]], G = Pᵀ C_z, P picking the
+/// joint's six coordinates among the active ones; they rest at z = 0 at a static point.
 #include <string>
 #include <vector>
 
@@ -19,8 +22,10 @@ struct LinearModel {
   std::vector<std::string> input_names;  ///< dim nu
   MatX M, C, K;  ///< n × n
   MatX Q;        ///< n × nu
-  MatX A;        ///< 2n × 2n
-  MatX B;        ///< 2n × nu
+  MatX A;        ///< (2n + nz) × (2n + nz): states [δq; δq̇; z]
+  MatX B;        ///< (2n + nz) × nu
+  std::vector<std::string> first_order_names;   ///< states z (dim nz), e.g. "HydroDyn radiation surge 3"
+  std::vector<std::string> first_order_groups;  ///< what each z belongs to, e.g. "HydroDyn radiation surge"
   VecX residual; ///< e at the operating point on the active coordinates (dim n)
 };
 

@@ -202,6 +202,10 @@ Simulation simulate(const Model& m, const OperatingPoint& start, const Simulatio
   if (!(opt.rtol > 0) || !(opt.atol > 0)) throw InputError("simulate: tolerances: must be > 0");
   if (start.q.size() != m.ndof() || start.qd.size() != m.ndof() || start.u.size() != m.ninput())
     throw InputError("simulate: the start point does not match the model's coordinates and inputs");
+  if (!m.body_states.empty())
+    throw InputError(
+        "simulate: the model has first-order states of the linear model only (HydroDyn's state-space "
+        "radiation, RdtnMod = 2); --set RdtnMod=0 simulates without the radiation memory");
   for (const InputSignal& in : opt.inputs)
     if (in.input < 0 || in.input >= m.ninput()) throw InputError("simulate: input signal: no such input");
   const std::vector<int> active = m.activeDofs();

@@ -73,7 +73,8 @@ struct Simulation {
 
 /// Integrates from `start` (coordinates, rates and inputs at t = 0; its q̈ is not used: the initial
 /// accelerations are solved from M q̈ = F) to options.t_end.
-/// \throws InputError for options out of range (t_end, dt_out, tolerances, an index);
+/// \throws InputError for options out of range (t_end, dt_out, tolerances, an index), or a model with
+///         first-order states (Model::body_states: they are in the linear model only);
 ///         ComputeError "simulate: t = … s: <reason>" when IDA fails (no convergence, too many steps,
 ///         a non-finite residual), naming the time reached, or when M is not positive definite.
 Simulation simulate(const Model& model, const OperatingPoint& start, const SimulationOptions& options);

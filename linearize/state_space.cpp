@@ -19,6 +19,16 @@ std::string dofUnit(const Model& m, int dof) {
   }
 }
 
+std::vector<bool> firstOrderStates(const std::vector<StateSpaceVariable>& x) {
+  std::vector<bool> first(x.size(), true);
+  for (std::size_t i = 0; i < x.size(); ++i)
+    if (x[i].rate_of >= 0) {
+      first[i] = false;
+      if (x[i].rate_of < static_cast<int>(x.size())) first[x[i].rate_of] = false;
+    }
+  return first;
+}
+
 StateSpaceModel stateSpace(const Model& m, const OperatingPoint& op, const LinearModel& lin) {
   StateSpaceModel s;
   const int n = static_cast<int>(lin.dofs.size());
@@ -41,6 +51,13 @@ StateSpaceModel stateSpace(const Model& m, const OperatingPoint& op, const Linea
     v.azimuth = false;
     s.x.push_back(v);
   }
+  for (const std::string& name : lin.first_order_names) {
+    StateSpaceVariable v;
+    v.name = name;
+    v.unit = "-";      // a fit's internal state: only C z has units (N, N m)
+    s.x.push_back(v);  // at rest (0) at a static point
+  }
+  const int nx = static_cast<int>(s.x.size());
   for (int i = 0; i < m.ninput(); ++i) {
     const Input& in = m.inputs[i];
     StateSpaceVariable v;
@@ -54,10 +71,10 @@ StateSpaceModel stateSpace(const Model& m, const OperatingPoint& op, const Linea
   }
   s.A = lin.A;
   s.B = lin.B;
-  s.xdot_op = VecX::Zero(2 * n);
+  s.xdot_op = VecX::Zero(nx);
   Eigen::LDLT<MatX> ldlt(lin.M);
   for (int k = 0; k < n; ++k) s.xdot_op(k) = op.qd(lin.dofs[k]);
-  if (n > 0) s.xdot_op.tail(n) = ldlt.solve(lin.residual);
+  if (n > 0) s.xdot_op.segment(n, n) = ldlt.solve(lin.residual);
 
   const int ny = m.noutput();
   VecX y(ny);
@@ -76,7 +93,7 @@ StateSpaceModel stateSpace(const Model& m, const OperatingPoint& op, const Linea
   }
   std::vector<int> inputs(m.ninput());
   for (int i = 0; i < m.ninput(); ++i) inputs[i] = i;
-  s.C = MatX::Zero(ny, 2 * n);
+  s.C = MatX::Zero(ny, nx);
   s.D = MatX::Zero(ny, m.ninput());
   if (ny > 0) {
     JacobianWorkspace jw(m);
@@ -85,9 +102,9 @@ StateSpaceModel stateSpace(const Model& m, const OperatingPoint& op, const Linea
     const MatX Hqdd = outputJacobian(m, jw, op.q, op.qd, op.qdd, op.u, Wrt::Qdd, lin.dofs, frozen);
     const MatX Hu = outputJacobian(m, jw, op.q, op.qd, op.qdd, op.u, Wrt::U, inputs, frozen);
     s.C.leftCols(n) = Hq;
-    s.C.rightCols(n) = Hqd;
-    s.C += Hqdd * lin.A.bottomRows(n);
-    s.D = Hu + Hqdd * lin.B.bottomRows(n);
+    s.C.middleCols(n, n) = Hqd;
+    s.C += Hqdd * lin.A.middleRows(n, n);
+    s.D = Hu + Hqdd * lin.B.middleRows(n, n);
   }
   for (int k = 0; k < n; ++k)
     if (s.x[k].azimuth) {

@@ -3,10 +3,11 @@
 /// State-space model for controller design: ẋ = A x + B u, y = C x + D u around an operating point,
 /// with named states, inputs and outputs (units, operating-point values, rotating-frame blade).
 ///
-/// States x = [q; q̇] of the active coordinates (notation, docs/architecture.md), A and B from linearize(). Outputs
+/// States x = [q; q̇; z] of the active coordinates and any first-order states z (HydroDyn radiation; notation,
+/// docs/architecture.md), A and B from linearize(). Outputs
 /// y = h(q, q̇, q̈) (Model::outputs) are differentiated by AD: with H_• = ∂h/∂• on the active
-/// coordinates and q̈ taken from the equations of motion, q̈ = A_q̈ x + B_q̈ u (the lower halves of A, B),
-///   C = [H_q, H_q̇] + H_q̈ A_q̈,   D = H_u + H_q̈ B_q̈.
+/// coordinates and q̈ taken from the equations of motion, q̈ = A_q̈ x + B_q̈ u (the rows of q̈ in A, B),
+///   C = [H_q, H_q̇, 0] + H_q̈ A_q̈,   D = H_u + H_q̈ B_q̈.
 /// Inputs that drive frozen coordinates (pitch) enter H_u and B through those coordinates (jacobian.hpp).
 #include <optional>
 #include <string>
@@ -29,13 +30,17 @@ struct StateSpaceVariable {
 
 struct StateSpaceModel {
   std::vector<StateSpaceVariable> x, u, y;
-  VecX xdot_op;    ///< ẋ at the operating point: [q̇; M⁻¹ e(q, q̇, 0, u)]
+  VecX xdot_op;    ///< ẋ at the operating point: [q̇; M⁻¹ e(q, q̇, 0, u); 0]
   MatX A, B, C, D; ///< nx × nx, nx × nu, ny × nx, ny × nu
   double azimuth = 0.0;      ///< rad, value of the rotating coordinate (blade 1's azimuth), 0 if none
   double rotor_speed = 0.0;  ///< rad/s, its rate
   std::optional<double> wind_speed;  ///< m/s, when the operating point comes from a schedule
   bool multiblade = false;   ///< rotating entries are in multiblade coordinates (azimuth average)
 };
+
+/// Whether each state is a first-order state: neither a displacement with a rate among the states nor
+/// a rate (dim x).
+std::vector<bool> firstOrderStates(const std::vector<StateSpaceVariable>& x);
 
 /// The state-space model at `op` from its linearization `lin` (all inputs and outputs of the model).
 /// \throws ComputeError when an output is not finite at the operating point.

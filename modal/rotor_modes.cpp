@@ -168,22 +168,53 @@ std::string bladeBaseName(const std::string& n) {
   return n;
 }
 
-RotorModes rotorModes(const Model& m, const PeriodicLinearization& p) {
-  const LinearModel& first = p.models.front();
+namespace {
+
+// Coordinates of a linear model for naming; with first-order states (HydroDyn radiation) the modes come
+// from participation factors, which weigh states of any kind alike: one coordinate per DOF (its
+// displacement and rate) and one per first-order state, grouped by what it belongs to.
+RotorCoordinates linearCoordinates(const Model& m, const LinearModel& first, const std::vector<int>& held) {
   const int n = static_cast<int>(first.dofs.size());
   RotorCoordinates c;
   c.names = first.dof_names;
-  int nb = 0;
   for (int i = 0; i < n; ++i) {
     c.blade.push_back(m.dofs[first.dofs[i]].blade);
     c.azimuth.push_back(m.dofs[first.dofs[i]].rotating);
-    const std::vector<int>& held = p.points.front().held;
     c.held.push_back(std::find(held.begin(), held.end(), first.dofs[i]) != held.end());
     c.teeter.push_back(first.dofs[i] == m.roles.teeter_dof);
-    nb = std::max(nb, c.blade.back() + 1);
   }
   // Shapes are in multiblade coordinates: weigh them by the diagonal of M (blade entries alike).
   c.weights = first.M.diagonal().asDiagonal();
+  const int nz = static_cast<int>(first.first_order_names.size());
+  if (nz == 0) return c;
+  c.groups = c.names;
+  for (int pass = 0; pass < 2; ++pass)
+    for (int i = 0; i < n; ++i) c.coordinate_of_state.push_back(i);
+  for (int k = 0; k < nz; ++k) {
+    c.coordinate_of_state.push_back(n + k);
+    c.names.push_back(first.first_order_names[k]);
+    c.groups.push_back(first.first_order_groups[k]);
+    c.blade.push_back(-1);
+    c.azimuth.push_back(false);
+    c.held.push_back(false);
+    c.teeter.push_back(false);
+  }
+  return c;
+}
+
+MbcLayout linearLayout(const RotorCoordinates& c, const LinearModel& first) {
+  const std::size_t n = first.dofs.size();
+  int nb = 0;
+  for (int b : c.blade) nb = std::max(nb, b + 1);
+  const std::vector<int> dof_blade(c.blade.begin(), c.blade.begin() + static_cast<std::ptrdiff_t>(n));
+  return secondOrderLayout(std::max(nb, 3), dof_blade, std::vector<int>(first.first_order_names.size(), -1));
+}
+
+}  // namespace
+
+RotorModes rotorModes(const Model& m, const PeriodicLinearization& p) {
+  const LinearModel& first = p.models.front();
+  const RotorCoordinates c = linearCoordinates(m, first, p.points.front().held);
   std::vector<MbcSample> samples;
   for (size_t k = 0; k < p.models.size(); ++k) {
     MbcSample s;
@@ -192,7 +223,14 @@ RotorModes rotorModes(const Model& m, const PeriodicLinearization& p) {
     s.A = p.models[k].A;
     samples.push_back(std::move(s));
   }
-  return multibladeModes(c, secondOrderLayout(std::max(nb, 3), c.blade), samples);
+  return multibladeModes(c, linearLayout(c, first), samples);
+}
+
+RotorModes linearModelModes(const Model& m, const LinearModel& lin, const std::vector<int>& held) {
+  const RotorCoordinates c = linearCoordinates(m, lin, held);
+  MbcSample s;
+  s.A = lin.A;
+  return multibladeModes(c, linearLayout(c, lin), {s});
 }
 
 RotorModes multibladeModes(const RotorCoordinates& c, const MbcLayout& layout, const std::vector<MbcSample>& samples) {

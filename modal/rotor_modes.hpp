@@ -22,11 +22,16 @@ namespace whirl {
 struct RotorModes {
   std::vector<std::string> coordinates;  ///< names of the mode-shape coordinates (dim n)
   std::vector<Mode> modes;               ///< sorted by frequency
-  MatX A;                                ///< the (averaged, multiblade) state matrix, 2n × 2n
+  MatX A;                                ///< the (averaged, multiblade) state matrix, 2n (+ first-order) square
   int num_blades = 0;                    ///< 0 when no transform was applied
 };
 
 RotorModes rotorModes(const Model& model, const PeriodicLinearization& periodic);
+
+/// Modes of one linear model by the same path (no transform, one sample): for a model with
+/// first-order states (LinearModel::first_order_names), whose modes come from participation factors.
+/// \param held unrestrained coordinates the operating point held (OperatingPoint::held)
+RotorModes linearModelModes(const Model& model, const LinearModel& lin, const std::vector<int>& held = {});
 
 /// What naming needs of the n displacement coordinates of a linear rotor model.
 struct RotorCoordinates {

@@ -70,6 +70,15 @@ void run(const ModesOptions& opt) {
   header["validity"] = {{"valid", problems.empty()}, {"problems", problems}};
   const LinearModel lin = linearize(m, op);
   const int n = static_cast<int>(lin.M.rows());
+  if (!lin.first_order_names.empty()) {
+    if (opt.solver == "sparse")
+      throw InputError(
+          "--solver sparse: a model with first-order states (HydroDyn radiation) is solved dense; "
+          "use --solver dense or auto");
+    const RotorModes r = linearModelModes(m, lin, op.held);
+    printModes(r.modes, r.coordinates, opt.format, header);
+    return;
+  }
   if (!useSparseSolver(opt.solver, n)) {
     printModes(computeModes(lin.M, lin.C, lin.K, lin.dof_names), lin.dof_names, opt.format, header);
     return;

@@ -106,7 +106,8 @@ HydroDynInput readHydroDyn(const std::filesystem::path& file, OverrideSet* overr
             "the radiation convolution has no linearization (OpenFAST refuses it too); --set RdtnMod=0 leaves "
             "the radiation memory out, keeping the infinite-frequency added mass",
             "RdtnMod = 0");
-    r.addIf(h.RdtnMod == 2, "RdtnMod", "state-space radiation (.ss) is not modelled yet", "RdtnMod = 0");
+    r.addIf(h.RdtnMod < 0 || h.RdtnMod > 2, "RdtnMod", "not a radiation model (0 none, 1 convolution, 2 state space)",
+            "RdtnMod = 0 or 2");
     for (const char* key : {"PtfmRefxt", "PtfmRefyt", "PtfmRefzt", "PtfmRefztRot"})
       r.addIf(f.findDouble(key).value_or(0.0) != 0.0, key,
               "a WAMIT body away from the platform reference point is not modelled", "0");

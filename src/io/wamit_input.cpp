@@ -8,9 +8,7 @@
 #include "src/model/error.hpp"
 
 namespace whirl::io {
-namespace {
 
-// `root.ext`, or the unique file of the folder whose name matches it ignoring case.
 std::filesystem::path wamitFile(const HydroDynInput& hd, const std::string& ext) {
   std::filesystem::path p = hd.PotFile;
   p += ext;
@@ -27,6 +25,8 @@ std::filesystem::path wamitFile(const HydroDynInput& hd, const std::string& ext)
   if (matches == 1 && std::filesystem::is_regular_file(found, ec)) return found;
   throw InputError(hd.source.where("PotFile", "WAMIT file not found: " + p.string()));
 }
+
+namespace {
 
 // Number of rotational indices (4, 5, 6) among i, j (1-based).
 int rotational(int i, int j) { return (i > 3) + (j > 3); }

@@ -12,6 +12,11 @@ struct WamitMatrices {
   Mat6 added_mass = Mat6::Zero();   ///< added mass at infinite frequency of the `.1` file (kg, kg m, kg m²)
 };
 
+/// `<PotFile><ext>`, or the unique file of its folder whose name matches it ignoring case (the
+/// certification decks were written on Windows: `Spar` for `spar.hst`).
+/// \throws InputError naming PotFile when there is none.
+std::filesystem::path wamitFile(const HydroDynInput& hd, const std::string& ext);
+
 /// Reads `<PotFile>.hst` and `<PotFile>.1` (rows "PER I J A [B]", the infinite frequency written as
 /// PER < 0 as WAMIT does) and redimensionalizes them with ρ, g and L = WAMITULEN (WAMIT's
 /// conventions: C_ij ρ g L^k with k = 2, 3, 4 for 0, 1, 2 rotational indices; A_ij ρ L^k with k = 3,

@@ -25,6 +25,7 @@
 /// `NJoints` (and `NReact`, `NInterf`, `NCmass`, which list joints) | | kMaxSubDynMembers | 2000 | SubDyn `NMembers`;
 /// with `NDiv` at most kMaxFemElements elements in all | | kMaxSubDynNDiv | 100 | SubDyn `NDiv` | | kMaxSubDynPropSets
 /// | 2000 | SubDyn property-set counts (`NPropSets`, `NXPropSets`) | | kMaxReducedModes | 1000 | SubDyn `Nmodes` too |
+/// | kMaxRadiationStates | 1000 | HydroDyn's radiation states N, line 3 of the WAMIT `.ss` file |
 namespace whirl::limits {
 
 inline constexpr int kMaxElastoDynNodes = 1000;
@@ -55,6 +56,8 @@ inline constexpr int kMaxAnalyticShapeMode = 1000;
 inline constexpr int kMaxLinDimension = 100000;
 inline constexpr int kMaxSweepPoints = 100000;
 inline constexpr int kMaxAzimuths = 3600;
+/// HydroDyn's state-space radiation (`<PotFile>.ss`): states N (A is N × N, dense).
+inline constexpr int kMaxRadiationStates = 1000;
 // SubDyn substructures: the FE model has NJoints + (NDiv − 1) NMembers nodes; its elements are bounded
 // as a `fem_beam`'s (kMaxFemElements), since the Craig–Bampton fixed-interface eigenproblem is dense.
 inline constexpr int kMaxSubDynJoints = 2000;

@@ -351,6 +351,7 @@ void remapBodyReferences(Model& m, const std::vector<int>& new_index) {
       if (o.frame_body >= 0) remapBody(o.frame_body, "output '" + o.name + "' frame");
     }
   for (auto& l : m.body_matrices) remapBody(l.body, "body matrices");
+  for (auto& l : m.body_states) remapBody(l.body, "body states");
   for (auto& l : m.mooring) remapBody(l.body, l.name);
 }
 
@@ -426,6 +427,16 @@ void remapDofReferences(Model& m, const std::vector<int>& new_dof) {
   for (const auto& bm : m.body_matrices)
     if (m.bodies[bm.body].joint != JointType::Free)
       throw InputError(bodyWhere(m.bodies[bm.body], "6x6 matrices need a free joint"));
+  for (const auto& bs : m.body_states) {
+    if (m.bodies[bs.body].joint != JointType::Free)
+      throw InputError(bodyWhere(m.bodies[bs.body], "first-order states on its motion need a free joint"));
+    const Eigen::Index nz = bs.A.rows();
+    if (bs.A.cols() != nz || bs.B.rows() != nz || bs.B.cols() != 6 || bs.C.rows() != 6 || bs.C.cols() != nz ||
+        static_cast<Eigen::Index>(bs.groups.size()) != nz)
+      throw InputError(bodyWhere(m.bodies[bs.body], "first-order states: A, B, C and names differ in size"));
+    if (!bs.A.allFinite() || !bs.B.allFinite() || !bs.C.allFinite())
+      throw InputError(bodyWhere(m.bodies[bs.body], "first-order states: a matrix entry is not finite"));
+  }
   for (const auto& l : m.mooring) {
     if (m.bodies[l.body].inertia.ne != 0) throw InputError(l.name + ": its fairlead must be on a rigid body");
     if (!l.fairlead.allFinite() || !l.anchor.allFinite() || !(l.length > 0) || !(l.weight > 0) || !(l.EA > 0) ||

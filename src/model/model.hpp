@@ -16,6 +16,7 @@
 
 #include "src/model/aero_model.hpp"
 #include "src/model/body.hpp"
+#include "src/model/body_state_space.hpp"
 #include "src/model/mooring.hpp"
 #include "src/model/output.hpp"
 #include "src/model/types.hpp"
@@ -156,6 +157,7 @@ struct Model {
   std::vector<DofLoad> dof_loads;
   std::vector<DofSpring> springs;
   std::vector<BodyMatrices> body_matrices;
+  std::vector<BodyStateSpace> body_states;  ///< first-order states on free joints (linear model only)
   std::vector<MooringLine> mooring;      ///< quasi-static catenary lines (mooring.hpp)
   AeroModel aero;                        ///< blade elements, polars, wind (empty: no aerodynamics)
   GeneratorTorqueLaw generator;          ///< generator torque against speed (inactive: torque = its input)

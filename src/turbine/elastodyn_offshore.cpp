@@ -7,8 +7,9 @@
 #include "src/dynamics/catenary.hpp"
 #include "src/io/elastodyn_common.hpp"
 #include "src/io/wamit_input.hpp"
-#include "src/turbine/elastodyn_parts.hpp"
+#include "src/io/wamit_state_space.hpp"
 #include "src/model/error.hpp"
+#include "src/turbine/elastodyn_parts.hpp"
 
 namespace whirl::elastodyn {
 namespace {
@@ -20,6 +21,20 @@ double water(const io::OpenFastTurbine& t, std::optional<double> hd, std::option
   if (hd) return *hd;
   if (fst) return *fst;
   throw InputError(t.fst.source.where(key, "not in the .fst nor in the HydroDyn file: the floating platform needs it"));
+}
+
+// HydroDyn's state-space radiation memory (`RdtnMod = 2`): the states of each DOF's block named after it.
+void addRadiationStates(Builder& b, const PlatformParts& p, const io::HydroDynInput& hd) {
+  const io::RadiationStateSpace ss = io::readRadiationStateSpace(hd);
+  static const char* const kDof[6] = {"surge", "sway", "heave", "roll", "pitch", "yaw"};
+  BodyStateSpace bs;
+  bs.body = p.body;
+  bs.A = ss.A;
+  bs.B = ss.B;
+  bs.C = ss.C;
+  for (int k = 0; k < 6; ++k)
+    for (int j = 0; j < ss.per_dof[k]; ++j) bs.groups.push_back(std::string("HydroDyn radiation ") + kDof[k]);
+  b.model().body_states.push_back(std::move(bs));
 }
 
 // HydroDyn with a WAMIT body [Jonkman2007]: buoyancy ρ g V0 at the centre of buoyancy, the
@@ -54,6 +69,7 @@ void addHydroDyn(Builder& b, const PlatformParts& p, const io::OpenFastTurbine& 
                                            io::numberText(es.eigenvalues().minCoeff()) + ")"));
     const double B = rho * g * hd.PtfmVol0;
     f0 += (Eigen::Matrix<double, 6, 1>() << 0, 0, B, B * hd.PtfmCOByt, -B * hd.PtfmCOBxt, 0).finished();
+    if (hd.RdtnMod == 2) addRadiationStates(b, p, hd);
   }
   b.model().body_matrices.push_back(bm);
   for (int k = 0; k < 6; ++k)

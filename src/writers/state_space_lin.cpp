@@ -1,6 +1,7 @@
 // `.lin` writer (FAST_Lin layout) for whirl's state-space models.
 #include <cstdio>
 #include <ctime>
+#include <map>
 #include <regex>
 #include <sstream>
 
@@ -44,15 +45,15 @@ std::string number(double v) {
 
 std::string flag(int blade) { return blade >= 0 ? "T" : "F"; }
 
-void table(std::ostringstream& o, const char* title, const std::vector<std::string>& desc, const std::vector<double>& op,
-           const std::vector<int>& blade, int order) {
+void table(std::ostringstream& o, const char* title, const std::vector<std::string>& desc,
+           const std::vector<double>& op, const std::vector<int>& blade, const std::vector<int>& order) {
   o << title << "\n";
   o << "   Row/Column Operating Point          Rotating Frame? Derivative Order Description\n";
   o << "   ---------- ---------------          --------------- ---------------- -----------\n";
   for (size_t i = 0; i < desc.size(); ++i) {
     char head[96];
-    std::snprintf(head, sizeof head, "%13zu %s %16s %16d         ", i + 1, number(op[i]).c_str(), flag(blade[i]).c_str(),
-                  order);
+    std::snprintf(head, sizeof head, "%13zu %s %16s %16d         ", i + 1, number(op[i]).c_str(),
+                  flag(blade[i]).c_str(), order[i]);
     o << head << withoutControlCharacters(desc[i]) << "\n";  // a newline would start a fake row
   }
   o << "\n";
@@ -75,12 +76,22 @@ std::string withUnit(const std::string& s, const std::string& unit, bool parens)
 }  // namespace
 
 bool elastoDynStates(const std::vector<StateSpaceVariable>& all) {
-  for (const auto& v : all)
-    if (v.rate_of < 0 && elastoDynDescription(v.name).empty()) return false;
+  const std::vector<bool> first = firstOrderStates(all);
+  for (std::size_t i = 0; i < all.size(); ++i)
+    if (!first[i] && all[i].rate_of < 0 && elastoDynDescription(all[i].name).empty()) return false;
   return true;
 }
 
 std::string linStateDescription(const StateSpaceVariable& x, const std::vector<StateSpaceVariable>& all, bool elastodyn) {
+  // HydroDyn's radiation states as OpenFAST describes them ("HD RdtnPtfmSg3"), so that the file reads
+  // back into the same names (src/io/openfast_lin_names.hpp).
+  static const std::regex radiation(R"(^HydroDyn radiation (surge|sway|heave|roll|pitch|yaw) (\d+)$)");
+  std::smatch rm;
+  if (x.rate_of < 0 && std::regex_match(x.name, rm, radiation)) {
+    static const std::map<std::string, std::string> code = {{"surge", "Sg"}, {"sway", "Sw"}, {"heave", "Hv"},
+                                                            {"roll", "R"},   {"pitch", "P"}, {"yaw", "Y"}};
+    return "HD RdtnPtfm" + code.at(rm[1]) + rm[2].str();
+  }
   const bool rate = x.rate_of >= 0;
   const StateSpaceVariable& base = rate ? all[x.rate_of] : x;
   std::string d = elastodyn ? elastoDynDescription(base.name) : "";
@@ -141,10 +152,13 @@ std::string linFileText(const StateSpaceModel& m, const std::string& title) {
   }
   for (const auto& v : m.u) ud.push_back(withUnit("whirl " + v.name, v.unit, false)), uop.push_back(v.op), ub.push_back(v.blade);
   for (const auto& v : m.y) yd.push_back(withUnit("whirl " + v.name, v.unit, true)), yop.push_back(v.op), yb.push_back(v.blade);
-  table(o, "Order of continuous states:", xd, xop, xb, 2);
-  table(o, "Order of continuous state derivatives:", xdotd, xdotop, xb, 2);
-  if (!m.u.empty()) table(o, "Order of inputs:", ud, uop, ub, 0);
-  if (!m.y.empty()) table(o, "Order of outputs:", yd, yop, yb, 0);
+  const std::vector<bool> first = firstOrderStates(m.x);
+  std::vector<int> xorder;
+  for (bool f : first) xorder.push_back(f ? 1 : 2);
+  table(o, "Order of continuous states:", xd, xop, xb, xorder);
+  table(o, "Order of continuous state derivatives:", xdotd, xdotop, xb, xorder);
+  if (!m.u.empty()) table(o, "Order of inputs:", ud, uop, ub, std::vector<int>(m.u.size(), 0));
+  if (!m.y.empty()) table(o, "Order of outputs:", yd, yop, yb, std::vector<int>(m.y.size(), 0));
   o << "\nLinearized state matrices:\n\n";
   matrix(o, "A", m.A);
   if (!m.u.empty()) matrix(o, "B", m.B);

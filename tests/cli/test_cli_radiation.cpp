@@ -1,0 +1,46 @@
+// HydroDyn's state-space radiation (RdtnMod = 2) of the ITI barge deck (cases/iti_barge, OpenFAST's
+// certification Test22) through the CLI: `whirl modes` lists the modes the radiation states carry under
+// their names; `whirl export --format lin` writes them as OpenFAST does ("HD RdtnPtfmSg1", derivative
+// order 1), and `whirl lin` reading that file back gives the same modes to the printed digits (an
+// independent path: participation factors of the exported A alone); `whirl simulate` refuses the states.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "tests/cli/cli_support.hpp"
+
+namespace whirl {
+namespace {
+
+using ::testing::HasSubstr;
+
+const std::string kBarge = "cases/iti_barge/Test22.fst --set CompAero=0 --set RotSpeed=0 --set GenDOF=False";
+
+TEST(CliRadiation, BargeModesThroughTheExportedLinFile) {
+  const auto modes = test::whirl("modes " + kBarge);
+  ASSERT_EQ(modes.code, 0) << modes.err;
+  EXPECT_THAT(modes.out, HasSubstr("HydroDyn radiation surge"));
+  EXPECT_THAT(modes.out, HasSubstr("platform heave"));
+  const auto dir = test::freshDir("barge_lin");
+  const auto ex = test::whirl("export " + kBarge + " --rpm 0 --format lin --out " + dir.string());
+  ASSERT_EQ(ex.code, 0) << ex.err;
+  const std::string lin = test::slurp(dir / "statespace.1.lin");
+  EXPECT_THAT(lin, HasSubstr("F                1         HD RdtnPtfmSg1\n"));
+  EXPECT_THAT(lin, HasSubstr("F                1         HD RdtnPtfmY4\n"));
+  const auto back = test::whirl("lin " + (dir / "statespace.1.lin").string());
+  ASSERT_EQ(back.code, 0) << back.err;
+  EXPECT_EQ(back.out, modes.out);
+}
+
+TEST(CliRadiation, SimulateRefusesTheStatesOfTheLinearModelOnly) {
+  const auto dir = test::freshDir("barge_simulate");
+  const auto r = test::whirl("simulate " + kBarge + " --tmax 1 --out " + (dir / "sim").string());
+  EXPECT_NE(r.code, 0);
+  EXPECT_THAT(r.err, HasSubstr("RdtnMod = 2"));
+  EXPECT_THAT(r.err, HasSubstr("--set RdtnMod=0"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "sim"));
+}
+
+}  // namespace
+}  // namespace whirl
