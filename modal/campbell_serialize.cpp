@@ -16,6 +16,7 @@ json encodeMode(const Mode& m) {
   j["fd"] = m.damped_freq_hz;
   j["z"] = m.damping_ratio;
   j["rb"] = m.rigid_body;
+  j["fo"] = m.first_order;
   j["name"] = m.name;
   std::vector<double> re(m.shape.size()), im(m.shape.size());
   for (Eigen::Index i = 0; i < m.shape.size(); ++i) {
@@ -35,6 +36,7 @@ Mode decodeMode(const json& j) {
   m.damped_freq_hz = j.at("fd").get<double>();
   m.damping_ratio = j.at("z").get<double>();
   m.rigid_body = j.at("rb").get<bool>();
+  m.first_order = j.at("fo").get<bool>();
   m.name = j.at("name").get<std::string>();
   const auto re = j.at("re").get<std::vector<double>>(), im = j.at("im").get<std::vector<double>>();
   m.shape.resize(static_cast<Eigen::Index>(re.size()));

@@ -21,6 +21,9 @@ struct Mode {
   double damped_freq_hz = 0;  ///< |Im λ|/2π
   double damping_ratio = 0;
   bool rigid_body = false;
+  /// Carried mostly (over half the participation) by first-order states, e.g. HydroDyn's radiation
+  /// memory: a root of the fit, not a structural mode (Campbell plots leave it out by default).
+  bool first_order = false;
   std::string name;            ///< from the dominant coordinates
   Eigen::VectorXcd shape;      ///< coordinate part of the eigenvector, dim n, largest entry = 1
   VecX participation;          ///< kinetic-energy share per coordinate |Re(φ_i* (Mφ)_i)| / Σ, sums to 1

@@ -311,6 +311,7 @@ RotorModes multibladeModes(const RotorCoordinates& c, const MbcLayout& layout, c
       double first_order = 0;
       for (int i = 0; i < n; ++i)
         if (states_per[i] == 1) first_order += mode.participation(i);
+      mode.first_order = first_order > 0.5;
       const std::string tag = " (rigid body)";
       if (mode.rigid_body && first_order > 0.5 && mode.name.size() > tag.size() &&
           mode.name.compare(mode.name.size() - tag.size(), tag.size(), tag) == 0) {

@@ -25,6 +25,7 @@ struct CampbellOptions {
   std::string versus = "auto";
   double max_freq = 0;
   bool no_plot = false;
+  bool first_order_lines = false;
 };
 
 void run(const CampbellOptions& opt) {
@@ -85,6 +86,8 @@ void run(const CampbellOptions& opt) {
   plot.versus_wind_speed = opt.versus == "wind" || (opt.versus == "auto" && opt.rpm_range.empty());
   plot.max_freq_hz = opt.max_freq;
   plot.render = !opt.no_plot;
+  plot.first_order_lines = opt.first_order_lines;
+  noteHiddenFirstOrderLines(d, plot);
   const auto files = writeCampbell(d, dir, plot);
   std::printf("wrote");
   for (const auto& f : files) std::printf(" %s", f.c_str());
@@ -116,6 +119,9 @@ void addCampbellCommand(CLI::App& app) {
       ->check(CLI::IsMember({"rpm", "wind", "auto"}));
   cmd->add_option("--max-freq", opt->max_freq, "top of the frequency axis [Hz] (default: automatic)");
   cmd->add_flag("--no-plot", opt->no_plot, "write the tables and the Gnuplot script, do not run Gnuplot");
+  cmd->add_flag(
+      "--first-order-lines", opt->first_order_lines,
+      "also draw the lines of first-order states' roots (HydroDyn radiation), which are in the tables anyway");
   cmd->callback([opt]() { runWithCaseSource(opt->model.case_path, [&] { run(*opt); }); });
 }
 

@@ -2,15 +2,16 @@
 #include <cstdio>
 #include <utility>
 
-#include "src/writers/campbell_output.hpp"
 #include "modal/lin_modes.hpp"
 #include "modal/tracking.hpp"
 #include "src/cli/commands.hpp"
+#include "src/cli/common.hpp"
 #include "src/cli/mode_output.hpp"
-#include "src/writers/output_set.hpp"
 #include "src/io/openfast_lin.hpp"
 #include "src/model/error.hpp"
 #include "src/model/text.hpp"
+#include "src/writers/campbell_output.hpp"
+#include "src/writers/output_set.hpp"
 
 namespace whirl::cli {
 namespace {
@@ -19,6 +20,7 @@ struct LinOptions {
   std::vector<std::string> files;
   std::string format = "table", out = "reports/lin";
   bool no_plot = false;
+  bool first_order_lines = false;
 };
 
 void run(const LinOptions& opt) {
@@ -43,6 +45,8 @@ void run(const LinOptions& opt) {
   d.lines = trackModes(d.points);
   CampbellPlotOptions plot;
   plot.render = !opt.no_plot;
+  plot.first_order_lines = opt.first_order_lines;
+  noteHiddenFirstOrderLines(d, plot);
   const auto files = writeCampbell(d, opt.out, plot);
   std::printf("%zu operating points from %zu files; wrote", d.points.size(), opt.files.size());
   for (const auto& f : files) std::printf(" %s", f.c_str());
@@ -62,6 +66,9 @@ void addLinCommand(CLI::App& app) {
       ->check(CLI::IsMember({"table", "csv", "json"}));
   cmd->add_option("--out", opt->out, "several operating points: output folder (default reports/lin)");
   cmd->add_flag("--no-plot", opt->no_plot, "do not run Gnuplot");
+  cmd->add_flag(
+      "--first-order-lines", opt->first_order_lines,
+      "also draw the lines carried by first-order states (HydroDyn radiation …), which are in the tables anyway");
   cmd->callback([opt]() { run(*opt); });
 }
 

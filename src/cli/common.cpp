@@ -176,4 +176,21 @@ std::string defaultOutputFolder(const std::string& case_path) {
   return (std::filesystem::path("reports") / std::filesystem::path(case_path).stem()).string();
 }
 
+void noteHiddenFirstOrderLines(const CampbellDiagram& d, const CampbellPlotOptions& plot) {
+  CampbellPlotOptions all = plot;
+  all.max_freq_hz = 0;  // count only what the first-order rule hides
+  std::size_t hidden = 0;
+  std::string example;
+  for (const CampbellLine& line : d.lines)
+    if (!campbellLineShown(d, line, all)) {
+      ++hidden;
+      if (example.empty()) example = line.name;
+    }
+  if (hidden > 0)
+    std::fprintf(stderr,
+                 "whirl: note: %zu lines carried by first-order states (e.g. '%s': roots of HydroDyn's radiation "
+                 "fit) are in the tables, not drawn; --first-order-lines draws them\n",
+                 hidden, withoutControlCharacters(example).c_str());
+}
+
 }  // namespace whirl::cli

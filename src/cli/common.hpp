@@ -10,6 +10,7 @@
 #include "linearize/operating_point.hpp"
 #include "src/model/model.hpp"
 #include "src/model/operating_condition.hpp"
+#include "src/writers/campbell_output.hpp"
 
 namespace CLI {
 class App;
@@ -67,5 +68,9 @@ std::function<void(int, int)> sweepProgress(const std::string& command);
 
 /// reports/<case file stem>, the default output folder of a case.
 std::string defaultOutputFolder(const std::string& case_path);
+
+/// One `whirl: note:` line on stderr when lines of first-order states' roots (HydroDyn radiation) are
+/// left out of the plot (campbellLineShown), naming one of them and the option that draws them.
+void noteHiddenFirstOrderLines(const CampbellDiagram& d, const CampbellPlotOptions& plot);
 
 }  // namespace whirl::cli

@@ -32,6 +32,7 @@ void printModes(const std::vector<Mode>& modes, const std::vector<std::string>& 
       mj["damped_freq_hz"] = modes[k].damped_freq_hz;
       mj["damping_ratio"] = modes[k].damping_ratio;
       mj["rigid_body"] = modes[k].rigid_body;
+      mj["first_order"] = modes[k].first_order;
       if (modes[k].residual) mj["residual"] = *modes[k].residual;
       mj["participation"] = nlohmann::json::object();
       for (size_t i = 0; i < coords.size(); ++i) mj["participation"][coords[i]] = modes[k].participation(i);

@@ -30,14 +30,23 @@ double xOf(const CampbellPoint& p, const CampbellPlotOptions& opt) {
   return opt.versus_wind_speed ? p.wind_speed.value_or(NAN) : p.rpm;
 }
 
-// A line entirely above the frequency axis (--max-freq) is left out of both panels and the key; its
-// data stay in campbell.dat and the tables.
-bool shown(const CampbellDiagram& d, const CampbellLine& line, const CampbellPlotOptions& opt) {
-  if (opt.max_freq_hz <= 0) return true;
-  for (std::size_t p = 0; p < d.points.size(); ++p)
-    if (line.mode[p] >= 0 && d.points[p].modes[line.mode[p]].freq_hz <= opt.max_freq_hz) return true;
-  return false;
+}  // namespace
+
+// A line entirely above the frequency axis (--max-freq), or one whose every mode is a first-order
+// state's root (HydroDyn's radiation fit; unless first_order_lines), is left out of both panels and the
+// key; its data stay in campbell.dat and the tables.
+bool campbellLineShown(const CampbellDiagram& d, const CampbellLine& line, const CampbellPlotOptions& opt) {
+  bool structural = opt.first_order_lines, below = opt.max_freq_hz <= 0;
+  for (std::size_t p = 0; p < d.points.size(); ++p) {
+    if (line.mode[p] < 0) continue;
+    const Mode& m = d.points[p].modes[line.mode[p]];
+    structural = structural || !m.first_order;
+    below = below || m.freq_hz <= opt.max_freq_hz;
+  }
+  return structural && below;
 }
+
+namespace {
 
 struct Ranges {
   double x0 = 0, x1 = 1, fmax = 1, dmin = 0, dmax = 1;
@@ -52,7 +61,7 @@ Ranges ranges(const CampbellDiagram& d, const CampbellPlotOptions& opt) {
   }
   for (const auto& line : d.lines)
     for (std::size_t p = 0; p < d.points.size(); ++p) {
-      if (line.mode[p] < 0 || !shown(d, line, opt)) continue;
+      if (line.mode[p] < 0 || !campbellLineShown(d, line, opt)) continue;
       const Mode& m = d.points[p].modes[line.mode[p]];
       if (std::isfinite(m.freq_hz)) f1 = std::max(f1, m.freq_hz);
       if (std::isfinite(m.damping_ratio)) {
@@ -190,13 +199,14 @@ std::string campbellGnuplotScript(const CampbellDiagram& d, const CampbellPlotOp
                  " with lines ls 100 notitle, \\\n";
     if (auto l = harmonicLabel(n, s, r)) labels.push_back(*l);
   }
-  std::string freq, damp;
+  std::string freq, damp, key;
   for (std::size_t l = 0; l < d.lines.size(); ++l) {
-    if (!shown(d, d.lines[l], opt)) continue;
+    if (!campbellLineShown(d, d.lines[l], opt)) continue;
     const std::string idx = "data index " + std::to_string(l) + " using xcol:";
     const std::string style = " with linespoints ls " + std::to_string(l + 1);
-    freq += "  " + idx + "3" + style + " title " + gnuplotQuoted(d.lines[l].name) + ", \\\n";
+    freq += "  " + idx + "3" + style + " notitle, \\\n";
     damp += "  " + idx + "(100*$4)" + style + " notitle, \\\n";
+    key += "  NaN" + style + " title " + gnuplotQuoted(d.lines[l].name) + ", \\\n";
   }
   const auto plot = [](std::string items) {
     if (items.empty()) return std::string("  NaN notitle\n");
@@ -214,15 +224,14 @@ std::string campbellGnuplotScript(const CampbellDiagram& d, const CampbellPlotOp
        "  set lmargin at screen left; set rmargin at screen right\n"
        "  set xrange [xmin:xmax]\n"
        "  set grid back lt 1 lc rgb '#dddddd' lw 1\n"
-       "  set border lw 1\n"
+       "  set border lw 1; set tics\n"
        "  set mxtics 2\n"
        "  # Top: natural frequencies with the nP lines, key to the right of the plots.\n"
        "  set tmargin at screen 0.91; set bmargin at screen 0.40\n"
        "  set format x ''; unset xlabel\n"
        "  set ylabel 'Frequency [Hz]'\n"
        "  set yrange [0:fmax]\n"
-       "  set key at screen right + 0.045, screen 0.91 left top Left reverse samplen 3 spacing 1.15 "
-       "title 'Mode' noautotitle\n";
+       "  unset key\n";
   g += harmonicLabels(labels, r);
   g += "  plot \\\n" + plot(harmonics + freq);
   g += "  # Bottom: damping ratio in percent.\n"
@@ -236,6 +245,16 @@ std::string campbellGnuplotScript(const CampbellDiagram& d, const CampbellPlotOp
        "fs solid noborder behind; set label 1 'unstable (negative damping)' at graph 0.01, first dmin / 2 "
        "tc rgb '#a00000' front }\n";
   g += "  plot \\\n" + plot(damp);
+  // The key in a panel of its own right of both plots, as tall as both, so that some 40 lines fit in
+  // one column (a key of the top panel alone wraps into columns past the page's edge).
+  g += "  # Key: an empty panel right of the plots, as tall as both.\n"
+       "  unset border; unset tics; unset xlabel; unset ylabel; unset grid; unset label; unset object 1\n"
+       "  set lmargin at screen right; set rmargin at screen 0.995; set tmargin at screen 0.91; set bmargin at "
+       "screen 0.08\n"
+       "  set xrange [0:1]; set yrange [0:1]\n"
+       "  set key at screen right + 0.045, screen 0.91 left top Left reverse samplen 3 spacing 1.15 "
+       "title 'Mode'\n";
+  g += "  plot \\\n" + plot(key);
   g += "  unset multiplot\n"
        "  set output\n"
        "}\n";

@@ -27,9 +27,16 @@ struct CampbellPlotOptions {
   bool versus_wind_speed = false;             ///< x axis: wind speed (every point needs one) instead of rpm
   double max_freq_hz = 0;                     ///< top of the frequency axis; 0: just above the highest line
   double max_damping_percent = 0;             ///< top of the damping axis; 0: just above the highest line
+  /// Draw the lines of first-order states' roots (Mode::first_order at every point, e.g. HydroDyn
+  /// radiation); by default they are in the tables only.
+  bool first_order_lines = false;
   bool render = true;                         ///< run Gnuplot on the script when it is on PATH
   std::string gnuplot = "gnuplot";            ///< the Gnuplot program (looked up on PATH)
 };
+
+/// Whether `line` is drawn: not when it lies entirely above opt.max_freq_hz, nor when every one of its
+/// modes is a first-order state's root (Mode::first_order) and !opt.first_order_lines.
+bool campbellLineShown(const CampbellDiagram& d, const CampbellLine& line, const CampbellPlotOptions& opt);
 
 /// Writes the Campbell files into `dir` (created when missing) and, when `opt.render` and Gnuplot
 /// is found, renders campbell.png and campbell.svg by running the script with `dir` as working

@@ -68,6 +68,7 @@ std::string campbellModesJson(const CampbellDiagram& d) {
       jm["damped_freq_hz"] = number(m.damped_freq_hz);
       jm["damping_ratio"] = number(m.damping_ratio);
       jm["rigid_body"] = m.rigid_body;
+      jm["first_order"] = m.first_order;
       jm["name"] = m.name;
       jm["line"] = nullptr;
       for (const auto& line : d.lines)

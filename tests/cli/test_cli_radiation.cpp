@@ -2,7 +2,8 @@
 // certification Test22) through the CLI: `whirl modes` lists the modes the radiation states carry under
 // their names; `whirl export --format lin` writes them as OpenFAST does ("HD RdtnPtfmSg1", derivative
 // order 1), and `whirl lin` reading that file back gives the same modes to the printed digits (an
-// independent path: participation factors of the exported A alone); `whirl simulate` refuses the states.
+// independent path: participation factors of the exported A alone); `whirl campbell` leaves the fit's
+// own roots out of the plot unless asked; `whirl simulate` refuses the states.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -14,6 +15,7 @@ namespace whirl {
 namespace {
 
 using ::testing::HasSubstr;
+using ::testing::Not;
 
 const std::string kBarge = "cases/iti_barge/Test22.fst --set CompAero=0 --set RotSpeed=0 --set GenDOF=False";
 
@@ -31,6 +33,22 @@ TEST(CliRadiation, BargeModesThroughTheExportedLinFile) {
   const auto back = test::whirl("lin " + (dir / "statespace.1.lin").string());
   ASSERT_EQ(back.code, 0) << back.err;
   EXPECT_EQ(back.out, modes.out);
+}
+
+// The radiation fit's own roots are Campbell lines of the tables, left out of the plot unless asked for.
+TEST(CliRadiation, CampbellDrawsTheRadiationRootsOnlyWhenAskedTo) {
+  const auto dir = test::freshDir("barge_campbell");
+  const std::string cmd = "campbell cases/iti_barge/Test22.fst --set CompAero=0 --rpm 0:6:12 --no-plot --out ";
+  const auto r = test::whirl(cmd + (dir / "a").string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_THAT(r.err, HasSubstr("whirl: note: 18 lines carried by first-order states (e.g. 'HydroDyn radiation"));
+  EXPECT_THAT(test::slurp(dir / "a" / "campbell.csv"), HasSubstr(",HydroDyn radiation surge,"));
+  EXPECT_THAT(test::slurp(dir / "a" / "campbell.gp"), HasSubstr("title 'platform heave'"));
+  EXPECT_THAT(test::slurp(dir / "a" / "campbell.gp"), Not(HasSubstr("title 'HydroDyn radiation")));
+  const auto all = test::whirl(cmd + (dir / "b").string() + " --first-order-lines");
+  ASSERT_EQ(all.code, 0) << all.err;
+  EXPECT_THAT(all.err, Not(HasSubstr("first-order states")));
+  EXPECT_THAT(test::slurp(dir / "b" / "campbell.gp"), HasSubstr("title 'HydroDyn radiation surge'"));
 }
 
 TEST(CliRadiation, SimulateRefusesTheStatesOfTheLinearModelOnly) {
