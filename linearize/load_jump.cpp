@@ -6,13 +6,11 @@
 #include <cmath>
 
 #include "linearize/unrestrained.hpp"
+#include "src/aero/bem.hpp"
 #include "src/dynamics/aero_inflow.hpp"
 
 namespace whirl {
 namespace {
-
-// AeroDyn's BEMT VelocityIsZero threshold (src/aero/bem.cpp).
-constexpr double kZeroVelocity = 1e-3;
 
 bool crosses(double a, double b, double limit) {
   return std::min(std::abs(a), std::abs(b)) < limit && std::max(std::abs(a), std::abs(b)) >= limit;
@@ -64,16 +62,16 @@ std::string describe(const Model& m, const LoadJump& j) {
     element -= static_cast<int>(m.aero.blades[static_cast<size_t>(blade++)].stations.size());
   s += blade < static_cast<int>(m.aero.blades.size()) ? fmt::format(": blade {} element {} ", blade + 1, element + 1)
                                                       : fmt::format(": element {} ", j.element + 1);
-  if (crosses(j.vx_a, j.vx_b, kZeroVelocity))
+  if (crosses(j.vx_a, j.vx_b, aero::kZeroVelocity))
     return s + fmt::format(
                    "crosses AeroDyn's zero-velocity limit of its normal velocity (|Vx| = {:g} m/s, here "
                    "{:.6g} and {:.6g} m/s), below which BEM is not solved",
-                   kZeroVelocity, j.vx_a, j.vx_b);
-  if (crosses(j.vy_a, j.vy_b, kZeroVelocity))
+                   aero::kZeroVelocity, j.vx_a, j.vx_b);
+  if (crosses(j.vy_a, j.vy_b, aero::kZeroVelocity))
     return s + fmt::format(
                    "crosses AeroDyn's zero-velocity limit of its in-plane velocity (|Vy| = {:g} m/s, here "
                    "{:.6g} and {:.6g} m/s), below which BEM is not solved",
-                   kZeroVelocity, j.vy_a, j.vy_b);
+                   aero::kZeroVelocity, j.vy_a, j.vy_b);
   if (j.bem_valid_a != j.bem_valid_b)
     return s + "loses its valid BEM inflow angle on one side (the geometric inflow, as AeroDyn takes it)";
   return s + "switches between two BEM roots";

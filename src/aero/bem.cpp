@@ -28,8 +28,8 @@ const double kEps2 = 10.0 * std::sqrt(DBL_EPSILON);
 
 /// NWTC EqualRealNos for double: |a − b| ≤ max(|a + b|, 1) · 100 ε / 2.
 bool equal(double a, double b) { return std::abs(a - b) <= std::max(std::abs(a + b), 1.0) * 50.0 * DBL_EPSILON; }
-/// BEMTUncoupled VelocityIsZero: |v| < 1e-3 m/s.
-bool velocityIsZero(double v) { return std::abs(v) < 1e-3; }
+/// BEMTUncoupled VelocityIsZero.
+bool velocityIsZero(double v) { return std::abs(v) < kZeroVelocity; }
 /// Fortran SIGN(a, b): |a| with the sign of b (b = 0 → +).
 double fsign(double a, double b) { return b >= 0 ? std::abs(a) : -std::abs(a); }
 

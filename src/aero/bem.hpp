@@ -37,6 +37,10 @@
 
 namespace whirl::aero {
 
+/// AeroDyn's BEMT VelocityIsZero: an inflow component below this [m/s] counts as zero
+/// (BEMT_UnCoupledSolve: |Vx| below it, no induction and φ = 0; |Vy| below it, φ = ±π/2).
+inline constexpr double kZeroVelocity = 1e-3;
+
 /// One blade station (AeroDyn blade node).
 struct BemStation {
   double r = 0;           ///< distance from the rotor axis (AeroDyn rLocal), used in the solidity [m]
