@@ -17,6 +17,8 @@
 //  11 fuzz_read_aerodyn14   readAeroDyn14, then its AeroDyn v15 description and blade (FAST v8 CompAero = 1)
 //  12 fuzz_read_airfoil14   readAirfoil14 with and without Cm columns, then airfoilPolar (first table, on Re)
 //  13 fuzz_read_wamit_ss    readRadiationStateSpace (HydroDyn's state-space radiation, WAMIT `.ss`)
+//  14 fuzz_read_map         readMap, then mapMooringLines (the catenary lines it describes)
+//  15 fuzz_read_moordyn     readMoorDyn, then mapMooringLines
 #include "fuzz/fuzz_support.hpp"
 #include "src/io/aero_deck14.hpp"
 #include "src/io/aerodyn_blade_input.hpp"
@@ -29,6 +31,8 @@
 #include "src/io/elastodyn_tower.hpp"
 #include "src/io/fst_input.hpp"
 #include "src/io/inflowwind_input.hpp"
+#include "src/io/map_input.hpp"
+#include "src/io/moordyn_input.hpp"
 #include "src/io/servodyn_input.hpp"
 #include "src/io/wamit_state_space.hpp"
 
@@ -79,8 +83,12 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     io::HydroDynInput hd;
     hd.PotFile = std::filesystem::path(path).replace_extension();
     (void)io::readRadiationStateSpace(hd);
+#elif WHIRL_FUZZ_READER == 14
+    (void)io::mapMooringLines(io::readMap(path), 0, 320, 1025, 9.80665);
+#elif WHIRL_FUZZ_READER == 15
+    (void)io::mapMooringLines(io::readMoorDyn(path), 0, 320, 1025, 9.80665);
 #else
-#error "WHIRL_FUZZ_READER must be 1 to 13"
+#error "WHIRL_FUZZ_READER must be 1 to 15"
 #endif
   });
   return 0;

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "src/io/elastodyn_common.hpp"
+#include "src/io/mooring_table.hpp"
 #include "src/io/openfast_input.hpp"
 #include "src/model/error.hpp"
 
@@ -14,31 +15,6 @@ namespace {
 
 enum class Section { None, Dictionary, Nodes, Lines, Options };
 
-std::vector<std::string> tokens(const std::string& s) {
-  std::istringstream ss(s);
-  std::vector<std::string> t;
-  for (std::string w; ss >> w;) t.push_back(w);
-  return t;
-}
-
-struct Reader {
-  std::string file;
-  int line = 0;
-  InputError fail(const std::string& key, const std::string& reason) const {
-    return InputError(whirl::where(file, line, key, reason));
-  }
-  double number(const std::string& tok, const std::string& key) const {
-    const std::optional<double> x = parseFortranDouble(tok);
-    if (!x || !std::isfinite(*x)) throw fail(key, "'" + tok + "' is not a finite number");
-    return *x;
-  }
-  int integer(const std::string& tok, const std::string& key) const {
-    const double x = number(tok, key);
-    if (x != std::floor(x) || std::abs(x) > 1e9) throw fail(key, "'" + tok + "' is not an integer");
-    return static_cast<int>(x);
-  }
-};
-
 }  // namespace
 
 MapInput readMap(const std::filesystem::path& file) {
@@ -46,12 +22,12 @@ MapInput readMap(const std::filesystem::path& file) {
   if (!in) throw InputError(whirl::where(file.string(), 0, "", "cannot open file"));
   MapInput m;
   m.path = file;
-  Reader r{file.string()};
+  MooringTableReader r{file.string()};
   Section sec = Section::None;
   int header = 0;  // header and unit rows still to skip in the section
   for (std::string s; std::getline(in, s);) {
     ++r.line;
-    const std::vector<std::string> t = tokens(s);
+    const std::vector<std::string> t = mooringTokens(s);
     if (t.empty()) continue;
     if (s.rfind("---", 0) == 0 || t[0].rfind("---", 0) == 0) {
       const std::string u = toLower(s);

@@ -1,5 +1,6 @@
 #include "src/io/openfast_turbine.hpp"
 
+#include "src/io/moordyn_input.hpp"
 #include "src/io/openfast_support.hpp"
 #include "src/model/error.hpp"
 
@@ -15,6 +16,7 @@ OpenFastTurbine readOpenFastTurbine(const std::filesystem::path& fst, OverrideSe
   } else if (hasPlatformDofs(t.elastodyn)) {
     if (t.fst.CompHydro == 1) t.hydrodyn = readHydroDyn(t.fst.source.getExistingPath("HydroFile"), overrides);
     if (t.fst.CompMooring == 1) t.mooring = readMap(t.fst.source.getExistingPath("MooringFile"));
+    if (t.fst.CompMooring == 3) t.mooring = readMoorDyn(t.fst.source.getExistingPath("MooringFile"));
   }
   return t;
 }

@@ -22,14 +22,14 @@ struct OpenFastTurbine {
   FstInput fst;
   ElastoDynInput elastodyn;
   std::optional<HydroDynInput> hydrodyn;  ///< with a platform DOF on and CompHydro = 1
-  std::optional<MapInput> mooring;        ///< with a platform DOF on and CompMooring = 1
+  std::optional<MapInput> mooring;        ///< with a platform DOF on: MAP++ (CompMooring = 1) or MoorDyn (3)
   std::optional<SubDynInput> subdyn;      ///< with CompSub = 1 (then HydroDyn and mooring are not read)
 };
 
 /// Reads `fst` and the ElastoDyn files it names, its SubDyn file (CompSub = 1), and otherwise, with a
-/// platform DOF on, its HydroDyn (CompHydro = 1) and MAP++ (CompMooring = 1) files. `overrides` (may be null) apply to
-/// every file read; call overrides->requireAllUsed() once all the files the run needs are read. Throws InputError
-/// naming file, line and key, e.g. "a.fst:33: EDFile: file not found: …".
+/// platform DOF on, its HydroDyn (CompHydro = 1) and MAP++ (CompMooring = 1) or MoorDyn (3) files. `overrides` (may be
+/// null) apply to every file read; call overrides->requireAllUsed() once all the files the run needs are read. Throws
+/// InputError naming file, line and key, e.g. "a.fst:33: EDFile: file not found: …".
 OpenFastTurbine readOpenFastTurbine(const std::filesystem::path& fst, OverrideSet* overrides = nullptr);
 
 /// The ServoDyn file when CompServo = 1, nullopt when ServoDyn is off (no yaw spring). Throws

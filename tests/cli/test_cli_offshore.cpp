@@ -1,14 +1,16 @@
 // `whirl modes` on the OC3-Hywind deck (cases/oc3_hywind, OpenFAST certification Test24): the six
-// platform modes by name, the one-line note for the ignored waves, and the one-line refusal of the
-// deck's radiation convolution. The OC3 monopile (cases/oc3_monopile, Test19, a SubDyn substructure):
-// `whirl modes` and `whirl campbell`, the refusal of HydroDyn on a substructure, and a bad SubDyn file
-// stopping with its place and nothing written.
+// platform modes by name, the one-line note for the ignored waves, the one-line refusal of the
+// deck's radiation convolution, and its MoorDyn file against its MAP++ file. The OC3 monopile (cases/oc3_monopile,
+// Test19, a SubDyn substructure): `whirl modes` and `whirl campbell`, the refusal of HydroDyn on a substructure, and a
+// bad SubDyn file stopping with its place and nothing written.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <sstream>
 
 #include "tests/cli/cli_support.hpp"
 
@@ -37,6 +39,37 @@ TEST(CliOffshore, RadiationConvolutionRefusedOnOneLine) {
   EXPECT_THAT(r.err, HasSubstr("HydroDyn.dat:53: RdtnMod: 1 not supported by whirl"));
   EXPECT_THAT(r.err, HasSubstr("--set RdtnMod=0"));
   EXPECT_EQ(lines(r.err), 1) << r.err;
+}
+
+// The platform frequencies of a `whirl modes` table, by mode name (first occurrence).
+std::map<std::string, double> platformFrequencies(const std::string& table) {
+  std::map<std::string, double> f;
+  std::istringstream in(table);
+  for (std::string row; std::getline(in, row);) {
+    const auto at = row.find("platform ");
+    if (at == std::string::npos) continue;
+    const auto end = row.find("  ", at);
+    const std::string name = row.substr(at, end - at);
+    if (!f.count(name)) f[name] = std::stod(row.substr(end));
+  }
+  return f;
+}
+
+// The deck's MoorDyn file (the same three lines as its MAP++ file, without MAP++'s seabed friction
+// CB = 0.001 and with anchors printed to 0.01 m) gives the MAP++ model's platform frequencies.
+TEST(CliOffshore, Oc3HywindMoorDynFileGivesTheMapFrequencies) {
+  const std::string base = "modes " + kDeck + " --set CompAero=0 --set RdtnMod=0 --set RotSpeed=0 --set GenDOF=False";
+  const auto map = test::whirl(base);
+  const auto md = test::whirl(
+      base + " --set CompMooring=3 --set MooringFile=5MW_Baseline/NRELOffshrBsline5MW_OC3Hywind_MoorDyn.dat");
+  ASSERT_EQ(map.code, 0) << map.err;
+  ASSERT_EQ(md.code, 0) << md.err;
+  const auto a = platformFrequencies(map.out), b = platformFrequencies(md.out);
+  ASSERT_EQ(a.size(), 6u);
+  for (const auto& [name, f] : a) {
+    ASSERT_TRUE(b.count(name)) << name;
+    EXPECT_NEAR(b.at(name), f, 1e-4 * f) << name;
+  }
 }
 
 const std::string kMonopile = "cases/oc3_monopile/Test19.fst";
