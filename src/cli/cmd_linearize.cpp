@@ -16,9 +16,11 @@ struct LinearizeOptions {
   std::string out;
 };
 
-std::vector<std::string> stateNames(const std::vector<std::string>& dofs) {
-  std::vector<std::string> s = dofs;
-  for (const auto& d : dofs) s.push_back("d(" + d + ")/dt");
+// [q; q̇; z]: the coordinates, their rates, the first-order states (HydroDyn radiation).
+std::vector<std::string> stateNames(const LinearModel& lin) {
+  std::vector<std::string> s = lin.dof_names;
+  for (const auto& d : lin.dof_names) s.push_back("d(" + d + ")/dt");
+  s.insert(s.end(), lin.first_order_names.begin(), lin.first_order_names.end());
   return s;
 }
 
@@ -36,7 +38,7 @@ void run(const LinearizeOptions& opt) {
   const std::string dir = opt.out.empty() ? defaultOutputFolder(opt.model.case_path) : opt.out;
   prepareOutputFolder(dir);
   OutputSet files(dir);  // the seven files appear together, or none
-  const auto states = stateNames(lin.dof_names);
+  const auto states = stateNames(lin);
   files.write("M.csv", matrixCsv(lin.M, "dof", lin.dof_names, lin.dof_names));
   files.write("C.csv", matrixCsv(lin.C, "dof", lin.dof_names, lin.dof_names));
   files.write("K.csv", matrixCsv(lin.K, "dof", lin.dof_names, lin.dof_names));

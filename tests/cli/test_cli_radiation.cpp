@@ -35,6 +35,18 @@ TEST(CliRadiation, BargeModesThroughTheExportedLinFile) {
   EXPECT_EQ(back.out, modes.out);
 }
 
+// `whirl linearize` writes A and B over [q; q̇; z] with the states named; M, C, K stay the coordinates'.
+TEST(CliRadiation, LinearizeNamesTheRadiationStatesOfA) {
+  const auto dir = test::freshDir("barge_linearize");
+  const auto r = test::whirl("linearize " + kBarge + " --out " + dir.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string a = test::slurp(dir / "A.csv");
+  EXPECT_THAT(a.substr(0, a.find('\n')), HasSubstr(",d(platform surge)/dt,"));
+  EXPECT_THAT(a.substr(0, a.find('\n')), HasSubstr(",HydroDyn radiation surge 1,"));
+  EXPECT_THAT(a, HasSubstr("\nHydroDyn radiation yaw 4,"));
+  EXPECT_THAT(test::slurp(dir / "linearization.json"), HasSubstr("\"HydroDyn radiation heave 2\""));
+}
+
 // The radiation fit's own roots are Campbell lines of the tables, left out of the plot unless asked for.
 TEST(CliRadiation, CampbellDrawsTheRadiationRootsOnlyWhenAskedTo) {
   const auto dir = test::freshDir("barge_campbell");
