@@ -132,7 +132,7 @@ AeroDyn14Input readAeroDyn14(const std::filesystem::path& file, OverrideSet* ove
   requirePositive(f, "AirDens", a.AirDens);
   a.KinVisc = f.getDouble("KinVisc");
   requirePositive(f, "KinVisc", a.KinVisc);
-  f.getDouble("DTAero");
+  f.getDoubleOrDefault("DTAero");  // the time step ("default": the glue code's), unused by a linear model
 
   const int foils = f.getInt("NumFoil");
   if (foils < 1) throw InputError(f.where("NumFoil", "must be at least 1 (is " + std::to_string(foils) + ")"));

@@ -1,5 +1,6 @@
 #include "src/io/airfoil14_input.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -69,6 +70,7 @@ AirfoilInput readAirfoil14(const std::filesystem::path& file, bool use_cm) {
   }
   const int per_table = use_cm ? 3 : 2;
   const std::size_t needed = 1 + static_cast<std::size_t>(n * per_table);
+  std::vector<double> last_row;  // the previous coefficient row (alpha first)
   for (int l = 15; l <= lines.count(); ++l) {
     if (isBlankLine(lines.line(l))) continue;
     // Like AeroDyn v14's list-directed reads: the numbers a row needs, then anything (often a description).
@@ -95,6 +97,12 @@ AirfoilInput readAirfoil14(const std::filesystem::path& file, bool use_cm) {
         throw InputError(
             where(path, l, c == 0 ? "Alpha" : "", std::isnan((*row)[c]) ? "value is NaN" : "value is infinite"));
     const double alpha = row->front();
+    // A row repeated exactly (the certification decks' DU25_A17 repeats -13 deg) adds nothing to a
+    // piecewise-linear table: it is skipped. The same angle with other coefficients is an error below.
+    if (!a.tables.front().alpha_deg.empty() && alpha == a.tables.front().alpha_deg.back() &&
+        std::equal(row->begin(), row->begin() + static_cast<std::ptrdiff_t>(needed), last_row.begin()))
+      continue;
+    last_row.assign(row->begin(), row->begin() + static_cast<std::ptrdiff_t>(needed));
     for (int t = 0; t < n; ++t) {
       AirfoilTable& tab = a.tables[t];
       if (!tab.alpha_deg.empty() && !(alpha > tab.alpha_deg.back()))

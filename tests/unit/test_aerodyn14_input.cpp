@@ -134,6 +134,23 @@ TEST(Airfoil14, MalformedFilesNamedWithLine) {
             p.string() + ":6: unused: the file ends (truncated header?)");
 }
 
+// An exact repeat of the previous row (DU25_A17 of the offshore certification decks repeats -13 deg) is
+// skipped; the same angle with other coefficients stays an error (MalformedFilesNamedWithLine).
+TEST(Airfoil14, ExactlyRepeatedRowIsSkipped) {
+  const std::string text = readText(certtest() / "AWT27" / "AeroData" / "AWT27_05.dat");
+  const std::string row = "0       0.4434  0.01072";
+  const std::size_t at = text.find(row);
+  ASSERT_NE(at, std::string::npos);
+  const std::size_t end = text.find('\n', at);
+  const std::string line = text.substr(at, end - at);
+  ScratchDir s;
+  const auto p = s.write("af.dat", text.substr(0, end + 1) + line + text.substr(end));
+  const auto with = readAirfoil14(p, false), without = readAirfoil14(s.write("b.dat", text), false);
+  EXPECT_EQ(with.tables[0].alpha_deg, without.tables[0].alpha_deg);
+  EXPECT_EQ(with.tables[0].cl, without.tables[0].cl);
+  EXPECT_EQ(with.tables[0].cd, without.tables[0].cd);
+}
+
 TEST(AeroDyn14, DeckBecomesV15Elements) {
   const auto deck = whirl::io::readAeroDeck(whirl::io::readFst(certtest() / "Test01.fst"));
   EXPECT_EQ(deck.aerodyn.Wake_Mod, 1);
