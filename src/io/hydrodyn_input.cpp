@@ -105,7 +105,7 @@ HydroDynInput readHydroDyn(const std::filesystem::path& file, OverrideSet* overr
     r.addIf(h.RdtnMod == 1, "RdtnMod",
             "the radiation convolution has no linearization (OpenFAST refuses it too); --set RdtnMod=0 leaves "
             "the radiation memory out, keeping the infinite-frequency added mass",
-            "RdtnMod = 0");
+            "RdtnMod = 0 or 2 (state space)");
     r.addIf(h.RdtnMod < 0 || h.RdtnMod > 2, "RdtnMod", "not a radiation model (0 none, 1 convolution, 2 state space)",
             "RdtnMod = 0 or 2");
     for (const char* key : {"PtfmRefxt", "PtfmRefyt", "PtfmRefzt", "PtfmRefztRot"})

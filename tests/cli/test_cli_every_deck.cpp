@@ -1,4 +1,4 @@
-// Every public OpenFAST deck of `../shared/data/decks` but the offshore ones (issue 16; copies in
+// Every public OpenFAST deck of `../shared/data/decks` (issues 16 and 17; copies in
 // tests/data/openfast/decks, tests/data/openfast/README.md): `whirl modes` parked and `whirl campbell`
 // from 0 to rated rotor speed, as shipped and as the structural model (`--set CompAero=0`). A deck
 // runs, or is refused for the documented reason listed here (docs/decks.md); a new refusal, a crash
@@ -34,6 +34,11 @@ constexpr const char* kNoActiveDof = "the model has no active degree of freedom"
 constexpr const char* kTeeterParked = "teeter: turned";
 constexpr const char* kBeamDyn = "CompElast: 2 not supported by whirl (BeamDyn blades";
 constexpr const char* kFastV7 = "this is a FAST v7 primary input file";
+// Offshore (issue 17): HydroDyn's strip-theory members on a SubDyn substructure, and the radiation
+// convolution, which has no linearization (OpenFAST refuses it too; --set RdtnMod=0 runs Test23–25's
+// platforms but Test23's FEAMooring and Test25's filled members).
+constexpr const char* kHydroOnSubDyn = "CompHydro: 1 not supported by whirl (HydroDyn on a SubDyn substructure";
+constexpr const char* kConvolution = "RdtnMod: 1 not supported by whirl (the radiation convolution";
 
 // Rated rotor speeds: the ElastoDyn RotSpeed of the certification tests' operating decks (AWT-27
 // Test01, AOC Test07, UAE VI Test09, WindPACT Test11, SWRT Test15, NREL 5MW Test18: constant-speed
@@ -60,6 +65,13 @@ const Deck kDecks[] = {
     {"certtest/Test16.fst", 188, nullptr, nullptr},  // airfoil tables on the Reynolds number (RENUM)
     {"certtest/Test17.fst", 188, nullptr, nullptr},
     {"certtest/Test18.fst", 12.1, nullptr, nullptr},
+    {"certtest/Test19.fst", 12.1, kHydroOnSubDyn, kHydroOnSubDyn},  // OC3 monopile
+    {"certtest/Test20.fst", 12.1, kHydroOnSubDyn, kHydroOnSubDyn},  // OC3 tripod
+    {"certtest/Test21.fst", 12.1, kHydroOnSubDyn, kHydroOnSubDyn},  // OC4 jacket
+    {"certtest/Test22.fst", 12.1, nullptr, nullptr},                // ITI barge, state-space radiation
+    {"certtest/Test23.fst", 12.1, kConvolution, kConvolution},      // MIT/NREL TLP
+    {"certtest/Test24.fst", 12.1, kConvolution, kConvolution},      // OC3 Hywind
+    {"certtest/Test25.fst", 12.1, kConvolution, kConvolution},      // OC4 DeepCwind semi
     {"certtest/Test26.fst", 12.1, kBeamDyn, kBeamDyn},
     {"toolbox-nrel5mw/5MW_Land_Lin_BladeOnly/Main.fst", 12.1, nullptr, nullptr},
     {"toolbox-nrel5mw/5MW_Land_Lin_Rotating/Main.fst", 12.1, nullptr, nullptr},
