@@ -7,10 +7,11 @@
 #include <numbers>
 #include <set>
 
+#include "linearize/mbc.hpp"
 #include "modal/eigen.hpp"
 #include "modal/floquet.hpp"
 #include "modal/participation.hpp"
-#include "linearize/mbc.hpp"
+#include "src/model/error.hpp"
 
 namespace whirl {
 namespace {
@@ -259,7 +260,16 @@ RotorModes multibladeModes(const RotorCoordinates& c, const MbcLayout& layout, c
     bool even = true;
     for (std::size_t k = 1; k < samples.size(); ++k)
       even = even && std::abs(samples[k].azimuth - samples[0].azimuth - 2 * std::numbers::pi * double(k) / double(samples.size())) < 1e-6;
-    if (even) return floquetModes(c, samples);
+    if (even) {
+      // Floquet's fixed-frame view pairs every coordinate with a rate; a first-order state has none.
+      std::vector<int> states_per(n, 0);
+      for (int k : c.coordinate_of_state) ++states_per[k];
+      if (std::find(states_per.begin(), states_per.end(), 1) != states_per.end())
+        throw InputError(
+            "Floquet analysis (fewer than 3 blades, turning) of a model with first-order states "
+            "(HydroDyn radiation) is not supported: --set RdtnMod=0 leaves them out");
+      return floquetModes(c, samples);
+    }
   }
   // Parked (or uneven azimuths): the first model, fixed-frame names; a single blade (a blade-only deck)
   // has no pattern across blades to name, its modes take its coordinates' names below.

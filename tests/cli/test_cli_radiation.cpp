@@ -63,6 +63,19 @@ TEST(CliRadiation, CampbellDrawsTheRadiationRootsOnlyWhenAskedTo) {
   EXPECT_THAT(test::slurp(dir / "b" / "campbell.gp"), HasSubstr("title 'HydroDyn radiation surge'"));
 }
 
+// A 2-bladed rotor turning is analysed by Floquet, whose fixed-frame view has no place for first-order
+// states yet: one line, nothing written.
+TEST(CliRadiation, FloquetRefusesTheStatesOnOneLine) {
+  const auto dir = test::freshDir("barge_floquet");
+  const auto r = test::whirl(
+      "campbell cases/iti_barge/Test22.fst --set CompAero=0 --set NumBl=2 --rpm 6:6:12 --no-plot --out " +
+      (dir / "out").string());
+  EXPECT_EQ(r.code, 1);
+  EXPECT_THAT(r.err, HasSubstr("whirl: error: Floquet analysis (fewer than 3 blades, turning) of a model with "
+                               "first-order states (HydroDyn radiation) is not supported: --set RdtnMod=0"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "out" / "campbell.csv"));
+}
+
 TEST(CliRadiation, SimulateRefusesTheStatesOfTheLinearModelOnly) {
   const auto dir = test::freshDir("barge_simulate");
   const auto r = test::whirl("simulate " + kBarge + " --tmax 1 --out " + (dir / "sim").string());
