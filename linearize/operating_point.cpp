@@ -9,6 +9,7 @@
 #include "linearize/linearize.hpp"
 #include "linearize/unrestrained.hpp"
 #include "src/dynamics/mass_matrix.hpp"
+#include "src/dynamics/mooring_scale.hpp"
 #include "src/dynamics/residual.hpp"
 #include "src/model/error.hpp"
 
@@ -193,9 +194,11 @@ OperatingPoint solveOperatingPoint(const Model& m, const OperatingPoint& start, 
   }
   VecX es = solvedResidual();
   if (!e.allFinite()) throw ComputeError("operating point: the residual is not finite (NaN in the model or inputs)");
-  // Load scale: the residual at the undeflected start, or the gravity/centrifugal loads it holds.
+  // Load scale: the residual at the undeflected start, or the gravity/centrifugal loads it holds; moored,
+  // at least the line tensions, whose balance at a symmetric start leaves a residual of their round-off.
   double scale = opt.load_scale;
-  if (!(scale > 0)) scale = std::max(1.0, cold_scale >= 0 ? cold_scale : es.lpNorm<Eigen::Infinity>());
+  if (!(scale > 0))
+    scale = std::max({1.0, cold_scale >= 0 ? cold_scale : es.lpNorm<Eigen::Infinity>(), largestMooringTension(m, ws)});
   op.load_scale = scale;
   op.iterations = 0;
   const double target = opt.tolerance * scale;
