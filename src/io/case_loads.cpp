@@ -1,6 +1,7 @@
 // `inputs:`, `dofs:` settings and `loads:` of a case.
 #include <numbers>
 
+#include "src/dynamics/catenary.hpp"
 #include "src/io/case_reader.hpp"
 
 namespace whirl {
@@ -75,6 +76,38 @@ void bodyMatrices(const CaseNode& n, CaseBuild& build) {
   build.model().body_matrices.push_back(bm);
 }
 
+// A quasi-static catenary from a fairlead on a rigid body to an anchor on the ground, as a MAP++ line
+// (src/model/mooring.hpp); checked at the undisplaced body so that a line that cannot reach its anchor
+// names its place.
+void mooringLine(const CaseNode& n, CaseBuild& build) {
+  n.allowKeys({"type", "name", "body", "fairlead", "anchor", "length", "weight", "EA", "CB", "seabed"});
+  MooringLine ml;
+  const CaseNode body = n.at("body");
+  ml.body = build.builder.bodyIndex(body.text(), body.where());
+  ml.name = n.text("name", "mooring line " + std::to_string(build.model().mooring.size() + 1));
+  ml.fairlead = n.at("fairlead").vec3();
+  ml.anchor = n.at("anchor").vec3();
+  ml.length = n.number("length", 0);
+  ml.weight = n.number("weight", 0);
+  ml.EA = n.number("EA", 0);
+  ml.CB = n.number("CB", 0);
+  ml.seabed = n.boolean("seabed", false);
+  if (!(ml.length > 0)) n.at("length").fail("must be positive");
+  if (!(ml.weight > 0)) n.fail("weight: the weight in water per length [N/m] must be positive (a catenary)");
+  if (!(ml.EA > 0)) n.fail("EA: must be positive");
+  if (!(ml.CB >= 0)) n.at("CB").fail("must not be negative");
+  const Body& b = build.model().bodies[ml.body];
+  if (b.joint != JointType::Free || b.parent >= 0)
+    body.fail("body '" + body.text() + "' is not on a free joint to the ground: a fairlead's body needs one");
+  const Vec3 d = b.offset + b.rotation * ml.fairlead - ml.anchor;  // the undisplaced fairlead, ground
+  try {
+    catenaryTension<double>(ml, std::hypot(d(0), d(1)), d(2));
+  } catch (const ComputeError& e) {
+    n.fail(e.what());
+  }
+  build.model().mooring.push_back(ml);
+}
+
 }  // namespace
 
 void readInputs(const CaseNode& list, CaseBuild& build) {
@@ -117,7 +150,9 @@ void readLoads(const CaseNode& list, CaseBuild& build) {
     else if (type == "dof") dofLoad(n, build);
     else if (type == "spring") spring(n, build);
     else if (type == "body_matrices") bodyMatrices(n, build);
-    else n.at("type").fail("unknown load type '" + type + "' (allowed: point, dof, spring, body_matrices)");
+    else if (type == "mooring_line") mooringLine(n, build);
+    else
+      n.at("type").fail("unknown load type '" + type + "' (allowed: point, dof, spring, body_matrices, mooring_line)");
   }
 }
 

@@ -149,6 +149,25 @@ TEST_F(CaseErrors, UnitsAndJointsThatDoNotFit) {
   expect("{type: revolute, axis: [1, 0, 0],", "{type: revolute, axis: [0, 0, 0],", "the joint axis must not be zero");
 }
 
+// `type: mooring_line` (cases/oc3_hywind/mooring_only.yaml): its body, its numbers and a line that cannot
+// reach its anchor, each with the place in the case file.
+TEST_F(CaseErrors, MooringLines) {
+  const std::string yaml = R"(name: moored
+bodies:
+  - {name: platform, type: rigid, mass: 1.0e6, inertia: [1.0e9, 1.0e9, 1.0e9],
+     joint: {type: free, dofs: [surge, sway, heave, roll, pitch, yaw]}}
+loads:
+  - {type: mooring_line, body: platform, fairlead: [5, 0, -70], anchor: [850, 0, -320], length: 900,
+     weight: 700, EA: 4.0e8}
+)";
+  EXPECT_EQ(readCase(tmp.write("ok.yaml", yaml)).mooring.size(), 1u);
+  expectText(replaced(yaml, "length: 900", "length: 300"), 6, "loads[0]: ");
+  expectText(replaced(yaml, "weight: 700", "weight: -1"), 6,
+             "weight: the weight in water per length [N/m] must be positive");
+  expectText(replaced(yaml, "EA: 4.0e8}", "EA: 4.0e8, colour: red}"), 7, "loads[0].colour: unknown key");
+  expectText(replaced(yaml, "body: platform,", "body: hull,"), 6, "hull");
+}
+
 TEST_F(CaseErrors, CoreErrorsAreRethrownWithTheCaseFile) {
   // A parent loop is found by finalize(); two identical shapes by finalize()'s elastic mass check.
   const std::string loop = replaced(replaced(smallTurbineCase(), "    rotation: {y_deg: -90}\n",

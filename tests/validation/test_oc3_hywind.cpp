@@ -21,6 +21,7 @@
 
 #include "linearize/linearize.hpp"
 #include "modal/modes.hpp"
+#include "src/io/case_file.hpp"
 #include "src/turbine/elastodyn_model.hpp"
 #include "tests/support/reference.hpp"
 
@@ -66,6 +67,18 @@ TEST(Oc3Hywind, MooringStiffnessAtTheUndisplacedPlatform) {
   EXPECT_NEAR(K(0, 0), K(1, 1), 1e-6 * K(0, 0));
   EXPECT_NEAR(K(3, 3), K(4, 4), 1e-6 * K(3, 3));
   test::expectMatchesReference(kCase, {{"mooring K11 [N/m]", K(0, 0)}});
+}
+
+// The same lines written out in a YAML case (cases/oc3_hywind/mooring_only.yaml, `type: mooring_line`,
+// anchors and fairleads printed to 1e-7 of the MAP++ file's repeat): its surge stiffness at the solved
+// (symmetric, undisplaced) point is the deck model's K11 and the report's.
+TEST(Oc3Hywind, MooringInAYamlCaseIsTheDecksMooring) {
+  const Model yaml = readCase(std::string(WHIRL_SOURCE_DIR) + "/cases/oc3_hywind/mooring_only.yaml");
+  ASSERT_EQ(yaml.mooring.size(), 3u);
+  const LinearModel lin = test::linearizeAtEquilibrium(yaml);
+  const double k11 = lin.K(test::dofIndex(lin, "surge"), test::dofIndex(lin, "surge"));
+  EXPECT_NEAR(k11, mooringStiffness()(0, 0), 1e-6 * k11);
+  test::expectMatchesReference(kCase, {{"mooring K11 [N/m]", k11}});
 }
 
 TEST(Oc3Hywind, PlatformFrequenciesParked) {
