@@ -62,8 +62,6 @@ MapInput readMoorDyn(const std::filesystem::path& file) {
     if (t.empty()) continue;
     if (t[0].rfind("---", 0) == 0) {
       sec = sectionOf(s);
-      if (sec == Section::Refused)
-        throw r.fail("", "MoorDyn bodies and rods are not supported by whirl: only anchor-to-fairlead lines");
       header = sec == Section::Options || sec == Section::Outputs ? 0 : 2;
       continue;
     }
@@ -101,8 +99,9 @@ MapInput readMoorDyn(const std::filesystem::path& file) {
       }
       case Section::Options:
       case Section::Outputs: break;  // the dynamic solver's settings and output channels
+      case Section::Refused:         // a body or rod row (an empty section of them is fine)
+        throw r.fail("", "MoorDyn bodies and rods are not supported by whirl: only anchor-to-fairlead lines");
       case Section::None:
-      case Section::Refused:
         throw r.fail("",
                      "data outside a LINE TYPES, CONNECTION PROPERTIES / POINTS, LINE PROPERTIES / LINES, "
                      "SOLVER OPTIONS or OUTPUTS section");

@@ -99,8 +99,11 @@ TEST(MoorDynInput, RefusalsAndMalformedRowsNameTheLine) {
               HasSubstr("moordyn.dat:8: EA: 'x' is not a finite number"));
   EXPECT_THAT(errorOf([&] { io::readMoorDyn(edited(dir, "902.2      20        1", "-1      20        1")); }),
               HasSubstr("moordyn.dat:23: UnstrLen: must be positive"));
+  // A section of bodies is refused at its first row; an empty one (its two heading rows) is fine.
   EXPECT_THAT(errorOf([&] { io::readMoorDyn(edited(dir, "---------------------- SOLVER OPTIONS", "---- BODIES")); }),
-              HasSubstr("moordyn.dat:26: MoorDyn bodies and rods are not supported by whirl"));
+              HasSubstr("moordyn.dat:29: MoorDyn bodies and rods are not supported by whirl"));
+  const std::string empty_rods = "---- ROD TYPES\nName Diam\n(-) (m)\n---------------------- SOLVER OPTIONS";
+  EXPECT_EQ(io::readMoorDyn(edited(dir, "---------------------- SOLVER OPTIONS", empty_rods)).lines.size(), 3u);
   EXPECT_THAT(errorOf([&] { io::readMoorDyn(dir.path / "none.dat"); }), HasSubstr("none.dat: cannot open file"));
 }
 
