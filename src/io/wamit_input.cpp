@@ -78,14 +78,17 @@ WamitMatrices readWamit(const HydroDynInput& hd, double rho, double g) {
   const std::filesystem::path one = wamitFile(hd, ".1");
   bool any = false;
   for (const Row& r : numericRows(one, 4)) {
-    if (r.v[0] >= 0) continue;  // finite frequencies (PER > 0) and zero frequency (PER = 0)
+    // WAMIT writes the zero-frequency limit as PER < 0 (infinite period) and the infinite-frequency
+    // one as PER = 0 (zero period), as HydroDyn's WAMIT reader takes them; finite frequencies PER > 0.
+    if (r.v[0] != 0) continue;
     const int i = index1to6(one, r, r.v[1]), j = index1to6(one, r, r.v[2]);
     w.added_mass(i, j) = r.v[3] * rho * std::pow(L, 3 + rotational(i + 1, j + 1));
     any = true;
   }
   if (!any)
-    throw InputError(whirl::where(one.string(), 0, "", "no infinite-frequency added mass (rows with PER < 0): "
-                                                       "HydroDyn needs the infinite-frequency limit"));
+    throw InputError(whirl::where(one.string(), 0, "",
+                                  "no infinite-frequency added mass (rows with PER = 0): "
+                                  "HydroDyn needs the infinite-frequency limit"));
   return w;
 }
 

@@ -17,8 +17,9 @@ struct WamitMatrices {
 /// \throws InputError naming PotFile when there is none.
 std::filesystem::path wamitFile(const HydroDynInput& hd, const std::string& ext);
 
-/// Reads `<PotFile>.hst` and `<PotFile>.1` (rows "PER I J A [B]", the infinite frequency written as
-/// PER < 0 as WAMIT does) and redimensionalizes them with ρ, g and L = WAMITULEN (WAMIT's
+/// Reads `<PotFile>.hst` and `<PotFile>.1` (rows "PER I J A [B]"; the infinite-frequency added mass is
+/// the rows with PER = 0, zero period, as WAMIT writes it and HydroDyn reads it; PER < 0 is the zero
+/// frequency) and redimensionalizes them with ρ, g and L = WAMITULEN (WAMIT's
 /// conventions: C_ij ρ g L^k with k = 2, 3, 4 for 0, 1, 2 rotational indices; A_ij ρ L^k with k = 3,
 /// 4, 5). A file missing, a row that is not numbers, an index outside 1..6, or no infinite-frequency
 /// row → InputError "file:line: reason". A name that differs from the files only by case is accepted

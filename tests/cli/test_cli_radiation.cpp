@@ -14,6 +14,7 @@
 namespace whirl {
 namespace {
 
+using ::testing::ContainsRegex;
 using ::testing::HasSubstr;
 using ::testing::Not;
 
@@ -53,7 +54,8 @@ TEST(CliRadiation, CampbellDrawsTheRadiationRootsOnlyWhenAskedTo) {
   const std::string cmd = "campbell cases/iti_barge/Test22.fst --set CompAero=0 --rpm 0:6:12 --no-plot --out ";
   const auto r = test::whirl(cmd + (dir / "a").string());
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_THAT(r.err, HasSubstr("whirl: note: 18 lines carried by first-order states (e.g. 'HydroDyn radiation"));
+  EXPECT_THAT(r.err,
+              ContainsRegex("whirl: note: [0-9]+ lines carried by first-order states \\(e.g. .HydroDyn radiation"));
   EXPECT_THAT(test::slurp(dir / "a" / "campbell.csv"), HasSubstr(",HydroDyn radiation surge,"));
   EXPECT_THAT(test::slurp(dir / "a" / "campbell.gp"), HasSubstr("title 'platform heave'"));
   EXPECT_THAT(test::slurp(dir / "a" / "campbell.gp"), Not(HasSubstr("title 'HydroDyn radiation")));

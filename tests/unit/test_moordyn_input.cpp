@@ -22,14 +22,7 @@ const std::string kDir = std::string(WHIRL_SOURCE_DIR) + "/cases/oc3_hywind/5MW_
 const std::string kMoorDyn = kDir + "NRELOffshrBsline5MW_OC3Hywind_MoorDyn.dat";
 const std::string kMap = kDir + "NRELOffshrBsline5MW_OC3Hywind_MAP.dat";
 
-std::string errorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
-}
+using test::errorOf;
 
 // The OC3-Hywind file with `from` replaced by `to` (once), written into `dir`.
 std::string edited(const test::TempDir& dir, const std::string& from, const std::string& to) {

@@ -32,14 +32,7 @@ io::HydroDynInput hydroWithRdtn0() {
   return io::readHydroDyn(kHydro, &set);
 }
 
-std::string errorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
-}
+using test::errorOf;
 
 TEST(HydroDynInput, Oc3HywindValues) {
   const io::HydroDynInput h = hydroWithRdtn0();
@@ -79,10 +72,11 @@ TEST(HydroDynInput, Oc3HywindWamitMatrices) {
   // spar.hst row "3 3 3.312247E+01", L = 1: C33 = 33.12247 ρ g.
   EXPECT_DOUBLE_EQ(w.hydrostatic(2, 2), 3.312247e1 * rho * g);
   EXPECT_DOUBLE_EQ(w.hydrostatic(4, 4), -4.973414e5 * rho * g);
-  // spar.1 rows with PER = −1 (infinite frequency): A11 = 7787.967 ρ, A15 = −474568.4 ρ.
-  EXPECT_DOUBLE_EQ(w.added_mass(0, 0), 7.787967e3 * rho);
-  EXPECT_DOUBLE_EQ(w.added_mass(0, 4), -4.745684e5 * rho);
-  EXPECT_DOUBLE_EQ(w.added_mass(4, 4), 3.709237e7 * rho);
+  // spar.1 rows with PER = 0 (zero period: infinite frequency): A11 = 7569.865 ρ, A15 = −471356.7 ρ; not
+  // the PER = −1 rows (infinite period: zero frequency, A11 = 7787.967 ρ).
+  EXPECT_DOUBLE_EQ(w.added_mass(0, 0), 7.569865e3 * rho);
+  EXPECT_DOUBLE_EQ(w.added_mass(0, 4), -4.713567e5 * rho);
+  EXPECT_DOUBLE_EQ(w.added_mass(4, 4), 3.701091e7 * rho);
 }
 
 TEST(HydroDynInput, MissingWamitFileNamesPotFile) {

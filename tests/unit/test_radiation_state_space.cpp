@@ -25,14 +25,7 @@ io::HydroDynInput withPotFile(const std::filesystem::path& root) {
   return hd;
 }
 
-std::string errorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
-}
+using test::errorOf;
 
 std::vector<std::string> lines() {
   std::istringstream in(test::slurp(kSs));

@@ -14,6 +14,7 @@
 #include "src/io/openfast_overrides.hpp"
 #include "src/io/subdyn_input.hpp"
 #include "src/model/error.hpp"
+#include "tests/unit/test_util.hpp"
 
 namespace whirl {
 namespace {
@@ -26,14 +27,7 @@ const std::string kMonopile = std::string(WHIRL_SOURCE_DIR) +
 const std::string kV101 = std::string(WHIRL_SOURCE_DIR) + "/tests/data/subdyn/cantilever_v101.dat";
 const std::string kV4 = std::string(WHIRL_SOURCE_DIR) + "/tests/data/subdyn/cantilever_v4.dat";
 
-std::string errorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
-}
+using test::errorOf;
 
 std::vector<std::string> fileLines(const std::string& path) {
   std::ifstream in(path);

@@ -1,11 +1,14 @@
 #pragma once
-// Helpers shared by the unit tests: a temporary folder and whole-file reads.
+// Helpers shared by the unit tests: a temporary folder, whole-file reads, the message of an input error.
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <string>
+
+#include "src/model/error.hpp"
 
 namespace whirl::test {
 
@@ -36,6 +39,27 @@ inline std::string slurp(const std::string& path) {
   std::stringstream ss;
   ss << in.rdbuf();
   return ss.str();
+}
+
+/// `source` with `from` replaced by `to` (once; the test fails when `from` is absent), written as `name`
+/// into `dir`; returns its path.
+inline std::string editedCopy(const TempDir& dir, const std::string& source, const std::string& name,
+                              const std::string& from, const std::string& to) {
+  std::string s = slurp(source);
+  const std::size_t at = s.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) s.replace(at, from.size(), to);
+  return dir.write(name, s);
+}
+
+/// The message of the InputError `f` throws; "no error" when it throws none.
+inline std::string errorOf(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
 }
 
 }  // namespace whirl::test
