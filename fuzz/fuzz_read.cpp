@@ -19,6 +19,7 @@
 //  13 fuzz_read_wamit_ss    readRadiationStateSpace (HydroDyn's state-space radiation, WAMIT `.ss`)
 //  14 fuzz_read_map         readMap, then mapMooringLines (the catenary lines it describes)
 //  15 fuzz_read_moordyn     readMoorDyn, then mapMooringLines
+//  16 fuzz_read_hydrodyn    readHydroDyn (its member tables too), then ballastOf (the filled members' fluid)
 #include "fuzz/fuzz_support.hpp"
 #include "src/io/aero_deck14.hpp"
 #include "src/io/aerodyn_blade_input.hpp"
@@ -30,11 +31,13 @@
 #include "src/io/elastodyn_input.hpp"
 #include "src/io/elastodyn_tower.hpp"
 #include "src/io/fst_input.hpp"
+#include "src/io/hydrodyn_input.hpp"
 #include "src/io/inflowwind_input.hpp"
 #include "src/io/map_input.hpp"
 #include "src/io/moordyn_input.hpp"
 #include "src/io/servodyn_input.hpp"
 #include "src/io/wamit_state_space.hpp"
+#include "src/turbine/hydrodyn_ballast.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
 #if WHIRL_FUZZ_READER == 13
@@ -87,8 +90,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     (void)io::mapMooringLines(io::readMap(path), 0, 320, 1025, 9.80665);
 #elif WHIRL_FUZZ_READER == 15
     (void)io::mapMooringLines(io::readMoorDyn(path), 0, 320, 1025, 9.80665);
+#elif WHIRL_FUZZ_READER == 16
+    const io::HydroDynInput hd = io::readHydroDyn(path);
+    (void)whirl::elastodyn::ballastOf(hd.geometry, hd.WtrDens.value_or(1025), 9.80665, whirl::Vec3::Zero());
 #else
-#error "WHIRL_FUZZ_READER must be 1 to 15"
+#error "WHIRL_FUZZ_READER must be 1 to 16"
 #endif
   });
   return 0;

@@ -1,24 +1,16 @@
 #include "src/io/hydrodyn_input.hpp"
 
 #include <cmath>
-#include <fstream>
 #include <sstream>
 
 #include "src/io/elastodyn_common.hpp"
+#include "src/io/openfast_lines.hpp"
 #include "src/io/openfast_overrides.hpp"
 #include "src/io/refusals.hpp"
 #include "src/model/error.hpp"
 
 namespace whirl::io {
 namespace {
-
-std::vector<std::string> fileLines(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in) throw InputError(whirl::where(file.string(), 0, "", "cannot open file"));
-  std::vector<std::string> lines;
-  for (std::string s; std::getline(in, s);) lines.push_back(s);
-  return lines;
-}
 
 // The first n numbers of a line; nullopt when it has fewer or one of them is not a finite number.
 std::optional<std::vector<double>> leadingNumbers(const std::string& line, int n) {
@@ -34,7 +26,7 @@ std::optional<std::vector<double>> leadingNumbers(const std::string& line, int n
 }
 
 // A 6×6 matrix written as the key's line (row 1, value before the key) and the 5 lines below it.
-Mat6 matrixAt(const OpenFastFile& f, const std::vector<std::string>& lines, const char* key) {
+Mat6 matrixAt(const OpenFastFile& f, const OpenFastLines& lines, const char* key) {
   const OpenFastEntry* e = f.find(key);
   if (!e) throw InputError(f.where(key, "key not found in this file"));
   Mat6 M;
@@ -43,8 +35,7 @@ Mat6 matrixAt(const OpenFastFile& f, const std::vector<std::string>& lines, cons
   for (int c = 0; c < 6; ++c) M(0, c) = first[c];
   for (int r = 1; r < 6; ++r) {
     const int line = e->line + r;  // 1-based
-    const std::optional<std::vector<double>> row =
-        line <= static_cast<int>(lines.size()) ? leadingNumbers(lines[line - 1], 6) : std::nullopt;
+    const std::optional<std::vector<double>> row = leadingNumbers(lines.line(line), 6);
     if (!row)
       throw InputError(f.where(key, "row " + std::to_string(r + 1) + " of the 6×6 matrix (line " +
                                         std::to_string(line) + ") is not 6 numbers"));
@@ -53,26 +44,16 @@ Mat6 matrixAt(const OpenFastFile& f, const std::vector<std::string>& lines, cons
   return M;
 }
 
-// PropPot of each member row below NMembers (header and unit rows first): false for a strip-theory member.
-void checkMembers(const OpenFastFile& f, const std::vector<std::string>& lines, Refusals& r) {
-  const std::optional<int> n = f.findInt("NMembers");
-  if (!n || *n <= 0) return;
-  const int first = f.find("NMembers")->line + 3;  // 1-based line of member 1
-  for (int k = 0; k < *n; ++k) {
-    const int line = first + k;
-    if (line > static_cast<int>(lines.size())) throw InputError(f.where("NMembers", "fewer member rows than NMembers"));
-    std::istringstream ss(lines[line - 1]);
-    std::vector<std::string> tok;
-    for (std::string t; ss >> t && tok.size() < 8;) tok.push_back(t);
-    const std::string prop = tok.size() == 8 ? toLower(tok[7]) : "";
-    const bool pot = prop == "true" || prop == "t" || prop == ".true.";
-    if (!pot) {
+// A strip-theory member (PropPot = False): its buoyancy and added mass are not modelled yet.
+void checkMembers(const HydroDynMembers& m, Refusals& r) {
+  for (const HydroDynMember& mb : m.members)
+    if (!mb.PropPot) {
       r.addIf(true, "NMembers",
-              "member on line " + std::to_string(line) + " has PropPot = " + (tok.size() == 8 ? tok[7] : "?") +
-                  ": strip-theory buoyancy and added mass are not modelled (only potential-flow members)");
+              "member " + std::to_string(mb.id) + " on line " + std::to_string(mb.line) +
+                  " has PropPot = False: strip-theory buoyancy and added mass are not modelled (only potential-flow "
+                  "members)");
       return;
     }
-  }
 }
 
 }  // namespace
@@ -82,7 +63,8 @@ HydroDynInput readHydroDyn(const std::filesystem::path& file, OverrideSet* overr
   h.source = OpenFastFile::read(file);
   if (overrides) overrides->applyTo(h.source);
   const OpenFastFile& f = h.source;
-  const std::vector<std::string> lines = fileLines(file);
+  const OpenFastLines lines = OpenFastLines::read(file);
+  h.geometry = readHydroDynMembers(f, lines);
   h.WtrDens = f.findDouble("WtrDens");
   h.WtrDpth = f.findDouble("WtrDpth");
   if (h.WtrDens) requirePositive(f, "WtrDens", *h.WtrDens);
@@ -127,9 +109,8 @@ HydroDynInput readHydroDyn(const std::filesystem::path& file, OverrideSet* overr
       r.addIf(v != "true" && v != "t" && v != "default" && v != "\"default\"", key,
               "switching a direction's hydrodynamic loads off is not modelled", "True or DEFAULT");
     }
-  r.addIf(f.findInt("NFillGroups").value_or(0) != 0, "NFillGroups", "filled (ballasted) members are not modelled");
   r.addIf(f.findInt("NMGDepths").value_or(0) != 0, "NMGDepths", "marine growth is not modelled");
-  checkMembers(f, lines, r);
+  checkMembers(h.geometry, r);
   throwIfAny(r.take());
 
   const std::vector<double> f0 = f.getDoubles("AddF0");

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "src/io/hydrodyn_members.hpp"
 #include "src/io/openfast_input.hpp"
 #include "src/model/types.hpp"
 
@@ -38,13 +39,14 @@ struct HydroDynInput {
   Mat6 AddCLin = Mat6::Zero();        ///< additional linear stiffness (N/m, N/rad, N m/m, N m/rad)
   Mat6 AddBLin = Mat6::Zero();        ///< additional linear damping (N/(m/s), …)
   Mat6 AddBQuad = Mat6::Zero();       ///< additional quadratic drag (N/(m/s)², …)
+  HydroDynMembers geometry;           ///< member joints, properties, members and fill groups
   std::vector<std::string> notes;     ///< inputs read and ignored for linearization, one line each
 };
 
 /// Reads a HydroDyn file. Refuses (InputError "file:line: key: value not supported by whirl (reason)")
 /// what would change the linear model and is not modelled: PotMod = 2 (FIT), RdtnMod = 1 (convolution,
 /// which OpenFAST refuses for linearization too), NBody > 1, strip-theory members (PropPot = False: their buoyancy and
-/// added mass), filled members, marine growth, and a v2 force flag (PtfmSgF … PtfmYF) set to False. A 6×6 matrix whose
+/// added mass), marine growth, and a v2 force flag (PtfmSgF … PtfmYF) set to False. A 6×6 matrix whose
 /// rows are missing or not numbers names the key's line.
 HydroDynInput readHydroDyn(const std::filesystem::path& file, OverrideSet* overrides = nullptr);
 

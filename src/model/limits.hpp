@@ -58,6 +58,10 @@ inline constexpr int kMaxSweepPoints = 100000;
 inline constexpr int kMaxAzimuths = 3600;
 /// HydroDyn's state-space radiation (`<PotFile>.ss`): states N (A is N × N, dense).
 inline constexpr int kMaxRadiationStates = 1000;
+/// HydroDyn's member tables: `NJoints`, `NPropSets`, `NMembers` (and `NFillGroups`, which lists members).
+inline constexpr int kMaxHydroDynJoints = 10000;
+inline constexpr int kMaxHydroDynPropSets = 10000;
+inline constexpr int kMaxHydroDynMembers = 10000;
 // SubDyn substructures: the FE model has NJoints + (NDiv − 1) NMembers nodes; its elements are bounded
 // as a `fem_beam`'s (kMaxFemElements), since the Craig–Bampton fixed-interface eigenproblem is dense.
 inline constexpr int kMaxSubDynJoints = 2000;

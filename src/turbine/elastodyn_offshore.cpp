@@ -10,6 +10,7 @@
 #include "src/io/wamit_state_space.hpp"
 #include "src/model/error.hpp"
 #include "src/turbine/elastodyn_parts.hpp"
+#include "src/turbine/hydrodyn_ballast.hpp"
 
 namespace whirl::elastodyn {
 namespace {
@@ -39,7 +40,8 @@ void addRadiationStates(Builder& b, const PlatformParts& p, const io::HydroDynIn
 
 // HydroDyn with a WAMIT body [Jonkman2007]: buoyancy ρ g V0 at the centre of buoyancy, the
 // hydrostatic restoring of the `.hst` file (about the platform reference point, the WAMIT origin),
-// the infinite-frequency added mass of the `.1` file, AddF0, AddCLin, AddBLin. AddBQuad's force
+// the infinite-frequency added mass of the `.1` file, AddF0, AddCLin, AddBLin, and the fluid of
+// filled members (mass and constant weight, src/turbine/hydrodyn_ballast.hpp). AddBQuad's force
 // −B |v| v has zero derivative at a static point (v = 0): nothing in the linear model.
 void addHydroDyn(Builder& b, const PlatformParts& p, const io::OpenFastTurbine& t) {
   const io::HydroDynInput& hd = *t.hydrodyn;
@@ -70,6 +72,11 @@ void addHydroDyn(Builder& b, const PlatformParts& p, const io::OpenFastTurbine& 
     const double B = rho * g * hd.PtfmVol0;
     f0 += (Eigen::Matrix<double, 6, 1>() << 0, 0, B, B * hd.PtfmCOByt, -B * hd.PtfmCOBxt, 0).finished();
     if (hd.RdtnMod == 2) addRadiationStates(b, p, hd);
+  }
+  if (!hd.geometry.fills.empty()) {
+    const Ballast ballast = ballastOf(hd.geometry, rho, g, p.reference);
+    bm.A += ballast.M;
+    f0 += ballast.weight;
   }
   b.model().body_matrices.push_back(bm);
   for (int k = 0; k < 6; ++k)

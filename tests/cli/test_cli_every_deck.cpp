@@ -36,7 +36,7 @@ constexpr const char* kBeamDyn = "CompElast: 2 not supported by whirl (BeamDyn b
 constexpr const char* kFastV7 = "this is a FAST v7 primary input file";
 // Offshore (issue 17): HydroDyn's strip-theory members on a SubDyn substructure, and the radiation
 // convolution, which has no linearization (OpenFAST refuses it too; --set RdtnMod=0 runs Test23–25's
-// platforms but Test23's FEAMooring and Test25's filled members).
+// platforms but Test23's FEAMooring).
 constexpr const char* kHydroOnSubDyn = "CompHydro: 1 not supported by whirl (HydroDyn on a SubDyn substructure";
 constexpr const char* kConvolution = "RdtnMod: 1 not supported by whirl (the radiation convolution";
 
