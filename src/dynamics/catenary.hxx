@@ -49,12 +49,27 @@ void catenaryProfile(const MooringLine& ln, const S& H, const S& V, S& x, S& z) 
   z = H / w * (sqrt(1.0 + vh * vh) - 1.0) + V * V / (2.0 * EA * w);
 }
 
+/// The taut-line residual (q X(q² s, V) − 1, z(q² s, V) − h) of catenary.hpp's tautLineTension.
+template <class S>
+void tautLineResidual(const MooringLine& ln, const S& q, const S& V, const S& s, const S& h, S& r1, S& r2) {
+  using std::log;
+  using std::sqrt;
+  const double w = ln.weight, L = ln.length, EA = ln.EA;
+  const S H2 = q * q * s, Va = V - w * L;
+  const S top = sqrt(V * V + H2), bottom = sqrt(Va * Va + H2);
+  const S X = log((V + top) / (Va + bottom)) / w + L / EA;
+  r1 = q * X - 1.0;
+  r2 = (top - bottom) / w + (V * L - 0.5 * w * L * L) / EA - h;
+}
+
 /// Newton on (H, V) in double, Jacobian by AD of the profile; returns the converged tensions and J.
 struct CatenaryNewton {
   double H = 0, V = 0;
   Eigen::Matrix2d J;
 };
 CatenaryNewton solveCatenaryNewton(const MooringLine& ln, double l, double h);
+/// Newton on (q, V) in double for the taut line (returned as H = q, V) and the Jacobian.
+CatenaryNewton solveTautLineNewton(const MooringLine& ln, double s, double h);
 
 }  // namespace whirl::detail
 
@@ -74,6 +89,36 @@ CatenaryTension<T> catenaryTension(const MooringLine& ln, const T& l, const T& h
     const T rx = l - x, rz = h - z;
     return {T(s.H) + Ji(0, 0) * rx + Ji(0, 1) * rz, T(s.V) + Ji(1, 0) * rx + Ji(1, 1) * rz};
   }
+}
+
+template <class T>
+CatenaryTension<T> tautLineTension(const MooringLine& ln, const T& s, const T& h) {
+  const detail::CatenaryNewton n = detail::solveTautLineNewton(ln, valueOf(s), valueOf(h));
+  if constexpr (std::is_same_v<T, double>) {
+    return {n.H, n.V};
+  } else {
+    // One Newton step in T from the converged point: the implicit-function derivative (as above).
+    T r1, r2;
+    detail::tautLineResidual<T>(ln, T(n.H), T(n.V), s, h, r1, r2);
+    const Eigen::Matrix2d Ji = n.J.inverse();
+    return {T(n.H) - Ji(0, 0) * r1 - Ji(0, 1) * r2, T(n.V) - Ji(1, 0) * r1 - Ji(1, 1) * r2};
+  }
+}
+
+template <class T>
+Vec3T<T> mooringFairleadForce(const MooringLine& ln, const Vec3T<T>& d) {
+  using std::sqrt;
+  const T s = d(0) * d(0) + d(1) * d(1);
+  Vec3T<T> F;
+  if (valueOf(s) < 1e-6 * ln.length * ln.length) {
+    const CatenaryTension<T> t = tautLineTension<T>(ln, s, d(2));  // t.H is q = H / l here
+    F << -t.H * d(0), -t.H * d(1), -t.V;
+  } else {
+    const T l = sqrt(s);
+    const CatenaryTension<T> t = catenaryTension<T>(ln, l, d(2));
+    F << -t.H * d(0) / l, -t.H * d(1) / l, -t.V;
+  }
+  return F;
 }
 
 }  // namespace whirl

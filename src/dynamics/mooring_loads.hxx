@@ -5,8 +5,6 @@
 /// force at the fairlead. Nonlinear in the body pose, so the operating point carries the mean offset
 /// under thrust and AD through the catenary solution gives the mooring stiffness with its geometric
 /// (pretension) part.
-#include <cmath>
-
 #include "src/dynamics/catenary.hxx"
 #include "src/dynamics/workspace.hpp"
 
@@ -14,15 +12,11 @@ namespace whirl::detail {
 
 template <class T>
 void addMooringLoads(const Model& m, const Workspace<T>& ws, VecXT<T>& e) {
-  using std::sqrt;
   for (const MooringLine& ln : m.mooring) {
     const FrameState<T>& f = ws.frames[ln.body];
     const Vec3T<T> s = f.R * ln.fairlead.cast<T>();  // body origin → fairlead, ground frame
     const Vec3T<T> d = f.r + s - ln.anchor.cast<T>();  // anchor → fairlead
-    const T l = sqrt(d(0) * d(0) + d(1) * d(1));
-    const CatenaryTension<T> t = catenaryTension<T>(ln, l, d(2));
-    Vec3T<T> F;
-    F << -t.H * d(0) / l, -t.H * d(1) / l, -t.V;
+    const Vec3T<T> F = mooringFairleadForce<T>(ln, d);
     const Vec3T<T> M = s.cross(F);
     for (int sd : m.support[ln.body]) e(sd) += f.Jv.col(sd).dot(F) + f.Jw.col(sd).dot(M);
   }

@@ -101,7 +101,7 @@ void mooringLine(const CaseNode& n, CaseBuild& build) {
     body.fail("body '" + body.text() + "' is not on a free joint to the ground: a fairlead's body needs one");
   const Vec3 d = b.offset + b.rotation * ml.fairlead - ml.anchor;  // the undisplaced fairlead, ground
   try {
-    catenaryTension<double>(ml, std::hypot(d(0), d(1)), d(2));
+    mooringFairleadForce<double>(ml, d);
   } catch (const ComputeError& e) {
     n.fail(e.what());
   }

@@ -132,10 +132,6 @@ std::vector<MooringLine> mapMooringLines(const MapInput& map, int body, double d
       throw InputError(whirl::where(file, a.line, "Z", "anchor below the seabed (depth " + numberText(depth) + " m)"));
     if (!(ml.anchor(2) < ml.fairlead(2)))
       throw InputError(whirl::where(file, l.line, "NodeAnch", "the anchor must be below its fairlead"));
-    if (std::hypot(ml.fairlead(0) - ml.anchor(0), ml.fairlead(1) - ml.anchor(1)) <= 0)
-      throw InputError(whirl::where(file, l.line, "NodeAnch",
-                                    "the anchor is straight below its fairlead: vertical lines (tension-leg "
-                                    "tendons) are not supported by whirl, the catenary equations need a horizontal span"));
     base.push_back(ml);
   }
   // `repeat`: the whole set again, turned about the vertical by each angle.

@@ -49,8 +49,8 @@ MapInput readMap(const std::filesystem::path& file);
 /// The mooring lines of `map` on body `body` (fairleads in its frame, whose origin is the platform
 /// reference point), for water depth `depth` [m], density `rho` [kg/m³] and gravity `g` [m/s²]: the
 /// weight in water w = (MassDenInAir − ρ π Diam²/4) g. InputError when a line floats (w ≤ 0), its
-/// anchor is not below its fairlead, straight below it (a vertical tendon: no catenary), or below the
-/// seabed.
+/// anchor is not below its fairlead, or below the seabed. An anchor straight below its fairlead (a
+/// tension-leg tendon) is a line like the others (src/dynamics/catenary.hpp: the taut-line form).
 std::vector<MooringLine> mapMooringLines(const MapInput& map, int body, double depth, double rho, double g);
 
 }  // namespace whirl::io

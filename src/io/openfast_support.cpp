@@ -92,7 +92,9 @@ void requireSupported(const OpenFastTurbine& turbine) {
     for (std::string& s : r.take()) issues.push_back(std::move(s));
   } else if (hasPlatformDofs(turbine.elastodyn)) {
     Refusals r(fst.source);
-    r.addIf(fst.CompMooring == 2 || fst.CompMooring > 3, "CompMooring", "only MAP++ and MoorDyn mooring files are read",
+    r.addIf(fst.CompMooring == 2 || fst.CompMooring > 3, "CompMooring",
+            "only MAP++ and MoorDyn mooring files are read: a MAP++ or MoorDyn file of the same lines runs with "
+            "--set CompMooring=1 (or 3) --set MooringFile=FILE",
             "CompMooring = 0, 1 (MAP++) or 3 (MoorDyn)");
     r.addIf(fst.CompHydro > 1, "CompHydro", "unknown hydrodynamics module", "CompHydro = 0 or 1 (HydroDyn)");
     for (std::string& s : r.take()) issues.push_back(std::move(s));

@@ -92,7 +92,7 @@ void addMooring(Builder& b, const PlatformParts& p, const io::OpenFastTurbine& t
   for (const MooringLine& ln : lines) {
     const Vec3 d = p.reference + ln.fairlead - ln.anchor;
     try {
-      catenaryTension<double>(ln, std::hypot(d(0), d(1)), d(2));
+      mooringFairleadForce<double>(ln, d);
     } catch (const ComputeError& e) {
       throw InputError(e.what());
     }
