@@ -136,6 +136,7 @@ void massMatrix(const Model& m, Workspace<double>& ws, const VecX& q, MatX& M) {
       }
     }
     M.block(e0, e0, ne, ne) += Mb.block(6, 6, ne, ne);
+    if (b.elastic.A.size() > 0) M.block(e0, e0, ne, ne) += b.elastic.A;
   }
   for (const BodyMatrices& bm : m.body_matrices) {
     const int d0 = m.bodies[bm.body].joint_dof;

@@ -164,6 +164,8 @@ bool residual(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T
       for (int j = 0; j < ne; ++j) {
         T s = H[j];
         for (int k = 0; k < ne; ++k) s -= b.elastic.K(j, k) * q(e0 + k) + b.elastic.D(j, k) * qd(e0 + k);
+        if (b.elastic.A.size() > 0)
+          for (int k = 0; k < ne; ++k) s -= b.elastic.A(j, k) * qdd(e0 + k);
         e(e0 + j) += s;
       }
     }

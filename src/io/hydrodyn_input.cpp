@@ -44,18 +44,6 @@ Mat6 matrixAt(const OpenFastFile& f, const OpenFastLines& lines, const char* key
   return M;
 }
 
-// A strip-theory member (PropPot = False): its buoyancy and added mass are not modelled yet.
-void checkMembers(const HydroDynMembers& m, Refusals& r) {
-  for (const HydroDynMember& mb : m.members)
-    if (!mb.PropPot) {
-      r.addIf(true, "NMembers",
-              "member " + std::to_string(mb.id) + " on line " + std::to_string(mb.line) +
-                  " has PropPot = False: strip-theory buoyancy and added mass are not modelled (only potential-flow "
-                  "members)");
-      return;
-    }
-}
-
 }  // namespace
 
 HydroDynInput readHydroDyn(const std::filesystem::path& file, OverrideSet* overrides) {
@@ -110,7 +98,6 @@ HydroDynInput readHydroDyn(const std::filesystem::path& file, OverrideSet* overr
               "switching a direction's hydrodynamic loads off is not modelled", "True or DEFAULT");
     }
   r.addIf(f.findInt("NMGDepths").value_or(0) != 0, "NMGDepths", "marine growth is not modelled");
-  checkMembers(h.geometry, r);
   throwIfAny(r.take());
 
   const std::vector<double> f0 = f.getDoubles("AddF0");

@@ -107,10 +107,13 @@ void readJoints(HydroDynMembers& m, const TableReader& r) {
   if (n == 0) return;
   const int id = r.column(t, "NJoints", "JointID"), x = r.column(t, "NJoints", "Jointxi"),
             y = r.column(t, "NJoints", "Jointyi"), z = r.column(t, "NJoints", "Jointzi");
+  int ax = -1;
+  for (std::size_t c = 0; c < t.columns.size(); ++c)
+    if (t.columns[c] == "jointaxid") ax = static_cast<int>(c);
   for (int k = 0; k < n; ++k)
     m.joints.push_back({r.integer(t, k, id, "JointID"),
                         Vec3(r.number(t, k, x, "Jointxi"), r.number(t, k, y, "Jointyi"), r.number(t, k, z, "Jointzi")),
-                        t.lines[k]});
+                        t.lines[k], ax >= 0 ? r.integer(t, k, ax, "JointAxID") : 0});
   checkUniqueIds(r, m.joints, "JointID");
 }
 
@@ -138,7 +141,8 @@ void readMembers(HydroDynMembers& m, const TableReader& r) {
   if (n == 0) return;
   const int id = r.column(t, "NMembers", "MemberID"), j1 = r.column(t, "NMembers", "MJointID1"),
             j2 = r.column(t, "NMembers", "MJointID2"), p1 = r.column(t, "NMembers", "MPropSetID1"),
-            p2 = r.column(t, "NMembers", "MPropSetID2"), pot = r.column(t, "NMembers", "PropPot");
+            p2 = r.column(t, "NMembers", "MPropSetID2"), pot = r.column(t, "NMembers", "PropPot"),
+            mod = r.column(t, "NMembers", "MCoefMod");
   int geom = -1;  // MSecGeom (v4.1+): 1 circular, 2 rectangular
   for (std::size_t c = 0; c < t.columns.size(); ++c)
     if (t.columns[c] == "msecgeom") geom = static_cast<int>(c);
@@ -149,7 +153,10 @@ void readMembers(HydroDynMembers& m, const TableReader& r) {
                       r.integer(t, k, p1, "MPropSetID1"),
                       r.integer(t, k, p2, "MPropSetID2"),
                       r.flag(t, k, pot, "PropPot"),
-                      t.lines[k]};
+                      t.lines[k],
+                      r.integer(t, k, mod, "MCoefMod")};
+    if (mb.MCoefMod < 1 || mb.MCoefMod > 3)
+      throw InputError(r.where(mb.line, "MCoefMod", "must be 1 (simple), 2 (depth-based) or 3 (member-based)"));
     if (geom >= 0 && r.integer(t, k, geom, "MSecGeom") != 1)
       throw InputError(
           r.where(mb.line, "MSecGeom", "rectangular members are not modelled by whirl (only 1, circular)"));
@@ -209,6 +216,41 @@ void readFills(HydroDynMembers& m, const TableReader& r) {
   }
 }
 
+void readCoefficients(HydroDynMembers& m, const OpenFastFile& f, const TableReader& r) {
+  const int na = r.count("NAxCoef", limits::kMaxHydroDynPropSets);
+  const Table a = r.rows("NAxCoef", na);
+  if (na > 0) {
+    const int id = r.column(a, "NAxCoef", "AxCoefID"), ca = r.column(a, "NAxCoef", "AxCa");
+    for (int k = 0; k < na; ++k)
+      m.axial.push_back({r.integer(a, k, id, "AxCoefID"), r.number(a, k, ca, "AxCa"), a.lines[k]});
+    checkUniqueIds(r, m.axial, "AxCoefID");
+  }
+  const int nm = r.count("NCoefMembers", limits::kMaxHydroDynMembers);
+  const Table c = r.rows("NCoefMembers", nm);
+  if (nm > 0) {
+    const int id = r.column(c, "NCoefMembers", "MemberID"), c1 = r.column(c, "NCoefMembers", "MemberCa1"),
+              c2 = r.column(c, "NCoefMembers", "MemberCa2"), a1 = r.column(c, "NCoefMembers", "MemberAxCa1"),
+              a2 = r.column(c, "NCoefMembers", "MemberAxCa2");
+    for (int k = 0; k < nm; ++k)
+      m.member_coefs.push_back({r.integer(c, k, id, "MemberID"), r.number(c, k, c1, "MemberCa1"),
+                                r.number(c, k, c2, "MemberCa2"), r.number(c, k, a1, "MemberAxCa1"),
+                                r.number(c, k, a2, "MemberAxCa2"), c.lines[k]});
+    checkUniqueIds(r, m.member_coefs, "MemberID");
+  }
+  // The simple table has no count: one row under its column names and units.
+  if (const OpenFastTable* t = f.findTable("SimplCa"); t && !t->rows.empty()) {
+    auto value = [&](const char* name) -> std::optional<double> {
+      const int col = t->columnIndex(name);
+      if (col < 0 || col >= static_cast<int>(t->rows[0].size())) return std::nullopt;
+      const double v = t->rows[0][col];
+      if (!std::isfinite(v)) throw InputError(r.where(t->row_lines[0], name, "not a finite number"));
+      return v;
+    };
+    m.SimplCa = value("SimplCa");
+    m.SimplAxCa = value("SimplAxCa");
+  }
+}
+
 template <class Row>
 const Row* byId(const std::vector<Row>& rows, int id) {
   for (const Row& x : rows)
@@ -221,6 +263,26 @@ const Row* byId(const std::vector<Row>& rows, int id) {
 const HydroDynJoint* HydroDynMembers::joint(int id) const { return byId(joints, id); }
 const HydroDynPropSet* HydroDynMembers::prop(int id) const { return byId(props, id); }
 const HydroDynMember* HydroDynMembers::member(int id) const { return byId(members, id); }
+const HydroDynAxialCoef* HydroDynMembers::axialCoef(int id) const { return byId(axial, id); }
+const HydroDynMemberCoef* HydroDynMembers::memberCoef(int id) const { return byId(member_coefs, id); }
+
+HydroDynMemberCoef HydroDynMembers::memberCoefs(const HydroDynMember& mb, const OpenFastFile& f) const {
+  const std::string file = f.path().string();
+  if (mb.MCoefMod == 2)
+    throw InputError(whirl::where(file, mb.line, "MCoefMod",
+                                  "2 not supported by whirl (depth-based coefficients are not read; 1 or 3)"));
+  if (mb.MCoefMod == 3) {
+    const HydroDynMemberCoef* c = memberCoef(mb.id);
+    if (!c)
+      throw InputError(
+          whirl::where(file, mb.line, "MCoefMod",
+                       "3, but member " + std::to_string(mb.id) + " has no row of member-based coefficients"));
+    return *c;
+  }
+  if (!SimplCa || !SimplAxCa)
+    throw InputError(whirl::where(file, mb.line, "MCoefMod", "1, but the simple coefficients are not found"));
+  return {mb.id, *SimplCa, *SimplCa, *SimplAxCa, *SimplAxCa, mb.line};
+}
 
 HydroDynMembers readHydroDynMembers(const OpenFastFile& f, const OpenFastLines& lines) {
   HydroDynMembers m;
@@ -229,6 +291,7 @@ HydroDynMembers readHydroDynMembers(const OpenFastFile& f, const OpenFastLines& 
   readProps(m, f, r);
   readMembers(m, r);
   readFills(m, r);
+  readCoefficients(m, f, r);
   return m;
 }
 

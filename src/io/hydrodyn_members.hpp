@@ -21,6 +21,23 @@ struct HydroDynJoint {
   int id = 0;
   Vec3 position = Vec3::Zero();  ///< (Jointxi, Jointyi, Jointzi) (m)
   int line = 0;
+  int axial_coef = 0;  ///< JointAxID: a row of the AXIAL COEFFICIENTS table (0: none given)
+};
+
+/// A row of AXIAL COEFFICIENTS: the joints' axial added-mass coefficient (end effects).
+struct HydroDynAxialCoef {
+  int id = 0;
+  double AxCa = 0.0;
+  int line = 0;
+};
+
+/// A member's added-mass coefficients at its two ends: transverse (MemberCa1, 2) and axial on a
+/// taper (MemberAxCa1, 2).
+struct HydroDynMemberCoef {
+  int id = 0;
+  double Ca1 = 0.0, Ca2 = 0.0;
+  double AxCa1 = 0.0, AxCa2 = 0.0;
+  int line = 0;
 };
 
 struct HydroDynPropSet {
@@ -36,6 +53,7 @@ struct HydroDynMember {
   int prop1 = 0, prop2 = 0;    ///< MPropSetID1, MPropSetID2 (at joint 1 and joint 2)
   bool PropPot = false;        ///< true: modelled by potential flow (only viscous drag from strip theory)
   int line = 0;
+  int MCoefMod = 1;  ///< coefficients from {1 the simple, 2 the depth-based, 3 the member-based} table
 };
 
 struct HydroDynFillGroup {
@@ -50,11 +68,21 @@ struct HydroDynMembers {
   std::vector<HydroDynPropSet> props;
   std::vector<HydroDynMember> members;
   std::vector<HydroDynFillGroup> fills;
+  std::vector<HydroDynAxialCoef> axial;          ///< AXIAL COEFFICIENTS
+  std::optional<double> SimplCa;                 ///< the simple table's transverse added-mass coefficient
+  std::optional<double> SimplAxCa;               ///< … and its axial one (on tapers)
+  std::vector<HydroDynMemberCoef> member_coefs;  ///< MEMBER-BASED HYDRODYNAMIC COEFFICIENTS
 
   /// The joint, property set or member of an id; nullptr when there is none.
   const HydroDynJoint* joint(int id) const;
   const HydroDynPropSet* prop(int id) const;
   const HydroDynMember* member(int id) const;
+  const HydroDynAxialCoef* axialCoef(int id) const;
+  const HydroDynMemberCoef* memberCoef(int id) const;
+  /// The member's added-mass coefficients at its joint 1 and joint 2 (MCoefMod 1 or 3): transverse
+  /// Ca1, Ca2 and axial AxCa1, AxCa2. InputError naming the member's line for MCoefMod = 2
+  /// (depth-based, not read) or a missing row.
+  HydroDynMemberCoef memberCoefs(const HydroDynMember& m, const OpenFastFile& f) const;
 };
 
 /// Reads the four tables of a HydroDyn file (absent count keys: empty tables). Every row is checked

@@ -81,12 +81,10 @@ void requireSupported(const OpenFastTurbine& turbine) {
   for (std::string& s : unsupportedOptions(turbine.elastodyn)) issues.push_back(std::move(s));
   const FstInput& fst = turbine.fst;
   if (fst.CompSub == 1) {
-    // A SubDyn substructure holds the platform. Its hydrodynamics (HydroDyn's strip-theory members on the
-    // substructure's members) and a mooring on it are another model.
+    // A SubDyn substructure holds the platform; HydroDyn's strip theory acts on its members
+    // (src/turbine/hydrodyn_strip.hpp). A mooring on it is another model.
     Refusals r(fst.source);
-    r.addIf(fst.CompHydro != 0, "CompHydro",
-            "HydroDyn on a SubDyn substructure (strip-theory members: added mass and buoyancy of the "
-            "substructure's members) is not modelled; --set CompHydro=0 leaves the hydrodynamics out");
+    r.addIf(fst.CompHydro > 1, "CompHydro", "unknown hydrodynamics module", "CompHydro = 0 or 1 (HydroDyn)");
     r.addIf(fst.CompMooring != 0, "CompMooring", "a mooring on a SubDyn substructure is not modelled",
             "CompMooring = 0");
     for (std::string& s : r.take()) issues.push_back(std::move(s));

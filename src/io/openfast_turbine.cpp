@@ -11,8 +11,9 @@ OpenFastTurbine readOpenFastTurbine(const std::filesystem::path& fst, OverrideSe
   t.fst = readFst(fst, overrides);
   t.elastodyn = readElastoDyn(t.fst.source.getExistingPath("EDFile"), overrides);
   if (t.fst.CompSub == 1) {
-    // HydroDyn and moorings on a SubDyn substructure are refused by requireSupported, unread.
+    // A mooring on a SubDyn substructure is refused by requireSupported, unread.
     t.subdyn = readSubDyn(t.fst.source.getExistingPath("SubFile"), overrides);
+    if (t.fst.CompHydro == 1) t.hydrodyn = readHydroDyn(t.fst.source.getExistingPath("HydroFile"), overrides);
   } else if (hasPlatformDofs(t.elastodyn)) {
     if (t.fst.CompHydro == 1) t.hydrodyn = readHydroDyn(t.fst.source.getExistingPath("HydroFile"), overrides);
     if (t.fst.CompMooring == 1) t.mooring = readMap(t.fst.source.getExistingPath("MooringFile"));

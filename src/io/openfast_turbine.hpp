@@ -21,9 +21,9 @@ class OverrideSet;
 struct OpenFastTurbine {
   FstInput fst;
   ElastoDynInput elastodyn;
-  std::optional<HydroDynInput> hydrodyn;  ///< with a platform DOF on and CompHydro = 1
+  std::optional<HydroDynInput> hydrodyn;  ///< with CompHydro = 1 and a platform DOF on or SubDyn
   std::optional<MapInput> mooring;        ///< with a platform DOF on: MAP++ (CompMooring = 1) or MoorDyn (3)
-  std::optional<SubDynInput> subdyn;      ///< with CompSub = 1 (then HydroDyn and mooring are not read)
+  std::optional<SubDynInput> subdyn;      ///< with CompSub = 1 (then a mooring is not read)
 };
 
 /// Reads `fst` and the ElastoDyn files it names, its SubDyn file (CompSub = 1), and otherwise, with a

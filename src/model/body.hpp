@@ -56,6 +56,10 @@ struct BodyPoint {
 struct ElasticProperties {
   MatX K;  ///< [N/m] (or N m/rad for torsion shapes)
   MatX D;  ///< [N s/m]
+  /// Added mass on the elastic coordinates [kg, …]: inertia without weight, −A q̈_e (e.g. the water
+  /// a submerged member carries along, HydroDyn's strip theory). Empty: none. Meant for a body whose
+  /// frame does not move (a fixed-bottom substructure): it is not turned with the body.
+  MatX A;
 };
 
 /// Rigid-body shape integrals: mass m, centre of gravity rho (body frame), inertia at the COG.

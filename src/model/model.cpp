@@ -105,6 +105,9 @@ void checkInertia(const Body& b) {
       throw InputError(bodyWhere(b, "elastic stiffness/damping size differs from the number of shapes"));
     if (!allFinite(b.elastic.K) || !allFinite(b.elastic.D))
       throw InputError(bodyWhere(b, "elastic stiffness or damping is not finite"));
+    if (b.elastic.A.size() > 0 &&
+        (b.elastic.A.rows() != in.ne || b.elastic.A.cols() != in.ne || !allFinite(b.elastic.A)))
+      throw InputError(bodyWhere(b, "elastic added mass is not a finite matrix of the number of shapes"));
   }
   for (const auto& p : b.points) {
     if (p.P.cols() != in.nc() || p.theta.cols() != in.ne)

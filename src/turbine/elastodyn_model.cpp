@@ -66,7 +66,7 @@ Model buildElastoDynModel(const io::OpenFastTurbine& t, const ElastoDynModelOpti
   b.model().name = ed.source.title();
   b.model().gravity = Vec3(0, 0, -gravityOf(t, opt));
 
-  const elastodyn::PlatformParts platform = t.subdyn ? elastodyn::addSubstructurePlatform(b, *t.subdyn)
+  const elastodyn::PlatformParts platform = t.subdyn ? elastodyn::addSubstructurePlatform(b, t)
                                                      : elastodyn::addPlatform(b);
   const elastodyn::TowerParts tower = elastodyn::addTower(b, platform);
   const elastodyn::DrivetrainParts dt = elastodyn::addNacelleAndDrivetrain(b, tower);

@@ -6,6 +6,7 @@
 
 #include "src/dynamics/catenary.hpp"
 #include "src/io/elastodyn_common.hpp"
+#include "src/io/refusals.hpp"
 #include "src/io/wamit_input.hpp"
 #include "src/io/wamit_state_space.hpp"
 #include "src/model/error.hpp"
@@ -21,7 +22,7 @@ double gravityOf(const Builder& b) { return -b.model().gravity(2); }
 double water(const io::OpenFastTurbine& t, std::optional<double> hd, std::optional<double> fst, const char* key) {
   if (hd) return *hd;
   if (fst) return *fst;
-  throw InputError(t.fst.source.where(key, "not in the .fst nor in the HydroDyn file: the floating platform needs it"));
+  throw InputError(t.fst.source.where(key, "not in the .fst nor in the HydroDyn file: the platform needs it"));
 }
 
 // HydroDyn's state-space radiation memory (`RdtnMod = 2`): the states of each DOF's block named after it.
@@ -45,7 +46,14 @@ void addRadiationStates(Builder& b, const PlatformParts& p, const io::HydroDynIn
 // −B |v| v has zero derivative at a static point (v = 0): nothing in the linear model.
 void addHydroDyn(Builder& b, const PlatformParts& p, const io::OpenFastTurbine& t) {
   const io::HydroDynInput& hd = *t.hydrodyn;
-  const double rho = water(t, hd.WtrDens, t.fst.WtrDens, "WtrDens"), g = gravityOf(b);
+  for (const io::HydroDynMember& mb : hd.geometry.members)
+    if (!mb.PropPot)
+      throw InputError(whirl::where(hd.source.path().string(), mb.line, "PropPot",
+                                    "False not supported by whirl on a floating platform (strip-theory member " +
+                                        std::to_string(mb.id) +
+                                        ": its buoyancy and added mass on a rigid platform are not modelled; on a "
+                                        "SubDyn substructure they are)"));
+  const double rho = waterDensity(t), g = gravityOf(b);
   BodyMatrices bm;
   bm.body = p.body;
   bm.K = hd.AddCLin;
@@ -86,8 +94,7 @@ void addHydroDyn(Builder& b, const PlatformParts& p, const io::OpenFastTurbine& 
 // MAP++ lines, each checked at the undisplaced platform so that a line that cannot reach its anchor
 // is an input error with its place rather than a failed operating point.
 void addMooring(Builder& b, const PlatformParts& p, const io::OpenFastTurbine& t) {
-  const double rho = water(t, t.hydrodyn ? t.hydrodyn->WtrDens : std::nullopt, t.fst.WtrDens, "WtrDens");
-  const double depth = water(t, t.hydrodyn ? t.hydrodyn->WtrDpth : std::nullopt, t.fst.WtrDpth, "WtrDpth");
+  const double rho = waterDensity(t), depth = waterDepth(t);
   std::vector<MooringLine> lines = io::mapMooringLines(*t.mooring, p.body, depth, rho, gravityOf(b));
   for (const MooringLine& ln : lines) {
     const Vec3 d = p.reference + ln.fairlead - ln.anchor;
@@ -102,9 +109,31 @@ void addMooring(Builder& b, const PlatformParts& p, const io::OpenFastTurbine& t
 
 }  // namespace
 
+double waterDensity(const io::OpenFastTurbine& t) {
+  return water(t, t.hydrodyn ? t.hydrodyn->WtrDens : std::nullopt, t.fst.WtrDens, "WtrDens");
+}
+
+double waterDepth(const io::OpenFastTurbine& t) {
+  return water(t, t.hydrodyn ? t.hydrodyn->WtrDpth : std::nullopt, t.fst.WtrDpth, "WtrDpth");
+}
+
+// HydroDyn on a SubDyn substructure: its strip theory is in the substructure's added mass
+// (hydrodyn_strip.hpp), AddF0, AddCLin and AddBLin on the TP (elastodyn_substructure.cpp); what would
+// act on a rigid platform instead is refused.
+void checkHydroDynOnSubDyn(const io::HydroDynInput& hd) {
+  io::Refusals r(hd.source);
+  r.addIf(hd.PotMod != 0, "PotMod", "potential flow on a SubDyn substructure is not modelled", "PotMod = 0");
+  r.addIf(!hd.geometry.fills.empty(), "NFillGroups", "filled members of a SubDyn substructure are not modelled", "0");
+  io::throwIfAny(r.take());
+}
+
 void addOffshoreLoads(Builder& b, const PlatformParts& p, const io::OpenFastTurbine& t) {
   if (p.body < 0) return;
-  if (t.hydrodyn) addHydroDyn(b, p, t);
+  if (t.hydrodyn && t.subdyn) {
+    checkHydroDynOnSubDyn(*t.hydrodyn);
+  } else if (t.hydrodyn) {
+    addHydroDyn(b, p, t);
+  }
   if (t.mooring) addMooring(b, p, t);
 }
 

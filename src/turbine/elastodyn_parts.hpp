@@ -77,7 +77,13 @@ PlatformParts addPlatform(Builder& b);
 /// tied to the TP. The TP's six DOFs are the platform coordinates (`platform surge` … `platform yaw`,
 /// switched and initialised as ElastoDyn's), then the Craig–Bampton modes `substructure CB 1` …, as
 /// OpenFAST couples ElastoDyn's platform to SubDyn's TP.
-PlatformParts addSubstructurePlatform(Builder& b, const io::SubDynInput& sd);
+/// With HydroDyn (`t.hydrodyn`), its strip-theory added mass on the substructure (hydrodyn_strip.hpp).
+PlatformParts addSubstructurePlatform(Builder& b, const io::OpenFastTurbine& t);
+
+/// Water density [kg/m³] and depth [m]: HydroDyn's (v2, v3) or the .fst's (v3.5+); InputError when
+/// neither file has it (elastodyn_offshore.cpp).
+double waterDensity(const io::OpenFastTurbine& t);
+double waterDepth(const io::OpenFastTurbine& t);
 
 /// HydroDyn's linear terms and MAP++'s mooring lines on the platform (elastodyn_offshore.cpp).
 void addOffshoreLoads(Builder& b, const PlatformParts& platform, const io::OpenFastTurbine& t);

@@ -9,20 +9,32 @@
 
 #include "src/model/error.hpp"
 #include "src/turbine/elastodyn_parts.hpp"
+#include "src/turbine/hydrodyn_strip.hpp"
 #include "src/turbine/subdyn_fem.hpp"
 
 namespace whirl::elastodyn {
 
-PlatformParts addSubstructurePlatform(Builder& b, const io::SubDynInput& sd) {
+PlatformParts addSubstructurePlatform(Builder& b, const io::OpenFastTurbine& t) {
+  const io::SubDynInput& sd = *t.subdyn;
   const PlatformDescription d = describePlatform(b);
   PlatformParts out;
   out.reference = d.reference;
-  SubDynBody sub = buildSubDynBody(sd, d.reference);
+  MatX added;
+  if (t.hydrodyn)
+    added = stripTheoryAddedMass(*t.hydrodyn, subDynFem(sd, d.reference).spec.model, waterDensity(t), waterDepth(t));
+  SubDynBody sub = buildSubDynBody(sd, d.reference, added);
   Body s;
   s.name = "substructure";  // body frame = ground frame (SubDyn's SS coordinates)
   s.inertia = std::move(sub.fem.body.inertia);
   s.elastic.K = std::move(sub.fem.body.elastic.K);
   s.elastic.D = std::move(sub.damping);
+  s.elastic.A = std::move(sub.added_mass);
+  // HydroDyn's additional stiffness and damping act at the platform reference point, the TP, whose six
+  // DOFs (ground axes, small rotations) are the body's first coordinates.
+  if (t.hydrodyn) {
+    s.elastic.K.topLeftCorner(6, 6) += t.hydrodyn->AddCLin;
+    s.elastic.D.topLeftCorner(6, 6) += t.hydrodyn->AddBLin;
+  }
   s.points = std::move(sub.fem.body.points);
   const int tp_point = static_cast<int>(s.points.size()) - 1;  // the TP (rigidInterfacePoint, last)
   if (tp_point < 0 || s.points[tp_point].name != "TP") throw ComputeError("substructure: the FE body has no TP point");
@@ -32,6 +44,9 @@ PlatformParts addSubstructurePlatform(Builder& b, const io::SubDynInput& sd) {
   for (int k = 0; k < 6; ++k)
     out.dofs[k] = b.addDof(kPlatformDofNames[k], body, DofKind::Elastic, k, d.on[k], d.value[k]);
   for (int j = 6; j < ne; ++j) b.addDof("substructure CB " + std::to_string(j - 5), body, DofKind::Elastic, j, true);
+  if (t.hydrodyn)
+    for (int k = 0; k < 6; ++k)
+      if (t.hydrodyn->AddF0(k) != 0.0) b.model().dof_loads.push_back({out.dofs[k], t.hydrodyn->AddF0(k), -1});
   Body p;
   p.name = "platform";
   p.parent = body;

@@ -100,7 +100,7 @@ SubDynFem subDynFem(const io::SubDynInput& sd, const Vec3& tp_reference) {
   return out;
 }
 
-SubDynBody buildSubDynBody(const io::SubDynInput& sd, const Vec3& tp_reference) {
+SubDynBody buildSubDynBody(const io::SubDynInput& sd, const Vec3& tp_reference, const MatX& added_mass) {
   const SubDynFem f = subDynFem(sd, tp_reference);
   SubDynBody out;
   try {
@@ -124,6 +124,13 @@ SubDynBody buildSubDynBody(const io::SubDynInput& sd, const Vec3& tp_reference) 
     const double zeta = sd.JDampings[std::min<std::size_t>(j, sd.JDampings.size() - 1)];
     const double omega = 2 * std::numbers::pi * out.fem.fixed_interface_hz(j);
     out.damping(6 + j, 6 + j) = 2 * zeta * omega * Me(6 + j, 6 + j);
+  }
+  if (added_mass.size() > 0) {
+    const std::vector<int>& free = out.fem.map.free;
+    MatX Af(free.size(), free.size());
+    for (std::size_t r = 0; r < free.size(); ++r)
+      for (std::size_t c = 0; c < free.size(); ++c) Af(r, c) = added_mass(free[r], free[c]);
+    out.added_mass = out.fem.basis.transpose() * Af * out.fem.basis;
   }
   return out;
 }

@@ -47,10 +47,13 @@ SubDynFem subDynFem(const io::SubDynInput& sd, const Vec3& tp_reference);
 
 /// The substructure as a whirl body: `fem::buildFemBody` of subDynFem plus the damping above. The
 /// coordinates are the TP's six DOFs ("TP ux" … "TP rz") then "CB 1" … (Craig–Bampton modes).
+/// `added_mass` (optional, on the FE model's full DOFs, 6 per node: e.g. HydroDyn's strip theory) is
+/// projected on the body's coordinates: added_mass_e = basisᵀ A basis.
 struct SubDynBody {
   fem::FemBody fem;
-  MatX damping;  ///< ne × ne [N s/m, …]
+  MatX damping;     ///< ne × ne [N s/m, …]
+  MatX added_mass;  ///< ne × ne [kg, …]; empty without `added_mass`
 };
-SubDynBody buildSubDynBody(const io::SubDynInput& sd, const Vec3& tp_reference);
+SubDynBody buildSubDynBody(const io::SubDynInput& sd, const Vec3& tp_reference, const MatX& added_mass = MatX());
 
 }  // namespace whirl

@@ -95,13 +95,27 @@ TEST(CliOffshore, Oc3MonopileCampbell) {
   EXPECT_THAT(csv, HasSubstr("\n12,"));  // to 12 rpm
 }
 
-TEST(CliOffshore, HydroDynOnASubstructureRefusedOnOneLine) {
-  const auto r = test::whirl("modes " + kMonopile + " --set CompAero=0");
-  EXPECT_NE(r.code, 0);
-  EXPECT_THAT(r.err,
-              HasSubstr("Test19.fst:17: CompHydro: 1 not supported by whirl (HydroDyn on a SubDyn substructure"));
-  EXPECT_THAT(r.err, HasSubstr("--set CompHydro=0"));
-  EXPECT_EQ(lines(r.err), 1) << r.err;
+// HydroDyn's strip theory on the SubDyn pile runs as shipped (the deck's CompHydro = 1); a HydroDyn
+// member that does not follow the substructure's members stops on one line naming its row.
+TEST(CliOffshore, HydroDynOnASubstructure) {
+  const auto r = test::whirl("modes " + kMonopile + " --set CompAero=0 --format csv");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("tower SS 1"));
+  const auto dir = test::freshDir("oc3_monopile_hydro_off");
+  std::filesystem::copy(std::string(WHIRL_SOURCE_DIR) + "/cases/oc3_monopile", dir / "deck",
+                        std::filesystem::copy_options::recursive);
+  const auto hd = dir / "deck/5MW_Baseline/NRELOffshrBsline5MW_OC3Monopile_HydroDyn.dat";
+  std::filesystem::permissions(hd, std::filesystem::perms::owner_write, std::filesystem::perm_options::add);
+  std::string text = test::slurp(hd);
+  const std::string from = "    2     0.00000     0.00000    10.00000";
+  ASSERT_NE(text.find(from), std::string::npos);
+  text.replace(text.find(from), from.size(), "    2     1.00000     0.00000    10.00000");
+  std::ofstream(hd) << text;
+  const auto bad = test::whirl("modes " + (dir / "deck/Test19.fst").string() + " --set CompAero=0");
+  EXPECT_EQ(bad.code, 1);
+  EXPECT_THAT(bad.err, HasSubstr("HydroDyn.dat:120: MemberID: strip-theory member 1: "));
+  EXPECT_THAT(bad.err, HasSubstr("lie on no SubDyn member"));
+  EXPECT_EQ(lines(bad.err), 1) << bad.err;
 }
 
 // A member of zero length in a copy of the deck: file, line and key, exit code 1, no output files.

@@ -79,10 +79,13 @@ TEST(HydroDynMembers, MalformedRowsNameTheirLine) {
   EXPECT_THAT(error("    1         1          2           1            1         1.0000      3        TRUE",
                     "    1         1          2           1            1         1.0000      3        maybe"),
               HasSubstr("hd.dat:191: PropPot: 'maybe' is not True or False"));
-  // A strip-theory member is still refused (its buoyancy and added mass are not modelled).
+  // A strip-theory member is read (a floating platform refuses it: OffshoreModel tests).
+  EXPECT_EQ(error("    1         1          2           1            1         1.0000      3        TRUE",
+                  "    1         1          2           1            1         1.0000      3        FALSE"),
+            "no error");
   EXPECT_THAT(error("    1         1          2           1            1         1.0000      3        TRUE",
-                    "    1         1          2           1            1         1.0000      3        FALSE"),
-              HasSubstr("member 1 on line 191 has PropPot = False"));
+                    "    1         1          2           1            1         1.0000      7        TRUE"),
+              HasSubstr("hd.dat:191: MCoefMod: must be 1 (simple), 2 (depth-based) or 3 (member-based)"));
   const std::string f = test::editedCopy(dir, kSemi, "default.dat", group2, "    3   5   6   7   -14.89   DEFAULT");
   EXPECT_FALSE(read(f).geometry.fills[1].FillDens.has_value());
 }

@@ -130,6 +130,16 @@ TEST(OffshoreModel, AddedMassNotPositiveSemiDefinite) {
                                    "semi-definite"));
 }
 
+// A strip-theory member on a floating (rigid) platform: its buoyancy and added mass are not modelled
+// there (they are on a SubDyn substructure), one line naming its row.
+TEST(OffshoreModel, StripTheoryMemberOnAFloatingPlatformIsRefused) {
+  const EditedCase c("5MW_Baseline/NRELOffshrBsline5MW_OC3Hywind_HydroDyn.dat",
+                     "    2         2          3           1            2         0.5000      1        TRUE",
+                     "    2         2          3           1            2         0.5000      1        FALSE");
+  EXPECT_THAT(c.error(), HasSubstr("HydroDyn.dat:124: PropPot: False not supported by whirl on a floating platform "
+                                   "(strip-theory member 2"));
+}
+
 TEST(OffshoreModel, MissingWamitFile) {
   const EditedCase c("5MW_Baseline/NRELOffshrBsline5MW_OC3Hywind_HydroDyn.dat", "\"HydroData/Spar\"",
                      "\"HydroData/Nothing\"");
