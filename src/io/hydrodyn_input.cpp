@@ -97,7 +97,6 @@ HydroDynInput readHydroDyn(const std::filesystem::path& file, OverrideSet* overr
       r.addIf(v != "true" && v != "t" && v != "default" && v != "\"default\"", key,
               "switching a direction's hydrodynamic loads off is not modelled", "True or DEFAULT");
     }
-  r.addIf(f.findInt("NMGDepths").value_or(0) != 0, "NMGDepths", "marine growth is not modelled");
   throwIfAny(r.take());
 
   const std::vector<double> f0 = f.getDoubles("AddF0");

@@ -45,7 +45,7 @@ struct HydroDynInput {
 
 /// Reads a HydroDyn file. Refuses (InputError "file:line: key: value not supported by whirl (reason)")
 /// what would change the linear model and is not modelled: PotMod = 2 (FIT), RdtnMod = 1 (convolution,
-/// which OpenFAST refuses for linearization too), NBody > 1, marine growth, and a v2 force flag (PtfmSgF … PtfmYF) set
+/// which OpenFAST refuses for linearization too), NBody > 1, and a v2 force flag (PtfmSgF … PtfmYF) set
 /// to False. A 6×6 matrix whose rows are missing or not numbers names the key's line.
 HydroDynInput readHydroDyn(const std::filesystem::path& file, OverrideSet* overrides = nullptr);
 

@@ -1,5 +1,6 @@
 #include "src/io/hydrodyn_members.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -230,12 +231,31 @@ void readCoefficients(HydroDynMembers& m, const OpenFastFile& f, const TableRead
   if (nm > 0) {
     const int id = r.column(c, "NCoefMembers", "MemberID"), c1 = r.column(c, "NCoefMembers", "MemberCa1"),
               c2 = r.column(c, "NCoefMembers", "MemberCa2"), a1 = r.column(c, "NCoefMembers", "MemberAxCa1"),
-              a2 = r.column(c, "NCoefMembers", "MemberAxCa2");
+              a2 = r.column(c, "NCoefMembers", "MemberAxCa2"), g1 = r.column(c, "NCoefMembers", "MemberCaMG1"),
+              g2 = r.column(c, "NCoefMembers", "MemberCaMG2");
     for (int k = 0; k < nm; ++k)
       m.member_coefs.push_back({r.integer(c, k, id, "MemberID"), r.number(c, k, c1, "MemberCa1"),
                                 r.number(c, k, c2, "MemberCa2"), r.number(c, k, a1, "MemberAxCa1"),
-                                r.number(c, k, a2, "MemberAxCa2"), c.lines[k]});
+                                r.number(c, k, a2, "MemberAxCa2"), c.lines[k], r.number(c, k, g1, "MemberCaMG1"),
+                                r.number(c, k, g2, "MemberCaMG2")});
     checkUniqueIds(r, m.member_coefs, "MemberID");
+  }
+  const int ng = r.count("NMGDepths", limits::kMaxHydroDynPropSets);
+  const Table g = r.rows("NMGDepths", ng);
+  if (ng > 0) {
+    const int z = r.column(g, "NMGDepths", "MGDpth"), t = r.column(g, "NMGDepths", "MGThck"),
+              d = r.column(g, "NMGDepths", "MGDens");
+    for (int k = 0; k < ng; ++k) {
+      HydroDynMarineGrowth row{r.number(g, k, z, "MGDpth"), r.number(g, k, t, "MGThck"), r.number(g, k, d, "MGDens"),
+                               g.lines[k]};
+      if (!(row.thickness >= 0)) throw InputError(r.where(row.line, "MGThck", "must not be negative"));
+      if (!(row.density > 0)) throw InputError(r.where(row.line, "MGDens", "must be positive"));
+      m.growth.push_back(row);
+    }
+    std::sort(m.growth.begin(), m.growth.end(), [](const auto& x, const auto& y) { return x.z < y.z; });
+    for (std::size_t k = 1; k < m.growth.size(); ++k)
+      if (m.growth[k].z == m.growth[k - 1].z)
+        throw InputError(r.where(m.growth[k].line, "MGDpth", "the same depth given twice"));
   }
   // The simple table has no count: one row under its column names and units.
   if (const OpenFastTable* t = f.findTable("SimplCa"); t && !t->rows.empty()) {
@@ -248,6 +268,7 @@ void readCoefficients(HydroDynMembers& m, const OpenFastFile& f, const TableRead
     };
     m.SimplCa = value("SimplCa");
     m.SimplAxCa = value("SimplAxCa");
+    m.SimplCaMG = value("SimplCaMG");
   }
 }
 
@@ -264,6 +285,16 @@ const HydroDynJoint* HydroDynMembers::joint(int id) const { return byId(joints, 
 const HydroDynPropSet* HydroDynMembers::prop(int id) const { return byId(props, id); }
 const HydroDynMember* HydroDynMembers::member(int id) const { return byId(members, id); }
 const HydroDynAxialCoef* HydroDynMembers::axialCoef(int id) const { return byId(axial, id); }
+
+std::pair<double, double> HydroDynMembers::growthAt(double z) const {
+  if (growth.empty() || z < growth.front().z || z > growth.back().z) return {0.0, 0.0};
+  if (growth.size() == 1) return {growth[0].thickness, growth[0].density};
+  std::size_t k = 1;
+  while (k + 1 < growth.size() && growth[k].z < z) ++k;
+  const HydroDynMarineGrowth &a = growth[k - 1], &b = growth[k];
+  const double f = (z - a.z) / (b.z - a.z);
+  return {a.thickness + f * (b.thickness - a.thickness), a.density + f * (b.density - a.density)};
+}
 const HydroDynMemberCoef* HydroDynMembers::memberCoef(int id) const { return byId(member_coefs, id); }
 
 HydroDynMemberCoef HydroDynMembers::memberCoefs(const HydroDynMember& mb, const OpenFastFile& f) const {
@@ -281,7 +312,8 @@ HydroDynMemberCoef HydroDynMembers::memberCoefs(const HydroDynMember& mb, const 
   }
   if (!SimplCa || !SimplAxCa)
     throw InputError(whirl::where(file, mb.line, "MCoefMod", "1, but the simple coefficients are not found"));
-  return {mb.id, *SimplCa, *SimplCa, *SimplAxCa, *SimplAxCa, mb.line};
+  const double mg = SimplCaMG.value_or(*SimplCa);
+  return {mb.id, *SimplCa, *SimplCa, *SimplAxCa, *SimplAxCa, mb.line, mg, mg};
 }
 
 HydroDynMembers readHydroDynMembers(const OpenFastFile& f, const OpenFastLines& lines) {

@@ -38,6 +38,14 @@ struct HydroDynMemberCoef {
   double Ca1 = 0.0, Ca2 = 0.0;
   double AxCa1 = 0.0, AxCa2 = 0.0;
   int line = 0;
+  double CaMG1 = 0.0, CaMG2 = 0.0;  ///< transverse, where marine growth covers the member
+};
+
+/// A row of MARINE GROWTH: thickness and density at a depth (z, m from MSL, negative down); linear
+/// between rows, none outside them.
+struct HydroDynMarineGrowth {
+  double z = 0.0, thickness = 0.0, density = 0.0;
+  int line = 0;
 };
 
 struct HydroDynPropSet {
@@ -71,6 +79,10 @@ struct HydroDynMembers {
   std::vector<HydroDynAxialCoef> axial;          ///< AXIAL COEFFICIENTS
   std::optional<double> SimplCa;                 ///< the simple table's transverse added-mass coefficient
   std::optional<double> SimplAxCa;               ///< … and its axial one (on tapers)
+  std::optional<double> SimplCaMG;               ///< … and the transverse one under marine growth
+  std::vector<HydroDynMarineGrowth> growth;      ///< MARINE GROWTH, by increasing z
+  /// Marine-growth thickness [m] and density [kg/m³] at height z (0, 0 outside the table's depths).
+  std::pair<double, double> growthAt(double z) const;
   std::vector<HydroDynMemberCoef> member_coefs;  ///< MEMBER-BASED HYDRODYNAMIC COEFFICIENTS
 
   /// The joint, property set or member of an id; nullptr when there is none.

@@ -46,6 +46,10 @@ void addRadiationStates(Builder& b, const PlatformParts& p, const io::HydroDynIn
 // −B |v| v has zero derivative at a static point (v = 0): nothing in the linear model.
 void addHydroDyn(Builder& b, const PlatformParts& p, const io::OpenFastTurbine& t) {
   const io::HydroDynInput& hd = *t.hydrodyn;
+  if (!hd.geometry.growth.empty())
+    throw InputError(hd.source.where("NMGDepths",
+                                     "marine growth on a floating platform is not modelled by whirl (on a "
+                                     "SubDyn substructure it is)"));
   for (const io::HydroDynMember& mb : hd.geometry.members)
     if (!mb.PropPot)
       throw InputError(whirl::where(hd.source.path().string(), mb.line, "PropPot",
@@ -123,7 +127,6 @@ double waterDepth(const io::OpenFastTurbine& t) {
 void checkHydroDynOnSubDyn(const io::HydroDynInput& hd) {
   io::Refusals r(hd.source);
   r.addIf(hd.PotMod != 0, "PotMod", "potential flow on a SubDyn substructure is not modelled", "PotMod = 0");
-  r.addIf(!hd.geometry.fills.empty(), "NFillGroups", "filled members of a SubDyn substructure are not modelled", "0");
   io::throwIfAny(r.take());
 }
 

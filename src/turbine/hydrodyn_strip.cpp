@@ -16,16 +16,17 @@ std::string where(const io::HydroDynInput& hd, int line, const std::string& key,
   return whirl::where(hd.source.path().string(), line, key, reason);
 }
 
-// A strip-theory member as a line: ends a, b, outer radius and coefficients linear between them.
-struct StripMember {
+// A member as a line: ends a, b; outer radius, wall and coefficients linear between them; its fill.
+struct Member {
   const io::HydroDynMember* row = nullptr;
   Vec3 a, b, k;
-  double length = 0, Ra = 0, Rb = 0;
+  double length = 0, Ra = 0, Rb = 0, ta = 0, tb = 0;
   io::HydroDynMemberCoef coef;
+  const io::HydroDynFillGroup* fill = nullptr;
 };
 
 // The parameter s ∈ [0, 1] of point p on the member's axis, or −1 when p is not on it (1e-6 of its length).
-double onAxis(const StripMember& m, const Vec3& p) {
+double onAxis(const Member& m, const Vec3& p) {
   const double s = (p - m.a).dot(m.k) / m.length;
   const double off = (p - m.a - s * m.length * m.k).norm();
   const double tol = 1e-6 * m.length;
@@ -33,41 +34,62 @@ double onAxis(const StripMember& m, const Vec3& p) {
   return std::clamp(s, 0.0, 1.0);
 }
 
-// Adds ∫ N_iᵀ A(s) N_j over the part of the element (nodes n1, n2) in the water, the element lying on
-// the member from parameter s1 (node 1) to s2 (node 2); returns the member length covered in the water.
-double addElement(MatX& M, const StripMember& m, int n1, int n2, const Vec3& p1, const Vec3& p2, double s1, double s2,
-                  double rho, double depth) {
-  // The part of the element between the seabed and the still-water level, ξ ∈ [x0, x1].
-  double x0 = 0, x1 = 1;
-  const double z1 = p1(2), z2 = p2(2);
-  for (double level : {0.0, -depth}) {
-    const bool below = level == 0.0;  // keep z ≤ 0, then z ≥ −depth
-    if (z1 == z2) {
-      if (below ? z1 > level : z1 < level) return 0;
-      continue;
-    }
-    const double xi = (level - z1) / (z2 - z1);
-    if ((z2 > z1) == below) x1 = std::min(x1, xi);
-    else x0 = std::max(x0, xi);
+// Added mass per unit length at parameter s, height z: the water around a strip-theory member in the
+// water column (with its marine growth: radius R + t_MG, Ca_MG), the growth's own mass, the fill.
+Mat3 perLength(const io::HydroDynInput& hd, const Member& m, double s, double z, double rho, double depth) {
+  const double R = m.Ra + (m.Rb - m.Ra) * s, t = m.ta + (m.tb - m.ta) * s;
+  const auto [tMG, rhoMG] = hd.geometry.growthAt(z);
+  const Mat3 kk = m.k * m.k.transpose();
+  Mat3 A = Mat3::Zero();
+  const bool wet = z <= 0 && z >= -depth;
+  if (wet && !m.row->PropPot) {
+    const double Ca = tMG > 0 ? m.coef.CaMG1 + (m.coef.CaMG2 - m.coef.CaMG1) * s
+                              : m.coef.Ca1 + (m.coef.Ca2 - m.coef.Ca1) * s;
+    const double AxCa = m.coef.AxCa1 + (m.coef.AxCa2 - m.coef.AxCa1) * s;
+    const double Ro = R + tMG, dRdl = std::abs(m.Rb - m.Ra) / m.length;
+    A += rho * kPi * Ro * Ro * (Ca * (Mat3::Identity() - kk) + 2 * AxCa * dRdl * kk);
   }
-  if (x1 <= x0) return 0;
+  if (tMG > 0) A += rhoMG * kPi * ((R + tMG) * (R + tMG) - R * R) * Mat3::Identity();
+  if (m.fill && z <= m.fill->FillFSLoc && z >= -depth) {  // HydroDyn fills nothing below the seabed
+    const double ri = R - t;
+    A += m.fill->FillDens.value_or(rho) * kPi * ri * ri * Mat3::Identity();
+  }
+  return A;
+}
+
+// Adds ∫ N_i A(s) over the element (nodes n1, n2) lying on the member from parameter s1 (node 1) to s2
+// (node 2), split where z crosses a level at which A jumps; returns the length of the element in
+// [z_lo, z_hi] (the part of the member that needs elements under it).
+double addElement(MatX& M, const io::HydroDynInput& hd, const Member& m, const fem::Element& e, const Vec3& p1,
+                  const Vec3& p2, double s1, double s2, double rho, double depth, const std::vector<double>& levels,
+                  double z_lo, double z_hi) {
+  std::vector<double> cuts{0.0, 1.0};
+  const double z1 = p1(2), z2 = p2(2);
+  if (z1 != z2)
+    for (double level : levels) {
+      const double xi = (level - z1) / (z2 - z1);
+      if (xi > 0 && xi < 1) cuts.push_back(xi);
+    }
+  std::sort(cuts.begin(), cuts.end());
   static const double kX[3] = {-std::sqrt(0.6), 0.0, std::sqrt(0.6)};
   static const double kW[3] = {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0};
-  const double Le = (p2 - p1).norm(), half = 0.5 * (x1 - x0);
-  const Mat3 kk = m.k * m.k.transpose(), side = Mat3::Identity() - kk;
-  const double dRdl = std::abs(m.Rb - m.Ra) / m.length;
-  for (int g = 0; g < 3; ++g) {
-    const double xi = x0 + half * (1 + kX[g]), s = s1 + (s2 - s1) * xi;
-    const double R = m.Ra + (m.Rb - m.Ra) * s;
-    const double Ca = m.coef.Ca1 + (m.coef.Ca2 - m.coef.Ca1) * s;
-    const double AxCa = m.coef.AxCa1 + (m.coef.AxCa2 - m.coef.AxCa1) * s;
-    const Mat3 A = rho * kPi * R * R * (Ca * side + 2 * AxCa * dRdl * kk);
-    const double w = kW[g] * half * Le, N[2] = {1 - xi, xi};
-    const int n[2] = {n1, n2};
-    for (int i = 0; i < 2; ++i)
-      M.block<3, 3>(fem::kNodeDofs * n[i], fem::kNodeDofs * n[i]) += w * N[i] * A;  // lumped: each node its share
+  const double Le = (p2 - p1).norm();
+  double needed = 0;
+  for (std::size_t c = 1; c < cuts.size(); ++c) {
+    const double x0 = cuts[c - 1], x1 = cuts[c], half = 0.5 * (x1 - x0);
+    if (half <= 0) continue;
+    const double zmid = z1 + (z2 - z1) * 0.5 * (x0 + x1);
+    if (zmid >= z_lo && zmid <= z_hi) needed += (x1 - x0) * Le;
+    for (int g = 0; g < 3; ++g) {
+      const double xi = x0 + half * (1 + kX[g]);
+      const Mat3 A = perLength(hd, m, s1 + (s2 - s1) * xi, z1 + (z2 - z1) * xi, rho, depth);
+      const double w = kW[g] * half * Le, N[2] = {1 - xi, xi};
+      const int n[2] = {e.n1, e.n2};
+      for (int i = 0; i < 2; ++i)
+        M.block<3, 3>(fem::kNodeDofs * n[i], fem::kNodeDofs * n[i]) += w * N[i] * A;  // lumped: each node its share
+    }
   }
-  return (x1 - x0) * Le;
+  return needed;
 }
 
 // The node at p, or −1.
@@ -82,10 +104,14 @@ int nodeAt(const fem::BeamModel& model, const Vec3& p) {
 MatX stripTheoryAddedMass(const io::HydroDynInput& hd, const fem::BeamModel& model, double rho, double depth) {
   const io::HydroDynMembers& g = hd.geometry;
   MatX M = MatX::Zero(model.ndof(), model.ndof());
-  std::vector<StripMember> strip;
+  // The heights where the added mass per length jumps or bends: the still-water level, the seabed,
+  // the marine growth's depths, the fill levels.
+  std::vector<double> levels{0.0, -depth};
+  for (const io::HydroDynMarineGrowth& r : g.growth) levels.push_back(r.z);
+  for (const io::HydroDynFillGroup& f : g.fills) levels.push_back(f.FillFSLoc);
+  std::vector<Member> members;
   for (const io::HydroDynMember& mb : g.members) {
-    if (mb.PropPot) continue;
-    StripMember m;
+    Member m;
     m.row = &mb;
     m.a = g.joint(mb.joint1)->position;
     m.b = g.joint(mb.joint2)->position;
@@ -93,37 +119,46 @@ MatX stripTheoryAddedMass(const io::HydroDynInput& hd, const fem::BeamModel& mod
     m.k = (m.b - m.a) / m.length;
     m.Ra = 0.5 * g.prop(mb.prop1)->D;
     m.Rb = 0.5 * g.prop(mb.prop2)->D;
-    m.coef = g.memberCoefs(mb, hd.source);
-    strip.push_back(m);
+    m.ta = g.prop(mb.prop1)->thickness;
+    m.tb = g.prop(mb.prop2)->thickness;
+    for (const io::HydroDynFillGroup& f : g.fills)
+      if (std::find(f.members.begin(), f.members.end(), mb.id) != f.members.end()) m.fill = &f;
+    const bool growth = !g.growth.empty();
+    if (mb.PropPot && !m.fill && !growth) continue;  // nothing of it in the linear model
+    if (!mb.PropPot || growth) m.coef = g.memberCoefs(mb, hd.source);
+    members.push_back(m);
   }
-  for (const StripMember& m : strip) {
-    // The member's length in the water column, and what the elements on it cover.
-    double wet = 0;
+  for (const Member& m : members) {
+    // The part of the member that carries mass: the water column, up to its fill level if higher.
+    const double z_lo = -depth, z_hi = m.fill ? std::max(0.0, m.fill->FillFSLoc) : 0.0;
+    double needed = 0;
     {
-      double lo = std::min(m.a(2), m.b(2)), hi = std::max(m.a(2), m.b(2));
-      if (lo == hi) wet = (lo <= 0 && lo >= -depth) ? m.length : 0;
-      else wet = std::max(0.0, std::min(hi, 0.0) - std::max(lo, -depth)) / (hi - lo) * m.length;
+      const double lo = std::min(m.a(2), m.b(2)), hi = std::max(m.a(2), m.b(2));
+      if (lo == hi) needed = (lo <= z_hi && lo >= z_lo) ? m.length : 0;
+      else needed = std::max(0.0, std::min(hi, z_hi) - std::max(lo, z_lo)) / (hi - lo) * m.length;
     }
     double covered = 0;
     for (const fem::Element& e : model.elements) {
       const Vec3 &p1 = model.nodes[e.n1], &p2 = model.nodes[e.n2];
       const double s1 = onAxis(m, p1), s2 = onAxis(m, p2);
       if (s1 < 0 || s2 < 0 || s1 == s2) continue;
-      covered += addElement(M, m, e.n1, e.n2, p1, p2, s1, s2, rho, depth);
+      covered += addElement(M, hd, m, e, p1, p2, s1, s2, rho, depth, levels, z_lo, z_hi);
     }
-    if (std::abs(covered - wet) > 1e-6 * m.length)
+    if (std::abs(covered - needed) > 1e-6 * m.length)
       throw InputError(where(hd, m.row->line, "MemberID",
-                             "strip-theory member " + std::to_string(m.row->id) + ": " + io::numberText(wet - covered) +
+                             "member " + std::to_string(m.row->id) + ": " + io::numberText(needed - covered) +
                                  " m of its length in the water lie on no SubDyn member (HydroDyn's members must "
                                  "follow the substructure's)"));
   }
-  // End effects at the joints in the water.
+  // End effects at the joints in the water (strip-theory members only).
   for (const io::HydroDynJoint& j : g.joints) {
     if (j.position(2) > 0 || j.position(2) < -depth) continue;
     Vec3 Vn = Vec3::Zero();
-    for (const StripMember& m : strip) {
-      if (m.row->joint1 == j.id) Vn -= 2 * kPi / 3 * std::pow(m.Ra, 3) * m.k;
-      if (m.row->joint2 == j.id) Vn += 2 * kPi / 3 * std::pow(m.Rb, 3) * m.k;
+    for (const Member& m : members) {
+      if (m.row->PropPot) continue;
+      const double tMG = g.growthAt(j.position(2)).first;
+      if (m.row->joint1 == j.id) Vn -= 2 * kPi / 3 * std::pow(m.Ra + tMG, 3) * m.k;
+      if (m.row->joint2 == j.id) Vn += 2 * kPi / 3 * std::pow(m.Rb + tMG, 3) * m.k;
     }
     const double mag = Vn.norm();
     if (mag == 0) continue;

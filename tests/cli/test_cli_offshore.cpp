@@ -113,7 +113,7 @@ TEST(CliOffshore, HydroDynOnASubstructure) {
   std::ofstream(hd) << text;
   const auto bad = test::whirl("modes " + (dir / "deck/Test19.fst").string() + " --set CompAero=0");
   EXPECT_EQ(bad.code, 1);
-  EXPECT_THAT(bad.err, HasSubstr("HydroDyn.dat:120: MemberID: strip-theory member 1: "));
+  EXPECT_THAT(bad.err, HasSubstr("HydroDyn.dat:120: MemberID: member 1: "));
   EXPECT_THAT(bad.err, HasSubstr("lie on no SubDyn member"));
   EXPECT_EQ(lines(bad.err), 1) << bad.err;
 }

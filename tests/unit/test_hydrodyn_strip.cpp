@@ -92,12 +92,34 @@ TEST(StripTheory, HorizontalBraceBelowTheWater) {
   EXPECT_NEAR(x, 0.0, 1e-9 * total);
 }
 
+// Marine growth (0.1 m of 1100 kg/m³ from −40 to −2 m) and a flooded member (to the still-water
+// level, 1025 kg/m³): their mass in every direction, and the added water on the grown radius with
+// CaMG there. A vertical pile from −50.0001 m (50 m of water) to 10 m, D 2 m, t 0.05 m.
+TEST(StripTheory, MarineGrowthAndFillOnAPile) {
+  io::HydroDynInput hd = oneMember({0, 0, -50.0001}, {0, 0, 10}, 2.0, 1.0, 0.0);
+  hd.geometry.SimplCaMG = 0.8;
+  hd.geometry.growth = {{-40.0, 0.1, 1100.0, 20}, {-2.0, 0.1, 1100.0, 21}};
+  hd.geometry.fills = {{{1}, 0.0, 1025.0, 22}};
+  const fem::BeamModel m = line({0, 0, -50.0001}, {0, 0, 10}, 6);
+  const MatX A = elastodyn::stripTheoryAddedMass(hd, m, kRho, 50.0);
+  const double R = 1.0, t = 0.05, grown = (R + 0.1) * (R + 0.1) - R * R;
+  const double growth = 1100 * kPi * grown * 38, fill = 1025 * kPi * (R - t) * (R - t) * 50;
+  const double water = kRho * kPi * (0.8 * (R + 0.1) * (R + 0.1) * 38 + 1.0 * R * R * 12);
+  double x = 0, z = 0;
+  for (int n = 0; n < m.nnodes(); ++n) {
+    x += A(6 * n, 6 * n);
+    z += A(6 * n + 2, 6 * n + 2);
+  }
+  EXPECT_NEAR(z, growth + fill, 1e-9 * (growth + fill));  // along the axis: no added water
+  EXPECT_NEAR(x, growth + fill + water, 1e-9 * x);
+}
+
 TEST(StripTheory, MemberOffTheElementsIsAnInputError) {
   io::HydroDynInput hd = oneMember({0, 0, -20}, {0, 0, 10}, 6.0, 1.0, 1.0);
   hd.source = io::OpenFastFile::parse("x\n", "hd.dat");
   const fem::BeamModel m = line({1, 0, -20}, {1, 0, 10}, 3);  // 1 m beside the HydroDyn member
   EXPECT_THAT(errorOf([&] { elastodyn::stripTheoryAddedMass(hd, m, kRho, 20.0); }),
-              HasSubstr("hd.dat:13: MemberID: strip-theory member 1: 20 m of its length in the water lie on no SubDyn "
+              HasSubstr("hd.dat:13: MemberID: member 1: 20 m of its length in the water lie on no SubDyn "
                         "member"));
   hd.geometry.members[0].MCoefMod = 2;
   EXPECT_THAT(errorOf([&] { elastodyn::stripTheoryAddedMass(hd, m, kRho, 20.0); }),
