@@ -226,13 +226,14 @@ void readCoefficients(HydroDynMembers& m, const OpenFastFile& f, const TableRead
       m.axial.push_back({r.integer(a, k, id, "AxCoefID"), r.number(a, k, ca, "AxCa"), a.lines[k]});
     checkUniqueIds(r, m.axial, "AxCoefID");
   }
-  const int nm = r.count("NCoefMembers", limits::kMaxHydroDynMembers);
-  const Table c = r.rows("NCoefMembers", nm);
+  // v4.1 split the table into cylindrical (NCoefMembersCyl) and rectangular members.
+  const char* key = f.has("NCoefMembersCyl") ? "NCoefMembersCyl" : "NCoefMembers";
+  const int nm = r.count(key, limits::kMaxHydroDynMembers);
+  const Table c = r.rows(key, nm);
   if (nm > 0) {
-    const int id = r.column(c, "NCoefMembers", "MemberID"), c1 = r.column(c, "NCoefMembers", "MemberCa1"),
-              c2 = r.column(c, "NCoefMembers", "MemberCa2"), a1 = r.column(c, "NCoefMembers", "MemberAxCa1"),
-              a2 = r.column(c, "NCoefMembers", "MemberAxCa2"), g1 = r.column(c, "NCoefMembers", "MemberCaMG1"),
-              g2 = r.column(c, "NCoefMembers", "MemberCaMG2");
+    const int id = r.column(c, key, "MemberID"), c1 = r.column(c, key, "MemberCa1"), c2 = r.column(c, key, "MemberCa2"),
+              a1 = r.column(c, key, "MemberAxCa1"), a2 = r.column(c, key, "MemberAxCa2"),
+              g1 = r.column(c, key, "MemberCaMG1"), g2 = r.column(c, key, "MemberCaMG2");
     for (int k = 0; k < nm; ++k)
       m.member_coefs.push_back({r.integer(c, k, id, "MemberID"), r.number(c, k, c1, "MemberCa1"),
                                 r.number(c, k, c2, "MemberCa2"), r.number(c, k, a1, "MemberAxCa1"),

@@ -111,6 +111,15 @@ void addMooring(Builder& b, const PlatformParts& p, const io::OpenFastTurbine& t
   }
 }
 
+// HydroDyn on a SubDyn substructure: its strip theory is in the substructure's added mass
+// (hydrodyn_strip.hpp), AddF0, AddCLin and AddBLin on the TP (elastodyn_substructure.cpp); what would
+// act on a rigid platform instead is refused.
+void checkHydroDynOnSubDyn(const io::HydroDynInput& hd) {
+  io::Refusals r(hd.source);
+  r.addIf(hd.PotMod != 0, "PotMod", "potential flow on a SubDyn substructure is not modelled", "PotMod = 0");
+  io::throwIfAny(r.take());
+}
+
 }  // namespace
 
 double waterDensity(const io::OpenFastTurbine& t) {
@@ -119,15 +128,6 @@ double waterDensity(const io::OpenFastTurbine& t) {
 
 double waterDepth(const io::OpenFastTurbine& t) {
   return water(t, t.hydrodyn ? t.hydrodyn->WtrDpth : std::nullopt, t.fst.WtrDpth, "WtrDpth");
-}
-
-// HydroDyn on a SubDyn substructure: its strip theory is in the substructure's added mass
-// (hydrodyn_strip.hpp), AddF0, AddCLin and AddBLin on the TP (elastodyn_substructure.cpp); what would
-// act on a rigid platform instead is refused.
-void checkHydroDynOnSubDyn(const io::HydroDynInput& hd) {
-  io::Refusals r(hd.source);
-  r.addIf(hd.PotMod != 0, "PotMod", "potential flow on a SubDyn substructure is not modelled", "PotMod = 0");
-  io::throwIfAny(r.take());
 }
 
 void addOffshoreLoads(Builder& b, const PlatformParts& p, const io::OpenFastTurbine& t) {

@@ -42,6 +42,18 @@ TEST(HydroDynMembers, Oc4SemiTables) {
   EXPECT_EQ(m.fills[0].members, (std::vector<int>{2, 3, 4}));
   EXPECT_EQ(m.fills[0].FillFSLoc, -6.17);
   EXPECT_EQ(m.fills[1].FillDens, 1025.0);
+  ASSERT_EQ(m.member_coefs.size(), 25u);
+  EXPECT_EQ(m.memberCoef(23)->line, 169);
+  EXPECT_EQ(m.SimplCa, 0.0);
+  EXPECT_EQ(m.axialCoef(2)->AxCa, 0.0);
+}
+
+// OpenFAST v4.1 names the member-based table's count NCoefMembersCyl: the same rows.
+TEST(HydroDynMembers, MemberCoefficientsUnderTheV41Key) {
+  const test::TempDir dir;
+  const std::string f = test::editedCopy(dir, kSemi, "hd.dat", "NCoefMembers       - Number",
+                                         "NCoefMembersCyl    - Number");
+  EXPECT_EQ(read(f).geometry.member_coefs.size(), 25u);
 }
 
 TEST(HydroDynMembers, MalformedRowsNameTheirLine) {
