@@ -95,6 +95,20 @@ TEST(CliOffshore, Oc3MonopileCampbell) {
   EXPECT_THAT(csv, HasSubstr("\n12,"));  // to 12 rpm
 }
 
+// A copy of cases/oc3_monopile in `dir`/deck with `from` replaced by `to` in its file `file`.
+void monopileCopyWith(const std::filesystem::path& dir, const std::string& file, const std::string& from,
+                      const std::string& to) {
+  std::filesystem::copy(std::string(WHIRL_SOURCE_DIR) + "/cases/oc3_monopile", dir / "deck",
+                        std::filesystem::copy_options::recursive);
+  const auto path = dir / "deck/5MW_Baseline" / file;
+  std::filesystem::permissions(path, std::filesystem::perms::owner_write, std::filesystem::perm_options::add);
+  std::string text = test::slurp(path);
+  const std::size_t at = text.find(from);
+  ASSERT_NE(at, std::string::npos) << from;
+  text.replace(at, from.size(), to);
+  std::ofstream(path) << text;
+}
+
 // HydroDyn's strip theory on the SubDyn pile runs as shipped (the deck's CompHydro = 1); a HydroDyn
 // member that does not follow the substructure's members stops on one line naming its row.
 TEST(CliOffshore, HydroDynOnASubstructure) {
@@ -102,15 +116,8 @@ TEST(CliOffshore, HydroDynOnASubstructure) {
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_THAT(r.out, HasSubstr("tower SS 1"));
   const auto dir = test::freshDir("oc3_monopile_hydro_off");
-  std::filesystem::copy(std::string(WHIRL_SOURCE_DIR) + "/cases/oc3_monopile", dir / "deck",
-                        std::filesystem::copy_options::recursive);
-  const auto hd = dir / "deck/5MW_Baseline/NRELOffshrBsline5MW_OC3Monopile_HydroDyn.dat";
-  std::filesystem::permissions(hd, std::filesystem::perms::owner_write, std::filesystem::perm_options::add);
-  std::string text = test::slurp(hd);
-  const std::string from = "    2     0.00000     0.00000    10.00000";
-  ASSERT_NE(text.find(from), std::string::npos);
-  text.replace(text.find(from), from.size(), "    2     1.00000     0.00000    10.00000");
-  std::ofstream(hd) << text;
+  monopileCopyWith(dir, "NRELOffshrBsline5MW_OC3Monopile_HydroDyn.dat", "    2     0.00000     0.00000    10.00000",
+                   "    2     1.00000     0.00000    10.00000");
   const auto bad = test::whirl("modes " + (dir / "deck/Test19.fst").string() + " --set CompAero=0");
   EXPECT_EQ(bad.code, 1);
   EXPECT_THAT(bad.err, HasSubstr("HydroDyn.dat:120: MemberID: member 1: "));
@@ -121,15 +128,9 @@ TEST(CliOffshore, HydroDynOnASubstructure) {
 // A member of zero length in a copy of the deck: file, line and key, exit code 1, no output files.
 TEST(CliOffshore, ZeroLengthSubDynMemberStopsWithItsPlace) {
   const auto dir = test::freshDir("oc3_monopile_bad");
-  std::filesystem::copy(std::string(WHIRL_SOURCE_DIR) + "/cases/oc3_monopile", dir / "deck",
-                        std::filesystem::copy_options::recursive);
-  const auto sd = dir / "deck/5MW_Baseline/NRELOffshrBsline5MW_OC3Monopile_SubDyn.dat";
-  std::filesystem::permissions(sd, std::filesystem::perms::owner_write, std::filesystem::perm_options::add);
-  std::string text = test::slurp(sd);
-  const std::string joint2 = "   2              0.00000                0.00000              -10.00000";
-  text.replace(text.find(joint2), joint2.size(),
-               "   2              0.00000                0.00000              -20.00010");
-  std::ofstream(sd) << text;
+  monopileCopyWith(dir, "NRELOffshrBsline5MW_OC3Monopile_SubDyn.dat",
+                   "   2              0.00000                0.00000              -10.00000",
+                   "   2              0.00000                0.00000              -20.00010");
   const auto out = dir / "out";
   const auto r = test::whirl("linearize deck/Test19.fst" + kMonopileSets + " --out '" + out.string() + "'",
                              dir.string());

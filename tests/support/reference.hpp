@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "linearize/linearize.hpp"
+#include "modal/modes.hpp"
 #include "src/io/case_file.hpp"
 #include "src/io/csv.hpp"
 
@@ -83,6 +84,15 @@ inline int dofIndex(const LinearModel& l, const std::string& name) {
   for (size_t i = 0; i < l.dof_names.size(); ++i)
     if (l.dof_names[i] == name) return static_cast<int>(i);
   throw std::runtime_error("no DOF " + name);
+}
+
+/// The frequency [Hz] of the mode in which coordinate `dof` has its largest participation.
+inline double frequencyOf(const std::vector<Mode>& modes, const LinearModel& l, const std::string& dof) {
+  const int i = dofIndex(l, dof);
+  std::size_t best = 0;
+  for (std::size_t k = 1; k < modes.size(); ++k)
+    if (modes[k].participation(i) > modes[best].participation(i)) best = k;
+  return modes[best].freq_hz;
 }
 
 }  // namespace whirl::test

@@ -107,14 +107,8 @@ TEST(Oc4Semi, PlatformFrequenciesParked) {
   for (std::size_t k = 0; k < modes.size() && k < 8; ++k)
     std::printf("mode %2zu %9.6f Hz  zeta %6.3f  %s\n", k + 1, modes[k].freq_hz, modes[k].damping_ratio,
                 modes[k].name.c_str());
-  auto freqOf = [&](const char* dof) {
-    const int i = test::dofIndex(lin, dof);
-    std::size_t best = 0;
-    for (std::size_t k = 1; k < modes.size(); ++k)
-      if (modes[k].participation(i) > modes[best].participation(i)) best = k;
-    return modes[best].freq_hz;
-  };
-  EXPECT_NEAR(freqOf("platform surge"), freqOf("platform sway"), 1e-3 * freqOf("platform surge"));
+  const double surge = test::frequencyOf(modes, lin, "platform surge");
+  EXPECT_NEAR(surge, test::frequencyOf(modes, lin, "platform sway"), 1e-3 * surge);
 }
 
 }  // namespace
