@@ -30,7 +30,7 @@ namespace {
 
 constexpr const char* kCase = "oc3_hywind";
 const std::vector<std::string> kSets = {"CompAero=0", "RdtnMod=0", "RotSpeed=0", "GenDOF=False"};
-const char* kPlatform[6] = {"platform surge", "platform sway", "platform heave",
+const char* kPlatform[6] = {"platform surge", "platform sway",  "platform heave",
                             "platform roll",  "platform pitch", "platform yaw"};
 
 Model oc3Model(const std::vector<std::string>& extra = {}) {
@@ -79,6 +79,66 @@ TEST(Oc3Hywind, MooringInAYamlCaseIsTheDecksMooring) {
   const double k11 = lin.K(test::dofIndex(lin, "surge"), test::dofIndex(lin, "surge"));
   EXPECT_NEAR(k11, mooringStiffness()(0, 0), 1e-6 * k11);
   test::expectMatchesReference(kCase, {{"mooring K11 [N/m]", k11}});
+}
+
+// The whole floating turbine written out in YAML from the deck files' numbers (cases/oc3_hywind/
+// oc3_hywind.yaml: platform, WAMIT buoyancy, hydrostatics and added mass, AddCLin/AddBLin, the three
+// catenaries, the ElastoDyn tower's table and polynomials, a rigid rotor–nacelle assembly) against the
+// deck with the same DOFs on. Two independent paths to one model: the deck readers (ElastoDyn, HydroDyn,
+// WAMIT, MAP++) and the case reader.
+//
+// One difference is ElastoDyn's and kept: it puts the tower top at the DOF values themselves, not at the
+// polynomials' tip values, which are 0.9999 (FA 1) and 1.0001 (SS 1) for this tower; the YAML beam's top
+// is where its polynomials put it. That moves the first tower modes by 8e-5 (FA 1 up, SS 1 down: the
+// rotor–nacelle mass seen by the mode), and platform roll and pitch, through the tower, by 1.5e-6. The
+// tower damping is written as modal ratios, ElastoDyn's keeps the FA 1–FA 2 stiffness coupling in its
+// damping matrix: as written, damping ratios are compared on the platform only. With ElastoDyn's tower
+// top and damping matrix put on the YAML model, all ten frequencies agree to 1e-7 (9 digits in practice)
+// and damping ratios to 1e-6: surge and sway are a pair 1.2e-5 apart, which the last printed digits of
+// the YAML's anchors (1e-7 m) turn slightly (ζ of the first by 1.5e-7; the rest agree to 1e-8).
+namespace {
+
+std::vector<Mode> modesOf(const Model& m) {
+  const OperatingPoint op = solveOperatingPoint(m, initialPoint(m));
+  const LinearModel lin = linearize(m, op);
+  EXPECT_LT(lin.residual.lpNorm<Eigen::Infinity>(), 1e-3) << "not an equilibrium";
+  return computeModes(lin.M, lin.C, lin.K, lin.dof_names);
+}
+
+// Frequencies to a relative tolerance (platform modes, tower modes), damping ratios to an absolute one
+// (the platform's; the tower's too when both models have one tower damping matrix).
+void expectSameModes(const std::vector<Mode>& a, const std::vector<Mode>& b, double platform_tol, double tower_tol,
+                     double zeta_tol, bool tower_damping) {
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    const bool platform = k < 6;  // the six platform modes are the lowest (0.008–0.12 Hz; tower ≥ 0.48 Hz)
+    std::printf("mode %2zu %.9f %.9f Hz  zeta %.8f %.8f\n", k + 1, a[k].freq_hz, b[k].freq_hz, a[k].damping_ratio,
+                b[k].damping_ratio);
+    EXPECT_NEAR(a[k].freq_hz, b[k].freq_hz, (platform ? platform_tol : tower_tol) * b[k].freq_hz) << "mode " << k + 1;
+    if (platform || tower_damping) {
+      EXPECT_NEAR(a[k].damping_ratio, b[k].damping_ratio, zeta_tol) << "mode " << k + 1;
+    }
+  }
+}
+
+}  // namespace
+
+TEST(Oc3Hywind, YamlCaseGivesTheDecksModes) {
+  const Model deck = oc3Model({"FlapDOF1=False", "FlapDOF2=False", "EdgeDOF=False", "DrTrDOF=False", "YawDOF=False"});
+  Model yaml = readCase(std::string(WHIRL_SOURCE_DIR) + "/cases/oc3_hywind/oc3_hywind.yaml");
+  const std::vector<Mode> d = modesOf(deck);
+  ASSERT_EQ(d.size(), 10u);
+  expectSameModes(modesOf(yaml), d, 5e-6, 2e-4, 1e-6, false);
+
+  // ElastoDyn's tower top (elastodyn_tower.cpp) on the YAML tower: shapes FA 1, SS 1, FA 2, SS 2 move the
+  // top by one unit along body z, y, z, y.
+  Body& tower = yaml.bodies[static_cast<std::size_t>(*yaml.findBody("tower"))];
+  ASSERT_EQ(tower.points.size(), 1u);
+  for (int i = 0; i < 4; ++i) {
+    tower.points[0].P.col(1 + i) << 0.0, i % 2 == 1 ? 1.0 : 0.0, i % 2 == 0 ? 1.0 : 0.0;
+  }
+  tower.elastic.D = deck.bodies[static_cast<std::size_t>(*deck.findBody("tower"))].elastic.D;
+  expectSameModes(modesOf(yaml), d, 1e-7, 1e-7, 1e-6, true);
 }
 
 TEST(Oc3Hywind, PlatformFrequenciesParked) {
