@@ -1,4 +1,5 @@
 #pragma once
+// clang-format off
 /// \file
 /// Upper bounds on every count whirl reads from an input file or the command line, in one place.
 ///
@@ -13,19 +14,24 @@
 /// |---|---|---|
 /// | kMaxElastoDynNodes | 1000 | ElastoDyn `TwrNodes`, `BldNodes` |
 /// | kMaxFemElements | 500 | `fem_beam` `elements:` of a YAML case |
-/// | kMaxFemBodyCoordinates | 1200 | the coordinates one FE body (`fem_beam`, SubDyn) brings: every free DOF unreduced
-/// | | kMaxFemShapeElements | 200 | `shapes: {from: fem, elements:}` (a 2D beam for mode shapes) | | kMaxFemShapeMesh |
-/// 300 | the elements of that beam once every property station is a node | | kMaxReducedModes | 1000 | Craig–Bampton
-/// `modes:` of a `fem_beam` | | kMaxIntegrationPoints | 10000 | beam `integration: {method: trapezoid or midpoint, n:}`
-/// | | kMaxGaussPoints | 500 | beam `integration: {method: gauss, n:}` | | kMaxFemShapeMode | 50 | mode numbers of FE
-/// shapes (`shapes: {from: fem, modes: [{mode:}]}`) | | kMaxAnalyticShapeMode | 1000 | mode numbers of analytic shapes
-/// (`clamped_topmass`, `torsion_sine`) | | kMaxLinDimension | 100000 | `.lin` header counts (states, inputs, outputs)
-/// and matrix sizes `A: n x m` | | kMaxSweepPoints | 100000 | `--rpm START:STEP:STOP` points, `--schedule` rows | |
-/// kMaxAzimuths | 3600 | `--azimuths N` (CLI::Range in src/cli/cmd_*.cpp) | | kMaxSubDynJoints | 2000 | SubDyn
-/// `NJoints` (and `NReact`, `NInterf`, `NCmass`, which list joints) | | kMaxSubDynMembers | 2000 | SubDyn `NMembers`;
-/// with `NDiv` at most kMaxFemElements elements in all | | kMaxSubDynNDiv | 100 | SubDyn `NDiv` | | kMaxSubDynPropSets
-/// | 2000 | SubDyn property-set counts (`NPropSets`, `NXPropSets`) | | kMaxReducedModes | 1000 | SubDyn `Nmodes` too |
+/// | kMaxFemBodyCoordinates | 1200 | the coordinates one FE body (`fem_beam`, SubDyn) brings: every free DOF unreduced |
+/// | kMaxFemShapeElements | 200 | `shapes: {from: fem, elements:}` (a 2D beam for mode shapes) |
+/// | kMaxFemShapeMesh | 300 | the elements of that beam once every property station is a node |
+/// | kMaxReducedModes | 1000 | Craig–Bampton `modes:` of a `fem_beam`; SubDyn `Nmodes` |
+/// | kMaxIntegrationPoints | 10000 | beam `integration: {method: trapezoid or midpoint, n:}` |
+/// | kMaxGaussPoints | 500 | beam `integration: {method: gauss, n:}` |
+/// | kMaxFemShapeMode | 50 | mode numbers of FE shapes (`shapes: {from: fem, modes: [{mode:}]}`) |
+/// | kMaxAnalyticShapeMode | 1000 | mode numbers of analytic shapes (`clamped_topmass`, `torsion_sine`) |
+/// | kMaxLinDimension | 100000 | `.lin` header counts (states, inputs, outputs) and matrix sizes `A: n x m` |
+/// | kMaxSweepPoints | 100000 | `--rpm START:STEP:STOP` points, `--schedule` rows |
+/// | kMaxAzimuths | 3600 | `--azimuths N` (CLI::Range in src/cli/cmd_*.cpp) |
 /// | kMaxRadiationStates | 1000 | HydroDyn's radiation states N, line 3 of the WAMIT `.ss` file |
+/// | kMaxHydroDynJoints, kMaxHydroDynPropSets, kMaxHydroDynMembers | 10000 | HydroDyn `NJoints`, `NPropSets`, `NMembers` (`NFillGroups` lists members) |
+/// | kMaxSubDynJoints | 2000 | SubDyn `NJoints` (and `NReact`, `NInterf`, `NCmass`, which list joints) |
+/// | kMaxSubDynMembers | 2000 | SubDyn `NMembers`; with `NDiv` at most kMaxFemElements elements in all |
+/// | kMaxSubDynNDiv | 100 | SubDyn `NDiv` |
+/// | kMaxSubDynPropSets | 2000 | SubDyn property-set counts (`NPropSets`, `NXPropSets`) |
+// clang-format on
 namespace whirl::limits {
 
 inline constexpr int kMaxElastoDynNodes = 1000;
