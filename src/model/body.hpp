@@ -34,10 +34,10 @@ struct BodyInertia {
   /// finalize so that the hot loops skip the zero blocks of S.
   std::array<int, 3> len = {0, 0, 0};
   MatX Strace;  ///< Σ_k S_kk (nc × nc): the elastic mass block; set by finalize
-  /// The nonzero entries of S[3j+l] within len[j] × len[l] and of Strace, column by column (so a
-  /// product S x sums each row in the order of the dense loop); set by finalize. The ElastoDyn bodies'
-  /// integrals are mostly zeros (NREL 5MW: 121 of the tower's 576 active entries, 169 of a blade's
-  /// 324), and the basis products of every residual visit only these.
+  /// The nonzero entries of S[3j+l] within len[j] × len[l] and of Strace, row by row and in each row
+  /// by column (so a product S x sums each row in the order of the dense loop); set by finalize. The
+  /// ElastoDyn bodies' integrals are mostly zeros (NREL 5MW: 121 of the tower's 576 active entries,
+  /// 169 of a blade's 324), and the basis products of every residual visit only these.
   std::array<std::vector<ShapeIntegralEntry>, 9> S_nonzero;
   std::vector<ShapeIntegralEntry> Strace_nonzero;
 

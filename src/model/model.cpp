@@ -54,8 +54,8 @@ void setActiveLengths(BodyInertia& in) {
   in.Strace = in.S[0] + in.S[4] + in.S[8];
   auto nonzeros = [](const MatX& S, int rows, int cols) {
     std::vector<ShapeIntegralEntry> out;
-    for (int c = 0; c < cols; ++c)
-      for (int r = 0; r < rows; ++r)
+    for (int r = 0; r < rows; ++r)
+      for (int c = 0; c < cols; ++c)
         if (S(r, c) != 0.0) out.push_back({r, c, S(r, c)});
     return out;
   };
