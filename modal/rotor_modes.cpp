@@ -184,8 +184,19 @@ RotorCoordinates linearCoordinates(const Model& m, const LinearModel& first, con
     c.held.push_back(std::find(held.begin(), held.end(), first.dofs[i]) != held.end());
     c.teeter.push_back(first.dofs[i] == m.roles.teeter_dof);
   }
-  // Shapes are in multiblade coordinates: weigh them by the diagonal of M (blade entries alike).
-  c.weights = first.M.diagonal().asDiagonal();
+  // Shapes are in multiblade coordinates: blade coordinates weigh by their diagonal of M (blade entries
+  // alike). The fixed-frame coordinates keep their whole mass block: on a floating platform the first
+  // tower shapes move with platform pitch and surge through large off-diagonal masses, and by the
+  // diagonal alone the platform's inertia times its small motion would name the first tower mode
+  // after the platform (its kinetic-energy share with the coupling is a few per cent).
+  c.weights = first.M;
+  for (int i = 0; i < n; ++i) {
+    if (c.blade[i] < 0) continue;
+    const double d = first.M(i, i);
+    c.weights.row(i).setZero();
+    c.weights.col(i).setZero();
+    c.weights(i, i) = d;
+  }
   const int nz = static_cast<int>(first.first_order_names.size());
   if (nz == 0) return c;
   c.groups = c.names;

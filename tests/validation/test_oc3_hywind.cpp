@@ -21,6 +21,7 @@
 
 #include "linearize/linearize.hpp"
 #include "modal/modes.hpp"
+#include "modal/rotor_modes.hpp"
 #include "src/io/case_file.hpp"
 #include "src/turbine/elastodyn_model.hpp"
 #include "tests/support/reference.hpp"
@@ -156,6 +157,35 @@ TEST(Oc3Hywind, PlatformFrequenciesParked) {
   for (int d : {2, 5})  // heave, yaw: the rows that agree (header comment)
     computed[std::string(keys[d]) + " [Hz]"] = test::frequencyOf(modes, lin, kPlatform[d]);
   test::expectMatchesReference(kCase, computed);
+}
+
+// Naming in multiblade coordinates (what `whirl modes` prints with blades and `whirl campbell` draws):
+// the first tower modes of the floating turbine move with platform pitch and surge (roll and sway)
+// through large off-diagonal masses. Weighted by the diagonal of M alone, the platform's inertia times
+// its small motion took the first tower modes' names ("platform pitch (2)" at 0.47 Hz, README of
+// 2026-11-27); with the fixed-frame mass block the kinetic-energy shares name them after the tower.
+TEST(Oc3Hywind, MultibladeModesNameTheFirstTowerModesAfterTheTower) {
+  const Model m = oc3Model();
+  const OperatingPoint op = solveOperatingPoint(m, initialPoint(m));
+  const LinearModel lin = linearize(m, op);
+  // Parked, so the physical coordinates' modes (the full M's kinetic-energy shares, blade by blade) are
+  // the same modes: an independent naming path.
+  const std::vector<Mode> physical = computeModes(lin.M, lin.C, lin.K, lin.dof_names);
+  const RotorModes r = linearModelModes(m, lin, op.held);
+  for (const char* name : {"tower FA 1", "tower SS 1"}) {
+    const auto in = [&](const std::vector<Mode>& modes) {
+      std::vector<double> f;
+      for (const Mode& md : modes)
+        if (md.name == name) f.push_back(md.freq_hz);
+      return f;
+    };
+    const std::vector<double> a = in(r.modes), b = in(physical);
+    ASSERT_EQ(a.size(), 1u) << name;
+    ASSERT_EQ(b.size(), 1u) << name;
+    std::printf("%s: %.5f Hz (multiblade), %.5f Hz (physical)\n", name, a[0], b[0]);
+    EXPECT_NEAR(a[0], b[0], 1e-9 * b[0]) << name;
+    EXPECT_GT(a[0], 0.4) << name;  // above the platform's rigid-body modes (≤ 0.12 Hz)
+  }
 }
 
 // The mean offset under a steady rotor thrust comes out of the operating point: the catenaries are
