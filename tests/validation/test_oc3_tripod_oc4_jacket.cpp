@@ -10,7 +10,7 @@
 //   one of the first coupled frequencies falls (Rayleigh);
 // - issue 17's cross-check: Craig–Bampton with the deck's modes within 0.5 % of the full FE model on the
 //   first 10 coupled modes, and Guyan ≥ Craig–Bampton ≥ full FE (Rayleigh–Ritz). The full FE models
-//   (about 1000 coordinates each) take seconds to linearize, hence the Slow suite.
+//   (945 and 1005 coordinates) take 40-50 s each to solve, linearize and eigen-solve: the Slow suite.
 //
 // The decks are read as `whirl modes` reads them with `--set CompAero=0 --set RotSpeed=0 --set
 // GenDOF=False`: parked, no aerodynamics, generator locked, HydroDyn as shipped unless said otherwise.
