@@ -33,9 +33,10 @@ void matvec(const MatX& S, const VecXT<T>& x, int rows, int cols, VecXT<T>& y) {
 }
 
 // y[0..rows) = S x over the nonzero entries of S (BodyInertia::S_nonzero, row by row): each row sums
-// in a register in the order of the dense loop above, so the results are bitwise the same. (Summing
-// into y column by column instead stores and reloads y's entry at every term, a dependency through
-// memory that made these products a quarter of a structural simulation's time.)
+// in a register, term by term in the order of the dense loop above (the compiler does not contract
+// these into FMAs, the column-wise loop's were: equal to round-off, not bitwise). Summing into y
+// column by column stores and reloads y's entry at every term, a dependency through memory that made
+// these products a quarter of a structural simulation's time.
 template <class T>
 void matvec(const std::vector<ShapeIntegralEntry>& S, const VecXT<T>& x, int rows, VecXT<T>& y) {
   T* __restrict yd = y.data();
