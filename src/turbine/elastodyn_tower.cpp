@@ -54,6 +54,10 @@ ElastoDynTowerBeam elastoDynTowerBeam(const io::ElastoDynInput& ed) {
   return t;
 }
 
+void placeTowerTopAtDofValues(BodyPoint& top) {
+  for (int i = 0; i < 4; ++i) top.P.col(1 + i) << 0.0, i % 2 == 1 ? 1.0 : 0.0, i % 2 == 0 ? 1.0 : 0.0;
+}
+
 namespace elastodyn {
 
 TowerParts addTower(Builder& b, const PlatformParts& platform) {
@@ -91,11 +95,8 @@ TowerParts addTower(Builder& b, const PlatformParts& platform) {
   t.inertia = bb.inertia;
   t.elastic.K = applyStiffnessTuners(bb.elastic.K, tuner);
   t.elastic.D = elastoDynModalDamping(t.elastic.K, mass, zeta);
-  // ElastoDyn puts the tower top at the DOF values themselves (CalculatePositions: rZO = (q_FA1 + q_FA2) a1
-  // + (q_SS1 + q_SS2) a3 + axial shortening), not at the polynomials' tip values: the NREL 5MW SS
-  // coefficients sum to 0.9999 and 0.999. Its top rotation does use the polynomial slopes.
   BodyPoint top = beamPoint(p, shapes, o.axial_shortening, L, "top");
-  for (int i = 0; i < 4; ++i) top.P.col(1 + i) << 0.0, i % 2 == 1 ? 1.0 : 0.0, i % 2 == 0 ? 1.0 : 0.0;
+  placeTowerTopAtDofValues(top);
   t.points.push_back(std::move(top));
   TowerParts out;
   out.body = b.addBody(std::move(t));

@@ -24,6 +24,7 @@
 #include "modal/rotor_modes.hpp"
 #include "src/io/case_file.hpp"
 #include "src/turbine/elastodyn_model.hpp"
+#include "src/turbine/elastodyn_tower_beam.hpp"
 #include "tests/support/reference.hpp"
 
 namespace whirl {
@@ -100,8 +101,7 @@ TEST(Oc3Hywind, MooringInAYamlCaseIsTheDecksMooring) {
 namespace {
 
 std::vector<Mode> modesOf(const Model& m) {
-  const OperatingPoint op = solveOperatingPoint(m, initialPoint(m));
-  const LinearModel lin = linearize(m, op);
+  const LinearModel lin = test::linearizeAtEquilibrium(m);
   EXPECT_LT(lin.residual.lpNorm<Eigen::Infinity>(), 1e-3) << "not an equilibrium";
   return computeModes(lin.M, lin.C, lin.K, lin.dof_names);
 }
@@ -131,13 +131,10 @@ TEST(Oc3Hywind, YamlCaseGivesTheDecksModes) {
   ASSERT_EQ(d.size(), 10u);
   expectSameModes(modesOf(yaml), d, 5e-6, 2e-4, 1e-6, false);
 
-  // ElastoDyn's tower top (elastodyn_tower.cpp) on the YAML tower: shapes FA 1, SS 1, FA 2, SS 2 move the
-  // top by one unit along body z, y, z, y.
+  // ElastoDyn's tower top on the YAML tower (its shapes are FA 1, SS 1, FA 2, SS 2, as ElastoDyn's).
   Body& tower = yaml.bodies[static_cast<std::size_t>(*yaml.findBody("tower"))];
   ASSERT_EQ(tower.points.size(), 1u);
-  for (int i = 0; i < 4; ++i) {
-    tower.points[0].P.col(1 + i) << 0.0, i % 2 == 1 ? 1.0 : 0.0, i % 2 == 0 ? 1.0 : 0.0;
-  }
+  placeTowerTopAtDofValues(tower.points[0]);
   tower.elastic.D = deck.bodies[static_cast<std::size_t>(*deck.findBody("tower"))].elastic.D;
   expectSameModes(modesOf(yaml), d, 1e-7, 1e-7, 1e-6, true);
 }
