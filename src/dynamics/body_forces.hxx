@@ -32,26 +32,22 @@ void matvec(const MatX& S, const VecXT<T>& x, int rows, int cols, VecXT<T>& y) {
   }
 }
 
-// y[0..rows) = S x over the nonzero entries of S (BodyInertia::S_nonzero, row by row): each row sums
-// in a register, term by term in the order of the dense loop above (the compiler does not contract
-// these into FMAs, the column-wise loop's were: equal to round-off, not bitwise). Summing into y
-// column by column stores and reloads y's entry at every term, a dependency through memory that made
-// these products a quarter of a structural simulation's time.
+// y[0..rows) = S x over the nonzero block of S (BodyInertia::S_block): the other rows are zero; each
+// row of the block sums a fixed number of terms in a register, in the order of the dense loop above
+// (not FMA-contracted: equal to it to round-off). Visiting the nonzeros one by one instead branched
+// on every row's end, unpredictably: these products were a quarter of a structural simulation's time.
 template <class T>
-void matvec(const std::vector<ShapeIntegralEntry>& S, const VecXT<T>& x, int rows, VecXT<T>& y) {
+void matvec(const ShapeIntegralBlock& S, const VecXT<T>& x, int rows, VecXT<T>& y) {
   T* __restrict yd = y.data();
   const T* __restrict xd = x.data();
   for (int i = 0; i < rows; ++i) yd[i] = T(0);
-  const ShapeIntegralEntry* __restrict e = S.data();
-  const ShapeIntegralEntry* const end = e + S.size();
-  while (e != end) {
-    const int r = e->row;
+  const int nr = static_cast<int>(S.rows.size()), ncol = static_cast<int>(S.cols.size());
+  const int* __restrict cols = S.cols.data();
+  const double* __restrict v = S.values.data();
+  for (int a = 0; a < nr; ++a, v += ncol) {
     T sum(0);
-    do {
-      sum += e->value * xd[e->col];
-      ++e;
-    } while (e != end && e->row == r);
-    yd[r] = sum;
+    for (int b = 0; b < ncol; ++b) sum += v[b] * xd[cols[b]];
+    yd[S.rows[static_cast<std::size_t>(a)]] = sum;
   }
 }
 
@@ -60,7 +56,7 @@ template <class T>
 void shapeProduct(const BodyInertia& in, int k, const VecXT<T>& x, VecXT<T>& y) {
   const int rows = in.len[k / 3], cols = in.len[k % 3];
   if (in.Strace.rows() == in.nc())
-    matvec(in.S_nonzero[k], x, rows, y);
+    matvec(in.S_block[k], x, rows, y);
   else
     matvec(in.S[k], x, rows, cols, y);
 }
@@ -120,7 +116,7 @@ void basisRateProducts(const BodyInertia& in, const VecXT<TR>& cd, const VecXT<T
   if (in.ne == 0) return;
   const int nc = in.nc();
   if (in.Strace.rows() == nc) {
-    detail::matvec(in.Strace_nonzero, cdd, nc, p.scdd);
+    detail::matvec(in.Strace_block, cdd, nc, p.scdd);
   } else {  // a body that was never finalized
     for (int r = 0; r < nc; ++r) p.scdd(r) = TR(0);
     for (int k = 0; k < 3; ++k) {
@@ -196,6 +192,32 @@ void frameForces(const BodyInertia& in, const BasisProducts<TQ, TR>& p, const Ma
     for (int r = 0; r < nc; ++r) s += D(r, j) * G(r);
     H[j] = -s;
   }
+}
+
+/// Stage 2 of a rigid body (ne = 0, c = [1]), whose stage 1 is constant: m1c = m1, Pc(l, j) = S_lj,
+/// and no rate terms. The same sums as frameForces without the zero terms (and without the nine
+/// 1 × 1 products a rigid body's stage 1 would evaluate at every residual: five of the NREL 5MW
+/// deck's nine bodies are rigid).
+template <class T>
+void rigidFrameForces(const BodyInertia& in, const Vec3T<T>& ahat, const Vec3T<T>& alpha, const Vec3T<T>& omega,
+                      Vec3T<T>& F, Vec3T<T>& Tq) {
+  const Mat3T<T> W = skew(omega);
+  const Mat3T<T> A = skew(alpha) + W * W;
+  for (int k = 0; k < 3; ++k) {
+    T s = in.mass * ahat(k);
+    for (int l = 0; l < 3; ++l) s += A(k, l) * in.m1(l, 0);
+    F(k) = -s;
+  }
+  Mat3T<T> Qt;
+  for (int k = 0; k < 3; ++k)
+    for (int j = 0; j < 3; ++j) {
+      T s = ahat(k) * in.m1(j, 0);
+      for (int l = 0; l < 3; ++l) s += A(k, l) * in.S[3 * l + j](0, 0);
+      Qt(k, j) = s;
+    }
+  Tq(0) = -(Qt(2, 1) - Qt(1, 2));
+  Tq(1) = -(Qt(0, 2) - Qt(2, 0));
+  Tq(2) = -(Qt(1, 0) - Qt(0, 1));
 }
 
 }  // namespace whirl

@@ -101,6 +101,7 @@ void massMatrix(const Model& m, Workspace<double>& ws, const VecX& q, MatX& M) {
   M.setZero(n, n);
   for (size_t i = 0; i < m.bodies.size(); ++i) {
     const Body& b = m.bodies[i];
+    if (b.inertia.massless && b.inertia.ne == 0) continue;  // no entries
     const FrameState<double>& f = ws.frames[i];
     const std::vector<int>& sup = m.support[i];
     const int ne = b.inertia.ne, nsup = static_cast<int>(sup.size());

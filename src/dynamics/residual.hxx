@@ -55,6 +55,10 @@ void bodyInertiaForces(const Model& m, int i, Workspace<T>& ws, const VecXT<T>& 
   const Body& b = m.bodies[i];
   const BodyInertia& in = b.inertia;
   const BasisState<T>& bs = ws.basis[i];
+  if (in.ne == 0) {
+    rigidFrameForces(in, ahat, alpha, omega, F, Tq);
+    return;
+  }
   if constexpr (std::is_same_v<T, double>) {
     basisProducts(in, bs.c, bs.cd, bs.cdd, ws.prod);
     frameForces(in, ws.prod, bs.D, ahat, alpha, omega, ws.g, F, Tq, H);
@@ -145,6 +149,7 @@ bool residual(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T
   T* H = ws.h.data();  // elastic forces of one body (sized to the largest ne)
   for (int i = 0; i < nb; ++i) {
     const Body& b = m.bodies[i];
+    if (b.inertia.massless && b.inertia.ne == 0) continue;  // no inertia forces
     if constexpr (!std::is_same_v<T, double>)
       if (pass.derivativesOnly() && !detail::bodyVaries(m, i, q, qd, qdd)) {
         complete = false;

@@ -17,10 +17,11 @@
 
 namespace whirl {
 
-/// A nonzero entry of a shape integral S_jl.
-struct ShapeIntegralEntry {
-  int row = 0, col = 0;
-  double value = 0;
+/// The nonzero part of a shape integral S_jl as a dense block: the rows and columns of S that hold a
+/// nonzero entry, and S on them, row by row (rows.size() × cols.size()).
+struct ShapeIntegralBlock {
+  std::vector<int> rows, cols;
+  std::vector<double> values;
 };
 
 /// Shape integrals of one body (body frame, SI units).
@@ -34,12 +35,17 @@ struct BodyInertia {
   /// finalize so that the hot loops skip the zero blocks of S.
   std::array<int, 3> len = {0, 0, 0};
   MatX Strace;  ///< Σ_k S_kk (nc × nc): the elastic mass block; set by finalize
-  /// The nonzero entries of S[3j+l] within len[j] × len[l] and of Strace, row by row and in each row
-  /// by column (so a product S x sums each row in the order of the dense loop); set by finalize. The
+  /// The nonzero blocks of S[3j+l] within len[j] × len[l] and of Strace; set by finalize. The
   /// ElastoDyn bodies' integrals are mostly zeros (NREL 5MW: 121 of the tower's 576 active entries,
-  /// 169 of a blade's 324), and the basis products of every residual visit only these.
-  std::array<std::vector<ShapeIntegralEntry>, 9> S_nonzero;
-  std::vector<ShapeIntegralEntry> Strace_nonzero;
+  /// 169 of a blade's 324), but each P_j has a support — the basis entries it uses (the tower's P_x:
+  /// the constant and the six same-plane products) — and S_jl is dense on support j × support l: the
+  /// basis products of every residual are small dense products with a fixed number of terms per row.
+  std::array<ShapeIntegralBlock, 9> S_block;
+  ShapeIntegralBlock Strace_block;
+
+  /// No mass and no inertia (m = 0, m1 = 0, S = 0: an ElastoDyn yaw bearing or low-speed shaft frame):
+  /// no inertia forces, no mass matrix entries; set by finalize.
+  bool massless = false;
 
   /// Length of c: 1 + ne (+ ne(ne+1)/2 when quadratic).
   int nc() const { return 1 + ne + (quadratic ? ne * (ne + 1) / 2 : 0); }

@@ -52,16 +52,21 @@ void setActiveLengths(BodyInertia& in) {
     in.len[j] = len;
   }
   in.Strace = in.S[0] + in.S[4] + in.S[8];
-  auto nonzeros = [](const MatX& S, int rows, int cols) {
-    std::vector<ShapeIntegralEntry> out;
+  in.massless = in.mass == 0.0 && in.m1.isZero(0);
+  for (const MatX& S : in.S) in.massless = in.massless && S.isZero(0);
+  auto block = [](const MatX& S, int rows, int cols) {
+    ShapeIntegralBlock b;
     for (int r = 0; r < rows; ++r)
-      for (int c = 0; c < cols; ++c)
-        if (S(r, c) != 0.0) out.push_back({r, c, S(r, c)});
-    return out;
+      if (!S.row(r).head(cols).isZero(0)) b.rows.push_back(r);
+    for (int c = 0; c < cols; ++c)
+      if (!S.col(c).head(rows).isZero(0)) b.cols.push_back(c);
+    for (int r : b.rows)
+      for (int c : b.cols) b.values.push_back(S(r, c));
+    return b;
   };
   for (int j = 0; j < 3; ++j)
-    for (int l = 0; l < 3; ++l) in.S_nonzero[3 * j + l] = nonzeros(in.S[3 * j + l], in.len[j], in.len[l]);
-  in.Strace_nonzero = nonzeros(in.Strace, nc, nc);
+    for (int l = 0; l < 3; ++l) in.S_block[3 * j + l] = block(in.S[3 * j + l], in.len[j], in.len[l]);
+  in.Strace_block = block(in.Strace, nc, nc);
 }
 
 void checkInertia(const Body& b) {
