@@ -399,8 +399,14 @@ BemSolution solveInflow(const BemStation& s, double Vx, double Vy, const BemOpti
     // two or three residuals instead of four or five. Where that bracket holds one root, this is the
     // root the bracketed search finds; steps that leave the bracket or stall fall back to it.
     // (A bracket's ends are in AeroDyn's order: lower > upper for Vx < 0.)
+    // Not with the in-plane flow against the rotation (Vx > 0, Vy < 0): there the first bracket can
+    // hold a pair of valid roots between ends of one sign, which AeroDyn's search passes over (to the
+    // geometric angle when no other bracket holds a valid root) and the secant steps would reach.
+    // Where the bracket holds several roots and its ends change sign, the hint can still reach another
+    // root than Brent's (README, Aerodynamics).
     const double first_lo = std::min(regions[0][0], regions[0][1]), first_hi = std::max(regions[0][0], regions[0][1]);
-    if (phi_hint && *phi_hint > first_lo && *phi_hint < first_hi) {
+    const bool reversed = Vx > 0 && Vy < 0;
+    if (phi_hint && !reversed && *phi_hint > first_lo && *phi_hint < first_hi) {
       auto Rp = [&](double p) { return R(p).residual; };
       double slope = slope_hint;
       const UnbracketedRoot r = secantInside(Rp, first_lo, first_hi, *phi_hint, o.tolerance, o.phi_tolerance, slope);

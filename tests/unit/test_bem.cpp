@@ -371,6 +371,22 @@ TEST(Bem, NoBracketHoldsAValidRootFallsBackToTheGeometricAngleOrThrows) {
   EXPECT_NEAR(g.phi_out, g.phi, 1e-15);
 }
 
+TEST(Bem, AHintFindsNoRootWhereAeroDynsSearchFindsNone) {
+  // In-plane flow against the rotation (Vx > 0, Vy < 0; a yawed rotor's root): the first bracket's ends
+  // have one sign and it holds a pair of roots; AeroDyn's search passes over it, finds no valid root in the
+  // others and takes the geometric angle. A warm start inside that bracket (the element's last root in a
+  // time simulation) must give the same: secant steps from 1.2 rad reached the root at 1.5676 rad.
+  const BemStation s = station(3.0, 1.0, 0.6, nrelPolars()[2]);
+  const BemSolution cold = solveInflow(s, 7.5, -0.5, BemOptions{});
+  EXPECT_FALSE(cold.valid);
+  EXPECT_NEAR(cold.phi, std::atan2(7.5, -0.5), 1e-15);
+  for (double hint : {0.7, 1.2, 1.5}) {
+    const BemSolution warm = solveInflow(s, 7.5, -0.5, BemOptions{}, hint, 0.0);
+    EXPECT_FALSE(warm.valid) << "hint " << hint << ": phi " << warm.phi;
+    EXPECT_EQ(warm.phi, cold.phi) << "hint " << hint;
+  }
+}
+
 TEST(Bem, NegativeVxZeroVyAndOtherSpecialCasesDoNotThrow) {
   const auto& P = nrelPolars();
   const BemOptions o;
