@@ -62,6 +62,14 @@ void shapeProduct(const BodyInertia& in, int k, const VecXT<T>& x, VecXT<T>& y) 
     matvec(in.S[k], x, rows, cols, y);
 }
 
+// T_i = −ε_ijk Q(j, k) with Qt = Qᵀ, Qt(k, j) = ∫ s_j (a_P)_k dm: the inertia moment about the origin.
+template <class T>
+void momentOfSecondMoments(const Mat3T<T>& Qt, Vec3T<T>& Tq) {
+  Tq(0) = -(Qt(2, 1) - Qt(1, 2));
+  Tq(1) = -(Qt(0, 2) - Qt(2, 0));
+  Tq(2) = -(Qt(1, 0) - Qt(0, 1));
+}
+
 // Σ_k a[k·stride] x(k), k < n.
 template <class T>
 T dot(const double* a, int stride, const VecXT<T>& x, int n) {
@@ -165,9 +173,7 @@ void frameForces(const BodyInertia& in, const BasisProducts<TQ, TR>& p, const Ma
       }
       Qt(k, j) = s;
     }
-  Tq(0) = -(Qt(2, 1) - Qt(1, 2));
-  Tq(1) = -(Qt(0, 2) - Qt(2, 0));
-  Tq(2) = -(Qt(1, 0) - Qt(0, 1));
+  detail::momentOfSecondMoments(Qt, Tq);
   if (in.ne == 0) return;
   const int nc = in.nc();
   const std::array<int, 3>& len = in.len;
@@ -216,9 +222,7 @@ void rigidFrameForces(const BodyInertia& in, const Vec3T<T>& ahat, const Vec3T<T
       for (int l = 0; l < 3; ++l) s += A(k, l) * in.S[3 * l + j](0, 0);
       Qt(k, j) = s;
     }
-  Tq(0) = -(Qt(2, 1) - Qt(1, 2));
-  Tq(1) = -(Qt(0, 2) - Qt(2, 0));
-  Tq(2) = -(Qt(1, 0) - Qt(0, 1));
+  detail::momentOfSecondMoments(Qt, Tq);
 }
 
 }  // namespace whirl
