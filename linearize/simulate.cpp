@@ -51,6 +51,7 @@ struct Problem {
   Workspace<double> ws;
   JacobianWorkspace jw;
   VecX q, qd, qdd, u, e;
+  VecX q_kinematics;  // the coordinates of the kinematics in ws (set by residualFn)
   MatX Mfull;
   std::string ida_message;       // the last message IDA reported
   std::exception_ptr error;      // an exception thrown inside a callback, rethrown after IDASolve
@@ -84,6 +85,17 @@ struct Problem {
     }
   }
 
+  // Mfull at q. IDA asks for the blocks at the iterate whose residual it has just evaluated: the
+  // kinematics in ws are then at q (their positions do not depend on the rates), not evaluated again.
+  void massAtQ() {
+    if (q_kinematics.size() == q.size() && q_kinematics == q) {
+      massMatrixAtKinematics(m, ws, Mfull);
+    } else {
+      massMatrix(m, ws, q, Mfull);
+      q_kinematics = q;
+    }
+  }
+
   void load(double t, const double* y, const double* yp) {
     prescribe(t);
     const int ns = n();
@@ -103,7 +115,9 @@ int residualFn(double t, N_Vector yy, N_Vector yp, N_Vector rr, void* data) {
     const double* d = N_VGetArrayPointer(yp);
     double* r = N_VGetArrayPointer(rr);
     p.load(t, y, d);
+    p.q_kinematics.resize(0);  // invalid should the residual throw
     residual(p.m, p.ws, p.q, p.qd, p.qdd, p.u, p.e);
+    p.q_kinematics = p.q;
     const int ns = p.n();
     bool finite = true;
     for (int k = 0; k < ns; ++k) {
@@ -125,14 +139,14 @@ int iterationBlocks(Problem& p, double t, const double* y, const double* yp, boo
   p.load(t, y, yp);
   const int ns = p.n();
   if (mass_only) {
-    massMatrix(p.m, p.ws, p.q, p.Mfull);
+    p.massAtQ();
     for (int r = 0; r < ns; ++r)
       for (int k = 0; k < ns; ++k) M(r, k) = p.Mfull(p.states[r], p.states[k]);
     return M.allFinite() ? 0 : 1;
   }
   const MatX dq = residualJacobian(p.m, p.jw, p.q, p.qd, p.qdd, p.u, Wrt::Q, p.states);
   const MatX dqd = residualJacobian(p.m, p.jw, p.q, p.qd, p.qdd, p.u, Wrt::Qd, p.states);
-  massMatrix(p.m, p.ws, p.q, p.Mfull);
+  p.massAtQ();
   for (int r = 0; r < ns; ++r)
     for (int k = 0; k < ns; ++k) {
       dedq(r, k) = dq(p.states[r], k);
@@ -149,8 +163,10 @@ void errorHandler(int, const char*, const char*, char* msg, void* data) {
 // ẏ consistent with y at t: q̇ = v, v̇ from M v̇ = e(q, v, 0) (e = F − M q̈).
 void consistentRates(Problem& p, double t, const double* y, double* yp) {
   p.load(t, y, nullptr);
+  p.q_kinematics.resize(0);
   residual(p.m, p.ws, p.q, p.qd, p.qdd, p.u, p.e);
-  massMatrix(p.m, p.ws, p.q, p.Mfull);
+  p.q_kinematics = p.q;
+  p.massAtQ();
   const int ns = p.n();
   MatX M(ns, ns);
   VecX F(ns);

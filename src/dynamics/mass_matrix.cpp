@@ -95,9 +95,13 @@ MatX bodyMassMatrix(const BodyInertia& in, const BasisState<double>& b) {
 
 void massMatrix(const Model& m, Workspace<double>& ws, const VecX& q, MatX& M) {
   assert(q.size() == m.ndof());
+  forwardKinematics(m, ws, q, ws.mass.zero, ws.mass.zero);
+  massMatrixAtKinematics(m, ws, M);
+}
+
+void massMatrixAtKinematics(const Model& m, Workspace<double>& ws, MatX& M) {
   const int n = m.ndof();
   MassScratch& s = ws.mass;
-  forwardKinematics(m, ws, q, s.zero, s.zero);
   M.setZero(n, n);
   for (size_t i = 0; i < m.bodies.size(); ++i) {
     const Body& b = m.bodies[i];

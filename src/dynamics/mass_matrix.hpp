@@ -15,4 +15,10 @@ MatX bodyMassMatrix(const BodyInertia& inertia, const BasisState<double>& basis)
 /// \param[out] M  ndof × ndof, symmetric
 void massMatrix(const Model& model, Workspace<double>& ws, const VecX& q, MatX& M);
 
+/// M at the positions of the kinematics already in ws (forwardKinematics at some q, with any rates:
+/// only R, Jv, Jω, c and D are read): what massMatrix gives at that q, without evaluating the
+/// kinematics again (a simulation's Newton step asks for M where it has just evaluated the residual).
+/// \param[out] M  ndof × ndof, symmetric
+void massMatrixAtKinematics(const Model& model, Workspace<double>& ws, MatX& M);
+
 }  // namespace whirl

@@ -120,9 +120,10 @@ void addInputLoads(const Model& m, const Workspace<TK>& ws, const VecXT<TK>& qd,
     // formed in TK; only the final products carry the scalar of u.
     T scale = detail::inputScale(u, l.input);
     if (gen.active() && l.input == m.roles.generator_torque_input) scale += T(law);
-    // An AD pass in which the scale is zero and carries no derivative gets nothing from the load
-    // (value and derivatives are scale × …): the input loads of a linear model at u = 0.
-    if (valueOf(scale) == 0.0 && !detail::seeded(scale)) continue;
+    // A zero scale that carries no derivative adds nothing (value and derivatives are scale × …):
+    // the input loads of a linear model at u = 0, and in a double evaluation every input at zero
+    // (six unit loads of an ElastoDyn deck, each a projection onto its support, at every residual).
+    if (valueOf(scale) == 0.0 && (std::is_same_v<T, double> || !detail::seeded(scale))) continue;
     const FrameState<TK>& f = ws.frames[l.body];
     Vec3T<TK> Fb, Mb;
     if (l.body_frame) {

@@ -98,6 +98,22 @@ TEST_P(Jacobians, AdMassEqualsAssembledMassMatrix) {
   }
 }
 
+// A simulation's Newton step takes M from the kinematics its residual left in the workspace: the
+// positions there must not depend on the rates the residual was evaluated with.
+TEST_P(Jacobians, MassAtTheResidualsKinematicsEqualsTheMassMatrix) {
+  const Model m = test::richModel(GetParam());
+  Workspace<double> ws(m), fresh(m);
+  for (unsigned seed : {10u, 11u}) {
+    const State s = randomState(m, seed);
+    VecX e(m.ndof());
+    residual(m, ws, s.q, s.qd, s.qdd, s.u, e);
+    MatX at_kinematics, M;
+    massMatrixAtKinematics(m, ws, at_kinematics);
+    massMatrix(m, fresh, s.q, M);
+    EXPECT_EQ((at_kinematics - M).cwiseAbs().maxCoeff(), 0.0) << "seed " << seed;
+  }
+}
+
 TEST_P(Jacobians, ValuesOfAKPassEqualTheDoubleResidual) {
   const Model m = test::richModel(GetParam());
   JacobianWorkspace jw(m);
