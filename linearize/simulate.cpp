@@ -51,7 +51,7 @@ struct Problem {
   Workspace<double> ws;
   JacobianWorkspace jw;
   VecX q, qd, qdd, u, e;
-  VecX q_kinematics;  // the coordinates of the kinematics in ws (set by residualFn)
+  VecX q_kinematics;  // the coordinates of the kinematics in ws (empty: not known)
   MatX Mfull;
   std::string ida_message;       // the last message IDA reported
   std::exception_ptr error;      // an exception thrown inside a callback, rethrown after IDASolve
@@ -85,6 +85,13 @@ struct Problem {
     }
   }
 
+  // e at the loaded q, q̇, q̈, u, recording the coordinates of the kinematics it leaves in ws.
+  void evaluateResidual() {
+    q_kinematics.resize(0);  // not known should the residual throw
+    residual(m, ws, q, qd, qdd, u, e);
+    q_kinematics = q;
+  }
+
   // Mfull at q. IDA asks for the blocks at the iterate whose residual it has just evaluated: the
   // kinematics in ws are then at q (their positions do not depend on the rates), not evaluated again.
   void massAtQ() {
@@ -115,9 +122,7 @@ int residualFn(double t, N_Vector yy, N_Vector yp, N_Vector rr, void* data) {
     const double* d = N_VGetArrayPointer(yp);
     double* r = N_VGetArrayPointer(rr);
     p.load(t, y, d);
-    p.q_kinematics.resize(0);  // invalid should the residual throw
-    residual(p.m, p.ws, p.q, p.qd, p.qdd, p.u, p.e);
-    p.q_kinematics = p.q;
+    p.evaluateResidual();
     const int ns = p.n();
     bool finite = true;
     for (int k = 0; k < ns; ++k) {
@@ -163,9 +168,7 @@ void errorHandler(int, const char*, const char*, char* msg, void* data) {
 // ẏ consistent with y at t: q̇ = v, v̇ from M v̇ = e(q, v, 0) (e = F − M q̈).
 void consistentRates(Problem& p, double t, const double* y, double* yp) {
   p.load(t, y, nullptr);
-  p.q_kinematics.resize(0);
-  residual(p.m, p.ws, p.q, p.qd, p.qdd, p.u, p.e);
-  p.q_kinematics = p.q;
+  p.evaluateResidual();
   p.massAtQ();
   const int ns = p.n();
   MatX M(ns, ns);
