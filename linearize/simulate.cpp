@@ -51,7 +51,8 @@ struct Problem {
   Workspace<double> ws;
   JacobianWorkspace jw;
   VecX q, qd, qdd, u, e;
-  VecX q_kinematics;  // the coordinates of the kinematics in ws (empty: not known)
+  VecX q_kinematics;              // the coordinates of the kinematics in ws, when known
+  bool kinematics_known = false;
   MatX Mfull;
   std::string ida_message;       // the last message IDA reported
   std::exception_ptr error;      // an exception thrown inside a callback, rethrown after IDASolve
@@ -87,19 +88,22 @@ struct Problem {
 
   // e at the loaded q, q̇, q̈, u, recording the coordinates of the kinematics it leaves in ws.
   void evaluateResidual() {
-    q_kinematics.resize(0);  // not known should the residual throw
+    kinematics_known = false;  // should the residual throw
     residual(m, ws, q, qd, qdd, u, e);
-    q_kinematics = q;
+    q_kinematics = q;  // same size each time: no allocation
+    kinematics_known = true;
   }
 
   // Mfull at q. IDA asks for the blocks at the iterate whose residual it has just evaluated: the
   // kinematics in ws are then at q (their positions do not depend on the rates), not evaluated again.
   void massAtQ() {
-    if (q_kinematics.size() == q.size() && q_kinematics == q) {
+    if (kinematics_known && q_kinematics == q) {
       massMatrixAtKinematics(m, ws, Mfull);
     } else {
+      kinematics_known = false;
       massMatrix(m, ws, q, Mfull);
       q_kinematics = q;
+      kinematics_known = true;
     }
   }
 
