@@ -40,11 +40,11 @@ DrivetrainParts addNacelleAndDrivetrain(Builder& b, const TowerParts& tower) {
   if (Jd2 < 0)
     throw InputError(b.where("NacYIner", "must not be less than NacMass·(NacCMxn² + NacCMyn²) = " +
                                              std::to_string(offaxis) + " kg m²"));
+  // The nacelle turns on the yaw bearing: its frame starts from the bearing's (the tower top's
+  // deflection and small rotations evaluated once per kinematics pass, not once per body).
   Body nac;
   nac.name = "nacelle";
-  nac.parent = tower.body;
-  nac.parent_point = tower.top;
-  nac.rotation = to_ground;
+  nac.parent = out.bearing;
   nac.joint = JointType::Revolute;
   nac.axis = Vec3::UnitZ();
   nac.inertia = rigidBodyInertia(m.NacMass, cm, Mat3(Vec3(0, 0, Jd2).asDiagonal()));
