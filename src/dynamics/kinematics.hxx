@@ -105,6 +105,7 @@ void forwardKinematics(const Model& m, Workspace<T>& ws, const VecXT<T>& q, cons
                        const VecXT<T>& qdd, const AdPass& pass) {
   assert(q.size() == m.ndof() && qd.size() == m.ndof() && qdd.size() == m.ndof());
   const int nb = static_cast<int>(m.bodies.size());
+  if constexpr (std::is_same_v<T, double>) ws.body_products_current = false;
   for (int i = 0; i < nb; ++i) {
     const Body& b = m.bodies[i];
     BasisState<T>& bs = ws.basis[i];

@@ -13,9 +13,12 @@ constexpr int eps(int i, int j, int k) { return ((i - j) * (j - k) * (k - i)) / 
 namespace {
 
 // Body mass matrix into Mb ((6 + ne)², zeroed here), with y the 9 scratch vectors (dim ≥ nc).
+// `known`: the position-level products of a residual at the same c (y_jl = S_jl c, Pc = cᵀ y,
+// m1c = m1 c; body_forces.hxx), used instead of forming them again; null: formed here.
 // Plain loops: the blocks are tiny (nc ≤ ~30), where Eigen's dynamic-size products cost more in
 // dispatch than in arithmetic.
-void bodyMassMatrixInto(const BodyInertia& in, const BasisState<double>& b, std::array<VecX, 9>& y,
+void bodyMassMatrixInto(const BodyInertia& in, const BasisState<double>& b,
+                        const BasisProducts<double, double>* known, std::array<VecX, 9>& scratch,
                         Eigen::Ref<MatX> Mb) {
   const int ne = in.ne, nc = in.nc();
   const VecX& c = b.c;
@@ -23,22 +26,28 @@ void bodyMassMatrixInto(const BodyInertia& in, const BasisState<double>& b, std:
   // S_jl is zero beyond len[j] × len[l] (body.hpp; set by finalize, with Strace).
   const bool finalized = in.Strace.rows() == nc;
   const std::array<int, 3> len = finalized ? in.len : std::array<int, 3>{nc, nc, nc};
-  Vec3 sbar;
-  for (int j = 0; j < 3; ++j) sbar(j) = detail::dot(in.m1.data() + j, 3, c, nc);
   // y_jl = S_jl c serves both the rotational block (Q_jl = cᵀ y_jl) and the coupling rows
   // cᵀ S_jk D = (S_kj c)ᵀ D (S_kj = S_jkᵀ).
+  const std::array<VecX, 9>& y = known ? known->y : scratch;
+  Vec3 sbar;
   Mat3 Q;
-  for (int j = 0; j < 3; ++j)
-    for (int l = 0; l < 3; ++l) {
-      VecX& yjl = y[3 * j + l];
-      if (finalized)
-        detail::shapeProduct(in, 3 * j + l, c, yjl);
-      else
-        detail::matvec(in.S[3 * j + l], c, len[j], len[l], yjl);
-      double q = 0;
-      for (int p = 0; p < len[j]; ++p) q += c(p) * yjl(p);
-      Q(j, l) = q;
-    }
+  if (known && finalized) {
+    sbar = known->m1c;
+    Q = known->Pc;
+  } else {
+    for (int j = 0; j < 3; ++j) sbar(j) = detail::dot(in.m1.data() + j, 3, c, nc);
+    for (int j = 0; j < 3; ++j)
+      for (int l = 0; l < 3; ++l) {
+        VecX& yjl = scratch[3 * j + l];
+        if (finalized)
+          detail::shapeProduct(in, 3 * j + l, c, yjl);
+        else
+          detail::matvec(in.S[3 * j + l], c, len[j], len[l], yjl);
+        double q = 0;
+        for (int p = 0; p < len[j]; ++p) q += c(p) * yjl(p);
+        Q(j, l) = q;
+      }
+  }
   Mb.block<3, 3>(0, 0) = in.mass * Mat3::Identity();
   Mb.block<3, 3>(0, 3) = -skew<double>(sbar);
   Mb.block<3, 3>(3, 0) = skew<double>(sbar);
@@ -61,8 +70,8 @@ void bodyMassMatrixInto(const BodyInertia& in, const BasisState<double>& b, std:
             Mb(3 + i, 6 + k) += eps(i, j, kk) * v;
           }
   }
-  // Elastic block Dᵀ (Σ_k S_kk) D, one column of (Σ S_kk) D at a time (y[0] as scratch).
-  VecX& t = y[0];
+  // Elastic block Dᵀ (Σ_k S_kk) D, one column of (Σ S_kk) D at a time.
+  VecX& t = scratch[0];
   for (int k = 0; k < ne; ++k) {
     for (int p = 0; p < nc; ++p) t(p) = 0;
     for (int q = 0; q < nc; ++q) {
@@ -89,7 +98,7 @@ MatX bodyMassMatrix(const BodyInertia& in, const BasisState<double>& b) {
   std::array<VecX, 9> y;
   for (VecX& v : y) v.resize(in.nc());
   MatX Mb(6 + in.ne, 6 + in.ne);
-  bodyMassMatrixInto(in, b, y, Mb);
+  bodyMassMatrixInto(in, b, nullptr, y, Mb);
   return Mb;
 }
 
@@ -112,7 +121,9 @@ void massMatrixAtKinematics(const Model& m, Workspace<double>& ws, MatX& M) {
     // M += Bᵀ M_b B with B = [Jb 0; 0 I] restricted to the columns the body depends on: its
     // support (Jb = [Rᵀ Jv; Rᵀ Jω], 6 × nsup) and its own elastic coordinates.
     auto Mb = s.Mb.topLeftCorner(6 + ne, 6 + ne);
-    bodyMassMatrixInto(b.inertia, ws.basis[i], s.y, Mb);
+    const BasisProducts<double, double>* known =
+        ws.body_products_current && b.inertia.ne > 0 ? &ws.body_products[i] : nullptr;
+    bodyMassMatrixInto(b.inertia, ws.basis[i], known, s.y, Mb);
     const Mat3 Rt = f.R.transpose();
     auto Jb = s.Jb.leftCols(nsup);
     for (int c = 0; c < nsup; ++c) {

@@ -18,6 +18,8 @@ void massMatrix(const Model& model, Workspace<double>& ws, const VecX& q, MatX& 
 /// M at the positions of the kinematics already in ws (forwardKinematics at some q, with any rates:
 /// only R, Jv, Jω, c and D are read): what massMatrix gives at that q, without evaluating the
 /// kinematics again (a simulation's Newton step asks for M where it has just evaluated the residual).
+/// After a double residual at those kinematics, the bodies' shape-integral products it formed
+/// (y = S c, cᵀ y, m1 c) are reused too (Workspace::body_products).
 /// \param[out] M  ndof × ndof, symmetric
 void massMatrixAtKinematics(const Model& model, Workspace<double>& ws, MatX& M);
 

@@ -60,8 +60,9 @@ void bodyInertiaForces(const Model& m, int i, Workspace<T>& ws, const VecXT<T>& 
     return;
   }
   if constexpr (std::is_same_v<T, double>) {
-    basisProducts(in, bs.c, bs.cd, bs.cdd, ws.prod);
-    frameForces(in, ws.prod, bs.D, ahat, alpha, omega, ws.g, F, Tq, H);
+    BasisProducts<double, double>& p = ws.body_products[static_cast<std::size_t>(i)];
+    basisProducts(in, bs.c, bs.cd, bs.cdd, p);
+    frameForces(in, p, bs.D, ahat, alpha, omega, ws.g, F, Tq, H);
   } else {
     if (elasticSeeded(b, q)) {
       basisProducts(in, bs.c, bs.cd, bs.cdd, ws.prod);
@@ -176,6 +177,7 @@ bool residual(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T
       }
     }
   }
+  if constexpr (std::is_same_v<T, double>) ws.body_products_current = true;
   // The load terms depend on q and u — and on q̇ with aerodynamics or a generator torque law: a pass
   // seeding none of these (q̈ columns, or q̇ without them) skips them.
   bool loads = true;

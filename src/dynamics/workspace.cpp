@@ -50,6 +50,8 @@ Workspace<T>::Workspace(const Model& m)
   mass.zero = VecX::Zero(n);
   if constexpr (!std::is_same_v<T, double>)
     for (const Body& b : m.bodies) constant_basis.emplace_back(b.inertia.nc(), b.inertia.ne);
+  else
+    for (const Body& b : m.bodies) body_products.emplace_back(b.inertia.nc());
   h = VecXT<T>::Zero(nemax);
 }
 

@@ -142,6 +142,11 @@ struct Workspace {
   // products for bodies whose own elastic coordinates are not seeded (body_forces.hxx).
   BasisProducts<T, T> prod;
   BasisProducts<double, T> prod_dt;          ///< c double, ċ and c̈ of type T (C columns)
+  /// Double only (empty for AD types): per body, the stage-1 products of the last double residual.
+  /// The mass matrix at that residual's kinematics reuses their position part (y = S c, c·y, m1 c);
+  /// `body_products_current` says they belong to the current kinematics (forwardKinematics clears it).
+  std::vector<BasisProducts<double, double>> body_products;
+  bool body_products_current = false;
   std::vector<ConstantBasis> constant_basis; ///< per body, for AD passes
   MassScratch mass;                          ///< mass-matrix assembly (double)
   VecXT<T> g;                 ///< Σ_k ∫ P_kᵀ (a_P)_k dm

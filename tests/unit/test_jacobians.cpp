@@ -110,7 +110,8 @@ TEST_P(Jacobians, MassAtTheResidualsKinematicsEqualsTheMassMatrix) {
     MatX at_kinematics, M;
     massMatrixAtKinematics(m, ws, at_kinematics);
     massMatrix(m, fresh, s.q, M);
-    EXPECT_EQ((at_kinematics - M).cwiseAbs().maxCoeff(), 0.0) << "seed " << seed;
+    // The same sums, partly formed by the residual (its shape-integral products): equal to round-off.
+    EXPECT_LE((at_kinematics - M).cwiseAbs().maxCoeff(), 1e-14 * M.cwiseAbs().maxCoeff()) << "seed " << seed;
   }
 }
 
