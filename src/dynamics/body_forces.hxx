@@ -13,6 +13,7 @@
 /// seeded direction (K columns of another body, every C column for TQ, the pitch columns of Q):
 /// the derivatives are the same, the work is that of a double evaluation.
 #include <array>
+#include <type_traits>
 
 #include "src/dynamics/kinematics.hpp"
 
@@ -52,6 +53,32 @@ void matvec(const ShapeIntegralBlock& S, const VecXT<T>& x, int rows, VecXT<T>& 
   }
 }
 
+// y1 = S x1 and y2 = S x2 in one sweep over the block (each value and column index loaded once for
+// both): the sums of two calls of matvec above, equal to round-off (the compiler may contract them
+// differently).
+template <class T>
+void matvec2(const ShapeIntegralBlock& S, const VecXT<T>& x1, const VecXT<T>& x2, int rows, VecXT<T>& y1,
+             VecXT<T>& y2) {
+  T* __restrict y1d = y1.data();
+  T* __restrict y2d = y2.data();
+  const T* __restrict x1d = x1.data();
+  const T* __restrict x2d = x2.data();
+  for (int i = 0; i < rows; ++i) y1d[i] = y2d[i] = T(0);
+  const int nr = static_cast<int>(S.rows.size()), ncol = static_cast<int>(S.cols.size());
+  const int* __restrict cols = S.cols.data();
+  const double* __restrict v = S.values.data();
+  for (int a = 0; a < nr; ++a, v += ncol) {
+    T s1(0), s2(0);
+    for (int b = 0; b < ncol; ++b) {
+      s1 += v[b] * x1d[cols[b]];
+      s2 += v[b] * x2d[cols[b]];
+    }
+    const int r = S.rows[static_cast<std::size_t>(a)];
+    y1d[r] = s1;
+    y2d[r] = s2;
+  }
+}
+
 // y = S_k x (k = 3j + l, len[j] × len[l]): sparse for a finalized body (Strace set), dense otherwise.
 template <class T>
 void shapeProduct(const BodyInertia& in, int k, const VecXT<T>& x, VecXT<T>& y) {
@@ -84,11 +111,12 @@ T dot(const double* a, int stride, const VecXT<T>& x, int n) {
 ///   y_kl = S_kl c, z_kl = S_kl ċ (k ≠ l; W has a zero diagonal), s = Σ_k S_kk c̈,
 ///   Pc(l,j) = c·y_lj, Pcd(l,j) = ċ·y_lj, Pcdd(l,j) = c̈·y_lj, m1c = m1 c, m1cd = m1 ċ, m1cdd = m1 c̈.
 /// Position part: y, Pc, m1c.
+namespace detail {
+
+// Pc and m1c from the products y (the position part after its nine products).
 template <class TQ, class TR>
-void basisPositionProducts(const BodyInertia& in, const VecXT<TQ>& c, BasisProducts<TQ, TR>& p) {
+void positionSums(const BodyInertia& in, const VecXT<TQ>& c, BasisProducts<TQ, TR>& p) {
   const std::array<int, 3>& len = in.len;
-  for (int k = 0; k < 3; ++k)
-    for (int l = 0; l < 3; ++l) detail::shapeProduct(in, 3 * k + l, c, p.y[3 * k + l]);
   for (int l = 0; l < 3; ++l)
     for (int j = 0; j < 3; ++j) {
       const VecXT<TQ>& y = p.y[3 * l + j];
@@ -96,17 +124,13 @@ void basisPositionProducts(const BodyInertia& in, const VecXT<TQ>& c, BasisProdu
       for (int r = 0; r < len[l]; ++r) a += c(r) * y(r);
       p.Pc(l, j) = a;
     }
-  for (int k = 0; k < 3; ++k) p.m1c(k) = detail::dot(in.m1.data() + k, 3, c, len[k]);
+  for (int k = 0; k < 3; ++k) p.m1c(k) = dot(in.m1.data() + k, 3, c, len[k]);
 }
 
-/// Rate part: z, Pcd, Pcdd, m1cd, m1cdd, s (needs the position part's y).
+// Pcd, Pcdd, m1cd, m1cdd, s (the rate part after its products z).
 template <class TQ, class TR>
-void basisRateProducts(const BodyInertia& in, const VecXT<TR>& cd, const VecXT<TR>& cdd, BasisProducts<TQ, TR>& p) {
+void rateSums(const BodyInertia& in, const VecXT<TR>& cd, const VecXT<TR>& cdd, BasisProducts<TQ, TR>& p) {
   const std::array<int, 3>& len = in.len;
-  if (in.ne > 0)
-    for (int k = 0; k < 3; ++k)
-      for (int l = 0; l < 3; ++l)
-        if (k != l) detail::shapeProduct(in, 3 * k + l, cd, p.z[3 * k + l]);
   for (int l = 0; l < 3; ++l)
     for (int j = 0; j < 3; ++j) {
       const VecXT<TQ>& y = p.y[3 * l + j];
@@ -119,26 +143,61 @@ void basisRateProducts(const BodyInertia& in, const VecXT<TR>& cd, const VecXT<T
       p.Pcdd(l, j) = d;
     }
   for (int k = 0; k < 3; ++k) {
-    p.m1cd(k) = detail::dot(in.m1.data() + k, 3, cd, len[k]);
-    p.m1cdd(k) = detail::dot(in.m1.data() + k, 3, cdd, len[k]);
+    p.m1cd(k) = dot(in.m1.data() + k, 3, cd, len[k]);
+    p.m1cdd(k) = dot(in.m1.data() + k, 3, cdd, len[k]);
   }
   if (in.ne == 0) return;
   const int nc = in.nc();
   if (in.Strace.rows() == nc) {
-    detail::matvec(in.Strace_block, cdd, nc, p.scdd);
+    matvec(in.Strace_block, cdd, nc, p.scdd);
   } else {  // a body that was never finalized
     for (int r = 0; r < nc; ++r) p.scdd(r) = TR(0);
     for (int k = 0; k < 3; ++k) {
-      detail::matvec(in.S[4 * k], cdd, len[k], len[k], p.z[4 * k]);  // z_kk as scratch
+      matvec(in.S[4 * k], cdd, len[k], len[k], p.z[4 * k]);  // z_kk as scratch
       for (int r = 0; r < len[k]; ++r) p.scdd(r) += p.z[4 * k](r);
     }
   }
 }
 
-/// Both parts.
+}  // namespace detail
+
+template <class TQ, class TR>
+void basisPositionProducts(const BodyInertia& in, const VecXT<TQ>& c, BasisProducts<TQ, TR>& p) {
+  for (int k = 0; k < 3; ++k)
+    for (int l = 0; l < 3; ++l) detail::shapeProduct(in, 3 * k + l, c, p.y[3 * k + l]);
+  detail::positionSums(in, c, p);
+}
+
+/// Rate part: z, Pcd, Pcdd, m1cd, m1cdd, s (needs the position part's y).
+template <class TQ, class TR>
+void basisRateProducts(const BodyInertia& in, const VecXT<TR>& cd, const VecXT<TR>& cdd, BasisProducts<TQ, TR>& p) {
+  if (in.ne > 0)
+    for (int k = 0; k < 3; ++k)
+      for (int l = 0; l < 3; ++l)
+        if (k != l) detail::shapeProduct(in, 3 * k + l, cd, p.z[3 * k + l]);
+  detail::rateSums(in, cd, cdd, p);
+}
+
+/// Both parts. With one scalar type and a finalized body, y_kl = S_kl c and z_kl = S_kl ċ (k ≠ l)
+/// are formed in one sweep over each block (detail::matvec2).
 template <class TQ, class TR>
 void basisProducts(const BodyInertia& in, const VecXT<TQ>& c, const VecXT<TR>& cd, const VecXT<TR>& cdd,
                    BasisProducts<TQ, TR>& p) {
+  if constexpr (std::is_same_v<TQ, TR>) {
+    if (in.ne > 0 && in.Strace.rows() == in.nc()) {
+      for (int k = 0; k < 3; ++k)
+        for (int l = 0; l < 3; ++l) {
+          const int kl = 3 * k + l;
+          if (k == l)
+            detail::matvec(in.S_block[kl], c, in.len[k], p.y[kl]);
+          else
+            detail::matvec2(in.S_block[kl], c, cd, in.len[k], p.y[kl], p.z[kl]);
+        }
+      detail::positionSums(in, c, p);
+      detail::rateSums(in, cd, cdd, p);
+      return;
+    }
+  }
   basisPositionProducts(in, c, p);
   basisRateProducts(in, cd, cdd, p);
 }
@@ -177,23 +236,25 @@ void frameForces(const BodyInertia& in, const BasisProducts<TQ, TR>& p, const Ma
   if (in.ne == 0) return;
   const int nc = in.nc();
   const std::array<int, 3>& len = in.len;
+  // Row by row, each G(r) summed in a register (the same terms in the same order as adding each
+  // product into G in turn, which stored and reloaded G(r) at every term).
+  Mat3T<T> W2;
+  for (int k = 0; k < 3; ++k)
+    for (int l = 0; l < 3; ++l) W2(k, l) = 2.0 * W(k, l);
   for (int r = 0; r < nc; ++r) {
     T s = in.m1(0, r) * ahat(0);
     s += in.m1(1, r) * ahat(1);
     s += in.m1(2, r) * ahat(2);
     s += p.scdd(r);
+    for (int k = 0; k < 3; ++k) {
+      if (r >= len[k]) continue;
+      for (int l = 0; l < 3; ++l) {
+        s += A(k, l) * p.y[3 * k + l](r);
+        if (k != l) s += W2(k, l) * p.z[3 * k + l](r);
+      }
+    }
     G(r) = s;
   }
-  for (int k = 0; k < 3; ++k)
-    for (int l = 0; l < 3; ++l) {
-      const VecXT<TQ>& y = p.y[3 * k + l];
-      const T& a = A(k, l);
-      for (int r = 0; r < len[k]; ++r) G(r) += a * y(r);
-      if (k == l) continue;
-      const T w2 = 2.0 * W(k, l);
-      const VecXT<TR>& z = p.z[3 * k + l];
-      for (int r = 0; r < len[k]; ++r) G(r) += w2 * z(r);
-    }
   for (int j = 0; j < in.ne; ++j) {
     T s(0);
     for (int r = 0; r < nc; ++r) s += D(r, j) * G(r);
