@@ -47,7 +47,9 @@ bool supportSeeded(const Model& m, int i, const VecXT<T>& q, const VecXT<T>& qd,
   return false;
 }
 
-// c = [1; q; q_i q_j (i<=j)], its first two time derivatives and D = ∂c/∂q.
+// c = [1; q; q_i q_j (i<=j)], its first two time derivatives and D = ∂c/∂q. D's rows of 1 and q
+// (constant) and the zeros of its quadratic rows are those initBasisD left: only the entries of the
+// quadratic rows that depend on q are written here.
 template <class T>
 void evalBasis(const BodyInertia& in, const T* q, const T* qd, const T* qdd, BasisState<T>& b) {
   const int ne = in.ne;
@@ -66,12 +68,16 @@ void evalBasis(const BodyInertia& in, const T* q, const T* qd, const T* qdd, Bas
       b.c(p) = q[i] * q[j];
       b.cd(p) = qd[i] * q[j] + q[i] * qd[j];
       b.cdd(p) = qdd[i] * q[j] + T(2) * qd[i] * qd[j] + q[i] * qdd[j];
-      for (int k = 0; k < ne; ++k) b.D(p, k) = T(0);
-      b.D(p, i) += q[j];
-      b.D(p, j) += q[i];
+      if (i == j) {
+        b.D(p, i) = q[i] + q[i];
+      } else {
+        b.D(p, i) = q[j];
+        b.D(p, j) = q[i];
+      }
     }
 }
 
+// D's constant part (evalBasis writes the rest): once per buffer.
 template <class T>
 void initBasisD(const BodyInertia& in, BasisState<T>& b) {
   b.D.setZero();
@@ -110,7 +116,6 @@ void forwardKinematics(const Model& m, Workspace<T>& ws, const VecXT<T>& q, cons
     const Body& b = m.bodies[i];
     BasisState<T>& bs = ws.basis[i];
     if (b.inertia.ne > 0) {
-      detail::initBasisD(b.inertia, bs);
       const int e0 = b.elastic_dof;
       detail::evalBasis(b.inertia, q.data() + e0, qd.data() + e0, qdd.data() + e0, bs);
     } else {

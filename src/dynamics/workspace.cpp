@@ -4,6 +4,7 @@
 #include <type_traits>
 
 #include "src/dynamics/workspace.hpp"
+#include "src/dynamics/kinematics.hxx"
 #include "src/model/scalar.hpp"
 
 namespace whirl {
@@ -36,6 +37,7 @@ Workspace<T>::Workspace(const Model& m)
     basis[i].cd = VecXT<T>::Zero(in.nc());
     basis[i].cdd = VecXT<T>::Zero(in.nc());
     basis[i].D = MatXT<T>::Zero(in.nc(), in.ne);
+    detail::initBasisD(in, basis[i]);  // its constant part; forwardKinematics writes the rest
     ncmax = std::max(ncmax, in.nc());
     nemax = std::max(nemax, in.ne);
   }
