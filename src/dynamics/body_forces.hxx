@@ -117,13 +117,22 @@ namespace detail {
 template <class TQ, class TR>
 void positionSums(const BodyInertia& in, const VecXT<TQ>& c, BasisProducts<TQ, TR>& p) {
   const std::array<int, 3>& len = in.len;
-  for (int l = 0; l < 3; ++l)
-    for (int j = 0; j < 3; ++j) {
-      const VecXT<TQ>& y = p.y[3 * l + j];
-      TQ a(0);
-      for (int r = 0; r < len[l]; ++r) a += c(r) * y(r);
-      p.Pc(l, j) = a;
+  // The three sums of a row l side by side: three independent chains of additions instead of one
+  // (each sum in the same order as alone).
+  for (int l = 0; l < 3; ++l) {
+    const TQ* y0 = p.y[3 * l].data();
+    const TQ* y1 = p.y[3 * l + 1].data();
+    const TQ* y2 = p.y[3 * l + 2].data();
+    TQ a0(0), a1(0), a2(0);
+    for (int r = 0; r < len[l]; ++r) {
+      a0 += c(r) * y0[r];
+      a1 += c(r) * y1[r];
+      a2 += c(r) * y2[r];
     }
+    p.Pc(l, 0) = a0;
+    p.Pc(l, 1) = a1;
+    p.Pc(l, 2) = a2;
+  }
   for (int k = 0; k < 3; ++k) p.m1c(k) = dot(in.m1.data() + k, 3, c, len[k]);
 }
 
@@ -131,17 +140,19 @@ void positionSums(const BodyInertia& in, const VecXT<TQ>& c, BasisProducts<TQ, T
 template <class TQ, class TR>
 void rateSums(const BodyInertia& in, const VecXT<TR>& cd, const VecXT<TR>& cdd, BasisProducts<TQ, TR>& p) {
   const std::array<int, 3>& len = in.len;
-  for (int l = 0; l < 3; ++l)
-    for (int j = 0; j < 3; ++j) {
-      const VecXT<TQ>& y = p.y[3 * l + j];
-      TR b(0), d(0);
-      for (int r = 0; r < len[l]; ++r) {
-        b += cd(r) * y(r);
-        d += cdd(r) * y(r);
+  for (int l = 0; l < 3; ++l) {  // six independent sums per row l, as in positionSums
+    TR b[3] = {TR(0), TR(0), TR(0)}, d[3] = {TR(0), TR(0), TR(0)};
+    for (int r = 0; r < len[l]; ++r)
+      for (int j = 0; j < 3; ++j) {
+        const TQ& y = p.y[3 * l + j](r);
+        b[j] += cd(r) * y;
+        d[j] += cdd(r) * y;
       }
-      p.Pcd(l, j) = b;
-      p.Pcdd(l, j) = d;
+    for (int j = 0; j < 3; ++j) {
+      p.Pcd(l, j) = b[j];
+      p.Pcdd(l, j) = d[j];
     }
+  }
   for (int k = 0; k < 3; ++k) {
     p.m1cd(k) = dot(in.m1.data() + k, 3, cd, len[k]);
     p.m1cdd(k) = dot(in.m1.data() + k, 3, cdd, len[k]);
