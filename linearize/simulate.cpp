@@ -6,8 +6,11 @@
 #include <sundials/sundials_context.h>
 #include <sunnonlinsol/sunnonlinsol_newton.h>
 
+#include <sys/mman.h>
+
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <exception>
 #include <memory>
@@ -23,6 +26,21 @@
 
 namespace whirl {
 namespace {
+
+// The record's pages mapped in one call instead of one page fault per 4 KiB page as rows are
+// written (a 600 s run at 0.05 s of the 5MW records 6 MB; a fault costs ~13 µs on a virtual machine,
+// 7 % of that run). A hint: an older kernel without MADV_POPULATE_WRITE ignores it.
+void prefault(void* data, std::size_t bytes) {
+#ifdef MADV_POPULATE_WRITE
+  constexpr std::uintptr_t page = 4096;
+  const auto begin = (reinterpret_cast<std::uintptr_t>(data) + page - 1) & ~(page - 1);
+  const auto end = (reinterpret_cast<std::uintptr_t>(data) + bytes) & ~(page - 1);
+  if (end > begin) (void)madvise(reinterpret_cast<void*>(begin), end - begin, MADV_POPULATE_WRITE);
+#else
+  (void)data;
+  (void)bytes;
+#endif
+}
 
 // The SUNDIALS objects of one run, released in reverse order of creation.
 struct IdaHandles {
@@ -253,6 +271,8 @@ Simulation simulate(const Model& m, const OperatingPoint& start, const Simulatio
   sim.qd.resize(nrec, m.ndof());
   sim.u.resize(nrec, m.ninput());
   sim.y.resize(nrec, m.noutput());
+  sim.time.reserve(static_cast<std::size_t>(nrec));
+  for (MatX* a : {&sim.q, &sim.qd, &sim.u, &sim.y}) prefault(a->data(), a->size() * sizeof(double));
   Workspace<double> wy(m);
   VecX y_out(m.noutput());
   auto record = [&](long k, double t, const double* y, const double* yp) {
