@@ -77,6 +77,11 @@ T lossFactor(const BemStation& s, const T& sphi, const BemOptions& o) {
   if (equal(sv, 0.0)) return F;
   const T sabs = absT(sphi);
   auto part = [&](double c) -> T {
+    // (2/π) acos(exp(−f)) rounds to exactly 1 for f ≥ 36.3 (exp(−f) < 1.7e-16, below half an ulp of
+    // π/2): in double, the hub loss of every element away from the root and the tip loss of small
+    // inflow angles, two libm calls of each induction evaluation, skipped with the same value.
+    if constexpr (std::is_same_v<T, double>)
+      if (c / sv >= 38.0) return T(1.0);
     const double e = std::exp(-c / sv);
     if (!(e < 1.0)) return T(0.0);  // min(1, e) = 1 → acos(1) = 0 (station at or beyond the tip/root)
     if (e == 0.0) return T(1.0);    // acos(0)·2/π = 1, constant (huge or infinite constant, e.g. zHub = 0)
