@@ -136,6 +136,26 @@ TEST(Bem, HandSolutionTipLoss) {
   EXPECT_NEAR(tipLossConstant(s), 3 * 8.0 / 110.0, 1e-15);
 }
 
+// A loss too small to show in double: the Prandtl factor F = (2/π) acos(exp(−f)) of AeroDyn's formula,
+// f = c_hub/|sin φ|, for f on both sides of the point (f ≈ 36.3) where it rounds to exactly 1 and
+// the evaluation skips the libm calls (f ≥ 38): F equals the formula bitwise on either side.
+TEST(Bem, NegligibleLossFactorEqualsTheFormula) {
+  const BemStation s = station(30.0, 3.5, 0.1, thinAirfoil());
+  BemOptions hubOnly = noLosses();
+  hubOnly.hub_loss = true;
+  const double c = hubLossConstant(s);
+  ASSERT_GT(c, 0.0);
+  int below_one = 0;
+  for (double f = 30.0; f <= 46.0; f += 0.25) {
+    const double phi = std::asin(c / f);
+    const Induction<double> r = inductions<double>(s, phi, 8.0, 40.0, hubOnly);
+    const double formula = (2.0 / kPi) * std::acos(std::exp(-c / std::abs(std::sin(phi))));
+    EXPECT_EQ(r.F, formula) << "f = " << f;
+    if (formula < 1.0) ++below_one;
+  }
+  EXPECT_GT(below_one, 0) << "the range must reach losses that show";
+}
+
 // Buhl 2005 high-thrust branch (k > 2/3): with temp = 2Fk, g1 = temp − (10/9 − F), g2 = temp − (4/3 − F)F,
 // g3 = temp − (25/9 − 2F), a = (g1 − √g2)/g3. B = 3, c = 4 m, r = 5 m, θ = 0.05, φ = 0.35, Vx = 10, F = 1:
 //   k = 1.4380733207200378, a = 0.5577739150419968, a' = 0.23703775096824811, Vy = 9.7934257532417348.
