@@ -282,6 +282,9 @@ Simulation simulate(const Model& m, const OperatingPoint& start, const Simulatio
     sim.qd.row(k) = p.qd.transpose();
     if (m.ninput() > 0) sim.u.row(k) = p.u.transpose();  // row k of a 0-column matrix: offset on a null pointer
     if (m.noutput() > 0) {
+      // The BEM roots of the integrator's last residual start the outputs' root searches: a step
+      // away instead of one recorded interval (the outputs' own last roots); the same roots.
+      wy.bem = p.ws.bem;
       evaluateOutputs(m, wy, p.q, p.qd, p.qdd, y_out, &p.u);
       sim.y.row(k) = y_out.transpose();
     }
