@@ -107,10 +107,6 @@ T dot(const double* a, int stride, const VecXT<T>& x, int n) {
 
 }  // namespace detail
 
-/// Stage 1: with S_kl = ∫ P_kᵀ P_l dm and m1 = ∫ P dm (entries beyond len[k] are zero),
-///   y_kl = S_kl c, z_kl = S_kl ċ (k ≠ l; W has a zero diagonal), s = Σ_k S_kk c̈,
-///   Pc(l,j) = c·y_lj, Pcd(l,j) = ċ·y_lj, Pcdd(l,j) = c̈·y_lj, m1c = m1 c, m1cd = m1 ċ, m1cdd = m1 c̈.
-/// Position part: y, Pc, m1c.
 namespace detail {
 
 // Pc and m1c from the products y (the position part after its nine products).
@@ -172,6 +168,10 @@ void rateSums(const BodyInertia& in, const VecXT<TR>& cd, const VecXT<TR>& cdd, 
 
 }  // namespace detail
 
+/// Stage 1: with S_kl = ∫ P_kᵀ P_l dm and m1 = ∫ P dm (entries beyond len[k] are zero),
+///   y_kl = S_kl c, z_kl = S_kl ċ (k ≠ l; W has a zero diagonal), s = Σ_k S_kk c̈,
+///   Pc(l,j) = c·y_lj, Pcd(l,j) = ċ·y_lj, Pcdd(l,j) = c̈·y_lj, m1c = m1 c, m1cd = m1 ċ, m1cdd = m1 c̈.
+/// Position part: y, Pc, m1c.
 template <class TQ, class TR>
 void basisPositionProducts(const BodyInertia& in, const VecXT<TQ>& c, BasisProducts<TQ, TR>& p) {
   for (int k = 0; k < 3; ++k)

@@ -12,7 +12,7 @@ constexpr int eps(int i, int j, int k) { return ((i - j) * (j - k) * (k - i)) / 
 
 namespace {
 
-// Body mass matrix into Mb ((6 + ne)², zeroed here), with y the 9 scratch vectors (dim ≥ nc).
+// Body mass matrix into Mb ((6 + ne)², zeroed here), with 9 scratch vectors (dim ≥ nc).
 // `known`: the position-level products of a residual at the same c (y_jl = S_jl c, Pc = cᵀ y,
 // m1c = m1 c; body_forces.hxx), used instead of forming them again; null: formed here.
 // Plain loops: the blocks are tiny (nc ≤ ~30), where Eigen's dynamic-size products cost more in
@@ -28,10 +28,11 @@ void bodyMassMatrixInto(const BodyInertia& in, const BasisState<double>& b,
   const std::array<int, 3> len = finalized ? in.len : std::array<int, 3>{nc, nc, nc};
   // y_jl = S_jl c serves both the rotational block (Q_jl = cᵀ y_jl) and the coupling rows
   // cᵀ S_jk D = (S_kj c)ᵀ D (S_kj = S_jkᵀ).
-  const std::array<VecX, 9>& y = known ? known->y : scratch;
+  const bool reuse = known && finalized;  // the residual's lengths are the finalized ones
+  const std::array<VecX, 9>& y = reuse ? known->y : scratch;
   Vec3 sbar;
   Mat3 Q;
-  if (known && finalized) {
+  if (reuse) {
     sbar = known->m1c;
     Q = known->Pc;
   } else {
