@@ -100,6 +100,10 @@ T reynolds(const BemStation& s, const T& W) {
   return valueOf(re) > 0.001 ? re : T(0.001);
 }
 
+template <class T>
+SectionLoads<T> loadsWithCoefficients(const BemStation& s, const T& x, const T& y, const T& phi, const T& alpha,
+                                      const T& W2, const T& W, const Coefficients<T>& c, double rho, bool moving);
+
 /// Relative flow (x, y) = (Vx(1−a), Vy(1+a')) → φ, α, W, coefficients and loads (AeroDyn
 /// ComputePhiWithInduction, SetInputs_for_UA, BEMT_CalcOutput with AIDrag = TIDrag = true, SetOutputsFromBEMT).
 template <class T>
@@ -107,20 +111,31 @@ SectionLoads<T> loadsFromFlow(const BemStation& s, const T& x, const T& y, const
   using std::cos;
   using std::sin;
   using std::sqrt;
-  SectionLoads<T> L;
   const double xv = valueOf(x), yv = valueOf(y);
   const bool still = equal(yv, 0.0) && equal(xv, 0.0);
-  L.phi = still ? T(0.0) : atan2T(x, y);
-  L.alpha = L.phi - theta;
+  const T phi = still ? T(0.0) : atan2T(x, y);
+  const T alpha = phi - theta;
   const T W2 = x * x + y * y;
-  L.W = valueOf(W2) > 0 ? T(sqrt(W2)) : T(0.0);
-  const Coefficients<T> c = s.polar->re_tables.empty() ? evaluate(*s.polar, L.alpha)
-                                                       : evaluate(*s.polar, L.alpha, reynolds(s, L.W));
+  const T W = valueOf(W2) > 0 ? T(sqrt(W2)) : T(0.0);
+  const Coefficients<T> c =
+      s.polar->re_tables.empty() ? evaluate(*s.polar, alpha) : evaluate(*s.polar, alpha, reynolds(s, W));
+  return loadsWithCoefficients<T>(s, x, y, phi, alpha, W2, W, c, rho, !still);
+}
+
+/// The loads of a relative flow (x, y) whose angle φ, angle of attack α, W² = x² + y², W and polar
+/// coefficients are known; `moving` false: no flow direction (φ = 0, sin φ = 0, cos φ = 1).
+template <class T>
+SectionLoads<T> loadsWithCoefficients(const BemStation& s, const T& x, const T& y, const T& phi, const T& alpha,
+                                      const T& W2, const T& W, const Coefficients<T>& c, double rho, bool moving) {
+  SectionLoads<T> L;
+  L.phi = phi;
+  L.alpha = alpha;
+  L.W = W;
   L.cl = c.cl;
   L.cd = c.cd;
   L.cm = c.cm;
   // sin φ = x/W, cos φ = y/W: the flow's own direction, without evaluating the angle's sine again.
-  const bool direction = !still && valueOf(W2) > 0;
+  const bool direction = moving && valueOf(W2) > 0;
   const T sphi = direction ? T(x / L.W) : T(0.0), cphi = direction ? T(y / L.W) : T(1.0);
   L.cx = c.cl * cphi + c.cd * sphi;
   L.cy = c.cl * sphi - c.cd * cphi;
@@ -167,28 +182,33 @@ double hubLossConstant(const BemStation& s) {
   return s.blades * (z - s.hub_radius) / (2.0 * s.hub_radius);
 }
 
+namespace {
+
+// inductions() written into r: the root search keeps its last evaluation in place, where a returned
+// copy was read back wide from the callee's narrow stores (a stalled store forwarding per evaluation).
 template <class T>
-Induction<T> inductions(const BemStation& s, const T& phi, const T& Vx, const T& Vy, const T& theta,
-                        const BemOptions& o, const T* radius) {
+void inductionsTo(Induction<T>& r, const BemStation& s, const T& phi, const T& Vx, const T& Vy, const T& theta,
+                  const BemOptions& o, const T* radius) {
   using std::cos;
   using std::sin;
   using std::sqrt;
-  Induction<T> r{T(0.0), T(0.0), T(1.0), T(0.0), T(0.0), T(0.0), true, false};
+  r = Induction<T>{T(0.0), T(0.0), T(1.0), T(0.0), T(0.0), T(0.0), {T(0.0), T(0.0), T(0.0)}, true, false};
   const double phiv = valueOf(phi), vxv = valueOf(Vx), vyv = valueOf(Vy);
   // Special cases of BEMTU_InductionWithResidual, in its order.
   if (fixedInductions(s, o)) {
     r.a = T(1.0);
     r.fixed = true;
-    return r;
+    return;
   }
   if (equal(phiv, 0.0) || velocityIsZero(vxv) || velocityIsZero(vyv)) {
     r.fixed = true;
-    return r;
+    return;
   }
   const T alpha = phi - theta;  // computeAirfoilOperatingAOA, BEMMod_2D
   const Coefficients<T> c = s.polar->re_tables.empty()
                                 ? evaluate(*s.polar, alpha)
                                 : evaluate(*s.polar, alpha, reynolds(s, T(sqrt(Vx * Vx + Vy * Vy))));
+  r.coef = c;
   const T sphi = sin(phi), cphi = cos(phi);
   // Transform_ClCd_to_CxCy honouring AIDrag / TIDrag (only for the inductions).
   const T cx = o.ai_drag ? T(c.cl * cphi + c.cd * sphi) : T(c.cl * cphi);
@@ -255,6 +275,15 @@ Induction<T> inductions(const BemStation& s, const T& phi, const T& Vx, const T&
   r.k = k;
   r.kp = kp;
   r.residual = R;
+}
+
+}  // namespace
+
+template <class T>
+Induction<T> inductions(const BemStation& s, const T& phi, const T& Vx, const T& Vy, const T& theta,
+                        const BemOptions& o, const T* radius) {
+  Induction<T> r;
+  inductionsTo(r, s, phi, Vx, Vy, theta, o, radius);
   return r;
 }
 
@@ -365,20 +394,20 @@ UnbracketedRoot secantInside(F&& f, double a, double b, double x0, double ftol, 
 
 }  // namespace
 
-BemSolution solveInflow(const BemStation& s, double Vx, double Vy, const BemOptions& o, std::optional<double> phi_hint,
-                        double slope_hint) {
+InflowRoot findInflowRoot(const BemStation& s, double Vx, double Vy, const BemOptions& o,
+                          std::optional<double> phi_hint, double slope_hint) {
   checkStation(s);
   if (!std::isfinite(Vx) || !std::isfinite(Vy))
     throw ComputeError("BEM at r = " + num(s.r) + " m: non-finite velocity (Vx = " + num(Vx) + " m/s, Vy = " +
                        num(Vy) + " m/s)");
-  BemSolution out;
+  InflowRoot out;
   double phi = 0.0;
   // The root finder's last point is evaluated again for its validity and its inductions: keep it.
   double last_phi = std::numeric_limits<double>::quiet_NaN();
-  Induction<double> last{};
-  auto R = [&](double p) {
+  Induction<double>& last = out.at;
+  auto R = [&](double p) -> const Induction<double>& {
     if (p != last_phi) {
-      last = inductions<double>(s, p, Vx, Vy, s.theta, o);
+      inductionsTo<double>(last, s, p, Vx, Vy, s.theta, o, nullptr);
       last_phi = p;
     }
     return last;
@@ -425,7 +454,8 @@ BemSolution solveInflow(const BemStation& s, double Vx, double Vy, const BemOpti
     }
     for (int i = 0; i < 3 && !found; ++i) {
       const double lo = regions[i][0], hi = regions[i][1];
-      const Induction<double> il = R(lo), ih = R(hi);
+      const Induction<double> il = R(lo);  // copies: R keeps only its last evaluation
+      const Induction<double> ih = R(hi);
       out.iterations += 2;
       const double f1 = il.residual, f2 = ih.residual;
       Tried& t = tried[static_cast<std::size_t>(ntried++)];
@@ -458,7 +488,7 @@ BemSolution solveInflow(const BemStation& s, double Vx, double Vy, const BemOpti
                              " m/s, theta = " + deg(s.theta) + " deg: the root finder did not converge in " +
                              std::to_string(o.max_iter) + " iterations in [" + deg(lo) + ", " + deg(hi) +
                              "] deg (last phi = " + deg(b.x) + " deg, R = " + num(b.fx) + ")");
-        const Induction<double> ib = R(b.x);
+        const Induction<double>& ib = R(b.x);
         if (ib.valid) {
           phi = b.x;
           found = true;
@@ -496,15 +526,31 @@ BemSolution solveInflow(const BemStation& s, double Vx, double Vy, const BemOpti
 
   out.phi = phi;
   // calculate_Inductions_from_BEMT: invalid → 0, else limitInductionFactors.
-  const Induction<double> ind = R(phi);
-  out.F = ind.F;
-  out.k = ind.k;
-  out.kp = ind.kp;
-  out.residual = out.valid ? ind.residual : 0.0;
+  const Induction<double>& ind = R(phi);
   if (out.valid && ind.valid) {
     out.a = std::clamp(ind.a, kMinA, kMaxA);
     out.ap = std::clamp(ind.ap, kMinAp, kMaxAp);
+    out.flow_at_root = out.bracket == 0 && Vx > 0 && Vy > 0 && !ind.fixed && out.a == ind.a && out.ap == ind.ap &&
+                       out.a < 1.0 && out.ap > -1.0 && s.polar->re_tables.empty();
   }
+  return out;
+}
+
+BemSolution solveInflow(const BemStation& s, double Vx, double Vy, const BemOptions& o, std::optional<double> phi_hint,
+                        double slope_hint) {
+  const InflowRoot root = findInflowRoot(s, Vx, Vy, o, phi_hint, slope_hint);
+  BemSolution out;
+  out.phi = root.phi;
+  out.a = root.a;
+  out.ap = root.ap;
+  out.F = root.at.F;
+  out.k = root.at.k;
+  out.kp = root.at.kp;
+  out.residual = root.valid ? root.at.residual : 0.0;
+  out.valid = root.valid;
+  out.iterations = root.iterations;
+  out.slope = root.slope;
+  out.bracket = root.bracket;
   const SectionLoads<double> L = loadsFromFlow<double>(s, Vx * (1.0 - out.a), Vy * (1.0 + out.ap), s.theta, 1.0);
   out.phi_out = L.phi;
   out.alpha = L.alpha;
@@ -581,6 +627,12 @@ SectionLoads<T> quasiSteadyLoads(const BemStation& s, const T& Vx, const T& Vy, 
 SectionLoads<double> loadsAtInduction(const BemStation& s, double Vx, double Vy, double theta, double a, double ap,
                                       double rho) {
   return loadsFromFlow<double>(s, Vx * (1.0 - a), Vy * (1.0 + ap), theta, rho);
+}
+
+SectionLoads<double> loadsAtRoot(const BemStation& s, double Vx, double Vy, double theta, double phi, double a,
+                                 double ap, const Coefficients<double>& coef, double rho) {
+  const double x = Vx * (1.0 - a), y = Vy * (1.0 + ap), W2 = x * x + y * y;
+  return loadsWithCoefficients<double>(s, x, y, phi, phi - theta, W2, std::sqrt(W2), coef, rho, true);
 }
 
 template <class T>

@@ -90,6 +90,7 @@ struct Induction {
   T F;         ///< Prandtl tip × hub loss factor (1 in the special cases)
   T k, kp;     ///< Ning's k = σ Cx / (4 F sin²φ) and k' = σ Cy / (4 F sin φ cos φ) (sign-flipped for Vx < 0)
   T residual;  ///< Ning's residual R(φ)
+  Coefficients<T> coef;  ///< polar at α = φ − θ (zero in the special cases, where it is not evaluated)
   bool valid = true;  ///< AeroDyn IsValidSolution (false: k < −1 in the momentum region, k ≤ 1 in the brake region)
   bool fixed = false;  ///< φ-independent special case (fixed inductions at a loss constant of 0, φ = 0, |Vx| or
                        ///< |Vy| < 1e-3 m/s): R ≡ 0
@@ -115,6 +116,23 @@ struct BemSolution {
   double slope = 0;        ///< ∂R/∂φ of the secant search's last step (0 without one): a next solve's slope_hint
   int bracket = -1;        ///< which bracket held the root (0-based, AeroDyn's order), −1 for special cases
   bool valid = true;       ///< false only with geometric_fallback when no solution exists
+};
+
+/// The root of R(φ) as solveInflow finds it, with the inductions evaluated there, before AeroDyn's
+/// outputs (the flow angle and the polar at the limited inductions) are formed from it.
+struct InflowRoot {
+  double phi = 0;           ///< as BemSolution::phi [rad]
+  double a = 0, ap = 0;     ///< as BemSolution::a, ap (0 if not valid, else AeroDyn's limits)
+  Induction<double> at{};   ///< inductions(φ): a, a' before the limits, F, k, k', R, the polar at φ − θ
+  /// The root's own angle is AeroDyn's output angle: a valid root in the operating rotor's bracket
+  /// (Vx, Vy > 0) whose inductions are within AeroDyn's limits. There tan φ = Vx(1−a)/(Vy(1+a')) is
+  /// the equation R(φ) = 0 solves, so atan2 of the induced flow returns φ to within the root
+  /// tolerance, and at.coef is the polar at the output angle of attack (no Reynolds tables).
+  bool flow_at_root = false;
+  bool valid = true;        ///< as BemSolution::valid
+  int iterations = 0;       ///< as BemSolution::iterations
+  double slope = 0;         ///< as BemSolution::slope
+  int bracket = -1;         ///< as BemSolution::bracket
 };
 
 /// Loads per unit length at a station (see the file comment for signs).
@@ -172,6 +190,11 @@ T bemResidual(const BemStation& s, const T& phi, const T& Vx, const T& Vy, const
 BemSolution solveInflow(const BemStation& s, double Vx, double Vy, const BemOptions& o,
                         std::optional<double> phi_hint = std::nullopt, double slope_hint = 0.0);
 
+/// solveInflow's root search alone (same arguments, same root, same errors), without the output
+/// flow angle and polar that solveInflow evaluates at the limited inductions.
+InflowRoot findInflowRoot(const BemStation& s, double Vx, double Vy, const BemOptions& o,
+                          std::optional<double> phi_hint = std::nullopt, double slope_hint = 0.0);
+
 /// Inflow angle as an implicit function of (Vx, Vy, θ): phi0 must solve R at the values of the inputs.
 /// Returns phi0 − R(phi0; Vx, Vy, θ) / ∂R/∂φ(phi0) with ∂R/∂φ in double, so the value is phi0 (to the
 /// residual) and the derivatives are −R_x/R_φ (implicit-function theorem). In the φ-independent special
@@ -209,6 +232,13 @@ SectionLoads<T> quasiSteadyLoads(const BemStation& s, const T& Vx, const T& Vy, 
 /// tolerance (BemOptions::tolerance).
 SectionLoads<double> loadsAtInduction(const BemStation& s, double Vx, double Vy, double theta, double a, double ap,
                                       double rho);
+
+/// loadsAtInduction at a root with InflowRoot::flow_at_root (phi, a, ap, coef: its phi, a, ap, at.coef),
+/// from the root's own evaluation: the output angle is the root φ (AeroDyn's atan2 of the induced flow
+/// returns it to within the root tolerance) and the polar the root's (at φ − θ), so neither is
+/// evaluated again. Equal to loadsAtInduction(s, Vx, Vy, theta, a, ap, rho) to the root tolerance.
+SectionLoads<double> loadsAtRoot(const BemStation& s, double Vx, double Vy, double theta, double phi, double a,
+                                 double ap, const Coefficients<double>& coef, double rho);
 
 /// AeroDyn's BEM weight at tip-speed ratio λ (BEMT check_turnOffBEMT with BlendCosine): 0 for λ ≤ 1
 /// (induction off: near standstill the momentum balance has no meaning), 1 for λ ≥ 2, ½(1 − cos(π(λ − 1)))

@@ -133,10 +133,22 @@ SectionState<T> bemSection(const AeroModel& am, const AeroStation& st, const T& 
       const double moved = (Y * dX - X * dY) / (X * X + Y * Y);
       hint = root.phi + (std::abs(moved) < 0.05 ? moved : 0.0);
     }
-    const aero::BemSolution sol = aero::solveInflow(b, x, y, am.bem, hint, root.valid ? root.search_slope : 0.0);
-    root = BemRoot{true, x, y, b.theta, b.r, sol.phi, sol.a, sol.ap};
+    const aero::InflowRoot sol = aero::findInflowRoot(b, x, y, am.bem, hint, root.valid ? root.search_slope : 0.0);
+    root.valid = true;
+    root.vx = x;
+    root.vy = y;
+    root.theta = b.theta;
+    root.r = b.r;
+    root.phi = sol.phi;
+    root.a = sol.a;
+    root.ap = sol.ap;
     root.bem_valid = sol.valid;
+    root.slope = 0;
     root.search_slope = sol.slope;
+    root.flow_at_root = sol.flow_at_root;
+    root.cl = sol.at.coef.cl;
+    root.cd = sol.at.coef.cd;
+    root.cm = sol.at.coef.cm;
   }
   if (!root.bem_valid) {  // no valid BEM root: the geometric inflow, a = a' = 0 (AeroDyn's fallback)
     SectionState<T> s = frozenSection(am, st, vx, vy, theta, valueOf(r), 0.0, 0.0);
@@ -150,7 +162,12 @@ SectionState<T> bemSection(const AeroModel& am, const AeroStation& st, const T& 
   if constexpr (std::is_same_v<T, double>) {
     // The root's own inductions: the implicit-function step and its AD evaluation of ∂R/∂φ only serve
     // the derivatives (half the cost of an equilibrium's residual).
-    s.loads = aero::loadsAtInduction(b, vx, vy, theta, s.a, s.ap, am.air_density);
+    // At a root in the operating bracket with its inductions unlimited, the root's own angle and
+    // polar are AeroDyn's output ones (to the root tolerance): no atan2, no second table look-up.
+    s.loads = root.flow_at_root && !blended
+                  ? aero::loadsAtRoot(b, vx, vy, theta, root.phi, root.a, root.ap, {root.cl, root.cd, root.cm},
+                                      am.air_density)
+                  : aero::loadsAtInduction(b, vx, vy, theta, s.a, s.ap, am.air_density);
   } else {
     s.loads = aero::quasiSteadyLoads(b, vx, vy, theta, root.phi, am.air_density, am.bem, &r, blended ? &weight : nullptr,
                                      &root.slope);

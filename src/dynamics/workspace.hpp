@@ -82,6 +82,10 @@ struct BemRoot {
   bool bem_valid = true;  ///< a BEM root; false: no bracket held one, φ geometric without induction (as AeroDyn)
   double slope = 0;  ///< ∂R/∂φ at phi for the AD passes (aero::inflowAngle), 0 until evaluated
   double search_slope = 0;  ///< the root search's last secant slope (BemSolution::slope): the next search's first step
+  /// aero::InflowRoot::flow_at_root: the double loads take φ and the polar (cl, cd, cm at φ − θ) from
+  /// the root's own evaluation (aero::loadsAtRoot)
+  bool flow_at_root = false;
+  double cl = 0, cd = 0, cm = 0;
 };
 
 /// One blade element's frozen-wake loads at an inflow (vx, vy, θ) and their first derivatives in

@@ -558,3 +558,44 @@ TEST(Bem, ReynoldsTablesEnterResidualLoadsAndTheirDerivatives) {
   };
   expectLoadDerivatives(F, centralDifferences(frozen, {Vx, Vy, s.theta}, h));
 }
+
+namespace {
+
+// The loads from a root's own evaluation (its angle and polar) equal AeroDyn's output loads, formed
+// from the limited inductions by atan2 and a second table look-up, to the root tolerance; roots
+// outside the operating bracket, or with a limited induction, are not marked for it.
+TEST(Bem, LoadsAtTheRootEqualTheOutputLoads) {
+  const auto& P = nrelPolars();
+  const BemOptions o;
+  int marked = 0, unmarked = 0;
+  for (int af : {2, 4, 6, 7})
+    for (double Vx : {-6.0, 0.5, 3.0, 8.0, 15.0, 25.0})
+      for (double Vy : {-4.0, 5.0, 20.0, 60.0, 90.0}) {
+        const BemStation s = station(10.0 + 6.0 * af, 4.0 - 0.3 * af, 0.05, P[af]);
+        const InflowRoot root = findInflowRoot(s, Vx, Vy, o);
+        const BemSolution sol = solveInflow(s, Vx, Vy, o);
+        EXPECT_EQ(root.phi, sol.phi);  // the same search
+        EXPECT_EQ(root.a, sol.a);
+        if (!root.flow_at_root) {
+          ++unmarked;
+          continue;
+        }
+        ++marked;
+        EXPECT_TRUE(root.valid && root.bracket == 0 && Vx > 0 && Vy > 0);
+        EXPECT_TRUE(root.a == root.at.a && root.ap == root.at.ap);  // no limit active
+        // AeroDyn's output angle is the root: |R| < 1e-13 and |dR/dφ| ≥ 0.1 here.
+        EXPECT_NEAR(sol.phi_out, root.phi, 1e-11) << af << " " << Vx << " " << Vy;
+        const SectionLoads<double> fast = loadsAtRoot(s, Vx, Vy, s.theta, root.phi, root.a, root.ap, root.at.coef, 1.225);
+        const SectionLoads<double> ref = loadsAtInduction(s, Vx, Vy, s.theta, root.a, root.ap, 1.225);
+        const double scale = 0.5 * 1.225 * ref.W * ref.W * s.chord;  // q c [N/m]
+        EXPECT_NEAR(fast.fx, ref.fx, 1e-9 * scale) << af << " " << Vx << " " << Vy;
+        EXPECT_NEAR(fast.fy, ref.fy, 1e-9 * scale);
+        EXPECT_NEAR(fast.mz, ref.mz, 1e-9 * scale * s.chord);
+        EXPECT_NEAR(fast.alpha, ref.alpha, 1e-11);
+        EXPECT_EQ(fast.W, ref.W);
+      }
+  EXPECT_GT(marked, 30);
+  EXPECT_GT(unmarked, 30);  // Vx ≤ 0.5 m/s, Vy < 0, the high-induction roots
+}
+
+}  // namespace
