@@ -8,6 +8,7 @@
 #include <numbers>
 #include <optional>
 #include <sstream>
+#include <type_traits>
 
 #include "src/model/scalar.hpp"
 #include "src/model/brent.hpp"
@@ -61,15 +62,26 @@ double stationZ(const BemStation& s) { return s.z > 0 ? s.z : s.r; }
 /// A zero hub radius (infinite hub-loss constant, F_hub = 1) never fixes the inductions here; in AeroDyn,
 /// EqualRealNos(+Inf, 0) is true (its tolerance scales with |a + b| = Inf), so zHub = 0 with HubLoss on would fix
 /// a = 1 at every node — not reproduced.
-bool fixedInductions(const BemStation& s, const BemOptions& o) {
-  return (o.tip_loss && equal(tipLossConstant(s), 0.0)) ||
-         (o.hub_loss && s.hub_radius > 0 && equal(hubLossConstant(s), 0.0));
+bool fixedInductions(const BemStation& s, const BemOptions& o, double tip, double hub) {
+  return (o.tip_loss && equal(tip, 0.0)) || (o.hub_loss && s.hub_radius > 0 && equal(hub, 0.0));
+}
+
+/// A station's loss constants, whether they fix its inductions, and its solidity at s.r: formed once
+/// per root search, not at each of its evaluations.
+struct StationConstants {
+  double tip, hub;
+  bool fixed;
+  double sigma;
+};
+StationConstants stationConstants(const BemStation& s, const BemOptions& o) {
+  const double tip = tipLossConstant(s), hub = hubLossConstant(s);
+  return {tip, hub, fixedInductions(s, o, tip, hub), s.blades * s.chord / (2.0 * kPi * s.r)};
 }
 
 /// Prandtl factor, getHubTipLossCorrection with BEM_Mod = 1 (BEMMod_2D):
 ///   F = (2/π) acos(min(1, exp(−c_tip/|sin φ|))) · (2/π) acos(min(1, exp(−c_hub/|sin φ|))), 1 when sin φ = 0.
 template <class T>
-T lossFactor(const BemStation& s, const T& sphi, const BemOptions& o) {
+T lossFactor(const StationConstants& lc, const T& sphi, const BemOptions& o) {
   using std::acos;
   using std::exp;
   T F(1.0);
@@ -88,8 +100,8 @@ T lossFactor(const BemStation& s, const T& sphi, const BemOptions& o) {
     if constexpr (std::is_same_v<T, double>) return (2.0 / kPi) * std::acos(e);  // e is the same value
     else return T((2.0 / kPi) * acos(exp(-c / sabs)));
   };
-  if (o.tip_loss) F = F * part(tipLossConstant(s));
-  if (o.hub_loss) F = F * part(hubLossConstant(s));
+  if (o.tip_loss) F = F * part(lc.tip);
+  if (o.hub_loss) F = F * part(lc.hub);
   return F;
 }
 
@@ -184,18 +196,41 @@ double hubLossConstant(const BemStation& s) {
 
 namespace {
 
+/// sin and cos of an angle, and of angles near it by the angle-sum formulas: the root search's
+/// evaluations after its first lie within a few 1e-3 rad of it, where sin δ and cos δ are their
+/// Taylor polynomials to below round-off (libm's sincos was 6 % of an aeroelastic start-up).
+struct SineCosine {
+  double angle, sin, cos;
+  explicit SineCosine(double a) : angle(a) { ::sincos(a, &sin, &cos); }  // glibc: both in one call
+  SineCosine(double a, double s, double c) : angle(a), sin(s), cos(c) {}
+  /// The pair at angle a: by rotation from this one for |a − angle| ≤ 0.01 rad (the polynomials'
+  /// remainders δ⁹/9! and δ⁸/8! below 3e-24), else evaluated.
+  SineCosine at(double a) const {
+    const double d = a - angle;
+    if (!(std::abs(d) <= 0.01)) return SineCosine(a);
+    const double d2 = d * d;
+    // Products with the reciprocals (constants), not divisions: |δ| ≤ 0.01, so their rounding is
+    // far below that of the result.
+    constexpr double k6 = 1.0 / 6, k20 = 1.0 / 20, k42 = 1.0 / 42, k12 = 1.0 / 12, k30 = 1.0 / 30;
+    const double sd = d * (1.0 - d2 * k6 * (1.0 - d2 * k20 * (1.0 - d2 * k42)));
+    const double cd = 1.0 - 0.5 * d2 * (1.0 - d2 * k12 * (1.0 - d2 * k30));
+    return SineCosine(a, sin * cd + cos * sd, cos * cd - sin * sd);
+  }
+};
+
 // inductions() written into r: the root search keeps its last evaluation in place, where a returned
 // copy was read back wide from the callee's narrow stores (a stalled store forwarding per evaluation).
 template <class T>
-void inductionsTo(Induction<T>& r, const BemStation& s, const T& phi, const T& Vx, const T& Vy, const T& theta,
-                  const BemOptions& o, const T* radius) {
+void inductionsTo(Induction<T>& r, const BemStation& s, const StationConstants& lc, const T& phi, const T& Vx,
+                  const T& Vy, const T& theta, const BemOptions& o, const T* radius,
+                  const SineCosine* near = nullptr) {
   using std::cos;
   using std::sin;
   using std::sqrt;
   r = Induction<T>{T(0.0), T(0.0), T(1.0), T(0.0), T(0.0), T(0.0), {T(0.0), T(0.0), T(0.0)}, true, false};
   const double phiv = valueOf(phi), vxv = valueOf(Vx), vyv = valueOf(Vy);
   // Special cases of BEMTU_InductionWithResidual, in its order.
-  if (fixedInductions(s, o)) {
+  if (lc.fixed) {
     r.a = T(1.0);
     r.fixed = true;
     return;
@@ -209,17 +244,25 @@ void inductionsTo(Induction<T>& r, const BemStation& s, const T& phi, const T& V
                                 ? evaluate(*s.polar, alpha)
                                 : evaluate(*s.polar, alpha, reynolds(s, T(sqrt(Vx * Vx + Vy * Vy))));
   r.coef = c;
-  const T sphi = sin(phi), cphi = cos(phi);
+  T sphi, cphi;
+  if constexpr (std::is_same_v<T, double>) {
+    const SineCosine sc = near ? near->at(phi) : SineCosine(phi);
+    sphi = sc.sin;
+    cphi = sc.cos;
+  } else {
+    sphi = sin(phi);
+    cphi = cos(phi);
+  }
   // Transform_ClCd_to_CxCy honouring AIDrag / TIDrag (only for the inductions).
   const T cx = o.ai_drag ? T(c.cl * cphi + c.cd * sphi) : T(c.cl * cphi);
   const T cy = o.ti_drag ? T(c.cl * sphi - c.cd * cphi) : T(c.cl * sphi);
-  T F = lossFactor(s, sphi, o);
+  T F = lossFactor(lc, sphi, o);
   if (valueOf(F) < kMinF) F = T(kMinF);
   r.F = F;
 
   // inductionFactors0 (Ning 2014, with Buhl 2005 for the high-thrust momentum state).
   // Local solidity; with `radius` it follows the deflected geometry in T.
-  const T sigma = radius ? T(s.blades * s.chord / (2.0 * kPi) / *radius) : T(s.blades * s.chord / (2.0 * kPi * s.r));
+  const T sigma = radius ? T(s.blades * s.chord / (2.0 * kPi) / *radius) : T(lc.sigma);
   const T k = sigma * cx / (4.0 * F * sphi * sphi);
   const double kv = valueOf(k);
   const bool momentum = (phiv > 0 && vxv >= 0) || (phiv < 0 && vxv < 0);
@@ -283,7 +326,7 @@ template <class T>
 Induction<T> inductions(const BemStation& s, const T& phi, const T& Vx, const T& Vy, const T& theta,
                         const BemOptions& o, const T* radius) {
   Induction<T> r;
-  inductionsTo(r, s, phi, Vx, Vy, theta, o, radius);
+  inductionsTo(r, s, stationConstants(s, o), phi, Vx, Vy, theta, o, radius);
   return r;
 }
 
@@ -392,6 +435,98 @@ UnbracketedRoot secantInside(F&& f, double a, double b, double x0, double ftol, 
   return s.converged ? UnbracketedRoot{s.x, r.evals, true} : r;
 }
 
+// AeroDyn's search over its brackets in order (FindTestRegion; Brent, or secant steps from a hint
+// inside the bracket), when no secant steps from a hint found a valid root in the first: returns the
+// root (setting out.bracket, out.slope, out.iterations), or the geometric angle with out.valid false,
+// or throws listing what each bracket gave. Apart from the hot path: the record of the brackets tried
+// is formed only here.
+template <class RFn>
+[[gnu::noinline]] double searchBrackets(RFn& R, const BemStation& s, double Vx, double Vy, const BemOptions& o,
+                                        const std::array<std::array<double, 2>, 3>& regions,
+                                        std::optional<double> phi_hint, double slope_hint, InflowRoot& out) {
+  // What each bracket gave, formatted only for the error message: building the text on every
+  // solve cost a fifth of an aeroelastic Campbell sweep.
+  struct Tried {
+    double lo = 0, hi = 0, f1 = 0, f2 = 0, root = 0, k = 0;
+    enum class Outcome { NoSignChange, InvalidRoot, Other } outcome = Outcome::Other;
+  };
+  std::array<Tried, 3> tried{};
+  int ntried = 0;
+  bool found = false;
+  double phi = 0.0;
+  for (int i = 0; i < 3 && !found; ++i) {
+    const double lo = regions[i][0], hi = regions[i][1];
+    const Induction<double> il = R(lo);  // copies: R keeps only its last evaluation
+    const Induction<double> ih = R(hi);
+    out.iterations += 2;
+    const double f1 = il.residual, f2 = ih.residual;
+    Tried& t = tried[static_cast<std::size_t>(ntried++)];
+    t.lo = lo;
+    t.hi = hi;
+    t.f1 = f1;
+    t.f2 = f2;
+    // FindTestRegion
+    if (equal(f1, 0.0) && equal(f2, 0.0) && il.valid && ih.valid) {
+      phi = lo > 0 ? lo : hi;
+      found = true;
+    } else if (std::abs(f1) < o.tolerance && ((std::abs(f2) < std::abs(f1) && ih.valid) || il.valid)) {
+      phi = (std::abs(f2) < std::abs(f1) && ih.valid) ? hi : lo;
+      found = true;
+    } else if (std::abs(f2) < o.tolerance && ih.valid) {
+      phi = hi;
+      found = true;
+    } else if ((f1 >= 0) != (f2 >= 0)) {
+      auto Rp = [&](double p) { return R(p).residual; };
+      const bool up = lo < hi;
+      const bool from_hint = phi_hint && *phi_hint > std::min(lo, hi) && *phi_hint < std::max(lo, hi);
+      double slope = slope_hint;
+      const BrentResult b = from_hint ? secantFrom(Rp, up ? lo : hi, up ? hi : lo, up ? f1 : f2, up ? f2 : f1,
+                                                   *phi_hint, o.tolerance, o.phi_tolerance, o.max_iter, slope)
+                                      : brent(Rp, lo, hi, f1, f2, o.tolerance, o.phi_tolerance, o.max_iter);
+      out.slope = from_hint ? slope : 0.0;
+      out.iterations += b.evals;
+      if (!b.converged)
+        throw ComputeError("BEM at r = " + num(s.r) + " m, Vx = " + num(Vx) + " m/s, Vy = " + num(Vy) +
+                           " m/s, theta = " + deg(s.theta) + " deg: the root finder did not converge in " +
+                           std::to_string(o.max_iter) + " iterations in [" + deg(lo) + ", " + deg(hi) +
+                           "] deg (last phi = " + deg(b.x) + " deg, R = " + num(b.fx) + ")");
+      const Induction<double>& ib = R(b.x);
+      if (ib.valid) {
+        phi = b.x;
+        found = true;
+      } else {
+        t.outcome = Tried::Outcome::InvalidRoot;
+        t.root = b.x;
+        t.k = ib.k;
+      }
+    } else {
+      t.outcome = Tried::Outcome::NoSignChange;
+    }
+    if (found) out.bracket = i;
+  }
+  if (!found) {
+    const double geo = std::atan2(Vx, Vy);
+    if (!o.geometric_fallback) {
+      std::string text;
+      for (int i = 0; i < ntried; ++i) {
+        const Tried& t = tried[static_cast<std::size_t>(i)];
+        if (i > 0) text += "; ";
+        text += "[" + deg(t.lo) + ", " + deg(t.hi) + "] deg: R = " + num(t.f1) + ", " + num(t.f2);
+        if (t.outcome == Tried::Outcome::InvalidRoot)
+          text += ": root at " + deg(t.root) + " deg is not a valid BEM solution (k = " + num(t.k) + ")";
+        else if (t.outcome == Tried::Outcome::NoSignChange)
+          text += ": no sign change";
+      }
+      throw ComputeError("no valid BEM inflow angle at r = " + num(s.r) + " m, Vx = " + num(Vx) + " m/s, Vy = " +
+                         num(Vy) + " m/s, theta = " + deg(s.theta) + " deg; brackets tried: " + text +
+                         "; geometric phi = " + deg(geo) + " deg");
+    }
+    phi = geo;
+    out.valid = false;
+  }
+  return phi;
+}
+
 }  // namespace
 
 InflowRoot findInflowRoot(const BemStation& s, double Vx, double Vy, const BemOptions& o,
@@ -405,9 +540,12 @@ InflowRoot findInflowRoot(const BemStation& s, double Vx, double Vy, const BemOp
   // The root finder's last point is evaluated again for its validity and its inductions: keep it.
   double last_phi = std::numeric_limits<double>::quiet_NaN();
   Induction<double>& last = out.at;
+  const StationConstants lc = stationConstants(s, o);
+  std::optional<SineCosine> first;  // sin, cos at the search's first point; the later ones rotate from it
   auto R = [&](double p) -> const Induction<double>& {
     if (p != last_phi) {
-      inductionsTo<double>(last, s, p, Vx, Vy, s.theta, o, nullptr);
+      if (!first) first.emplace(p);
+      inductionsTo<double>(last, s, lc, p, Vx, Vy, s.theta, o, nullptr, &*first);
       last_phi = p;
     }
     return last;
@@ -419,14 +557,6 @@ InflowRoot findInflowRoot(const BemStation& s, double Vx, double Vy, const BemOp
     phi = Vx > 0 ? kPi / 2 : -kPi / 2;
   } else {
     const auto regions = solveRegions(Vx, o.phi_guess);
-    // What each bracket gave, formatted only for the error message: building the text on every
-    // solve cost a fifth of an aeroelastic Campbell sweep.
-    struct Tried {
-      double lo = 0, hi = 0, f1 = 0, f2 = 0, root = 0, k = 0;
-      enum class Outcome { NoSignChange, InvalidRoot, Other } outcome = Outcome::Other;
-    };
-    std::array<Tried, 3> tried{};
-    int ntried = 0;
     bool found = false;
     // A hint inside the first bracket (the normal operating state, a warm Newton iterate) starts
     // secant steps before the bracket's ends are evaluated: a valid root inside it ends the search in
@@ -452,76 +582,7 @@ InflowRoot findInflowRoot(const BemStation& s, double Vx, double Vy, const BemOp
         out.slope = slope;
       }
     }
-    for (int i = 0; i < 3 && !found; ++i) {
-      const double lo = regions[i][0], hi = regions[i][1];
-      const Induction<double> il = R(lo);  // copies: R keeps only its last evaluation
-      const Induction<double> ih = R(hi);
-      out.iterations += 2;
-      const double f1 = il.residual, f2 = ih.residual;
-      Tried& t = tried[static_cast<std::size_t>(ntried++)];
-      t.lo = lo;
-      t.hi = hi;
-      t.f1 = f1;
-      t.f2 = f2;
-      // FindTestRegion
-      if (equal(f1, 0.0) && equal(f2, 0.0) && il.valid && ih.valid) {
-        phi = lo > 0 ? lo : hi;
-        found = true;
-      } else if (std::abs(f1) < o.tolerance && ((std::abs(f2) < std::abs(f1) && ih.valid) || il.valid)) {
-        phi = (std::abs(f2) < std::abs(f1) && ih.valid) ? hi : lo;
-        found = true;
-      } else if (std::abs(f2) < o.tolerance && ih.valid) {
-        phi = hi;
-        found = true;
-      } else if ((f1 >= 0) != (f2 >= 0)) {
-        auto Rp = [&](double p) { return R(p).residual; };
-        const bool up = lo < hi;
-        const bool from_hint = phi_hint && *phi_hint > std::min(lo, hi) && *phi_hint < std::max(lo, hi);
-        double slope = slope_hint;
-        const BrentResult b = from_hint ? secantFrom(Rp, up ? lo : hi, up ? hi : lo, up ? f1 : f2, up ? f2 : f1,
-                                                     *phi_hint, o.tolerance, o.phi_tolerance, o.max_iter, slope)
-                                        : brent(Rp, lo, hi, f1, f2, o.tolerance, o.phi_tolerance, o.max_iter);
-        out.slope = from_hint ? slope : 0.0;
-        out.iterations += b.evals;
-        if (!b.converged)
-          throw ComputeError("BEM at r = " + num(s.r) + " m, Vx = " + num(Vx) + " m/s, Vy = " + num(Vy) +
-                             " m/s, theta = " + deg(s.theta) + " deg: the root finder did not converge in " +
-                             std::to_string(o.max_iter) + " iterations in [" + deg(lo) + ", " + deg(hi) +
-                             "] deg (last phi = " + deg(b.x) + " deg, R = " + num(b.fx) + ")");
-        const Induction<double>& ib = R(b.x);
-        if (ib.valid) {
-          phi = b.x;
-          found = true;
-        } else {
-          t.outcome = Tried::Outcome::InvalidRoot;
-          t.root = b.x;
-          t.k = ib.k;
-        }
-      } else {
-        t.outcome = Tried::Outcome::NoSignChange;
-      }
-      if (found) out.bracket = i;
-    }
-    if (!found) {
-      const double geo = std::atan2(Vx, Vy);
-      if (!o.geometric_fallback) {
-        std::string text;
-        for (int i = 0; i < ntried; ++i) {
-          const Tried& t = tried[static_cast<std::size_t>(i)];
-          if (i > 0) text += "; ";
-          text += "[" + deg(t.lo) + ", " + deg(t.hi) + "] deg: R = " + num(t.f1) + ", " + num(t.f2);
-          if (t.outcome == Tried::Outcome::InvalidRoot)
-            text += ": root at " + deg(t.root) + " deg is not a valid BEM solution (k = " + num(t.k) + ")";
-          else if (t.outcome == Tried::Outcome::NoSignChange)
-            text += ": no sign change";
-        }
-        throw ComputeError("no valid BEM inflow angle at r = " + num(s.r) + " m, Vx = " + num(Vx) + " m/s, Vy = " +
-                           num(Vy) + " m/s, theta = " + deg(s.theta) + " deg; brackets tried: " + text +
-                           "; geometric phi = " + deg(geo) + " deg");
-      }
-      phi = geo;
-      out.valid = false;
-    }
+    if (!found) phi = searchBrackets(R, s, Vx, Vy, o, regions, phi_hint, slope_hint, out);
   }
 
   out.phi = phi;
