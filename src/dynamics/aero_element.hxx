@@ -85,22 +85,27 @@ ElementFrame<TK> elementFrame(const Body& body, const BodyPoint& pt, const Blade
                               const BladeAxes<TK>& axes) {
   using std::sqrt;
   ElementFrame<TK> g;
-  g.s = Vec3T<TK>::Zero();
-  Vec3T<TK> sd = Vec3T<TK>::Zero();
+  // Summed in locals from local pointers: summed into g.s, each term was stored and the basis
+  // pointers reloaded (the result might alias them).
+  Vec3T<TK> s = Vec3T<TK>::Zero(), sd = Vec3T<TK>::Zero();
+  const TK* c = bm.c.data();
+  const TK* cd = bm.cd.data();
   for (int k = 0; k < pt.P.cols(); ++k) {
-    g.s += pt.P.col(k) * bm.c(k);
-    sd += pt.P.col(k) * bm.cd(k);
+    s += pt.P.col(k) * c[k];
+    sd += pt.P.col(k) * cd[k];
   }
   Vec3T<TK> rot = Vec3T<TK>::Zero();  // small rotations of the section about body x, y, z
   for (int j = 0; j < body.inertia.ne; ++j) rot += pt.theta.col(j) * bm.qe[j];
+  g.s = s;
   g.Rs = bm.R * g.s;
   g.pos = bm.r + g.Rs;
   g.vel = bm.v + bm.w.cross(g.Rs) + bm.R * sd;
   // Out-of-plane slope of the deflected span axis (1, θz, −θy): the annulus frame's tilt.
-  const Vec3T<TK> span(TK(1), rot(2), -rot(1));  // body components
+  // (Its dot products written out: a Vec3 built from the constant and two values went through the
+  // stack, and reading it back as a pair stalled the store forwarding, a fifth of this function.)
   const Vec3T<TK> xab = axes.Ab.col(1), yab = axes.Ab.col(2), zab = axes.Ab.col(0);
   // cos and sin of the slope atan2(span·xa, span·za), without the angle.
-  const TK sx = span.dot(xab), sz = span.dot(zab);
+  const TK sx = xab(0) + rot(2) * xab(1) - rot(1) * xab(2), sz = zab(0) + rot(2) * zab(1) - rot(1) * zab(2);
   const TK h = sqrt(sx * sx + sz * sz);
   const TK cs = sz / h, ss = sx / h;
   const Vec3T<TK> xa = axes.Rnp.col(1), za = axes.Rnp.col(0);
@@ -153,15 +158,18 @@ void bladeLoads(const Model& m, int bi, int index0, const BladeMotion<TK>& bm, c
     // Positive twist and pitch turn the leading edge into the wind, about −x; an elastic
     // rotation about +x is the opposite.
     const T theta = T(st.twist) + T(bm.pitch - g.twist);
-    SectionState<T> sec;
-    try {
-      sec = in.frozen ? frozenSectionJet(am, st, vx, vy, theta, valueOf(r), in.frozen->axial(index),
-                                         in.frozen->tangential(index), jets[static_cast<std::size_t>(index)])
-                      : bemSection(am, st, vx, vy, theta, T(r), in.weight, bem[static_cast<std::size_t>(index)]);
-    } catch (const ComputeError& err) {
-      throw ComputeError(body.name + " aero element " + std::to_string(si + 1) + " (span " + std::to_string(st.span) +
-                         " m) at hub-height wind speed " + std::to_string(valueOf(in.speed)) + " m/s: " + err.what());
-    }
+    // Initialized from the call, not assigned (a copy read back wide from narrow stores stalls).
+    const SectionState<T> sec = [&] {
+      try {
+        return in.frozen ? frozenSectionJet(am, st, vx, vy, theta, valueOf(r), in.frozen->axial(index),
+                                            in.frozen->tangential(index), jets[static_cast<std::size_t>(index)])
+                         : bemSection(am, st, vx, vy, theta, T(r), in.weight, bem[static_cast<std::size_t>(index)]);
+      } catch (const ComputeError& err) {
+        throw ComputeError(body.name + " aero element " + std::to_string(si + 1) + " (span " +
+                           std::to_string(st.span) + " m) at hub-height wind speed " +
+                           std::to_string(valueOf(in.speed)) + " m/s: " + err.what());
+      }
+    }();
     const aero::SectionLoads<T>& L = sec.loads;
     const Vec3T<T> Fb = L.fx * g.xnb.template cast<T>() + L.fy * g.yab.template cast<T>();
     const Vec3T<T> Mb = L.mz * g.znb.template cast<T>();

@@ -155,24 +155,25 @@ SectionState<T> bemSection(const AeroModel& am, const AeroStation& st, const T& 
     s.bem_valid = false;
     return s;
   }
-  SectionState<T> s;
   const bool blended = valueOf(weight) < 1.0;
-  s.a = root.a * (blended ? valueOf(weight) : 1.0);
-  s.ap = root.ap * (blended ? valueOf(weight) : 1.0);
+  const double a = root.a * (blended ? valueOf(weight) : 1.0), ap = root.ap * (blended ? valueOf(weight) : 1.0);
+  // The loads are constructed in the returned state, not assigned to it: a copy of the callee's
+  // result, read back wide from its narrow stores, stalled the store forwarding.
   if constexpr (std::is_same_v<T, double>) {
     // The root's own inductions: the implicit-function step and its AD evaluation of ∂R/∂φ only serve
     // the derivatives (half the cost of an equilibrium's residual).
     // At a root in the operating bracket with its inductions unlimited, the root's own angle and
     // polar are AeroDyn's output ones (to the root tolerance): no atan2, no second table look-up.
-    s.loads = root.flow_at_root && !blended
-                  ? aero::loadsAtRoot(b, vx, vy, theta, root.phi, root.a, root.ap, {root.cl, root.cd, root.cm},
-                                      am.air_density)
-                  : aero::loadsAtInduction(b, vx, vy, theta, s.a, s.ap, am.air_density);
+    if (root.flow_at_root && !blended)
+      return SectionState<T>{aero::loadsAtRoot(b, vx, vy, theta, root.phi, root.a, root.ap,
+                                               {root.cl, root.cd, root.cm}, am.air_density),
+                             a, ap, true};
+    return SectionState<T>{aero::loadsAtInduction(b, vx, vy, theta, a, ap, am.air_density), a, ap, true};
   } else {
-    s.loads = aero::quasiSteadyLoads(b, vx, vy, theta, root.phi, am.air_density, am.bem, &r, blended ? &weight : nullptr,
-                                     &root.slope);
+    return SectionState<T>{aero::quasiSteadyLoads(b, vx, vy, theta, root.phi, am.air_density, am.bem, &r,
+                                                  blended ? &weight : nullptr, &root.slope),
+                           a, ap, true};
   }
-  return s;
 }
 
 }  // namespace whirl::detail

@@ -88,8 +88,16 @@ class BodyLoadSum {
     const Vec3T<T> wF = weight * Fb, wM = weight * Mb;
     Fb_ += wF;
     Mb_ += wM + Vec3T<T>(s.template cast<T>().cross(wF));
-    for (Eigen::Index k = 0; k < fk_.size(); ++k) fk_(k) += pt.P.col(k).dot(wF);
-    for (Eigen::Index j = 0; j < gtheta_.size(); ++j) gtheta_(j) += pt.theta.col(j).dot(wM);
+    // Local pointers: a store to the sums might alias the matrices' data pointers, which would be
+    // reloaded at every term.
+    T* fk = fk_.data();
+    T* gt = gtheta_.data();
+    const double* P = pt.P.data();
+    const double* th = pt.theta.data();
+    for (Eigen::Index k = 0, n = fk_.size(); k < n; ++k)
+      fk[k] += P[3 * k] * wF(0) + P[3 * k + 1] * wF(1) + P[3 * k + 2] * wF(2);
+    for (Eigen::Index j = 0, n = gtheta_.size(); j < n; ++j)
+      gt[j] += th[3 * j] * wM(0) + th[3 * j + 1] * wM(1) + th[3 * j + 2] * wM(2);
   }
 
   /// Number of body-component sums: Fb (3), Mb (3), fk (nc), gθ (ne).
