@@ -267,10 +267,11 @@ void inductionsTo(Induction<T>& r, const BemStation& s, const StationConstants& 
   const double kv = valueOf(k);
   const bool momentum = (phiv > 0 && vxv >= 0) || (phiv < 0 && vxv < 0);
   T a(0.0);
+  bool plain = false;  // a = k/(1 + k): then 1/(1 − a) = 1 + k
   if (momentum) {
     if (kv <= 2.0 / 3.0) {  // momentum state, a ≤ 0.4
       if (equal(kv, -1.0)) a = T(-fsign(kInductionLimit, 1.0 + kv));
-      else a = k / (1.0 + k);
+      else a = k / (1.0 + k), plain = true;
       if (kv < -1.0) r.valid = false;  // equivalent to a > 1: no momentum-region solution
     } else {  // Buhl 2005 empirical (Glauert) correction for 0.4 < a < 1, with the loss factor
       const T temp = 2.0 * F * k;
@@ -304,14 +305,18 @@ void inductionsTo(Induction<T>& r, const BemStation& s, const StationConstants& 
     }
   }
 
-  // Residual (Ning 2014 eq. for the momentum and propeller-brake regions), λ_r = Vy/Vx.
-  const T lambda = Vy / Vx;
+  // Residual (Ning 2014 eq. for the momentum and propeller-brake regions), λ_r = Vy/Vx: cos φ/λ_r
+  // formed as cos φ · Vx/Vy, and sin φ/(1 − a) as sin φ (1 + k) where a = k/(1 + k) — the same
+  // values to round-off, with two divisions fewer on the chain from φ to R.
+  const T vratio = Vx / Vy;
+  const T tangential = cphi * vratio * (1.0 - kp);
   T R;
   if (momentum) {
-    if (equal(valueOf(a), 1.0)) R = -cphi / lambda * (1.0 - kp);
-    else R = sphi / (1.0 - a) - cphi / lambda * (1.0 - kp);
+    if (plain) R = sphi * (1.0 + k) - tangential;
+    else if (equal(valueOf(a), 1.0)) R = -tangential;
+    else R = sphi / (1.0 - a) - tangential;
   } else {
-    R = sphi * (1.0 - k) - cphi / lambda * (1.0 - kp);
+    R = sphi * (1.0 - k) - tangential;
   }
   r.a = a;
   r.ap = ap;
