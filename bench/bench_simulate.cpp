@@ -63,6 +63,9 @@ void nrel5mwAeroStartup(benchmark::State& state) {
     sim = simulate(m, start, o);
     benchmark::DoNotOptimize(sim.q.data());
   }
+  state.counters["error_fails"] = static_cast<double>(sim.error_test_failures);
+  state.counters["newton_fails"] = static_cast<double>(sim.convergence_failures);
+  state.counters["newton_iters"] = static_cast<double>(sim.nonlinear_iterations);
   const int az = m.roles.azimuth.front();
   state.counters["final_rpm"] = sim.qd(sim.qd.rows() - 1, az) * 30 / std::numbers::pi;
   idaCounters(state, sim, o.t_end);
