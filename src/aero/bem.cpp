@@ -1,4 +1,5 @@
 #include "src/aero/bem.hpp"
+#include "src/aero/prandtl_expansion.hpp"
 
 #include <algorithm>
 #include <array>
@@ -80,28 +81,38 @@ StationConstants stationConstants(const BemStation& s, const BemOptions& o) {
 
 /// Prandtl factor, getHubTipLossCorrection with BEM_Mod = 1 (BEMMod_2D):
 ///   F = (2/π) acos(min(1, exp(−c_tip/|sin φ|))) · (2/π) acos(min(1, exp(−c_hub/|sin φ|))), 1 when sin φ = 0.
+/// The tip and hub parts of one root search (lossFactor).
+struct LossParts {
+  PrandtlExpansion tip, hub;
+};
+
 template <class T>
-T lossFactor(const StationConstants& lc, const T& sphi, const BemOptions& o) {
+T lossFactor(const StationConstants& lc, const T& sphi, const BemOptions& o, LossParts* parts = nullptr) {
   using std::acos;
   using std::exp;
   T F(1.0);
   const double sv = std::abs(valueOf(sphi));
   if (equal(sv, 0.0)) return F;
   const T sabs = absT(sphi);
-  auto part = [&](double c) -> T {
-    // (2/π) acos(exp(−f)) rounds to exactly 1 for f ≥ 36.3 (exp(−f) < 1.7e-16, below half an ulp of
-    // π/2): in double, the hub loss of every element away from the root and the tip loss of small
-    // inflow angles, two libm calls of each induction evaluation, skipped with the same value.
-    if constexpr (std::is_same_v<T, double>)
-      if (c / sv >= 38.0) return T(1.0);
-    const double e = std::exp(-c / sv);
-    if (!(e < 1.0)) return T(0.0);  // min(1, e) = 1 → acos(1) = 0 (station at or beyond the tip/root)
-    if (e == 0.0) return T(1.0);    // acos(0)·2/π = 1, constant (huge or infinite constant, e.g. zHub = 0)
-    if constexpr (std::is_same_v<T, double>) return (2.0 / kPi) * std::acos(e);  // e is the same value
-    else return T((2.0 / kPi) * acos(exp(-c / sabs)));
+  auto part = [&](double c, PrandtlExpansion* expansion) -> T {
+    if constexpr (std::is_same_v<T, double>) {
+      // (2/π) acos(exp(−f)) rounds to exactly 1 for f ≥ 36.3 (exp(−f) < 1.7e-16, below half an ulp
+      // of π/2): the hub loss of every element away from the root and the tip loss of small inflow
+      // angles, two libm calls of each induction evaluation, skipped with the same value.
+      const double f = c / sv;
+      if (f >= 38.0) return 1.0;
+      if (expansion) return expansion->at(f);
+      const double e = std::exp(-f);
+      return e < 1.0 ? (2.0 / kPi) * std::acos(e) : 0.0;  // min(1, e) = 1 → acos(1) = 0
+    } else {
+      const double e = std::exp(-c / sv);
+      if (!(e < 1.0)) return T(0.0);  // min(1, e) = 1 → acos(1) = 0 (station at or beyond the tip/root)
+      if (e == 0.0) return T(1.0);    // acos(0)·2/π = 1, constant (huge or infinite constant, e.g. zHub = 0)
+      return T((2.0 / kPi) * acos(exp(-c / sabs)));
+    }
   };
-  if (o.tip_loss) F = F * part(lc.tip);
-  if (o.hub_loss) F = F * part(lc.hub);
+  if (o.tip_loss) F = F * part(lc.tip, parts ? &parts->tip : nullptr);
+  if (o.hub_loss) F = F * part(lc.hub, parts ? &parts->hub : nullptr);
   return F;
 }
 
@@ -223,7 +234,7 @@ struct SineCosine {
 template <class T>
 void inductionsTo(Induction<T>& r, const BemStation& s, const StationConstants& lc, const T& phi, const T& Vx,
                   const T& Vy, const T& theta, const BemOptions& o, const T* radius,
-                  const SineCosine* near = nullptr) {
+                  const SineCosine* near = nullptr, LossParts* losses = nullptr) {
   using std::cos;
   using std::sin;
   using std::sqrt;
@@ -256,7 +267,7 @@ void inductionsTo(Induction<T>& r, const BemStation& s, const StationConstants& 
   // Transform_ClCd_to_CxCy honouring AIDrag / TIDrag (only for the inductions).
   const T cx = o.ai_drag ? T(c.cl * cphi + c.cd * sphi) : T(c.cl * cphi);
   const T cy = o.ti_drag ? T(c.cl * sphi - c.cd * cphi) : T(c.cl * sphi);
-  T F = lossFactor(lc, sphi, o);
+  T F = lossFactor(lc, sphi, o, losses);
   if (valueOf(F) < kMinF) F = T(kMinF);
   r.F = F;
 
@@ -547,10 +558,11 @@ InflowRoot findInflowRoot(const BemStation& s, double Vx, double Vy, const BemOp
   Induction<double>& last = out.at;
   const StationConstants lc = stationConstants(s, o);
   std::optional<SineCosine> first;  // sin, cos at the search's first point; the later ones rotate from it
+  LossParts losses;                 // Prandtl's parts likewise, by their Taylor polynomials
   auto R = [&](double p) -> const Induction<double>& {
     if (p != last_phi) {
       if (!first) first.emplace(p);
-      inductionsTo<double>(last, s, lc, p, Vx, Vy, s.theta, o, nullptr, &*first);
+      inductionsTo<double>(last, s, lc, p, Vx, Vy, s.theta, o, nullptr, &*first, &losses);
       last_phi = p;
     }
     return last;
