@@ -72,6 +72,7 @@ int evaluate(Content& p, double t, N_Vector yy, N_Vector yp, bool mass_only) {
   }
   ++(mass_only ? p.stats.mass_evaluations : p.stats.evaluations);
   p.factored = false;
+  p.ss = kSsAfterSetup;  // new blocks: the matrix's contraction is not known yet
   if (flag != 0) p.have_blocks = false;
   return flag == 0 ? SUNLS_SUCCESS : flag > 0 ? SUNLS_PACKAGE_FAIL_REC : SUNLS_PACKAGE_FAIL_UNREC;
 }
@@ -80,8 +81,10 @@ int factor(Content& p, double c) {
   p.S = p.dedq + c * p.dedqd - (c * c) * p.M;
   p.lu.compute(p.S);
   ++p.stats.factorizations;
+  // As IDA keeps its rate estimate while c stays within 25 % (IDASetDeltaCjLSetup): the matrix
+  // then differs from the last one by a small change of c only, its blocks are as old as they were.
+  if (!(c / p.c >= 0.75)) p.ss = kSsAfterSetup;
   p.c = c;
-  p.ss = kSsAfterSetup;  // a new matrix: its contraction is not known yet
   const auto d = p.lu.matrixLU().diagonal();
   bool regular = std::isfinite(c);
   for (int k = 0; k < p.n; ++k) regular = regular && std::isfinite(d(k)) && d(k) != 0.0;
