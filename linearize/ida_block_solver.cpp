@@ -72,7 +72,7 @@ int evaluate(Content& p, double t, N_Vector yy, N_Vector yp, bool mass_only) {
   }
   ++(mass_only ? p.stats.mass_evaluations : p.stats.evaluations);
   p.factored = false;
-  p.ss = kSsAfterSetup;  // new blocks: the matrix's contraction is not known yet
+  if (!mass_only) p.ss = kSsAfterSetup;  // new blocks: the matrix's contraction is not known yet
   if (flag != 0) p.have_blocks = false;
   return flag == 0 ? SUNLS_SUCCESS : flag > 0 ? SUNLS_PACKAGE_FAIL_REC : SUNLS_PACKAGE_FAIL_UNREC;
 }
