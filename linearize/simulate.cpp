@@ -76,7 +76,10 @@ struct Problem {
   std::exception_ptr error;      // an exception thrown inside a callback, rethrown after IDASolve
 
   Problem(const Model& model, const OperatingPoint& s, const SimulationOptions& o)
-      : m(model), start(s), opt(o), ws(model), jw(model), e(VecX::Zero(model.ndof())) {}
+      : m(model), start(s), opt(o), ws(model), jw(model), e(VecX::Zero(model.ndof())) {
+    const double tolerance = simulationBemTolerance(model.aero.bem.tolerance, o.rtol);
+    for (BemRoot& r : ws.bem) r.tolerance = tolerance;
+  }
 
   int n() const { return static_cast<int>(states.size()); }
 
@@ -236,6 +239,11 @@ void addStatistics(void* mem, Simulation& sim) {
 }
 
 }  // namespace
+
+double simulationBemTolerance(double model_tolerance, double rtol) {
+  constexpr double kAeroDynIndToler = 5e-10;  // AeroDyn: IndToler "default" in double precision
+  return std::max(model_tolerance, std::min(kAeroDynIndToler, 1e-3 * rtol));
+}
 
 Simulation simulate(const Model& m, const OperatingPoint& start, const SimulationOptions& opt) {
   if (!(opt.t_end > 0) || !std::isfinite(opt.t_end)) throw InputError("simulate: tmax: must be a finite time > 0");

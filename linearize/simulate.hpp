@@ -57,6 +57,13 @@ struct SimulationOptions {
   std::function<void(double, double)> progress;
 };
 
+/// The root tolerance of the induction's residual in a time simulation's residuals and outputs:
+/// AeroDyn's own in double precision (IndToler "default", 5e-10: what OpenFAST's simulation solves
+/// to), tightened to 1e-3·rtol for a tighter integration (the loads' error, ~10 × the tolerance
+/// relative, stays far below IDA's), never below the model's (`model_tolerance`, the linearization's
+/// 1e-13). The Newton matrix's AD passes keep the model's.
+double simulationBemTolerance(double model_tolerance, double rtol);
+
 /// The recorded time series. Row k of each matrix is instant time[k].
 struct Simulation {
   std::vector<double> time;  ///< [s]

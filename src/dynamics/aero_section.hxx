@@ -108,6 +108,12 @@ SectionState<T> frozenSectionJet(const AeroModel& am, const AeroStation& st, con
 ///
 /// `weight` is AeroDyn's BEM weight of the rotor's tip-speed ratio (aero::inductionWeight): the
 /// inductions are scaled by it; at 0 (λ ≤ 1: parked, idling, start-up) BEM is not solved at all.
+inline aero::BemOptions withTolerance(const aero::BemOptions& o, double tolerance) {
+  aero::BemOptions c = o;
+  c.tolerance = tolerance;
+  return c;
+}
+
 template <class T>
 SectionState<T> bemSection(const AeroModel& am, const AeroStation& st, const T& vx, const T& vy, const T& theta,
                            const T& r, const T& weight, BemRoot& root) {
@@ -130,10 +136,25 @@ SectionState<T> bemSection(const AeroModel& am, const AeroStation& st, const T& 
     if (root.valid) {
       const double X = root.vx * (1 - root.a), Y = root.vy * (1 + root.ap);
       const double dX = (x - root.vx) * (1 - root.a), dY = (y - root.vy) * (1 + root.ap);
-      const double moved = (Y * dX - X * dY) / (X * X + Y * Y);
+      double moved = (Y * dX - X * dY) / (X * X + Y * Y);
+      // With the induction's response: the root's own move to first order (implicit-function theorem,
+      // dφ = −(R_Vx dVx + R_Vy dVy)/R_φ). In the momentum region R = sin φ/(1 − a) − cos φ (Vx/Vy)(1 − k')
+      // with a, k' functions of φ alone, so R_Vx, R_Vy are those of the tangential term and the move is
+      // the frozen-wake one times R_φ,frozen/R_φ, R_φ,frozen = |(X, Y)|/((1 − a)(1 + a') Vy) (R_φ with a,
+      // a' held) and R_φ the last search's secant slope. Only at a root in the operating bracket and for
+      // a small move (near a fold R_φ → 0 and the first order says nothing).
+      if (root.flow_at_root && x > 0 && y > 0 && root.search_slope > 0) {
+        const double frozen_slope = std::sqrt(X * X + Y * Y) / ((1 - root.a) * (1 + root.ap) * root.vy);
+        const double responded = moved * (frozen_slope / root.search_slope);
+        if (std::abs(responded) < 0.01) moved = responded;
+      }
       hint = root.phi + (std::abs(moved) < 0.05 ? moved : 0.0);
     }
-    const aero::InflowRoot sol = aero::findInflowRoot(b, x, y, am.bem, hint, root.valid ? root.search_slope : 0.0);
+    const aero::InflowRoot sol =
+        root.tolerance > 0
+            ? aero::findInflowRoot(b, x, y, withTolerance(am.bem, root.tolerance), hint,
+                                   root.valid ? root.search_slope : 0.0)
+            : aero::findInflowRoot(b, x, y, am.bem, hint, root.valid ? root.search_slope : 0.0);
     root.valid = true;
     root.vx = x;
     root.vy = y;

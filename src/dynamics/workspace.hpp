@@ -86,6 +86,9 @@ struct BemRoot {
   /// the root's own evaluation (aero::loadsAtRoot)
   bool flow_at_root = false;
   double cl = 0, cd = 0, cm = 0;
+  /// The double residual's root tolerance for this element (aero::BemOptions::tolerance), 0: the
+  /// model's. A time simulation sets AeroDyn's own (linearize/simulate.hpp); the AD passes keep the model's.
+  double tolerance = 0;
 };
 
 /// One blade element's frozen-wake loads at an inflow (vx, vy, θ) and their first derivatives in
