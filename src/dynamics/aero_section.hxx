@@ -127,6 +127,10 @@ SectionState<T> bemSection(const AeroModel& am, const AeroStation& st, const T& 
   // the loads' derivatives then differ from those at the exact root by that round-off only.
   const double tol = std::is_same_v<T, double> ? 0.0 : 1e-12;
   const double vscale = tol * (std::abs(x) + std::abs(y));
+  // What the loads need of the root, in locals: read back from `root` just after the narrow stores
+  // of a search, the fields were loaded in pairs and stalled the store forwarding.
+  double phi = root.phi, ra = root.a, rap = root.ap, cl = root.cl, cd = root.cd, cm = root.cm;
+  bool bem_valid = root.bem_valid, flow_at_root = root.flow_at_root;
   if (!(root.valid && std::abs(root.vx - x) <= vscale && std::abs(root.vy - y) <= vscale &&
         std::abs(root.theta - b.theta) <= tol && std::abs(root.r - b.r) <= tol * b.r)) {
     // The element's last root starts the search: the equilibrium iterates move it a little. Moved
@@ -155,29 +159,37 @@ SectionState<T> bemSection(const AeroModel& am, const AeroStation& st, const T& 
             ? aero::findInflowRoot(b, x, y, withTolerance(am.bem, root.tolerance), hint,
                                    root.valid ? root.search_slope : 0.0)
             : aero::findInflowRoot(b, x, y, am.bem, hint, root.valid ? root.search_slope : 0.0);
+    phi = sol.phi;
+    ra = sol.a;
+    rap = sol.ap;
+    bem_valid = sol.valid;
+    flow_at_root = sol.flow_at_root;
+    cl = sol.at.coef.cl;
+    cd = sol.at.coef.cd;
+    cm = sol.at.coef.cm;
     root.valid = true;
     root.vx = x;
     root.vy = y;
     root.theta = b.theta;
     root.r = b.r;
-    root.phi = sol.phi;
-    root.a = sol.a;
-    root.ap = sol.ap;
-    root.bem_valid = sol.valid;
+    root.phi = phi;
+    root.a = ra;
+    root.ap = rap;
+    root.bem_valid = bem_valid;
     root.slope = 0;
     root.search_slope = sol.slope;
-    root.flow_at_root = sol.flow_at_root;
-    root.cl = sol.at.coef.cl;
-    root.cd = sol.at.coef.cd;
-    root.cm = sol.at.coef.cm;
+    root.flow_at_root = flow_at_root;
+    root.cl = cl;
+    root.cd = cd;
+    root.cm = cm;
   }
-  if (!root.bem_valid) {  // no valid BEM root: the geometric inflow, a = a' = 0 (AeroDyn's fallback)
+  if (!bem_valid) {  // no valid BEM root: the geometric inflow, a = a' = 0 (AeroDyn's fallback)
     SectionState<T> s = frozenSection(am, st, vx, vy, theta, valueOf(r), 0.0, 0.0);
     s.bem_valid = false;
     return s;
   }
   const bool blended = valueOf(weight) < 1.0;
-  const double a = root.a * (blended ? valueOf(weight) : 1.0), ap = root.ap * (blended ? valueOf(weight) : 1.0);
+  const double a = ra * (blended ? valueOf(weight) : 1.0), ap = rap * (blended ? valueOf(weight) : 1.0);
   // The loads are constructed in the returned state, not assigned to it: a copy of the callee's
   // result, read back wide from its narrow stores, stalled the store forwarding.
   if constexpr (std::is_same_v<T, double>) {
@@ -185,13 +197,12 @@ SectionState<T> bemSection(const AeroModel& am, const AeroStation& st, const T& 
     // the derivatives (half the cost of an equilibrium's residual).
     // At a root in the operating bracket with its inductions unlimited, the root's own angle and
     // polar are AeroDyn's output ones (to the root tolerance): no atan2, no second table look-up.
-    if (root.flow_at_root && !blended)
-      return SectionState<T>{aero::loadsAtRoot(b, vx, vy, theta, root.phi, root.a, root.ap,
-                                               {root.cl, root.cd, root.cm}, am.air_density),
+    if (flow_at_root && !blended)
+      return SectionState<T>{aero::loadsAtRoot(b, vx, vy, theta, phi, ra, rap, {cl, cd, cm}, am.air_density),
                              a, ap, true};
     return SectionState<T>{aero::loadsAtInduction(b, vx, vy, theta, a, ap, am.air_density), a, ap, true};
   } else {
-    return SectionState<T>{aero::quasiSteadyLoads(b, vx, vy, theta, root.phi, am.air_density, am.bem, &r,
+    return SectionState<T>{aero::quasiSteadyLoads(b, vx, vy, theta, phi, am.air_density, am.bem, &r,
                                                   blended ? &weight : nullptr, &root.slope),
                            a, ap, true};
   }
