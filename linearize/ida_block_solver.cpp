@@ -81,8 +81,8 @@ int factor(Content& p, double c) {
   p.S = p.dedq + c * p.dedqd - (c * c) * p.M;
   p.lu.compute(p.S);
   ++p.stats.factorizations;
-  // As IDA keeps its rate estimate while c stays within 25 % (IDASetDeltaCjLSetup): the matrix
-  // then differs from the last one by a small change of c only, its blocks are as old as they were.
+  // The rate estimate survives a c that grows or falls by at most 25 % (the header): the blocks are
+  // as old as they were, and a larger c weighs them less.
   if (!(c / p.c >= 0.75)) p.ss = kSsAfterSetup;
   p.c = c;
   const auto d = p.lu.matrixLU().diagonal();

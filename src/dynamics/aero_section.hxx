@@ -102,18 +102,19 @@ SectionState<T> frozenSectionJet(const AeroModel& am, const AeroStation& st, con
   }
 }
 
-/// Loads with the induction of the current inflow: BEM solved at the values, the inflow angle's
-/// derivatives by the implicit-function theorem. Without induction (AeroDyn WakeMod = 0): φ is the
-/// geometric inflow angle.
-///
-/// `weight` is AeroDyn's BEM weight of the rotor's tip-speed ratio (aero::inductionWeight): the
-/// inductions are scaled by it; at 0 (λ ≤ 1: parked, idling, start-up) BEM is not solved at all.
+/// `o` with another root tolerance (BemRoot::tolerance).
 inline aero::BemOptions withTolerance(const aero::BemOptions& o, double tolerance) {
   aero::BemOptions c = o;
   c.tolerance = tolerance;
   return c;
 }
 
+/// Loads with the induction of the current inflow: BEM solved at the values, the inflow angle's
+/// derivatives by the implicit-function theorem. Without induction (AeroDyn WakeMod = 0): φ is the
+/// geometric inflow angle.
+///
+/// `weight` is AeroDyn's BEM weight of the rotor's tip-speed ratio (aero::inductionWeight): the
+/// inductions are scaled by it; at 0 (λ ≤ 1: parked, idling, start-up) BEM is not solved at all.
 template <class T>
 SectionState<T> bemSection(const AeroModel& am, const AeroStation& st, const T& vx, const T& vy, const T& theta,
                            const T& r, const T& weight, BemRoot& root) {
