@@ -1,5 +1,4 @@
 #include "src/aero/bem.hpp"
-#include "src/aero/prandtl_expansion.hpp"
 
 #include <algorithm>
 #include <array>
@@ -11,6 +10,7 @@
 #include <sstream>
 #include <type_traits>
 
+#include "src/aero/prandtl_expansion.hpp"
 #include "src/model/scalar.hpp"
 #include "src/model/brent.hpp"
 #include "src/model/error.hpp"
@@ -79,13 +79,13 @@ StationConstants stationConstants(const BemStation& s, const BemOptions& o) {
   return {tip, hub, fixedInductions(s, o, tip, hub), s.blades * s.chord / (2.0 * kPi * s.r)};
 }
 
-/// Prandtl factor, getHubTipLossCorrection with BEM_Mod = 1 (BEMMod_2D):
-///   F = (2/π) acos(min(1, exp(−c_tip/|sin φ|))) · (2/π) acos(min(1, exp(−c_hub/|sin φ|))), 1 when sin φ = 0.
 /// The tip and hub parts of one root search (lossFactor).
 struct LossParts {
   PrandtlExpansion tip, hub;
 };
 
+/// Prandtl factor, getHubTipLossCorrection with BEM_Mod = 1 (BEMMod_2D):
+///   F = (2/π) acos(min(1, exp(−c_tip/|sin φ|))) · (2/π) acos(min(1, exp(−c_hub/|sin φ|))), 1 when sin φ = 0.
 template <class T>
 T lossFactor(const StationConstants& lc, const T& sphi, const BemOptions& o, LossParts* parts = nullptr) {
   using std::acos;
