@@ -4,5 +4,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
+# ccache keys on paths relative to the repository root, so clones and worktrees share cached objects.
+export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$(dirname "$PWD")}"
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DWHIRL_WERROR="${WHIRL_WERROR:-OFF}" > build.log 2>&1 || { cat build.log; exit 1; }
 cmake --build build -j "$(nproc)" 2>&1 | tail -n 3

@@ -9,6 +9,7 @@ packages=(
   gnuplot-nox libyaml-cpp-dev libcli11-dev libfmt-dev libmatio-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libsundials-dev  # IDA, the time integrator of whirl simulate
+  ccache  # compiler cache: rebuilds on the same machine (CI, sessions) reuse objects
   python3-scipy  # the .mat export test loads the file with scipy.io.loadmat (skipped without it)
   "$@"
 )
