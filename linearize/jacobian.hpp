@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// Exact Jacobians of the residual (and of the outputs) by forward-mode AD in fixed-size chunks
-/// (AD performance recipe, docs/architecture.md): seed kChunk directions per pass, evaluate, extract.
+/// (AD performance recipe, docs/dev/architecture.md): seed kChunk directions per pass, evaluate, extract.
 ///
 /// Inputs that drive frozen coordinates (Input::dofs, q_d = value + gain · u) are differentiated
 /// through them: the direction of u_i also seeds q_d with gain, so ∂/∂u is the total derivative.

@@ -10,7 +10,7 @@
 ///   q_b = q_0 + Σ_{k=1}^{K} (q_kc cos kψ_b + q_ks sin kψ_b) [+ q_d (−1)^(b+1) for even N],
 ///   K = (N−1)/2 (integer division), i.e.
 ///   q_0 = (1/N) Σ_b q_b, q_kc = (2/N) Σ_b q_b cos kψ_b, q_ks = (2/N) Σ_b q_b sin kψ_b,
-///   q_d = (1/N) Σ_b (−1)^(b+1) q_b ([Bir2008]; docs/architecture.md, notation; blades numbered from 1).
+///   q_d = (1/N) Σ_b (−1)^(b+1) q_b ([Bir2008]; docs/dev/architecture.md, notation; blades numbered from 1).
 /// In matrix form q = T1(ψ) q_NR. The transformed coordinates of a set take the slots of the set in
 /// the original vector: blade 1's slot holds q_0, blade 2's q_1c, blade 3's q_1s, then q_2c, q_2s, …
 /// and q_d last for even N (as MBC3 does for N = 3).
@@ -49,7 +49,7 @@ struct MbcLayout {
 };
 
 /// Layout for x = [q (dim n); q̇ (dim n); x1 (first-order states)], whirl's own ordering
-/// (docs/architecture.md, notation) and that of an OpenFAST model with ElastoDyn states only.
+/// (docs/dev/architecture.md, notation) and that of an OpenFAST model with ElastoDyn states only.
 /// \param[in] dof_blade blade of each DOF q (dim n), −1 = fixed frame.
 /// \param[in] first_order_blade blade of each first-order state (dim nx − 2n).
 MbcLayout secondOrderLayout(int num_blades, const std::vector<int>& dof_blade,

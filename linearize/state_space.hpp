@@ -4,7 +4,7 @@
 /// with named states, inputs and outputs (units, operating-point values, rotating-frame blade).
 ///
 /// States x = [q; q̇; z] of the active coordinates and any first-order states z (HydroDyn radiation; notation,
-/// docs/architecture.md), A and B from linearize(). Outputs
+/// docs/dev/architecture.md), A and B from linearize(). Outputs
 /// y = h(q, q̇, q̈) (Model::outputs) are differentiated by AD: with H_• = ∂h/∂• on the active
 /// coordinates and q̈ taken from the equations of motion, q̈ = A_q̈ x + B_q̈ u (the rows of q̈ in A, B),
 ///   C = [H_q, H_q̇, 0] + H_q̈ A_q̈,   D = H_u + H_q̈ B_q̈.

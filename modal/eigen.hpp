@@ -3,7 +3,7 @@
 /// Dense eigenanalysis (LAPACK) of first-order systems ẋ = A x and of second-order systems
 /// M q̈ + C q̇ + K q = 0.
 ///
-/// Conventions (notation, docs/architecture.md): state x = [q; q̇]; for an eigenvalue λ the natural frequency is
+/// Conventions (notation, docs/dev/architecture.md): state x = [q; q̇]; for an eigenvalue λ the natural frequency is
 /// f = |λ|/2π, the damped frequency f_d = |Im λ|/2π and the damping ratio ζ = −Re λ/|λ|.
 /// Eigenvalues come in the order LAPACK returns them (unsorted; a complex pair is adjacent,
 /// positive imaginary part first). Eigenvectors are the columns of `vectors`, scaled to unit

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The include rule of docs/architecture.md (*Layers*): a file includes only files of its own layer
+# The include rule of docs/dev/architecture.md (*Layers*): a file includes only files of its own layer
 # or of a lower one, and the two layer-1 folders (FE, equations) do not include each other.
 # Prints every `#include "…"` that breaks the rule as file:line: includes X (layer a -> b) and exits
 # 1 if there is one; a source folder with no layer is an error too (give a new folder its layer here
@@ -8,7 +8,7 @@
 set -euo pipefail
 cd "${1:-$(dirname "$0")/..}"
 
-# folder -> layer rank (docs/architecture.md, table *Layers*)
+# folder -> layer rank (docs/dev/architecture.md, table *Layers*)
 layer_of() {
   case "$1" in
     src/model/*|src/shapes/*|src/aero/*|src/parallel/*) echo 0 ;;

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# What `whirl modes DECK` does with each public OpenFAST deck: docs/decks.md on stdout, a Markdown
+# What `whirl modes DECK` does with each public OpenFAST deck: docs/user/decks.md on stdout, a Markdown
 # table with one row per primary file (runs, or the first line of the refusal), then the count.
 #
-#   bash scripts/deck-table.sh [DECKS_DIR] [WHIRL] > docs/decks.md
+#   bash scripts/deck-table.sh [DECKS_DIR] [WHIRL] > docs/user/decks.md
 #
 # DECKS_DIR defaults to ../shared/data/decks (the collection described in its README.md); WHIRL to
 # build/whirl. The offshore certification tests Test19–25 (HydroDyn, SubDyn, moorings) are counted apart.
@@ -26,7 +26,7 @@ quotes the error line of the message; paths are relative to the decks folder. "n
 whirl noted: the time-domain options of a simulation deck it linearizes as their steady counterpart
 (dynamic BEMT, unsteady airfoils, tower influence, wind files) and a controller it does not run (README,
 *Aerodynamics*).
-Regenerate with `bash scripts/deck-table.sh > docs/decks.md` (after building `build/whirl`).
+Regenerate with `bash scripts/deck-table.sh > docs/user/decks.md` (after building `build/whirl`).
 The slow CTest suite `EveryDeckSlow` (`tests/cli/test_cli_every_deck.cpp`, on copies of these decks in
 `tests/data/openfast/decks`) runs each of them with `whirl modes --rpm 0` and `whirl campbell` from 0 to
 rated rotor speed, as shipped and structure only, and fails on a refusal it does not list with its

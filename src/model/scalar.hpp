@@ -2,7 +2,7 @@
 /// \file
 /// Scalar types the equations are instantiated for: double, and forward-mode AD with a fixed-size
 /// chunk of derivative directions: no heap allocation per operation, 8 directions a pass (AD
-/// performance recipe, docs/architecture.md).
+/// performance recipe, docs/dev/architecture.md).
 #include <Eigen/Core>
 #include <unsupported/Eigen/AutoDiff>
 

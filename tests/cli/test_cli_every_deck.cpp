@@ -1,7 +1,7 @@
 // Every public OpenFAST deck of `../shared/data/decks` (issues 16 and 17; copies in
 // tests/data/openfast/decks, tests/data/openfast/README.md): `whirl modes` parked and `whirl campbell`
 // from 0 to rated rotor speed, as shipped and as the structural model (`--set CompAero=0`). A deck
-// runs, or is refused for the documented reason listed here (docs/decks.md); a new refusal, a crash
+// runs, or is refused for the documented reason listed here (docs/user/decks.md); a new refusal, a crash
 // or an operating point that does not converge fails. A deck that starts to run where a refusal is
 // listed passes (then its listed reason is stale: remove it).
 #include <gmock/gmock.h>
@@ -25,7 +25,7 @@ struct Deck {
   const char* structure;  ///< the same with --set CompAero=0
 };
 
-// Reasons whirl does not support yet, as its messages say them (docs/decks.md).
+// Reasons whirl does not support yet, as its messages say them (docs/user/decks.md).
 constexpr const char* kNoActiveDof = "the model has no active degree of freedom";
 // AWT-27 parked: the rotor's centre of mass lies 0.38 m downwind of the teeter pin (coned blades, hub
 // mass at HubCM) and the deck's teeter spring is 1 N m/rad (TeetSSSp from TeetSStP = 0, hard stop at

@@ -133,7 +133,7 @@ TEST_P(IsotropicRotorTest, WhirlSplitAndTimeInvariance) {
 INSTANTIATE_TEST_SUITE_P(Blades, IsotropicRotorTest, ::testing::Values(3, 4, 5));
 
 // Blade values from multiblade coordinates, row b of T1 for 4 blades: q_b = q0 + qc cos ψ_b +
-// qs sin ψ_b + qd (−1)^b ([Bir2008]; docs/architecture.md, notation; b = 1 … 4), read through
+// qs sin ψ_b + qd (−1)^b ([Bir2008]; docs/dev/architecture.md, notation; b = 1 … 4), read through
 // C_NR = C T1 of a fixed output y = q_1.
 TEST(Mbc, FourBladeBasisRows) {
   whirl::MbcLayout L;

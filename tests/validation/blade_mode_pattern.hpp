@@ -4,7 +4,7 @@
 // and, for a blade group, the phase pattern of the three blades in the eigenvector.
 //
 // With blade b at azimuth ψ_b = ψ + 2π(b−1)/3 (0 = up) and q_b its (phase-aligned, real) component,
-// q0 = (1/3) Σ q_b, qc = (2/3) Σ q_b cos ψ_b, qs = (2/3) Σ q_b sin ψ_b ([Bir2008]; docs/architecture.md,
+// q0 = (1/3) Σ q_b, qc = (2/3) Σ q_b cos ψ_b, qs = (2/3) Σ q_b sin ψ_b ([Bir2008]; docs/dev/architecture.md,
 // notation), and Σ q_b² = 3 q0² + (3/2)(qc² + qs²). Collective: 3 q0² carries most of Σ q_b². Asymmetric:
 // - out of plane (flap): cos ψ (upper blade against the lower ones) tilts the rotor ("pitch"),
 //   sin ψ (one side against the other) yaws it ("yaw");
