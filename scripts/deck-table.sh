@@ -21,27 +21,27 @@ cat <<'HEAD'
 Each primary file of `../shared/data/decks` (FAST v8 certification tests, OpenFAST toolbox NREL 5MW,
 IEA 3.4 MW reference turbine; its README names the sources) given to `whirl modes DECK` as shipped
 and with `--set CompAero=0` (the structural model of the same deck, no AeroDyn read). The offshore
-certification tests Test19–25 (HydroDyn, SubDyn, moorings: README, *Offshore*) are counted apart. "refused"
+certification tests Test19–25 (HydroDyn, SubDyn, moorings: [Offshore](../theory/offshore.md)) are counted apart. "refused"
 quotes the error line of the message; paths are relative to the decks folder. "notes:" lists the keys
 whirl noted: the time-domain options of a simulation deck it linearizes as their steady counterpart
-(dynamic BEMT, unsteady airfoils, tower influence, wind files) and a controller it does not run (README,
-*Aerodynamics*).
+(dynamic BEMT, unsteady airfoils, tower influence, wind files) and a controller it does not run
+([Aerodynamics](../theory/aerodynamics.md)).
 Regenerate with `bash scripts/deck-table.sh > docs/user/decks.md` (after building `build/whirl`).
 The slow CTest suite `EveryDeckSlow` (`tests/cli/test_cli_every_deck.cpp`, on copies of these decks in
 `tests/data/openfast/decks`) runs each of them with `whirl modes --rpm 0` and `whirl campbell` from 0 to
 rated rotor speed, as shipped and structure only, and fails on a refusal it does not list with its
 reason below, on a crash or on an operating point that does not converge. The AWT-27 decks (Test01–05)
 cannot be parked with their teeter free (the rotor's weight acts 0.38 m off the teeter pin, the deck's
-teeter spring is 1 N m/rad: README, *Two-bladed and teetered rotors*); the table runs each deck at its
+teeter spring is 1 N m/rad: [Two-bladed and teetered rotors](openfast.md#two-bladed-and-teetered-rotors)); the table runs each deck at its
 own RotSpeed, so Test01, 03 and 04 (53.3 rpm) run, and of Test02 and 05 (0 rpm) only Test02 with its
 aerodynamics (12 m/s) finds a parked equilibrium; the suite runs their Campbell sweeps from half the
 rated speed (Test03 and 05 in still air, where the teeter's equilibrium at half the rated speed lies on a
-jump of one element's loads: README, *Aerodynamics*). In AOC Test08 (a fixed yaw error) and UAE VI Test09 (30 deg yaw, 11 m/s) the in-plane wind
+jump of one element's loads: [Aerodynamics](../theory/aerodynamics.md)). In AOC Test08 (a fixed yaw error) and UAE VI Test09 (30 deg yaw, 11 m/s) the in-plane wind
 of the yaw exceeds the rotational speed at the blade root at some azimuths, and BEM has no valid inflow
 angle there: those elements take the geometric inflow angle without induction, as AeroDyn does in its
 simulation and its linearization (`BEMT_UnCoupledSolve`), and whirl says how many in one note. The decks with AeroDyn v14
 (`CompAero = 1`: Test01, 04, 06, 09, 11, 16, 17) run through its conversion to AeroDyn v15's elements
-and BEMT (README, *Aerodynamics*); SWRT Test16 and 17 interpolate their airfoil tables on the Reynolds
+and BEMT ([Aerodynamics](../theory/aerodynamics.md)); SWRT Test16 and 17 interpolate their airfoil tables on the Reynolds
 number (`RENUM`), as AeroDyn v15's `AFTabMod = 2` does in log Re.
 
 HEAD
