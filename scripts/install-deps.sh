@@ -11,6 +11,7 @@ packages=(
   libsundials-dev  # IDA, the time integrator of whirl simulate
   ccache  # compiler cache: rebuilds on the same machine (CI, sessions) reuse objects
   python3-scipy  # the .mat export test loads the file with scipy.io.loadmat (skipped without it)
+  python3-sphinx python3-myst-parser python3-breathe doxygen  # the documentation site: scripts/docs.sh
   "$@"
 )
 missing=()
