@@ -13,7 +13,7 @@
 # Everything runs under `nice -n 19`; the build uses FUZZ_BUILD_JOBS (default 2) jobs.
 # FUZZ_RUNS=N also stops each harness after N executions.
 # FUZZ_BUILD_DIR=DIR uses another build folder configured with -DWHIRL_FUZZ=ON (e.g. one that also
-# builds the tests under the sanitizers: README.md, *Reliability*).
+# builds the tests under the sanitizers: docs/dev/fuzzing.md).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-45}
