@@ -6,8 +6,10 @@ Scans README.md, CONTRIBUTING.md, CHANGELOG.md and docs/**/*.md for Markdown lin
 existing file or folder relative to the page; with a #fragment into a Markdown file, that file must
 have a heading whose GitHub-style anchor is the fragment. Code blocks and code spans are skipped.
 External links (http:, https:, mailto:) are not fetched (the build is offline). README.md is the
-front page: at most README_MAX_LINES lines (issue 42), the manual lives in docs/.
-Usage: check-doc-links.py REPO_ROOT; prints one line per broken link, exits 1 if any.
+front page: at most README_MAX_LINES lines (issue 42), the manual lives in docs/. The pages and the
+README are reference text: a calendar date (2026-11-28) in them is reported too — measurement logs
+and history go to CHANGELOG.md and commit messages.
+Usage: check-doc-links.py REPO_ROOT; prints one line per problem, exits 1 if any.
 """
 import pathlib
 import re
@@ -19,6 +21,7 @@ FENCE = re.compile(r"^\s*(```|~~~)")
 CODE_SPAN = re.compile(r"(`+)(?:(?!\1).)+?\1")
 HEADING = re.compile(r"^(#{1,6})\s+(.*?)\s*#*\s*$")
 README_MAX_LINES = 300
+DATE = re.compile(r"\b20\d\d-[01]\d-[0-3]\d\b")
 
 
 def slug(heading):
@@ -66,6 +69,13 @@ def main():
     pages = [root / name for name in ("README.md", "CONTRIBUTING.md", "CHANGELOG.md") if (root / name).exists()]
     pages += sorted((root / "docs").rglob("*.md"))
     problems = [p for page in pages for p in broken_links(page, root)]
+    for page in pages:
+        if page.name == "CHANGELOG.md":
+            continue
+        for number, line in prose_lines(page):
+            if DATE.search(line):
+                problems.append(f"{page.relative_to(root)}:{number}: a date ({DATE.search(line).group(0)}): "
+                                "history belongs in CHANGELOG.md")
     readme = root / "README.md"
     if readme.exists():
         lines = len(readme.read_text(encoding="utf-8").splitlines())
