@@ -13,6 +13,7 @@
 #include "src/writers/gnuplot.hpp"
 #include "src/io/schedule.hpp"
 #include "src/writers/output_set.hpp"
+#include "src/writers/steady_table.hpp"
 #include "src/model/error.hpp"
 
 namespace whirl::cli {
@@ -26,40 +27,6 @@ struct SteadyOptions {
   int azimuths = 3;
   bool no_plot = false;
 };
-
-struct Row {
-  SteadyState s;
-  double cp = 0, ct = 0, tsr = 0;
-};
-
-Row rowOf(const Model& m, const SteadyState& s) {
-  Row r{s};
-  const double U = *s.condition.wind_speed, R = m.aero.rotor_radius, rho = m.aero.air_density;
-  const double area = kPi * R * R, omega = s.condition.rotor_speed;
-  r.cp = s.aero_torque * omega / (0.5 * rho * area * U * U * U);
-  r.ct = s.thrust / (0.5 * rho * area * U * U);
-  r.tsr = omega * R / U;
-  return r;
-}
-
-std::string csvOf(const Model& m, const std::vector<Row>& rows) {
-  std::string t =
-      "wind_speed_m_s,rotor_speed_rpm,pitch_deg,aero_power_kw,generator_power_kw,aero_torque_knm,thrust_kn,cp,ct,"
-      "tsr,tip_deflection_m,tower_top_fa_m,generator_torque_knm,region\n";
-  const double eff = m.generator.active() ? m.generator.efficiency : 1.0;
-  for (const Row& r : rows) {
-    const SteadyState& s = r.s;
-    const double omega = s.condition.rotor_speed;
-    const std::string region = !m.generator.active() ? "given" : s.above_rated ? "above rated" : "below rated";
-    for (double v : {*s.condition.wind_speed, omega * 30 / kPi, s.condition.collective_pitch.value_or(0) * 180 / kPi,
-                     s.aero_torque * omega / 1e3, s.generator_torque * s.generator_speed * eff / 1e3,
-                     s.aero_torque / 1e3, s.thrust / 1e3, r.cp, r.ct, r.tsr, s.tip_deflection, s.tower_top_fa,
-                     s.generator_torque / 1e3})
-      t += formatNumber(v) + ",";
-    t += region + "\n";
-  }
-  return t;
-}
 
 std::string scriptOf(const std::string& title) {
   return "# Steady operating points written by whirl: gnuplot steady.gp (from this folder)\n"
@@ -96,18 +63,18 @@ void run(const SteadyOptions& opt) {
   TrimOptions trim;
   trim.azimuths = opt.azimuths;
   const auto start = std::chrono::steady_clock::now();
-  std::vector<Row> rows;
+  std::vector<SteadyState> rows;
   if (!opt.wind_range.empty()) {
-    for (const SteadyState& s : trimSchedule(m, parseRange(opt.wind_range, "--wind"), trim)) rows.push_back(rowOf(m, s));
+    rows = trimSchedule(m, parseRange(opt.wind_range, "--wind"), trim);
   } else {
     for (const SweepPoint& p : readSchedule(opt.schedule)) {
       if (!p.wind_speed) throw InputError(opt.schedule + ": the schedule has no wind speed column");
       OperatingCondition c = sweepCondition(m, p);
-      rows.push_back(rowOf(m, steadyState(m, c, trim)));
+      rows.push_back(steadyState(m, c, trim));
     }
   }
   OutputSet files(dir);  // table, script and images together
-  files.write("steady.csv", csvOf(m, rows));
+  files.write("steady.csv", steadyCsv(m, rows));
   files.write("steady.gp", scriptOf("Steady operating points: " + m.name.substr(0, 60)));
   if (!opt.no_plot) renderGnuplot(files.stagingFolder(), "gnuplot", "steady", dir);
   files.commit();
@@ -115,8 +82,8 @@ void run(const SteadyOptions& opt) {
   std::printf("%8s %9s %8s %10s %10s %9s %7s %7s %6s\n", "wind", "rpm", "pitch", "P_aero kW", "P_gen kW", "T kN", "Cp",
               "Ct", "TSR");
   const double eff = m.generator.active() ? m.generator.efficiency : 1.0;
-  for (const Row& r : rows) {
-    const SteadyState& s = r.s;
+  for (const SteadyState& s : rows) {
+    const SteadyRow r = steadyRow(m, s);
     std::printf("%8.2f %9.4f %8.4f %10.1f %10.1f %9.2f %7.4f %7.4f %6.3f\n", *s.condition.wind_speed,
                 s.condition.rotor_speed * 30 / kPi, s.condition.collective_pitch.value_or(0) * 180 / kPi,
                 s.aero_torque * s.condition.rotor_speed / 1e3, s.generator_torque * s.generator_speed * eff / 1e3,

@@ -14,11 +14,10 @@
 
 #include "linearize/load_jump.hpp"
 #include "linearize/point_validity.hpp"
-#include "src/io/case_file.hpp"
 #include "src/model/error.hpp"
 #include "src/model/text.hpp"
 #include "src/parallel/session.hpp"
-#include "src/turbine/elastodyn_model.hpp"
+#include "src/turbine/load_model.hpp"
 
 namespace whirl::cli {
 
@@ -52,36 +51,13 @@ OperatingPoint startPoint(const Model& m, const ModelOptions& opt) {
   return opt.rpm ? initialPoint(m, operatingCondition(m, opt)) : initialPoint(m);
 }
 
-bool isYamlCase(const std::string& path) {
-  const std::string ext = std::filesystem::path(path).extension().string();
-  return ext == ".yaml" || ext == ".yml";
-}
+bool isYamlCase(const std::string& path) { return isYamlCasePath(path); }
 
 Model loadModel(const ModelOptions& opt) {
-  Model m;
-  if (isYamlCase(opt.case_path)) {
-    std::vector<CaseOverride> overrides;
-    for (const auto& s : opt.sets) overrides.push_back(parseOverride(s));
-    m = readCase(opt.case_path, overrides, nullptr, opt.allow_outside_files);
-  } else {
-    ElastoDynModelOptions eo;
-    const io::OpenFastTurbine t = readElastoDynTurbine(opt.case_path, opt.sets, eo);
-    m = buildElastoDynModel(t, eo);
-    // HydroDyn inputs read and left out of the linear model (waves, currents): one line each.
-    if (t.hydrodyn && parallel::rank() == 0)
-      for (const std::string& n : t.hydrodyn->notes)
-        std::fprintf(stderr, "whirl: note: %s\n", escapeControlCharacters(n).c_str());
-    // AeroDyn's time-domain options replaced by their steady counterpart: one line each.
-    if (eo.aero && parallel::rank() == 0)
-      for (const std::string& n : eo.aero->notes)
-        std::fprintf(stderr, "whirl: note: %s\n", escapeControlCharacters(n).c_str());
-    // SubDyn inputs read and ignored (an SSIfile on a joint whose DOFs are all locked): one line each.
-    if (t.subdyn && parallel::rank() == 0)
-      for (const std::string& n : t.subdyn->notes)
-        std::fprintf(stderr, "whirl: note: %s\n", escapeControlCharacters(n).c_str());
-  }
-  // Every command that takes a model linearizes it: refuse an empty state before any work or output.
-  requireActiveDof(m, opt.case_path);
+  std::vector<std::string> notes;
+  Model m = loadCaseModel(opt.case_path, opt.sets, opt.allow_outside_files, &notes);
+  if (parallel::rank() == 0)
+    for (const std::string& n : notes) std::fprintf(stderr, "whirl: note: %s\n", escapeControlCharacters(n).c_str());
   return m;
 }
 

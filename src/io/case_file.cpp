@@ -12,17 +12,23 @@
 namespace whirl {
 namespace {
 
+// `label` names the text in messages (the file, or "<dict>" for a case built in Python).
+template <class Source>
+YAML::Node parse(Source& in, const std::string& label) {
+  try {
+    return YAML::Load(in);
+  } catch (const YAML::ParserException& e) {
+    throw InputError(where(label, e.mark.is_null() ? 0 : e.mark.line + 1, "", "YAML syntax error: " + e.msg));
+  } catch (const YAML::Exception& e) {
+    throw InputError(where(label, 0, "", std::string("cannot read the YAML: ") + e.what()));
+  }
+}
+
 YAML::Node load(const std::string& path) {
   if (std::filesystem::is_directory(path)) throw InputError(where(path, 0, "", "is a folder, not a case file"));
   std::ifstream in(path);
   if (!in) throw InputError(where(path, 0, "", "cannot open the case file"));
-  try {
-    return YAML::Load(in);
-  } catch (const YAML::ParserException& e) {
-    throw InputError(where(path, e.mark.is_null() ? 0 : e.mark.line + 1, "", "YAML syntax error: " + e.msg));
-  } catch (const YAML::Exception& e) {
-    throw InputError(where(path, 0, "", std::string("cannot read the YAML: ") + e.what()));
-  }
+  return parse(in, path);
 }
 
 // Scalar g → [0, 0, −g] or a vector [gx, gy, gz].
@@ -32,15 +38,14 @@ Vec3 readGravity(const CaseNode& g) {
   g.fail("expected g [m/s²] or a vector [gx, gy, gz]");
 }
 
-}  // namespace
-
-Model readCase(const std::string& path, const std::vector<CaseOverride>& overrides,
-               std::vector<fem::FlexibleBeam>* beams, bool allow_outside_files) {
+// The case in `doc`; `path` names it in messages, `folder` holds the files it names.
+Model readCaseDocument(YAML::Node doc, const std::string& path, const std::string& folder,
+                       const std::vector<CaseOverride>& overrides, std::vector<fem::FlexibleBeam>* beams,
+                       bool allow_outside_files) {
   CaseSource source;
   source.file = path;
   source.allow_outside_files = allow_outside_files;
-  source.folder = std::filesystem::path(path).parent_path().string();
-  YAML::Node doc = load(path);
+  source.folder = folder;
   applyOverrides(doc, overrides, source);
   const CaseNode top(doc, source);
   if (!top.isMap()) top.fail("a case file is a map of keys (name, gravity, bodies, ...), this one is empty or a list");
@@ -73,6 +78,19 @@ Model readCase(const std::string& path, const std::vector<CaseOverride>& overrid
   }
   addFemGeometricStiffness(model, build.fem);
   return model;
+}
+
+}  // namespace
+
+Model readCase(const std::string& path, const std::vector<CaseOverride>& overrides,
+               std::vector<fem::FlexibleBeam>* beams, bool allow_outside_files) {
+  return readCaseDocument(load(path), path, std::filesystem::path(path).parent_path().string(), overrides, beams,
+                          allow_outside_files);
+}
+
+Model readCaseText(const std::string& text, const std::string& label, const std::string& folder,
+                   const std::vector<CaseOverride>& overrides, bool allow_outside_files) {
+  return readCaseDocument(parse(text, label), label, folder, overrides, nullptr, allow_outside_files);
 }
 
 }  // namespace whirl

@@ -40,4 +40,10 @@ CaseOverride parseOverride(const std::string& text);
 Model readCase(const std::string& path, const std::vector<CaseOverride>& overrides = {},
                std::vector<fem::FlexibleBeam>* beams = nullptr, bool allow_outside_files = false);
 
+/// The same from the YAML text of a case (the Python module's `whirl.from_dict`: no file written).
+/// \param[in] label   names the text in messages instead of a file ("<dict>")
+/// \param[in] folder  where the case's `file:` entries are looked up, as a case file's own folder
+Model readCaseText(const std::string& text, const std::string& label, const std::string& folder,
+                   const std::vector<CaseOverride>& overrides = {}, bool allow_outside_files = false);
+
 }  // namespace whirl
