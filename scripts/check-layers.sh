@@ -19,6 +19,7 @@ layer_of() {
     modal/*) echo 5 ;;
     src/writers/*) echo 6 ;;
     src/cli/*) echo 7 ;;
+    python/src/*) echo 8 ;;
     *) echo "" ;;
   esac
 }
@@ -52,5 +53,5 @@ while IFS= read -r -d '' file; do
     fi
   done < <(awk 'match($0, /^[ \t]*#[ \t]*include[ \t]*"[^"]*"/) {
                  s = substr($0, RSTART, RLENGTH); sub(/^[^"]*"/, "", s); sub(/"$/, "", s); print FNR ":" s }' "$file")
-done < <(find src linearize modal -type f \( -name '*.hpp' -o -name '*.hxx' -o -name '*.cpp' -o -name '*.h' \) -print0 | sort -z)
+done < <(find src linearize modal python/src -type f \( -name '*.hpp' -o -name '*.hxx' -o -name '*.cpp' -o -name '*.h' \) -print0 | sort -z)
 exit $status

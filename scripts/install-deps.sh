@@ -12,6 +12,9 @@ packages=(
   ccache  # compiler cache: rebuilds on the same machine (CI, sessions) reuse objects
   python3-scipy  # the .mat export test loads the file with scipy.io.loadmat (skipped without it)
   python3-sphinx python3-myst-parser python3-breathe doxygen  # the documentation site: scripts/docs.sh
+  # the Python module (python/, docs/user/python.md): pybind11, and what its package and tests use
+  pybind11-dev python3-dev python3-pybind11 python3-numpy python3-pandas python3-pytest python3-xarray
+  python3-matplotlib python3-yaml
   "$@"
 )
 missing=()

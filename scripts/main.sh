@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
 # The main job: installs what is missing, builds, and writes the NREL 5MW Campbell diagrams under reports/:
+# - `import whirl` for python3 (scripts/install-python.sh);
 # - reports/nrel5mw/: structural, 0–15 rpm, 36 azimuths per speed, multiblade coordinates;
 # - reports/nrel5mw_aero/: aeroelastic (AeroDyn BEMT, frozen wake) along the wind, 3–25 m/s, each
 #   point trimmed (rotor speed below rated, pitch above), with the steady performance table.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/build.sh
+bash scripts/install-python.sh  # `import whirl` (docs/user/python.md)
 build/whirl campbell cases/nrel5mw/Main_Onshore.fst --rpm 0:0.5:15 --azimuths 36 --max-freq 3.2 --out reports/nrel5mw
 build/whirl steady cases/nrel5mw/Main_Aero.fst --wind 3:1:25 --out reports/nrel5mw_aero
 build/whirl campbell cases/nrel5mw/Main_Aero.fst --wind 3:1:25 --azimuths 36 --max-freq 3.2 --out reports/nrel5mw_aero

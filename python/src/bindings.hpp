@@ -1,0 +1,52 @@
+#pragma once
+/// \file
+/// What the binding files of the Python module share: the model as Python sees it (the library's
+/// Model with where it came from), the sweep guard (progress callback, Ctrl-C) and the one place
+/// errors of a model's computation get the case in front of their message, as the CLI does
+/// (src/cli/common.cpp, runWithCaseSource).
+#include <pybind11/pybind11.h>
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "src/model/model.hpp"
+
+namespace whirl::python {
+
+namespace py = pybind11;
+
+/// A loaded model: immutable once built, shared by every result that needs it.
+struct PyModel {
+  std::shared_ptr<const Model> model;
+  std::string source;  ///< the case path, or "<dict>" for a case built from a Python dict
+  std::vector<std::string> notes;  ///< the readers' informational lines (the CLI's `whirl: note:`)
+};
+
+/// Runs `f` with the GIL released; a ComputeError comes back with the model's source in front of its
+/// message ("CASE: operating point did not converge …"), as the command line says it.
+void runReleased(const PyModel& m, const std::function<void()>& f);
+
+/// Progress and interruption of a sweep. progress() gives the library's callback: it takes the GIL,
+/// calls the Python callback (done, total) when there is one and checks for a pending signal
+/// (Ctrl-C). A Python exception there (KeyboardInterrupt included) stops the sweep at the end of the
+/// current operating point and is raised again by runSweep.
+class SweepGuard {
+ public:
+  explicit SweepGuard(py::object callback) : callback_(std::move(callback)) {}
+  std::function<void(int, int)> progress();
+  /// Runs the sweep `f` with the GIL released (runReleased) and re-raises a Python error of the callback.
+  void runSweep(const PyModel& m, const std::function<void()>& f);
+
+ private:
+  py::object callback_;
+  bool stopped_ = false;
+};
+
+void bindErrors(py::module_& m);
+void bindModel(py::module_& m);
+void bindLinear(py::module_& m);
+void bindSweeps(py::module_& m);
+
+}  // namespace whirl::python

@@ -1,0 +1,55 @@
+// Errors: InputError and ComputeError become Python exceptions with the library's message, which is
+// the CLI's `whirl: error: <message>` without the prefix; the sweep guard and the GIL release.
+#include <Python.h>
+
+#include "python/src/bindings.hpp"
+#include "src/model/error.hpp"
+
+namespace whirl::python {
+
+void runReleased(const PyModel& m, const std::function<void()>& f) {
+  try {
+    py::gil_scoped_release released;
+    f();
+  } catch (const ComputeError& e) {
+    const std::string what = e.what();
+    if (what.rfind(m.source + ":", 0) == 0) throw;  // already named
+    throw ComputeError(m.source + ": " + what);
+  }
+}
+
+std::function<void(int, int)> SweepGuard::progress() {
+  return [this](int done, int total) {
+    py::gil_scoped_acquire acquired;
+    if (!callback_.is_none()) {
+      try {
+        callback_(done, total);
+      } catch (py::error_already_set& e) {
+        e.restore();  // raised again by runSweep, after the library has unwound
+        stopped_ = true;
+        throw std::runtime_error("stopped by the progress callback");
+      }
+    }
+    if (PyErr_CheckSignals() != 0) {  // Ctrl-C: the KeyboardInterrupt is now the pending error
+      stopped_ = true;
+      throw std::runtime_error("interrupted");
+    }
+  };
+}
+
+void SweepGuard::runSweep(const PyModel& m, const std::function<void()>& f) {
+  try {
+    runReleased(m, f);
+  } catch (...) {
+    if (stopped_) throw py::error_already_set();  // the callback's error, pending since restore()
+    throw;
+  }
+}
+
+void bindErrors(py::module_& m) {
+  // ValueError and RuntimeError as bases: code that catches those keeps working.
+  py::register_exception<InputError>(m, "InputError", PyExc_ValueError);
+  py::register_exception<ComputeError>(m, "ComputeError", PyExc_RuntimeError);
+}
+
+}  // namespace whirl::python

@@ -1,0 +1,106 @@
+// whirl._whirl.StateSpace and Model.linearize: the state-space model `whirl export` writes for one
+// operating point (the same exportSweep call, so the matrices equal the .mat file's to the last
+// bit), and the second-order matrices M, C, K, Q of `whirl linearize` at its equilibrium.
+#include <pybind11/eigen.h>
+#include <pybind11/stl.h>
+
+#include <numbers>
+
+#include "linearize/export_sweep.hpp"
+#include "linearize/linearize.hpp"
+#include "python/src/bindings.hpp"
+#include "python/src/operating_point.hpp"
+
+namespace whirl::python {
+namespace {
+
+/// A linearization: the state-space model (multiblade average for a rotor of 3+ blades), the
+/// per-azimuth models in the rotating frame, and the second-order model at the equilibrium.
+struct PyLinear {
+  ExportPoint point;
+  LinearModel second_order;
+};
+
+py::list variables(const std::vector<StateSpaceVariable>& v) {
+  py::list rows;
+  for (const StateSpaceVariable& s : v)
+    rows.append(py::dict(py::arg("name") = s.name, py::arg("unit") = s.unit, py::arg("op") = s.op,
+                         py::arg("blade") = s.blade));
+  return rows;
+}
+
+// Matrices as read-only numpy views of the C++ object's storage (Eigen's column-major layout: an
+// F-ordered array), kept alive by the Python object that owns them.
+template <class T, class Get>
+void matrixProperty(py::class_<T>& c, const char* name, Get get, const char* doc) {
+  c.def_property_readonly(name, get, py::return_value_policy::reference_internal, doc);
+}
+
+PyLinear linearizeAt(const PyModel& p, const py::object& op, int azimuths, const std::vector<std::string>& inputs,
+                     const std::vector<std::string>& outputs, bool drop_azimuth) {
+  SweepPoint sp;
+  if (op.is_none()) {
+    sp.condition = modelCondition(*p.model);
+  } else {
+    const auto& o = op.cast<const PyOperatingPoint&>();
+    if (o.model != p.model) throw InputError("linearize: the operating point belongs to another model");
+    sp.condition = o.condition;
+    sp.wind_speed = o.wind_speed;
+    sp.pitch_deg = o.pitch_deg;
+  }
+  sp.rpm = sp.condition.rotor_speed * 30 / std::numbers::pi;
+  if (azimuths < 1 || azimuths > 3600) throw InputError("azimuths: must be in 1 … 3600 (is " + std::to_string(azimuths) + ")");
+  ExportOptions eo;
+  eo.azimuths = azimuths;
+  eo.inputs = inputs;
+  eo.outputs = outputs;
+  eo.drop_azimuth = drop_azimuth;
+  SweepOptions sweep;
+  sweep.azimuths = azimuths;
+  PyLinear out;
+  runReleased(p, [&] {
+    out.point = std::move(exportSweep(*p.model, {sp}, eo, sweep).front());
+    out.second_order = linearize(*p.model, out.point.equilibrium);
+  });
+  return out;
+}
+
+}  // namespace
+
+void bindLinear(py::module_& m) {
+  py::class_<StateSpaceModel> ss(m, "StateSpace", "ẋ = A x + B u, y = C x + D u about an operating point.");
+  matrixProperty(ss, "A", [](const StateSpaceModel& s) -> const MatX& { return s.A; }, "state matrix (nx × nx)");
+  matrixProperty(ss, "B", [](const StateSpaceModel& s) -> const MatX& { return s.B; }, "input matrix (nx × nu)");
+  matrixProperty(ss, "C", [](const StateSpaceModel& s) -> const MatX& { return s.C; }, "output matrix (ny × nx)");
+  matrixProperty(ss, "D", [](const StateSpaceModel& s) -> const MatX& { return s.D; }, "feedthrough (ny × nu)");
+  matrixProperty(ss, "xdot_op", [](const StateSpaceModel& s) -> const VecX& { return s.xdot_op; }, "ẋ at the point");
+  ss.def("states", [](const StateSpaceModel& s) { return variables(s.x); })
+      .def("inputs", [](const StateSpaceModel& s) { return variables(s.u); })
+      .def("outputs", [](const StateSpaceModel& s) { return variables(s.y); })
+      .def_readonly("azimuth", &StateSpaceModel::azimuth)
+      .def_readonly("rotor_speed", &StateSpaceModel::rotor_speed)
+      .def_readonly("multiblade", &StateSpaceModel::multiblade);
+
+  py::class_<PyLinear> lin(m, "Linearization", "The linear models at one operating point.");
+  lin.def_property_readonly(
+         "state_space", [](const PyLinear& l) -> const StateSpaceModel& { return l.point.model; },
+         py::return_value_policy::reference_internal)
+      .def_property_readonly(
+          "per_azimuth", [](const PyLinear& l) -> const std::vector<StateSpaceModel>& { return l.point.azimuths; },
+          py::return_value_policy::reference_internal)
+      .def_property_readonly("rpm", [](const PyLinear& l) { return l.point.rpm; })
+      .def_property_readonly("wind_speed", [](const PyLinear& l) { return l.point.wind_speed; })
+      .def_property_readonly("pitch_deg", [](const PyLinear& l) { return l.point.pitch_deg; })
+      .def_property_readonly("dof_names", [](const PyLinear& l) { return l.second_order.dof_names; })
+      .def_property_readonly("second_order_inputs", [](const PyLinear& l) { return l.second_order.input_names; });
+  matrixProperty(lin, "M", [](const PyLinear& l) -> const MatX& { return l.second_order.M; }, "mass matrix");
+  matrixProperty(lin, "damping", [](const PyLinear& l) -> const MatX& { return l.second_order.C; }, "damping matrix");
+  matrixProperty(lin, "K", [](const PyLinear& l) -> const MatX& { return l.second_order.K; }, "stiffness matrix");
+  matrixProperty(lin, "Q", [](const PyLinear& l) -> const MatX& { return l.second_order.Q; }, "input matrix");
+
+  m.def("linearize", &linearizeAt, py::arg("model"), py::arg("op") = py::none(), py::arg("azimuths") = 36,
+        py::arg("inputs") = std::vector<std::string>{}, py::arg("outputs") = std::vector<std::string>{},
+        py::arg("drop_azimuth") = false);
+}
+
+}  // namespace whirl::python

@@ -1,0 +1,92 @@
+# Type stub of the whirl package (editors' completion; the documented implementation is __init__.py).
+import os
+from typing import Any, Callable, Iterable, List, Mapping, Optional, Sequence, Union
+
+import numpy as np
+import numpy.typing as npt
+import pandas as pd
+
+__version__: str
+
+class InputError(ValueError):
+    @property
+    def file(self) -> str: ...
+    @property
+    def line(self) -> int: ...
+    @property
+    def key(self) -> str: ...
+
+class ComputeError(RuntimeError): ...
+
+class OperatingPoint:
+    rpm: float
+    wind_speed: Optional[float]
+    pitch_deg: Optional[float]
+    @property
+    def q(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def qd(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def u(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def iterations(self) -> int: ...
+    @property
+    def residual_norm(self) -> float: ...
+
+class StateSpace:
+    A: npt.NDArray[np.float64]
+    B: npt.NDArray[np.float64]
+    C: npt.NDArray[np.float64]
+    D: npt.NDArray[np.float64]
+    xdot_op: npt.NDArray[np.float64]
+    multiblade: bool
+    azimuth: float
+    rotor_speed: float
+    states: pd.DataFrame
+    inputs: pd.DataFrame
+    outputs: pd.DataFrame
+    state_names: List[str]
+    input_names: List[str]
+    output_names: List[str]
+    def to_scipy(self) -> Any: ...
+    def to_xarray(self) -> Any: ...
+
+class LinearModel(StateSpace):
+    M: npt.NDArray[np.float64]
+    damping: npt.NDArray[np.float64]
+    K: npt.NDArray[np.float64]
+    Q: npt.NDArray[np.float64]
+    dof_names: List[str]
+    rpm: float
+    wind_speed: Optional[float]
+    pitch_deg: Optional[float]
+    per_azimuth: List[StateSpace]
+
+class CampbellTable(pd.DataFrame):
+    def plot(self, versus: Optional[str] = ..., harmonics: Sequence[int] = ..., max_freq: Optional[float] = ...,
+             first_order_lines: bool = ..., ax: Any = ...) -> Any: ...
+
+class Model:
+    name: str
+    source: str
+    notes: List[str]
+    dofs: pd.DataFrame
+    inputs: pd.DataFrame
+    outputs: pd.DataFrame
+    bodies: pd.DataFrame
+    def operating_point(self, rpm: Optional[float] = ..., wind: Optional[float] = ..., pitch: Optional[float] = ...,
+                        azimuth: Optional[float] = ...) -> OperatingPoint: ...
+    def linearize(self, op: Optional[OperatingPoint] = ..., azimuths: int = ..., inputs: Sequence[str] = ...,
+                  outputs: Sequence[str] = ..., drop_azimuth: bool = ...) -> LinearModel: ...
+    def steady(self, wind: Iterable[float], azimuths: int = ...) -> pd.DataFrame: ...
+    def modes(self, op: Optional[OperatingPoint] = ..., azimuths: int = ...,
+              allow_invalid_point: bool = ...) -> pd.DataFrame: ...
+    def campbell(self, rpm: Optional[Iterable[float]] = ..., wind: Optional[Iterable[float]] = ...,
+                 schedule: Union[None, str, os.PathLike, pd.DataFrame] = ..., azimuths: int = ...,
+                 progress: Union[None, bool, Callable[[int, int], Any]] = ..., participations: bool = ...,
+                 allow_invalid_point: bool = ...) -> CampbellTable: ...
+
+def load(path: Union[str, os.PathLike, Mapping[str, Any]], set: Optional[Mapping[str, Any]] = ...,
+         allow_outside_files: bool = ...) -> Model: ...
+def from_dict(case: Mapping[str, Any], folder: Union[str, os.PathLike] = ..., set: Optional[Mapping[str, Any]] = ...,
+              allow_outside_files: bool = ...) -> Model: ...
