@@ -101,3 +101,15 @@ def test_error_attributes_parse():
     assert (e.file, e.line, e.key) == ("t.yaml", 1, "gravty")
     e = whirl.InputError("bad.dat:3: Mass: 'abc' is not a number")
     assert (e.file, e.line, e.key) == ("bad.dat", 3, "Mass")
+
+
+def test_point_outside_the_range_of_validity_is_a_compute_error():
+    # An absurd gravity converges to a deflection far beyond the model's range (linearize/point_validity.hpp).
+    path = case("nrel5mw", "Main_Onshore.fst")
+    expected = cli_error("modes", path, "--set", "gravity=-1e4", "--azimuths", 4)
+    model = whirl.load(path, set={"gravity": -1e4})
+    with pytest.raises(whirl.ComputeError) as e:
+        model.modes(azimuths=4)
+    # The CLI's message, its option named as the keyword argument.
+    assert str(e.value) == expected.replace("--allow-invalid-point", "allow_invalid_point=True")
+    assert isinstance(e.value, RuntimeError)
