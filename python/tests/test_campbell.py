@@ -83,23 +83,36 @@ def test_ctrl_c_stops_a_sweep(onshore):
 
 
 def test_two_threads_linearize_concurrently(onshore):
-    # With the GIL released, Python runs while C++ computes: a counter in the main thread advances
-    # during the other threads' linearizations, and both threads get the same matrices.
-    results, done = {}, threading.Event()
+    # With the GIL released, Python runs while C++ computes: the main thread keeps ticking during one
+    # long call of another thread (a single C++ call that held the GIL would leave it at 0 or 1 ticks
+    # for its whole duration), and two threads linearizing at once get the same matrices.
+    ticks, inside = [0], threading.Event()
+
+    def long_call():
+        inside.set()
+        onshore.modes(onshore.operating_point(rpm=9), azimuths=72)
+
+    worker = threading.Thread(target=long_call)
+    worker.start()
+    inside.wait()
+    start = time.monotonic()
+    while worker.is_alive():
+        ticks[0] += 1
+        time.sleep(0.001)
+    elapsed = time.monotonic() - start
+    worker.join()
+    assert elapsed > 0.05 and ticks[0] > 10, (elapsed, ticks[0])
+
+    results = {}
 
     def work(k):
-        results[k] = onshore.linearize(onshore.operating_point(rpm=9), azimuths=36).A
+        results[k] = onshore.linearize(onshore.operating_point(rpm=9), azimuths=12).A
 
     threads = [threading.Thread(target=work, args=(k,)) for k in range(2)]
-    ticks = 0
     for t in threads:
         t.start()
-    while any(t.is_alive() for t in threads):
-        ticks += 1
-        time.sleep(0.001)
     for t in threads:
         t.join()
-    assert ticks > 5
     np.testing.assert_array_equal(results[0], results[1])
 
 
