@@ -90,7 +90,7 @@ def test_two_threads_linearize_concurrently(onshore):
 
     def long_call():
         inside.set()
-        onshore.modes(onshore.operating_point(rpm=9), azimuths=72)
+        onshore.campbell(rpm=[3, 6, 9, 12], azimuths=36)  # one C++ call of about a second
 
     worker = threading.Thread(target=long_call)
     worker.start()
@@ -101,7 +101,7 @@ def test_two_threads_linearize_concurrently(onshore):
         time.sleep(0.001)
     elapsed = time.monotonic() - start
     worker.join()
-    assert elapsed > 0.05 and ticks[0] > 10, (elapsed, ticks[0])
+    assert ticks[0] > 10, (elapsed, ticks[0])
 
     results = {}
 
