@@ -90,7 +90,7 @@ def test_two_threads_linearize_concurrently(onshore):
 
     def long_call():
         inside.set()
-        onshore.campbell(rpm=[3, 6, 9, 12], azimuths=36)  # one C++ call of about a second
+        onshore.campbell(rpm=list(range(16)), azimuths=36)  # one C++ call, a quarter of a second here
 
     worker = threading.Thread(target=long_call)
     worker.start()
