@@ -34,6 +34,23 @@ Runtime& runtime() {
   return r;
 }
 
+/// PETSc's own sources of options besides argv (PetscOptionsInsert, PETSc 3.18): the files
+/// `~/.petscrc`, `./.petscrc`, `./petscrc` (skipped with -skip_petscrc) and these variables (read
+/// whatever the command line says). An option there such as `-start_in_debugger PROG` or
+/// `-log_view ascii:FILE` runs a program or writes a file, so a `.petscrc` planted in a shared
+/// working folder would act with the user's rights (issue 48, item 1). whirl takes PETSc options
+/// only from its own command line and from WHIRL_PETSC_OPTIONS.
+constexpr const char* kPetscEnvironment[] = {"PETSC_OPTIONS", "PETSC_OPTIONS_YAML"};
+
+/// The words of the variable `name` (split at blanks), none when unset.
+std::vector<std::string> envWords(const char* name) {
+  std::vector<std::string> words;
+  const char* v = std::getenv(name);
+  std::istringstream in(v ? v : "");
+  for (std::string w; in >> w;) words.push_back(w);
+  return words;
+}
+
 void finalizePetsc() {
 #ifdef WHIRL_HAVE_PETSC
   Runtime& r = runtime();
@@ -69,6 +86,13 @@ bool launchedByMpi() {
   return std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMI_SIZE") || std::getenv("PMIX_RANK");
 }
 
+std::vector<std::string> petscArguments(const std::vector<std::string>& command_line) {
+  std::vector<std::string> args = envWords(kWhirlPetscOptions);
+  args.insert(args.end(), command_line.begin(), command_line.end());
+  args.push_back("-skip_petscrc");  // last: no option before it can turn the files back on
+  return args;
+}
+
 bool petscStarted() { return runtime().started && !runtime().finalized; }
 
 void requirePetsc(const std::string& what) {
@@ -78,7 +102,8 @@ void requirePetsc(const std::string& what) {
   if (r.started) return;
   r.argv_storage.clear();
   r.argv_storage.push_back("whirl");
-  for (const auto& o : r.options) r.argv_storage.push_back(o);
+  for (const auto& o : petscArguments(r.options)) r.argv_storage.push_back(o);
+  for (const char* name : kPetscEnvironment) ::unsetenv(name);
   r.argv.clear();
   for (auto& s : r.argv_storage) r.argv.push_back(s.data());
   r.argv.push_back(nullptr);

@@ -35,6 +35,17 @@ bool launchedByMpi();
 /// PETSc, naming `what` ("--solver sparse", "mpirun") as the feature that is unavailable.
 void requirePetsc(const std::string& what);
 
+/// The variable whose words (split at blanks) go to PETSc before the command line's options.
+inline constexpr const char* kWhirlPetscOptions = "WHIRL_PETSC_OPTIONS";
+
+/// The options PETSc is started with (after argv[0]): the words of WHIRL_PETSC_OPTIONS, then
+/// `command_line` (from `--petsc` and after `--`), then `-skip_petscrc`. PETSc's option files
+/// (`.petscrc`, `petscrc`, `~/.petscrc`) and variables (`PETSC_OPTIONS`, `PETSC_OPTIONS_YAML`, which
+/// requirePetsc() removes from the environment) are never read: an option there can run a program
+/// (`-start_in_debugger`) or write a file (`-log_view ascii:FILE`), and a folder shared with others
+/// may hold such a file (docs/user/limits.md).
+std::vector<std::string> petscArguments(const std::vector<std::string>& command_line);
+
 /// True once PETSc has been started (and not yet finalized).
 bool petscStarted();
 
