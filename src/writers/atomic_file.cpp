@@ -1,9 +1,11 @@
 #include "src/writers/atomic_file.hpp"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdlib>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -26,10 +28,21 @@ void ensureWritableFolder(const std::string& folder) {
 void writeFileAtomic(const std::string& path, const std::string& content) {
   const fs::path target(path);
   ensureWritableFolder(target.parent_path().string());
-  const std::string tmp = path + ".tmp" + std::to_string(::getpid());
+  // An unguessable name of whirl's making (mkstemp: created, not opened if it exists), so no file
+  // of the user's is ever overwritten or removed in its place.
+  std::string tmp = (target.parent_path() / ("." + target.filename().string() + ".whirl-tmp-XXXXXX")).string();
+  const int tmp_fd = ::mkstemp(tmp.data());
+  if (tmp_fd < 0) throw InputError(path + ": cannot write (" + std::strerror(errno) + ")");
+  const mode_t mask = ::umask(0);  // mkstemp makes 0600; the file gets the mode a plain create gives
+  ::umask(mask);
+  ::fchmod(tmp_fd, 0666 & ~mask);
+  ::close(tmp_fd);
   {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw InputError(path + ": cannot write (" + std::strerror(errno) + ")");
+    if (!out) {
+      std::remove(tmp.c_str());
+      throw InputError(path + ": cannot write (" + std::strerror(errno) + ")");
+    }
     out << content;
     out.flush();
     if (!out) {

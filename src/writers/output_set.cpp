@@ -113,18 +113,15 @@ std::string OutputSet::stagingFolder() {
   std::error_code ec;
   const fs::path abs = fs::canonical(shown, ec);
   if (ec) throw InputError(shown + ": cannot resolve the output folder (" + ec.message() + ")");
-  const std::string pid = std::to_string(::getpid());
   const fs::path parent = abs.parent_path(), name = abs.filename();
   fs::path staging;
   if (!name.empty() && ::access(parent.c_str(), W_OK) == 0 && sameDevice(parent, abs) && !holdsWorkingDirectory(abs)) {
-    staging = parent / ("." + name.string() + output::kStagingTag + pid);
-    fs::remove_all(staging, ec);  // this process's own, from a set that failed to clean up
-    swap_ = ::mkdir(staging.c_str(), 0700) == 0;
+    staging = output::makeStaging(parent, "." + name.string() + output::kStagingTag);
+    swap_ = !staging.empty();
   }
   if (!swap_) {
-    staging = abs / (output::kStagingTag + pid);
-    fs::remove_all(staging, ec);
-    if (::mkdir(staging.c_str(), 0700) != 0) throw InputError(withErrno(shown + ": cannot create a staging folder", errno));
+    staging = output::makeStaging(abs, output::kStagingTag);
+    if (staging.empty()) throw InputError(withErrno(shown + ": cannot create a staging folder", errno));
   }
   staging_ = staging.string();
   return staging_;
@@ -160,6 +157,7 @@ void OutputSet::commit() {
   std::vector<std::string> extra;
   for (const auto& e : fs::directory_iterator(staging, ec)) {
     const std::string n = e.path().filename().string();
+    if (n.rfind(output::kStagingTag, 0) == 0) continue;  // whirl's own: the marker
     if (std::find(names_.begin(), names_.end(), n) == names_.end()) extra.push_back(n);
   }
   std::sort(extra.begin(), extra.end());
@@ -181,7 +179,10 @@ void OutputSet::commit() {
                        ": is a folder, so the output file of that name cannot replace it; nothing was written, the "
                        "previous results are unchanged");
   }
-  if (swap_ && mirrorOthers(abs, staging, names) &&
+  // The marker stays behind: after the swap the folder is the output folder. Restored (with mode
+  // 0700) when the swap fails and the set rolls forward from this folder.
+  const fs::path marker = staging / output::kMarker;
+  if (swap_ && mirrorOthers(abs, staging, names) && ::unlink(marker.c_str()) == 0 &&
       ::renameat2(AT_FDCWD, staging.c_str(), AT_FDCWD, abs.c_str(), RENAME_EXCHANGE) == 0) {
     committed_ = true;
     try {
@@ -192,7 +193,11 @@ void OutputSet::commit() {
     return;
   }
 
-  // Roll forward: the journal makes the set committed; a kill from here on is completed by the next run.
+  // Roll forward: the journal makes the set committed; a kill from here on is completed by the next run,
+  // which trusts only a folder of mode 0700 with whirl's marker (output::trustedStaging).
+  if (::chmod(staging.c_str(), 0700) != 0 ||
+      (!fs::exists(fs::symlink_status(marker, ec)) && !output::writeMarker(staging)))
+    throw InputError(withErrno(shown + ": cannot prepare the commit of the output files", errno));
   const fs::path journal = staging / output::kJournal, draft = staging / (std::string(output::kJournal) + ".tmp");
   std::string list;
   for (const auto& n : names_) list += n + "\n";

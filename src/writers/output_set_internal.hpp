@@ -11,8 +11,29 @@ namespace fs = std::filesystem;
 
 /// File in a staging folder listing the set's file names, one a line: present = committed.
 inline constexpr const char* kJournal = ".whirl-commit";
-/// Staging folders: `.whirl-<pid>` inside the output folder, `.<name>.whirl-<pid>` beside it.
+/// Staging folders: `.whirl-<pid>-XXXXXX` inside the output folder, `.<name>.whirl-<pid>-XXXXXX`
+/// beside it, the last six characters chosen by mkdtemp (unguessable, created mode 0700).
 inline constexpr const char* kStagingTag = ".whirl-";
+/// File in a staging folder that whirl writes when it creates the folder, holding the folder's own
+/// name: with the owner and mode, what makes a folder one this user's whirl created (trustedStaging).
+inline constexpr const char* kMarker = ".whirl-staging";
+
+/// Creates a staging folder `<folder>/<prefix><pid>-XXXXXX` with mkdtemp (mode 0700, this user's)
+/// and its marker; the path, or empty with errno set when it cannot.
+fs::path makeStaging(const fs::path& folder, const std::string& prefix);
+
+/// Writes the marker of `staging` (kMarker); false when it cannot.
+bool writeMarker(const fs::path& staging);
+
+/// The process id in a staging folder's name `<prefix><digits>-XXXXXX` (prefix matched exactly,
+/// six letters or digits after the dash), else −1.
+long stagingPid(const std::string& file, const std::string& prefix);
+
+/// True when `staging` is a folder this user's whirl created: not a symbolic link, a folder owned
+/// by the effective user with no permission for group or others, holding a regular marker file of
+/// the same owner whose content is the folder's name. A folder anyone else could have made (in a
+/// shared parent folder) is never read, merged or removed.
+bool trustedStaging(const fs::path& staging);
 
 /// "message (reason)" of the last errno.
 std::string withErrno(const std::string& message, int err);

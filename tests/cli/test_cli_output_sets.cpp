@@ -108,20 +108,29 @@ TEST(CliOutputSets, ExportFailingHalfWayKeepsThePreviousSet) {
   EXPECT_EQ(test::slurp(dir / "notes.txt"), "another command's file");
 }
 
-TEST(CliOutputSets, StaleTemporariesOfDeadRunsAreRemoved) {
+/// A staging folder as a killed whirl (process `pid`) leaves it: mkdtemp's name, mode 0700, the marker.
+fs::path killedRunsStaging(const fs::path& folder, const std::string& prefix, const std::string& pid) {
+  const fs::path staging = folder / (prefix + pid + "-a1B2c3");
+  fs::create_directories(staging);
+  fs::permissions(staging, fs::perms::owner_all);
+  std::ofstream(staging / ".whirl-staging") << staging.filename().string();
+  return staging;
+}
+
+TEST(CliOutputSets, StaleStagingFoldersOfDeadRunsAreRemovedAndNothingElse) {
   const auto dir = test::freshDir("sets_stale");
   // pid 2^22 + 1 is above the default pid_max (4194304): no running process has it.
   const std::string dead = "4194305";
+  killedRunsStaging(dir, ".whirl-", dead);
+  killedRunsStaging(dir.parent_path(), "." + dir.filename().string() + ".whirl-", dead);
+  // Files are never removed by their name: these are the user's (issue 48, item 2).
   std::ofstream(dir / ("campbell_modes.json.tmp" + dead)) << "half";
-  std::ofstream(dir / (".campbell.csv.tmp" + dead)) << "half";
-  std::ofstream(dir / ("campbell.csv.tmp" + std::to_string(::getpid()))) << "a live process's";
-  fs::create_directories(dir / (".whirl-" + dead));
-  fs::create_directories(dir.parent_path() / ("." + dir.filename().string() + ".whirl-" + dead));
+  std::ofstream(dir / ("data.tmp" + dead)) << "mine";
   std::ofstream(dir / "data.tmp") << "not whirl's naming";
   const auto r = test::whirl("linearize cases/landbased_2dof/landbased_2dof.yaml --out " + dir.string());
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_THAT(whirlTemporaries(dir), ::testing::UnorderedElementsAre(
-                                         "campbell.csv.tmp" + std::to_string(::getpid()), "data.tmp"));
+  EXPECT_THAT(whirlTemporaries(dir), ::testing::UnorderedElementsAre("campbell_modes.json.tmp" + dead,
+                                                                     "data.tmp" + dead, "data.tmp"));
   EXPECT_THAT(whirlTemporaries(dir.parent_path()), ::testing::IsEmpty());
 }
 
@@ -131,8 +140,7 @@ TEST(CliOutputSets, InterruptedRollForwardIsCompletedByTheNextRun) {
   const auto dir = test::freshDir("sets_journal");
   std::ofstream(dir / "a.csv") << "old a";
   std::ofstream(dir / "b.csv") << "old b";
-  const fs::path staging = dir / ".whirl-4194305";
-  fs::create_directories(staging);
+  const fs::path staging = killedRunsStaging(dir, ".whirl-", "4194305");
   std::ofstream(staging / ".whirl-commit") << "a.csv\nb.csv\n";
   std::ofstream(staging / "b.csv") << "new b";  // a.csv was moved before the kill
   fs::remove(dir / "a.csv");
@@ -179,8 +187,7 @@ bool writing(const fs::path& dir, pid_t pid) {
   for (const fs::path& d : {dir, dir.parent_path()})
     for (const auto& e : fs::directory_iterator(d, ec)) {
       const std::string n = e.path().filename().string();
-      for (const std::string& tag : {".whirl-" + p, ".tmp" + p})
-        if (n.size() >= tag.size() && n.compare(n.size() - tag.size(), tag.size(), tag) == 0) return true;
+      if (n.find(".whirl-" + p + "-") != std::string::npos) return true;
     }
   return false;
 }
