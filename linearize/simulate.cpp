@@ -23,6 +23,7 @@
 #include "src/dynamics/outputs.hpp"
 #include "src/dynamics/residual.hpp"
 #include "src/model/error.hpp"
+#include "src/model/limits.hpp"
 
 namespace whirl {
 namespace {
@@ -238,6 +239,32 @@ void addStatistics(void* mem, Simulation& sim) {
   sim.error_test_failures += netf;
 }
 
+/// The size of a simulation, estimated before anything is allocated or integrated (issue 48, item 3):
+/// the recorded instants and values (memory), and the rotor's revolutions (the step count grows with
+/// them). InputError naming the options to change.
+void checkSimulationSize(const Model& m, const OperatingPoint& start, const SimulationOptions& opt) {
+  const double records = std::floor(opt.t_end / opt.dt_out + 1e-9) + 2;  // + t_end off the grid
+  if (records > static_cast<double>(limits::kMaxSimulationRecords))
+    throw InputError(fmt::format(
+        "simulate: tmax: {:g} s recorded every {:g} s (dt-out) are {:.3g} instants, more than {} "
+        "(src/model/limits.hpp): give a larger --dt-out or a shorter --tmax",
+        opt.t_end, opt.dt_out, records, limits::kMaxSimulationRecords));
+  const double columns = 2.0 * m.ndof() + m.ninput() + m.noutput();
+  if (records * columns > limits::kMaxSimulationValues)
+    throw InputError(fmt::format(
+        "simulate: tmax: {:.3g} instants of {:g} values each ({:.0f} MB in memory) are more than {:.3g} values "
+        "(src/model/limits.hpp): give a larger --dt-out or a shorter --tmax",
+        records, columns, records * columns * 8e-6, limits::kMaxSimulationValues));
+  double rate = 0;  // [rad/s]
+  for (int i : m.roles.azimuth) rate = std::max(rate, std::abs(start.qd(i)));
+  const double revolutions = opt.t_end * rate / (2 * M_PI);
+  if (!(revolutions <= limits::kMaxSimulationRevolutions))
+    throw InputError(fmt::format(
+        "simulate: the rotor turns {:.3g} revolutions in tmax = {:g} s at {:.6g} rpm, more than {:g} "
+        "(src/model/limits.hpp: the integrator's steps grow with them): give a lower --rpm or a shorter --tmax",
+        revolutions, opt.t_end, rate * 30 / M_PI, limits::kMaxSimulationRevolutions));
+}
+
 }  // namespace
 
 double simulationBemTolerance(double model_tolerance, double rtol) {
@@ -261,6 +288,7 @@ Simulation simulate(const Model& m, const OperatingPoint& start, const Simulatio
   for (const DrivenDof& d : opt.driven)
     if (std::find(active.begin(), active.end(), d.dof) == active.end())
       throw InputError("simulate: driven coordinate: not an active coordinate of the model");
+  checkSimulationSize(m, start, opt);
   Problem p(m, start, opt);
   auto held = [&](int i) {
     return std::find(opt.prescribed.begin(), opt.prescribed.end(), i) != opt.prescribed.end() ||
@@ -374,6 +402,13 @@ Simulation simulate(const Model& m, const OperatingPoint& start, const Simulatio
     while (true) {
       const int flag = IDASolve(h.mem, tout, &t, h.y, h.yp, IDA_NORMAL);
       if (p.error) std::rethrow_exception(p.error);
+      long steps = 0;
+      IDAGetNumSteps(h.mem, &steps);
+      if (sim.steps + steps > limits::kMaxSimulationSteps)
+        throw ComputeError(fmt::format(
+            "simulate: t = {:.6g} s: more than {} integrator steps (src/model/limits.hpp) for {:g} s of {:g}: the "
+            "motion is too fast for the time step it needs (a rotor spinning up, a diverging model?)",
+            t, limits::kMaxSimulationSteps, t, opt.t_end));
       if (flag < 0)
         throw ComputeError(fmt::format("simulate: t = {:.6g} s: IDA {}{}{}", t, flagName(flag),
                                        p.ida_message.empty() ? "" : ": ", p.ida_message));

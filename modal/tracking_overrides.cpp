@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "src/io/csv.hpp"
+#include "src/io/input_file.hpp"
 #include "src/model/error.hpp"
 #include "src/model/text.hpp"
 
@@ -101,11 +102,9 @@ void applyTrackingOverridesText(const std::string& text, const std::string& file
 
 void applyTrackingOverrides(const std::string& file, const std::vector<CampbellPoint>& points,
                             std::vector<CampbellLine>& lines) {
-  std::ifstream in(file);
-  if (!in) throw InputError(where(file, 0, "", "cannot open the tracking override file"));
-  std::stringstream ss;
-  ss << in.rdbuf();
-  applyTrackingOverridesText(ss.str(), file, points, lines);
+  std::string text;
+  if (!io::readInputFile(file, text)) throw InputError(where(file, 0, "", "cannot open the tracking override file"));
+  applyTrackingOverridesText(text, file, points, lines);
 }
 
 }  // namespace whirl

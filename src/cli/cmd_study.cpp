@@ -14,6 +14,7 @@
 #include "src/io/csv.hpp"
 #include "src/io/schedule.hpp"
 #include "src/model/error.hpp"
+#include "src/model/limits.hpp"
 #include "src/parallel/session.hpp"
 
 namespace whirl::cli {
@@ -41,6 +42,10 @@ void run(const StudyOptions& opt) {
     throw InputError("study: give exactly one of --rpm START:STEP:STOP and --schedule FILE");
   const std::vector<SweepPoint> points = opt.schedule.empty() ? rpmRange(opt.rpm_range) : readSchedule(opt.schedule);
   const TextTable sets = readTextCsv(opt.params);
+  if (sets.rows.size() > static_cast<std::size_t>(limits::kMaxStudySets))
+    throw InputError(where(opt.params, sets.lines[limits::kMaxStudySets], "",
+                           "more than " + std::to_string(limits::kMaxStudySets) +
+                               " parameter sets (src/model/limits.hpp, kMaxStudySets): split the study into several runs"));
   if (sets.names.empty() || sets.rows.empty())
     throw InputError(where(opt.params, 1, "", "needs a header of --set keys and at least one row of values"));
   for (const auto& n : sets.names)

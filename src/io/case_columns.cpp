@@ -4,6 +4,7 @@
 #include <cmath>
 #include <fstream>
 
+#include "src/io/input_file.hpp"
 #include "src/io/csv_table.hpp"
 
 namespace whirl {
@@ -22,7 +23,8 @@ std::string join(const std::vector<std::string>& v) {
 Columns fromCsv(const CaseNode& file_node, const std::vector<std::string>& allowed) {
   const std::string path = file_node.source().resolve(file_node.text());
   if (const std::string outside = file_node.source().outsideReason(path); !outside.empty()) file_node.fail(outside);
-  if (!std::ifstream(path)) file_node.fail("cannot open '" + path + "' (relative paths start at the case folder)");
+  std::string probe;  // through the readers' preamble: a FIFO is refused, not opened and waited on
+  if (!io::readInputFile(path, probe)) file_node.fail("cannot open '" + path + "' (relative paths start at the case folder)");
   const CsvTable t = readCsv(path);
   Columns cols;
   for (size_t j = 0; j < t.names.size(); ++j) {

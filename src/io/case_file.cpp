@@ -5,6 +5,7 @@
 #include <fstream>
 #include <utility>
 
+#include "src/io/input_file.hpp"
 #include "src/io/case_reader.hpp"
 #include "src/model/error.hpp"
 #include "src/model/text.hpp"
@@ -26,8 +27,8 @@ YAML::Node parse(Source& in, const std::string& label) {
 
 YAML::Node load(const std::string& path) {
   if (std::filesystem::is_directory(path)) throw InputError(where(path, 0, "", "is a folder, not a case file"));
-  std::ifstream in(path);
-  if (!in) throw InputError(where(path, 0, "", "cannot open the case file"));
+  std::istringstream in;
+  if (!io::openInputFile(path, in)) throw InputError(where(path, 0, "", "cannot open the case file"));
   return parse(in, path);
 }
 

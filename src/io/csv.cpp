@@ -4,7 +4,9 @@
 #include <cmath>
 #include <fstream>
 
+#include "src/io/input_file.hpp"
 #include "src/model/error.hpp"
+#include "src/model/limits.hpp"
 #include "src/model/text.hpp"
 
 namespace whirl {
@@ -67,8 +69,8 @@ int TextTable::column(const std::string& name) const {
 }
 
 TextTable readTextCsv(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open");
+  std::istringstream in;
+  if (!io::openInputFile(path, in)) throw InputError(path + ": cannot open");
   TextTable t;
   t.file = path;
   std::string line;
@@ -92,6 +94,7 @@ TextTable readTextCsv(const std::string& path) {
     if (f.size() != t.names.size())
       throw InputError(where(path, n, "", "expected " + std::to_string(t.names.size()) + " fields, found " +
                                               std::to_string(f.size())));
+    if (t.rows.size() >= static_cast<std::size_t>(limits::kMaxTableRows)) throw InputError(io::tooManyRows(path, n));
     t.rows.push_back(std::move(f));
     t.lines.push_back(n);
   }

@@ -6,8 +6,10 @@
 #include <fstream>
 #include <set>
 
+#include "src/io/input_file.hpp"
 #include "src/io/csv.hpp"
 #include "src/model/error.hpp"
+#include "src/model/limits.hpp"
 #include "src/model/text.hpp"
 
 namespace whirl {
@@ -21,10 +23,10 @@ std::string excerpt(const std::string& s) { return s.size() <= 40 ? s : s.substr
 CsvTable readCsv(const std::string& path) {
   CsvTable t;
   t.file = path;
-  std::ifstream in(path);
+  std::istringstream in;
   std::error_code fs_ec;
   if (std::filesystem::is_directory(path, fs_ec)) throw InputError(where(path, 0, "", "is a folder, not a CSV file"));
-  if (!in) throw InputError(where(path, 0, "", "cannot open the file"));
+  if (!io::openInputFile(path, in)) throw InputError(where(path, 0, "", "cannot open the file"));
   std::string raw;
   int line = 0;
   while (std::getline(in, raw)) {
@@ -61,6 +63,7 @@ CsvTable readCsv(const std::string& path) {
         throw InputError(where(path, line, excerpt(t.names[j]), "expected a finite number, got '" + excerpt(fields[j]) + "'"));
       t.columns[j].push_back(v);
     }
+    if (t.row_lines.size() >= static_cast<std::size_t>(limits::kMaxTableRows)) throw InputError(io::tooManyRows(path, line));
     t.row_lines.push_back(line);
   }
   if (t.names.empty()) throw InputError(where(path, 0, "", "no header row (the file is empty)"));

@@ -5,6 +5,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "src/io/input_file.hpp"
 #include "src/io/elastodyn_common.hpp"
 #include "src/io/mooring_table.hpp"
 #include "src/io/openfast_input.hpp"
@@ -18,8 +19,8 @@ enum class Section { None, Dictionary, Nodes, Lines, Options };
 }  // namespace
 
 MapInput readMap(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in) throw InputError(whirl::where(file.string(), 0, "", "cannot open file"));
+  std::istringstream in;
+  if (!openInputFile(file.string(), in)) throw InputError(whirl::where(file.string(), 0, "", "cannot open file"));
   MapInput m;
   m.path = file;
   MooringTableReader r{file.string()};

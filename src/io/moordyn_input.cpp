@@ -2,6 +2,7 @@
 
 #include <fstream>
 
+#include "src/io/input_file.hpp"
 #include "src/io/mooring_table.hpp"
 
 namespace whirl::io {
@@ -49,8 +50,8 @@ MapNode point(const MooringTableReader& r, const std::vector<std::string>& t) {
 }  // namespace
 
 MapInput readMoorDyn(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in) throw InputError(whirl::where(file.string(), 0, "", "cannot open file"));
+  std::istringstream in;
+  if (!openInputFile(file.string(), in)) throw InputError(whirl::where(file.string(), 0, "", "cannot open file"));
   MapInput m;
   m.path = file;
   MooringTableReader r{file.string()};

@@ -7,7 +7,9 @@
 #include <limits>
 #include <sstream>
 
+#include "src/io/input_file.hpp"
 #include "src/model/error.hpp"
+#include "src/model/limits.hpp"
 #include "src/model/text.hpp"
 
 namespace whirl::io {
@@ -150,12 +152,9 @@ int OpenFastTable::columnIndex(std::string_view name) const {
 }
 
 OpenFastFile OpenFastFile::read(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in || std::filesystem::is_directory(file))
-    throw InputError(whirl::where(file.string(), 0, "", "cannot open file"));
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return parse(ss.str(), file);
+  std::string text;
+  if (!readInputFile(file.string(), text)) throw InputError(whirl::where(file.string(), 0, "", "cannot open file"));
+  return parse(text, file);
 }
 
 OpenFastFile OpenFastFile::parse(std::string_view text, const std::filesystem::path& file) {
@@ -190,6 +189,8 @@ OpenFastFile OpenFastFile::parse(std::string_view text, const std::filesystem::p
       for (; r < lines.size(); ++r) {
         const std::vector<Token> row = tokenize(lines[r]);
         if (!isNumberRow(row)) break;
+        if (tab.rows.size() >= static_cast<std::size_t>(limits::kMaxTableRows))
+          throw InputError(tooManyRows(file.string(), static_cast<int>(r) + 1));
         std::vector<double> values;
         for (const Token& tk : row) values.push_back(*parseFortranDouble(tk.text));
         tab.rows.push_back(std::move(values));

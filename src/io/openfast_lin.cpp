@@ -11,6 +11,7 @@
 #include <regex>
 #include <string_view>
 
+#include "src/io/input_file.hpp"
 #include "src/model/error.hpp"
 #include "src/model/limits.hpp"
 #include "src/model/text.hpp"
@@ -38,9 +39,8 @@ bool fullParse(std::string_view t, double& v) {
 class LinParser {
  public:
   explicit LinParser(const std::string& path) : path_(path) {
-    std::ifstream in(path);
-    std::error_code ec;
-    if (!in || std::filesystem::is_directory(path, ec)) throw InputError(where(path, 0, "", "cannot open file"));
+    std::istringstream in;
+    if (!io::openInputFile(path, in)) throw InputError(where(path, 0, "", "cannot open file"));
     for (std::string l; std::getline(in, l);) {
       if (!l.empty() && l.back() == '\r') l.pop_back();
       lines_.push_back(std::move(l));

@@ -3,6 +3,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "src/io/input_file.hpp"
 #include "src/io/openfast_input.hpp"
 #include "src/model/error.hpp"
 
@@ -70,12 +71,9 @@ std::optional<std::vector<double>> parseNumberRow(std::string_view line) {
 }
 
 OpenFastLines OpenFastLines::read(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in || std::filesystem::is_directory(file))
-    throw InputError(whirl::where(file.string(), 0, "", "cannot open file"));
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return fromText(ss.str(), file);
+  std::string text;
+  if (!readInputFile(file.string(), text)) throw InputError(whirl::where(file.string(), 0, "", "cannot open file"));
+  return fromText(text, file);
 }
 
 OpenFastLines OpenFastLines::fromText(std::string_view text, const std::filesystem::path& file) {

@@ -4,6 +4,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "src/io/input_file.hpp"
 #include "src/io/elastodyn_common.hpp"
 #include "src/model/error.hpp"
 
@@ -37,8 +38,8 @@ struct Row {
 };
 
 std::vector<Row> numericRows(const std::filesystem::path& file, std::size_t min_cols) {
-  std::ifstream in(file);
-  if (!in) throw InputError(whirl::where(file.string(), 0, "", "cannot open file"));
+  std::istringstream in;
+  if (!openInputFile(file.string(), in)) throw InputError(whirl::where(file.string(), 0, "", "cannot open file"));
   std::vector<Row> rows;
   int n = 0;
   for (std::string s; std::getline(in, s);) {

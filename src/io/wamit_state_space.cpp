@@ -4,6 +4,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "src/io/input_file.hpp"
 #include "src/io/elastodyn_common.hpp"
 #include "src/io/wamit_input.hpp"
 #include "src/model/error.hpp"
@@ -50,8 +51,8 @@ int wholeNumber(const Lines& l, std::size_t index, double x, const char* what) {
 RadiationStateSpace readRadiationStateSpace(const HydroDynInput& hd) {
   Lines l;
   l.file = wamitFile(hd, ".ss");
-  std::ifstream in(l.file);
-  if (!in) throw InputError(whirl::where(l.file.string(), 0, "", "cannot open file"));
+  std::istringstream in;
+  if (!openInputFile(l.file.string(), in)) throw InputError(whirl::where(l.file.string(), 0, "", "cannot open file"));
   for (std::string s; std::getline(in, s);) l.text.push_back(s);
   const std::vector<double> flags = numbers(l, 1, 6, false);
   for (int k = 0; k < 6; ++k)

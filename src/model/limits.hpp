@@ -31,6 +31,13 @@
 /// | kMaxSubDynMembers | 2000 | SubDyn `NMembers`; with `NDiv` at most kMaxFemElements elements in all |
 /// | kMaxSubDynNDiv | 100 | SubDyn `NDiv` |
 /// | kMaxSubDynPropSets | 2000 | SubDyn property-set counts (`NPropSets`, `NXPropSets`) |
+/// | kMaxInputFileBytes | 128 MB | every input file, from its size before reading (src/io/input_file.hpp) |
+/// | kMaxTableRows | 1000000 | rows of a CSV table (readCsv, readTextCsv) and of an OpenFAST table |
+/// | kMaxStudySets | 10000 | rows of `study --params` |
+/// | kMaxSimulationRecords | 1000000 | `simulate` recorded instants, tmax / dt-out + 1 |
+/// | kMaxSimulationValues | 50000000 | `simulate` recorded values, instants × (2 coordinates + inputs + outputs) |
+/// | kMaxSimulationRevolutions | 100000 | `simulate` rotor revolutions, tmax × start rotor speed / 2π |
+/// | kMaxSimulationSteps | 5000000 | `simulate` integrator steps in all (IDA) |
 // clang-format on
 namespace whirl::limits {
 
@@ -74,5 +81,25 @@ inline constexpr int kMaxSubDynJoints = 2000;
 inline constexpr int kMaxSubDynMembers = 2000;
 inline constexpr int kMaxSubDynNDiv = 100;
 inline constexpr int kMaxSubDynPropSets = 2000;
+// Every reader holds its whole file in memory, some several times over (text, lines, tokens: a 1 GB
+// ElastoDyn file took 4.2 GB). The largest input of the reference decks is a 2 MB WAMIT `.3` file;
+// a `.lin` of 1000 states and 1000 outputs is about 60 MB.
+inline constexpr long long kMaxInputFileBytes = 128LL * 1000 * 1000;
+// Rows of a table (a CSV file, an OpenFAST property or member table): beyond a million a table is
+// not an input whirl reads (ElastoDyn stations are interpolated to at most kMaxElastoDynNodes).
+inline constexpr int kMaxTableRows = 1000000;
+// Each parameter set is a model kept for the sweep and a Campbell diagram (100 001 sets grew past
+// 2.4 GB before producing anything).
+inline constexpr int kMaxStudySets = 10000;
+// `simulate` keeps every recorded instant (q, q̇, u, y) in memory and writes them as text, ~20 bytes a
+// value: 5e7 values are 400 MB in memory and about 1 GB of CSV.
+inline constexpr long kMaxSimulationRecords = 1000000;
+inline constexpr double kMaxSimulationValues = 5e7;
+// The integrator resolves each revolution of the rotor with tens of steps at least, so the step count
+// grows with the revolutions whatever the tolerance: 10⁵ revolutions are 14 h at 120 rpm. A guard on
+// counts, not on wall-clock time (runs stay reproducible); kMaxSimulationSteps is the backstop for a
+// motion the start speed does not announce (a spin-up, a diverging rotor).
+inline constexpr double kMaxSimulationRevolutions = 1e5;
+inline constexpr long kMaxSimulationSteps = 5000000;
 
 }  // namespace whirl::limits
