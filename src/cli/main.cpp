@@ -5,6 +5,7 @@
 #include <exception>
 
 #include "src/cli/commands.hpp"
+#include "src/cli/error_message.hpp"
 #include "src/model/text.hpp"
 #include "src/parallel/session.hpp"
 
@@ -64,7 +65,7 @@ int main(int argc, char** argv) {
     if (!root) return e.get_exit_code();
     return app.exit(e);
   } catch (const std::exception& e) {
-    if (root) std::fprintf(stderr, "whirl: error: %s\n", whirl::escapeControlCharacters(e.what()).c_str());
+    if (root) std::fprintf(stderr, "whirl: error: %s\n", whirl::cli::errorMessage(e).c_str());
     return 1;
   }
   return 0;

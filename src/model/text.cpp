@@ -25,7 +25,44 @@ const char* controlName(unsigned char c) {
   }
 }
 
+/// Length of the UTF-8 sequence at s[i] (RFC 3629: no overlong forms, no surrogates, at most
+/// U+10FFFF), 0 when the bytes there are not one.
+std::size_t utf8Length(std::string_view s, std::size_t i) {
+  const auto b = [&](std::size_t k) { return static_cast<unsigned char>(s[k]); };
+  const unsigned char c = b(i);
+  if (c < 0x80) return 1;
+  std::size_t n = 0;
+  unsigned char lo = 0x80, hi = 0xBF;  // the range of the second byte
+  if (c >= 0xC2 && c <= 0xDF) n = 2;
+  else if (c >= 0xE0 && c <= 0xEF) {
+    n = 3;
+    if (c == 0xE0) lo = 0xA0;  // overlong
+    if (c == 0xED) hi = 0x9F;  // surrogates
+  } else if (c >= 0xF0 && c <= 0xF4) {
+    n = 4;
+    if (c == 0xF0) lo = 0x90;  // overlong
+    if (c == 0xF4) hi = 0x8F;  // above U+10FFFF
+  } else {
+    return 0;
+  }
+  if (i + n > s.size() || b(i + 1) < lo || b(i + 1) > hi) return 0;
+  for (std::size_t k = 2; k < n; ++k)
+    if (b(i + k) < 0x80 || b(i + k) > 0xBF) return 0;
+  return n;
+}
+
 }  // namespace
+
+std::string invalidUtf8Reason(std::string_view s) {
+  for (std::size_t i = 0; i < s.size();) {
+    const std::size_t n = utf8Length(s, i);
+    if (n == 0)
+      return "contains a byte that is not UTF-8 text (" + hex(static_cast<unsigned char>(s[i])) + ") at byte " +
+             std::to_string(i + 1) + ": names and titles must be UTF-8 text (save the file as UTF-8)";
+    i += n;
+  }
+  return "";
+}
 
 std::string controlCharacterReason(std::string_view s) {
   for (std::size_t i = 0; i < s.size(); ++i) {
@@ -34,7 +71,7 @@ std::string controlCharacterReason(std::string_view s) {
     return std::string("contains a control character (") + controlName(c) + ", " + hex(c) + ") at character " +
            std::to_string(i + 1) + ": names and titles must be printable text on one line";
   }
-  return "";
+  return invalidUtf8Reason(s);
 }
 
 void requirePrintable(std::string_view s, const std::string& file, int line, const std::string& key) {
@@ -59,7 +96,18 @@ std::string withoutControlCharacters(std::string_view s) {
 std::string escapeControlCharacters(std::string_view s) {
   std::string t;
   t.reserve(s.size());
-  for (char c : s) {
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const char c = s[i];
+    const std::size_t n = utf8Length(s, i);
+    if (n == 0) {  // a byte that is not UTF-8: as an escape, so the message is valid text
+      t += "\\x" + hex(static_cast<unsigned char>(c)).substr(2);
+      continue;
+    }
+    if (n > 1) {
+      t.append(s.substr(i, n));
+      i += n - 1;
+      continue;
+    }
     if (c == '\n') t += "\\n";
     else if (c == '\r') t += "\\r";
     else if (c == '\t') t += "\\t";

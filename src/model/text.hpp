@@ -16,9 +16,14 @@ constexpr bool isControlCharacter(char c) {
   return u < 0x20 || u == 0x7F;
 }
 
+/// Why `s` is not UTF-8 text: "contains a byte that is not UTF-8 text (0xFF) at byte 4: …"; empty
+/// when it is (RFC 3629: no overlong forms, no surrogates). JSON and the tables are UTF-8: a name
+/// that is not would stop the JSON writer mid-way (issue 48, item 5).
+std::string invalidUtf8Reason(std::string_view s);
+
 /// Why `s` cannot be a name: "contains a control character (line feed, 0x0A) at character 3: names
-/// are printable text on one line"; empty when it has no control character. The message does not
-/// repeat `s` (it would carry the character into the message).
+/// are printable text on one line", or invalidUtf8Reason(s); empty when it is a printable UTF-8
+/// name. The message does not repeat `s` (it would carry the character into the message).
 std::string controlCharacterReason(std::string_view s);
 
 /// \throws InputError "file:line: key: <controlCharacterReason(s)>" when `s` holds a control character.
@@ -40,8 +45,8 @@ constexpr std::string_view trimBlanks(std::string_view s) {
   return s;
 }
 
-/// `s` with control characters written as C escapes (\n, \t, \r, \x1B; other text unchanged): error
-/// messages stay one line whatever name they quote.
+/// `s` with control characters and bytes that are not UTF-8 written as C escapes (\n, \t, \r, \x1B,
+/// \xFF; other text unchanged): error messages stay one line of text whatever name they quote.
 std::string escapeControlCharacters(std::string_view s);
 
 }  // namespace whirl

@@ -1,5 +1,7 @@
 #pragma once
 // Runs the whirl executable and captures exit code, stdout and stderr.
+#include <gtest/gtest.h>
+
 #include <array>
 #include <cstdio>
 #include <cstdlib>
@@ -23,6 +25,14 @@ inline std::string slurp(const std::filesystem::path& p) {
   return s.str();
 }
 
+/// What a library's exception says (`std::bad_alloc`, nlohmann's `[json.exception.type_error.316]`,
+/// a `what()` quoted): never for a user's eyes. Every run of every CLI test checks its messages
+/// (issue 48, item 5), so the bad-input suites check all of theirs.
+inline void expectNoLibraryText(const std::string& err, const std::string& args) {
+  for (const char* text : {"json.exception", "std::", "what()"})
+    if (err.find(text) != std::string::npos) ADD_FAILURE() << "'" << text << "' in the messages of whirl " << args << ":\n" << err;
+}
+
 /// Runs `whirl <args>` from `cwd` (default: the source tree), arguments already shell-quoted.
 inline Run whirl(const std::string& args, const std::string& cwd = WHIRL_SOURCE_DIR) {
   static int counter = 0;
@@ -37,6 +47,7 @@ inline Run whirl(const std::string& args, const std::string& cwd = WHIRL_SOURCE_
   r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   r.out = slurp(out);
   r.err = slurp(err);
+  expectNoLibraryText(r.err, args);
   return r;
 }
 
