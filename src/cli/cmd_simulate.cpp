@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <fmt/format.h>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -114,15 +115,20 @@ void run(const SimulateOptions& opt) {
   const double seconds = wall();
   if (shown > 0) std::fprintf(stderr, "\n");
   // The first recorded instant outside the model's range of validity (deflections, slopes:
-  // linearize/point_validity.hpp) is a warning: a diverging motion (Kane's beam without geometric
-  // stiffness) is a legitimate result, but not a turbine state.
+  // linearize/point_validity.hpp) stops the command, as an operating point outside it does: a model
+  // that blows up (negative damping: a 325 km tower deflection, issue 48, item 6) is no result to
+  // write silently. A diverging motion can be what is studied (Kane's beam without geometric
+  // stiffness): --allow-invalid-point writes it with a warning. docs/user/limits.md, *Blow-ups*.
   for (size_t k = 0; k < sim.time.size(); ++k) {
     OperatingPoint at;  // no solved coordinates: only the geometry is checked
     at.q = sim.q.row(static_cast<Eigen::Index>(k)).transpose();
     const std::vector<std::string> problems = checkPointValidity(m, at);
     if (problems.empty()) continue;
-    std::fprintf(stderr, "whirl: warning: %s: t = %g s: the motion leaves the model's range of validity: %s\n",
-                 opt.model.case_path.c_str(), sim.time[k], problems.front().c_str());
+    const std::string what = "t = " + fmt::format("{:g}", sim.time[k]) +
+                             " s: the motion leaves the model's range of validity: " + problems.front();
+    if (!opt.model.allow_invalid_point)
+      throw ComputeError(what + " (a diverging model; nothing written: --allow-invalid-point writes it anyway)");
+    std::fprintf(stderr, "whirl: warning: %s: %s\n", opt.model.case_path.c_str(), what.c_str());
     break;
   }
   // Only now the output folder: a failed simulation writes nothing.

@@ -28,8 +28,8 @@ void addModelOptions(CLI::App& cmd, ModelOptions& opt, bool with_rpm) {
                  "gravity=G for both");
   if (with_rpm) cmd.add_option("--rpm", opt.rpm, "rotor speed [rpm]: the rate of every DOF marked rotating");
   cmd.add_flag("--allow-invalid-point", opt.allow_invalid_point,
-               "go on (with a warning) when the solved operating point leaves the model's range of validity "
-               "(deflection > 0.3 body length, elastic slope > 0.5 rad, residual not small)");
+               "go on (with a warning) when the solved operating point, or a simulated motion, leaves the model's "
+               "range of validity (deflection > 0.3 body length, elastic slope > 0.5 rad, residual not small)");
   cmd.add_flag("--allow-outside-files", opt.allow_outside_files,
                "let a YAML case's `file:` entries name files outside the case folder");
 }

@@ -85,12 +85,20 @@ TEST(CliSimulate, DrivenSpinUp) {
   EXPECT_THAT(test::slurp(dir / "timeseries.csv"), HasSubstr("\n15,45,6,"));  // θ(15) = 45 rad, θ̇ = 6 rad/s
 }
 
-TEST(CliSimulate, DivergingMotionIsAWarning) {
+TEST(CliSimulate, DivergingMotionIsAnErrorUnlessAllowed) {
   // Kane's beam without geometric stiffness diverges (tests/validation/test_simulate_kane_beam.cpp):
-  // written, with one warning naming the first instant outside the range of validity.
+  // by default an error naming the first instant outside the range of validity, nothing written
+  // (issue 48, item 6); with --allow-invalid-point written, with that line as a warning.
   const auto dir = test::freshDir("simulate_diverge");
-  const auto r = test::whirl("simulate cases/kane_beam/kane_beam.yaml --set bodies.beam.axial_shortening=false "
-                             "--tmax 20 --dt-out 0.5 --drive 'theta=spinup(15,6)' --no-plot --out '" + dir.string() + "'");
+  const std::string args = "simulate cases/kane_beam/kane_beam.yaml --set bodies.beam.axial_shortening=false "
+                           "--tmax 20 --dt-out 0.5 --drive 'theta=spinup(15,6)' --no-plot --out '" + dir.string() + "'";
+  const auto refused = test::whirl(args);
+  EXPECT_EQ(refused.code, 1) << refused.err;
+  EXPECT_THAT(refused.err, HasSubstr("whirl: error: cases/kane_beam/kane_beam.yaml: t = "));
+  EXPECT_THAT(refused.err, HasSubstr("the motion leaves the model's range of validity: beam: "));
+  EXPECT_THAT(refused.err, HasSubstr("--allow-invalid-point writes it anyway"));
+  EXPECT_FALSE(fs::exists(dir / "timeseries.csv"));
+  const auto r = test::whirl(args + " --allow-invalid-point");
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_THAT(r.err, HasSubstr("whirl: warning: cases/kane_beam/kane_beam.yaml: t = "));
   EXPECT_THAT(r.err, HasSubstr("the motion leaves the model's range of validity: beam: "));
