@@ -312,7 +312,10 @@ std::filesystem::path OpenFastFile::getPath(std::string_view key) const {
 std::filesystem::path OpenFastFile::getExistingPath(std::string_view key) const {
   const std::filesystem::path p = getPath(key);
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(p, ec)) throw InputError(where(key, "file not found: " + p.string()));
+  const std::filesystem::file_status st = std::filesystem::status(p, ec);
+  if (std::filesystem::exists(st) && !std::filesystem::is_regular_file(st))
+    throw InputError(where(key, "not a regular file (a folder, FIFO or device): " + p.string()));
+  if (!std::filesystem::is_regular_file(st)) throw InputError(where(key, "file not found: " + p.string()));
   return p;
 }
 

@@ -38,7 +38,7 @@ TEST(CliStagingSecurity, APlantedStagingFolderIsNotMerged) {
   ::chmod(open_mode.c_str(), 0755);
   const fs::path no_marker = plant(shared, ".out.whirl-4194306-abcdef");
   ::chmod(no_marker.c_str(), 0700);
-  const Run r = whirl(kLinearize + (shared / "out").string());
+  const whirl::test::Run r = whirl(kLinearize + (shared / "out").string());
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_THAT(r.err, Not(HasSubstr("completed the output of an interrupted run")));
   EXPECT_FALSE(fs::exists(shared / "out" / "campbell.gp")) << "a planted file was merged into the results";
@@ -55,7 +55,7 @@ TEST(CliStagingSecurity, ASymlinkedStagingFolderIsNotFollowed) {
   std::ofstream(target / "campbell.gp") << kHostile;
   fs::create_directory_symlink(target, shared / ".out.whirl-4194305-abcdef");
   std::ofstream(target / ".whirl-staging") << ".out.whirl-4194305-abcdef";
-  const Run r = whirl(kLinearize + (shared / "out").string());
+  const whirl::test::Run r = whirl(kLinearize + (shared / "out").string());
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_FALSE(fs::exists(shared / "out" / "campbell.gp"));
   EXPECT_EQ(slurp(target / "campbell.gp"), kHostile);
@@ -83,7 +83,7 @@ TEST(CliStagingSecurity, StagingFoldersAreUnguessableAndPrivate) {
                           ":'\"$PATH\" '" + WHIRL_BINARY + "' campbell cases/landbased_2dof/landbased_2dof.yaml "
                           "--rpm 0:5:10 --azimuths 4 --out '" + (dir / "out").string() + "' 2> '" +
                           (dir / "err.txt").string() + "'";
-  Run r;
+  whirl::test::Run r;
   const int status = std::system(cmd.c_str());
   r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   r.err = slurp(dir / "err.txt");
