@@ -121,3 +121,17 @@ def test_campbell_argument_errors(onshore):
         onshore.campbell(rpm=[1], wind=[8])
     with pytest.raises(whirl.InputError, match="rpm: rotor speed must be finite"):
         onshore.operating_point(rpm=-1)
+
+
+def test_schedule_dataframe_equals_the_schedule_file(onshore, tmp_path):
+    # The first two rows of the NREL 5MW operating schedule (cases/nrel5mw/NREL5MW_Oper.csv), as a file
+    # (the CLI's reader) and as a DataFrame read with pandas: the same points, the same numbers.
+    table = pd.read_csv(case("nrel5mw", "NREL5MW_Oper.csv"), float_precision="round_trip").iloc[[4, 8]]
+    path = tmp_path / "oper.csv"
+    table.to_csv(path, index=False)
+    from_file = onshore.campbell(schedule=str(path), azimuths=4)
+    from_frame = onshore.campbell(schedule=table, azimuths=4)
+    pd.testing.assert_frame_equal(from_file, from_frame, check_exact=True)
+    assert from_frame["wind_speed"].tolist()[0] == table.iloc[0, 0]
+    with pytest.raises(whirl.InputError, match="no rotor-speed column"):
+        onshore.campbell(schedule=table.drop(columns=["RotSpeed_[rpm]"]), azimuths=4)

@@ -152,6 +152,22 @@ def _progress(progress):
     return update
 
 
+def _schedule_rows(table: pd.DataFrame) -> list:
+    """(rpm, wind speed or None, pitch [deg] or None) per row of a schedule DataFrame, its columns found
+    as ``readSchedule`` finds them in a CSV file (src/io/schedule.cpp)."""
+    def find(match):
+        return next((c for c in table.columns if match(str(c).lower())), None)
+    rpm = find(lambda n: n.startswith("rotspeed")) or find(lambda n: n == "rpm" or n.startswith("rpm_"))
+    if rpm is None:
+        raise InputError("schedule: no rotor-speed column (a column named RotSpeed… or rpm)")
+    wind = find(lambda n: n.startswith("ws") or n.startswith("wind"))
+    pitch = find(lambda n: n.startswith("bldpitch") or n.startswith("pitch"))
+
+    def value(row, col):
+        return None if col is None or pd.isna(row[col]) else float(row[col])
+    return [(float(row[rpm]), value(row, wind), value(row, pitch)) for _, row in table.iterrows()]
+
+
 class Model:
     """A loaded model: coordinates (DOFs), inputs, outputs and bodies, and the analyses of the CLI.
 
@@ -241,8 +257,9 @@ class Model:
 
         - ``rpm``: rotor speeds [rpm];
         - ``wind``: wind speeds [m/s], each trimmed (rotor speed below rated, pitch above);
-        - ``schedule``: a schedule CSV path, or a DataFrame with columns ``rpm`` and optionally
-          ``wind_speed`` [m/s] and ``pitch_deg``.
+        - ``schedule``: a schedule CSV path, or a DataFrame with its columns (the CLI's rules: rotor
+          speed ``RotSpeed…`` or ``rpm`` [rpm], optional wind speed ``WS…``/``wind…`` [m/s] and pitch
+          ``BldPitch…``/``pitch…`` [deg], names in any case), e.g. an OpenFAST ``*_Oper.csv`` read with pandas.
 
         Returns a tidy :class:`CampbellTable`, one row per operating point and tracked mode (the
         rows of campbell.csv): point, rpm, wind_speed, pitch_deg, mode, freq_hz, damped_freq_hz,
@@ -254,12 +271,7 @@ class Model:
         being computed, and is raised here.
         """
         if isinstance(schedule, pd.DataFrame):
-            cols = {c.lower(): c for c in schedule.columns}
-            def col(name):
-                return schedule[cols[name]] if name in cols else [None] * len(schedule)
-            schedule = [(float(r), None if w is None or pd.isna(w) else float(w),
-                         None if p is None or pd.isna(p) else float(p))
-                        for r, w, p in zip(col("rpm"), col("wind_speed"), col("pitch_deg"))]
+            schedule = _schedule_rows(schedule)
         elif schedule is not None:
             schedule = os.fspath(schedule)
         def floats(v):
