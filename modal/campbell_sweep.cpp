@@ -2,6 +2,7 @@
 
 #include "linearize/periodic.hpp"
 #include "modal/campbell_serialize.hpp"
+#include "modal/mode_shapes.hpp"
 #include "modal/rotor_modes.hpp"
 
 namespace whirl {
@@ -16,6 +17,7 @@ CampbellPoint campbellPoint(const Model& m, const SweepPoint& point, const Opera
   std::vector<std::string> problems;
   if (opt.check_point) problems = opt.check_point(m, p.points, point);
   RotorModes r = rotorModes(m, p);
+  addModeMotions(m, p, r.num_blades, r.coordinates, r.modes);
   CampbellPoint cp;
   cp.validity_problems = std::move(problems);
   cp.rpm = point.rpm;

@@ -28,10 +28,21 @@ Mode fromEigenvector(const Eigen::VectorXcd& v, const Weights& M, const std::vec
   const double total = mode.participation.sum();
   if (total > 0) mode.participation /= total;
   mode.name = nameFromParticipation(mode.participation, names);
+  std::vector<std::pair<std::string, double>> shares;
+  for (int i = 0; i < n; ++i) shares.emplace_back(names.at(i), mode.participation(i));
+  setNameEvidence(mode, std::move(shares));
   return mode;
 }
 
 }  // namespace
+
+void setNameEvidence(Mode& mode, std::vector<std::pair<std::string, double>> shares) {
+  std::stable_sort(shares.begin(), shares.end(), [](const auto& a, const auto& b) { return a.second > b.second; });
+  mode.name_share = shares.empty() ? 0 : shares[0].second;
+  mode.runner_up = shares.size() > 1 ? shares[1].first : "";
+  mode.runner_up_share = shares.size() > 1 ? shares[1].second : 0;
+  mode.ambiguous = shares.size() > 1 && mode.name_share > 0 && mode.runner_up_share >= kAmbiguousRunnerUp * mode.name_share;
+}
 
 std::string nameFromParticipation(const VecX& p, const std::vector<std::string>& names) {
   std::vector<int> order(p.size());

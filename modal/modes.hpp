@@ -10,8 +10,10 @@
 #include <Eigen/Sparse>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "modal/mode_motion.hpp"
 #include "src/model/types.hpp"
 
 namespace whirl {
@@ -25,11 +27,20 @@ struct Mode {
   /// memory: a root of the fit, not a structural mode (Campbell plots leave it out by default).
   bool first_order = false;
   std::string name;            ///< from the dominant coordinates
+  /// Evidence for the name (issue 45): the participation share of what the name stands for (a
+  /// coordinate, or a rotor's coordinate group), the next one and its share; `ambiguous` when that
+  /// runner-up carries at least 80 % of the leader's share (within 20 %), see setNameEvidence.
+  double name_share = 0;
+  std::string runner_up;
+  double runner_up_share = 0;
+  bool ambiguous = false;
   Eigen::VectorXcd shape;      ///< coordinate part of the eigenvector, dim n, largest entry = 1
   VecX participation;          ///< kinetic-energy share per coordinate |Re(φ_i* (Mφ)_i)| / Σ, sums to 1
   /// Backward error of the eigenpair, ‖P(λ)x‖ / ((Σ|λ|ʲ‖Aⱼ‖) ‖x‖), when an iterative solver
   /// (SLEPc, modal/sparse_eigen.hpp) computed it; empty for the direct LAPACK path.
   std::optional<double> residual;
+  /// Physical motion of the nodes (modal/mode_shapes.hpp); empty unless computed.
+  ModeMotion motion;
 };
 
 /// Modes sorted by frequency. names: one per coordinate (dim n).
@@ -46,6 +57,13 @@ std::vector<Mode> modesFromEigen(const EigenDecomposition& ed, int n, const MatX
 /// The same with a sparse weighting matrix (large finite-element models, modal/sparse_modes.hpp).
 std::vector<Mode> modesFromEigen(const EigenDecomposition& ed, int n, const Eigen::SparseMatrix<double>& M,
                                  const std::vector<std::string>& names, const std::vector<double>& residuals = {});
+
+/// Sets Mode::name_share, runner_up, runner_up_share and ambiguous from the shares of the candidates
+/// a name is chosen from (name, share), in any order: the largest leads, the second is the runner-up.
+void setNameEvidence(Mode& mode, std::vector<std::pair<std::string, double>> shares);
+
+/// A runner-up with at least this fraction of the leader's share makes a name ambiguous.
+constexpr double kAmbiguousRunnerUp = 0.8;
 
 /// Name from participations: the dominant coordinate, joined by " / " with the next ones that
 /// carry at least half of its share.

@@ -62,6 +62,9 @@ std::vector<Mode> participationModes(const EigenDecomposition& ed, const std::ve
       mode.damping_ratio = f.damping_ratio;
     }
     mode.name = nameFromParticipation(mode.participation, names);
+    std::vector<std::pair<std::string, double>> shares;
+    for (Eigen::Index i = 0; i < mode.participation.size(); ++i) shares.emplace_back(names.at(static_cast<std::size_t>(i)), mode.participation(i));
+    setNameEvidence(mode, std::move(shares));
     modes.push_back(std::move(mode));
   }
   std::stable_sort(modes.begin(), modes.end(), [](const Mode& a, const Mode& b) { return a.freq_hz < b.freq_hz; });

@@ -61,6 +61,7 @@ void nameRotorMode(Mode& mode, const std::vector<NamingCoordinate>& coords, cons
     mode.rigid_body = true;
     share = rigid_share;
   }
+  setNameEvidence(mode, {share.begin(), share.end()});
   const auto best = std::max_element(share.begin(), share.end(), [](auto& a, auto& b) { return a.second < b.second; });
   const std::string& group = best->first;
   int collective = -1, cosine = -1, sine = -1;

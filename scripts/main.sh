@@ -3,11 +3,13 @@
 # - `import whirl` for python3 (scripts/install-python.sh);
 # - reports/nrel5mw/: structural, 0–15 rpm, 36 azimuths per speed, multiblade coordinates;
 # - reports/nrel5mw_aero/: aeroelastic (AeroDyn BEMT, frozen wake) along the wind, 3–25 m/s, each
-#   point trimmed (rotor speed below rated, pitch above), with the steady performance table.
+#   point trimmed (rotor speed below rated, pitch above), with the steady performance table, the
+#   interactive report campbell.html (mode shapes, docs/user/mode-shapes.md) and HAWCStab2's .cmb/.amp/.opt.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/build.sh
 bash scripts/install-python.sh  # `import whirl` (docs/user/python.md)
 build/whirl campbell cases/nrel5mw/Main_Onshore.fst --rpm 0:0.5:15 --azimuths 36 --max-freq 3.2 --out reports/nrel5mw
 build/whirl steady cases/nrel5mw/Main_Aero.fst --wind 3:1:25 --out reports/nrel5mw_aero
-build/whirl campbell cases/nrel5mw/Main_Aero.fst --wind 3:1:25 --azimuths 36 --max-freq 3.2 --out reports/nrel5mw_aero
+build/whirl campbell cases/nrel5mw/Main_Aero.fst --wind 3:1:25 --azimuths 36 --max-freq 3.2 --out reports/nrel5mw_aero \
+  --html --format hawcstab2

@@ -26,6 +26,8 @@ struct CampbellOptions {
   double max_freq = 0;
   bool no_plot = false;
   bool first_order_lines = false;
+  std::vector<std::string> formats;
+  bool html = false;
 };
 
 void run(const CampbellOptions& opt) {
@@ -87,6 +89,16 @@ void run(const CampbellOptions& opt) {
   plot.max_freq_hz = opt.max_freq;
   plot.render = !opt.no_plot;
   plot.first_order_lines = opt.first_order_lines;
+  plot.formats = opt.formats;
+  plot.html = opt.html;
+  plot.summary = {{"case", opt.model.case_path},
+                  {"sweep", !opt.rpm_range.empty()    ? "--rpm " + opt.rpm_range
+                            : !opt.schedule.empty()   ? "--schedule " + opt.schedule
+                                                      : "--wind " + opt.wind_range},
+                  {"azimuths", std::to_string(opt.azimuths)},
+                  {"operating points", std::to_string(d.points.size())},
+                  {"lines", std::to_string(d.lines.size())}};
+  for (const auto& s : opt.model.sets) plot.summary.emplace_back("--set", s);
   noteHiddenFirstOrderLines(d, plot);
   const auto files = writeCampbell(d, dir, plot);
   std::printf("wrote");
@@ -122,6 +134,12 @@ void addCampbellCommand(CLI::App& app) {
   cmd->add_flag(
       "--first-order-lines", opt->first_order_lines,
       "also draw the lines of first-order states' roots (HydroDyn radiation), which are in the tables anyway");
+  cmd->add_option("--format", opt->formats,
+                  "also write these formats (repeatable or comma-separated): hawcstab2 (campbell.cmb, .amp, .opt)")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"hawcstab2"}));
+  cmd->add_flag("--html", opt->html,
+                "also write campbell.html: the interactive report (diagram, mode shapes, tables), one file, no network");
   cmd->callback([opt]() { runWithCaseSource(opt->model.case_path, [&] { run(*opt); }); });
 }
 

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "linearize/periodic.hpp"
+#include "modal/mode_shapes.hpp"
 #include "modal/rotor_modes.hpp"
 #include "modal/sparse_modes.hpp"
 #include "src/cli/commands.hpp"
@@ -53,7 +54,8 @@ void run(const ModesOptions& opt) {
     const PeriodicLinearization lin = linearizePeriodic(m, start, p);
     const std::vector<std::string> problems = checkSolvedPoints(opt.model, m, lin.points);
     header["validity"] = {{"valid", problems.empty()}, {"problems", problems}};
-    const RotorModes r = rotorModes(m, lin);
+    RotorModes r = rotorModes(m, lin);
+    addModeMotions(m, lin, r.num_blades, r.coordinates, r.modes);
     header["rotor_speed_rpm"] = lin.rotor_speed * 30 / 3.141592653589793;
     header["azimuths"] = opt.azimuths;
     header["multiblade"] = bladeCount(m) >= 3;
@@ -75,21 +77,25 @@ void run(const ModesOptions& opt) {
       throw InputError(
           "--solver sparse: a model with first-order states (HydroDyn radiation) is solved dense; "
           "use --solver dense or auto");
-    const RotorModes r = linearModelModes(m, lin, op.held);
+    RotorModes r = linearModelModes(m, lin, op.held);
+    addModeMotions(m, op, lin, r.modes);
     printModes(r.modes, r.coordinates, opt.format, header);
     return;
   }
   if (!useSparseSolver(opt.solver, n)) {
-    printModes(computeModes(lin.M, lin.C, lin.K, lin.dof_names), lin.dof_names, opt.format, header);
+    std::vector<Mode> modes = computeModes(lin.M, lin.C, lin.K, lin.dof_names);
+    addModeMotions(m, op, lin, modes);
+    printModes(modes, lin.dof_names, opt.format, header);
     return;
   }
   // SLEPc: the lowest --nmodes modes; under mpirun the solve is spread over the ranks.
   SparseEigenOptions so;
   so.distributed = true;
   SparseModesInfo info;
-  const std::vector<Mode> modes = computeModesSparse(lin.M.sparseView(), lin.C.sparseView(), lin.K.sparseView(),
+  std::vector<Mode> modes = computeModesSparse(lin.M.sparseView(), lin.C.sparseView(), lin.K.sparseView(),
                                                      lin.dof_names, std::min(opt.nmodes, n), so, &info);
   if (parallel::rank() != 0) return;
+  addModeMotions(m, op, lin, modes);
   std::fprintf(stderr, "modes: %s, target %.6g, %d iterations, %zu modes of %d coordinates\n", info.method.c_str(),
                info.target, info.iterations, modes.size(), n);
   header["solver"] = {{"method", info.method}, {"target", info.target}, {"iterations", info.iterations}};

@@ -18,4 +18,5 @@ void addSteadyCommand(CLI::App& app);
 void addBodeCommand(CLI::App& app);
 void addSimulateCommand(CLI::App& app);
 void addVerifyCommand(CLI::App& app);
+void addReportCommand(CLI::App& app);
 }  // namespace whirl::cli

@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "src/io/csv.hpp"
+#include "src/writers/mode_shape_tables.hpp"
 
 namespace whirl::cli {
 
@@ -28,6 +29,10 @@ void printModes(const std::vector<Mode>& modes, const std::vector<std::string>& 
       nlohmann::json mj;
       mj["index"] = k + 1;
       mj["name"] = modes[k].name;
+      mj["name_evidence"] = {{"share", modes[k].name_share},
+                             {"runner_up", modes[k].runner_up},
+                             {"runner_up_share", modes[k].runner_up_share},
+                             {"ambiguous", modes[k].ambiguous}};
       mj["freq_hz"] = modes[k].freq_hz;
       mj["damped_freq_hz"] = modes[k].damped_freq_hz;
       mj["damping_ratio"] = modes[k].damping_ratio;
@@ -36,6 +41,7 @@ void printModes(const std::vector<Mode>& modes, const std::vector<std::string>& 
       if (modes[k].residual) mj["residual"] = *modes[k].residual;
       mj["participation"] = nlohmann::json::object();
       for (size_t i = 0; i < coords.size(); ++i) mj["participation"][coords[i]] = modes[k].participation(i);
+      if (!modes[k].motion.empty()) mj["motion"] = modeMotionJson(modes[k].motion);
       j["modes"].push_back(mj);
     }
     std::cout << j.dump(2) << "\n";

@@ -147,6 +147,7 @@ void readBeamBody(const CaseNode& n, int index, CaseBuild& build) {
   } catch (const InputError& e) {
     rethrowAt(n.where(), e);
   }
+  b.nodes = beamNodes(p, shapes, opt.axial_shortening, L);
   if (const auto pts = n.find("points"))
     for (const CaseNode& pt : pts->items()) {
       const double x = pointStation(pt, L);

@@ -57,6 +57,9 @@ struct Body {
   BodyInertia inertia;
   ElasticProperties elastic;
   std::vector<BodyPoint> points;
+  /// Stations where mode shapes are shown (modal/mode_shapes.hpp): material points like `points`, not
+  /// used by the equations (the kinematics never evaluates them); a beam's run root to tip.
+  std::vector<BodyPoint> nodes;
 };
 
 /// A frozen coordinate an input drives: q_dof = Dof::value + gain · u (e.g. blade pitch).

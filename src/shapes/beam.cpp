@@ -275,4 +275,12 @@ BodyPoint beamPoint(const BeamProperties& p, const std::vector<ShapePtr>& shapes
   return pt;
 }
 
+std::vector<BodyPoint> beamNodes(const BeamProperties& p, const std::vector<ShapePtr>& shapes, bool axial_shortening,
+                                 double length, int count) {
+  std::vector<BodyPoint> nodes;
+  for (int k = 0; k < count; ++k)
+    nodes.push_back(beamPoint(p, shapes, axial_shortening, length * k / std::max(count - 1, 1), "node " + std::to_string(k + 1)));
+  return nodes;
+}
+
 }  // namespace whirl

@@ -67,6 +67,7 @@ RotorParts addBlades(Builder& b, const RotorHub& hub) {
     bl.elastic.K = applyStiffnessTuners(bb.elastic.K, beam.stiffness_tuner);
     bl.elastic.D = elastoDynModalDamping(bl.elastic.K, beam.generalized_mass.array() - tip_mass, beam.damping_ratio);
     bl.points.push_back(beamPoint(beam.props, beam.shapes, o.axial_shortening, L, "tip"));
+    bl.nodes = beamNodes(beam.props, beam.shapes, o.axial_shortening, L);
     const int body = b.addBody(std::move(bl));
     out.pitch.push_back(
         b.addDof(name + " pitch", body, DofKind::Joint, 0, false, ed.init.BlPitch[static_cast<std::size_t>(k)] * deg));

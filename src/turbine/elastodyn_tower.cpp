@@ -98,6 +98,7 @@ TowerParts addTower(Builder& b, const PlatformParts& platform) {
   BodyPoint top = beamPoint(p, shapes, o.axial_shortening, L, "top");
   placeTowerTopAtDofValues(top);
   t.points.push_back(std::move(top));
+  t.nodes = beamNodes(p, shapes, o.axial_shortening, L);
   TowerParts out;
   out.body = b.addBody(std::move(t));
   out.top = 0;

@@ -14,7 +14,12 @@
 /// - `campbell.gp`: a standalone Gnuplot script that reads campbell.dat next to itself and writes
 ///   campbell.png (pngcairo) and campbell.svg: frequency on top, damping ratio in % below, with the
 ///   nP excitation lines; styles, ranges and sizes are set at its top for restyling.
+/// - `mode_shapes_<point>.csv`: the node motion of every mode of point <point> (0-based), when the sweep
+///   computed it (src/writers/mode_shape_tables.hpp); the same motion is in campbell_modes.json.
+/// - with CampbellPlotOptions::formats: HAWCStab2's campbell.cmb/.amp/.opt.
+/// - with CampbellPlotOptions::html: campbell.html, the interactive report.
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "modal/campbell.hpp"
@@ -30,6 +35,13 @@ struct CampbellPlotOptions {
   /// Draw the lines of first-order states' roots (Mode::first_order at every point, e.g. HydroDyn
   /// radiation); by default they are in the tables only.
   bool first_order_lines = false;
+  /// Further formats written beside the tables: "hawcstab2" (campbell.cmb, .amp, .opt,
+  /// src/writers/hawcstab2_files.hpp).
+  std::vector<std::string> formats;
+  /// Also write campbell.html, the interactive report (src/writers/campbell_html.hpp), with this input
+  /// summary (what, value).
+  bool html = false;
+  std::vector<std::pair<std::string, std::string>> summary;
   bool render = true;                         ///< run Gnuplot on the script when it is on PATH
   std::string gnuplot = "gnuplot";            ///< the Gnuplot program (looked up on PATH)
 };

@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "src/writers/campbell_output.hpp"
+#include "src/writers/mode_shape_tables.hpp"
 #include "src/io/csv.hpp"
 #include "src/model/error.hpp"
 
@@ -20,6 +21,8 @@ void checkCampbell(const CampbellDiagram& d, const CampbellPlotOptions& opt) {
         throw InputError(where("", 0, key, "mode " + std::to_string(line.mode[p]) + " at point " + std::to_string(p) +
                                                " is not one of its " + std::to_string(d.points[p].modes.size()) + " modes"));
   }
+  for (const std::string& f : opt.formats)
+    if (f != "hawcstab2") throw InputError(where("", 0, "Campbell formats", "unknown format '" + f + "' (allowed: hawcstab2)"));
   for (int n : opt.harmonics)
     if (n < 1) throw InputError(where("", 0, "Campbell plot harmonics", std::to_string(n) + "P: must be 1 or more"));
   if (opt.versus_wind_speed)
@@ -70,6 +73,10 @@ std::string campbellModesJson(const CampbellDiagram& d) {
       jm["rigid_body"] = m.rigid_body;
       jm["first_order"] = m.first_order;
       jm["name"] = m.name;
+      jm["name_evidence"] = {{"share", number(m.name_share)},
+                             {"runner_up", m.runner_up},
+                             {"runner_up_share", number(m.runner_up_share)},
+                             {"ambiguous", m.ambiguous}};
       jm["line"] = nullptr;
       for (const auto& line : d.lines)
         if (line.mode[p] == static_cast<int>(k)) jm["line"] = line.name;
@@ -79,6 +86,7 @@ std::string campbellModesJson(const CampbellDiagram& d) {
         part[coord] = number(m.participation[c]);
       }
       jm["participation"] = std::move(part);
+      if (!m.motion.empty()) jm["motion"] = modeMotionJson(m.motion);
       jp["modes"].push_back(std::move(jm));
     }
     j["points"].push_back(std::move(jp));
