@@ -40,7 +40,7 @@ std::string fortranE(double x) {
   long digits = std::lround(mant * 1e6);
   if (digits >= 1000000) digits /= 10, ++e;
   if (digits < 100000) digits *= 10, --e;
-  char buf[32];
+  char buf[64];  // room for any int exponent: no -Wformat-truncation
   std::snprintf(buf, sizeof buf, "%s0.%06ldE%c%02d", x < 0 ? "-" : "", digits, e < 0 ? '-' : '+', std::abs(e));
   return right(buf, 14);
 }
