@@ -47,7 +47,7 @@ Mode mode(double f, double zeta, std::complex<double> tower_fa, std::complex<dou
   tower.body = "tower";
   tower.role = "tower";
   tower.nodes = {"node 1", "node 2"};
-  tower.x = Eigen::Vector2d(0, 80);
+  tower.x = VecX::LinSpaced(2, 0, 80);  // dynamic size: no fixed-size 512-bit loads (GCC 12 -Warray-bounds)
   tower.position = Mat3X::Zero(3, 2);
   tower.R << 0, 0, 1, 0, -1, 0, 1, 0, 0;  // ElastoDyn's tower: x up, y = −ground Y, z = ground X
   tower.u = Eigen::MatrixXcd::Zero(2, 6);
@@ -59,7 +59,7 @@ Mode mode(double f, double zeta, std::complex<double> tower_fa, std::complex<dou
   m.motion.backward = Eigen::MatrixXcd::Zero(2, 6);
   m.motion.backward(1, 1) = flap_bw;  // flap: blade body y
   m.motion.blade_nodes = {"node 1", "node 2"};
-  m.motion.blade_x = Eigen::Vector2d(0, 61.5);
+  m.motion.blade_x = VecX::LinSpaced(2, 0, 61.5);
   return m;
 }
 
