@@ -20,6 +20,7 @@
 //  14 fuzz_read_map         readMap, then mapMooringLines (the catenary lines it describes)
 //  15 fuzz_read_moordyn     readMoorDyn, then mapMooringLines
 //  16 fuzz_read_hydrodyn    readHydroDyn (its member tables too), then ballastOf (the filled members' fluid)
+//  17 fuzz_read_seastate    readSeaState (OpenFAST v4+ water properties)
 #include "fuzz/fuzz_support.hpp"
 #include "src/io/aero_deck14.hpp"
 #include "src/io/aerodyn_blade_input.hpp"
@@ -33,6 +34,7 @@
 #include "src/io/fst_input.hpp"
 #include "src/io/hydrodyn_input.hpp"
 #include "src/io/inflowwind_input.hpp"
+#include "src/io/seastate_input.hpp"
 #include "src/io/map_input.hpp"
 #include "src/io/moordyn_input.hpp"
 #include "src/io/servodyn_input.hpp"
@@ -93,8 +95,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
 #elif WHIRL_FUZZ_READER == 16
     const io::HydroDynInput hd = io::readHydroDyn(path);
     (void)whirl::elastodyn::ballastOf(hd.geometry, hd.WtrDens.value_or(1025), 9.80665, whirl::Vec3::Zero());
+#elif WHIRL_FUZZ_READER == 17
+    (void)io::readSeaState(path);
 #else
-#error "WHIRL_FUZZ_READER must be 1 to 16"
+#error "WHIRL_FUZZ_READER must be 1 to 17"
 #endif
   });
   return 0;

@@ -1,5 +1,7 @@
 #include "src/io/aero_deck.hpp"
 
+#include <algorithm>
+
 #include "src/io/aero_deck14.hpp"
 #include "src/io/aero_support.hpp"
 #include "src/io/airfoil14_input.hpp"
@@ -34,6 +36,31 @@ void checkAirfoilIds(const AeroDynInput& ad, const AeroDynBladeInput& blade) {
                              "is " + std::to_string(blade.BlAFID[r]) + ", beyond NumAFfiles = " + std::to_string(n) +
                                  " (" + ad.source.path().string() + ":" +
                                  std::to_string(ad.source.find("NumAFfiles")->line) + ")"));
+}
+
+}  // namespace
+
+namespace {
+
+/// AFTabMod = 3 interpolates an airfoil's tables on AeroDyn's input UserProp (AirfoilInfo.f90,
+/// AFI_ComputeAirfoilCoefs2D), which is 0 unless a controller drives it (AeroDyn_IO.f90: the input
+/// u%UserProp starts at 0, and ServoDyn sets it only with its flap control, CCmode/AfCmode, which whirl
+/// does not model). At UserProp = 0 the interpolation is the table written with UserProp = 0, or the only
+/// table: that one is kept. An airfoil with several tables and none at 0 is refused (interpolating two
+/// tables' polars on different angle grids is not modelled).
+void keepUserPropZero(const AeroDynInput& ad, std::vector<AirfoilInput>& airfoils) {
+  for (std::size_t i = 0; i < airfoils.size(); ++i) {
+    std::vector<AirfoilTable>& tabs = airfoils[i].tables;
+    if (tabs.size() <= 1) continue;
+    const auto zero = std::find_if(tabs.begin(), tabs.end(), [](const AirfoilTable& t) { return t.user_prop == 0.0; });
+    if (zero == tabs.end())
+      throw InputError(where(airfoils[i].path.string(), tabs.front().re_line, "UserProp",
+                             "AFTabMod = 3 (" + ad.source.path().filename().string() +
+                                 ") interpolates the tables at UserProp = 0, and none of this file's " +
+                                 std::to_string(tabs.size()) + " tables has UserProp = 0: interpolating between "
+                                 "tables is not modelled; add a table at UserProp = 0 or use AFTabMod = 1"));
+    tabs = {*zero};
+  }
 }
 
 }  // namespace
@@ -82,6 +109,7 @@ AeroDeckInput readAeroDeck(const FstInput& fst, OverrideSet* overrides) {
   }
   deck.airfoils = readAirfoils(ad, "AFNames", [&](const std::filesystem::path& p) { return readAirfoil(p, ad.InCol); });
   if (ad.AFTabMod == 2) deck.reynolds = aero::ReynoldsInterp::Log;
+  if (ad.AFTabMod == 3) keepUserPropZero(ad, deck.airfoils);
   return deck;
 }
 

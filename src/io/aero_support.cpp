@@ -40,8 +40,9 @@ std::vector<std::string> unsupportedOptions(const AeroDynInput& ad) {
   r.addIf(ad.NacelleDrag, "NacelleDrag", "nacelle drag", "NacelleDrag = False");
   r.addIf(ad.SectAvg, "SectAvg", "sector-averaged inflow", "SectAvg = False");
   r.addIf(ad.TFinAero, "TFinAero", "tail-fin aerodynamics", "TFinAero = False");
-  r.addIf(ad.AFTabMod != 1 && ad.AFTabMod != 2, "AFTabMod", "interpolation between airfoil tables on UserProp",
-          "AFTabMod = 1 (the first table of each airfoil file) or 2 (tables on the Reynolds number)");
+  r.addIf(ad.AFTabMod < 1 || ad.AFTabMod > 3, "AFTabMod", "not an airfoil-table interpolation method",
+          "AFTabMod = 1 (the first table of each airfoil file), 2 (tables on the Reynolds number) or 3 (tables on "
+          "UserProp, taken at UserProp = 0)");
   r.addIf(ad.skew == SkewModel::Coupled, "SkewMod", "the coupled skewed-wake model (dropped in OpenFAST v4)",
           "SkewMod = 0, 1 or 2");
   return r.take();

@@ -4,6 +4,7 @@
 
 #include "src/io/distributed_table.hpp"
 #include "src/io/elastodyn_common.hpp"
+#include "src/io/openfast_layouts.hpp"
 #include "src/io/openfast_overrides.hpp"
 #include "src/model/error.hpp"
 
@@ -12,6 +13,7 @@ namespace whirl::io {
 AeroDynBladeInput readAeroDynBlade(const std::filesystem::path& file, OverrideSet* overrides) {
   AeroDynBladeInput b;
   b.source = OpenFastFile::read(file);
+  b.source.checkLayout(aeroDynBladeLayout());
   if (overrides) overrides->applyTo(b.source);
   const OpenFastFile& f = b.source;
 

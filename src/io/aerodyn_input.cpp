@@ -5,6 +5,7 @@
 
 #include "src/io/elastodyn_common.hpp"
 #include "src/io/fst_input.hpp"
+#include "src/io/openfast_layouts.hpp"
 #include "src/io/openfast_lines.hpp"
 #include "src/io/openfast_overrides.hpp"
 #include "src/model/error.hpp"
@@ -80,7 +81,8 @@ void readSkew(const OpenFastFile& f, AeroDynInput& a) {
   if (a.skew_key == "Skew_Mod") {
     if (v < -1 || v > 1) throw InputError(f.where("Skew_Mod", "must be -1, 0 or 1, is " + std::to_string(v)));
     a.skew = v == -1 ? SkewModel::Orthogonal : v == 0 ? SkewModel::None : SkewModel::Active;
-    a.SkewRedistr_Mod = f.findInt("SkewRedistr_Mod").value_or(1);
+    // `default` is 1 (AeroDyn_IO.f90, ParsePrimaryFileInfo: ParseVarWDefault "SkewRedistr_Mod", 1).
+    a.SkewRedistr_Mod = f.findIntOr("SkewRedistr_Mod", 1).value_or(1);
   } else {
     if (v < 0 || v > 3) throw InputError(f.where("SkewMod", "must be 0, 1, 2 or 3, is " + std::to_string(v)));
     const SkewModel legacy[] = {SkewModel::Orthogonal, SkewModel::None, SkewModel::Active, SkewModel::Coupled};
@@ -167,6 +169,7 @@ AeroDynInput readAeroDyn(const std::filesystem::path& file, const AeroDynEnviron
   const OpenFastLines lines = OpenFastLines::read(file);
   AeroDynInput a;
   a.source = OpenFastFile::parse(lines.text(), file);
+  a.source.checkLayout(aeroDynLayout());
   if (overrides) overrides->applyTo(a.source);
   const OpenFastFile& f = a.source;
 

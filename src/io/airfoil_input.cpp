@@ -6,6 +6,7 @@
 
 #include "src/io/elastodyn_common.hpp"
 #include "src/io/openfast_input.hpp"
+#include "src/io/openfast_layouts.hpp"
 #include "src/io/openfast_lines.hpp"
 #include "src/model/error.hpp"
 
@@ -24,6 +25,12 @@ std::string keepLines(const OpenFastLines& lines, int from, int to, bool title) 
     out += '\n';
   }
   return out;
+}
+
+/// The keys of one table (Re … NumAlf), none repeated within it (AirfoilInfo.f90, ParseAFFile).
+const OpenFastLayout& airfoilTableLayout() {
+  static const OpenFastLayout l{"AeroDyn airfoil", airfoilLayout().repeatable, {}};
+  return l;
 }
 
 /// Entry `key` (case-insensitive) after line `after`, first in file order; nullptr when none.
@@ -112,6 +119,7 @@ void readRows(const OpenFastLines& lines, const OpenFastFile& t, int num_alf, in
 
 AirfoilTable readTable(const OpenFastLines& lines, int re_line, int num_alf_line, const AirfoilColumns& col) {
   const OpenFastFile t = OpenFastFile::parse(keepLines(lines, re_line, num_alf_line, false), lines.path());
+  t.checkLayout(airfoilTableLayout());
   AirfoilTable tab;
   tab.re_line = re_line;
   tab.num_alf_line = num_alf_line;
@@ -143,6 +151,7 @@ AirfoilInput readAirfoil(const std::filesystem::path& file, const AirfoilColumns
     throw InputError(whirl::where(file.string(), 1, "",
                                   "the first line of an airfoil file must be a comment (starting with '!')"));
   const OpenFastFile f = OpenFastFile::parse(keepLines(lines, 1, lines.count(), true), file);
+  f.checkLayout(airfoilLayout());
 
   AirfoilInput a;
   a.path = file;

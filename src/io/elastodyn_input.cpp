@@ -65,6 +65,9 @@ ElastoDynInitialConditions readInitialConditions(const OpenFastFile& f) {
   c.TeetDefl = f.getDouble("TeetDefl");
   c.Azimuth = f.getDouble("Azimuth");
   c.RotSpeed = f.getDouble("RotSpeed");
+  // ElastoDyn_IO.f90, ValidatePrimaryData: "RotSpeed must not be negative" (a rotor turning the other
+  // way is MirrorRotor's business in OpenFAST v5).
+  requireNonnegative(f, "RotSpeed", c.RotSpeed);
   c.NacYaw = f.getDouble("NacYaw");
   c.TTDspFA = f.getDouble("TTDspFA");
   c.TTDspSS = f.getDouble("TTDspSS");
@@ -89,6 +92,11 @@ ElastoDynConfiguration readConfiguration(const OpenFastFile& f) {
     throw InputError(
         f.where("TipRad", "must be larger than HubRad (" + numberText(c.TipRad) + " <= " + numberText(c.HubRad) + ")"));
   c.PreCone = getIndexed<3>(f, "PreCone");
+  // ElastoDyn_IO.f90, ValidatePrimaryData: PreCone(K) "must be in the range (-pi/2, pi/2)".
+  for (int k = 1; k <= c.NumBl; ++k)
+    if (!(std::abs(c.PreCone[k - 1]) < 90.0))
+      throw InputError(f.where(indexedKey("PreCone", k),
+                               "must be in (-90, 90) deg (is " + numberText(c.PreCone[k - 1]) + ")"));
   c.HubCM = f.getDouble("HubCM");
   c.UndSling = f.getDouble("UndSling");
   c.Delta3 = f.getDouble("Delta3");
@@ -96,6 +104,9 @@ ElastoDynConfiguration readConfiguration(const OpenFastFile& f) {
   c.OverHang = f.getDouble("OverHang");
   c.ShftGagL = f.getDouble("ShftGagL");
   c.ShftTilt = f.getDouble("ShftTilt");
+  // ElastoDyn_IO.f90, ValidatePrimaryData: "ABS( ShftTilt ) > PiBy2" is an error.
+  if (!(std::abs(c.ShftTilt) <= 90.0))
+    throw InputError(f.where("ShftTilt", "must be in [-90, 90] deg (is " + numberText(c.ShftTilt) + ")"));
   c.NacCMxn = f.getDouble("NacCMxn");
   c.NacCMyn = f.getDouble("NacCMyn");
   c.NacCMzn = f.getDouble("NacCMzn");

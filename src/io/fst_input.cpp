@@ -1,6 +1,7 @@
 #include "src/io/fst_input.hpp"
 
 #include "src/io/elastodyn_common.hpp"
+#include "src/io/openfast_layouts.hpp"
 #include "src/io/openfast_overrides.hpp"
 #include "src/model/error.hpp"
 
@@ -22,13 +23,6 @@ std::optional<std::filesystem::path> pathOfFirst(const OpenFastFile& f, std::ini
   return std::nullopt;
 }
 
-/// Duplicates only (the .fst has many keys across versions, none of which whirl reads by position):
-/// OpenFAST v5 repeats the per-rotor lines for a second rotor.
-const OpenFastLayout& layout() {
-  static const OpenFastLayout l{".fst", {}, {"EDFile", "BDBldFile(k)", "ServoFile", "SrvDFile"}};
-  return l;
-}
-
 /// A FAST v7 (or v6) primary file has the whole structural model inline and no EDFile; its keys
 /// ADAMSPrep/AnalMode and the turbine's TwrFile left the .fst in FAST v8, which moved the structure into
 /// ElastoDyn [JonkmanJonkman2016]. Say so instead of "EDFile: key not found".
@@ -48,7 +42,8 @@ void requireNotFast7(const OpenFastFile& f) {
 FstInput readFst(const std::filesystem::path& file, OverrideSet* overrides) {
   FstInput in;
   in.source = OpenFastFile::read(file);
-  in.source.checkLayout(layout());
+  requireNotFast7(in.source);  // before the layout, whose "not a key" would hide the reason
+  in.source.checkLayout(fstLayout());
   if (overrides) overrides->applyTo(in.source);
   const OpenFastFile& f = in.source;
 
@@ -58,6 +53,7 @@ FstInput readFst(const std::filesystem::path& file, OverrideSet* overrides) {
   in.CompInflow = switchOr(f, "CompInflow", 0);
   in.CompAero = switchOr(f, "CompAero", 0);
   in.CompServo = switchOr(f, "CompServo", 0);
+  in.CompSeaSt = switchOr(f, "CompSeaSt", 0);
   in.CompHydro = switchOr(f, "CompHydro", 0);
   in.CompSub = switchOr(f, "CompSub", 0);
   in.CompMooring = switchOr(f, "CompMooring", 0);
@@ -70,11 +66,11 @@ FstInput readFst(const std::filesystem::path& file, OverrideSet* overrides) {
   in.Pvap = f.findDouble("Pvap");
   if (in.AirDens) requirePositive(f, "AirDens", *in.AirDens);
   if (in.KinVisc) requirePositive(f, "KinVisc", *in.KinVisc);
-  requireNotFast7(f);
   in.EDFile = f.getPath("EDFile");
   in.ServoFile = pathOfFirst(f, {"ServoFile", "SrvDFile"});
   in.AeroFile = pathOfFirst(f, {"AeroFile", "ADFile"});
   in.InflowFile = pathOfFirst(f, {"InflowFile"});
+  in.SeaStFile = pathOfFirst(f, {"SeaStFile"});
   in.HydroFile = pathOfFirst(f, {"HydroFile"});
   in.MooringFile = pathOfFirst(f, {"MooringFile"});
   in.WtrDens = f.findDouble("WtrDens");

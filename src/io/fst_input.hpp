@@ -22,6 +22,7 @@ struct FstInput {
   int CompInflow = 0;   ///< inflow {0 still air, 1 InflowWind, 2 external}
   int CompAero = 0;     ///< aerodynamics {0 none, 1 AeroDyn14 / AeroDisk (v4+), 2 AeroDyn, 3 ExtLoads}
   int CompServo = 0;    ///< controls {0 none, 1 ServoDyn}
+  int CompSeaSt = 0;   ///< sea state {0 none, 1 SeaState}; OpenFAST v4+ (HydroDyn needs it there)
   int CompHydro = 0;    ///< hydrodynamics {0 none, 1 HydroDyn}
   int CompSub = 0;      ///< substructure {0 none, 1 SubDyn, 2 external platform}
   int CompMooring = 0;  ///< mooring {0 none, 1 MAP++, 2 FEAMooring, 3 MoorDyn, 4 OrcaFlex}
@@ -39,6 +40,7 @@ struct FstInput {
   std::optional<std::filesystem::path> ServoFile; ///< ServoDyn file (key `SrvDFile` in FAST 8.0x)
   std::optional<std::filesystem::path> AeroFile;  ///< AeroDyn file (key `ADFile` in FAST 8.0x); read by readAeroDeck
   std::optional<std::filesystem::path> InflowFile;  ///< InflowWind file (key `InflowFile` in every layout); read by readAeroDeck
+  std::optional<std::filesystem::path> SeaStFile;   ///< SeaState file (OpenFAST v4+); read with the HydroDyn file when CompSeaSt = 1
   std::optional<std::filesystem::path> HydroFile;   ///< HydroDyn file; read with platform DOFs and CompHydro = 1
   std::optional<std::filesystem::path> MooringFile; ///< mooring file; read (MAP++) with platform DOFs and CompMooring = 1
   std::optional<double> WtrDens;  ///< water density (kg/m³), OpenFAST v3.5+ (before, in HydroDyn)

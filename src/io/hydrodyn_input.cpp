@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "src/io/elastodyn_common.hpp"
+#include "src/io/openfast_layouts.hpp"
 #include "src/io/openfast_lines.hpp"
 #include "src/io/openfast_overrides.hpp"
 #include "src/io/refusals.hpp"
@@ -44,17 +45,47 @@ Mat6 matrixAt(const OpenFastFile& f, const OpenFastLines& lines, const char* key
   return M;
 }
 
+// AddF0: six numbers on the key's line (HydroDyn v2, FAST v8) or a column, one number per line from the
+// key's line down (OpenFAST v3+, HydroDyn_Input.f90, HydroDyn_ParseInput: one ParseAry of NBody numbers
+// per row).
+Vec6 preload(const OpenFastFile& f, const OpenFastLines& lines) {
+  const OpenFastEntry* e = f.find("AddF0");
+  if (!e) throw InputError(f.where("AddF0", "key not found in this file"));
+  const std::vector<double> first = f.getDoubles("AddF0");
+  Vec6 f0;
+  if (first.size() == 6) {
+    for (int k = 0; k < 6; ++k) f0(k) = first[static_cast<std::size_t>(k)];
+    return f0;
+  }
+  if (first.size() != 1)
+    throw InputError(f.where("AddF0", "expected 6 numbers on the line, or one per line on 6 lines (is " +
+                                          std::to_string(first.size()) + " numbers)"));
+  f0(0) = first.front();
+  for (int r = 1; r < 6; ++r) {
+    const int line = e->line + r;
+    const std::optional<std::vector<double>> row = leadingNumbers(lines.line(line), 1);
+    if (!row)
+      throw InputError(f.where("AddF0", "row " + std::to_string(r + 1) + " of the 6 preloads (line " +
+                                            std::to_string(line) + ") is not a number"));
+    f0(r) = row->front();
+  }
+  return f0;
+}
+
 }  // namespace
 
 HydroDynInput readHydroDyn(const std::filesystem::path& file, OverrideSet* overrides) {
   HydroDynInput h;
   h.source = OpenFastFile::read(file);
+  h.source.checkLayout(hydroDynLayout());
   if (overrides) overrides->applyTo(h.source);
   const OpenFastFile& f = h.source;
   const OpenFastLines lines = OpenFastLines::read(file);
   h.geometry = readHydroDynMembers(f, lines);
-  h.WtrDens = f.findDouble("WtrDens");
-  h.WtrDpth = f.findDouble("WtrDpth");
+  // `default` is the .fst's value (HydroDyn_Input.f90 of OpenFAST v3, HydroDyn_ParseInput:
+  // ParseVarWDefault 'WtrDens' with defWtrDens, the glue code's): nullopt here, the .fst's value later.
+  h.WtrDens = f.isDefault("WtrDens") ? std::nullopt : f.findDouble("WtrDens");
+  h.WtrDpth = f.isDefault("WtrDpth") ? std::nullopt : f.findDouble("WtrDpth");
   if (h.WtrDens) requirePositive(f, "WtrDens", *h.WtrDens);
   if (h.WtrDpth) requirePositive(f, "WtrDpth", *h.WtrDpth);
   h.PotMod = f.getInt("PotMod");
@@ -99,9 +130,7 @@ HydroDynInput readHydroDyn(const std::filesystem::path& file, OverrideSet* overr
     }
   throwIfAny(r.take());
 
-  const std::vector<double> f0 = f.getDoubles("AddF0");
-  if (f0.size() != 6) throw InputError(f.where("AddF0", "expected 6 numbers"));
-  for (int k = 0; k < 6; ++k) h.AddF0(k) = f0[k];
+  h.AddF0 = preload(f, lines);
   h.AddCLin = matrixAt(f, lines, "AddCLin");
   h.AddBLin = matrixAt(f, lines, "AddBLin");
   h.AddBQuad = matrixAt(f, lines, "AddBQuad");

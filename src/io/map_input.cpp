@@ -4,6 +4,7 @@
 #include <fstream>
 #include <numbers>
 #include <sstream>
+#include <unordered_map>
 
 #include "src/io/input_file.hpp"
 #include "src/io/elastodyn_common.hpp"
@@ -95,7 +96,23 @@ MapInput readMap(const std::filesystem::path& file) {
     }
   }
   if (m.lines.empty()) throw InputError(whirl::where(m.path.string(), 0, "Line", "no mooring line"));
+  requireUniqueMooringIds(m);
   return m;
+}
+
+void requireUniqueMooringIds(const MapInput& m) {
+  const std::string file = m.path.string();
+  // One pass per kind with a map from id to its first line (the files may be long: no pairwise loop).
+  auto check = [&](const char* key, const std::string& id, int line, std::unordered_map<std::string, int>& seen) {
+    const auto [it, inserted] = seen.emplace(id, line);
+    if (!inserted)
+      throw InputError(whirl::where(file, line, key, "'" + id.substr(0, 40) + "' given twice (first on line " +
+                                                         std::to_string(it->second) + "): ids must be unique"));
+  };
+  std::unordered_map<std::string, int> types, nodes, lines;
+  for (const MapLineType& t : m.types) check("LineType", toLower(t.name), t.line, types);
+  for (const MapNode& n : m.nodes) check("Node", std::to_string(n.id), n.line, nodes);
+  for (const MapLine& l : m.lines) check("Line", std::to_string(l.id), l.line, lines);
 }
 
 std::vector<MooringLine> mapMooringLines(const MapInput& map, int body, double depth, double rho, double g) {

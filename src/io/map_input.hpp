@@ -46,6 +46,12 @@ struct MapInput {
 /// Reads a MAP++ input file. InputError "file:line: key: reason" on anything malformed or refused.
 MapInput readMap(const std::filesystem::path& file);
 
+/// Refuses two line types with one name (case-insensitive), two nodes (points) with one id and two lines
+/// with one id, naming the second row and the line of the first: MAP++ and MoorDyn look nodes up by id
+/// (MAP++ by row order, which whirl, looking up ids, would not follow), so either would silently read
+/// another mooring than OpenFAST does. Used by readMap and readMoorDyn.
+void requireUniqueMooringIds(const MapInput& m);
+
 /// The mooring lines of `map` on body `body` (fairleads in its frame, whose origin is the platform
 /// reference point), for water depth `depth` [m], density `rho` [kg/m³] and gravity `g` [m/s²]: the
 /// weight in water w = (MassDenInAir − ρ π Diam²/4) g. InputError when a line floats (w ≤ 0), its

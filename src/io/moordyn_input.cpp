@@ -1,9 +1,11 @@
 #include "src/io/moordyn_input.hpp"
 
+#include <cmath>
 #include <fstream>
 
 #include "src/io/input_file.hpp"
 #include "src/io/mooring_table.hpp"
+#include "src/model/limits.hpp"
 
 namespace whirl::io {
 namespace {
@@ -67,7 +69,15 @@ MapInput readMoorDyn(const std::filesystem::path& file) {
       continue;
     }
     if (r.line <= 2 && sec == Section::None) continue;  // title rows
-    if (header > 0 && countRow(t)) continue;
+    if (header > 0 && countRow(t)) {
+      // MoorDyn v1 reads exactly this many rows (MoorDyn_IO.f90); whirl reads the rows there are and
+      // bounds the count, which MoorDyn would allocate.
+      const double n = r.number(t[0], t[1]);
+      if (n != std::floor(n) || n < 0 || n > limits::kMaxMooringCount)
+        throw r.fail(t[1], "must be in [0, " + std::to_string(limits::kMaxMooringCount) + "] (is " + t[0].substr(0, 40) +
+                               "; src/model/limits.hpp)");
+      continue;
+    }
     if (header > 0) {
       --header;
       continue;
@@ -114,6 +124,7 @@ MapInput readMoorDyn(const std::filesystem::path& file) {
       if (n.id == l.fairlead && n.fixed) std::swap(l.anchor, l.fairlead);
   }
   if (m.lines.empty()) throw InputError(whirl::where(m.path.string(), 0, "Line", "no mooring line"));
+  requireUniqueMooringIds(m);
   return m;
 }
 

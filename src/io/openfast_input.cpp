@@ -65,11 +65,11 @@ std::optional<bool> parseBool(std::string_view t) {
   return std::nullopt;
 }
 
-bool isDefault(std::string_view t) { return toLower(unquote(t)) == "default"; }
+bool isDefaultToken(std::string_view t) { return toLower(unquote(t)) == "default"; }
 
 /// A token that can be (part of) a value rather than a key.
 bool isValueToken(std::string_view t) {
-  return isQuoted(t) || parseFortranDouble(t).has_value() || parseBool(t).has_value() || isDefault(t);
+  return isQuoted(t) || parseFortranDouble(t).has_value() || parseBool(t).has_value() || isDefaultToken(t);
 }
 
 /// A token that looks like a key or a column name: starts with a letter or '_'.
@@ -98,6 +98,22 @@ std::vector<std::string> splitUnits(std::string_view line) {
     i = end;
   }
   return out;
+}
+
+/// A comment line of OpenFAST's FileInfo-based readers (NWTC_IO.f90, ProcessComFile: CommChars '!#%').
+bool isCommentStart(std::string_view trimmed) {
+  return !trimmed.empty() && (trimmed.front() == '!' || trimmed.front() == '#' || trimmed.front() == '%');
+}
+
+/// True when the next non-blank line after line `i` is a unit row "(-) (m) …": line i is then a table's
+/// column-name row, even when a bracketed note after the names kept it from parsing as a table.
+bool unitRowFollows(const std::vector<std::string_view>& lines, std::size_t i) {
+  for (std::size_t j = i + 1; j < lines.size(); ++j) {
+    const std::string_view t = trimBlanks(lines[j]);
+    if (t.empty()) continue;
+    return t.front() == '(';
+  }
+  return false;
 }
 
 std::vector<std::string_view> splitLines(std::string_view text) {
@@ -225,7 +241,10 @@ OpenFastFile OpenFastFile::parse(std::string_view text, const std::filesystem::p
     e.raw = std::string(lines[i].substr(toks[0].begin, toks[k - 1].end - toks[0].begin));
     for (std::size_t j = 0; j < k; ++j) e.tokens.push_back(toks[j].text);
     e.line = lineno;
-    f.index_.emplace(canonicalKey(e.key), f.entries_.size());  // keeps the first of duplicated keys
+    // "END of output channels …" closes a channel list that has no OutList line (HydroDyn's OUTPUT
+    // CHANNELS section): not a value line.
+    e.informal = isCommentStart(t) || unitRowFollows(lines, i) || toLower(toks[0].text) == "end";
+    if (!e.informal) f.index_.emplace(canonicalKey(e.key), f.entries_.size());  // keeps the first of duplicated keys
     f.entries_.push_back(std::move(e));
   }
   return f;
@@ -274,7 +293,7 @@ double OpenFastFile::getDouble(std::string_view key) const {
 
 std::optional<double> OpenFastFile::getDoubleOrDefault(std::string_view key) const {
   const std::string tok = singleToken(require(key), "number or \"default\"");
-  if (isDefault(tok)) return std::nullopt;
+  if (isDefaultToken(tok)) return std::nullopt;
   return finiteOrThrow(*this, key, tok);
 }
 
@@ -327,6 +346,21 @@ std::vector<double> OpenFastFile::getDoubles(std::string_view key) const {
   return out;
 }
 
+bool OpenFastFile::isDefault(std::string_view key) const {
+  const OpenFastEntry* e = find(key);
+  return e && e->tokens.size() == 1 && isDefaultToken(e->tokens.front());
+}
+
+std::optional<double> OpenFastFile::findDoubleOr(std::string_view key, double fallback) const {
+  if (isDefault(key)) return fallback;
+  return findDouble(key);
+}
+
+std::optional<int> OpenFastFile::findIntOr(std::string_view key, int fallback) const {
+  if (isDefault(key)) return fallback;
+  return findInt(key);
+}
+
 std::optional<double> OpenFastFile::findDouble(std::string_view key) const {
   return has(key) ? std::optional<double>(getDouble(key)) : std::nullopt;
 }
@@ -359,17 +393,21 @@ void OpenFastFile::checkLayout(const OpenFastLayout& layout) const {
   std::vector<bool> present(layout.keys.size(), false);
   if (!layout.keys.empty())
     for (std::size_t i = 0; i < entries_.size(); ++i)
-      if ((at[i] = position(layout.keys, entries_[i].key)) != npos) present[at[i]] = true;
+      if (!entries_[i].informal && (at[i] = position(layout.keys, entries_[i].key)) != npos) present[at[i]] = true;
   std::unordered_map<std::string, int> first_line;
   std::size_t previous = npos;  // layout position of the last key read
   for (std::size_t i = 0; i < entries_.size(); ++i) {
     const OpenFastEntry& e = entries_[i];
+    if (e.informal) continue;
+    // Lines 1 and 2 are the header and title OpenFAST skips whatever they hold (a line 1 that is not a
+    // separator makes line 2 parse as a value line: "IEA 15 MW offshore …").
+    if (at[i] == npos && e.line <= 2) continue;
     if (at[i] == npos) {
       // Name what OpenFAST reads here: the layout keys missing from the file between the known keys
       // before and after this line (several when file versions differ at this place).
       std::size_t next = layout.keys.size();
       for (std::size_t j = i + 1; j < entries_.size() && next == layout.keys.size(); ++j)
-        if (at[j] != npos) next = at[j];
+        if (!entries_[j].informal && at[j] != npos) next = at[j];
       std::string expected;
       for (std::size_t k = previous == npos ? 0 : previous + 1; k < next; ++k)
         if (!present[k]) expected += (expected.empty() ? "" : " or ") + std::string(layout.keys[k]);

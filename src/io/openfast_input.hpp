@@ -34,6 +34,10 @@ struct OpenFastEntry {
   std::vector<std::string> tokens;  ///< value split into tokens (quotes kept on quoted tokens)
   int line = 0;                     ///< 1-based line number in the file
   bool overridden = false;          ///< true when the value came from an override (`--set KEY=VALUE`)
+  /// A comment line (first character `!`, `#` or `%`: NWTC_IO.f90, ProcessComFile, skips them), the
+  /// column-name row of a table whose unit row follows, or an `END` line: kept for the readers that
+  /// scan entries, but neither found by key nor checked by checkLayout.
+  bool informal = false;
 };
 
 /// A table: header row of column names, unit row, rows of numbers.
@@ -86,6 +90,9 @@ class OpenFastFile {
   double getDouble(std::string_view key) const;
   /// nullopt when the value is `default` (any case, quoted or not).
   std::optional<double> getDoubleOrDefault(std::string_view key) const;
+  /// True when `key` is present and its value is the keyword `default` (any case, quoted or not), which
+  /// OpenFAST's ParseVarWDefault (NWTC_IO.f90) replaces by the module's default value.
+  bool isDefault(std::string_view key) const;
   int getInt(std::string_view key) const;
   /// True/False, T/F, .true./.false. in any case.
   bool getBool(std::string_view key) const;
@@ -102,11 +109,16 @@ class OpenFastFile {
   std::optional<double> findDouble(std::string_view key) const;
   std::optional<int> findInt(std::string_view key) const;
   std::optional<bool> findBool(std::string_view key) const;
+  /// findDouble, and `fallback` when the value is `default` (OpenFAST's default, cited by the caller).
+  std::optional<double> findDoubleOr(std::string_view key, double fallback) const;
+  /// findInt, and `fallback` when the value is `default`.
+  std::optional<int> findIntOr(std::string_view key, int fallback) const;
 
   /// Refuses a key given twice ("file:line: key: given twice (first on line N) …") unless the layout
   /// lists it as repeatable (`BldFile1` and `BldFile(1)` are the same key), and a key the layout does
   /// not have ("file:line: key: not a key of a … file (expected K here)", K being the layout keys the
-  /// file lacks between the known keys around that line).
+  /// file lacks between the known keys around that line). Informal entries (comments, table column
+  /// rows) are skipped.
   void checkLayout(const OpenFastLayout& layout) const;
 
   /// The first table that has a column `column` (case-insensitive), or nullptr.

@@ -6,6 +6,17 @@
 
 namespace whirl::io {
 
+namespace {
+
+/// HydroDyn and, in OpenFAST v4+ decks, the SeaState file that holds the water properties and waves.
+void readHydro(OpenFastTurbine& t, OverrideSet* overrides) {
+  if (t.fst.CompHydro != 1) return;
+  if (t.fst.CompSeaSt == 1) t.seastate = readSeaState(t.fst.source.getExistingPath("SeaStFile"), overrides);
+  t.hydrodyn = readHydroDyn(t.fst.source.getExistingPath("HydroFile"), overrides);
+}
+
+}  // namespace
+
 OpenFastTurbine readOpenFastTurbine(const std::filesystem::path& fst, OverrideSet* overrides) {
   OpenFastTurbine t;
   t.fst = readFst(fst, overrides);
@@ -13,9 +24,9 @@ OpenFastTurbine readOpenFastTurbine(const std::filesystem::path& fst, OverrideSe
   if (t.fst.CompSub == 1) {
     // A mooring on a SubDyn substructure is refused by requireSupported, unread.
     t.subdyn = readSubDyn(t.fst.source.getExistingPath("SubFile"), overrides);
-    if (t.fst.CompHydro == 1) t.hydrodyn = readHydroDyn(t.fst.source.getExistingPath("HydroFile"), overrides);
+    readHydro(t, overrides);
   } else if (hasPlatformDofs(t.elastodyn)) {
-    if (t.fst.CompHydro == 1) t.hydrodyn = readHydroDyn(t.fst.source.getExistingPath("HydroFile"), overrides);
+    readHydro(t, overrides);
     if (t.fst.CompMooring == 1) t.mooring = readMap(t.fst.source.getExistingPath("MooringFile"));
     if (t.fst.CompMooring == 3) t.mooring = readMoorDyn(t.fst.source.getExistingPath("MooringFile"));
   }

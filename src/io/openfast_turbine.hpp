@@ -10,6 +10,7 @@
 #include "src/io/fst_input.hpp"
 #include "src/io/hydrodyn_input.hpp"
 #include "src/io/map_input.hpp"
+#include "src/io/seastate_input.hpp"
 #include "src/io/servodyn_input.hpp"
 #include "src/io/subdyn_input.hpp"
 
@@ -22,6 +23,7 @@ struct OpenFastTurbine {
   FstInput fst;
   ElastoDynInput elastodyn;
   std::optional<HydroDynInput> hydrodyn;  ///< with CompHydro = 1 and a platform DOF on or SubDyn
+  std::optional<SeaStateInput> seastate;  ///< with the HydroDyn file when CompSeaSt = 1 (OpenFAST v4+)
   std::optional<MapInput> mooring;        ///< with a platform DOF on: MAP++ (CompMooring = 1) or MoorDyn (3)
   std::optional<SubDynInput> subdyn;      ///< with CompSub = 1 (then a mooring is not read)
 };

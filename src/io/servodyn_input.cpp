@@ -1,6 +1,7 @@
 #include "src/io/servodyn_input.hpp"
 
 #include "src/io/elastodyn_common.hpp"
+#include "src/io/openfast_layouts.hpp"
 #include "src/io/openfast_overrides.hpp"
 #include "src/model/error.hpp"
 
@@ -19,7 +20,7 @@ InputError refusal(const OpenFastFile& f, const char* key, const std::string& wh
 ServoDynInput readServoDyn(const std::filesystem::path& file, OverrideSet* overrides) {
   ServoDynInput s;
   s.source = OpenFastFile::read(file);
-  s.source.checkLayout(OpenFastLayout{"ServoDyn", {}, {}});  // duplicates only: many keys across versions
+  s.source.checkLayout(servoDynLayout());
   if (overrides) overrides->applyTo(s.source);
   const OpenFastFile& f = s.source;
   s.YCMode = f.getInt("YCMode");

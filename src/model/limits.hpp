@@ -38,6 +38,7 @@
 /// | kMaxSimulationValues | 50000000 | `simulate` recorded values, instants × (2 coordinates + inputs + outputs) |
 /// | kMaxSimulationRevolutions | 100000 | `simulate` rotor revolutions, tmax × start rotor speed / 2π |
 /// | kMaxSimulationSteps | 5000000 | `simulate` integrator steps in all (IDA) |
+/// | kMaxMooringCount | 10000 | MoorDyn v1 counts `NTypes`, `NConnects`, `NLines` |
 // clang-format on
 namespace whirl::limits {
 
@@ -101,5 +102,7 @@ inline constexpr double kMaxSimulationValues = 5e7;
 // motion the start speed does not announce (a spin-up, a diverging rotor).
 inline constexpr double kMaxSimulationRevolutions = 1e5;
 inline constexpr long kMaxSimulationSteps = 5000000;
+/// MoorDyn v1's section counts: far above any mooring (the reference floaters have 3–9 lines).
+inline constexpr int kMaxMooringCount = 10000;
 
 }  // namespace whirl::limits

@@ -19,10 +19,16 @@ namespace {
 double gravityOf(const Builder& b) { return -b.model().gravity(2); }
 
 // Water density and depth: HydroDyn (v2, v3) or the .fst (v3.5+).
-double water(const io::OpenFastTurbine& t, std::optional<double> hd, std::optional<double> fst, const char* key) {
+// A water property from HydroDyn (up to OpenFAST v3.5), SeaState (v4+) or the .fst, the first that
+// gives it; `default` in HydroDyn or SeaState means the .fst's (their ParseVarWDefault with the glue
+// code's value: HydroDyn_Input.f90 v3.5, SeaState_Input.f90).
+double water(const io::OpenFastTurbine& t, std::optional<double> hd, std::optional<double> ss,
+             std::optional<double> fst, const char* key) {
   if (hd) return *hd;
+  if (ss) return *ss;
   if (fst) return *fst;
-  throw InputError(t.fst.source.where(key, "not in the .fst nor in the HydroDyn file: the platform needs it"));
+  throw InputError(
+      t.fst.source.where(key, "not in the .fst nor in the HydroDyn or SeaState file: the platform needs it"));
 }
 
 // HydroDyn's state-space radiation memory (`RdtnMod = 2`): the states of each DOF's block named after it.
@@ -123,11 +129,13 @@ void checkHydroDynOnSubDyn(const io::HydroDynInput& hd) {
 }  // namespace
 
 double waterDensity(const io::OpenFastTurbine& t) {
-  return water(t, t.hydrodyn ? t.hydrodyn->WtrDens : std::nullopt, t.fst.WtrDens, "WtrDens");
+  return water(t, t.hydrodyn ? t.hydrodyn->WtrDens : std::nullopt, t.seastate ? t.seastate->WtrDens : std::nullopt,
+               t.fst.WtrDens, "WtrDens");
 }
 
 double waterDepth(const io::OpenFastTurbine& t) {
-  return water(t, t.hydrodyn ? t.hydrodyn->WtrDpth : std::nullopt, t.fst.WtrDpth, "WtrDpth");
+  return water(t, t.hydrodyn ? t.hydrodyn->WtrDpth : std::nullopt, t.seastate ? t.seastate->WtrDpth : std::nullopt,
+               t.fst.WtrDpth, "WtrDpth");
 }
 
 void addOffshoreLoads(Builder& b, const PlatformParts& p, const io::OpenFastTurbine& t) {

@@ -24,10 +24,11 @@ Model loadCaseModel(const std::string& path, const std::vector<std::string>& set
     ElastoDynModelOptions eo;
     const io::OpenFastTurbine t = readElastoDynTurbine(path, sets, eo);
     m = buildElastoDynModel(t, eo);
-    // Inputs read and left out or replaced (HydroDyn waves and currents, AeroDyn's time-domain
+    // Inputs read and left out or replaced (HydroDyn or SeaState waves and currents, AeroDyn's time-domain
     // options, SubDyn's SSIfile on a locked joint): the caller says them, one line each.
     if (notes) {
       if (t.hydrodyn) notes->insert(notes->end(), t.hydrodyn->notes.begin(), t.hydrodyn->notes.end());
+      if (t.seastate) notes->insert(notes->end(), t.seastate->notes.begin(), t.seastate->notes.end());
       if (eo.aero) notes->insert(notes->end(), eo.aero->notes.begin(), eo.aero->notes.end());
       if (t.subdyn) notes->insert(notes->end(), t.subdyn->notes.begin(), t.subdyn->notes.end());
     }
