@@ -160,7 +160,7 @@ TEST(OpenFastKeyRules, MapTwoNodesWithOneIdAreRefused) {
   ScratchDir dir;
   const auto map = edited(dir, kHywind / "NRELOffshrBsline5MW_OC3Hywind_MAP.dat", "map.dat", "2    Vessel",
                           "1    Vessel");
-  EXPECT_THAT(inputErrorMessage([&] { io::readMap(map); }), HasSubstr("map.dat:10: Node: '1' given twice (first on line 9)"));
+  EXPECT_THAT(inputErrorMessage([&] { io::readMap(map); }), HasSubstr("map.dat:9: Node: '1' given twice (first on line 8)"));
 }
 
 TEST(OpenFastKeyRules, MoorDynCountsAreBoundedAndIdsUnique) {
