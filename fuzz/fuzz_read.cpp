@@ -21,6 +21,7 @@
 //  15 fuzz_read_moordyn     readMoorDyn, then mapMooringLines
 //  16 fuzz_read_hydrodyn    readHydroDyn (its member tables too), then ballastOf (the filled members' fluid)
 //  17 fuzz_read_seastate    readSeaState (OpenFAST v4+ water properties)
+//  18 fuzz_read_discon      readDiscon (ROSCO's DISCON.IN), then its minimum pitch, gains and torques
 #include "fuzz/fuzz_support.hpp"
 #include "src/io/aero_deck14.hpp"
 #include "src/io/aerodyn_blade_input.hpp"
@@ -28,6 +29,7 @@
 #include "src/io/airfoil14_input.hpp"
 #include "src/io/airfoil_input.hpp"
 #include "src/io/case_file.hpp"
+#include "src/io/discon_input.hpp"
 #include "src/io/elastodyn_blade.hpp"
 #include "src/io/elastodyn_input.hpp"
 #include "src/io/elastodyn_tower.hpp"
@@ -97,8 +99,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     (void)whirl::elastodyn::ballastOf(hd.geometry, hd.WtrDens.value_or(1025), 9.80665, whirl::Vec3::Zero());
 #elif WHIRL_FUZZ_READER == 17
     (void)io::readSeaState(path);
+#elif WHIRL_FUZZ_READER == 18
+    const whirl::RoscoController c = io::readDiscon(path);
+    (void)whirl::roscoMinimumPitch(c, 12.0);
+    if (!c.PC_GS_angles.empty()) (void)whirl::roscoPitchGains(c, 0.1);
+    (void)whirl::roscoTorqueLimit(c, c.VS_RefSpd);
 #else
-#error "WHIRL_FUZZ_READER must be 1 to 17"
+#error "WHIRL_FUZZ_READER must be 1 to 18"
 #endif
   });
   return 0;
