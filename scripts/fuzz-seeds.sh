@@ -40,6 +40,7 @@ add fuzz_subdyn cases/oc3_monopile/5MW_Baseline/*_SubDyn.dat tests/data/subdyn/*
 add fuzz_schedule cases/nrel5mw/NREL5MW_Oper.csv tests/mpi/*.csv fuzz/seeds/schedule/*
 add fuzz_compare cases/*/table9_1.csv cases/*/reference.csv fuzz/seeds/compare/*
 add fuzz_tracking fuzz/seeds/tracking/*
+add fuzz_rotor_performance tests/data/rosco/Cp_Ct_Cq.NREL5MW.txt
 for h in aerodyn ad_blade airfoil inflowwind; do cp -r "$out/fuzz_$h" "$out/fuzz_read_$h"; done
 cp -r "$out/fuzz_servodyn_aero" "$out/fuzz_read_servodyn"
 for h in case_yaml fst elastodyn ed_tower ed_blade; do cp -r "$out/fuzz_$h" "$out/fuzz_read_$h"; done
