@@ -1,0 +1,175 @@
+#include "linearize/closed_loop.hpp"
+
+#include <algorithm>
+
+#include "src/model/error.hpp"
+
+namespace whirl {
+namespace {
+
+/// A signal of the controller as a linear combination of its states and its inputs (ω_g, U).
+struct Signal {
+  VecX x;
+  double w = 0, u = 0;
+};
+
+/// The controller's equations, filled block by block: ẋ = A x + B [ω_g; U].
+struct Builder {
+  MatX A, B;
+  std::vector<std::string> names;
+  int next = 0;
+
+  explicit Builder(int n) : A(MatX::Zero(n, n)), B(MatX::Zero(n, 2)) {}
+  Signal zero() const { return {VecX::Zero(A.rows()), 0, 0}; }
+  int add(const std::string& name) {
+    names.push_back("controller: " + name);
+    return next++;
+  }
+  /// ẋ_i += k · s
+  void feed(int i, const Signal& s, double k) {
+    A.row(i) += k * s.x.transpose();
+    B(i, 0) += k * s.w;
+    B(i, 1) += k * s.u;
+  }
+  Signal state(int i) const {
+    Signal s = zero();
+    s.x(i) = 1;
+    return s;
+  }
+};
+
+Signal combine(const Signal& a, double ka, const Signal& b, double kb) {
+  return {ka * a.x + kb * b.x, ka * a.w + kb * b.w, ka * a.u + kb * b.u};
+}
+
+/// First- or second-order low pass of `in` (unit static gain).
+Signal lowPass(Builder& b, const Signal& in, int order, double wc, double zeta, const std::string& name) {
+  if (order == 0) return in;
+  if (order == 1) {
+    const int i = b.add(name);
+    b.feed(i, b.state(i), -wc);
+    b.feed(i, in, wc);
+    return b.state(i);
+  }
+  const int i = b.add(name), j = b.add(name + " rate");
+  b.feed(i, b.state(j), 1);
+  b.feed(j, b.state(i), -wc * wc);
+  b.feed(j, b.state(j), -2 * zeta * wc);
+  b.feed(j, in, wc * wc);
+  return b.state(i);
+}
+
+/// (s² + 2β_n ω s + ω²)/(s² + 2β_d ω s + ω²) = 1 + 2(β_n − β_d) ω s/(s² + 2β_d ω s + ω²).
+Signal notch(Builder& b, const Signal& in, const SpeedNotch& n, const std::string& name) {
+  const int i = b.add(name), j = b.add(name + " rate");
+  b.feed(i, b.state(j), 1);
+  b.feed(j, b.state(i), -n.freq * n.freq);
+  b.feed(j, b.state(j), -2 * n.beta_den * n.freq);
+  b.feed(j, in, 1);
+  return combine(in, 1, b.state(j), 2 * (n.beta_num - n.beta_den) * n.freq);
+}
+
+int stateCount(const LinearController& c) {
+  int n = c.lpf_order + 2 * static_cast<int>(c.notches.size());
+  if (c.pitch_active) n += 1 + c.actuator_order;
+  if (c.torque == LinearController::Torque::PI) n += 1;
+  return n;
+}
+
+int indexOf(const std::vector<StateSpaceVariable>& v, const std::string& name, const char* what) {
+  for (size_t i = 0; i < v.size(); ++i)
+    if (v[i].name == name) return static_cast<int>(i);
+  throw InputError(where("", 0, name, std::string("the plant has no ") + what + " of this name"));
+}
+
+}  // namespace
+
+StateSpaceModel controllerStateSpace(const LinearController& c) {
+  if (c.lpf_order < 0 || c.lpf_order > 2 || c.actuator_order < 0 || c.actuator_order > 2)
+    throw InputError(where("", 0, "controller", "filter and actuator orders are 0, 1 or 2"));
+  Builder b(stateCount(c));
+  Signal speed = b.zero();
+  speed.w = 1;
+  speed = lowPass(b, speed, c.lpf_order, c.lpf_freq, c.lpf_damping, "speed filter");
+  for (size_t k = 0; k < c.notches.size(); ++k)
+    speed = notch(b, speed, c.notches[k], "speed notch " + std::to_string(k + 1));
+  Signal pitch = b.zero(), torque = b.zero();
+  if (c.pitch_active) {
+    // e = ω_ref − ω_f; İ = K_i e; θ_c = K_p e + I (ROSCO's PIController, ITerm = ∫K_i e).
+    const int i = b.add("pitch PI integral");
+    b.feed(i, speed, -c.pitch_ki);
+    pitch = combine(speed, -c.pitch_kp, b.state(i), 1);
+    pitch = lowPass(b, pitch, c.actuator_order, c.actuator_freq, c.actuator_damping, "pitch actuator");
+  }
+  switch (c.torque) {
+    case LinearController::Torque::Held:
+      break;
+    case LinearController::Torque::Static:
+      torque = combine(speed, c.torque_slope, b.zero(), 0);
+      break;
+    case LinearController::Torque::PI: {
+      Signal ref = b.zero();
+      ref.u = c.reference_per_wind;
+      const Signal e = combine(ref, 1, speed, -1);
+      const int i = b.add("torque PI integral");
+      b.feed(i, e, c.torque_ki);
+      torque = combine(e, c.torque_kp, b.state(i), 1);
+      break;
+    }
+  }
+  StateSpaceModel s;
+  s.A = b.A;
+  s.B = b.B;
+  s.C = MatX(2, b.A.rows());
+  s.D = MatX(2, 2);
+  s.C.row(0) = torque.x.transpose();
+  s.C.row(1) = pitch.x.transpose();
+  s.D << torque.w, torque.u, pitch.w, pitch.u;
+  for (const std::string& n : b.names) s.x.push_back({n, "", 0, -1, -1, false});
+  s.u = {{"generator speed", "rad/s"}, {"wind speed", "m/s"}};
+  s.y = {{"generator torque", "N m"}, {"collective pitch", "rad"}};
+  return s;
+}
+
+StateSpaceModel closeLoop(const StateSpaceModel& plant, const LinearController& c, const ClosedLoopPorts& ports) {
+  const StateSpaceModel k = controllerStateSpace(c);
+  const int it = indexOf(plant.u, ports.torque_input, "input");
+  const int ip = indexOf(plant.u, ports.pitch_input, "input");
+  const int ig = indexOf(plant.y, ports.speed_output, "output");
+  int iw = -1;
+  if (k.B.col(1).any() || k.D.col(1).any()) iw = indexOf(plant.u, ports.wind_input, "input");
+  if (plant.D(ig, it) != 0 || plant.D(ig, ip) != 0)
+    throw InputError(where("", 0, ports.speed_output, "depends directly on the torque or the pitch (an algebraic loop)"));
+  const Eigen::Index n = plant.A.rows(), m = k.A.rows(), nu = plant.B.cols();
+  // Controller inputs [ω_g; U] = G_x x + G_u u, with ω_g = C_g x + D_g u and U the plant's wind input.
+  MatX Gx = MatX::Zero(2, n), Gu = MatX::Zero(2, nu);
+  Gx.row(0) = plant.C.row(ig);
+  Gu.row(0) = plant.D.row(ig);
+  if (iw >= 0) Gu(1, iw) = 1;
+  // Plant inputs: u_plant = u + S (C_k x_k + D_k [ω_g; U]), S placing torque and pitch.
+  MatX S = MatX::Zero(nu, 2);
+  S(it, 0) = 1;
+  S(ip, 1) = 1;
+  const MatX BS = plant.B * S, DS = plant.D * S;
+  StateSpaceModel cl = plant;
+  cl.A = MatX::Zero(n + m, n + m);
+  cl.A.topLeftCorner(n, n) = plant.A + BS * k.D * Gx;
+  cl.A.topRightCorner(n, m) = BS * k.C;
+  cl.A.bottomLeftCorner(m, n) = k.B * Gx;
+  cl.A.bottomRightCorner(m, m) = k.A;
+  cl.B = MatX(n + m, nu);
+  cl.B.topRows(n) = plant.B + BS * k.D * Gu;
+  cl.B.bottomRows(m) = k.B * Gu;
+  cl.C = MatX(plant.C.rows(), n + m);
+  cl.C.leftCols(n) = plant.C + DS * k.D * Gx;
+  cl.C.rightCols(m) = DS * k.C;
+  cl.D = plant.D + DS * k.D * Gu;
+  cl.x.insert(cl.x.end(), k.x.begin(), k.x.end());
+  if (cl.xdot_op.size() == n) {
+    cl.xdot_op.conservativeResize(n + m);
+    cl.xdot_op.tail(m).setZero();
+  }
+  return cl;
+}
+
+}  // namespace whirl

@@ -1,0 +1,79 @@
+#pragma once
+/// \file
+/// The turbine with its controller as one linear model: the open-loop plant (a state-space model
+/// with the generator torque, the collective pitch and the wind among its inputs and the generator
+/// speed among its outputs) closed by the linearized ROSCO controller at the operating point, whose
+/// states become first-order states beside the structural ones.
+///
+/// The controller in continuous time (ROSCO's discrete filters and integrators are Tustin and
+/// forward-Euler forms of these at DT = 0.00625 s for the NREL 5MW: a factor 30 above the fastest
+/// structural mode of interest, so the continuous equivalents' phase differs by ω·DT/2 < 2° up to
+/// 15 Hz; the sample-and-hold delay is left out):
+/// - generator-speed filter on ω_g (Filters.f90): first-order low pass ω_c/(s + ω_c) or second-order
+///   ω_c²/(s² + 2ζω_c s + ω_c²), then the notches (s² + 2β_n ω s + ω²)/(s² + 2β_d ω s + ω²): ω_f;
+/// - pitch loop (region 3; Controllers.f90 PitchControl, Functions.f90 PIController): with the error
+///   e = ω_ref − ω_f, the integral state stores ∫K_i e dt (ROSCO's ITerm), θ_c = K_p e + I. With gains
+///   scheduled on the pitch, δθ_c = K_p δe + δI + (∂K_p/∂θ) e₀ δθ and δİ = K_i δe + (∂K_i/∂θ) e₀ δθ:
+///   at a steady point e₀ = 0, so the schedule's slope drops out (it would not for a controller that
+///   stores ∫e and multiplies by K_i(θ) afterwards: docs/theory/closed-loop.md);
+/// - pitch actuator (PA_Mode 1, 2): first- or second-order low pass of θ_c;
+/// - torque: region 3 constant power τ = P/(η ω_f) (δτ = −P/(η ω_f²) δω_f) or constant torque
+///   (δτ = 0); below rated ROSCO's PI (VS_KP, VS_KI) on ω_ref − ω_f with TSR tracking's reference
+///   ω_ref = λ_opt N U / R (the wind-speed estimate taken equal to the wind), held at VS_RefSpd in
+///   region 2½; or the k ω_f² law (δτ = 2 k ω_f δω_f).
+#include <string>
+#include <vector>
+
+#include "linearize/state_space.hpp"
+
+namespace whirl {
+
+/// One notch filter on the generator speed.
+struct SpeedNotch {
+  double freq = 0;      ///< ω [rad/s]
+  double beta_num = 0;  ///< numerator damping [-]
+  double beta_den = 0;  ///< denominator damping [-]
+};
+
+/// The controller linearized at one operating point (gains already scheduled there).
+struct LinearController {
+  int lpf_order = 1;        ///< generator-speed low pass: 0 none, 1 first, 2 second order
+  double lpf_freq = 0;      ///< its corner frequency [rad/s]
+  double lpf_damping = 0;   ///< second order [-]
+  std::vector<SpeedNotch> notches;
+
+  bool pitch_active = false;  ///< the pitch PI loop acts (region 3); otherwise pitch held
+  double pitch_kp = 0;        ///< [s] (rad per rad/s of generator-speed error)
+  double pitch_ki = 0;        ///< [-] (rad/s per rad/s)
+  int actuator_order = 0;     ///< pitch actuator: 0 none, 1 first, 2 second order
+  double actuator_freq = 0;   ///< [rad/s]
+  double actuator_damping = 0;
+
+  enum class Torque { Held, Static, PI } torque = Torque::Held;
+  /// Torque::Static: δτ = torque_slope δω_f [N m s/rad] (constant power: −P/(η ω_f²); k ω²: 2 k ω_f).
+  double torque_slope = 0;
+  double torque_kp = 0;       ///< Torque::PI: VS_KP [N m s/rad]
+  double torque_ki = 0;       ///< VS_KI [N m/rad]
+  double reference_per_wind = 0;  ///< Torque::PI: ∂ω_ref/∂U [rad/m] (TSR tracking; 0 when held)
+};
+
+/// Names of the roles the plant must have.
+struct ClosedLoopPorts {
+  std::string torque_input = "generator torque";
+  std::string pitch_input = "collective pitch";
+  std::string wind_input = "wind speed";  ///< may be absent when reference_per_wind = 0
+  std::string speed_output = "GenSpeed";
+};
+
+/// The closed loop: states [plant x; controller states] (the controller's named "controller: speed
+/// filter", "controller: pitch PI integral", …, first-order), the plant's inputs kept as disturbances
+/// added to the controller's commands (generator torque, pitch) or acting directly (wind), the plant's
+/// outputs. \throws InputError when the plant lacks an input or output named in `ports`, or when the
+/// generator speed depends directly on the torque or the pitch (D ≠ 0, an algebraic loop).
+StateSpaceModel closeLoop(const StateSpaceModel& plant, const LinearController& c, const ClosedLoopPorts& ports = {});
+
+/// The controller alone as a state-space model from the generator speed (and the wind) to the
+/// commands: u = [δω_g; δU], y = [δτ; δθ]. Its states are named as closeLoop names them.
+StateSpaceModel controllerStateSpace(const LinearController& c);
+
+}  // namespace whirl
