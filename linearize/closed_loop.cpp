@@ -7,10 +7,11 @@
 namespace whirl {
 namespace {
 
-/// A signal of the controller as a linear combination of its states and its inputs (ω_g, U).
+/// A signal of the controller as a linear combination of its states and its inputs: the generator
+/// speed ω_g, the wind U and the disturbances d_τ, d_θ added at the torque and actuator inputs.
 struct Signal {
   VecX x;
-  double w = 0, u = 0;
+  double w = 0, u = 0, dt = 0, dp = 0;
 };
 
 /// The controller's equations, filled block by block: ẋ = A x + B [ω_g; U].
@@ -19,8 +20,8 @@ struct Builder {
   std::vector<std::string> names;
   int next = 0;
 
-  explicit Builder(int n) : A(MatX::Zero(n, n)), B(MatX::Zero(n, 2)) {}
-  Signal zero() const { return {VecX::Zero(A.rows()), 0, 0}; }
+  explicit Builder(int n) : A(MatX::Zero(n, n)), B(MatX::Zero(n, 4)) {}
+  Signal zero() const { return {VecX::Zero(A.rows()), 0, 0, 0, 0}; }
   int add(const std::string& name) {
     names.push_back("controller: " + name);
     return next++;
@@ -30,6 +31,8 @@ struct Builder {
     A.row(i) += k * s.x.transpose();
     B(i, 0) += k * s.w;
     B(i, 1) += k * s.u;
+    B(i, 2) += k * s.dt;
+    B(i, 3) += k * s.dp;
   }
   Signal state(int i) const {
     Signal s = zero();
@@ -39,7 +42,7 @@ struct Builder {
 };
 
 Signal combine(const Signal& a, double ka, const Signal& b, double kb) {
-  return {ka * a.x + kb * b.x, ka * a.w + kb * b.w, ka * a.u + kb * b.u};
+  return {ka * a.x + kb * b.x, ka * a.w + kb * b.w, ka * a.u + kb * b.u, ka * a.dt + kb * b.dt, ka * a.dp + kb * b.dp};
 }
 
 /// First- or second-order low pass of `in` (unit static gain).
@@ -93,13 +96,14 @@ StateSpaceModel controllerStateSpace(const LinearController& c) {
   speed = lowPass(b, speed, c.lpf_order, c.lpf_freq, c.lpf_damping, "speed filter");
   for (size_t k = 0; k < c.notches.size(); ++k)
     speed = notch(b, speed, c.notches[k], "speed notch " + std::to_string(k + 1));
-  Signal pitch = b.zero(), torque = b.zero();
+  Signal pitch = b.zero(), torque = b.zero(), pitch_in = b.zero();
   if (c.pitch_active) {
     // e = ω_ref − ω_f; İ = K_i e; θ_c = K_p e + I (ROSCO's PIController, ITerm = ∫K_i e).
     const int i = b.add("pitch PI integral");
     b.feed(i, speed, -c.pitch_ki);
-    pitch = combine(speed, -c.pitch_kp, b.state(i), 1);
-    pitch = lowPass(b, pitch, c.actuator_order, c.actuator_freq, c.actuator_damping, "pitch actuator");
+    pitch_in = combine(speed, -c.pitch_kp, b.state(i), 1);
+    pitch_in.dp += 1;
+    pitch = lowPass(b, pitch_in, c.actuator_order, c.actuator_freq, c.actuator_damping, "pitch actuator");
   }
   switch (c.torque) {
     case LinearController::Torque::Held:
@@ -117,22 +121,38 @@ StateSpaceModel controllerStateSpace(const LinearController& c) {
       break;
     }
   }
+  torque.dt += 1;
   StateSpaceModel s;
   s.A = b.A;
   s.B = b.B;
-  s.C = MatX(2, b.A.rows());
-  s.D = MatX(2, 2);
+  s.C = MatX(3, b.A.rows());
+  s.D = MatX(3, 4);
   s.C.row(0) = torque.x.transpose();
   s.C.row(1) = pitch.x.transpose();
-  s.D << torque.w, torque.u, pitch.w, pitch.u;
+  s.C.row(2) = pitch_in.x.transpose();
+  s.D << torque.w, torque.u, torque.dt, torque.dp, pitch.w, pitch.u, pitch.dt, pitch.dp, pitch_in.w, pitch_in.u,
+      pitch_in.dt, pitch_in.dp;
   for (const std::string& n : b.names) s.x.push_back({n, "", 0, -1, -1, false});
-  s.u = {{"generator speed", "rad/s"}, {"wind speed", "m/s"}};
-  s.y = {{"generator torque", "N m"}, {"collective pitch", "rad"}};
+  s.u = {{"generator speed", "rad/s"}, {"wind speed", "m/s"}, {"torque disturbance", "N m"}, {"pitch disturbance", "rad"}};
+  s.y = {{"generator torque", "N m"}, {"collective pitch", "rad"}, {"actuator input", "rad"}};
   return s;
 }
 
-StateSpaceModel closeLoop(const StateSpaceModel& plant, const LinearController& c, const ClosedLoopPorts& ports) {
-  const StateSpaceModel k = controllerStateSpace(c);
+namespace {
+
+/// The loop closed, with the controller's disturbance inputs and its actuator-input output kept in
+/// `extra_in` (n + m) × 2 (d_τ, d_θ), `extra_out` 2 × (n + m) and `extra_d` 2 × 2 (τ command, actuator input).
+struct Closed {
+  StateSpaceModel cl;
+  MatX extra_in, extra_out, extra_d;
+};
+
+Closed close(const StateSpaceModel& plant, const LinearController& c, const ClosedLoopPorts& ports) {
+  const StateSpaceModel full = controllerStateSpace(c);
+  StateSpaceModel k = full;
+  k.B = full.B.leftCols(2);
+  k.C = full.C.topRows(2);
+  k.D = full.D.topLeftCorner(2, 2);
   const int it = indexOf(plant.u, ports.torque_input, "input");
   const int ip = indexOf(plant.u, ports.pitch_input, "input");
   const int ig = indexOf(plant.y, ports.speed_output, "output");
@@ -169,7 +189,38 @@ StateSpaceModel closeLoop(const StateSpaceModel& plant, const LinearController& 
     cl.xdot_op.conservativeResize(n + m);
     cl.xdot_op.tail(m).setZero();
   }
-  return cl;
+  // Disturbances d = [d_τ; d_θ] enter the controller's outputs through D_d (2 × 2 of full.D) and its
+  // states through B_d; the plant sees them through BS.
+  const MatX Bd = full.B.rightCols(2), Dd = full.D.topRightCorner(2, 2);
+  Closed out{cl, MatX(n + m, 2), MatX(2, n + m), MatX(2, 2)};
+  out.extra_in.topRows(n) = BS * Dd;
+  out.extra_in.bottomRows(m) = Bd;
+  // Outputs: the torque command (row 0 of the controller) and the actuator input (row 2).
+  MatX Ck(2, m), Dk(2, 4);
+  Ck << full.C.row(0), full.C.row(2);
+  Dk << full.D.row(0), full.D.row(2);
+  out.extra_out.leftCols(n) = Dk.leftCols(2) * Gx;
+  out.extra_out.rightCols(m) = Ck;
+  out.extra_d = Dk.rightCols(2);
+  return out;
+}
+
+}  // namespace
+
+StateSpaceModel closeLoop(const StateSpaceModel& plant, const LinearController& c, const ClosedLoopPorts& ports) {
+  return close(plant, c, ports).cl;
+}
+
+LoopSensitivity loopSensitivity(const StateSpaceModel& plant, const LinearController& c, BrokenLoop loop,
+                                const ClosedLoopPorts& ports) {
+  const Closed k = close(plant, c, ports);
+  const int i = loop == BrokenLoop::Torque ? 0 : 1;
+  LoopSensitivity s;
+  s.A = k.cl.A;
+  s.b = k.extra_in.col(i);
+  s.c = k.extra_out.row(i).transpose();
+  s.d = k.extra_d(i, i);
+  return s;
 }
 
 }  // namespace whirl

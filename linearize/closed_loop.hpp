@@ -72,8 +72,24 @@ struct ClosedLoopPorts {
 /// generator speed depends directly on the torque or the pitch (D ≠ 0, an algebraic loop).
 StateSpaceModel closeLoop(const StateSpaceModel& plant, const LinearController& c, const ClosedLoopPorts& ports = {});
 
-/// The controller alone as a state-space model from the generator speed (and the wind) to the
-/// commands: u = [δω_g; δU], y = [δτ; δθ]. Its states are named as closeLoop names them.
+/// The controller alone as a state-space model: u = [δω_g; δU; d_τ; d_θ] (d_τ added to the torque
+/// command, d_θ at the actuator input), y = [δτ; δθ; the actuator input]. Its states are named as
+/// closeLoop names them.
 StateSpaceModel controllerStateSpace(const LinearController& c);
+
+/// Where a loop is broken for its margins: at the actuator input of the pitch loop, or at the
+/// generator-torque command.
+enum class BrokenLoop { Pitch, Torque };
+
+/// The sensitivity at the break point with every loop closed: S(s) = cᵀ(sI − A)⁻¹b + d from a
+/// disturbance added there to the signal there, S = 1/(1 + L) with L the return ratio of the loop
+/// broken at that point (the other loop closed).
+struct LoopSensitivity {
+  MatX A;
+  VecX b, c;
+  double d = 1;
+};
+LoopSensitivity loopSensitivity(const StateSpaceModel& plant, const LinearController& c, BrokenLoop loop,
+                                const ClosedLoopPorts& ports = {});
 
 }  // namespace whirl

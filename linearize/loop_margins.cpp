@@ -1,0 +1,86 @@
+#include "linearize/loop_margins.hpp"
+
+#include <Eigen/LU>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <vector>
+
+namespace whirl {
+namespace {
+
+using cd = std::complex<double>;
+constexpr double kPi = std::numbers::pi;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+/// The root of f between a and b (f(a), f(b) of opposite signs), by bisection in log ω.
+double bisect(const std::function<double(double)>& f, double a, double b) {
+  double fa = f(a);
+  for (int k = 0; k < 60; ++k) {
+    const double m = std::sqrt(a * b), fm = f(m);
+    if ((fm < 0) == (fa < 0)) {
+      a = m;
+      fa = fm;
+    } else {
+      b = m;
+    }
+  }
+  return std::sqrt(a * b);
+}
+
+}  // namespace
+
+cd sensitivityAt(const LoopSensitivity& s, double omega) {
+  Eigen::MatrixXcd M = -s.A.cast<cd>();
+  M.diagonal().array() += cd(0, omega);
+  const Eigen::VectorXcd x = M.partialPivLu().solve(s.b.cast<cd>());
+  return (s.c.cast<cd>().transpose() * x)(0) + s.d;
+}
+
+LoopMargins loopMargins(const std::function<cd(double)>& S, const MarginOptions& opt) {
+  auto L = [&](double w) { return 1.0 / S(w) - 1.0; };
+  std::vector<double> w(static_cast<size_t>(opt.points));
+  std::vector<cd> l(w.size());
+  LoopMargins m;
+  m.gain_margin = m.phase_margin = m.delay_margin = kInf;
+  const double step = std::log(opt.max_frequency / opt.min_frequency) / (opt.points - 1);
+  for (size_t i = 0; i < w.size(); ++i) {
+    w[i] = opt.min_frequency * std::exp(step * static_cast<double>(i));
+    const cd s = S(w[i]);
+    l[i] = 1.0 / s - 1.0;
+    if (std::abs(s) > m.peak_sensitivity) {
+      m.peak_sensitivity = std::abs(s);
+      m.peak_frequency = w[i];
+    }
+  }
+  for (size_t i = 1; i < w.size(); ++i) {
+    // Gain crossings: |L| − 1 changes sign.
+    if ((std::abs(l[i - 1]) - 1 < 0) != (std::abs(l[i]) - 1 < 0)) {
+      const double wc = bisect([&](double x) { return std::abs(L(x)) - 1; }, w[i - 1], w[i]);
+      const double pm = 180 + std::arg(L(wc)) * 180 / kPi;  // ∠L in (−180°, 180°]
+      const double pm_wrapped = pm > 180 ? pm - 360 : pm;
+      if (pm_wrapped < m.phase_margin) {
+        m.phase_margin = pm_wrapped;
+        m.phase_crossover = wc;
+      }
+      const double dm = (pm_wrapped < 0 ? pm_wrapped + 360 : pm_wrapped) * kPi / 180 / wc;
+      m.delay_margin = std::min(m.delay_margin, dm);
+    }
+    // Phase crossings of −180°: Im L changes sign where Re L < 0.
+    if ((l[i - 1].imag() < 0) != (l[i].imag() < 0) && (l[i - 1].real() < 0 || l[i].real() < 0)) {
+      const double wp = bisect([&](double x) { return L(x).imag(); }, w[i - 1], w[i]);
+      const cd lp = L(wp);
+      if (lp.real() < 0 && 1 / std::abs(lp) < m.gain_margin) {
+        m.gain_margin = 1 / std::abs(lp);
+        m.gain_crossover = wp;
+      }
+    }
+  }
+  return m;
+}
+
+LoopMargins loopMargins(const LoopSensitivity& s, const MarginOptions& opt) {
+  return loopMargins([&](double w) { return sensitivityAt(s, w); }, opt);
+}
+
+}  // namespace whirl
