@@ -19,4 +19,5 @@ void addBodeCommand(CLI::App& app);
 void addSimulateCommand(CLI::App& app);
 void addVerifyCommand(CLI::App& app);
 void addReportCommand(CLI::App& app);
+void addTuneCommand(CLI::App& app);
 }  // namespace whirl::cli

@@ -57,6 +57,7 @@ int main(int argc, char** argv) {
   whirl::cli::addSimulateCommand(app);
   whirl::cli::addVerifyCommand(app);
   whirl::cli::addReportCommand(app);
+  whirl::cli::addTuneCommand(app);
   std::vector<char*> cargv;
   for (auto& a : args) cargv.push_back(a.data());
   cargv.push_back(nullptr);

@@ -1,0 +1,164 @@
+// `whirl tune`: ROSCO's pole placement of the pitch and torque PI loops (linearize/controller_tuning.hpp)
+// with whirl's sensitivities along its trimmed schedule, or with a ROSCO Cp surface (--cp-surface);
+// writes tune.csv and, with --discon, that DISCON.IN with the new gain schedule.
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iterator>
+#include <numbers>
+#include <sstream>
+
+#include "linearize/controller_tuning.hpp"
+#include "linearize/controller_tuning_whirl.hpp"
+#include "linearize/trim.hpp"
+#include "src/cli/commands.hpp"
+#include "src/cli/common.hpp"
+#include "src/io/csv.hpp"
+#include "src/io/rotor_performance_input.hpp"
+#include "src/model/error.hpp"
+#include "src/writers/discon_gains.hpp"
+#include "src/writers/output_set.hpp"
+
+namespace whirl::cli {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+struct TuneOptions {
+  ModelOptions model;
+  TuningGoals goals;
+  double v_min = 0, v_rated = 0, v_max = 0;
+  std::optional<double> inertia, rated_rotor_speed, rated_power, rotor_radius;
+  std::string cp_surface, discon, out;
+  bool quasi_steady = false, pointwise = false;
+  int azimuths = 3;
+};
+
+std::string readText(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(where(path, 0, "", "cannot open the file"));
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+TuningTurbine turbineOf(const TuneOptions& opt, const Model& m) {
+  TuningTurbine t;
+  // ROSCO's R is ElastoDyn's TipRad, along the blade; whirl's default is the swept disk's radius.
+  t.rotor_radius = opt.rotor_radius.value_or(m.aero.rotor_radius);
+  t.air_density = m.aero.air_density;
+  t.gearbox_ratio = gearboxRatio(m);
+  t.inertia = opt.inertia ? *opt.inertia : rotorInertia(m);
+  const GeneratorTorqueLaw& law = m.generator;
+  if (!opt.rated_rotor_speed && !(law.active() && law.rated_speed > 0))
+    throw InputError("tune: --rated-rotor-speed: the deck has no rated generator speed; give it");
+  t.rated_rotor_speed = opt.rated_rotor_speed.value_or(law.rated_speed / t.gearbox_ratio);
+  if (!opt.rated_power && !(law.active() && law.rated_torque > 0))
+    throw InputError("tune: --rated-power: the deck has no rated generator torque; give it");
+  t.rated_power = opt.rated_power.value_or(law.rated_speed * law.rated_torque * law.efficiency);
+  t.v_min = opt.v_min;
+  t.v_rated = opt.v_rated;
+  t.v_max = opt.v_max;
+  return t;
+}
+
+/// whirl's trimmed points at ROSCO's wind speeds that the placement uses: the last below rated and
+/// every one from rated up; the above-rated flag by the wind speed, as ROSCO's schedule has it.
+std::vector<TuningPoint> whirlSchedule(const TuneOptions& opt, const Model& m, const TuningTurbine& t) {
+  const std::vector<double> all = roscoWindSpeeds(t, opt.goals);
+  const size_t n_below = static_cast<size_t>(opt.goals.ws_gs_n - opt.goals.pc_gs_n - 1);
+  const std::vector<double> winds(all.begin() + static_cast<long>(n_below) - 1, all.end());
+  WhirlTuningOptions w;
+  w.frozen_wake = !opt.quasi_steady;
+  w.trim.azimuths = opt.azimuths;
+  std::vector<TuningPoint> s = whirlTuningSchedule(m, trimSchedule(m, winds, w.trim), w);
+  for (size_t i = 0; i < s.size(); ++i) s[i].above_rated = i > 0;
+  return s;
+}
+
+std::string csvOf(const std::vector<TuningPoint>& s, const GainSchedule& g) {
+  std::string t =
+      "wind_speed_m_s,rotor_speed_rpm,pitch_deg,tsr,dq_dpitch_nm_rad,dq_domega_nms_rad,a_1_s,b_beta_1_s2,kp_s,ki\n";
+  size_t k = 0;
+  for (const TuningPoint& p : s) {
+    const bool placed = p.above_rated && k < g.wind_speed.size() && std::abs(g.wind_speed[k] - p.wind_speed) < 1e-9;
+    for (double v : {p.wind_speed, p.rotor_speed * 30 / kPi, p.pitch * 180 / kPi, p.tsr, p.dq_dpitch, p.dq_domega})
+      t += formatNumber(v) + ",";
+    if (placed) {
+      t += formatNumber(g.a[k]) + "," + formatNumber(g.b[k]) + "," + formatNumber(g.kp[k]) + "," + formatNumber(g.ki[k]);
+      ++k;
+    } else {
+      t += ",,,";
+    }
+    t += "\n";
+  }
+  return t;
+}
+
+void run(TuneOptions opt) {
+  const auto start = std::chrono::steady_clock::now();
+  const Model m = loadModel(opt.model);
+  if (!m.aero.active() && opt.cp_surface.empty())
+    throw InputError(opt.model.case_path + ": the model has no aerodynamics; give --cp-surface or an aeroelastic deck");
+  opt.goals.fit_linear_in_wind = !opt.pointwise;
+  const TuningTurbine t = turbineOf(opt, m);
+  const std::string discon_text = opt.discon.empty() ? std::string() : readText(opt.discon);
+  const std::vector<TuningPoint> s = opt.cp_surface.empty()
+                                         ? whirlSchedule(opt, m, t)
+                                         : roscoTuningSchedule(io::readRotorPerformance(opt.cp_surface), t, opt.goals);
+  const GainSchedule g = placePoles(s, t, opt.goals);
+  const std::string dir = opt.out.empty() ? defaultOutputFolder(opt.model.case_path) : opt.out;
+  prepareOutputFolder(dir);
+  OutputSet files(dir);
+  files.write("tune.csv", csvOf(s, g));
+  if (!opt.discon.empty()) files.write("DISCON.IN", disconWithGains(discon_text, opt.discon, g));
+  files.commit();
+  std::printf("sensitivities from %s; J = %.6g kg m^2, N = %g, R = %g m, rho = %g kg/m^3\n",
+              opt.cp_surface.empty() ? "whirl's trimmed linearization" : opt.cp_surface.c_str(), t.inertia,
+              t.gearbox_ratio, t.rotor_radius, t.air_density);
+  std::printf("%8s %8s %12s %12s %11s %11s\n", "wind", "pitch", "dQ/dpitch", "dQ/dOmega", "PC_GS_KP", "PC_GS_KI");
+  size_t k = 0;
+  for (const TuningPoint& p : s) {
+    if (!p.above_rated || k >= g.wind_speed.size() || std::abs(g.wind_speed[k] - p.wind_speed) > 1e-9) continue;
+    std::printf("%8.3f %8.3f %12.5g %12.5g %11.4g %11.4g\n", p.wind_speed, p.pitch * 180 / kPi, p.dq_dpitch, p.dq_domega,
+                g.kp[k], g.ki[k]);
+    ++k;
+  }
+  std::printf("VS_KP %.6g, VS_KI %.6g\n", g.vs_kp, g.vs_ki);
+  std::printf("wrote");
+  for (const auto& f : files.paths()) std::printf(" %s", f.c_str());
+  std::printf("\n%.2f s\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+}
+
+}  // namespace
+
+void addTuneCommand(CLI::App& app) {
+  auto opt = std::make_shared<TuneOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "tune",
+      "Gains of ROSCO's PI pitch and torque loops by ROSCO's pole placement on the one-state rotor model, with "
+      "whirl's sensitivities along its trimmed schedule (or a ROSCO Cp surface); writes tune.csv and a DISCON.IN");
+  addModelOptions(*cmd, opt->model, false);
+  cmd->add_option("--pc-omega", opt->goals.pc_omega, "pitch loop natural frequency [rad/s]")->required();
+  cmd->add_option("--pc-zeta", opt->goals.pc_zeta, "pitch loop damping ratio [-]")->required();
+  cmd->add_option("--vs-omega", opt->goals.vs_omega, "torque loop natural frequency [rad/s]")->required();
+  cmd->add_option("--vs-zeta", opt->goals.vs_zeta, "torque loop damping ratio [-]")->required();
+  cmd->add_option("--v-min", opt->v_min, "cut-in wind speed of ROSCO's schedule [m/s]")->required();
+  cmd->add_option("--v-rated", opt->v_rated, "rated wind speed [m/s]")->required();
+  cmd->add_option("--v-max", opt->v_max, "cut-out wind speed [m/s]")->required();
+  cmd->add_option("--ws-gs-n", opt->goals.ws_gs_n, "wind speeds of the schedule (ROSCO's WS_GS_n)")->check(CLI::Range(4, 1000));
+  cmd->add_option("--pc-gs-n", opt->goals.pc_gs_n, "of them above rated (ROSCO's PC_GS_n)")->check(CLI::Range(2, 999));
+  cmd->add_option("--inertia", opt->inertia, "rotor + generator inertia about the low-speed shaft [kg m^2] (default: the model's)");
+  cmd->add_option("--rotor-radius", opt->rotor_radius, "R of the tip-speed ratio and the Cp surface [m] (default: the swept disk's, coned)");
+  cmd->add_option("--rated-rotor-speed", opt->rated_rotor_speed, "[rad/s] (default: the deck's rated generator speed / gearbox ratio)");
+  cmd->add_option("--rated-power", opt->rated_power, "[W] (default: the deck's rated speed x torque x efficiency)");
+  cmd->add_option("--cp-surface", opt->cp_surface, "ROSCO rotor performance file (Cp_Ct_Cq.*.txt): ROSCO's own tuning");
+  cmd->add_option("--discon", opt->discon, "DISCON.IN to write again with the new gain schedule");
+  cmd->add_flag("--quasi-steady", opt->quasi_steady, "sensitivities with the induction following at once (default: frozen wake)");
+  cmd->add_flag("--pointwise", opt->pointwise, "place each wind speed's own plant (default: ROSCO's line fit in the wind speed)");
+  cmd->add_option("--azimuths", opt->azimuths, "equilibria per point, over one blade passage")->check(CLI::Range(1, 360));
+  cmd->add_option("--out", opt->out, "output folder (default reports/<case name>)");
+  cmd->callback([opt]() { run(*opt); });
+}
+
+}  // namespace whirl::cli

@@ -1,0 +1,50 @@
+// `whirl tune` end to end: with ROSCO's Cp surface and ROSCO's NREL 5MW tuning inputs
+// (tests/data/rosco/NREL5MW.yaml: J = rotor_inertia + GenIner·97² = 43702538.057 kg m², DISCON.IN's
+// WE_Jtot; rated rotor speed 1.26711 rad/s, 5 MW, 3/11.4/25 m/s; pitch loop 0.6 rad/s, 0.7; torque loop
+// 0.15 rad/s, 0.7) it writes ROSCO's shipped DISCON.IN again byte for byte (every gain to its printed
+// digits, every other line kept); a DISCON.IN without VS_KI stops with file: key: reason, nothing written.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "tests/cli/cli_support.hpp"
+
+namespace whirl::test {
+namespace {
+
+const std::string kRosco = "tests/data/rosco/";
+const std::string kTune =
+    "tune cases/nrel5mw/Main_Aero.fst --pc-omega 0.6 --pc-zeta 0.7 --vs-omega 0.15 --vs-zeta 0.7 --v-min 3 "
+    "--v-rated 11.4 --v-max 25 --inertia 43702538.057 --rotor-radius 63 --rated-rotor-speed 1.26711 --rated-power 5e6 ";
+
+TEST(CliTune, CpSurfaceWritesRoscosDisconAgain) {
+  const auto dir = freshDir("tune_rosco");
+  const auto r = whirl(kTune + "--cp-surface " + kRosco + "Cp_Ct_Cq.NREL5MW.txt --discon " + kRosco +
+                       "DISCON.IN --out '" + dir.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(slurp(dir / "DISCON.IN"), slurp(std::filesystem::path(WHIRL_SOURCE_DIR) / kRosco / "DISCON.IN"));
+  const std::string csv = slurp(dir / "tune.csv");
+  EXPECT_EQ(csv.substr(0, csv.find('\n')),
+            "wind_speed_m_s,rotor_speed_rpm,pitch_deg,tsr,dq_dpitch_nm_rad,dq_domega_nms_rad,a_1_s,b_beta_1_s2,kp_s,ki");
+}
+
+TEST(CliTune, DisconWithoutAGainKeyIsAnErrorAndNothingIsWritten) {
+  const auto dir = freshDir("tune_bad");
+  const auto bad = dir / "in" / "DISCON.IN";
+  std::filesystem::create_directories(bad.parent_path());
+  {
+    std::ifstream in(std::filesystem::path(WHIRL_SOURCE_DIR) / kRosco / "DISCON.IN");
+    std::ofstream out(bad);
+    for (std::string line; std::getline(in, line);)
+      if (line.find("! VS_KI") == std::string::npos) out << line << "\n";
+  }
+  const auto r = whirl(kTune + "--cp-surface " + kRosco + "Cp_Ct_Cq.NREL5MW.txt --discon '" + bad.string() +
+                       "' --out '" + (dir / "out").string() + "'");
+  EXPECT_NE(r.code, 0);
+  EXPECT_NE(r.err.find(bad.string() + ": VS_KI: missing"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out" / "tune.csv"));
+}
+
+}  // namespace
+}  // namespace whirl::test
