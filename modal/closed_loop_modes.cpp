@@ -1,0 +1,92 @@
+#include "modal/closed_loop_modes.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <map>
+
+#include "linearize/export_point.hpp"
+#include "modal/eigen.hpp"
+
+namespace whirl {
+namespace {
+
+const std::string kController = "controller: ";
+
+/// The group a state belongs to for naming.
+std::string groupOf(const StateSpaceVariable& v, bool pitch_loop, const std::vector<StateSpaceVariable>& x) {
+  std::string n = v.name;
+  if (n.rfind(kController, 0) == 0) {
+    n = n.substr(kController.size());
+    if (n.size() > 5 && n.compare(n.size() - 5, 5, " rate") == 0) n = n.substr(0, n.size() - 5);
+    if (n == "pitch PI integral") return "rotor speed / pitch control";
+    if (n == "torque PI integral") return "torque control";
+    return n;
+  }
+  const StateSpaceVariable& d = v.rate_of >= 0 ? x[static_cast<size_t>(v.rate_of)] : v;
+  if (d.azimuth || (v.rate_of < 0 && v.name.find("azimuth") != std::string::npos))
+    return pitch_loop ? "rotor speed / pitch control" : "rotor speed / torque control";
+  return d.name;
+}
+
+}  // namespace
+
+std::vector<ClosedLoopMode> namedModes(const StateSpaceModel& s, bool has_pitch_loop) {
+  const EigenDecomposition e = eigenStandard(s.A, true);
+  const Eigen::Index n = e.values.size();
+  std::vector<ClosedLoopMode> modes;
+  for (Eigen::Index j = 0; j < n; ++j) {
+    const std::complex<double> lambda = e.values(j);
+    if (lambda.imag() < 0) continue;  // one of each pair
+    std::map<std::string, double> share;
+    double total = 0, controller = 0;
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const double p = std::abs(e.vectors(i, j) * std::conj(e.left(i, j)));
+      const StateSpaceVariable& v = s.x[static_cast<size_t>(i)];
+      share[groupOf(v, has_pitch_loop, s.x)] += p;
+      total += p;
+      if (v.name.rfind(kController, 0) == 0) controller += p;
+    }
+    ClosedLoopMode m;
+    m.eigenvalue = lambda;
+    const ModalFrequency f = modalFrequency(lambda);
+    m.freq_hz = f.freq_hz;
+    m.damped_freq_hz = f.damped_freq_hz;
+    m.damping_ratio = f.damping_ratio;
+    m.controller_share = total > 0 ? controller / total : 0;
+    m.name = std::max_element(share.begin(), share.end(), [](auto& a, auto& b) { return a.second < b.second; })->first;
+    modes.push_back(m);
+  }
+  std::sort(modes.begin(), modes.end(), [](const auto& a, const auto& b) { return a.freq_hz < b.freq_hz; });
+  return modes;
+}
+
+ClosedLoopPoint closedLoopPoint(const Model& model, const SteadyState& steady, const LinearController& controller,
+                                const ClosedLoopOptions& opt) {
+  Model plant_model = model;
+  plant_model.generator.speed_output = -1;  // the controller sets the generator torque
+  OperatingCondition c = steady.condition;
+  c.generator_torque = steady.generator_torque;
+  ExportOptions eo;
+  eo.azimuths = opt.azimuths;
+  eo.drop_azimuth = true;
+  if (!steady.azimuth_q.empty()) eo.deflections = &steady.azimuth_q.front();
+  ClosedLoopPoint p;
+  p.steady = steady;
+  p.plant = exportOperatingPoint(plant_model, c, eo).model;
+  p.closed = closeLoop(p.plant, controller, opt.ports);
+  p.open_modes = namedModes(p.plant, false);
+  p.closed_modes = namedModes(p.closed, controller.pitch_active);
+  p.least_damping = 1;
+  for (const ClosedLoopMode& m : p.closed_modes) {
+    if (m.eigenvalue.real() >= 0) p.stable = false;
+    p.least_damping = std::min(p.least_damping, m.damping_ratio);
+  }
+  const double inf = std::numeric_limits<double>::infinity();
+  p.pitch = p.torque = LoopMargins{inf, 0, inf, 0, inf, 0, 0};
+  if (controller.pitch_active) p.pitch = loopMargins(loopSensitivity(p.plant, controller, BrokenLoop::Pitch, opt.ports), opt.margins);
+  if (controller.torque != LinearController::Torque::Held)
+    p.torque = loopMargins(loopSensitivity(p.plant, controller, BrokenLoop::Torque, opt.ports), opt.margins);
+  return p;
+}
+
+}  // namespace whirl

@@ -1,0 +1,54 @@
+#pragma once
+/// \file
+/// The turbine with its controller along the wind: at each trimmed point the open-loop plant (the
+/// multiblade average of a periodic linearization with the generator torque as a plain input, the
+/// azimuth state dropped) is closed by the controller linearized there (linearize/closed_loop.hpp),
+/// and the closed loop's modes are named by participation factors |v_i w_i| (right and left
+/// eigenvectors, scale-free): the group of states with the largest share names the mode —
+/// "rotor speed / pitch control" (pitch PI integral, or the rotor speed with the pitch loop active),
+/// "rotor speed / torque control", "torque control", "speed filter", "speed notch k", "pitch actuator",
+/// else the structural coordinate with the largest share (its name in multiblade coordinates).
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "linearize/closed_loop.hpp"
+#include "linearize/loop_margins.hpp"
+#include "linearize/trim.hpp"
+
+namespace whirl {
+
+struct ClosedLoopMode {
+  std::string name;
+  double freq_hz = 0;        ///< natural frequency [Hz]
+  double damped_freq_hz = 0;
+  double damping_ratio = 0;  ///< [-]
+  std::complex<double> eigenvalue;
+  double controller_share = 0;  ///< participation of the controller's states [-]
+};
+
+struct ClosedLoopPoint {
+  SteadyState steady;
+  StateSpaceModel plant;   ///< open loop (multiblade average, azimuth dropped)
+  StateSpaceModel closed;  ///< with the controller's states appended
+  std::vector<ClosedLoopMode> open_modes, closed_modes;  ///< oscillating and real roots, by frequency
+  LoopMargins pitch, torque;  ///< margins of each loop broken at its actuator input (infinite when inactive)
+  bool stable = true;         ///< every closed-loop eigenvalue with Re λ < 0 (the rigid azimuth dropped)
+  double least_damping = 0;   ///< smallest damping ratio among the closed-loop modes [-]
+};
+
+struct ClosedLoopOptions {
+  int azimuths = 36;  ///< per revolution, periodic linearization (multiblade average)
+  bool frozen_wake = true;
+  MarginOptions margins;
+  ClosedLoopPorts ports;
+};
+
+/// One point: `controller` linearized at `steady` (gains scheduled at its pitch, region from it).
+ClosedLoopPoint closedLoopPoint(const Model& model, const SteadyState& steady, const LinearController& controller,
+                                const ClosedLoopOptions& opt = {});
+
+/// The modes of a state matrix named as above; `has_pitch_loop` names the rotor-speed mode.
+std::vector<ClosedLoopMode> namedModes(const StateSpaceModel& s, bool has_pitch_loop);
+
+}  // namespace whirl
