@@ -5,8 +5,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <iterator>
 #include <numbers>
 #include <sstream>
 
@@ -16,6 +14,7 @@
 #include "src/cli/commands.hpp"
 #include "src/cli/common.hpp"
 #include "src/io/csv.hpp"
+#include "src/io/input_file.hpp"
 #include "src/io/rotor_performance_input.hpp"
 #include "src/model/error.hpp"
 #include "src/writers/discon_gains.hpp"
@@ -37,9 +36,9 @@ struct TuneOptions {
 };
 
 std::string readText(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(where(path, 0, "", "cannot open the file"));
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  std::string text;
+  if (!io::readInputFile(path, text)) throw InputError(where(path, 0, "", "cannot open the file"));
+  return text;
 }
 
 TuningTurbine turbineOf(const TuneOptions& opt, const Model& m) {

@@ -1,9 +1,10 @@
 #include "src/io/rotor_performance_input.hpp"
 
 #include <cmath>
-#include <fstream>
+#include <sstream>
 #include <numbers>
 
+#include "src/io/input_file.hpp"
 #include "src/io/openfast_lines.hpp"
 #include "src/model/error.hpp"
 
@@ -61,8 +62,8 @@ MatX table(const Lines& f, const std::string& word, const std::string& key, size
 }  // namespace
 
 aero::RotorPerformance readRotorPerformance(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(where(path, 0, "", "cannot open the rotor performance file"));
+  std::istringstream in;
+  if (!openInputFile(path, in)) throw InputError(where(path, 0, "", "cannot open the rotor performance file"));
   Lines f{path, {}};
   for (std::string line; std::getline(in, line);) f.text.push_back(line);
   aero::RotorPerformance p;
