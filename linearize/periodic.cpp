@@ -33,6 +33,12 @@ void checkHeldDrift(const Model& m, const PeriodicLinearization& p) {
   }
 }
 
+// "azimuth 30 deg: ", what an error at one azimuth of a periodic linearization starts with (the
+// sweep adds the rotor speed, wind speed and pitch); nothing for a single linearization.
+std::string atAzimuth(double psi, int n) {
+  return n > 1 ? fmt::format("azimuth {:.6g} deg: ", psi * 180 / std::numbers::pi) : std::string();
+}
+
 }  // namespace
 
 int findAzimuthDof(const Model& m) {
@@ -65,8 +71,15 @@ PeriodicLinearization linearizePeriodic(const Model& m, const OperatingPoint& st
       eq.load_scale = p.points.front().load_scale;
       eq.held = &p.points.front().held;  // every azimuth holds the same free coordinates (a free yaw)
     }
-    OperatingPoint op = solveOperatingPoint(m, guess, eq, lw);
-    p.models.push_back(linearize(m, op, lw, opt.linearize));
+    OperatingPoint op;
+    try {
+      op = solveOperatingPoint(m, guess, eq, lw);
+      p.models.push_back(linearize(m, op, lw, opt.linearize));
+    } catch (const InputError& e) {
+      throw InputError(atAzimuth(psi, n) + e.what());
+    } catch (const ComputeError& e) {
+      throw ComputeError(atAzimuth(psi, n) + e.what());
+    }
     p.azimuths.push_back(psi);
     p.points.push_back(op);
     guess = op;

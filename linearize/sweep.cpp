@@ -1,5 +1,7 @@
 #include "linearize/sweep.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <numbers>
 #include <regex>
@@ -48,6 +50,20 @@ OperatingCondition sweepCondition(const Model& m, const SweepPoint& point) {
   if (point.pitch_deg && !c.collective_pitch && !m.roles.blade_pitch.empty())
     c.collective_pitch = *point.pitch_deg * std::numbers::pi / 180;
   return c;
+}
+
+std::string sweepPointLabel(const Model& m, const SweepPoint& point) {
+  // From the condition and the model's own values, not from initialPoint: the label goes into the
+  // message of an error that the point's start may itself have raised.
+  const OperatingCondition c = sweepCondition(m, point);
+  constexpr double deg = 180 / std::numbers::pi;
+  std::string s = fmt::format("{:.6g} rpm", c.rotor_speed * 30 / std::numbers::pi);
+  if (m.roles.wind_speed_input >= 0)
+    s += fmt::format(", wind {:.6g} m/s", c.wind_speed.value_or(m.inputs[m.roles.wind_speed_input].value));
+  if (!m.roles.blade_pitch.empty())
+    s += fmt::format(", pitch {:.6g} deg", c.collective_pitch.value_or(m.dofs[m.roles.blade_pitch.front()].value) * deg);
+  if (!m.roles.azimuth.empty()) s += fmt::format(", azimuth {:.6g} deg", m.dofs[m.roles.azimuth.front()].value * deg);
+  return s;
 }
 
 }  // namespace whirl

@@ -31,8 +31,10 @@ struct SweepOptions {
   /// Called after each point with (points done, points total); used for progress on stderr.
   /// Under mpirun: rank 0 only, counting its own share of the points.
   std::function<void(int, int)> progress;
-  /// When set: an InputError or ComputeError at point p (its start or its computation, not the
-  /// model's construction) is re-thrown with context(p) in front of its message.
+  /// An InputError or ComputeError at point p (its start or its computation, not the model's
+  /// construction) is re-thrown with "<context(p)>(<sweepPointLabel>): " in front of its message;
+  /// without a context, "operating point <p+1> ". Every failing point names its rotor speed, wind
+  /// speed, pitch and azimuth (issue 41).
   std::function<std::string(int)> context;
   /// Called with each point's model and solved periodic operating points (the validity check of the
   /// commands, linearize/point_validity.hpp); returns the problems to keep in the point's metadata,
@@ -46,6 +48,11 @@ struct SweepOptions {
 /// (ModelRoles::wind_speed_input) and point.pitch_deg · π / 180 as the collective pitch when it has
 /// blade pitch coordinates (ModelRoles::blade_pitch).
 OperatingCondition sweepCondition(const Model& model, const SweepPoint& point);
+
+/// "9 rpm, wind 12 m/s, pitch 3.5 deg, azimuth 0 deg": the operating point `model` is put at for
+/// `point` (rotor speed; the wind speed, collective pitch and starting azimuth where the model has
+/// them), for error messages.
+std::string sweepPointLabel(const Model& model, const SweepPoint& point);
 
 /// The sweep: task k = (set k / P, point k mod P) of sets × P tasks (P = points.size()) computes
 /// `compute(model_of(set), points[p], initialPoint(model_of(set), sweepCondition(...)))` → T.
@@ -65,13 +72,17 @@ std::vector<T> sweepOperatingPoints(int sets, ModelOf&& model_of, const std::vec
         const Model& model = model_of(k / P);
         const SweepPoint& point = points[static_cast<size_t>(k % P)];
         auto run = [&]() -> T { return compute(model, point, initialPoint(model, sweepCondition(model, point))); };
-        if (!opt.context) return run();
+        auto where = [&] {
+          const std::string head =
+              opt.context ? opt.context(k % P) : "operating point " + std::to_string(k % P + 1) + " ";
+          return head + "(" + sweepPointLabel(model, point) + "): ";
+        };
         try {
           return run();
         } catch (const InputError& e) {
-          throw InputError(opt.context(k % P) + e.what());
+          throw InputError(where() + e.what());
         } catch (const ComputeError& e) {
-          throw ComputeError(opt.context(k % P) + e.what());
+          throw ComputeError(where() + e.what());
         }
       },
       encode, decode, map);

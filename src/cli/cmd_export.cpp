@@ -41,12 +41,10 @@ void checkNames(const Model& m, const std::vector<std::string>& inputs, const st
     if (!m.findOutput(n)) throw InputError("--outputs: unknown output '" + n + "' (outputs: " + list(m.outputs) + ")");
 }
 
-// "<schedule>: operating point <k> (<rpm> rpm): ", what an error at schedule row k starts with
-// (whichever rank runs it, the user sees which point failed).
-std::string scheduleContext(const std::string& schedule, int k, const SweepPoint& sp) {
-  char rpm[32];
-  std::snprintf(rpm, sizeof rpm, "%g", sp.rpm);
-  return schedule + ": operating point " + std::to_string(k + 1) + " (" + rpm + " rpm): ";
+// "<schedule>: operating point <k> ", what an error at schedule row k starts with (whichever rank runs
+// it, the user sees which point failed; the sweep adds its rotor speed, wind speed, pitch and azimuth).
+std::string scheduleContext(const std::string& schedule, int k) {
+  return schedule + ": operating point " + std::to_string(k + 1) + " ";
 }
 
 void run(const CliOptions& opt) {
@@ -85,7 +83,7 @@ void run(const CliOptions& opt) {
   sweep.azimuths = opt.azimuths;
   sweep.progress = sweepProgress("export");
   if (!opt.schedule.empty())
-    sweep.context = [&](int k) { return scheduleContext(opt.schedule, k, points[static_cast<size_t>(k)]); };
+    sweep.context = [&](int k) { return scheduleContext(opt.schedule, k); };
   sweep.check_point = [&opt](const Model& m, const std::vector<OperatingPoint>& ops, const SweepPoint& sp) {
     const bool labelled = !opt.schedule.empty() || !opt.wind_range.empty();
     return checkSolvedPoints(opt.model, m, ops, labelled ? fmt::format("{:g} rpm", sp.rpm) : "");

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <numbers>
 
+#include "linearize/sweep.hpp"
 #include "linearize/trim.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/common.hpp"
@@ -67,10 +68,21 @@ void run(const SteadyOptions& opt) {
   if (!opt.wind_range.empty()) {
     rows = trimSchedule(m, parseRange(opt.wind_range, "--wind"), trim);
   } else {
-    for (const SweepPoint& p : readSchedule(opt.schedule)) {
+    const std::vector<SweepPoint> points = readSchedule(opt.schedule);
+    for (size_t k = 0; k < points.size(); ++k) {
+      const SweepPoint& p = points[k];
       if (!p.wind_speed) throw InputError(opt.schedule + ": the schedule has no wind speed column");
       OperatingCondition c = sweepCondition(m, p);
-      rows.push_back(steadyState(m, c, trim));
+      // A failing row names itself and its point (issue 41), as the sweeps of campbell and export do.
+      const std::string at =
+          opt.schedule + ": operating point " + std::to_string(k + 1) + " (" + sweepPointLabel(m, p) + "): ";
+      try {
+        rows.push_back(steadyState(m, c, trim));
+      } catch (const InputError& e) {
+        throw InputError(at + e.what());
+      } catch (const ComputeError& e) {
+        throw ComputeError(at + e.what());
+      }
     }
   }
   OutputSet files(dir);  // table, script and images together
