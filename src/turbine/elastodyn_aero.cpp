@@ -116,8 +116,14 @@ void addAerodynamics(Builder& b, const DrivetrainParts& dt, const RotorParts& ro
   am.wind.shear_exponent = w.PLExp;
   am.wind.direction = w.PropagationDir * deg;
   am.wind.upflow = w.VFlowAng * deg;
-  // AeroDyn's rotor outputs (names as OpenFAST's channels, SI units).
+  // AeroDyn's rotor outputs (names as OpenFAST's channels, SI units), with its RtSpeed (the rotor
+  // speed ElastoDyn calls RotSpeed; ROSCO's linear models look it up by AeroDyn's name).
   for (Output& o : aeroRotorOutputs()) m.outputs.push_back(std::move(o));
+  if (const int rot = outputIndex(m, "RotSpeed"); rot >= 0) {
+    Output rt = m.outputs[rot];
+    rt.name = "RtSpeed";
+    m.outputs.push_back(std::move(rt));
+  }
 }
 
 void addGeneratorTorqueLaw(Builder& b, const io::ServoDynInput& servo) {

@@ -107,6 +107,25 @@ void addOutputs(Builder& b, const TowerParts& tower, const DrivetrainParts& dt, 
     y.push_back(dofOutput("RootMEdg" + std::to_string(k + 1), "N m", 0, edge));
   }
   if (rotor.teeter >= 0) y.push_back(dofOutput("TeetDefl", "rad", 0, {{rotor.teeter, 1.0}}));
+  // The channels ROSCO's robust scheduling and users read from OpenFAST's .lin files (issue 41):
+  // ElastoDyn's BldPitch1..3 (the pitch coordinates, driven by the pitch inputs), TwrBsMyt (the tower
+  // base fore-aft moment; here the elastic moment EI·Σ φ''(0) q of the tower shapes, as TwrBsMFA) and
+  // NcIMURAys (the nacelle's angular acceleration about its lateral axis ys, which the tilt leaves
+  // horizontal: the nacelle body's y).
+  for (size_t k = 0; k < rotor.pitch.size(); ++k) {
+    y.push_back(dofOutput("BldPitch" + std::to_string(k + 1), "rad", 0, {{rotor.pitch[k], 1.0}}));
+    y.back().blade = static_cast<int>(k);  // rotating frame, as OpenFAST flags it
+  }
+  y.push_back(dofOutput("TwrBsMyt", "N m", 0, fa));
+  Output imu;
+  imu.name = "NcIMURAys";
+  imu.unit = "rad/s^2";
+  imu.kind = OutputKind::Angular;
+  imu.order = 2;
+  imu.body = dt.nacelle;
+  imu.frame_body = dt.nacelle;
+  imu.direction = Vec3::UnitY();
+  y.push_back(std::move(imu));
 }
 
 }  // namespace
