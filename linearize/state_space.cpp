@@ -106,10 +106,13 @@ StateSpaceModel stateSpace(const Model& m, const OperatingPoint& op, const Linea
     s.C += Hqdd * lin.A.middleRows(n, n);
     s.D = Hu + Hqdd * lin.B.middleRows(n, n);
   }
-  for (int k = 0; k < n; ++k)
-    if (s.x[k].azimuth) {
-      s.azimuth = op.q(lin.dofs[k]);
-      s.rotor_speed = op.qd(lin.dofs[k]);
+  // The rotor's azimuth and speed from its rotating coordinate, a state or not: with the generator
+  // DOF off (GenDOF = False) the rotor still turns at the prescribed speed, and a `.lin` header saying
+  // 0 rad/s makes MBC3 silently wrong (issue 41).
+  for (int i = 0; i < m.ndof(); ++i)
+    if (m.dofs[i].rotating) {
+      s.azimuth = op.q(i);
+      s.rotor_speed = op.qd(i);
       break;
     }
   return s;

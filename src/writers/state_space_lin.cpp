@@ -1,10 +1,12 @@
 // `.lin` writer (FAST_Lin layout) for whirl's state-space models.
 #include <cstdio>
-#include <ctime>
+#include <algorithm>
 #include <map>
+#include <optional>
 #include <regex>
 #include <sstream>
 
+#include "src/writers/lin_channels.hpp"
 #include "src/writers/state_space_files.hpp"
 #include "src/model/text.hpp"
 
@@ -23,7 +25,7 @@ std::string elastoDynDescription(const std::string& name) {
   if (std::regex_match(name, m, tower)) {
     const bool fa = m[1] == "FA";
     return ordinal(std::stoi(m[2])) + (fa ? " tower fore-aft" : " tower side-to-side") +
-           " bending-mode DOF (internal DOF index = DOF_T" + (fa ? "FA" : "SS") + m[2].str() + ")";
+           " bending mode DOF (internal DOF index = DOF_T" + (fa ? "FA" : "SS") + m[2].str() + ")";
   }
   if (std::regex_match(name, m, blade)) {
     const bool flap = m[2] == "flap";
@@ -34,6 +36,15 @@ std::string elastoDynDescription(const std::string& name) {
   if (name == "drivetrain") return "Drivetrain rotational-flexibility DOF (internal DOF index = DOF_DrTr)";
   if (name == "yaw") return "Nacelle yaw DOF (internal DOF index = DOF_Yaw)";
   if (name == "teeter") return "Hub teetering DOF (internal DOF index = DOF_Teet)";
+  // The platform's six DOFs as ElastoDyn names them (tests/data/openfast/decks/lin/StandstillSemi_ForID_EDHD.1.lin).
+  static const std::map<std::string, std::string> platform = {
+      {"platform surge", "Platform horizontal surge translation DOF (internal DOF index = DOF_Sg)"},
+      {"platform sway", "Platform horizontal sway translation DOF (internal DOF index = DOF_Sw)"},
+      {"platform heave", "Platform vertical heave translation DOF (internal DOF index = DOF_Hv)"},
+      {"platform roll", "Platform roll tilt rotation DOF (internal DOF index = DOF_R)"},
+      {"platform pitch", "Platform pitch tilt rotation DOF (internal DOF index = DOF_P)"},
+      {"platform yaw", "Platform yaw rotation DOF (internal DOF index = DOF_Y)"}};
+  if (const auto it = platform.find(name); it != platform.end()) return it->second;
   return "";
 }
 
@@ -45,32 +56,88 @@ std::string number(double v) {
 
 std::string flag(int blade) { return blade >= 0 ? "T" : "F"; }
 
-void table(std::ostringstream& o, const char* title, const std::vector<std::string>& desc,
+// One row per variable: OpenFAST's columns (FAST_Lin.f90, WrLinFile_txt_Table): index, operating point,
+// rotating-frame flag, derivative order, description. `head` is the first column's title, which
+// OpenFAST writes as "Row/Column" for states, "Column" for inputs and "Row" for outputs.
+void table(std::ostringstream& o, const char* title, const char* head, const std::vector<std::string>& desc,
            const std::vector<double>& op, const std::vector<int>& blade, const std::vector<int>& order) {
   o << title << "\n";
-  o << "   Row/Column Operating Point          Rotating Frame? Derivative Order Description\n";
+  o << head << " Operating Point          Rotating Frame? Derivative Order Description\n";
   o << "   ---------- ---------------          --------------- ---------------- -----------\n";
   for (size_t i = 0; i < desc.size(); ++i) {
-    char head[96];
-    std::snprintf(head, sizeof head, "%13zu %s %16s %16d         ", i + 1, number(op[i]).c_str(),
+    char row[96];
+    std::snprintf(row, sizeof row, "%13zu %s %16s %16d         ", i + 1, number(op[i]).c_str(),
                   flag(blade[i]).c_str(), order[i]);
-    o << head << withoutControlCharacters(desc[i]) << "\n";  // a newline would start a fake row
+    o << row << withoutControlCharacters(desc[i]) << "\n";  // a newline would start a fake row
   }
   o << "\n";
 }
 
+// "name: rows x cols", then exactly `rows` lines and no empty line: the readers of the field read
+// m rows after the size line and stop at an empty line (ROSCO's getMats.readFASTMatrix, OpenFAST's
+// ReadFASTLinear), so an empty line inside or between blocks loses B, C and D.
 void matrix(std::ostringstream& o, const char* name, const MatX& M) {
   o << name << ": " << M.rows() << " x " << M.cols() << "\n";
   for (Eigen::Index r = 0; r < M.rows(); ++r) {
     for (Eigen::Index c = 0; c < M.cols(); ++c) o << " " << number(M(r, c));
     o << "\n";
   }
-  o << "\n";
 }
 
-std::string withUnit(const std::string& s, const std::string& unit, bool parens) {
-  if (unit.empty()) return s;
-  return s + ", " + (parens ? "(" + unit + ")" : unit);
+std::string withUnit(const std::string& s, const std::string& unit) { return unit.empty() ? s : s + ", " + unit; }
+
+// The modules OpenFAST would have linked for this model, from its channels: InflowWind and AeroDyn
+// with a wind input, ServoDyn with a generator torque law (GenTq), HydroDyn with radiation states.
+std::string moduleList(const StateSpaceModel& m) {
+  auto has = [](const std::vector<StateSpaceVariable>& v, const std::string& prefix) {
+    for (const auto& x : v)
+      if (x.name.rfind(prefix, 0) == 0) return true;
+    return false;
+  };
+  std::string s = "ElastoDyn";
+  if (has(m.u, "wind speed")) s += "; InflowWind; AeroDyn";
+  if (has(m.y, "GenTq")) s += "; ServoDyn";
+  if (has(m.x, "HydroDyn")) s += "; HydroDyn";
+  return s;
+}
+
+// Inputs in OpenFAST's order (InflowWind's wind speed first: ROSCO and ACDC take the first input's
+// operating value as the wind speed), stable within a rank.
+std::vector<size_t> inputOrder(const std::vector<StateSpaceVariable>& u) {
+  std::vector<size_t> order(u.size());
+  for (size_t i = 0; i < u.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](size_t a, size_t b) { return linInputChannel(u[a]).rank < linInputChannel(u[b]).rank; });
+  return order;
+}
+
+// The model as the file writes it: inputs reordered, outputs in OpenFAST's units.
+StateSpaceModel inFileUnits(const StateSpaceModel& m, std::vector<std::string>& ud, std::vector<std::string>& yd) {
+  StateSpaceModel f = m;
+  const std::vector<size_t> order = inputOrder(m.u);
+  for (size_t j = 0; j < order.size(); ++j) {
+    const auto c = static_cast<Eigen::Index>(j), from = static_cast<Eigen::Index>(order[j]);
+    f.u[j] = m.u[order[j]];
+    f.B.col(c) = m.B.col(from);
+    f.D.col(c) = m.D.col(from);
+    ud.push_back(linInputDescription(f.u[j]));
+  }
+  for (size_t i = 0; i < m.y.size(); ++i) {
+    const double scale = linOutputChannel(m.y[i]).scale;
+    const auto r = static_cast<Eigen::Index>(i);
+    f.y[i].op *= scale;
+    f.C.row(r) *= scale;
+    f.D.row(r) *= scale;
+    yd.push_back(linOutputDescription(m.y[i]));
+  }
+  return f;
+}
+
+std::optional<double> windSpeed(const StateSpaceModel& m) {
+  if (m.wind_speed) return m.wind_speed;
+  for (const auto& u : m.u)
+    if (u.name == "wind speed") return u.op;
+  return std::nullopt;
 }
 
 }  // namespace
@@ -105,17 +172,17 @@ std::string linStateDescription(const StateSpaceVariable& x, const std::vector<S
     const std::size_t sp = d.find(' ');
     d = d.substr(0, sp) + " First time derivative of" + d.substr(sp);
   }
-  return withUnit(d, x.unit, false);
+  return withUnit(d, x.unit);
 }
 
-std::string linFileText(const StateSpaceModel& m, const std::string& title) {
+std::string linFileText(const StateSpaceModel& model, const std::string& title) {
+  std::vector<std::string> ud, yd;
+  const StateSpaceModel m = inFileUnits(model, ud, yd);
   std::ostringstream o;
-  const std::time_t now = std::time(nullptr);
-  char date[64];
-  std::strftime(date, sizeof date, "%d-%b-%Y at %H:%M:%S", std::localtime(&now));
-  o << "\nLinearized model: Predictions were generated on " << date << " using whirl " << WHIRL_VERSION
-    << ", double precision\n linked with whirl structural model (exact Jacobians by automatic differentiation; no "
-       "aerodynamics)\n\n";
+  // No time stamp: two runs write the same bytes (issue 48, item 6).
+  o << "\nLinearized model: Predictions were generated using whirl " << WHIRL_VERSION
+    << ", double precision (exact Jacobians by automatic differentiation)\n linked with  " << moduleList(m)
+    << "\n\n";
   // A newline in the title could fake a header line ("Rotor Speed: …") for the readers.
   o << "Description from the FAST input file: " << withoutControlCharacters(title) << "\n\n";
   char line[128];
@@ -131,7 +198,7 @@ std::string linFileText(const StateSpaceModel& m, const std::string& title) {
   field("Simulation time:", 0.0, "s");
   field("Rotor Speed:", m.rotor_speed, "rad/s");
   field("Azimuth:", m.azimuth, "rad");
-  if (m.wind_speed) field("Wind Speed:", *m.wind_speed, "m/s");
+  field("Wind Speed:", windSpeed(m).value_or(0.0), "m/s");  // OpenFAST writes 0 without InflowWind
   count("Number of continuous states:", m.x.size());
   count("Number of discrete states:", 0);
   count("Number of constraint states:", 0);
@@ -139,7 +206,7 @@ std::string linFileText(const StateSpaceModel& m, const std::string& title) {
   count("Number of outputs:", m.y.size());
   o << "   Jacobians included in this file?    No\n\n";
 
-  std::vector<std::string> xd, xdotd, ud, yd;
+  std::vector<std::string> xd, xdotd;
   std::vector<double> xop, xdotop, uop, yop;
   std::vector<int> xb, ub, yb;
   const bool ed = elastoDynStates(m.x);
@@ -150,15 +217,15 @@ std::string linFileText(const StateSpaceModel& m, const std::string& title) {
     xdotop.push_back(m.xdot_op(static_cast<Eigen::Index>(i)));
     xb.push_back(m.x[i].blade);
   }
-  for (const auto& v : m.u) ud.push_back(withUnit("whirl " + v.name, v.unit, false)), uop.push_back(v.op), ub.push_back(v.blade);
-  for (const auto& v : m.y) yd.push_back(withUnit("whirl " + v.name, v.unit, true)), yop.push_back(v.op), yb.push_back(v.blade);
+  for (const auto& v : m.u) uop.push_back(v.op), ub.push_back(v.blade);
+  for (const auto& v : m.y) yop.push_back(v.op), yb.push_back(v.blade);
   const std::vector<bool> first = firstOrderStates(m.x);
   std::vector<int> xorder;
   for (bool f : first) xorder.push_back(f ? 1 : 2);
-  table(o, "Order of continuous states:", xd, xop, xb, xorder);
-  table(o, "Order of continuous state derivatives:", xdotd, xdotop, xb, xorder);
-  if (!m.u.empty()) table(o, "Order of inputs:", ud, uop, ub, std::vector<int>(m.u.size(), 0));
-  if (!m.y.empty()) table(o, "Order of outputs:", yd, yop, yb, std::vector<int>(m.y.size(), 0));
+  table(o, "Order of continuous states:", "   Row/Column", xd, xop, xb, xorder);
+  table(o, "Order of continuous state derivatives:", "   Row/Column", xdotd, xdotop, xb, xorder);
+  if (!m.u.empty()) table(o, "Order of inputs:", "     Column  ", ud, uop, ub, std::vector<int>(m.u.size(), 0));
+  if (!m.y.empty()) table(o, "Order of outputs:", "        Row  ", yd, yop, yb, std::vector<int>(m.y.size(), 0));
   o << "\nLinearized state matrices:\n\n";
   matrix(o, "A", m.A);
   if (!m.u.empty()) matrix(o, "B", m.B);
