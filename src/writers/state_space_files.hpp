@@ -1,12 +1,13 @@
 #pragma once
 /// \file
-/// State-space models written for controller design tools (layouts documented in README.md,
-/// section "State-space export"):
-/// - MATLAB .mat (matio, level 5): one operating point as plain matrices and cell arrays of names;
-///   several as ROSCO's linear-model layout (1 × n cell arrays A, B, C, D, x_ops, u_ops, y_ops, the
-///   index vectors indInps/indOuts and an operating-point table).
-/// - OpenFAST-style `.lin` text, one file per azimuth (FAST_Lin layout; readable by readOpenFastLin,
-///   pyFAST's FASTLinearizationFile and MBC3).
+/// State-space models written for controller design tools (exact layouts and the tools that read
+/// them: docs/user/export-formats.md):
+/// - MATLAB .mat (matio, level 5): ROSCO's linear-model layout for one or many operating points
+///   (1 × n cell arrays A, B, C, D, x_ops, u_ops, y_ops, the index vectors indInps/indOuts, the
+///   operating-point rows, names, units and OpenFAST's channel texts).
+/// - OpenFAST `.lin` text, one file per azimuth, in OpenFAST's layout (FAST_Lin.f90): its header,
+///   input order, descriptions and output units (src/writers/lin_channels.hpp); readable by
+///   readOpenFastLin, openfast_toolbox's FASTLinearizationFile and MBC3, ROSCO's readFASTMatrix.
 /// - JSON with the same content.
 #include <optional>
 #include <string>

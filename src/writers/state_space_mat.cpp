@@ -5,6 +5,7 @@
 #include <limits>
 #include <memory>
 
+#include "src/writers/lin_channels.hpp"
 #include "src/writers/state_space_files.hpp"
 #include "src/model/error.hpp"
 
@@ -75,6 +76,15 @@ std::vector<std::string> units(const std::vector<StateSpaceVariable>& v) {
   return o;
 }
 
+// OpenFAST's channel texts ("ED GenSpeed", "IfW Extended input: …"), without units: the .mat keeps
+// SI units (`*_units`), a `.lin` file OpenFAST's (src/writers/lin_channels.hpp).
+std::vector<std::string> descriptions(const std::vector<StateSpaceVariable>& v,
+                                      LinChannel (*channel)(const StateSpaceVariable&)) {
+  std::vector<std::string> o;
+  for (const auto& x : v) o.push_back(channel(x).text);
+  return o;
+}
+
 std::vector<double> rotating(const std::vector<StateSpaceVariable>& v) {
   std::vector<double> o;
   for (const auto& x : v) o.push_back(x.blade >= 0 ? x.blade + 1 : 0);
@@ -87,17 +97,6 @@ Var stack(const char* name, const std::vector<StateSpaceModel>& ms, MatX StateSp
   std::vector<double> data;
   for (const auto& m : ms) data.insert(data.end(), (m.*field).data(), (m.*field).data() + (m.*field).size());
   return doubles(name, data.data(), {static_cast<size_t>(f.rows()), static_cast<size_t>(f.cols()), ms.size()});
-}
-
-/// n × (number of models) operating points.
-Var stackOps(const char* name, const std::vector<StateSpaceModel>& ms,
-             std::vector<StateSpaceVariable> StateSpaceModel::*field) {
-  std::vector<double> data;
-  for (const auto& m : ms) {
-    const auto o = ops(m.*field);
-    data.insert(data.end(), o.begin(), o.end());
-  }
-  return doubles(name, data.data(), {(ms.front().*field).size(), ms.size()});
 }
 
 class MatFile {
@@ -134,106 +133,95 @@ void names(MatFile& f, const StateSpaceModel& m, const std::string& suffix) {
   f.put(column(("x_rotframe" + suffix).c_str(), rotating(m.x)));
   f.put(column(("u_rotframe" + suffix).c_str(), rotating(m.u)));
   f.put(column(("y_rotframe" + suffix).c_str(), rotating(m.y)));
-}
-
-void perAzimuth(MatFile& f, const std::vector<StateSpaceModel>& az) {
-  f.put(stack("A_az", az, &StateSpaceModel::A));
-  f.put(stack("B_az", az, &StateSpaceModel::B));
-  f.put(stack("C_az", az, &StateSpaceModel::C));
-  f.put(stack("D_az", az, &StateSpaceModel::D));
-  f.put(stackOps("x_op_az", az, &StateSpaceModel::x));
-  f.put(stackOps("u_op_az", az, &StateSpaceModel::u));
-  f.put(stackOps("y_op_az", az, &StateSpaceModel::y));
-  std::vector<double> psi;
-  for (const auto& m : az) psi.push_back(m.azimuth);
-  f.put(row("azimuths", psi));
-  names(f, az.front(), "_az");
+  std::vector<std::string> xd;
+  const bool ed = elastoDynStates(m.x);
+  for (const auto& v : m.x) xd.push_back(linStateDescription(v, m.x, ed));
+  f.put(strings(("x_desc" + suffix).c_str(), xd));
+  f.put(strings(("u_desc" + suffix).c_str(), descriptions(m.u, linInputChannel)));
+  f.put(strings(("y_desc" + suffix).c_str(), descriptions(m.y, linOutputChannel)));
 }
 
 double orNaN(const std::optional<double>& v) { return v.value_or(std::numeric_limits<double>::quiet_NaN()); }
 
+// The point's wind speed: the schedule's, else the model's wind input, else NaN (no aerodynamics).
+double windOf(const ExportPoint& p) {
+  if (p.wind_speed) return *p.wind_speed;
+  for (const auto& v : p.model.u)
+    if (v.name == "wind speed") return v.op;
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
 }  // namespace
 
+// One layout for one or many operating points, ROSCO's (LinearTurbineModel(fromMat=True) in ROSCO's
+// rosco/toolbox/linear/linear_models.py): 1 × n cell arrays A, B, C, D, x_ops, u_ops, y_ops; the first
+// row of every u_ops column is the wind speed ROSCO schedules over (u_ops[0]), the model's inputs
+// follow and indInps / indOuts (1-based) pick B's and C's channels out of u_ops / y_ops. A single point
+// is n = 1 (a separate layout made ROSCO fail with KeyError: 'u_ops', issue 41).
 void writeStateSpaceMat(const StateSpaceExport& e, const std::string& path) {
   if (e.points.empty()) throw InputError(path + ": nothing to export");
   MatFile f(path);
   const StateSpaceModel& first = e.points.front().model;
-  if (e.points.size() == 1) {
-    const ExportPoint& p = e.points.front();
+  const size_t n = e.points.size();
+  std::vector<Var> A, B, C, D, x, xdot, u, y, Aaz, Baz, Caz, Daz, psi;
+  std::vector<double> wind, rpm, pitch, omega;
+  for (const ExportPoint& p : e.points) {
     const StateSpaceModel& m = p.model;
-    f.put(matrix("A", m.A));
-    f.put(matrix("B", m.B));
-    f.put(matrix("C", m.C));
-    f.put(matrix("D", m.D));
-    f.put(column("x_op", ops(m.x)));
-    f.put(column("u_op", ops(m.u)));
-    f.put(column("y_op", ops(m.y)));
-    f.put(column("xdot_op", std::vector<double>(m.xdot_op.data(), m.xdot_op.data() + m.xdot_op.size())));
-    f.put(scalar("rotor_speed", m.rotor_speed));
-    f.put(scalar("rpm", p.rpm));
-    f.put(scalar("wind_speed", orNaN(p.wind_speed)));
-    f.put(scalar("pitch_deg", orNaN(p.pitch_deg)));
-    f.put(scalar("multiblade", m.multiblade ? 1.0 : 0.0));
-    names(f, m, "");
-    if (!p.azimuths.empty()) perAzimuth(f, p.azimuths);
+    if (m.A.rows() != first.A.rows() || m.B.cols() != first.B.cols() || m.C.rows() != first.C.rows())
+      throw ComputeError("export: the operating points have different numbers of states, inputs or outputs");
+    A.push_back(matrix(nullptr, m.A));
+    B.push_back(matrix(nullptr, m.B));
+    C.push_back(matrix(nullptr, m.C));
+    D.push_back(matrix(nullptr, m.D));
+    x.push_back(column(nullptr, ops(m.x)));
+    xdot.push_back(column(nullptr, std::vector<double>(m.xdot_op.data(), m.xdot_op.data() + m.xdot_op.size())));
+    std::vector<double> uo{windOf(p)};
+    for (double v : ops(m.u)) uo.push_back(v);
+    u.push_back(column(nullptr, uo));
+    y.push_back(column(nullptr, ops(m.y)));
+    wind.push_back(windOf(p));
+    rpm.push_back(p.rpm);
+    pitch.push_back(orNaN(p.pitch_deg));
+    omega.push_back(m.rotor_speed);
+    if (!p.azimuths.empty()) {
+      Aaz.push_back(stack(nullptr, p.azimuths, &StateSpaceModel::A));
+      Baz.push_back(stack(nullptr, p.azimuths, &StateSpaceModel::B));
+      Caz.push_back(stack(nullptr, p.azimuths, &StateSpaceModel::C));
+      Daz.push_back(stack(nullptr, p.azimuths, &StateSpaceModel::D));
+      std::vector<double> az;
+      for (const auto& m2 : p.azimuths) az.push_back(m2.azimuth);
+      psi.push_back(row(nullptr, az));
+    }
+  }
+  f.put(cells("A", A, 1, n));
+  f.put(cells("B", B, 1, n));
+  f.put(cells("C", C, 1, n));
+  f.put(cells("D", D, 1, n));
+  f.put(cells("x_ops", x, 1, n));
+  f.put(cells("xdot_ops", xdot, 1, n));
+  f.put(cells("u_ops", u, 1, n));
+  f.put(cells("y_ops", y, 1, n));
+  std::vector<double> ind_u, ind_y;
+  for (size_t i = 0; i < first.u.size(); ++i) ind_u.push_back(static_cast<double>(i + 2));
+  for (size_t i = 0; i < first.y.size(); ++i) ind_y.push_back(static_cast<double>(i + 1));
+  f.put(row("indInps", ind_u));
+  f.put(row("indOuts", ind_y));
+  f.put(row("WindSpeed", wind));
+  f.put(row("RotSpeed_rpm", rpm));
+  f.put(row("RotSpeed", omega));
+  f.put(row("BldPitch_deg", pitch));
+  f.put(scalar("multiblade", first.multiblade ? 1.0 : 0.0));
+  names(f, first, "");
+  if (Aaz.size() == n) {
+    f.put(cells("A_az", Aaz, 1, n));
+    f.put(cells("B_az", Baz, 1, n));
+    f.put(cells("C_az", Caz, 1, n));
+    f.put(cells("D_az", Daz, 1, n));
+    f.put(cells("azimuths", psi, 1, n));
+    names(f, e.points.front().azimuths.front(), "_az");
   } else {
-    // ROSCO's linear-model layout (LinearTurbineModel(fromMat=True)): 1 × n cell arrays.
-    const size_t n = e.points.size();
-    std::vector<Var> A, B, C, D, x, u, y, Aaz, Baz, Caz, Daz, psi;
-    std::vector<double> wind, rpm, pitch;
-    for (const ExportPoint& p : e.points) {
-      const StateSpaceModel& m = p.model;
-      if (m.A.rows() != first.A.rows() || m.B.cols() != first.B.cols() || m.C.rows() != first.C.rows())
-        throw ComputeError("export: the operating points have different numbers of states, inputs or outputs");
-      A.push_back(matrix(nullptr, m.A));
-      B.push_back(matrix(nullptr, m.B));
-      C.push_back(matrix(nullptr, m.C));
-      D.push_back(matrix(nullptr, m.D));
-      x.push_back(column(nullptr, ops(m.x)));
-      std::vector<double> uo{orNaN(p.wind_speed)};  // ROSCO schedules over the first row of u_ops
-      for (double v : ops(m.u)) uo.push_back(v);
-      u.push_back(column(nullptr, uo));
-      y.push_back(column(nullptr, ops(m.y)));
-      wind.push_back(orNaN(p.wind_speed));
-      rpm.push_back(p.rpm);
-      pitch.push_back(orNaN(p.pitch_deg));
-      if (!p.azimuths.empty()) {
-        Aaz.push_back(stack(nullptr, p.azimuths, &StateSpaceModel::A));
-        Baz.push_back(stack(nullptr, p.azimuths, &StateSpaceModel::B));
-        Caz.push_back(stack(nullptr, p.azimuths, &StateSpaceModel::C));
-        Daz.push_back(stack(nullptr, p.azimuths, &StateSpaceModel::D));
-        std::vector<double> az;
-        for (const auto& m2 : p.azimuths) az.push_back(m2.azimuth);
-        psi.push_back(row(nullptr, az));
-      }
-    }
-    f.put(cells("A", A, 1, n));
-    f.put(cells("B", B, 1, n));
-    f.put(cells("C", C, 1, n));
-    f.put(cells("D", D, 1, n));
-    f.put(cells("x_ops", x, 1, n));
-    f.put(cells("u_ops", u, 1, n));
-    f.put(cells("y_ops", y, 1, n));
-    std::vector<double> ind_u, ind_y;
-    for (size_t i = 0; i < first.u.size(); ++i) ind_u.push_back(static_cast<double>(i + 2));
-    for (size_t i = 0; i < first.y.size(); ++i) ind_y.push_back(static_cast<double>(i + 1));
-    f.put(row("indInps", ind_u));
-    f.put(row("indOuts", ind_y));
-    f.put(row("WindSpeed", wind));
-    f.put(row("RotSpeed_rpm", rpm));
-    f.put(row("BldPitch_deg", pitch));
-    names(f, first, "");
-    if (Aaz.size() == n) {
-      f.put(cells("A_az", Aaz, 1, n));
-      f.put(cells("B_az", Baz, 1, n));
-      f.put(cells("C_az", Caz, 1, n));
-      f.put(cells("D_az", Daz, 1, n));
-      f.put(cells("azimuths", psi, 1, n));
-      names(f, e.points.front().azimuths.front(), "_az");
-    } else {
-      for (auto* list : {&Aaz, &Baz, &Caz, &Daz, &psi})
-        for (Var v : *list) Mat_VarFree(v);
-    }
+    for (auto* list : {&Aaz, &Baz, &Caz, &Daz, &psi})
+      for (Var v : *list) Mat_VarFree(v);
   }
   f.put(text("source", e.source));
   f.put(text("model", e.model_name));
