@@ -2,7 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
+#include <cstdio>
+#include <regex>
 #include <utility>
 
 #include "src/io/openfast_lin_names.hpp"
@@ -32,20 +33,64 @@ RotorCoordinates linRotorCoordinates(const OpenFastLin& lin, const MbcLayout& la
   return c;
 }
 
-std::vector<std::vector<OpenFastLin>> groupLinByOperatingPoint(std::vector<OpenFastLin> files) {
-  std::map<std::pair<long long, long long>, std::vector<OpenFastLin>> groups;
+std::string linRootName(const std::string& path) {
+  static const std::regex convention(R"(^(.*)\.\d+\.lin$)", std::regex::icase);
+  std::smatch m;
+  return std::regex_match(path, m, convention) ? m[1].str() : std::string();
+}
+
+namespace {
+
+// Same operating point: rotor speeds within `tolerance` of the larger one (OpenFAST writes them with
+// 4 decimals and a trimmed turbine's differ in the 4th between azimuths), wind speeds likewise.
+bool samePoint(const OpenFastLin& a, const OpenFastLin& b, double tolerance) {
+  auto close = [&](double x, double y, double floor) {
+    return std::abs(x - y) <= tolerance * std::max({std::abs(x), std::abs(y), floor});
+  };
+  if (a.wind_speed.has_value() != b.wind_speed.has_value()) return false;
+  return close(a.rotor_speed, b.rotor_speed, 1e-3) &&
+         (!a.wind_speed || close(*a.wind_speed, *b.wind_speed, 1e-2));
+}
+
+}  // namespace
+
+std::vector<std::vector<OpenFastLin>> groupLinByOperatingPoint(std::vector<OpenFastLin> files, double tolerance) {
+  struct Group {
+    std::string root;
+    std::vector<OpenFastLin> files;
+  };
+  std::vector<Group> groups;
   for (OpenFastLin& lin : files) {
     if (lin.A.size() == 0) throw InputError(lin.path + ": no A matrix (no continuous states)");
-    const long long w = std::llround(1e6 * lin.rotor_speed), v = std::llround(1e4 * lin.wind_speed.value_or(-1));
-    for (const OpenFastLin& other : groups[{w, v}])
+    const std::string root = linRootName(lin.path);
+    Group* into = nullptr;
+    for (Group& g : groups)
+      if (g.root == root && samePoint(g.files.front(), lin, tolerance)) into = &g;
+    if (!into) into = &groups.emplace_back(Group{root, {}});
+    for (const OpenFastLin& other : into->files)
       if (std::abs(std::remainder(lin.azimuth - other.azimuth, 2 * M_PI)) < 1e-6)
         throw InputError(lin.path + ": same operating point and azimuth as " + other.path +
                          " (a repeated azimuth would bias the multiblade average; give each file once)");
-    groups[{w, v}].push_back(std::move(lin));
+    into->files.push_back(std::move(lin));
   }
+  std::stable_sort(groups.begin(), groups.end(), [](const Group& a, const Group& b) {
+    const OpenFastLin &x = a.files.front(), &y = b.files.front();
+    if (x.rotor_speed != y.rotor_speed) return x.rotor_speed < y.rotor_speed;
+    return x.wind_speed.value_or(-1) < y.wind_speed.value_or(-1);
+  });
   std::vector<std::vector<OpenFastLin>> out;
-  for (auto& [key, group] : groups) out.push_back(std::move(group));
+  for (Group& g : groups) out.push_back(std::move(g.files));
   return out;
+}
+
+std::string fewAzimuthsWarning(const std::vector<OpenFastLin>& group) {
+  if (group.size() >= 3 || group.front().rotor_speed == 0.0) return "";
+  char rpm[32];
+  std::snprintf(rpm, sizeof rpm, "%.6g", group.front().rotor_speed * 30 / M_PI);
+  return group.front().path + ": only " + std::to_string(group.size()) + " azimuth" + (group.size() == 1 ? "" : "s") +
+         " at " + rpm +
+         " rpm: the multiblade average of a turning rotor needs at least 3 (OpenFAST's NLinTimes >= 3), the modes of "
+         "this point are approximate";
 }
 
 CampbellPoint linCampbellPoint(const std::vector<OpenFastLin>& group, std::vector<std::string>* notes) {

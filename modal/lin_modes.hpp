@@ -20,11 +20,23 @@ namespace whirl {
 /// are named from participation factors (modal/participation.hpp).
 RotorCoordinates linRotorCoordinates(const OpenFastLin& lin, const MbcLayout& layout);
 
-/// Files grouped by operating point (rotor speed to 1e-6 rad/s, wind speed to 1e-4 m/s), groups in
-/// order of rotor speed then wind speed, files of a group in the order given.
+/// The root name of a file named by OpenFAST's convention `<root>.<k>.lin` (path included:
+/// "out/ws03.0.12.lin" → "out/ws03.0"), empty for any other name.
+std::string linRootName(const std::string& path);
+
+/// Files grouped by operating point: files of one root name (linRootName; the files without one form
+/// a root of their own) whose rotor speeds agree within `tolerance` relative to the larger one (floor
+/// 1e-3 rad/s) and wind speeds likewise (floor 1e-2 m/s). Groups in order of rotor speed then wind
+/// speed, files of a group in the order given.
 /// \throws InputError for a file without an A matrix, or one with the operating point and azimuth
-///         (within 1e-6 rad) of an earlier file: a repeated azimuth would bias the multiblade average.
-std::vector<std::vector<OpenFastLin>> groupLinByOperatingPoint(std::vector<OpenFastLin> files);
+///         (within 1e-6 rad) of an earlier file of its group: a repeated azimuth would bias the
+///         multiblade average.
+std::vector<std::vector<OpenFastLin>> groupLinByOperatingPoint(std::vector<OpenFastLin> files,
+                                                               double tolerance = 1e-3);
+
+/// The warning for a group of a turning rotor with fewer than 3 azimuths (the multiblade transform
+/// needs 3 [Bir2008]); empty when there are enough, or the rotor is parked (one file is exact).
+std::string fewAzimuthsWarning(const std::vector<OpenFastLin>& group);
 
 /// The named modes of one operating point's files (its azimuths): rpm and wind speed from the first
 /// file's header. Rotating outputs that do not pair across blades are left out of the transform

@@ -1,5 +1,7 @@
 #include "src/cli/mode_output.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -9,8 +11,8 @@
 
 namespace whirl::cli {
 
-void printModes(const std::vector<Mode>& modes, const std::vector<std::string>& coords, const std::string& format,
-                const nlohmann::json& header) {
+std::string modesText(const std::vector<Mode>& modes, const std::vector<std::string>& coords,
+                      const std::string& format, const nlohmann::json& header) {
   // An iterative (sparse) solve reports each pair's backward error; the dense path has none.
   bool residuals = !modes.empty();
   for (const auto& m : modes) residuals = residuals && m.residual.has_value();
@@ -20,7 +22,7 @@ void printModes(const std::vector<Mode>& modes, const std::vector<std::string>& 
       s += std::to_string(k + 1) + "," + csvField(modes[k].name) + "," + formatNumber(modes[k].freq_hz) + "," +
            formatNumber(modes[k].damped_freq_hz) + "," + formatNumber(modes[k].damping_ratio) +
            (residuals ? "," + formatNumber(*modes[k].residual) : std::string()) + "\n";
-    std::cout << s;
+    return s;
   } else if (format == "json") {
     nlohmann::json j = header;
     j["coordinates"] = coords;
@@ -44,20 +46,24 @@ void printModes(const std::vector<Mode>& modes, const std::vector<std::string>& 
       if (!modes[k].motion.empty()) mj["motion"] = modeMotionJson(modes[k].motion);
       j["modes"].push_back(mj);
     }
-    std::cout << j.dump(2) << "\n";
-  } else {
-    std::printf("%5s  %-40s %12s %14s %13s%s\n", "index", "name", "freq [Hz]", "damped [Hz]", "damping [-]",
-                residuals ? "   residual" : "");
-    for (size_t k = 0; k < modes.size(); ++k) {
-      char res[32] = "";
-      if (residuals) std::snprintf(res, sizeof res, " %10.1e", *modes[k].residual);
-      std::printf("%5zu  %-40s %12.6f %14.6f %13.6f%s%s\n", k + 1, modes[k].name.c_str(), modes[k].freq_hz,
-                  modes[k].damped_freq_hz,
-                  std::abs(modes[k].damping_ratio) < 5e-7 ? 0.0 : modes[k].damping_ratio,  // no "-0.000000"
-                  res,
-                  modes[k].rigid_body && modes[k].name.find("rigid body") == std::string::npos ? "  (rigid body)" : "");
-    }
+    return j.dump(2) + "\n";
   }
+  // fmt, not a fixed buffer: a mode's name (from a case file or a `.lin` description) has no length bound.
+  std::string out = fmt::format("{:>5}  {:<40} {:>12} {:>14} {:>13}{}\n", "index", "name", "freq [Hz]", "damped [Hz]",
+                                "damping [-]", residuals ? "   residual" : "");
+  for (size_t k = 0; k < modes.size(); ++k) {
+    const Mode& m = modes[k];
+    out += fmt::format("{:>5}  {:<40} {:12.6f} {:14.6f} {:13.6f}{}{}\n", k + 1, m.name, m.freq_hz, m.damped_freq_hz,
+                       std::abs(m.damping_ratio) < 5e-7 ? 0.0 : m.damping_ratio,  // no "-0.000000"
+                       residuals ? fmt::format(" {:10.1e}", *m.residual) : std::string(),
+                       m.rigid_body && m.name.find("rigid body") == std::string::npos ? "  (rigid body)" : "");
+  }
+  return out;
+}
+
+void printModes(const std::vector<Mode>& modes, const std::vector<std::string>& coords, const std::string& format,
+                const nlohmann::json& header) {
+  std::cout << modesText(modes, coords, format, header);
 }
 
 }  // namespace whirl::cli

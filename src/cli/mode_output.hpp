@@ -11,7 +11,12 @@
 
 namespace whirl::cli {
 
-/// `header` is merged into the JSON document (case, operating point, …).
+/// The text of the modes in `format` (table, csv or json); `header` is merged into the JSON document
+/// (case, operating point, …).
+std::string modesText(const std::vector<Mode>& modes, const std::vector<std::string>& coordinates,
+                      const std::string& format, const nlohmann::json& header);
+
+/// modesText on stdout.
 void printModes(const std::vector<Mode>& modes, const std::vector<std::string>& coordinates, const std::string& format,
                 const nlohmann::json& header);
 
