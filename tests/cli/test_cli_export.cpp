@@ -45,7 +45,7 @@ TEST(CliExport, MatOfTheFstMatchesLinearize) {
   const auto dir = test::freshDir("export_mat");
   const auto r = test::whirl("export " + kFst + " --format mat --azimuths 6 --out " + dir.string());
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_THAT(r.out, HasSubstr("32 states, 9 inputs, 15 outputs (multiblade average over 6 azimuths)"));
+  EXPECT_THAT(r.out, HasSubstr("32 states, 9 inputs, 20 outputs (multiblade average over 6 azimuths)"));
   const auto lin = test::whirl("linearize " + kFst + " --out " + (dir / "lin").string());
   ASSERT_EQ(lin.code, 0) << lin.err;
   const auto A = csvMatrix(dir / "lin" / "A.csv");
@@ -53,9 +53,11 @@ TEST(CliExport, MatOfTheFstMatchesLinearize) {
   ASSERT_NE(mat, nullptr);
   matvar_t* v = Mat_VarRead(mat, "A_az");  // azimuth 1 = the model's own azimuth, as `linearize`
   ASSERT_NE(v, nullptr);
-  const size_t n = v->dims[0];
+  const matvar_t* a1 = Mat_VarGetCell(v, 0);  // one layout for one or many points: 1 x n cells
+  ASSERT_NE(a1, nullptr);
+  const size_t n = a1->dims[0];
   ASSERT_EQ(n, A.size());
-  const double* a = static_cast<const double*>(v->data);
+  const double* a = static_cast<const double*>(a1->data);
   for (size_t i = 0; i < n; ++i)
     for (size_t j = 0; j < n; ++j) EXPECT_EQ(a[i + j * n], A[i][j]) << i << "," << j;  // CSV at %.17g: exact
   Mat_VarFree(v);
