@@ -21,10 +21,13 @@
 namespace whirl {
 namespace {
 
-// Generator speed per unit rotor speed: the GenSpeed output's gain on the rotor azimuth.
+// Generator speed per unit rotor speed: the GenSpeed output's gain on the rotor azimuth (the torque law's
+// speed output, or the model's "GenSpeed" without a law); 0 without one.
 double gearRatio(const Model& m, int azimuth) {
+  const int out = m.generator.active() ? m.generator.speed_output : m.findOutput("GenSpeed").value_or(-1);
+  if (out < 0) return 0;
   double g = 0;
-  for (const auto& [d, k] : m.outputs[m.generator.speed_output].terms)
+  for (const auto& [d, k] : m.outputs[out].terms)
     if (d == azimuth) g += k;
   return g;
 }
@@ -62,11 +65,13 @@ class TorqueBalance {
     stiffness_ = g.stiffness;
   }
 
-  Balance operator()(double omega, double pitch) {
-    for (const auto& [w, p, b] : done_)
-      if (w == omega && p == pitch) return b;  // the root finder's last point, evaluated again at the end
-    done_.push_back({omega, pitch, evaluate(omega, pitch)});
-    return std::get<2>(done_.back());
+  /// The balance at rotor speed `omega`, pitch `pitch` and, when not NaN, the generator torque `torque`
+  /// [N m] as the generator-torque input (a controller's torque; NaN: the model's torque law).
+  Balance operator()(double omega, double pitch, double torque = std::numeric_limits<double>::quiet_NaN()) {
+    for (const auto& [w, p, t, b] : done_)  // the root finder's last point, evaluated again at the end
+      if (w == omega && p == pitch && (t == torque || (std::isnan(t) && std::isnan(torque)))) return b;
+    done_.push_back({omega, pitch, torque, evaluate(omega, pitch, torque)});
+    return std::get<3>(done_.back());
   }
 
   int evaluations = 0;
@@ -75,7 +80,7 @@ class TorqueBalance {
   const std::vector<MatX>& stiffness() const { return stiffness_; }
 
  private:
-  Balance evaluate(double omega, double pitch) {
+  Balance evaluate(double omega, double pitch, double torque) {
     ++evaluations;
     Balance b;
     const int az = m_.roles.azimuth.front();
@@ -99,6 +104,7 @@ class TorqueBalance {
       c.rotor_speed = omega;
       c.collective_pitch = pitch;
       c.azimuth = 2 * std::numbers::pi * k / (blades * opt_.azimuths);
+      if (!std::isnan(torque)) c.generator_torque = torque;
       OperatingPoint start = initialPoint(m_, c);
       // Warm start: the previous evaluation's deflections at this azimuth, and its Newton matrix for
       // chord steps (the stiffness barely changes between the trim's nearby rotor speeds or pitches).
@@ -144,7 +150,7 @@ class TorqueBalance {
   std::vector<double> scale_ = std::vector<double>(static_cast<std::size_t>(opt_.azimuths), 0.0);
   VecX y_;
   int tower_ = -1;
-  std::vector<std::tuple<double, double, Balance>> done_;
+  std::vector<std::tuple<double, double, double, Balance>> done_;
 };
 
 // Checks what a steady state needs; `at` starts every message.
@@ -154,7 +160,8 @@ void requireSteadyModel(const Model& m, const std::string& at) {
 }
 
 SteadyState stateOf(const Model& m, const OperatingCondition& c, TorqueBalance& balance) {
-  const Balance b = balance(c.rotor_speed, *c.collective_pitch);
+  const Balance b = balance(c.rotor_speed, *c.collective_pitch,
+                            c.generator_torque.value_or(std::numeric_limits<double>::quiet_NaN()));
   SteadyState out;
   out.condition = c;
   out.aero_torque = b.torque;
@@ -168,6 +175,9 @@ SteadyState stateOf(const Model& m, const OperatingCondition& c, TorqueBalance& 
   if (m.generator.active()) {
     out.generator_speed = gearRatio(m, m.roles.azimuth.front()) * c.rotor_speed;
     out.generator_torque = generatorTorque(m.generator, out.generator_speed);
+  } else if (c.generator_torque) {
+    out.generator_speed = gearRatio(m, m.roles.azimuth.front()) * c.rotor_speed;
+    out.generator_torque = *c.generator_torque;
   }
   return out;
 }
@@ -232,6 +242,140 @@ BrentResult guessedRoot(F&& f, double lo, double hi, double flo, double fhi, dou
   return {x0, f0, evals, false};
 }
 
+// The generator torque [N m] that balances the rotor at rotor speed `omega` and pitch `beta`: the
+// balance falls by about `gear` per N m of generator torque (the torque acts through the gearbox), and
+// is close to linear in it (only the deflections move), so secant steps from that first step converge
+// in two or three evaluations.
+double balancingTorque(TorqueBalance& balance, double omega, double beta, double gear, double ftol,
+                       const std::string& at) {
+  double t0 = 0.0, f0 = balance(omega, beta, t0).f;
+  if (std::abs(f0) < ftol) return t0;
+  double t1 = t0 + f0 / gear, f1 = balance(omega, beta, t1).f;
+  for (int k = 0; k < 20 && std::abs(f1) >= ftol; ++k) {
+    const double slope = (f1 - f0) / (t1 - t0);
+    if (!(slope < 0)) break;
+    t0 = t1, f0 = f1;
+    t1 = t0 - f0 / slope;
+    f1 = balance(omega, beta, t1).f;
+  }
+  if (!(std::abs(f1) < ftol)) throw ComputeError(at + "the generator-torque balance did not converge");
+  return t1;
+}
+
+// ROSCO's steady state at `wind` (docs/theory/controller.md): its wind-speed estimate equals the wind, its
+// integrators have removed every speed error, and the generator torque balances the rotor. In turn:
+// the torque loop's speed (TSR tracking: TSRopt·V/R clipped to [VS_MinOMSpd, VS_RefSpd]; k·Ω²: the
+// balance with Rgn2K·ω², clipped likewise) at the minimum pitch, with the torque that balances it; if
+// that torque exceeds the torque loop's limit, the pitch loop's rated speed PC_RefSpd with the region-3
+// torque and the pitch that balances it; if even the minimum pitch leaves too little aerodynamic torque
+// there, the speed between the two references where the saturated torque balances (region 2½ saturated).
+// Controllers.f90 (VariableSpeedControl, PitchControl) and ControllerBlocks.f90
+// (ComputeVariablesSetpoints, SetpointSmoother, whose shifts vanish in these steady states: below rated
+// it only raises the pitch loop's reference, above rated only lowers the torque loop's).
+SteadyState controllerTrim(const Model& m, double wind, const TrimGuess& guess, const TrimOptions& opt,
+                           const std::string& at) {
+  const RoscoController& c = *opt.controller;
+  const int az = m.roles.azimuth.front();
+  const double gear = gearRatio(m, az);
+  if (!(gear > 0)) throw InputError(at + "the model has no generator speed output (GenSpeed) on the rotor azimuth");
+  if (m.roles.generator_torque_input < 0) throw InputError(at + "the model has no generator-torque input");
+  if (c.VS_ControlMode == 0) {
+    const Where w = c.at("VS_ControlMode");
+    throw InputError(where(w.file, w.line, w.key, "0: no torque control, so no steady state to trim to"));
+  }
+  const double ftol = opt.tolerance * std::max(1.0, gear * c.VS_RtTq);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  TorqueBalance balance(m, wind, guess, opt);
+  const double beta_min = roscoMinimumPitch(c, wind);
+  const double rpm = 30 / std::numbers::pi;
+  auto rpmOf = [&](double gen_speed) { return std::to_string(gen_speed / gear * rpm) + " rpm"; };
+
+  // The torque loop: its speed reference and the branch it is on.
+  double omega = 0, torque = nan;
+  std::string region;
+  const double w_lo = std::max(c.VS_MinOMSpd / gear, c.VS_MinOMSpd > 0 ? 0.0 : opt.min_tsr * wind / m.aero.rotor_radius);
+  const double w_hi = c.VS_RefSpd / gear;
+  if (c.VS_ControlMode == 2) {
+    const double ref = c.VS_TSRopt * wind / c.WE_BladeRadius * c.WE_GearboxRatio;  // ComputeVariablesSetpoints
+    omega = std::clamp(ref, c.VS_MinOMSpd, c.VS_RefSpd) / gear;
+    region = ref <= c.VS_MinOMSpd ? "1.5" : ref >= c.VS_RefSpd ? "2.5" : "2";
+  } else {
+    // k·Ω² (1) and the power- or torque-based TSR tracking (3, 4), whose references settle on k·Ω².
+    auto fk = [&](double w) {
+      const double wg = gear * w;
+      return balance(w, beta_min, c.VS_Rgn2K * wg * wg).f;
+    };
+    const double f_lo = fk(w_lo), f_hi = fk(w_hi);
+    if (f_lo <= 0) {
+      omega = w_lo, region = "1.5";
+    } else if (f_hi >= 0) {
+      omega = w_hi, region = "2.5";
+    } else {
+      const BrentResult r = brent(fk, w_lo, w_hi, f_lo, f_hi, ftol, 1e-10, 100);
+      if (!r.converged) throw ComputeError(at + "the rotor-speed trim on VS_Rgn2K did not converge");
+      omega = r.x, region = "2";
+      const double wg = gear * omega;
+      torque = c.VS_Rgn2K * wg * wg;
+    }
+  }
+  if (std::isnan(torque)) torque = balancingTorque(balance, omega, beta_min, gear, ftol, at);
+  if (torque < c.VS_MinTq)
+    throw ComputeError(at + "below cut-in: at the torque loop's speed " + rpmOf(gear * omega) +
+                       " the aerodynamic torque needs a generator torque of " + std::to_string(torque) +
+                       " N m, below VS_MinTq = " + std::to_string(c.VS_MinTq) + " N m");
+  double pitch = beta_min;
+  if (torque > roscoTorqueLimit(c, gear * omega)) {
+    // Above rated: the pitch loop holds PC_RefSpd with the region-3 torque.
+    if (c.PC_ControlMode == 0)
+      throw ComputeError(at + "the controller cannot hold rated speed: the aerodynamic torque needs " +
+                         std::to_string(torque) + " N m at " + rpmOf(gear * omega) +
+                         ", above the torque limit, and the pitch control is off (PC_ControlMode = 0)");
+    const double w3 = c.PC_RefSpd / gear, t3 = roscoAboveRatedTorque(c, c.PC_RefSpd);
+    const double p_hi = std::min(c.PC_MaxPit, opt.max_pitch);
+    auto fp = [&](double b) { return balance(w3, b, t3).f; };
+    auto top = [&](double b) {
+      const double ft = fp(b);
+      if (ft > 0)
+        throw ComputeError(at + "the controller cannot hold rated speed " + rpmOf(c.PC_RefSpd) +
+                           ": the aerodynamic torque exceeds the region-3 torque even at " +
+                           std::to_string(p_hi * 180 / std::numbers::pi) + " deg pitch");
+      return ft;
+    };
+    const double f_min = fp(beta_min);
+    if (f_min > 0) {
+      double slope = guess.pitch_slope;
+      const BrentResult r = guess.pitch > beta_min
+                                ? guessedRoot(fp, beta_min, p_hi, f_min, nan, guess.pitch, 0.01, ftol, top, slope)
+                                : brent(fp, beta_min, p_hi, f_min, top(p_hi), ftol, 1e-10, 100);
+      if (!r.converged) throw ComputeError(at + "the pitch trim did not converge");
+      omega = w3, torque = t3, pitch = r.x, region = "3";
+    } else {
+      // Torque at its limit, pitch at its minimum: the speed rises above the torque loop's reference
+      // until the aerodynamic torque meets the limit, below the pitch loop's.
+      auto fs = [&](double w) { return balance(w, beta_min, roscoTorqueLimit(c, gear * w)).f; };
+      const double f_lo = fs(omega);
+      if (!(w3 > omega) || !(f_lo > 0))
+        throw ComputeError(at + "no steady state between the torque loop's speed " + rpmOf(gear * omega) +
+                           " and the pitch loop's " + rpmOf(c.PC_RefSpd) + " with the torque at its limit");
+      const BrentResult r = brent(fs, omega, w3, f_lo, f_min, ftol, 1e-10, 100);
+      if (!r.converged) throw ComputeError(at + "the rotor-speed trim at the torque limit did not converge");
+      omega = r.x, torque = roscoTorqueLimit(c, gear * omega), region = "2.5 saturated";
+    }
+  }
+  if (pitch == beta_min && beta_min > c.PC_FinePit) region += " + min pitch";
+  OperatingCondition cond;
+  cond.wind_speed = wind;
+  cond.rotor_speed = omega;
+  cond.collective_pitch = pitch;
+  cond.generator_torque = torque;
+  SteadyState out = stateOf(m, cond, balance);
+  out.above_rated = region.starts_with("3");
+  out.region = region;
+  out.min_pitch = beta_min;
+  out.generator_efficiency = c.VS_GenEff;
+  return out;
+}
+
 }  // namespace
 
 SteadyState trimAtWindSpeed(const Model& m, double wind, const TrimOptions& opt) {
@@ -241,6 +385,10 @@ SteadyState trimAtWindSpeed(const Model& m, double wind, const TrimOptions& opt)
 SteadyState trimAtWindSpeed(const Model& m, double wind, const TrimGuess& guess, const TrimOptions& opt) {
   const std::string at = "trim at " + std::to_string(wind) + " m/s: ";
   requireSteadyModel(m, at);
+  if (opt.controller) {
+    if (!(wind > 0) || !std::isfinite(wind)) throw InputError(at + "the wind speed must be positive");
+    return controllerTrim(m, wind, guess, opt, at);
+  }
   if (!m.generator.active())
     throw InputError(at + "the model has no generator torque law (ServoDyn VSContrl = 1, or 0 with GenModel = 1 or 2)");
   if (!(wind > 0) || !std::isfinite(wind)) throw InputError(at + "the wind speed must be positive");

@@ -17,6 +17,7 @@
 #include "linearize/operating_point.hpp"
 #include "linearize/sweep.hpp"
 #include "src/model/operating_condition.hpp"
+#include "src/model/rosco_controller.hpp"
 
 namespace whirl {
 
@@ -26,12 +27,27 @@ struct TrimOptions {
   double min_pitch = 0.0;       ///< fine pitch [rad]
   double max_pitch = 0.7;       ///< upper end of the pitch bracket [rad] (40°)
   double tolerance = 1e-9;      ///< on the torque balance, relative to the rated generator torque × gear ratio
+  /// ROSCO's controller of the deck (io::readDeckController, src/io/discon_input.hpp), or null. When set,
+  /// the trim settles where that controller does (docs/theory/controller.md), with the generator torque
+  /// it commands as the condition's generator torque (the model's torque law, if any, is not used).
+  const RoscoController* controller = nullptr;
 };
 
 /// A steady operating point, averaged over the azimuths of one blade passage.
 struct SteadyState {
   OperatingCondition condition;  ///< wind speed, rotor speed and pitch (at the balance, when trimmed)
   bool above_rated = false;      ///< pitch trimmed at rated speed
+  /// With a controller (Model::controller): the branch of its laws the point is on, "1.5" (minimum
+  /// generator speed), "2" (speed tracks the optimal tip-speed ratio, or k·Ω² in balance), "2.5" (rated
+  /// speed of the torque loop, torque below its limit), "2.5 saturated" (torque at its limit, pitch at
+  /// its minimum, speed between the two loops' references) or "3" (pitch loop at PC_RefSpd); a
+  /// "+ min pitch" suffix when the pitch sits on ROSCO's minimum-pitch schedule above fine pitch
+  /// (PS_Mode). Empty without a controller.
+  std::string region;
+  double min_pitch = 0;          ///< the controller's minimum pitch at this wind speed [rad] (0 without one)
+  /// Electrical over mechanical power of the generator: the controller's VS_GenEff; 1 otherwise (a torque
+  /// law's efficiency is GeneratorTorqueLaw::efficiency).
+  double generator_efficiency = 1;
   double aero_torque = 0;        ///< azimuth average of the rotor aerodynamic torque [N m]
   double thrust = 0;             ///< azimuth average of the rotor aerodynamic thrust [N]
   double generator_torque = 0;   ///< of the torque law at the generator speed [N m, high-speed shaft]
@@ -55,7 +71,8 @@ SteadyState steadyState(const Model& model, const OperatingCondition& condition,
 
 /// The trimmed point at `wind_speed` [m/s]. Needs aerodynamics, a rotating coordinate and a generator
 /// torque law (ServoDyn VSContrl = 1, or an induction generator: then the speed on its torque-slip curve
-/// at fine pitch). Throws ComputeError saying what was tried when no balance exists (wind too low to turn
+/// at fine pitch) or ROSCO's controller (TrimOptions::controller: the point its laws settle at, with the
+/// generator torque it commands as the condition's generator_torque; docs/theory/controller.md). Throws ComputeError saying what was tried when no balance exists (wind too low to turn
 /// the rotor, rated power not reachable below the maximum pitch, torque beyond the pull-out torque).
 SteadyState trimAtWindSpeed(const Model& model, double wind_speed, const TrimOptions& opt = {});
 
@@ -89,7 +106,8 @@ std::vector<SteadyState> trimSchedule(const Model& model, const std::vector<doub
 /// and its condition.
 SweepPoint sweepPointOf(const SteadyState& t);
 
-/// The trimmed sweep points at the wind speeds START:STEP:STOP of `spec` (the `--wind` option).
+/// The trimmed sweep points at the wind speeds START:STEP:STOP of `spec` (the `--wind` option); a
+/// controller's torque is in each point's condition.generator_torque.
 std::vector<SweepPoint> trimmedPoints(const Model& model, const std::string& spec, const TrimOptions& opt = {});
 
 }  // namespace whirl

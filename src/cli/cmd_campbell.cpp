@@ -11,6 +11,7 @@
 #include "src/cli/commands.hpp"
 #include "src/cli/common.hpp"
 #include "src/writers/output_set.hpp"
+#include "src/io/discon_input.hpp"
 #include "src/io/schedule.hpp"
 #include "src/model/error.hpp"
 #include "src/parallel/session.hpp"
@@ -35,9 +36,16 @@ void run(const CampbellOptions& opt) {
     throw InputError(
         "campbell: give exactly one of --rpm START:STEP:STOP, --schedule FILE and --wind START:STEP:STOP");
   const Model m = loadModel(opt.model);
+  // Along the wind: trimmed with the deck's ROSCO controller when it has one (docs/user/controller.md).
+  auto trimmed = [&] {
+    const std::optional<RoscoController> controller = io::readDeckController(opt.model.case_path, opt.model.sets);
+    TrimOptions trim;
+    if (controller) trim.controller = &*controller;
+    return trimmedPoints(m, opt.wind_range, trim);
+  };
   const std::vector<SweepPoint> points = !opt.rpm_range.empty()  ? rpmRange(opt.rpm_range)
                                          : !opt.schedule.empty() ? readSchedule(opt.schedule)
-                                                                 : trimmedPoints(m, opt.wind_range);
+                                                                 : trimmed();
   const std::string dir = opt.out.empty() ? defaultOutputFolder(opt.model.case_path) : opt.out;
   prepareOutputFolder(dir);
 

@@ -10,6 +10,7 @@
 #include "linearize/trim.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/common.hpp"
+#include "src/io/discon_input.hpp"
 #include "src/io/schedule.hpp"
 #include "src/writers/output_set.hpp"
 #include "src/writers/state_space_files.hpp"
@@ -62,7 +63,11 @@ void run(const CliOptions& opt) {
     if (base.roles.azimuth.empty())
       throw InputError("--rpm: the model has no rotating DOF (mark the azimuth with `rotating: true`)");
   } else if (!opt.wind_range.empty()) {
-    points = trimmedPoints(base, opt.wind_range);  // each wind speed trimmed, as `whirl steady`
+    // Each wind speed trimmed, as `whirl steady` (with the deck's ROSCO controller when it has one).
+    const std::optional<RoscoController> controller = io::readDeckController(opt.model.case_path, opt.model.sets);
+    TrimOptions trim;
+    if (controller) trim.controller = &*controller;
+    points = trimmedPoints(base, opt.wind_range, trim);
   } else {
     SweepPoint p;  // the model's own rotor speed, or --rpm
     p.condition = operatingCondition(base, opt.model);

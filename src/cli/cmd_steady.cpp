@@ -11,6 +11,7 @@
 #include "src/cli/commands.hpp"
 #include "src/cli/common.hpp"
 #include "src/io/csv.hpp"
+#include "src/io/discon_input.hpp"
 #include "src/writers/gnuplot.hpp"
 #include "src/io/schedule.hpp"
 #include "src/writers/output_set.hpp"
@@ -63,6 +64,9 @@ void run(const SteadyOptions& opt) {
   prepareOutputFolder(dir);
   TrimOptions trim;
   trim.azimuths = opt.azimuths;
+  // The deck's ROSCO controller, when it names one: the trim settles where it does (docs/user/controller.md).
+  const std::optional<RoscoController> controller = io::readDeckController(opt.model.case_path, opt.model.sets);
+  if (controller) trim.controller = &*controller;
   const auto start = std::chrono::steady_clock::now();
   std::vector<SteadyState> rows;
   if (!opt.wind_range.empty()) {
@@ -93,12 +97,11 @@ void run(const SteadyOptions& opt) {
   const std::vector<std::string> written = files.paths();
   std::printf("%8s %9s %8s %10s %10s %9s %7s %7s %6s\n", "wind", "rpm", "pitch", "P_aero kW", "P_gen kW", "T kN", "Cp",
               "Ct", "TSR");
-  const double eff = m.generator.active() ? m.generator.efficiency : 1.0;
   for (const SteadyState& s : rows) {
     const SteadyRow r = steadyRow(m, s);
     std::printf("%8.2f %9.4f %8.4f %10.1f %10.1f %9.2f %7.4f %7.4f %6.3f\n", *s.condition.wind_speed,
                 s.condition.rotor_speed * 30 / kPi, s.condition.collective_pitch.value_or(0) * 180 / kPi,
-                s.aero_torque * s.condition.rotor_speed / 1e3, s.generator_torque * s.generator_speed * eff / 1e3,
+                s.aero_torque * s.condition.rotor_speed / 1e3, r.values[4],
                 s.thrust / 1e3, r.cp, r.ct, r.tsr);
   }
   std::printf("wrote");

@@ -13,6 +13,7 @@
 
 #include "src/io/elastodyn_common.hpp"
 #include "src/io/fst_input.hpp"
+#include "src/io/input_file.hpp"
 #include "src/io/openfast_overrides.hpp"
 #include "src/io/openfast_turbine.hpp"
 #include "src/io/openfast_input.hpp"
@@ -514,11 +515,9 @@ std::optional<RoscoController> readDeckController(const std::filesystem::path& d
 }
 
 RoscoController readDiscon(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in || std::filesystem::is_directory(file)) throw InputError(where(file.string(), 0, "", "cannot open file"));
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return parseDiscon(ss.str(), file);
+  std::string text;  // the one preamble of every input file (regular files only, size bounded)
+  if (!readInputFile(file.string(), text)) throw InputError(where(file.string(), 0, "", "cannot open file"));
+  return parseDiscon(text, file);
 }
 
 }  // namespace whirl::io

@@ -120,9 +120,9 @@ std::optional<std::string> externalTorqueController(const ServoDynInput& servo) 
   std::error_code ec;
   if (vs == 5 && f.has("DLL_InFile") && std::filesystem::is_regular_file(f.getPath("DLL_InFile"), ec))
     return f.where("VSContrl", f.find("VSContrl")->raw +
-                                   ": torque (and pitch) from ROSCO, whose DISCON.IN whirl reads (io::readDiscon); the "
-                                   "linear model is open loop (generator torque and pitch are inputs); trimming along "
-                                   "the wind with that controller is not implemented yet");
+                                   ": torque (and pitch) from ROSCO, whose DISCON.IN whirl reads (io::readDiscon): the "
+                                   "trim along the wind settles where that controller does; the linear model is open "
+                                   "loop (generator torque and pitch are inputs)");
   return f.where("VSContrl", f.find("VSContrl")->raw + ": " + what +
                                  ", which whirl does not run: the linear model is open loop (the generator torque "
                                  "is an input, its speed feedback left out); trimming along the wind needs a torque "

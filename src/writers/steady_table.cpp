@@ -25,12 +25,16 @@ SteadyRow steadyRow(const Model& m, const SteadyState& s) {
   r.cp = s.aero_torque * omega / (0.5 * rho * area * U * U * U);
   r.ct = s.thrust / (0.5 * rho * area * U * U);
   r.tsr = omega * R / U;
-  const double eff = m.generator.active() ? m.generator.efficiency : 1.0;
+  const double eff = m.generator.active() ? m.generator.efficiency : s.generator_efficiency;
   r.values = {U, omega * 30 / kPi, s.condition.collective_pitch.value_or(0) * 180 / kPi,
               s.aero_torque * omega / 1e3, s.generator_torque * s.generator_speed * eff / 1e3,
               s.aero_torque / 1e3, s.thrust / 1e3, r.cp, r.ct, r.tsr, s.tip_deflection, s.tower_top_fa,
               s.generator_torque / 1e3};
-  r.region = !m.generator.active() ? "given" : s.above_rated ? "above rated" : "below rated";
+  // A controller's branch (SteadyState::region: "ROSCO 2", "ROSCO 3", …), else the torque law's side of rated.
+  r.region = !s.region.empty()        ? "ROSCO " + s.region
+             : !m.generator.active() ? "given"
+             : s.above_rated         ? "above rated"
+                                     : "below rated";
   return r;
 }
 
