@@ -31,6 +31,9 @@ if [ $# -gt 0 ]; then harnesses=("$@"); fi
 
 bash scripts/install-deps.sh clang libclang-rt-14-dev > /dev/null
 launcher=()
+# ccache keys on paths relative to the folder above the repository (as scripts/build.sh), so a fresh
+# clone (CI) reuses the objects of an earlier build on the same machine.
+export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$(dirname "$PWD")}"
 command -v ccache > /dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
 if [ ! -f "$out/CMakeCache.txt" ]; then
   nice -n 19 cmake -S . -B "$out" -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DWHIRL_FUZZ=ON \

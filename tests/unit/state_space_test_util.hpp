@@ -12,7 +12,7 @@
 
 namespace whirl::testing {
 
-inline const std::string kNrel5mwFst = WHIRL_SOURCE_DIR "/cases/nrel5mw/Main_Onshore.fst";
+inline const std::string kNrel5mwFst = std::string(WHIRL_SOURCE_DIR) + "/cases/nrel5mw/Main_Onshore.fst";
 
 inline Model nrel5mw(const std::vector<std::string>& overrides = {}) { return readElastoDynModel(kNrel5mwFst, overrides); }
 

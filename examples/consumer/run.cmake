@@ -26,3 +26,21 @@ endif()
 if(NOT out MATCHES "tower FA 1: 0\\.3272 Hz")
   message(FATAL_ERROR "expected 'tower FA 1: 0.3272 Hz' in the output")
 endif()
+
+# The same program built by pkg-config alone (whirl.pc), as a Makefile or Meson user would.
+set(ENV{PKG_CONFIG_PATH} "${WORK}/stage/lib/pkgconfig:$ENV{PKG_CONFIG_PATH}")
+execute_process(COMMAND pkg-config --cflags --libs whirl RESULT_VARIABLE rc OUTPUT_VARIABLE flags
+  ERROR_VARIABLE err OUTPUT_STRIP_TRAILING_WHITESPACE)
+if(rc)
+  message(FATAL_ERROR "pkg-config whirl failed: ${err}")
+endif()
+separate_arguments(flags UNIX_COMMAND "${flags}")
+execute_process(COMMAND ${CXX} -O2 ${SOURCE}/main.cpp ${flags} -o ${WORK}/whirl_consumer_pc
+  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(rc)
+  message(FATAL_ERROR "build with pkg-config flags failed:\n${out}\n${err}")
+endif()
+execute_process(COMMAND ${WORK}/whirl_consumer_pc ${CASE} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(rc OR NOT out MATCHES "tower FA 1: 0\\.3272 Hz")
+  message(FATAL_ERROR "the pkg-config build printed '${out}' (${rc}): ${err}")
+endif()

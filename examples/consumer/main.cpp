@@ -3,10 +3,10 @@
 #include <cstdio>
 #include <exception>
 
-#include "linearize/linearize.hpp"
-#include "linearize/operating_point.hpp"
-#include "modal/modes.hpp"
-#include "src/io/case_file.hpp"
+#include <whirl/linearize/linearize.hpp>
+#include <whirl/linearize/operating_point.hpp>
+#include <whirl/modal/modes.hpp>
+#include <whirl/src/io/case_file.hpp>
 
 int main(int argc, char** argv) {
   if (argc != 2) {
