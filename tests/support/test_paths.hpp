@@ -5,7 +5,7 @@
 /// is compiled with the absolute paths, so every other test object is the same in any clone or
 /// worktree and ccache reuses it (CI builds in a fresh clone).
 
-namespace whirl::test {
+namespace whirl_test_paths {
 
 /// The repository root of this build (no trailing slash).
 const char* sourceDir();
@@ -13,4 +13,4 @@ const char* sourceDir();
 /// The `whirl` executable of this build.
 const char* whirlBinary();
 
-}  // namespace whirl::test
+}  // namespace whirl_test_paths
