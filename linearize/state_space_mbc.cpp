@@ -119,16 +119,6 @@ StateSpaceModel multibladeAverage(const std::vector<StateSpaceModel>& models, st
   avg.B = r.B.size() ? r.B : MatX::Zero(first.x.size(), first.u.size());
   avg.C = r.C.size() ? r.C : MatX::Zero(first.y.size(), first.x.size());
   avg.D = r.D.size() ? r.D : MatX::Zero(first.y.size(), first.u.size());
-  // The free azimuth of a turning rotor is a rigid-body coordinate: over a revolution the average of
-  // the loads' derivative along it is that of a periodic function's derivative, zero (exactly, for
-  // the harmonics the uniform azimuth grid resolves). Its column is set to that zero so that its
-  // root is exactly 0 (round-off left ±6.5e-4 1/s on the NREL 5MW, issue 41).
-  if (models.size() > 1 && first.rotor_speed != 0.0)
-    for (size_t i = 0; i < first.x.size(); ++i)
-      if (first.x[i].azimuth) {
-        avg.A.col(static_cast<Eigen::Index>(i)).setZero();
-        avg.C.col(static_cast<Eigen::Index>(i)).setZero();
-      }
   for (size_t i = 0; i < avg.x.size(); ++i) avg.x[i].op = xop(i) * inv;
   avg.xdot_op = xdot * inv;
   for (size_t i = 0; i < avg.u.size(); ++i) avg.u[i].op = uop(i) * inv;

@@ -299,12 +299,6 @@ RotorModes multibladeModes(const RotorCoordinates& c, const MbcLayout& layout, c
     out.num_blades = nb;
     mbc = mbcAverage(layout, samples);
     out.A = mbc.A;
-    // The free azimuth's column of the revolution's average is zero (the average of a periodic
-    // function's derivative; linearize/state_space_mbc.cpp, multibladeAverage): exactly, so that its
-    // root is 0 and not ±6.5e-4 1/s of round-off (issue 41).
-    if (samples.size() > 1 && rotor_speed != 0.0)
-      for (int i = 0; i < n; ++i)
-        if (c.azimuth[i]) out.A.col(state_of[i]).setZero();
     // Coordinate groups: the j-th coordinate of every blade forms one set named after blade 1's.
     std::vector<std::vector<int>> per_blade(nb);
     for (int i = 0; i < n; ++i)
