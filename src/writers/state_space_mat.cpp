@@ -32,6 +32,16 @@ Var row(const char* name, const std::vector<double>& v) { return doubles(name, v
 
 Var column(const char* name, const std::vector<double>& v) { return doubles(name, v.data(), {v.size(), 1}); }
 
+/// A row of 1-based indices as 32-bit integers: numpy indexes with them as loaded (ROSCO's
+/// LinearTurbineModel takes `indInps[0] - 1` as an index array; doubles would not index).
+Var indices(const char* name, std::vector<int32_t> v) {
+  size_t dims[2] = {1, v.size()};
+  static int32_t none = 0;
+  Var m = Mat_VarCreate(name, MAT_C_INT32, MAT_T_INT32, 2, dims, v.empty() ? &none : v.data(), 0);
+  if (!m) throw ComputeError(std::string(".mat: cannot create variable ") + name);
+  return m;
+}
+
 Var text(const char* name, const std::string& s) {
   std::string ascii = s;
   for (char& c : ascii)
@@ -201,11 +211,11 @@ void writeStateSpaceMat(const StateSpaceExport& e, const std::string& path) {
   f.put(cells("xdot_ops", xdot, 1, n));
   f.put(cells("u_ops", u, 1, n));
   f.put(cells("y_ops", y, 1, n));
-  std::vector<double> ind_u, ind_y;
-  for (size_t i = 0; i < first.u.size(); ++i) ind_u.push_back(static_cast<double>(i + 2));
-  for (size_t i = 0; i < first.y.size(); ++i) ind_y.push_back(static_cast<double>(i + 1));
-  f.put(row("indInps", ind_u));
-  f.put(row("indOuts", ind_y));
+  std::vector<int32_t> ind_u, ind_y;
+  for (size_t i = 0; i < first.u.size(); ++i) ind_u.push_back(static_cast<int32_t>(i + 2));
+  for (size_t i = 0; i < first.y.size(); ++i) ind_y.push_back(static_cast<int32_t>(i + 1));
+  f.put(indices("indInps", ind_u));
+  f.put(indices("indOuts", ind_y));
   f.put(row("WindSpeed", wind));
   f.put(row("RotSpeed_rpm", rpm));
   f.put(row("RotSpeed", omega));

@@ -50,8 +50,10 @@ TEST(CliFreeYaw, WeakYawSpringNamesTheYaw) {
       "--set TwFADOF1=True --set TwSSDOF1=True --set TwFADOF2=True --set TwSSDOF2=True --rpm 9:1:9 --azimuths 4 "
       "--no-plot --out '" + dir.string() + "'");
   EXPECT_NE(r.code, 0);
-  EXPECT_THAT(r.err, HasSubstr("tests/data/openfast/aero/toolbox/Main.fst: operating point did not converge in 50 "
-                               "Newton iterations"));
+  // The file, then the sweep point that failed (issue 41: errors name the operating point), then why.
+  EXPECT_THAT(r.err, HasSubstr("tests/data/openfast/aero/toolbox/Main.fst: operating point 1 (9 rpm, pitch 0 deg, "
+                               "azimuth 0 deg): "));
+  EXPECT_THAT(r.err, HasSubstr("operating point did not converge in 50 Newton iterations"));
   EXPECT_THAT(r.err, HasSubstr("DOF 'yaw' is nearly unrestrained (stiffness 1 N m/rad) and a load of"));
   EXPECT_THAT(r.err, HasSubstr("hold it with --set YawDOF=False, or a yaw spring (ServoDyn YawSpr with CompServo = 1)"));
   EXPECT_FALSE(fs::exists(dir / "campbell.csv"));

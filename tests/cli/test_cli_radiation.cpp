@@ -73,8 +73,9 @@ TEST(CliRadiation, FloquetRefusesTheStatesOnOneLine) {
       "campbell cases/iti_barge/Test22.fst --set CompAero=0 --set NumBl=2 --rpm 6:6:12 --no-plot --out " +
       (dir / "out").string());
   EXPECT_EQ(r.code, 1);
-  EXPECT_THAT(r.err, HasSubstr("whirl: error: Floquet analysis (fewer than 3 blades, turning) of a model with "
-                               "first-order states (HydroDyn radiation) is not supported: --set RdtnMod=0"));
+  EXPECT_THAT(r.err, HasSubstr("whirl: error: operating point 1 (6 rpm, pitch 0 deg, azimuth 0 deg): Floquet analysis "
+                               "(fewer than 3 blades, turning) of a model with first-order states (HydroDyn "
+                               "radiation) is not supported: --set RdtnMod=0"));
   EXPECT_FALSE(std::filesystem::exists(dir / "out" / "campbell.csv"));
 }
 

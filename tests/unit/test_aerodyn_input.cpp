@@ -217,10 +217,6 @@ INSTANTIATE_TEST_SUITE_P(
         Refusal{"TailFin", kV3, "False         TFinAero", "True          TFinAero",
                 "70: TFinAero: True not supported by whirl (tail-fin aerodynamics; whirl supports only TFinAero = "
                 "False)"},
-        Refusal{"AirfoilTableInterpolation", kV3, "          1   AFTabMod", "          3   AFTabMod",
-                "43: AFTabMod: 3 not supported by whirl (interpolation between airfoil tables on UserProp; whirl "
-                "supports only AFTabMod = 1 (the first table of each airfoil file) or 2 (tables on the Reynolds "
-                "number))"},
         Refusal{"CoupledSkew", kV3, "          2   SkewMod", "          3   SkewMod",
                 "23: SkewMod: 3 not supported by whirl (the coupled skewed-wake model (dropped in OpenFAST v4); "
                 "whirl supports only SkewMod = 0, 1 or 2)"}),
@@ -320,7 +316,9 @@ TEST(AeroDynInputErrors, MissingKeysAndBothSpellings) {
   EXPECT_EQ(editedError(kV5, "          1   Wake_Mod ", "          1   Wake_Mod\n          1   WakeMod "),
             "<file>:6: Wake_Mod: cannot have both Wake_Mod and its legacy spelling WakeMod (line 7)");
   EXPECT_EQ(editedError(kV5, "          1   Wake_Mod ", "          1   Wake_Model "),
-            "<file>: Wake_Mod: key not found in this file (nor its legacy spelling WakeMod)");
+            "<file>:6: Wake_Model: not a key of an OpenFAST AeroDyn v15 file (expected WakeMod or Wake_Mod or "
+            "AFAeroMod here): OpenFAST reads by position, so an extra line shifts every later value; remove it (or "
+            "check the file type)");
 }
 
 TEST(AeroDynInputErrors, AirfoilListShorterThanNumAFfiles) {

@@ -188,7 +188,8 @@ TEST(AirfoilInputErrors, HeaderValues) {
   EXPECT_EQ(du21Error("          1   NonDimArea", "          x   NonDimArea"),
             "<file>:7: NonDimArea: 'x' is not a number");
   EXPECT_EQ(du21Error("       0.75   Re ", "       0.75   Reynolds "),
-            "<file>:10: NumTabs: 1 tables announced, no 'Re' line for table 1 after line 10 (truncated file?)");
+            "<file>:14: Reynolds: not a key of an OpenFAST AeroDyn airfoil file (expected Re here): OpenFAST reads by "
+            "position, so an extra line shifts every later value; remove it (or check the file type)");
 }
 
 TEST(AirfoilInputErrors, FewerTablesThanNumTabs) {

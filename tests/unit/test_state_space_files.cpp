@@ -135,7 +135,8 @@ TEST(StateSpaceFiles, MatWithSeveralOperatingPointsHasRoscosLayout) {
   Mat_VarFree(u);
   matvar_t* ind = r.read("indInps");
   ASSERT_EQ(ind->dims[1], e.points[0].model.u.size());
-  EXPECT_EQ(static_cast<const double*>(ind->data)[0], 2.0);  // 1-based, after the wind speed
+  ASSERT_EQ(ind->class_type, MAT_C_INT32);  // integers: numpy indexes with them as loaded
+  EXPECT_EQ(static_cast<const int32_t*>(ind->data)[0], 2);  // 1-based, after the wind speed
   Mat_VarFree(ind);
 }
 

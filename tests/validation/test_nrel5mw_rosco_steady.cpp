@@ -25,8 +25,11 @@ constexpr double kDeg = std::numbers::pi / 180;
 // - rotor speed: VS_FBP_Omega (its omega_op · WE_GearboxRatio, 5 significant digits) / 97;
 // - pitch: PS_BldPitchMin (4 decimals) below rated, where the pitch sits on its minimum; above rated
 //   (the last 30 wind speeds, v_for_gs) ROSCO's pitch_op, written as PC_GS_angles (3 decimals, rad).
-// Tolerances: rotor speed 1 %, pitch 0.2° (issue 43: whirl's BEM on the elastic blades against ROSCO's
-// rigid-rotor Cp surface, Cp_Ct_Cq.NREL5MW.txt, sampled every 0.5° of pitch).
+// Tolerances: rotor speed 1 %, pitch 0.2° (issue 43). ROSCO's Cp surface (Cp_Ct_Cq.NREL5MW.txt, every
+// 0.5° of pitch) is a rigid rotor's, so whirl's trim is compared with the blades' flap and edge DOFs
+// frozen (like with like). With elastic blades the pitch just above rated is lower still: measured
+// 6.85° against ROSCO's 7.105° at 13.2 m/s (6.97° rigid: the blades' deflection and twist-free bending
+// unload them), 0.07° apart at 16.4 m/s, the same within 0.03° from 20 m/s.
 struct RoscoPoint {
   double wind;            // PS_WindSpeeds [m/s]
   double gen_speed;       // VS_FBP_Omega [rad/s]
@@ -45,7 +48,7 @@ const RoscoPoint kPoints[] = {
 };
 
 TEST(Nrel5mwRoscoSteadySlow, ScheduleMatchesRoscoOperatingPoints) {
-  const Model m = readElastoDynModel(kDeck);
+  const Model m = readElastoDynModel(kDeck, {"FlapDOF1=False", "FlapDOF2=False", "EdgeDOF=False"});
   const std::optional<RoscoController> rosco = io::readDeckController(kDeck, {});
   ASSERT_TRUE(rosco.has_value());
   TrimOptions opt;
