@@ -13,3 +13,7 @@ build/whirl campbell cases/nrel5mw/Main_Onshore.fst --rpm 0:0.5:15 --azimuths 36
 build/whirl steady cases/nrel5mw/Main_Aero.fst --wind 3:1:25 --out reports/nrel5mw_aero
 build/whirl campbell cases/nrel5mw/Main_Aero.fst --wind 3:1:25 --azimuths 36 --max-freq 3.2 --out reports/nrel5mw_aero \
   --html --format hawcstab2
+# The NREL 5MW with ROSCO's controller (cases/nrel5mw/Main_ROSCO.fst): the schedule it settles at along
+# the wind, and the open-loop Campbell diagram along that schedule.
+build/whirl steady cases/nrel5mw/Main_ROSCO.fst --wind 3:1:25 --out reports/nrel5mw_rosco
+build/whirl campbell cases/nrel5mw/Main_ROSCO.fst --wind 3:1:25 --azimuths 36 --max-freq 3.2 --out reports/nrel5mw_rosco
