@@ -128,7 +128,7 @@ void checkDuplicates(const OpenFastFile& f) {
   for (const OpenFastEntry& e : f.entries()) {
     const std::string k = canonicalKey(e.key);
     const OpenFastEntry* first = f.find(e.key);
-    if (first == &e) continue;
+    if (first == nullptr || first == &e) continue;  // informal lines (comments, table headers) are not found by key
     if (k == "npropsets") {
       int seen = 0;
       for (const OpenFastEntry& x : f.entries())
