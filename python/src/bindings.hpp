@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "linearize/operating_point.hpp"
+#include "linearize/sweep.hpp"
 #include "src/model/model.hpp"
 
 namespace whirl::python {
@@ -22,6 +24,7 @@ struct PyModel {
   std::shared_ptr<const Model> model;
   std::string source;  ///< the case path, or "<dict>" for a case built from a Python dict
   std::vector<std::string> notes;  ///< the readers' informational lines (the CLI's `whirl: note:`)
+  std::vector<std::string> sets;   ///< the `--set KEY=VALUE` overrides it was loaded with
 };
 
 /// Runs `f` with the GIL released; a ComputeError comes back with the model's source in front of its
@@ -44,9 +47,21 @@ class SweepGuard {
   bool stopped_ = false;
 };
 
+/// The validity check of the commands (src/cli/common.cpp, checkSolvedPoints): the problems of the
+/// solved points, the first one a ComputeError naming the model (and `where`) unless allowed.
+std::vector<std::string> checkValidity(const PyModel& p, const Model& m, const std::vector<OperatingPoint>& ops,
+                                       const std::string& where, bool allow_invalid_point);
+
+/// The sweep points of a schedule: a CSV path (readSchedule), or rows (rpm, wind speed or None,
+/// pitch [deg] or None) from a DataFrame.
+std::vector<SweepPoint> schedulePoints(const py::object& schedule);
+
 void bindErrors(py::module_& m);
 void bindModel(py::module_& m);
 void bindLinear(py::module_& m);
 void bindSweeps(py::module_& m);
+void bindBode(py::module_& m);
+void bindSimulate(py::module_& m);
+void bindCompare(py::module_& m);
 
 }  // namespace whirl::python

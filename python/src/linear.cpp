@@ -6,10 +6,17 @@
 
 #include <numbers>
 
+#include <fmt/format.h>
+
 #include "linearize/export_sweep.hpp"
 #include "linearize/linearize.hpp"
+#include "linearize/trim.hpp"
 #include "python/src/bindings.hpp"
 #include "python/src/operating_point.hpp"
+#include "src/io/discon_input.hpp"
+#include "src/model/error.hpp"
+#include "src/writers/output_set.hpp"
+#include "src/writers/state_space_files.hpp"
 
 namespace whirl::python {
 namespace {
@@ -18,7 +25,8 @@ namespace {
 /// per-azimuth models in the rotating frame, and the second-order model at the equilibrium.
 struct PyLinear {
   ExportPoint point;
-  LinearModel second_order;
+  LinearModel second_order;  ///< empty for the points of Model.export (has_second_order false)
+  bool has_second_order = false;
 };
 
 py::list variables(const std::vector<StateSpaceVariable>& v) {
@@ -62,7 +70,83 @@ PyLinear linearizeAt(const PyModel& p, const py::object& op, int azimuths, const
     out.point = std::move(exportSweep(*p.model, {sp}, eo, sweep).front());
     out.second_order = linearize(*p.model, out.point.equilibrium);
   });
+  out.has_second_order = true;
   return out;
+}
+
+// `whirl export` (src/cli/cmd_export.cpp): the points of --rpm, --schedule or --wind (trimmed, with
+// the deck's ROSCO controller when it has one), exportSweep over them with the commands' validity
+// check, and the files of --format into `out` when asked (one OutputSet: all files or none).
+std::vector<PyLinear> exportPoints(const PyModel& p, const std::optional<std::vector<double>>& rpm,
+                                   const std::optional<std::vector<double>>& wind, const py::object& schedule,
+                                   int azimuths, const std::vector<std::string>& inputs,
+                                   const std::vector<std::string>& outputs, bool drop_azimuth,
+                                   const py::object& progress, bool allow_invalid_point,
+                                   const std::optional<std::string>& format, const std::optional<std::string>& out) {
+  const Model& m = *p.model;
+  if (bool(rpm) + bool(wind) + !schedule.is_none() > 1) throw InputError("export: give at most one of rpm=, wind= and schedule=");
+  if (azimuths < 1 || azimuths > 3600) throw InputError("azimuths: must be in 1 … 3600 (is " + std::to_string(azimuths) + ")");
+  if (format && *format != "mat" && *format != "lin" && *format != "json")
+    throw InputError("format: must be mat, lin or json (is '" + *format + "')");
+  if (bool(format) != bool(out)) throw InputError("export: give format= and out= together to write files");
+  std::vector<SweepPoint> points;
+  if (rpm) {
+    for (double r : *rpm) {
+      SweepPoint sp;
+      sp.condition = conditionOf(m, r, std::nullopt, std::nullopt, std::nullopt);
+      sp.rpm = sp.condition.rotor_speed * 30 / std::numbers::pi;
+      points.push_back(sp);
+    }
+  } else if (!schedule.is_none()) {
+    points = schedulePoints(schedule);
+    if (m.roles.azimuth.empty())
+      throw InputError("rpm: the model has no rotating DOF (mark the azimuth with `rotating: true`)");
+  } else if (!wind) {
+    SweepPoint sp;  // the model's own condition
+    sp.condition = modelCondition(m);
+    sp.rpm = sp.condition.rotor_speed * 30 / std::numbers::pi;
+    points.push_back(sp);
+  }
+  std::optional<RoscoController> controller;
+  if (wind && p.source != "<dict>") {
+    py::gil_scoped_release released;
+    controller = io::readDeckController(p.source, p.sets);
+  }
+  if (out) prepareOutputFolder(*out);
+  ExportOptions eo;
+  eo.azimuths = azimuths;
+  eo.inputs = inputs;
+  eo.outputs = outputs;
+  eo.drop_azimuth = drop_azimuth;
+  SweepGuard guard(progress);
+  SweepOptions sweep;
+  sweep.azimuths = azimuths;
+  sweep.progress = guard.progress();
+  const bool labelled = !schedule.is_none() || wind || (rpm && rpm->size() > 1);
+  sweep.check_point = [&](const Model& pm, const std::vector<OperatingPoint>& ops, const SweepPoint& sp) {
+    return checkValidity(p, pm, ops, labelled ? fmt::format("{:g} rpm", sp.rpm) : "", allow_invalid_point);
+  };
+  StateSpaceExport e;
+  e.source = p.source;
+  e.model_name = m.name;
+  guard.runSweep(p, [&] {
+    if (wind) {
+      TrimOptions trim;
+      if (controller) trim.controller = &*controller;
+      for (const SteadyState& s : trimSchedule(m, *wind, trim)) points.push_back(sweepPointOf(s));
+    }
+    e.points = exportSweep(m, points, eo, sweep);
+  });
+  if (out) {
+    OutputSet files(*out);  // every file at once, or none
+    std::string title = e.model_name.substr(0, e.model_name.find(". "));  // as `whirl export`
+    if (title.empty()) title = e.source;
+    writeStateSpaceFiles(e, *format, title, files);
+    files.commit();
+  }
+  std::vector<PyLinear> result;
+  for (ExportPoint& pt : e.points) result.push_back(PyLinear{std::move(pt), {}, false});
+  return result;
 }
 
 }  // namespace
@@ -91,6 +175,7 @@ void bindLinear(py::module_& m) {
       .def_property_readonly("rpm", [](const PyLinear& l) { return l.point.rpm; })
       .def_property_readonly("wind_speed", [](const PyLinear& l) { return l.point.wind_speed; })
       .def_property_readonly("pitch_deg", [](const PyLinear& l) { return l.point.pitch_deg; })
+      .def_readonly("has_second_order", &PyLinear::has_second_order)
       .def_property_readonly("dof_names", [](const PyLinear& l) { return l.second_order.dof_names; })
       .def_property_readonly("second_order_inputs", [](const PyLinear& l) { return l.second_order.input_names; });
   matrixProperty(lin, "M", [](const PyLinear& l) -> const MatX& { return l.second_order.M; }, "mass matrix");
@@ -101,6 +186,11 @@ void bindLinear(py::module_& m) {
   m.def("linearize", &linearizeAt, py::arg("model"), py::arg("op") = py::none(), py::arg("azimuths") = 36,
         py::arg("inputs") = std::vector<std::string>{}, py::arg("outputs") = std::vector<std::string>{},
         py::arg("drop_azimuth") = false);
+  m.def("export", &exportPoints, py::arg("model"), py::arg("rpm") = py::none(), py::arg("wind") = py::none(),
+        py::arg("schedule") = py::none(), py::arg("azimuths") = 36, py::arg("inputs") = std::vector<std::string>{},
+        py::arg("outputs") = std::vector<std::string>{}, py::arg("drop_azimuth") = false,
+        py::arg("progress") = py::none(), py::arg("allow_invalid_point") = false, py::arg("format") = py::none(),
+        py::arg("out") = py::none());
 }
 
 }  // namespace whirl::python

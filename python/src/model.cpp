@@ -25,6 +25,7 @@ constexpr double kDeg = std::numbers::pi / 180;
 PyModel load(const std::string& path, const std::vector<std::string>& sets, bool allow_outside_files) {
   PyModel m;
   m.source = path;
+  m.sets = sets;
   py::gil_scoped_release released;
   m.model = std::make_shared<const Model>(loadCaseModel(path, sets, allow_outside_files, &m.notes));
   return m;
@@ -35,6 +36,7 @@ PyModel loadText(const std::string& text, const std::string& folder, const std::
                  bool allow_outside_files) {
   PyModel m;
   m.source = "<dict>";
+  m.sets = sets;
   py::gil_scoped_release released;
   std::vector<CaseOverride> overrides;
   for (const auto& s : sets) overrides.push_back(parseOverride(s));

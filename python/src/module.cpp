@@ -14,4 +14,7 @@ PYBIND11_MODULE(_whirl, m) {
   whirl::python::bindModel(m);
   whirl::python::bindLinear(m);
   whirl::python::bindSweeps(m);
+  whirl::python::bindBode(m);
+  whirl::python::bindSimulate(m);
+  whirl::python::bindCompare(m);
 }

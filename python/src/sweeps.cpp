@@ -24,21 +24,6 @@
 namespace whirl::python {
 namespace {
 
-// The validity check of the commands (src/cli/common.cpp, checkSolvedPoints): the problems of the
-// solved points, the first one an error unless allowed.
-std::vector<std::string> checkValidity(const PyModel& p, const Model& m, const std::vector<OperatingPoint>& ops,
-                                       const std::string& where, bool allow_invalid_point) {
-  std::vector<std::string> problems;
-  for (const OperatingPoint& op : ops)
-    for (const std::string& s : checkPointValidity(m, op))
-      if (std::find(problems.begin(), problems.end(), s) == problems.end()) problems.push_back(s);
-  if (!problems.empty() && !allow_invalid_point)
-    throw ComputeError(p.source + ": " + (where.empty() ? "" : where + ": ") +
-                       "operating point outside the model's range of validity: " + problems.front() +
-                       " (check the inputs; allow_invalid_point=True to go on anyway)");
-  return problems;
-}
-
 py::dict steady(const PyModel& p, const std::vector<double>& winds, int azimuths) {
   const Model& m = *p.model;
   if (!m.aero.active())
@@ -111,14 +96,6 @@ py::dict campbellColumns(const CampbellDiagram& d, bool participations) {
   out["first_order"] = first_order;
   for (std::size_t c = 0; c < part.size(); ++c) out[py::str("participation: " + coords[c])] = part[c];
   return out;
-}
-
-std::vector<SweepPoint> schedulePoints(const py::object& schedule) {
-  if (py::isinstance<py::str>(schedule)) return readSchedule(schedule.cast<std::string>());
-  std::vector<SweepPoint> points;  // rows (rpm, wind speed or None, pitch [deg] or None)
-  for (const auto& row : schedule.cast<std::vector<std::tuple<double, std::optional<double>, std::optional<double>>>>())
-    points.push_back(sweepPoint(std::get<0>(row), std::get<1>(row), std::get<2>(row)));
-  return points;
 }
 
 py::dict campbell(const PyModel& p, const std::optional<std::vector<double>>& rpm,
@@ -239,6 +216,27 @@ py::tuple linCampbell(const std::vector<std::string>& files, bool participations
 }
 
 }  // namespace
+
+std::vector<std::string> checkValidity(const PyModel& p, const Model& m, const std::vector<OperatingPoint>& ops,
+                                       const std::string& where, bool allow_invalid_point) {
+  std::vector<std::string> problems;
+  for (const OperatingPoint& op : ops)
+    for (const std::string& s : checkPointValidity(m, op))
+      if (std::find(problems.begin(), problems.end(), s) == problems.end()) problems.push_back(s);
+  if (!problems.empty() && !allow_invalid_point)
+    throw ComputeError(p.source + ": " + (where.empty() ? "" : where + ": ") +
+                       "operating point outside the model's range of validity: " + problems.front() +
+                       " (check the inputs; allow_invalid_point=True to go on anyway)");
+  return problems;
+}
+
+std::vector<SweepPoint> schedulePoints(const py::object& schedule) {
+  if (py::isinstance<py::str>(schedule)) return readSchedule(schedule.cast<std::string>());
+  std::vector<SweepPoint> points;  // rows (rpm, wind speed or None, pitch [deg] or None)
+  for (const auto& row : schedule.cast<std::vector<std::tuple<double, std::optional<double>, std::optional<double>>>>())
+    points.push_back(sweepPoint(std::get<0>(row), std::get<1>(row), std::get<2>(row)));
+  return points;
+}
 
 void bindSweeps(py::module_& m) {
   m.def("steady", &steady, py::arg("model"), py::arg("wind"), py::arg("azimuths") = 3);

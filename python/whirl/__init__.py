@@ -17,20 +17,20 @@ from __future__ import annotations
 import json
 import os
 import re
-from typing import Any, Callable, Iterable, Mapping, Optional, Sequence, Union
+from typing import Any, Callable, Iterable, List, Mapping, Optional, Sequence, Union
 
 import numpy as np
 import pandas as pd
 
 from . import _whirl
-from ._tables import CampbellTable
-from .linear import LinearModel, StateSpace
+from ._tables import BodeTable, CampbellTable
+from .linear import ExportedModel, LinearModel, StateSpace
 from . import lin
 
 
 __version__ = getattr(_whirl, "__version__", "0")
-__all__ = ["load", "from_dict", "Model", "OperatingPoint", "LinearModel", "StateSpace", "CampbellTable", "InputError", "lin",
-           "ComputeError"]
+__all__ = ["load", "from_dict", "compare", "Model", "OperatingPoint", "LinearModel", "ExportedModel", "StateSpace",
+           "CampbellTable", "BodeTable", "InputError", "ComputeError", "lin"]
 
 #: Bad input: a file that is missing or malformed, an unknown key, a value out of range. The message
 #: is the CLI's, ``file:line: key: reason``; the attributes ``file``, ``line`` (0 when unknown) and
@@ -150,6 +150,15 @@ def _progress(progress):
         if done == total:
             bar["bar"].close()
     return update
+
+
+def _floats(values) -> Optional[list]:
+    """A number or a sequence of numbers as a list of floats; None stays None."""
+    return None if values is None else [float(x) for x in np.atleast_1d(values)]
+
+
+def _folder(out) -> Optional[str]:
+    return None if out is None else os.fspath(out)
 
 
 def _schedule_rows(table: pd.DataFrame) -> list:
@@ -274,11 +283,138 @@ class Model:
             schedule = _schedule_rows(schedule)
         elif schedule is not None:
             schedule = os.fspath(schedule)
-        def floats(v):
-            return None if v is None else [float(x) for x in np.atleast_1d(v)]
-        columns = _whirl.campbell(self._core, floats(rpm), floats(wind), schedule, azimuths, _progress(progress),
+        columns = _whirl.campbell(self._core, _floats(rpm), _floats(wind), schedule, azimuths, _progress(progress),
                                   participations, allow_invalid_point)
         table = CampbellTable(columns)
         table.attrs["versus"] = "wind" if rpm is None else "rpm"
         table.attrs["title"] = "Campbell diagram: " + (self.name.split(". ")[0] or self.source)
         return table
+
+    def export(self, rpm: Union[None, float, Iterable[float]] = None, wind: Union[None, float, Iterable[float]] = None,
+               schedule: Union[None, str, os.PathLike, pd.DataFrame] = None, azimuths: int = 36,
+               inputs: Sequence[str] = (), outputs: Sequence[str] = (), drop_azimuth: bool = False,
+               format: Optional[str] = None, out: Union[None, str, os.PathLike] = None,
+               progress: Union[None, bool, Callable[[int, int], Any]] = None,
+               allow_invalid_point: bool = False) -> List[ExportedModel]:
+        """State-space models for controller design (``whirl export``), one per operating point.
+
+        The points: ``rpm`` (rotor speeds [rpm]), ``wind`` (wind speeds [m/s], each trimmed as
+        :meth:`steady`, with the deck's ROSCO controller when its ServoDyn file names one), or
+        ``schedule`` (as :meth:`campbell`); at most one, none = the model's own condition. Each point
+        starts from the model's initial point, so a point's model does not depend on its neighbours.
+        ``azimuths`` per revolution, multiblade average for 3+ blades; ``inputs``/``outputs`` keep those,
+        in that order (default all); ``drop_azimuth`` removes the azimuth state.
+
+        Returns one :class:`ExportedModel` per point (``A, B, C, D`` in SI units with the names and
+        units of the states, inputs and outputs; the equal of the files' matrices, bit for bit).
+        Files only when asked: ``format`` ("mat", "lin" or "json") and ``out`` (a folder) together
+        write ``whirl export``'s files there (all or none). ``progress`` and Ctrl-C as :meth:`campbell`.
+        """
+        if isinstance(schedule, pd.DataFrame):
+            schedule = _schedule_rows(schedule)
+        elif schedule is not None:
+            schedule = os.fspath(schedule)
+        points = _whirl.export(self._core, _floats(rpm), _floats(wind), schedule, azimuths, list(inputs), list(outputs),
+                               drop_azimuth, _progress(progress), allow_invalid_point, format, _folder(out))
+        return [ExportedModel(p) for p in points]
+
+    def bode(self, inputs: Sequence[str], outputs: Sequence[str], rpm: Optional[float] = None,
+             wind: Optional[float] = None, f_from: float = 0.01, f_to: float = 10.0, points: int = 400,
+             azimuths: int = 36, out: Union[None, str, os.PathLike] = None, plot: bool = True,
+             allow_invalid_point: bool = False) -> BodeTable:
+        """Frequency response G(j 2π f) = C (j 2π f I − A)⁻¹ B + D of the linear model (``whirl bode``).
+
+        The model: at ``rpm`` [rpm] (default: the model's own), or trimmed at ``wind`` [m/s]
+        (aerodynamic models), multiblade average over ``azimuths`` without the azimuth state (a pure
+        integrator of the rotor speed). ``inputs`` and ``outputs`` name the pairs (e.g.
+        ``["collective pitch"]``, ``["GenSpeed"]``); ``points`` frequencies log-spaced from ``f_from``
+        to ``f_to`` [Hz].
+
+        Returns a :class:`BodeTable` indexed by ``freq_hz`` with bode.csv's columns
+        ``"Y / U dB"`` (20 log10 |G|, G in SI units) and ``"Y / U deg"`` (phase in (−180°, 180°]) —
+        the same numbers as bode.csv; ``attrs["static_gain"]`` holds the signed static gains G(0) the
+        CLI prints. ``out``: write bode.csv, bode.gp (and bode.png/svg when ``plot`` and Gnuplot is
+        installed) into that folder.
+        """
+        f, names, values, gain, title = _whirl.bode(self._core, list(inputs), list(outputs), rpm, wind, f_from, f_to,
+                                                    points, azimuths, allow_invalid_point, _folder(out), plot)
+        table = BodeTable(np.asarray(values), index=pd.Index(f, name="freq_hz"), columns=names)
+        table.attrs["static_gain"] = dict(gain)
+        table.attrs["title"] = title
+        return table
+
+    def simulate(self, tmax: float, rpm: Optional[float] = None, dt_out: float = 0.01,
+                 init: Optional[Mapping[str, float]] = None, inputs: Optional[Mapping[str, str]] = None,
+                 drives: Optional[Mapping[str, str]] = None, free_rotor: bool = False, equilibrium: bool = False,
+                 rtol: float = 1e-6, atol: float = 1e-8, out: Union[None, str, os.PathLike] = None,
+                 plot: Union[bool, Sequence[str]] = True, progress: Optional[Callable[[float, float], Any]] = None,
+                 allow_invalid_point: bool = False) -> pd.DataFrame:
+        """Integrate the nonlinear equations in time (``whirl simulate``: SUNDIALS IDA, AD Jacobians).
+
+        Starts from the model's initial point (at ``rpm`` [rpm] when given), or its equilibrium
+        (``equilibrium=True``), then ``init``: ``{"tower FA 1": 0.1}`` sets a coordinate [m or rad],
+        ``{"tower FA 1+": 0.1}`` offsets it from the start, ``{"tower FA 1 rate": 0.5}`` sets its rate
+        [m/s or rad/s]. ``inputs``: input histories added to the input's value, ``{"NAME": "step(t0,a)"}``,
+        ``"ramp(t0,t1,a)"``, ``"sin(A,f)"`` or a CSV path (columns time, value); ``drives``: prescribed
+        motions of coordinates (``"spinup(T,w)"`` or any input signal). The rotor turns at constant
+        speed unless ``free_rotor``. ``rtol``/``atol``: IDA's tolerances [m, rad, m/s, rad/s];
+        ``dt_out`` [s]: interval of the recorded instants up to ``tmax`` [s].
+
+        Returns a DataFrame indexed by time [s] (``time_s``) with timeseries.csv's columns: each
+        coordinate ``NAME`` and ``NAME rate``, each input ``input: NAME``, each output ``NAME [unit]``
+        (the same numbers as the file); ``attrs``: IDA's statistics and ``states`` (the integrated
+        coordinates). A motion leaving the model's range of validity raises ComputeError unless
+        ``allow_invalid_point`` (then ``attrs["warning"]`` says where). ``out``: write timeseries.csv,
+        timeseries.gp (and the images when ``plot`` and Gnuplot is installed; a list of column names
+        for ``plot`` chooses the panels). ``progress(t, tmax)`` is called after each recorded instant;
+        Ctrl-C stops the integration there (KeyboardInterrupt).
+        """
+        channels = [] if isinstance(plot, bool) else list(plot)
+        names, values, stats, warning = _whirl.simulate(
+            self._core, float(tmax), rpm, dt_out, [(k, float(v)) for k, v in (init or {}).items()],
+            list((inputs or {}).items()), list((drives or {}).items()), free_rotor, equilibrium, rtol, atol,
+            allow_invalid_point, _folder(out), channels, bool(plot), progress)
+        table = pd.DataFrame(np.asarray(values)[:, 1:], index=pd.Index(np.asarray(values)[:, 0], name=names[0]),
+                             columns=names[1:])
+        table.attrs.update(dict(stats))
+        if warning:
+            table.attrs["warning"] = warning
+        return table
+
+
+def compare(result: Union[str, os.PathLike, pd.DataFrame], reference: Union[str, os.PathLike, pd.DataFrame],
+            tol_rel: float = 0.01, rpm: Optional[float] = None) -> pd.DataFrame:
+    """Modes compared with a reference table (``whirl compare``).
+
+    ``result``: a modes table (:meth:`Model.modes`, or a CSV of ``whirl modes``) or a Campbell table
+    (:meth:`Model.campbell`, campbell.csv) with ``rpm`` [rpm] choosing its operating point;
+    ``reference``: a CSV path or DataFrame with columns ``mode``, ``freq_hz`` [Hz] and optionally
+    ``whirl_mode`` (the whirl name; ``a|b`` compares the rows sharing it as a set, ``*`` takes the
+    nearest frequency), e.g. cases/nrel5mw/table9_1.csv [Jonkman2009, Table 9-1].
+
+    Returns one row per reference mode: reference_mode, reference_freq_hz, whirl_mode, freq_hz,
+    rel_error ((f − f_ref)/f_ref) and status ("ok", "FAIL" beyond ``tol_rel``, "MISSING"); the CLI
+    exits with an error when a row is not "ok", this returns the table (check ``status``).
+    """
+    def rows(table, name_columns, with_whirl):
+        name = next((c for c in name_columns if c in table.columns), None)
+        if name is None or "freq_hz" not in table.columns:
+            raise InputError(f"compare: a table needs columns {' or '.join(name_columns)} and freq_hz")
+        if with_whirl:
+            key = table["whirl_mode"] if "whirl_mode" in table.columns else table[name]
+            return [(str(m), float(f), str(k)) for m, f, k in zip(table[name], table["freq_hz"], key)]
+        return [(str(m), float(f)) for m, f in zip(table[name], table["freq_hz"])]
+
+    if isinstance(result, pd.DataFrame):
+        if "rpm" in result.columns:
+            if rpm is None:
+                raise InputError("compare: a Campbell table; choose the operating point with rpm=")
+            result = result[(result["rpm"] - rpm).abs() <= 1e-9]  # the command's rule (modal/mode_compare.cpp)
+        result = rows(result, ("name", "mode"), False)
+    else:
+        result = os.fspath(result)
+    if isinstance(reference, pd.DataFrame):
+        reference = rows(reference, ("mode",), True)
+    else:
+        reference = os.fspath(reference)
+    return pd.DataFrame(_whirl.compare(result, reference, tol_rel, rpm))

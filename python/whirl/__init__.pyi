@@ -51,20 +51,25 @@ class StateSpace:
     def to_scipy(self) -> Any: ...
     def to_xarray(self) -> Any: ...
 
-class LinearModel(StateSpace):
-    M: npt.NDArray[np.float64]
-    damping: npt.NDArray[np.float64]
-    K: npt.NDArray[np.float64]
-    Q: npt.NDArray[np.float64]
-    dof_names: List[str]
+class ExportedModel(StateSpace):
     rpm: float
     wind_speed: Optional[float]
     pitch_deg: Optional[float]
     per_azimuth: List[StateSpace]
 
+class LinearModel(ExportedModel):
+    M: npt.NDArray[np.float64]
+    damping: npt.NDArray[np.float64]
+    K: npt.NDArray[np.float64]
+    Q: npt.NDArray[np.float64]
+    dof_names: List[str]
+
 class CampbellTable(pd.DataFrame):
     def plot(self, versus: Optional[str] = ..., harmonics: Sequence[int] = ..., max_freq: Optional[float] = ...,
              first_order_lines: bool = ..., ax: Any = ...) -> Any: ...
+
+class BodeTable(pd.DataFrame):
+    def plot(self, ax: Any = ...) -> Any: ...
 
 class Model:
     name: str
@@ -85,8 +90,26 @@ class Model:
                  schedule: Union[None, str, os.PathLike, pd.DataFrame] = ..., azimuths: int = ...,
                  progress: Union[None, bool, Callable[[int, int], Any]] = ..., participations: bool = ...,
                  allow_invalid_point: bool = ...) -> CampbellTable: ...
+    def export(self, rpm: Union[None, float, Iterable[float]] = ..., wind: Union[None, float, Iterable[float]] = ...,
+               schedule: Union[None, str, os.PathLike, pd.DataFrame] = ..., azimuths: int = ...,
+               inputs: Sequence[str] = ..., outputs: Sequence[str] = ..., drop_azimuth: bool = ...,
+               format: Optional[str] = ..., out: Union[None, str, os.PathLike] = ...,
+               progress: Union[None, bool, Callable[[int, int], Any]] = ...,
+               allow_invalid_point: bool = ...) -> List[ExportedModel]: ...
+    def bode(self, inputs: Sequence[str], outputs: Sequence[str], rpm: Optional[float] = ...,
+             wind: Optional[float] = ..., f_from: float = ..., f_to: float = ..., points: int = ...,
+             azimuths: int = ..., out: Union[None, str, os.PathLike] = ..., plot: bool = ...,
+             allow_invalid_point: bool = ...) -> BodeTable: ...
+    def simulate(self, tmax: float, rpm: Optional[float] = ..., dt_out: float = ...,
+                 init: Optional[Mapping[str, float]] = ..., inputs: Optional[Mapping[str, str]] = ...,
+                 drives: Optional[Mapping[str, str]] = ..., free_rotor: bool = ..., equilibrium: bool = ...,
+                 rtol: float = ..., atol: float = ..., out: Union[None, str, os.PathLike] = ...,
+                 plot: Union[bool, Sequence[str]] = ..., progress: Optional[Callable[[float, float], Any]] = ...,
+                 allow_invalid_point: bool = ...) -> pd.DataFrame: ...
 
 def load(path: Union[str, os.PathLike, Mapping[str, Any]], set: Optional[Mapping[str, Any]] = ...,
          allow_outside_files: bool = ...) -> Model: ...
 def from_dict(case: Mapping[str, Any], folder: Union[str, os.PathLike] = ..., set: Optional[Mapping[str, Any]] = ...,
               allow_outside_files: bool = ...) -> Model: ...
+def compare(result: Union[str, os.PathLike, pd.DataFrame], reference: Union[str, os.PathLike, pd.DataFrame],
+            tol_rel: float = ..., rpm: Optional[float] = ...) -> pd.DataFrame: ...

@@ -54,3 +54,34 @@ class CampbellTable(pd.DataFrame):
         bottom.grid(True)
         top.legend(fontsize="small", ncol=2, loc="upper left")
         return top, bottom
+
+
+class BodeTable(pd.DataFrame):
+    """A frequency response as a DataFrame indexed by ``freq_hz`` [Hz] with the columns of bode.csv:
+    ``"Y / U dB"`` and ``"Y / U deg"`` per output/input pair (see :meth:`whirl.Model.bode`)."""
+
+    @property
+    def _constructor(self):
+        return BodeTable
+
+    def plot(self, ax=None):
+        """The CLI's Bode figure (bode.gp): magnitude [dB] above, phase [deg] below, log frequency axis.
+        ax: two matplotlib axes to draw in. Returns the two axes."""
+        import matplotlib.pyplot as plt
+
+        if ax is None:
+            fig, ax = plt.subplots(2, 1, sharex=True, figsize=(10, 7))
+            fig.suptitle(self.attrs.get("title", "Frequency response"))
+        top, bottom = ax
+        for column in self.columns:
+            if column.endswith(" dB"):
+                top.semilogx(self.index, self[column], label=column[:-3])
+            elif column.endswith(" deg"):
+                bottom.semilogx(self.index, self[column])
+        top.set_ylabel("Magnitude [dB of SI units]")
+        bottom.set_ylabel("Phase [deg]")
+        bottom.set_xlabel("Frequency [Hz]")
+        top.grid(True, which="both")
+        bottom.grid(True, which="both")
+        top.legend(fontsize="small")
+        return top, bottom

@@ -67,26 +67,16 @@ class StateSpace:
         return f"<whirl.StateSpace {self.A.shape[0]} states, {self.B.shape[1]} inputs, {self.C.shape[0]} outputs>"
 
 
-class LinearModel(StateSpace):
-    """The linear models at one operating point (``Model.linearize``).
-
-    ``A, B, C, D`` and the names are those of ``whirl export`` (its .mat file's A, B, C, D): the
-    multiblade average over the azimuths for a turning rotor of 3+ blades, else the one model;
-    ``per_azimuth`` the rotating-frame models of the revolution (empty for a model without rotor).
-    ``M, damping, K, Q`` are the second-order model M δq̈ + damping δq̇ + K δq = Q δu of
-    ``whirl linearize`` on the active coordinates ``dof_names`` at the equilibrium (the first
-    azimuth's), SI units (kg, kg m², N/m, N m/rad …).
-    """
+class ExportedModel(StateSpace):
+    """The state-space model of one operating point of :meth:`whirl.Model.export` (one point of
+    ``whirl export``'s files): ``A, B, C, D`` and the names of its .mat/.lin/.json files, the multiblade
+    average over the azimuths for a turning rotor of 3+ blades, else the one model; ``per_azimuth``
+    the rotating-frame models of the revolution (empty for a model without rotor)."""
 
     def __init__(self, core):
         super().__init__(core.state_space)
         self._lin = core
 
-    M = property(lambda self: self._lin.M, doc="mass matrix (n × n)")
-    damping = property(lambda self: self._lin.damping, doc="damping matrix (n × n), the C of M q̈ + C q̇ + K q = Q u")
-    K = property(lambda self: self._lin.K, doc="stiffness matrix (n × n)")
-    Q = property(lambda self: self._lin.Q, doc="input matrix of the second-order model (n × nu)")
-    dof_names = property(lambda self: list(self._lin.dof_names), doc="active coordinates of M, damping, K")
     rpm = property(lambda self: self._lin.rpm, doc="rotor speed [rpm]")
     wind_speed = property(lambda self: self._lin.wind_speed, doc="wind speed [m/s] or None")
     pitch_deg = property(lambda self: self._lin.pitch_deg, doc="collective pitch [deg] or None")
@@ -97,5 +87,23 @@ class LinearModel(StateSpace):
         return [StateSpace(s) for s in self._lin.per_azimuth]
 
     def __repr__(self) -> str:
-        return (f"<whirl.LinearModel at {self.rpm:g} rpm: {self.A.shape[0]} states, {self.B.shape[1]} inputs, "
-                f"{self.C.shape[0]} outputs{', multiblade' if self.multiblade else ''}>")
+        return (f"<whirl.{type(self).__name__} at {self.rpm:g} rpm: {self.A.shape[0]} states, {self.B.shape[1]} "
+                f"inputs, {self.C.shape[0]} outputs{', multiblade' if self.multiblade else ''}>")
+
+
+class LinearModel(ExportedModel):
+    """The linear models at one operating point (``Model.linearize``).
+
+    ``A, B, C, D`` and the names are those of ``whirl export`` (its .mat file's A, B, C, D): the
+    multiblade average over the azimuths for a turning rotor of 3+ blades, else the one model;
+    ``per_azimuth`` the rotating-frame models of the revolution (empty for a model without rotor).
+    ``M, damping, K, Q`` are the second-order model M δq̈ + damping δq̇ + K δq = Q δu of
+    ``whirl linearize`` on the active coordinates ``dof_names`` at the equilibrium (the first
+    azimuth's), SI units (kg, kg m², N/m, N m/rad …).
+    """
+
+    M = property(lambda self: self._lin.M, doc="mass matrix (n × n)")
+    damping = property(lambda self: self._lin.damping, doc="damping matrix (n × n), the C of M q̈ + C q̇ + K q = Q u")
+    K = property(lambda self: self._lin.K, doc="stiffness matrix (n × n)")
+    Q = property(lambda self: self._lin.Q, doc="input matrix of the second-order model (n × nu)")
+    dof_names = property(lambda self: list(self._lin.dof_names), doc="active coordinates of M, damping, K")

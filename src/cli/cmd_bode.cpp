@@ -13,7 +13,7 @@
 #include "linearize/trim.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/common.hpp"
-#include "src/io/csv.hpp"
+#include "src/writers/bode_table.hpp"
 #include "src/writers/gnuplot.hpp"
 #include "src/writers/output_set.hpp"
 #include "src/model/error.hpp"
@@ -29,27 +29,6 @@ struct BodeOptions {
   int points = 400, azimuths = 36;
   bool no_plot = false;
 };
-
-std::string scriptOf(const std::string& title, int pairs) {
-  std::string g =
-      "# Bode diagram written by whirl: gnuplot bode.gp (from this folder)\n"
-      "if (!exists('png_out')) png_out = 'bode.png'\n"
-      "if (!exists('svg_out')) svg_out = 'bode.svg'\n"
-      "set datafile separator ','\n"
-      "set key noenhanced top right\n"
-      "set logscale x\nset grid\n"
-      "do for [out = 1:2] {\n"
-      "  if (out == 1) { set terminal pngcairo size 1200,800 noenhanced; set output png_out }\n"
-      "  else { set terminal svg size 1200,800 noenhanced; set output svg_out }\n"
-      "  set multiplot layout 2,1 title " + gnuplotQuoted(title) + "\n"
-      "  set ylabel 'Magnitude [dB of SI units]'\n  set format x ''\n  unset xlabel\n"
-      "  plot for [k = 0:" + std::to_string(pairs - 1) + "] 'bode.csv' using 1:(column(2 + 2*k)) with lines lw 2 title columnhead(2 + 2*k)\n"
-      "  set ylabel 'Phase [deg]'\n  set format x '%g'\n  set xlabel 'Frequency [Hz]'\n"
-      "  plot for [k = 0:" + std::to_string(pairs - 1) + "] 'bode.csv' using 1:(column(3 + 2*k)) with lines lw 2 notitle\n"
-      "  unset multiplot\n"
-      "}\n";
-  return g;
-}
 
 void run(const BodeOptions& opt) {
   const Model m = loadModel(opt.model);
@@ -75,22 +54,10 @@ void run(const BodeOptions& opt) {
   checkSolvedPoints(opt.model, m, {p.equilibrium});
   const std::vector<double> f = logFrequencies(opt.f0, opt.f1, opt.points);
   const std::vector<Eigen::MatrixXcd> G = frequencyResponse(p.model, f);
-  std::string csv = "freq_hz";
-  for (const auto& y : p.model.y)
-    for (const auto& u : p.model.u) csv += "," + y.name + " / " + u.name + " dB," + y.name + " / " + u.name + " deg";
-  csv += "\n";
-  for (std::size_t k = 0; k < f.size(); ++k) {
-    csv += formatNumber(f[k]);
-    for (Eigen::Index i = 0; i < G[k].rows(); ++i)
-      for (Eigen::Index j = 0; j < G[k].cols(); ++j)
-        csv += "," + formatNumber(20 * std::log10(std::abs(G[k](i, j)))) + "," +
-               formatNumber(std::arg(G[k](i, j)) * 180 / std::numbers::pi);
-    csv += "\n";
-  }
   const int pairs = static_cast<int>(p.model.y.size() * p.model.u.size());
   OutputSet files(dir);  // table, script and images together
-  files.write("bode.csv", csv);
-  files.write("bode.gp", scriptOf("Frequency response" + (where.empty() ? std::string() : ": " + where), pairs));
+  files.write("bode.csv", bodeCsv(p.model, f, G));
+  files.write("bode.gp", bodeGnuplotScript("Frequency response" + (where.empty() ? std::string() : ": " + where), pairs));
   if (!opt.no_plot) renderGnuplot(files.stagingFolder(), "gnuplot", "bode", dir);
   files.commit();
   const std::vector<std::string> written = files.paths();

@@ -11,8 +11,8 @@
 #include <memory>
 #include <cstdio>
 
-#include "linearize/point_validity.hpp"
 #include "linearize/simulate.hpp"
+#include "linearize/simulation_setup.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/common.hpp"
 #include "src/io/time_signal_reader.hpp"
@@ -33,25 +33,7 @@ struct SimulateOptions {
 
 // "NAME=v" (absolute), "NAME+=v" (offset from the start point), "NAME rate=v" (the rate).
 void applyInit(const Model& m, OperatingPoint& p, const std::string& text) {
-  auto [name, value_text] = splitAssignment(text, "--init");
-  bool offset = false, rate = false;
-  if (!name.empty() && name.back() == '+') {
-    offset = true;
-    name.pop_back();
-    while (!name.empty() && name.back() == ' ') name.pop_back();
-  }
-  std::string dof = name;
-  if (!m.findDof(dof) && name.size() > 5 && name.compare(name.size() - 5, 5, " rate") == 0) {
-    rate = true;
-    dof = name.substr(0, name.size() - 5);
-  }
-  const auto i = m.findDof(dof);
-  if (!i) {
-    std::string known;
-    for (int k : m.activeDofs()) known += (known.empty() ? "" : ", ") + m.dofs[k].name;
-    throw InputError("--init: '" + name + "': no such coordinate (active: " + known + ")");
-  }
-  if (m.dofs[*i].frozen) throw InputError("--init: '" + dof + "': a frozen coordinate follows its prescribed motion");
+  const auto [name, value_text] = splitAssignment(text, "--init");
   size_t used = 0;
   double v = 0;
   try {
@@ -59,10 +41,12 @@ void applyInit(const Model& m, OperatingPoint& p, const std::string& text) {
   } catch (const std::exception&) {
     used = 0;
   }
+  // The name first: an unknown coordinate is named before its value is read, as it always was.
+  OperatingPoint probe = p;
+  applyInitialCondition(m, probe, name, 0, "--init");
   if (value_text.empty() || used != value_text.size() || !std::isfinite(v))
     throw InputError("--init: '" + text + "': '" + value_text + "' is not a finite number");
-  double& x = rate ? p.qd(*i) : p.q(*i);
-  x = offset ? x + v : v;
+  applyInitialCondition(m, p, name, v, "--init");
 }
 
 void run(const SimulateOptions& opt) {
@@ -82,20 +66,13 @@ void run(const SimulateOptions& opt) {
   if (!opt.free_rotor) so.prescribed = m.roles.azimuth;
   for (const std::string& s : opt.inputs) {
     const auto [name, signal] = splitAssignment(s, "--input");
-    const auto i = m.findInput(name);
-    if (!i) {
-      std::string known;
-      for (const Input& in : m.inputs) known += (known.empty() ? "" : ", ") + in.name;
-      throw InputError("--input: '" + name + "': no such input (inputs: " + (known.empty() ? "none" : known) + ")");
-    }
-    so.inputs.push_back({*i, parseTimeSignal(signal, "--input " + name)});
+    so.inputs.push_back({simulationInput(m, name, "--input"), parseTimeSignal(signal, "--input " + name)});
   }
   for (const std::string& s : opt.drives) {
     const auto [name, signal] = splitAssignment(s, "--drive");
-    const auto i = m.findDof(name);
-    if (!i || m.dofs[*i].frozen) throw InputError("--drive: '" + name + "': no such active coordinate");
-    so.driven.push_back({*i, parseTimeSignal(signal, "--drive " + name)});
-    so.prescribed.erase(std::remove(so.prescribed.begin(), so.prescribed.end(), *i), so.prescribed.end());
+    const int i = drivenCoordinate(m, name, "--drive");
+    so.driven.push_back({i, parseTimeSignal(signal, "--drive " + name)});
+    so.prescribed.erase(std::remove(so.prescribed.begin(), so.prescribed.end(), i), so.prescribed.end());
   }
   TimeseriesPlotOptions po;
   po.channels = splitList(opt.plot);
@@ -119,17 +96,10 @@ void run(const SimulateOptions& opt) {
   // that blows up (negative damping: a 325 km tower deflection, issue 48, item 6) is no result to
   // write silently. A diverging motion can be what is studied (Kane's beam without geometric
   // stiffness): --allow-invalid-point writes it with a warning. docs/user/limits.md, *Blow-ups*.
-  for (size_t k = 0; k < sim.time.size(); ++k) {
-    OperatingPoint at;  // no solved coordinates: only the geometry is checked
-    at.q = sim.q.row(static_cast<Eigen::Index>(k)).transpose();
-    const std::vector<std::string> problems = checkPointValidity(m, at);
-    if (problems.empty()) continue;
-    const std::string what = "t = " + fmt::format("{:g}", sim.time[k]) +
-                             " s: the motion leaves the model's range of validity: " + problems.front();
+  if (const std::optional<std::string> what = invalidMotion(m, sim)) {
     if (!opt.model.allow_invalid_point)
-      throw ComputeError(what + " (a diverging model; nothing written: --allow-invalid-point writes it anyway)");
-    std::fprintf(stderr, "whirl: warning: %s: %s\n", opt.model.case_path.c_str(), what.c_str());
-    break;
+      throw ComputeError(*what + " (a diverging model; nothing written: --allow-invalid-point writes it anyway)");
+    std::fprintf(stderr, "whirl: warning: %s: %s\n", opt.model.case_path.c_str(), what->c_str());
   }
   // Only now the output folder: a failed simulation writes nothing.
   const std::string dir = opt.out.empty() ? defaultOutputFolder(opt.model.case_path) : opt.out;

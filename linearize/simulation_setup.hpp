@@ -1,0 +1,32 @@
+#pragma once
+/// \file
+/// What a simulation's caller names by text, checked against the model with the messages the user
+/// sees (`whirl simulate`'s --init, --input, --drive; the Python `Model.simulate`), and the check of
+/// the recorded motion against the model's range of validity (linearize/point_validity.hpp).
+#include <optional>
+#include <string>
+
+#include "linearize/operating_point.hpp"
+#include "linearize/simulate.hpp"
+
+namespace whirl {
+
+/// Sets an initial value of `start`: `name` is a coordinate ("tower FA 1": the value [m or rad]),
+/// "NAME+" (an offset added to the start value) or "NAME rate" (the rate [m/s or rad/s]).
+/// \throws InputError "key: 'NAME': no such coordinate (active: …)" or "… a frozen coordinate …"
+void applyInitialCondition(const Model& m, OperatingPoint& start, std::string name, double value,
+                           const std::string& key);
+
+/// Index of input `name`. \throws InputError "key: 'NAME': no such input (inputs: …)"
+int simulationInput(const Model& m, const std::string& name, const std::string& key);
+
+/// Index of the active coordinate `name` a signal drives. \throws InputError "key: 'NAME': no such active coordinate"
+int drivenCoordinate(const Model& m, const std::string& name, const std::string& key);
+
+/// The first recorded instant outside the model's range of validity (deflections, slopes; only the
+/// geometry is checked), as "t = … s: the motion leaves the model's range of validity: <problem>";
+/// empty when the whole motion is valid. A model that blows up (negative damping: a 325 km tower
+/// deflection, issue 48, item 6) gives no result to keep silently (docs/user/limits.md, *Blow-ups*).
+std::optional<std::string> invalidMotion(const Model& m, const Simulation& sim);
+
+}  // namespace whirl
