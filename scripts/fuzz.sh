@@ -34,6 +34,9 @@ launcher=()
 # ccache keys on paths relative to the folder above the repository (as scripts/build.sh), so a fresh
 # clone (CI) reuses the objects of an earlier build on the same machine.
 export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$(dirname "$PWD")}"
+# The objects carry -gline-tables-only: without NOHASHDIR ccache keys on the build folder, so every
+# worktree or clone would recompile the whole clang build (15 min on 2 cores).
+export CCACHE_NOHASHDIR=1
 command -v ccache > /dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
 if [ ! -f "$out/CMakeCache.txt" ]; then
   nice -n 19 cmake -S . -B "$out" -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DWHIRL_FUZZ=ON \

@@ -278,9 +278,17 @@ std::string OpenFastFile::singleToken(const OpenFastEntry& e, const char* what) 
 }
 
 namespace {
+/// "'x' is not a number"; for the keyword `default` also why: the getters that accept it are those
+/// of the keys OpenFAST reads with ParseVarWDefault (or a DEFAULT string test), this one is not.
+std::string notA(std::string_view tok, const char* what) {
+  std::string reason = "'" + std::string(tok) + "' is not " + what;
+  if (isDefaultToken(tok)) reason += " (OpenFAST has no default value for this key)";
+  return reason;
+}
+
 double finiteOrThrow(const OpenFastFile& f, std::string_view key, std::string_view tok) {
   const std::optional<double> v = parseFortranDouble(tok);
-  if (!v) throw InputError(f.where(key, "'" + std::string(tok) + "' is not a number"));
+  if (!v) throw InputError(f.where(key, notA(tok, "a number")));
   if (std::isnan(*v)) throw InputError(f.where(key, "value is NaN"));
   if (std::isinf(*v)) throw InputError(f.where(key, "value is infinite"));
   return *v;
@@ -304,7 +312,7 @@ int OpenFastFile::getInt(std::string_view key) const {
   long long v = 0;
   const auto [ptr, ec] = std::from_chars(tok.data(), tok.data() + tok.size(), v);
   if (ec != std::errc() || ptr != tok.data() + tok.size() || tok.empty())
-    throw InputError(where(key, "'" + shown + "' is not an integer"));
+    throw InputError(where(key, notA(shown, "an integer")));
   if (v < std::numeric_limits<int>::min() || v > std::numeric_limits<int>::max())
     throw InputError(where(key, "'" + shown + "' is out of the integer range"));
   return static_cast<int>(v);
@@ -313,7 +321,7 @@ int OpenFastFile::getInt(std::string_view key) const {
 bool OpenFastFile::getBool(std::string_view key) const {
   const std::string tok = singleToken(require(key), "True/False flag");
   const std::optional<bool> b = parseBool(tok);
-  if (!b) throw InputError(where(key, "'" + tok + "' is not True or False"));
+  if (!b) throw InputError(where(key, notA(tok, "True or False")));
   return *b;
 }
 

@@ -4,10 +4,17 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <regex>
+
 #include "src/io/aerodyn_input.hpp"
+#include "src/io/airfoil_input.hpp"
+#include "src/io/elastodyn_input.hpp"
+#include "src/io/fst_input.hpp"
 #include "src/io/hydrodyn_input.hpp"
 #include "src/io/inflowwind_input.hpp"
 #include "src/io/openfast_turbine.hpp"
+#include "src/io/seastate_input.hpp"
+#include "src/io/servodyn_input.hpp"
 #include "src/turbine/elastodyn_parts.hpp"
 #include "tests/unit/openfast_test_util.hpp"
 
@@ -23,6 +30,17 @@ namespace io = whirl::io;
 
 const std::filesystem::path kV5 = openfastDataDir() / "v5_syntax";
 const std::filesystem::path kV4 = openfastDataDir() / "v4_seastate";
+const std::filesystem::path kHywind = whirl::test::sourceDir() / "cases" / "oc3_hywind";
+
+/// `text` with the value of the line `value  key  - …` replaced by the keyword `default` (the test
+/// fails when no such line exists).
+std::string withDefault(const std::string& text, const std::string& key) {
+  const std::regex line("(^|\\n)([ \\t]*)\\S+([ \\t]+" + key + "[ \\t])", std::regex::icase);
+  std::smatch m;
+  EXPECT_TRUE(std::regex_search(text, m, line)) << key << " not found";
+  if (m.empty()) return text;
+  return m.prefix().str() + m[1].str() + m[2].str() + "default" + m[3].str() + m.suffix().str();
+}
 
 TEST(OpenFastCurrentSyntax, AeroDynV5DefaultsAndSwitches) {
   const io::AeroDynInput a = io::readAeroDyn(kV5 / "AeroDyn.dat");
@@ -97,6 +115,85 @@ TEST(OpenFastCurrentSyntax, HydroDynAddF0OnOneLineOrAsAColumn) {
   EXPECT_THAT(inputErrorMessage([&] { io::readHydroDyn(bad); }), HasSubstr("b.dat:33: AddF0: row 4 of the 6 preloads (line 36)"));
   const auto three = dir.write("t.dat", replaceOnce(hd, column, "  1 2 3   AddF0"));
   EXPECT_THAT(inputErrorMessage([&] { io::readHydroDyn(three); }), HasSubstr("t.dat:33: AddF0: expected 6 numbers"));
+}
+
+TEST(OpenFastCurrentSyntax, HydroDynV35WaterDefaultsAreTheFst) {
+  // OpenFAST v3.5's HydroDyn (HydroDyn_Input.f90, HydroDyn_ParseInput): WtrDens, WtrDpth and MSL2SWL by
+  // ParseVarWDefault with the glue code's values, i.e. the .fst's environment block (v3.2+);
+  // WavePkShp, CurrSSDir and RdtnDT are strings compared with 'DEFAULT'. cases/oc3_hywind's deck with
+  // every one of them `default` and the .fst's environment block of Test24_v4.fst.
+  ScratchDir dir;
+  const std::filesystem::path hd_name = "NRELOffshrBsline5MW_OC3Hywind_HydroDyn.dat";
+  std::string hd = readText(kHywind / "5MW_Baseline" / hd_name);
+  for (const char* key : {"WtrDens", "WtrDpth", "MSL2SWL", "WavePkShp", "CurrSSDir", "RdtnDT"})
+    hd = withDefault(hd, key);
+  hd = replaceOnce(hd, "             1   RdtnMod", "             0   RdtnMod");  // no convolution in a linearization
+  const auto hd_file = dir.write(hd_name.string(), hd);
+  const io::HydroDynInput h = io::readHydroDyn(hd_file);
+  EXPECT_FALSE(h.WtrDens.has_value());
+  EXPECT_FALSE(h.WtrDpth.has_value());
+
+  const std::string v4 = readText(kV4 / "Test24_v4.fst");
+  const std::size_t env_from = v4.find("          0   MHK"), env_to = v4.find('\n', v4.find("MSL2SWL"));
+  ASSERT_NE(env_from, std::string::npos);
+  std::string fst = readText(kHywind / "Test24.fst");
+  const std::size_t after_ice = fst.find('\n', fst.find("CompIce")) + 1;
+  fst.insert(after_ice, v4.substr(env_from, env_to + 1 - env_from));
+  fst = replaceOnce(fst, "\"5MW_Baseline/" + hd_name.string() + "\"", "\"" + hd_file.string() + "\"");
+  for (std::size_t at; (at = fst.find("\"5MW_Baseline/")) != std::string::npos;)
+    fst.replace(at, 1, "\"" + (kHywind.string() + "/"));
+  const io::OpenFastTurbine t = io::readOpenFastTurbine(dir.write("Test24_v35.fst", fst));
+  EXPECT_EQ(whirl::elastodyn::waterDensity(t), 1025.0);  // the .fst's, as the deck's own HydroDyn value
+  EXPECT_EQ(whirl::elastodyn::waterDepth(t), 320.0);
+  // Without the .fst's block (a FAST v8 .fst) there is no value to default to.
+  const std::string v8 = replaceOnce(readText(kHywind / "Test24.fst"), "\"5MW_Baseline/" + hd_name.string() + "\"",
+                                     "\"" + hd_file.string() + "\"");
+  std::string v8abs = v8;
+  for (std::size_t at; (at = v8abs.find("\"5MW_Baseline/")) != std::string::npos;)
+    v8abs.replace(at, 1, "\"" + (kHywind.string() + "/"));
+  const auto v8_deck = dir.write("Test24_v8.fst", v8abs);
+  EXPECT_THAT(inputErrorMessage([&] { whirl::elastodyn::waterDensity(io::readOpenFastTurbine(v8_deck)); }),
+              HasSubstr("WtrDens: not in the .fst nor in the HydroDyn or SeaState file"));
+}
+
+// `default` where OpenFAST has no default (ParseVar, not ParseVarWDefault, in the module's reader)
+// stops OpenFAST; whirl says so with file, line and key, one key per module file.
+TEST(OpenFastCurrentSyntax, DefaultIsRefusedWhereOpenFastHasNone) {
+  ScratchDir dir;
+  const std::string tail = ": 'default' is not a number (OpenFAST has no default value for this key)";
+  const std::string tail_int = ": 'default' is not an integer (OpenFAST has no default value for this key)";
+  auto edited = [&](const std::filesystem::path& from, const std::string& key) {
+    return dir.write(from.filename().string(), withDefault(readText(from), key));
+  };
+  // FAST_Subs.f90, FAST_ReadPrimaryFile: the environment block by ParseVar.
+  EXPECT_EQ(inputErrorMessage([&] { io::readFst(edited(kV5 / "Main_v5.fst", "AirDens")); }),
+            (dir.path() / "Main_v5.fst").string() + ":32: AirDens" + tail);
+  // ElastoDyn_IO.f90, ReadPrimaryFile: only DT takes "default".
+  EXPECT_EQ(inputErrorMessage([&] { io::readElastoDyn(edited(kV5 / "ElastoDyn.dat", "TipRad")); }),
+            (dir.path() / "ElastoDyn.dat").string() + ":46: TipRad" + tail);
+  // InflowWind_Subs.f90: only VFlowAng and XOffset.
+  EXPECT_EQ(inputErrorMessage([&] { io::readInflowWind(edited(kV5 / "InflowWind.dat", "HWindSpeed")); }),
+            (dir.path() / "InflowWind.dat").string() + ":14: HWindSpeed" + tail);
+  // AeroDyn_IO.f90, ParsePrimaryFileInfo: the switches by ParseVar.
+  EXPECT_EQ(inputErrorMessage([&] { io::readAeroDyn(edited(kV5 / "AeroDyn.dat", "Wake_Mod")); }),
+            (dir.path() / "AeroDyn.dat").string() + ":6: Wake_Mod" + tail_int);
+  // ServoDyn_IO.f90, ParseInputFileInfo: only DT and DLL_DT.
+  EXPECT_EQ(inputErrorMessage([&] { io::readServoDyn(edited(kV5 / "ServoDyn.dat", "VS_RtGnSp")); }),
+            (dir.path() / "ServoDyn.dat").string() + ":37: VS_RtGnSp" + tail);
+  // HydroDyn_Input.f90: PotMod by ParseVar.
+  EXPECT_EQ(inputErrorMessage([&] { io::readHydroDyn(edited(kV4 / "HydroDyn.dat", "PotMod")); }),
+            (dir.path() / "HydroDyn.dat").string() + ":5: PotMod" + tail_int);
+  // SeaState_Input.f90, SeaSt_ParseInput: CurrMod by ParseVar.
+  const std::string sea = withDefault(readText(kV4 / "SeaState.dat"), "CurrMod");
+  EXPECT_THAT(inputErrorMessage([&] { io::readSeaState(dir.write("SeaState.dat", sea)); }),
+              HasSubstr(": CurrMod" + tail_int));
+  // AirfoilInfo.f90, ParseAFFile: NumAlf by ParseVar (a UA coefficient it cannot read is computed instead:
+  // CalcDefaults).
+  EXPECT_THAT(inputErrorMessage([&] {
+                io::readAirfoil(
+                    edited(whirl::test::nrel5mwDir() / "5MW_Baseline" / "Airfoils" / "DU21_A17.dat", "NumAlf"));
+              }),
+              HasSubstr("DU21_A17.dat:52: NumAlf: 'default' is not"));
 }
 
 }  // namespace
