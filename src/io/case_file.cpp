@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 #include <utility>
+#include <vector>
 
 #include "src/io/input_file.hpp"
 #include "src/io/case_reader.hpp"
@@ -13,16 +14,27 @@
 namespace whirl {
 namespace {
 
-// `label` names the text in messages (the file, or "<dict>" for a case built in Python).
+// The 1-based line of a yaml-cpp mark, 0 when yaml-cpp has none.
+int markLine(const YAML::Mark& mark) { return mark.is_null() ? 0 : mark.line + 1; }
+
+// `label` names the text in messages (the file, or "<dict>" for a case built in Python). yaml-cpp's
+// what() starts "yaml-cpp: error at line …": only its message and line reach the user.
 template <class Source>
 YAML::Node parse(Source& in, const std::string& label) {
+  std::vector<YAML::Node> docs;
   try {
-    return YAML::Load(in);
+    docs = YAML::LoadAll(in);
   } catch (const YAML::ParserException& e) {
-    throw InputError(where(label, e.mark.is_null() ? 0 : e.mark.line + 1, "", "YAML syntax error: " + e.msg));
+    throw InputError(where(label, markLine(e.mark), "", "YAML syntax error: " + e.msg));
   } catch (const YAML::Exception& e) {
-    throw InputError(where(label, 0, "", std::string("cannot read the YAML: ") + e.what()));
+    throw InputError(where(label, markLine(e.mark), "", "cannot read the YAML: " + e.msg));
   }
+  // A second document (after a `---` line) would be ignored: a case is one document.
+  for (size_t k = 1; k < docs.size(); ++k)
+    if (!docs[k].IsNull())
+      throw InputError(where(label, markLine(docs[k].Mark()), "",
+                             "a second YAML document (after a '---' line): a case file holds one"));
+  return docs.empty() ? YAML::Node() : docs.front();
 }
 
 YAML::Node load(const std::string& path) {
@@ -49,7 +61,8 @@ Model readCaseDocument(YAML::Node doc, const std::string& path, const std::strin
   source.folder = folder;
   applyOverrides(doc, overrides, source);
   const CaseNode top(doc, source);
-  if (!top.isMap()) top.fail("a case file is a map of keys (name, gravity, bodies, ...), this one is empty or a list");
+  if (!top.isMap())
+    top.fail("a case file is a map of keys (name, gravity, bodies, ...), this one is empty, a list or a single value");
   top.allowKeys({"name", "description", "gravity", "inputs", "bodies", "dofs", "loads", "outputs",
                  "wind", "aero", "generator"});
 
@@ -81,17 +94,32 @@ Model readCaseDocument(YAML::Node doc, const std::string& path, const std::strin
   return model;
 }
 
+// Runs `read`; a yaml-cpp exception that escapes the readers (they ask the node's type before every
+// access, so none should) becomes an InputError at its line: no library text reaches the user.
+template <class Read>
+Model guarded(const std::string& label, Read&& read) {
+  try {
+    return read();
+  } catch (const YAML::Exception& e) {
+    throw InputError(where(label, markLine(e.mark), "", "a value of an unexpected YAML type here"));
+  }
+}
+
 }  // namespace
 
 Model readCase(const std::string& path, const std::vector<CaseOverride>& overrides,
                std::vector<fem::FlexibleBeam>* beams, bool allow_outside_files) {
-  return readCaseDocument(load(path), path, std::filesystem::path(path).parent_path().string(), overrides, beams,
-                          allow_outside_files);
+  return guarded(path, [&] {
+    return readCaseDocument(load(path), path, std::filesystem::path(path).parent_path().string(), overrides, beams,
+                            allow_outside_files);
+  });
 }
 
 Model readCaseText(const std::string& text, const std::string& label, const std::string& folder,
                    const std::vector<CaseOverride>& overrides, bool allow_outside_files) {
-  return readCaseDocument(parse(text, label), label, folder, overrides, nullptr, allow_outside_files);
+  return guarded(label, [&] {
+    return readCaseDocument(parse(text, label), label, folder, overrides, nullptr, allow_outside_files);
+  });
 }
 
 }  // namespace whirl
