@@ -524,6 +524,7 @@ std::vector<SteadyState> trimSchedule(const Model& m, const std::vector<double>&
       }
     }
     out.push_back(trimAtWindSpeed(m, w, g, opt));
+    if (opt.progress) opt.progress(static_cast<int>(out.size()), static_cast<int>(winds.size()));
   }
   return out;
 }

@@ -10,6 +10,7 @@
 /// geometry (quasi-steady BEM) at a few azimuths spanning a third of a revolution, so the 3P torque
 /// ripple averages out; the scalar root is bracketed (Brent), so a trim either converges or says
 /// why not.
+#include <functional>
 #include <string>
 
 #include <vector>
@@ -31,6 +32,9 @@ struct TrimOptions {
   /// the trim settles where that controller does (docs/theory/controller.md), with the generator torque
   /// it commands as the condition's generator torque (the model's torque law, if any, is not used).
   const RoscoController* controller = nullptr;
+  /// Called by trimSchedule after each wind speed with (done, total); it may throw to stop the schedule
+  /// (the Python module's progress callback and Ctrl-C).
+  std::function<void(int, int)> progress;
 };
 
 /// A steady operating point, averaged over the azimuths of one blade passage.

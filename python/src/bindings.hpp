@@ -8,12 +8,14 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "linearize/operating_point.hpp"
 #include "linearize/sweep.hpp"
 #include "src/model/model.hpp"
+#include "src/model/rosco_controller.hpp"
 
 namespace whirl::python {
 
@@ -39,6 +41,9 @@ class SweepGuard {
  public:
   explicit SweepGuard(py::object callback) : callback_(std::move(callback)) {}
   std::function<void(int, int)> progress();
+  /// The callback of a sweep in two phases (trimming the wind speeds, then the sweep): phase 0 reports
+  /// (done, 2 n), phase 1 (n + done, 2 n), so one bar covers both.
+  std::function<void(int, int)> phase(int index);
   /// Runs the sweep `f` with the GIL released (runReleased) and re-raises a Python error of the callback.
   void runSweep(const PyModel& m, const std::function<void()>& f);
 
@@ -51,6 +56,10 @@ class SweepGuard {
 /// solved points, the first one a ComputeError naming the model (and `where`) unless allowed.
 std::vector<std::string> checkValidity(const PyModel& p, const Model& m, const std::vector<OperatingPoint>& ops,
                                        const std::string& where, bool allow_invalid_point);
+
+/// The ROSCO controller of the model's deck, as the commands read it along the wind
+/// (io::readDeckController with the model's overrides); none for a YAML case or a dict.
+std::optional<RoscoController> deckController(const PyModel& p);
 
 /// The sweep points of a schedule: a CSV path (readSchedule), or rows (rpm, wind speed or None,
 /// pitch [deg] or None) from a DataFrame.

@@ -37,6 +37,11 @@ std::function<void(int, int)> SweepGuard::progress() {
   };
 }
 
+std::function<void(int, int)> SweepGuard::phase(int index) {
+  std::function<void(int, int)> f = progress();
+  return [f, index](int done, int total) { f(index * total + done, 2 * total); };
+}
+
 void SweepGuard::runSweep(const PyModel& m, const std::function<void()>& f) {
   try {
     runReleased(m, f);

@@ -13,7 +13,6 @@
 #include "linearize/trim.hpp"
 #include "python/src/bindings.hpp"
 #include "python/src/operating_point.hpp"
-#include "src/io/discon_input.hpp"
 #include "src/model/error.hpp"
 #include "src/writers/output_set.hpp"
 #include "src/writers/state_space_files.hpp"
@@ -107,11 +106,7 @@ std::vector<PyLinear> exportPoints(const PyModel& p, const std::optional<std::ve
     sp.rpm = sp.condition.rotor_speed * 30 / std::numbers::pi;
     points.push_back(sp);
   }
-  std::optional<RoscoController> controller;
-  if (wind && p.source != "<dict>") {
-    py::gil_scoped_release released;
-    controller = io::readDeckController(p.source, p.sets);
-  }
+  const std::optional<RoscoController> controller = wind ? deckController(p) : std::nullopt;
   if (out) prepareOutputFolder(*out);
   ExportOptions eo;
   eo.azimuths = azimuths;
@@ -121,7 +116,7 @@ std::vector<PyLinear> exportPoints(const PyModel& p, const std::optional<std::ve
   SweepGuard guard(progress);
   SweepOptions sweep;
   sweep.azimuths = azimuths;
-  sweep.progress = guard.progress();
+  sweep.progress = wind ? guard.phase(1) : guard.progress();
   const bool labelled = !schedule.is_none() || wind || (rpm && rpm->size() > 1);
   sweep.check_point = [&](const Model& pm, const std::vector<OperatingPoint>& ops, const SweepPoint& sp) {
     return checkValidity(p, pm, ops, labelled ? fmt::format("{:g} rpm", sp.rpm) : "", allow_invalid_point);
@@ -133,6 +128,7 @@ std::vector<PyLinear> exportPoints(const PyModel& p, const std::optional<std::ve
     if (wind) {
       TrimOptions trim;
       if (controller) trim.controller = &*controller;
+      trim.progress = guard.phase(0);
       for (const SteadyState& s : trimSchedule(m, *wind, trim)) points.push_back(sweepPointOf(s));
     }
     e.points = exportSweep(m, points, eo, sweep);

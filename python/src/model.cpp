@@ -14,6 +14,7 @@
 #include "python/src/bindings.hpp"
 #include "python/src/operating_point.hpp"
 #include "src/io/case_file.hpp"
+#include "src/io/discon_input.hpp"
 #include "src/model/error.hpp"
 #include "src/turbine/load_model.hpp"
 
@@ -84,6 +85,12 @@ py::list bodyTable(const Model& m) {
 }
 
 }  // namespace
+
+std::optional<RoscoController> deckController(const PyModel& p) {
+  if (p.source == "<dict>") return std::nullopt;
+  py::gil_scoped_release released;
+  return io::readDeckController(p.source, p.sets);
+}
 
 OperatingCondition conditionOf(const Model& m, std::optional<double> rpm, std::optional<double> wind,
                                std::optional<double> pitch_deg, std::optional<double> azimuth_deg) {

@@ -24,15 +24,20 @@
 namespace whirl::python {
 namespace {
 
-py::dict steady(const PyModel& p, const std::vector<double>& winds, int azimuths) {
+py::dict steady(const PyModel& p, const std::vector<double>& winds, int azimuths, const py::object& progress) {
   const Model& m = *p.model;
   if (!m.aero.active())
     throw InputError(p.source + ": the model has no aerodynamics (an OpenFAST deck with CompAero = 2)");
   if (azimuths < 1 || azimuths > 360) throw InputError("azimuths: must be in 1 … 360");
   TrimOptions trim;
   trim.azimuths = azimuths;
+  // The deck's ROSCO controller, when it names one, as `whirl steady` (docs/user/controller.md).
+  const std::optional<RoscoController> controller = deckController(p);
+  if (controller) trim.controller = &*controller;
+  SweepGuard guard(progress);
+  trim.progress = guard.progress();
   std::vector<SteadyState> states;
-  runReleased(p, [&] { states = trimSchedule(m, winds, trim); });
+  guard.runSweep(p, [&] { states = trimSchedule(m, winds, trim); });
   const std::vector<std::string>& names = steadyColumns();
   std::vector<std::vector<double>> columns(names.size() - 1);
   std::vector<std::string> region;
@@ -110,17 +115,22 @@ py::dict campbell(const PyModel& p, const std::optional<std::vector<double>>& rp
     for (double r : *rpm) points.push_back(sweepPoint(r));
   else if (!schedule.is_none())
     points = schedulePoints(schedule);
+  const std::optional<RoscoController> controller = wind ? deckController(p) : std::nullopt;
   SweepGuard guard(progress);
   SweepOptions sweep;
   sweep.azimuths = azimuths;
-  sweep.progress = guard.progress();
+  sweep.progress = wind ? guard.phase(1) : guard.progress();
   sweep.check_point = [&](const Model& pm, const std::vector<OperatingPoint>& ops, const SweepPoint& sp) {
     return checkValidity(p, pm, ops, fmt::format("{:g} rpm", sp.rpm), allow_invalid_point);
   };
   CampbellDiagram d;
   guard.runSweep(p, [&] {
-    if (wind)  // each wind speed trimmed, as `whirl campbell --wind` (trimmedPoints)
-      for (const SteadyState& s : trimSchedule(m, *wind)) points.push_back(sweepPointOf(s));
+    if (wind) {  // each wind speed trimmed, as `whirl campbell --wind` (trimmedPoints, the deck's controller)
+      TrimOptions trim;
+      if (controller) trim.controller = &*controller;
+      trim.progress = guard.phase(0);
+      for (const SteadyState& s : trimSchedule(m, *wind, trim)) points.push_back(sweepPointOf(s));
+    }
     d.points = campbellSweep(m, points, sweep);
     d.lines = trackModes(d.points);
   });
@@ -239,7 +249,7 @@ std::vector<SweepPoint> schedulePoints(const py::object& schedule) {
 }
 
 void bindSweeps(py::module_& m) {
-  m.def("steady", &steady, py::arg("model"), py::arg("wind"), py::arg("azimuths") = 3);
+  m.def("steady", &steady, py::arg("model"), py::arg("wind"), py::arg("azimuths") = 3, py::arg("progress") = py::none());
   m.def("campbell", &campbell, py::arg("model"), py::arg("rpm") = py::none(), py::arg("wind") = py::none(),
         py::arg("schedule") = py::none(), py::arg("azimuths") = 36, py::arg("progress") = py::none(),
         py::arg("participations") = false, py::arg("allow_invalid_point") = false);

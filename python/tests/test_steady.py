@@ -39,3 +39,28 @@ def test_campbell_along_the_wind_equals_the_cli(aero, tmp_path):
 def test_structural_model_has_no_steady(onshore):
     with pytest.raises(whirl.InputError, match="has no aerodynamics"):
         onshore.steady(wind=[8])
+
+
+def test_rosco_deck_trims_with_its_controller_as_the_cli(tmp_path):
+    """Main_ROSCO.fst names ROSCO's DISCON.IN: `whirl steady` trims where that controller settles
+    (region column "ROSCO 2", "ROSCO 3"); the module reads the same controller."""
+    deck = case("nrel5mw", "Main_ROSCO.fst")
+    code, _, err = cli("steady", deck, "--wind", "8:6:14", "--no-plot", "--out", tmp_path)
+    assert code == 0, err
+    expected = pd.read_csv(tmp_path / "steady.csv", float_precision="round_trip")
+    seen = []
+    got = whirl.load(deck).steady(wind=[8, 14], progress=lambda done, total: seen.append((done, total)))
+    assert list(got["region"]) == ["ROSCO 2", "ROSCO 3"]
+    pd.testing.assert_frame_equal(got, expected, check_exact=True, check_dtype=False)
+    assert seen == [(1, 2), (2, 2)]
+
+
+def test_interrupting_the_trims(aero):
+    def interrupt(done, total):
+        raise KeyboardInterrupt
+
+    with pytest.raises(KeyboardInterrupt):
+        aero.steady(wind=[8, 9, 10], progress=interrupt)
+    with pytest.raises(KeyboardInterrupt):
+        aero.campbell(wind=[8, 9], azimuths=2, progress=interrupt)  # stopped in the trims
+    assert len(aero.steady(wind=[8])) == 1  # the model stays usable

@@ -246,10 +246,16 @@ class Model:
         """
         return LinearModel(_whirl.linearize(self._core, op, azimuths, list(inputs), list(outputs), drop_azimuth))
 
-    def steady(self, wind: Iterable[float], azimuths: int = 3) -> pd.DataFrame:
+    def steady(self, wind: Iterable[float], azimuths: int = 3,
+               progress: Union[None, bool, Callable[[int, int], Any]] = None) -> pd.DataFrame:
         """Trimmed steady operating points along the wind (``whirl steady --wind``): a DataFrame with
-        the columns of steady.csv (wind_speed_m_s, rotor_speed_rpm, pitch_deg, aero_power_kw, …, region)."""
-        return pd.DataFrame(_whirl.steady(self._core, [float(w) for w in np.atleast_1d(wind)], azimuths))
+        the columns of steady.csv (wind_speed_m_s, rotor_speed_rpm, pitch_deg, aero_power_kw, …, region).
+
+        wind: wind speeds [m/s], trimmed in order (each search started from its predecessors), with the
+        deck's ROSCO controller when its ServoDyn file names one; azimuths: equilibria per torque
+        evaluation over one blade passage. ``progress`` and Ctrl-C as :meth:`campbell` (per wind speed).
+        """
+        return pd.DataFrame(_whirl.steady(self._core, _floats(wind), azimuths, _progress(progress)))
 
     def modes(self, op: Optional[OperatingPoint] = None, azimuths: int = 36,
               allow_invalid_point: bool = False) -> pd.DataFrame:
@@ -275,7 +281,8 @@ class Model:
         damping_ratio, stable, rigid_body, first_order (and ``participation: <coordinate>`` columns
         when ``participations``). ``.plot()`` draws the CLI's two panels.
 
-        ``progress``: a callable (done, total) called after each point, or True for a tqdm bar.
+        ``progress``: a callable (done, total) called after each point, or True for a tqdm bar (along
+        the wind the trims count too: total is twice the number of wind speeds).
         Ctrl-C (KeyboardInterrupt) or an exception of the callback stops the sweep after the point
         being computed, and is raised here.
         """
