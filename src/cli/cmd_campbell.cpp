@@ -143,9 +143,11 @@ void addCampbellCommand(CLI::App& app) {
       "--first-order-lines", opt->first_order_lines,
       "also draw the lines of first-order states' roots (HydroDyn radiation), which are in the tables anyway");
   cmd->add_option("--format", opt->formats,
-                  "also write these formats (repeatable or comma-separated): hawcstab2 (campbell.cmb, .amp, .opt)")
+                  "also write these formats (repeatable or comma-separated): hawcstab2 (campbell.cmb, .amp, .opt), "
+                  "openfast (openfast_toolbox's Campbell_ModesID.csv, Campbell_OP.csv, Campbell_PointNN.csv, "
+                  "Campbell_Summary.txt), vtk (mode_<line>_p<point>.pvd animations of .vtp polylines for ParaView)")
       ->delimiter(',')
-      ->check(CLI::IsMember({"hawcstab2"}));
+      ->check(CLI::IsMember({"hawcstab2", "openfast", "vtk"}));
   cmd->add_flag("--html", opt->html,
                 "also write campbell.html: the interactive report (diagram, mode shapes, tables), one file, no network");
   cmd->callback([opt]() { runWithCaseSource(opt->model.case_path, [&] { run(*opt); }); });

@@ -7,10 +7,30 @@
 #include "src/writers/gnuplot.hpp"
 #include "src/writers/hawcstab2_files.hpp"
 #include "src/writers/mode_shape_tables.hpp"
+#include "src/writers/mode_shape_vtk.hpp"
+#include "src/writers/openfast_campbell_files.hpp"
 #include "src/writers/output_set.hpp"
 #include "src/model/error.hpp"
 
 namespace whirl {
+
+namespace {
+
+// One animation per shown line and point where the line has a mode with a motion:
+// mode_<line>_p<point>.pvd and its frames (src/writers/mode_shape_vtk.hpp).
+void writeCampbellVtk(const CampbellDiagram& d, const CampbellPlotOptions& opt, OutputSet& files) {
+  for (const CampbellLine& line : d.lines) {
+    if (!campbellLineShown(d, line, opt)) continue;
+    for (std::size_t p = 0; p < d.points.size(); ++p) {
+      if (line.mode[p] < 0) continue;
+      const Mode& m = d.points[p].modes[static_cast<std::size_t>(line.mode[p])];
+      const std::string stem = "mode_" + vtkFileStem(line.name) + "_p" + std::to_string(p);
+      for (const auto& [name, text] : modeShapeVtk(m.motion, stem, m.freq_hz, m.damped_freq_hz)) files.write(name, text);
+    }
+  }
+}
+
+}  // namespace
 
 std::vector<std::string> writeCampbell(const CampbellDiagram& d, const std::string& dir, const CampbellPlotOptions& opt) {
   checkCampbell(d, opt);
@@ -37,6 +57,14 @@ std::vector<std::string> writeCampbell(const CampbellDiagram& d, const std::stri
     files.write("campbell.amp", hawcstab2Amp(d));
     files.write("campbell.opt", hawcstab2Opt(d));
   }
+  if (std::find(opt.formats.begin(), opt.formats.end(), "openfast") != opt.formats.end()) {
+    files.write("Campbell_OP.csv", openfastCampbellOp(d));
+    files.write("Campbell_ModesID.csv", openfastCampbellModesId(d));
+    for (std::size_t p = 0; p < d.points.size(); ++p)
+      files.write(openfastCampbellPointName(p), openfastCampbellPoint(d, p));
+    files.write("Campbell_Summary.txt", openfastCampbellSummary(d));
+  }
+  if (std::find(opt.formats.begin(), opt.formats.end(), "vtk") != opt.formats.end()) writeCampbellVtk(d, opt, files);
   // Mode shapes per operating point, when the sweep computed them (modal/mode_shapes.hpp).
   for (std::size_t p = 0; p < d.points.size(); ++p) {
     bool any = false;

@@ -16,7 +16,10 @@
 ///   nP excitation lines; styles, ranges and sizes are set at its top for restyling.
 /// - `mode_shapes_<point>.csv`: the node motion of every mode of point <point> (0-based), when the sweep
 ///   computed it (src/writers/mode_shape_tables.hpp); the same motion is in campbell_modes.json.
-/// - with CampbellPlotOptions::formats: HAWCStab2's campbell.cmb/.amp/.opt.
+/// - with CampbellPlotOptions::formats: HAWCStab2's campbell.cmb/.amp/.opt ("hawcstab2"); openfast_toolbox's
+///   Campbell_OP.csv, Campbell_ModesID.csv, Campbell_PointNN.csv, Campbell_Summary.txt ("openfast",
+///   src/writers/openfast_campbell_files.hpp); per shown line and point with a motion, the VTK animation
+///   mode_<line>_p<point>.pvd with its .vtp frames ("vtk", src/writers/mode_shape_vtk.hpp).
 /// - with CampbellPlotOptions::html: campbell.html, the interactive report.
 #include <string>
 #include <utility>
@@ -36,7 +39,7 @@ struct CampbellPlotOptions {
   /// radiation); by default they are in the tables only.
   bool first_order_lines = false;
   /// Further formats written beside the tables: "hawcstab2" (campbell.cmb, .amp, .opt,
-  /// src/writers/hawcstab2_files.hpp).
+  /// src/writers/hawcstab2_files.hpp), "openfast" (openfast_toolbox's Campbell_*.csv), "vtk" (ParaView).
   std::vector<std::string> formats;
   /// Also write campbell.html, the interactive report (src/writers/campbell_html.hpp), with this input
   /// summary (what, value).

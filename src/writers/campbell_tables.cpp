@@ -22,7 +22,8 @@ void checkCampbell(const CampbellDiagram& d, const CampbellPlotOptions& opt) {
                                                " is not one of its " + std::to_string(d.points[p].modes.size()) + " modes"));
   }
   for (const std::string& f : opt.formats)
-    if (f != "hawcstab2") throw InputError(where("", 0, "Campbell formats", "unknown format '" + f + "' (allowed: hawcstab2)"));
+    if (f != "hawcstab2" && f != "openfast" && f != "vtk")
+      throw InputError(where("", 0, "Campbell formats", "unknown format '" + f + "' (allowed: hawcstab2, openfast, vtk)"));
   for (int n : opt.harmonics)
     if (n < 1) throw InputError(where("", 0, "Campbell plot harmonics", std::to_string(n) + "P: must be 1 or more"));
   if (opt.versus_wind_speed)
