@@ -13,8 +13,8 @@
 ///
 /// Frame k of N (k = 0 … N−1) puts every node at p + s Re(R u e^{iφ_k}), φ_k = 2πk/N: p its position at
 /// the operating point (ground, m), R u its translation amplitude in ground components (the motion is
-/// normalised to a largest amplitude of 1), s the drawing scale = `scale_fraction` × the diagonal of the
-/// bounding box of the undeformed nodes [m]. The frame's `timestep` in the .pvd is k T/N with T = 1/f_d
+/// normalised to a largest component amplitude of 1), s the drawing scale = `scale_fraction` × the
+/// diagonal of the bounding box of the undeformed nodes [m]. The frame's `timestep` in the .pvd is k T/N with T = 1/f_d
 /// the mode's damped period [s] (1/f when f_d = 0; k/N, a fraction of a cycle, for a rigid-body mode).
 /// Point data `displacement` (the drawn displacement s Re(R u e^{iφ_k}) [m]) and `amplitude` (|R u|, per
 /// unit of the mode); cell data `body`: the index of the polyline's body in ModeMotion::bodies (the

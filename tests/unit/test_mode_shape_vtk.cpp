@@ -12,8 +12,14 @@
 #include <numbers>
 #include <sstream>
 
+#include "linearize/operating_point.hpp"
+#include "linearize/periodic.hpp"
+#include "modal/mode_shapes.hpp"
+#include "modal/rotor_modes.hpp"
+#include "src/turbine/elastodyn_model.hpp"
 #include "src/writers/campbell_output.hpp"
 #include "src/writers/mode_shape_vtk.hpp"
+#include "tests/unit/openfast_test_util.hpp"
 #include "test_util.hpp"
 
 namespace whirl {
@@ -270,6 +276,50 @@ TEST(ModeShapeVtk, AnEmptyMotionWritesNothing) {
   EXPECT_TRUE(modeShapeVtk(ModeMotion{}, "x", 1, 1).empty());
   EXPECT_EQ(vtkFileStem("flap 1 BW (2)"), "flap_1_BW_2");
   EXPECT_EQ(vtkFileStem("--"), "mode");
+}
+
+// The NREL 5MW at 12 rpm (cases/nrel5mw/Main_Onshore.fst, 12 azimuths), its first backward-whirl flap
+// mode: the tower (11 nodes), the chain tower top → nacelle → generator → hub, three blades of 11 nodes
+// hung on the hub centre; the drawn displacements scaled by 0.1 × the model's size: the motion's largest
+// component amplitude is 1 (modal/mode_shapes.hpp), so the largest drawn displacement over the frames
+// lies between that scale × cos(π/16) (16 phase steps) and the scale × the largest node amplitude |u|.
+TEST(ModeShapeVtk, Nrel5mwFlapWhirlIsDrawnAsTowerShaftAndThreeBlades) {
+  const Model model = readElastoDynModel((test::nrel5mwDir() / "Main_Onshore.fst").string(), {"RotSpeed=12"});
+  PeriodicOptions popt;
+  popt.azimuths = 12;
+  const PeriodicLinearization lin = linearizePeriodic(model, initialPoint(model), popt);
+  RotorModes r = rotorModes(model, lin);
+  addModeMotions(model, lin, r.num_blades, r.coordinates, r.modes);
+  const Mode* flap = nullptr;
+  for (const Mode& m : r.modes)
+    if (m.name == "flap 1 BW") flap = &m;
+  ASSERT_NE(flap, nullptr);
+  const auto files = modeShapeVtk(flap->motion, "flap", flap->freq_hz, flap->damped_freq_hz);
+  ASSERT_EQ(files.size(), 17u);
+  double size = 0;
+  {
+    Vec3 lo = Vec3::Constant(1e300), hi = -lo;
+    for (const BodyMotion& b : flap->motion.bodies)
+      for (Eigen::Index k = 0; k < b.position.cols(); ++k) lo = lo.cwiseMin(b.position.col(k)), hi = hi.cwiseMax(b.position.col(k));
+    size = (hi - lo).norm();
+  }
+  EXPECT_GT(size, 120);  // 87.6 m hub height + 63 m rotor radius
+  double amplitude = 0;
+  for (const BodyMotion& b : flap->motion.bodies)
+    for (Eigen::Index k = 0; k < b.u.rows(); ++k) amplitude = std::max(amplitude, b.u.row(k).head<3>().norm());
+  EXPECT_GE(amplitude, 1.0);
+  double largest = 0;
+  for (std::size_t f = 1; f < files.size(); ++f) {
+    const PolyData pd = checkPolyData(files[f].second);
+    ASSERT_EQ(pd.cells.size(), 5u);
+    EXPECT_EQ(pd.cells[0].size(), 11u);  // tower nodes
+    EXPECT_EQ(pd.cells[1].size(), 4u);   // tower top, nacelle, generator, hub
+    for (std::size_t b = 2; b < 5; ++b) EXPECT_EQ(pd.cells[b].size(), 12u);  // hub centre + 11 blade nodes
+    for (std::size_t i = 0; i + 2 < pd.displacement.size(); i += 3)
+      largest = std::max(largest, Vec3(pd.displacement[i], pd.displacement[i + 1], pd.displacement[i + 2]).norm());
+  }
+  EXPECT_LE(largest, 0.1 * size * amplitude * (1 + 1e-12));
+  EXPECT_GE(largest, 0.1 * size * std::cos(std::numbers::pi / 16));
 }
 
 // `campbell --format vtk` (writeCampbell): one animation per line and point with a mode, its .pvd's
