@@ -8,7 +8,13 @@ project = "whirl"
 author = "the whirl developers"
 copyright = "the whirl developers"
 
-extensions = ["myst_parser", "breathe"]
+extensions = ["myst_parser", "breathe", "sphinx.ext.autodoc", "sphinx.ext.napoleon"]
+
+# The Python API reference (user/python-api.md) is read from the built module's docstrings: scripts/docs.sh
+# puts BUILD/python on PYTHONPATH. Members in source order, as the docstrings refer to each other.
+autodoc_member_order = "bysource"
+autodoc_typehints = "description"
+napoleon_numpy_docstring = True
 source_suffix = {".md": "markdown"}
 root_doc = "index"
 exclude_patterns = ["_build", "Thumbs.db", ".DS_Store"]

@@ -15,6 +15,7 @@ packages=(
   # the Python module (python/, docs/user/python.md): pybind11, and what its package and tests use
   pybind11-dev python3-dev python3-pybind11 python3-numpy python3-pandas python3-pytest python3-xarray
   python3-matplotlib python3-yaml
+  jupyter-nbconvert python3-ipykernel  # the example notebooks, executed by the tests and the docs (run-notebooks.sh)
   libjs-d3 libjs-three  # inlined into the interactive Campbell report (campbell --html, whirl report)
   chromium chromium-driver python3-selenium  # the report's test in headless Chromium (skipped without them)
   "$@"

@@ -137,17 +137,22 @@ void bindModel(py::module_& m) {
           py::arg("azimuth") = py::none());
 
   py::class_<PyOperatingPoint>(m, "OperatingPoint", "A solved equilibrium at an operating condition.")
-      .def_readonly("rpm", &PyOperatingPoint::rpm)
-      .def_readonly("wind_speed", &PyOperatingPoint::wind_speed)
-      .def_readonly("pitch_deg", &PyOperatingPoint::pitch_deg)
+      .def_readonly("rpm", &PyOperatingPoint::rpm, "rotor speed [rpm]")
+      .def_readonly("wind_speed", &PyOperatingPoint::wind_speed, "hub-height wind speed [m/s] as given, or None")
+      .def_readonly("pitch_deg", &PyOperatingPoint::pitch_deg, "collective pitch [deg] as given, or None")
       .def_property_readonly("q", [](const PyOperatingPoint& o) -> const VecX& { return o.point.q; },
-                             py::return_value_policy::reference_internal)
+                             py::return_value_policy::reference_internal,
+                             "coordinates at the equilibrium, all DOFs in model order [m or rad] (read-only view)")
       .def_property_readonly("qd", [](const PyOperatingPoint& o) -> const VecX& { return o.point.qd; },
-                             py::return_value_policy::reference_internal)
+                             py::return_value_policy::reference_internal,
+                             "their rates [m/s or rad/s]: the rotor speed on rotating DOFs (read-only view)")
       .def_property_readonly("u", [](const PyOperatingPoint& o) -> const VecX& { return o.point.u; },
-                             py::return_value_policy::reference_internal)
-      .def_property_readonly("iterations", [](const PyOperatingPoint& o) { return o.point.iterations; })
-      .def_property_readonly("residual_norm", [](const PyOperatingPoint& o) { return o.point.residual_norm; });
+                             py::return_value_policy::reference_internal,
+                             "inputs at the point, in the units of Model.inputs (read-only view)")
+      .def_property_readonly("iterations", [](const PyOperatingPoint& o) { return o.point.iterations; },
+                             "Newton iterations of the equilibrium")
+      .def_property_readonly("residual_norm", [](const PyOperatingPoint& o) { return o.point.residual_norm; },
+                             "norm of the residual at the equilibrium [N, N m]");
 
   m.def("load", &load, py::arg("path"), py::arg("sets") = std::vector<std::string>{},
         py::arg("allow_outside_files") = false);

@@ -338,7 +338,7 @@ class Model:
         to ``f_to`` [Hz].
 
         Returns a :class:`BodeTable` indexed by ``freq_hz`` with bode.csv's columns
-        ``"Y / U dB"`` (20 log10 |G|, G in SI units) and ``"Y / U deg"`` (phase in (−180°, 180°]) —
+        ``"Y / U dB"`` (20 log10 ``|G|``, G in SI units) and ``"Y / U deg"`` (phase in (−180°, 180°]) —
         the same numbers as bode.csv; ``attrs["static_gain"]`` holds the signed static gains G(0) the
         CLI prints. ``out``: write bode.csv, bode.gp (and bode.png/svg when ``plot`` and Gnuplot is
         installed) into that folder.

@@ -40,9 +40,9 @@ class StateSpace:
         """name, unit, operating value op, blade of each output."""
         return pd.DataFrame(self._core.outputs(), columns=["name", "unit", "op", "blade"])
 
-    state_names = property(lambda self: [s["name"] for s in self._core.states()])
-    input_names = property(lambda self: [s["name"] for s in self._core.inputs()])
-    output_names = property(lambda self: [s["name"] for s in self._core.outputs()])
+    state_names = property(lambda self: [s["name"] for s in self._core.states()], doc="state names, in order")
+    input_names = property(lambda self: [s["name"] for s in self._core.inputs()], doc="input names, in order")
+    output_names = property(lambda self: [s["name"] for s in self._core.outputs()], doc="output names, in order")
 
     def to_scipy(self):
         """A ``scipy.signal.StateSpace`` (continuous time) with copies of A, B, C, D."""
