@@ -4,6 +4,8 @@
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 
+#include <chrono>
+#include <memory>
 #include <numbers>
 
 #include <fmt/format.h>
@@ -26,6 +28,7 @@ struct PyLinear {
   ExportPoint point;
   LinearModel second_order;  ///< empty for the points of Model.export (has_second_order false)
   bool has_second_order = false;
+  double seconds = 0;  ///< wall time of the library's computation (GIL released) [s]
 };
 
 py::list variables(const std::vector<StateSpaceVariable>& v) {
@@ -43,7 +46,8 @@ void matrixProperty(py::class_<T>& c, const char* name, Get get, const char* doc
   c.def_property_readonly(name, get, py::return_value_policy::reference_internal, doc);
 }
 
-PyLinear linearizeAt(const PyModel& p, const py::object& op, int azimuths, const std::vector<std::string>& inputs,
+// Built on the heap and handed to Python as is: no move of the per-azimuth models into a new object.
+std::unique_ptr<PyLinear> linearizeAt(const PyModel& p, const py::object& op, int azimuths, const std::vector<std::string>& inputs,
                      const std::vector<std::string>& outputs, bool drop_azimuth) {
   SweepPoint sp;
   if (op.is_none()) {
@@ -64,12 +68,14 @@ PyLinear linearizeAt(const PyModel& p, const py::object& op, int azimuths, const
   eo.drop_azimuth = drop_azimuth;
   SweepOptions sweep;
   sweep.azimuths = azimuths;
-  PyLinear out;
+  auto out = std::make_unique<PyLinear>();
   runReleased(p, [&] {
-    out.point = std::move(exportSweep(*p.model, {sp}, eo, sweep).front());
-    out.second_order = linearize(*p.model, out.point.equilibrium);
+    const auto start = std::chrono::steady_clock::now();
+    out->point = std::move(exportSweep(*p.model, {sp}, eo, sweep).front());
+    out->second_order = linearize(*p.model, out->point.equilibrium);
+    out->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   });
-  out.has_second_order = true;
+  out->has_second_order = true;
   return out;
 }
 
@@ -172,6 +178,8 @@ void bindLinear(py::module_& m) {
       .def_property_readonly("wind_speed", [](const PyLinear& l) { return l.point.wind_speed; })
       .def_property_readonly("pitch_deg", [](const PyLinear& l) { return l.point.pitch_deg; })
       .def_readonly("has_second_order", &PyLinear::has_second_order)
+      .def_readonly("seconds", &PyLinear::seconds,
+                    "wall time of the library's computation [s], without the Python call around it")
       .def_property_readonly("dof_names", [](const PyLinear& l) { return l.second_order.dof_names; })
       .def_property_readonly("second_order_inputs", [](const PyLinear& l) { return l.second_order.input_names; });
   matrixProperty(lin, "M", [](const PyLinear& l) -> const MatX& { return l.second_order.M; }, "mass matrix");

@@ -63,6 +63,7 @@ class LinearModel(ExportedModel):
     K: npt.NDArray[np.float64]
     Q: npt.NDArray[np.float64]
     dof_names: List[str]
+    compute_seconds: float
 
 class CampbellTable(pd.DataFrame):
     def plot(self, versus: Optional[str] = ..., harmonics: Sequence[int] = ..., max_freq: Optional[float] = ...,

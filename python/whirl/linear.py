@@ -107,3 +107,6 @@ class LinearModel(ExportedModel):
     K = property(lambda self: self._lin.K, doc="stiffness matrix (n × n)")
     Q = property(lambda self: self._lin.Q, doc="input matrix of the second-order model (n × nu)")
     dof_names = property(lambda self: list(self._lin.dof_names), doc="active coordinates of M, damping, K")
+    compute_seconds = property(lambda self: self._lin.seconds,
+                               doc="wall time of the C++ library's computation [s], the Python call around it "
+                                   "excluded (python/bench/overhead.py measures the call's overhead with it)")
