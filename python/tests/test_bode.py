@@ -56,3 +56,12 @@ def test_bad_input(onshore):
         onshore.bode(inputs=["generator torque"], outputs=["nope"], rpm=12, azimuths=2)
     with pytest.raises(whirl.InputError, match="wind= \\(trimmed\\) or rpm="):
         onshore.bode(inputs=["generator torque"], outputs=["GenSpeed"], rpm=12, wind=8)
+
+
+def test_argument_messages(onshore):
+    with pytest.raises(whirl.InputError, match="bode: give inputs= and outputs="):
+        onshore.bode(inputs=[], outputs=["GenSpeed"])
+    with pytest.raises(whirl.InputError, match="points: must be in 2"):
+        onshore.bode(inputs=["generator torque"], outputs=["GenSpeed"], points=1)
+    with pytest.raises(whirl.InputError, match="frequencies: need 0 < F0 < F1"):
+        onshore.bode(inputs=["generator torque"], outputs=["GenSpeed"], f_from=1.0, f_to=0.5)

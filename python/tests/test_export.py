@@ -79,3 +79,11 @@ def test_progress_exception_stops_the_sweep(onshore):
     with pytest.raises(KeyboardInterrupt):
         onshore.export(rpm=[3, 6, 9], azimuths=2, progress=stop)
     assert calls == [1]
+
+
+def test_files_need_format_and_folder(onshore, tmp_path):
+    with pytest.raises(whirl.InputError, match="give format= and out= together"):
+        onshore.export(rpm=[6], format="mat")
+    with pytest.raises(whirl.InputError, match="give format= and out= together"):
+        onshore.export(rpm=[6], out=tmp_path)
+    assert list(tmp_path.iterdir()) == []

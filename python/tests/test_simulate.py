@@ -58,3 +58,23 @@ def test_progress_and_interrupt():
 
     with pytest.raises(KeyboardInterrupt):
         model.simulate(0.5, init={"tower FA 1": 0.1}, progress=interrupt)
+
+
+def test_time_and_signal_messages():
+    model = whirl.load(case("landbased_2dof", "landbased_2dof.yaml"))
+    with pytest.raises(whirl.InputError, match="tmax: simulated time must be positive"):
+        model.simulate(0)
+    onshore = whirl.load(ONSHORE)
+    with pytest.raises(whirl.InputError, match="inputs generator torque: "):  # parseTimeSignal names the input
+        onshore.simulate(0.1, inputs={"generator torque": "stepp(0,1)"})
+
+
+def test_diverging_motion_is_an_error_unless_allowed(tmp_path):
+    """A tower displaced far beyond the model's range of validity, as CliSimulate's test: ComputeError,
+    nothing written; allowed, the series comes back with the warning."""
+    model = whirl.load(case("landbased_2dof", "landbased_2dof.yaml"))
+    with pytest.raises(whirl.ComputeError, match="leaves the model's range of validity"):
+        model.simulate(0.1, init={"tower FA 1": 100}, out=tmp_path / "out")
+    assert not (tmp_path / "out").exists()
+    series = model.simulate(0.1, init={"tower FA 1": 100}, allow_invalid_point=True)
+    assert "range of validity" in series.attrs["warning"]
