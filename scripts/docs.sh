@@ -11,13 +11,13 @@ root="$(cd "$(dirname "$0")/.." && pwd)"
 build="$(realpath -m "${1:-$root/build}")"
 out="$build/docs"
 py=/usr/bin/python3
-rm -rf "$out/doxygen" "$out/html" "$out/doctrees"
+rm -rf "$out/doxygen" "$out/html" "$out/doctrees" "$out/notebooks"
 mkdir -p "$out/doxygen"
 (cd "$root" && WHIRL_DOXYGEN_OUT="$out/doxygen" doxygen docs/Doxyfile)
 # The example notebooks, executed with the built module and converted to Markdown pages with their
 # figures (docs/user/examples/, not in git), and the Python API reference read from the built module's
 # docstrings (sphinx.ext.autodoc imports build/python/whirl): both need the target whirl_python built.
-bash "$root/scripts/run-notebooks.sh" "$build" --markdown "$root/docs/user/examples" >/dev/null
+bash "$root/scripts/run-notebooks.sh" "$build" --out "$out/notebooks" --markdown "$root/docs/user/examples" >/dev/null
 PYTHONPATH="$build/python${PYTHONPATH:+:$PYTHONPATH}" WHIRL_DOXYGEN_XML="$out/doxygen/xml" "$py" -m sphinx -q -W --keep-going -b html \
   -d "$out/doctrees" "$root/docs" "$out/html"
 "$py" "$root/scripts/check-doc-links.py" "$root"
