@@ -87,3 +87,18 @@ def test_files_need_format_and_folder(onshore, tmp_path):
     with pytest.raises(whirl.InputError, match="give format= and out= together"):
         onshore.export(rpm=[6], out=tmp_path)
     assert list(tmp_path.iterdir()) == []
+
+
+def test_wind_point_equals_the_cli_files(tmp_path):
+    """`whirl export --wind` (trimmed with the deck's ROSCO controller, warm-started from the trim):
+    the same bits from Model.export(wind=…)."""
+    deck = case("nrel5mw", "Main_ROSCO.fst")
+    code, _, err = cli("export", deck, "--wind", "12:1:12", "--azimuths", 4, "--format", "json", "--out", tmp_path,
+                       "--inputs", "wind speed,collective pitch", "--outputs", "GenSpeed", "--drop-azimuth")
+    assert code == 0, err
+    (point,) = whirl.load(deck).export(wind=[12], azimuths=4, inputs=["wind speed", "collective pitch"],
+                                       outputs=["GenSpeed"], drop_azimuth=True)
+    d = json.loads((tmp_path / "statespace.json").read_text())["operating_points"][0]
+    assert point.rpm == d["rpm"] and point.pitch_deg == d["pitch_deg"] and point.wind_speed == 12
+    for name in "ABCD":
+        np.testing.assert_array_equal(getattr(point, name), np.array(d["model"][name], dtype=float), err_msg=name)
