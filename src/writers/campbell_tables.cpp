@@ -92,7 +92,9 @@ std::string campbellModesJson(const CampbellDiagram& d) {
     }
     j["points"].push_back(std::move(jp));
   }
-  return j.dump(1) + "\n";
+  // Names are checked as UTF-8 where they are read (src/model/text.hpp); a byte that still is not
+  // becomes U+FFFD here rather than an exception without file or key (fuzz_writers).
+  return j.dump(1, ' ', false, json::error_handler_t::replace) + "\n";
 }
 
 }  // namespace whirl

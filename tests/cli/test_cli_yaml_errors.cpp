@@ -5,6 +5,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdlib>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -70,6 +72,21 @@ TEST(CliYamlErrors, SecondDocumentIsRefused) {
   const auto ended = dir / "ended.yaml";
   std::ofstream(ended) << one << "---\n";
   EXPECT_EQ(test::whirl("modes '" + ended.string() + "'").code, 0);
+}
+
+TEST(CliYamlErrors, BytesOnWhichYamlCppFindsEndlessDocuments) {
+  // tests/data/yaml/README.md: YAML::LoadAll never ended on these bytes (fuzz_cli). The run has 1 GB
+  // of address space, so a regression fails here instead of swapping the machine.
+  const std::string file = std::string(WHIRL_SOURCE_DIR) + "/tests/data/yaml/loadall_endless.yaml";
+  const auto err = test::freshDir("yaml_endless") / "err";
+  const std::string cmd = "ulimit -v 1000000; '" + std::string(WHIRL_BINARY) + "' modes '" + file +
+                          "' > /dev/null 2> '" + err.string() + "'";
+  const int status = std::system(cmd.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 1);
+  EXPECT_EQ(test::slurp(err), "whirl: error: " + file +
+                                  ":1: a case file is a map of keys (name, gravity, bodies, ...), this one is empty, a "
+                                  "list or a single value\n");
 }
 
 TEST(CliYamlErrors, OverrideValuesThatAreNotYaml) {

@@ -223,5 +223,29 @@ TEST(MatEscaping, NamesAreCharArraysWithoutControlCharacters) {
   Mat_Close(mat);
 }
 
+// fuzz_writers, first input: a name with a byte that is not UTF-8 made nlohmann's dump() throw
+// type_error.316 out of the JSON writers (the readers refuse such names; the writers are the
+// backstop): the byte is written as U+FFFD and the file parses.
+TEST(JsonEscaping, ByteThatIsNotUtf8BecomesReplacementCharacter) {
+  const std::string replacement = "\xef\xbf\xbd";
+  StateSpaceExport e;
+  e.source = "bad\xff.yaml";
+  e.model_name = "m";
+  ExportPoint p;
+  p.model = hostileStateSpace();
+  p.model.u[0].name = "force\xff";
+  e.points.push_back(p);
+  std::string text;
+  ASSERT_NO_THROW(text = stateSpaceJson(e));
+  const auto j = nlohmann::json::parse(text);
+  EXPECT_EQ(j["source"], "bad" + replacement + ".yaml");
+  EXPECT_NE(text.find("force" + replacement), std::string::npos);
+
+  CampbellDiagram d = hostileDiagram();
+  d.title = "\xc3(";  // a lead byte without its continuation
+  ASSERT_NO_THROW(text = campbellModesJson(d));
+  EXPECT_EQ(nlohmann::json::parse(text)["title"], replacement + "(");
+}
+
 }  // namespace
 }  // namespace whirl
