@@ -72,10 +72,14 @@ Signal notch(Builder& b, const Signal& in, const SpeedNotch& n, const std::strin
   return combine(in, 1, b.state(j), 2 * (n.beta_num - n.beta_den) * n.freq);
 }
 
+bool hasReferenceFilter(const LinearController& c) {
+  return c.reference_per_wind != 0 && c.reference_filter_freq > 0;
+}
+
 int stateCount(const LinearController& c) {
   int n = c.lpf_order + 2 * static_cast<int>(c.notches.size());
   if (c.pitch_active) n += 1 + c.actuator_order;
-  if (c.torque == LinearController::Torque::PI) n += 1;
+  if (c.torque == LinearController::Torque::PI) n += 1 + (hasReferenceFilter(c) ? 1 : 0);
   return n;
 }
 
@@ -114,6 +118,7 @@ StateSpaceModel controllerStateSpace(const LinearController& c) {
     case LinearController::Torque::PI: {
       Signal ref = b.zero();
       ref.u = c.reference_per_wind;
+      if (hasReferenceFilter(c)) ref = lowPass(b, ref, 1, c.reference_filter_freq, 0, "speed reference filter");
       const Signal e = combine(ref, 1, speed, -1);
       const int i = b.add("torque PI integral");
       b.feed(i, e, c.torque_ki);
@@ -184,6 +189,15 @@ Closed close(const StateSpaceModel& plant, const LinearController& c, const Clos
   cl.C.leftCols(n) = plant.C + DS * k.D * Gx;
   cl.C.rightCols(m) = DS * k.C;
   cl.D = plant.D + DS * k.D * Gu;
+  // The controller's commands as outputs too (a Bode plot of wind to pitch): [τ; θ] = D_k G_x x + C_k x_k + D_k G_u u.
+  const Eigen::Index ny = plant.C.rows();
+  cl.C.conservativeResize(ny + 2, n + m);
+  cl.D.conservativeResize(ny + 2, nu);
+  cl.C.bottomLeftCorner(2, n) = k.D * Gx;
+  cl.C.bottomRightCorner(2, m) = k.C;
+  cl.D.bottomRows(2) = k.D * Gu;
+  cl.y.push_back({"controller: generator torque", "N m", plant.u[static_cast<size_t>(it)].op, -1, -1, false});
+  cl.y.push_back({"controller: collective pitch", "rad", plant.u[static_cast<size_t>(ip)].op, -1, -1, false});
   cl.x.insert(cl.x.end(), k.x.begin(), k.x.end());
   if (cl.xdot_op.size() == n) {
     cl.xdot_op.conservativeResize(n + m);

@@ -19,7 +19,8 @@
 /// - pitch actuator (PA_Mode 1, 2): first- or second-order low pass of θ_c;
 /// - torque: region 3 constant power τ = P/(η ω_f) (δτ = −P/(η ω_f²) δω_f) or constant torque
 ///   (δτ = 0); below rated ROSCO's PI (VS_KP, VS_KI) on ω_ref − ω_f with TSR tracking's reference
-///   ω_ref = λ_opt N U / R (the wind-speed estimate taken equal to the wind), held at VS_RefSpd in
+///   ω_ref = λ_opt N U / R (the wind-speed estimate taken equal to the wind, through the reference's
+///   first-order low pass), held at VS_RefSpd in
 ///   region 2½; or the k ω_f² law (δτ = 2 k ω_f δω_f).
 #include <string>
 #include <vector>
@@ -55,6 +56,9 @@ struct LinearController {
   double torque_kp = 0;       ///< Torque::PI: VS_KP [N m s/rad]
   double torque_ki = 0;       ///< VS_KI [N m/rad]
   double reference_per_wind = 0;  ///< Torque::PI: ∂ω_ref/∂U [rad/m] (TSR tracking; 0 when held)
+  /// Torque::PI with reference_per_wind ≠ 0: first-order low pass on the reference [rad/s] (ROSCO's
+  /// F_VSRefSpdCornerFreq; 0: none). Driven by the wind alone, its root is the corner frequency.
+  double reference_filter_freq = 0;
 };
 
 /// Names of the roles the plant must have.
@@ -68,7 +72,8 @@ struct ClosedLoopPorts {
 /// The closed loop: states [plant x; controller states] (the controller's named "controller: speed
 /// filter", "controller: pitch PI integral", …, first-order), the plant's inputs kept as disturbances
 /// added to the controller's commands (generator torque, pitch) or acting directly (wind), the plant's
-/// outputs. \throws InputError when the plant lacks an input or output named in `ports`, or when the
+/// outputs and then the controller's commands, "controller: generator torque" [N m] and "controller:
+/// collective pitch" [rad] (after the actuator). \throws InputError when the plant lacks an input or output named in `ports`, or when the
 /// generator speed depends directly on the torque or the pitch (D ≠ 0, an algebraic loop).
 StateSpaceModel closeLoop(const StateSpaceModel& plant, const LinearController& c, const ClosedLoopPorts& ports = {});
 

@@ -12,8 +12,11 @@ namespace whirl {
 
 std::vector<double> parseRange(const std::string& spec, const std::string& option) {
   static const std::regex re(R"(\s*([-+0-9.eE]+)\s*:\s*([-+0-9.eE]+)\s*:\s*([-+0-9.eE]+)\s*)");
+  static const std::regex one(R"(\s*([-+0-9.eE]+)\s*)");
   std::smatch mt;
-  if (!std::regex_match(spec, mt, re)) throw InputError(option + ": expected START:STEP:STOP, got '" + spec + "'");
+  if (std::regex_match(spec, mt, one)) return parseRange(mt.str(1) + ":1:" + mt.str(1), option);  // one value
+  if (!std::regex_match(spec, mt, re))
+    throw InputError(option + ": expected START:STEP:STOP (or one value), got '" + spec + "'");
   double a, s, b;
   try {
     a = std::stod(mt[1]);

@@ -20,7 +20,8 @@
 
 namespace whirl {
 
-/// Values START:STEP:STOP, STOP included within round-off; InputError naming `option` on a bad range.
+/// Values START:STEP:STOP, STOP included within round-off, or one value V (V:1:V); InputError naming
+/// `option` on a bad range.
 std::vector<double> parseRange(const std::string& spec, const std::string& option);
 
 /// Points START:STEP:STOP (rpm), STOP included within round-off. InputError on a bad range.

@@ -25,12 +25,32 @@ std::string groupOf(const StateSpaceVariable& v, bool pitch_loop, const std::vec
   const StateSpaceVariable& d = v.rate_of >= 0 ? x[static_cast<size_t>(v.rate_of)] : v;
   if (d.azimuth || (v.rate_of < 0 && v.name.find("azimuth") != std::string::npos))
     return pitch_loop ? "rotor speed / pitch control" : "rotor speed / torque control";
+  // A blade pattern's cosine and sine coordinates are one cyclic group (a whirl moves both).
+  if (d.name.ends_with(" cos") || d.name.ends_with(" sin")) return d.name.substr(0, d.name.size() - 4) + " cyclic";
   return d.name;
+}
+
+/// "<pattern> cyclic" as backward or forward whirl from the phase of the mode's sine coordinate against
+/// its cosine one (modal/rotor_modes.hpp: q_s/q_c = −i turns with the rotor, FW); parked, the larger
+/// of the two. Other names are returned as they are.
+std::string whirlName(const std::string& name, const StateSpaceModel& s, const Eigen::VectorXcd& v, double rotor_speed) {
+  if (!name.ends_with(" cyclic")) return name;
+  const std::string base = name.substr(0, name.size() - 7);
+  Eigen::Index ic = -1, is = -1;
+  for (size_t i = 0; i < s.x.size(); ++i) {
+    if (s.x[i].rate_of >= 0) continue;
+    if (s.x[i].name == base + " cos") ic = static_cast<Eigen::Index>(i);
+    if (s.x[i].name == base + " sin") is = static_cast<Eigen::Index>(i);
+  }
+  if (ic < 0 || is < 0 || std::abs(v(ic)) == 0) return name;
+  if (std::abs(rotor_speed) < 1e-2) return base + (std::abs(v(ic)) >= std::abs(v(is)) ? " cos" : " sin");
+  const bool forward = ((v(is) / v(ic)).imag() < 0) == (rotor_speed > 0);
+  return base + (forward ? " FW" : " BW");
 }
 
 }  // namespace
 
-std::vector<ClosedLoopMode> namedModes(const StateSpaceModel& s, bool has_pitch_loop) {
+std::vector<ClosedLoopMode> namedModes(const StateSpaceModel& s, bool has_pitch_loop, double rotor_speed) {
   const EigenDecomposition e = eigenStandard(s.A, true);
   const Eigen::Index n = e.values.size();
   std::vector<ClosedLoopMode> modes;
@@ -53,7 +73,11 @@ std::vector<ClosedLoopMode> namedModes(const StateSpaceModel& s, bool has_pitch_
     m.damped_freq_hz = f.damped_freq_hz;
     m.damping_ratio = f.damping_ratio;
     m.controller_share = total > 0 ? controller / total : 0;
+    Eigen::Index big = 0;
+    e.vectors.col(j).cwiseAbs().maxCoeff(&big);
+    m.shape = e.vectors.col(j) / e.vectors(big, j);
     m.name = std::max_element(share.begin(), share.end(), [](auto& a, auto& b) { return a.second < b.second; })->first;
+    m.name = whirlName(m.name, s, e.vectors.col(j), rotor_speed);
     modes.push_back(m);
   }
   std::sort(modes.begin(), modes.end(), [](const auto& a, const auto& b) { return a.freq_hz < b.freq_hz; });
@@ -74,15 +98,15 @@ ClosedLoopPoint closedLoopPoint(const Model& model, const SteadyState& steady, c
   p.steady = steady;
   p.plant = exportOperatingPoint(plant_model, c, eo).model;
   p.closed = closeLoop(p.plant, controller, opt.ports);
-  p.open_modes = namedModes(p.plant, false);
-  p.closed_modes = namedModes(p.closed, controller.pitch_active);
+  p.open_modes = namedModes(p.plant, false, c.rotor_speed);
+  p.closed_modes = namedModes(p.closed, controller.pitch_active, c.rotor_speed);
   p.least_damping = 1;
   for (const ClosedLoopMode& m : p.closed_modes) {
     if (m.eigenvalue.real() >= 0) p.stable = false;
     p.least_damping = std::min(p.least_damping, m.damping_ratio);
   }
-  const double inf = std::numeric_limits<double>::infinity();
-  p.pitch = p.torque = LoopMargins{inf, 0, inf, 0, inf, 0, 0};
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  p.pitch = p.torque = LoopMargins{nan, nan, nan, nan, nan, nan, nan};
   if (controller.pitch_active) p.pitch = loopMargins(loopSensitivity(p.plant, controller, BrokenLoop::Pitch, opt.ports), opt.margins);
   if (controller.torque != LinearController::Torque::Held)
     p.torque = loopMargins(loopSensitivity(p.plant, controller, BrokenLoop::Torque, opt.ports), opt.margins);

@@ -6,6 +6,7 @@
 /// and the closed loop's modes are named by participation factors |v_i w_i| (right and left
 /// eigenvectors, scale-free): the group of states with the largest share names the mode —
 /// "rotor speed / pitch control" (pitch PI integral, or the rotor speed with the pitch loop active),
+/// "flap 1 BW" (a blade pattern's cosine and sine coordinates counted together),
 /// "rotor speed / torque control", "torque control", "speed filter", "speed notch k", "pitch actuator",
 /// else the structural coordinate with the largest share (its name in multiblade coordinates).
 #include <functional>
@@ -25,6 +26,9 @@ struct ClosedLoopMode {
   double damping_ratio = 0;  ///< [-]
   std::complex<double> eigenvalue;
   double controller_share = 0;  ///< participation of the controller's states [-]
+  /// Right eigenvector on the model's states (ClosedLoopPoint::closed.x or plant.x), largest entry 1:
+  /// what tracking along the wind compares (modal/closed_loop_campbell.hpp).
+  Eigen::VectorXcd shape;
 };
 
 struct ClosedLoopPoint {
@@ -32,7 +36,7 @@ struct ClosedLoopPoint {
   StateSpaceModel plant;   ///< open loop (multiblade average, azimuth dropped)
   StateSpaceModel closed;  ///< with the controller's states appended
   std::vector<ClosedLoopMode> open_modes, closed_modes;  ///< oscillating and real roots, by frequency
-  LoopMargins pitch, torque;  ///< margins of each loop broken at its actuator input (infinite when inactive)
+  LoopMargins pitch, torque;  ///< margins of each loop broken at its actuator input (NaN where the loop does not act)
   bool stable = true;         ///< every closed-loop eigenvalue with Re λ < 0 (the rigid azimuth dropped)
   double least_damping = 0;   ///< smallest damping ratio among the closed-loop modes [-]
 };
@@ -48,7 +52,9 @@ struct ClosedLoopOptions {
 ClosedLoopPoint closedLoopPoint(const Model& model, const SteadyState& steady, const LinearController& controller,
                                 const ClosedLoopOptions& opt = {});
 
-/// The modes of a state matrix named as above; `has_pitch_loop` names the rotor-speed mode.
-std::vector<ClosedLoopMode> namedModes(const StateSpaceModel& s, bool has_pitch_loop);
+/// The modes of a state matrix named as above; `has_pitch_loop` names the rotor-speed mode; a blade
+/// pattern's cyclic modes are named backward or forward whirl (BW, FW) at `rotor_speed` [rad/s] (its
+/// sign the rotor's sense), cos or sin when parked (|Ω| < 0.01 rad/s).
+std::vector<ClosedLoopMode> namedModes(const StateSpaceModel& s, bool has_pitch_loop, double rotor_speed = 0);
 
 }  // namespace whirl

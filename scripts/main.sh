@@ -4,7 +4,8 @@
 # - reports/nrel5mw/: structural, 0–15 rpm, 36 azimuths per speed, multiblade coordinates;
 # - reports/nrel5mw_aero/: aeroelastic (AeroDyn BEMT, frozen wake) along the wind, 3–25 m/s, each
 #   point trimmed (rotor speed below rated, pitch above), with the steady performance table, the
-#   interactive report campbell.html (mode shapes, docs/user/mode-shapes.md) and HAWCStab2's .cmb/.amp/.opt.
+#   interactive report campbell.html (mode shapes, docs/user/mode-shapes.md) and HAWCStab2's .cmb/.amp/.opt;
+# - reports/nrel5mw_rosco/: with ROSCO's controller, open and closed loop (below).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/build.sh
@@ -14,6 +15,10 @@ build/whirl steady cases/nrel5mw/Main_Aero.fst --wind 3:1:25 --out reports/nrel5
 build/whirl campbell cases/nrel5mw/Main_Aero.fst --wind 3:1:25 --azimuths 36 --max-freq 3.2 --out reports/nrel5mw_aero \
   --html --format hawcstab2
 # The NREL 5MW with ROSCO's controller (cases/nrel5mw/Main_ROSCO.fst): the schedule it settles at along
-# the wind, and the open-loop Campbell diagram along that schedule.
+# the wind, the open-loop Campbell diagram along that schedule, and the closed loop with the controller
+# (reports/nrel5mw_rosco/closed_loop/: closed-loop Campbell, open vs closed side by side in
+# closed_loop.png, the loop margins in margins.csv; docs/user/closed-loop.md).
 build/whirl steady cases/nrel5mw/Main_ROSCO.fst --wind 3:1:25 --out reports/nrel5mw_rosco
 build/whirl campbell cases/nrel5mw/Main_ROSCO.fst --wind 3:1:25 --azimuths 36 --max-freq 3.2 --out reports/nrel5mw_rosco
+build/whirl campbell cases/nrel5mw/Main_ROSCO.fst --wind 3:1:25 --azimuths 36 --max-freq 3.2 --closed-loop \
+  --out reports/nrel5mw_rosco/closed_loop

@@ -10,7 +10,10 @@
 
 #include "linearize/export_point.hpp"
 #include "linearize/frequency_response.hpp"
+#include "linearize/rosco_linear.hpp"
 #include "linearize/trim.hpp"
+#include "modal/closed_loop_modes.hpp"
+#include "src/io/discon_input.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/common.hpp"
 #include "src/writers/bode_table.hpp"
@@ -28,6 +31,7 @@ struct BodeOptions {
   double f0 = 0.01, f1 = 10;
   int points = 400, azimuths = 36;
   bool no_plot = false;
+  bool closed_loop = false, without_speed_filter = false;
 };
 
 void run(const BodeOptions& opt) {
@@ -42,16 +46,38 @@ void run(const BodeOptions& opt) {
   if (eo.inputs.empty() || eo.outputs.empty()) throw InputError("bode: give --inputs and --outputs");
   OperatingCondition c = operatingCondition(m, opt.model);
   std::string where;
+  // Trimmed with the deck's ROSCO controller when it has one (docs/user/controller.md).
+  const std::optional<RoscoController> controller = io::readDeckController(opt.model.case_path, opt.model.sets);
+  if (opt.closed_loop && (!opt.wind || !controller))
+    throw InputError(opt.model.case_path + ": bode --closed-loop needs --wind and ROSCO's controller (ServoDyn with "
+                     "VSContrl = 5 and DLL_InFile naming its DISCON.IN)");
+  if (opt.without_speed_filter && !opt.closed_loop) throw InputError("bode: --without-speed-filter goes with --closed-loop");
+  std::optional<SteadyState> steady;
   if (opt.wind) {
     if (opt.model.rpm) throw InputError("bode: give --wind (trimmed) or --rpm, not both");
-    c = trimAtWindSpeed(m, *opt.wind).condition;
+    TrimOptions trim;
+    if (controller) trim.controller = &*controller;
+    steady = trimAtWindSpeed(m, *opt.wind, trim);
+    c = steady->condition;
     char text[96];
     std::snprintf(text, sizeof text, "%g m/s, %.3f rpm, pitch %.2f deg", *opt.wind, c.rotor_speed * 30 / std::numbers::pi,
                   c.collective_pitch.value_or(0) * 180 / std::numbers::pi);
     where = text;
   }
-  const ExportPoint p = exportOperatingPoint(m, initialPoint(m, c), eo);
-  checkSolvedPoints(opt.model, m, {p.equilibrium});
+  ExportPoint p;
+  if (opt.closed_loop) {
+    // The closed loop's channels by name: the plant's and the controller's commands.
+    RoscoLinearOptions ro;
+    ro.without_speed_filter = opt.without_speed_filter;
+    ClosedLoopOptions clo;
+    clo.azimuths = opt.azimuths;
+    p.model = selectInputsOutputs(closedLoopPoint(m, *steady, linearRosco(*controller, *steady, ro), clo).closed,
+                                  eo.inputs, eo.outputs);
+    where += ", closed loop";
+  } else {
+    p = exportOperatingPoint(m, initialPoint(m, c), eo);
+    checkSolvedPoints(opt.model, m, {p.equilibrium});
+  }
   const std::vector<double> f = logFrequencies(opt.f0, opt.f1, opt.points);
   const std::vector<Eigen::MatrixXcd> G = frequencyResponse(p.model, f);
   const int pairs = static_cast<int>(p.model.y.size() * p.model.u.size());
@@ -91,6 +117,11 @@ void addBodeCommand(CLI::App& app) {
   cmd->add_option("--azimuths", opt->azimuths, "azimuths per revolution for the multiblade average")
       ->check(CLI::Range(1, 3600));
   cmd->add_option("--out", opt->out, "output folder (default reports/<case name>)");
+  cmd->add_flag("--closed-loop", opt->closed_loop,
+                "with --wind on a deck with ROSCO's controller: the closed loop's response (outputs also "
+                "'controller: generator torque', 'controller: collective pitch')");
+  cmd->add_flag("--without-speed-filter", opt->without_speed_filter,
+                "with --closed-loop: leave the controller's generator-speed low pass out");
   cmd->add_flag("--no-plot", opt->no_plot, "write the table and the Gnuplot script, do not run Gnuplot");
   cmd->callback([opt]() { run(*opt); });
 }

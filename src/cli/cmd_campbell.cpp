@@ -7,6 +7,9 @@
 #include "linearize/trim.hpp"
 #include "src/writers/campbell_output.hpp"
 #include "modal/campbell_sweep.hpp"
+#include "modal/closed_loop_campbell.hpp"
+#include "src/writers/closed_loop_tables.hpp"
+#include "linearize/sweep.hpp"
 #include "modal/tracking.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/common.hpp"
@@ -29,9 +32,68 @@ struct CampbellOptions {
   bool first_order_lines = false;
   std::vector<std::string> formats;
   bool html = false;
+  bool closed_loop = false, without_speed_filter = false;
 };
 
+/// `campbell --closed-loop`: the deck's ROSCO controller in the loop at each trimmed wind speed
+/// (modal/closed_loop_campbell.hpp), the closed loop's Campbell files, the open loop's beside them,
+/// the roots and the loop margins (src/writers/closed_loop_tables.hpp).
+void runClosedLoop(const CampbellOptions& opt) {
+  if (opt.wind_range.empty())
+    throw InputError("campbell: --closed-loop needs --wind START:STEP:STOP (the controller's steady states along the wind)");
+  if (!opt.formats.empty() || !opt.schedule.empty() || !opt.rpm_range.empty())
+    throw InputError("campbell: --closed-loop goes with --wind alone, without --rpm, --schedule or --format");
+  const Model m = loadModel(opt.model);
+  const std::optional<RoscoController> controller = io::readDeckController(opt.model.case_path, opt.model.sets);
+  if (!controller)
+    throw InputError(opt.model.case_path +
+                     ": --closed-loop needs ROSCO's controller: ServoDyn with VSContrl = 5 and DLL_InFile naming its "
+                     "DISCON.IN (docs/user/controller.md)");
+  for (const std::string& n : controller->notes) std::fprintf(stderr, "whirl: note: %s\n", n.c_str());
+  for (const std::string& n : linearRoscoNotes(*controller))
+    std::fprintf(stderr, "whirl: note: %s: linear model: %s\n", controller->file.c_str(), n.c_str());
+  const std::string dir = opt.out.empty() ? defaultOutputFolder(opt.model.case_path) : opt.out;
+  prepareOutputFolder(dir);
+  const auto start = std::chrono::steady_clock::now();
+  TrimOptions trim;
+  trim.controller = &*controller;
+  const std::vector<SteadyState> schedule = trimSchedule(m, parseRange(opt.wind_range, "--wind"), trim);
+  ClosedLoopCampbellOptions clo;
+  clo.point.azimuths = opt.azimuths;
+  clo.controller.without_speed_filter = opt.without_speed_filter;
+  clo.tracking.overrides_file = opt.tracking;
+  clo.progress = sweepProgress("campbell");
+  ClosedLoopCampbell c = closedLoopCampbell(m, *controller, schedule, clo);
+  std::string name = m.name.substr(0, m.name.find(". "));
+  if (name.empty() || name.size() > 70) name = std::filesystem::path(opt.model.case_path).filename().string();
+  c.closed.title = "Closed-loop Campbell diagram: " + name;
+  c.open.title = "Open-loop Campbell diagram: " + name;
+  for (const ClosedLoopPoint& p : c.points)
+    if (!p.stable)
+      std::fprintf(stderr, "whirl: warning: the closed loop is unstable at %g m/s (least damping ratio %.3g %%)\n",
+                   p.steady.condition.wind_speed.value_or(0), 100 * p.least_damping);
+  CampbellPlotOptions plot;
+  plot.versus_wind_speed = opt.versus != "rpm";
+  plot.max_freq_hz = opt.max_freq;
+  plot.render = !opt.no_plot;
+  plot.first_order_lines = true;
+  plot.html = opt.html;
+  plot.summary = {{"case", opt.model.case_path}, {"sweep", "--wind " + opt.wind_range + " --closed-loop"},
+                  {"controller", controller->file}, {"azimuths", std::to_string(opt.azimuths)},
+                  {"operating points", std::to_string(c.points.size())}};
+  const auto files = writeClosedLoopCampbell(c, dir, plot);
+  std::printf("wrote");
+  for (const auto& f : files) std::printf(" %s", f.c_str());
+  int stable = 0;
+  for (const ClosedLoopPoint& p : c.points) stable += p.stable ? 1 : 0;
+  std::printf("\n%zu operating points (%d with a stable closed loop), %zu closed-loop lines, %d azimuths each, %.2f s\n",
+              c.points.size(), stable, c.closed.lines.size(), opt.azimuths,
+              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+}
+
 void run(const CampbellOptions& opt) {
+  if (opt.closed_loop) return runClosedLoop(opt);
+  if (opt.without_speed_filter) throw InputError("campbell: --without-speed-filter goes with --closed-loop");
   if (opt.rpm_range.empty() + opt.schedule.empty() + opt.wind_range.empty() != 2)
     throw InputError(
         "campbell: give exactly one of --rpm START:STEP:STOP, --schedule FILE and --wind START:STEP:STOP");
@@ -148,6 +210,12 @@ void addCampbellCommand(CLI::App& app) {
                   "Campbell_Summary.txt), vtk (mode_<line>_p<point>.pvd animations of .vtp polylines for ParaView)")
       ->delimiter(',')
       ->check(CLI::IsMember({"hawcstab2", "openfast", "vtk"}));
+  cmd->add_flag("--closed-loop", opt->closed_loop,
+                "with --wind: the deck's ROSCO controller in the loop (its states beside the structure's); writes the "
+                "closed loop's Campbell files, open_loop_campbell.csv, closed_loop_modes.csv, margins.csv and "
+                "closed_loop.gp/.png");
+  cmd->add_flag("--without-speed-filter", opt->without_speed_filter,
+                "with --closed-loop: leave the controller's generator-speed low pass out (as ROSCO's own linear tools do)");
   cmd->add_flag("--html", opt->html,
                 "also write campbell.html: the interactive report (diagram, mode shapes, tables), one file, no network");
   cmd->callback([opt]() { runWithCaseSource(opt->model.case_path, [&] { run(*opt); }); });

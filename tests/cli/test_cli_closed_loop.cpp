@@ -1,0 +1,77 @@
+// `campbell`, `export` and `bode` with --closed-loop on the ROSCO-controlled NREL 5MW
+// (cases/nrel5mw/Main_ROSCO.fst): the files, the controller's states named, the integral action's zero
+// static gain from the wind to the generator speed, and the errors before anything is written.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "tests/cli/cli_support.hpp"
+
+namespace whirl::test {
+namespace {
+
+const std::string kDeck = "cases/nrel5mw/Main_ROSCO.fst";
+
+TEST(CliClosedLoop, CampbellWritesClosedAndOpenLoopAndMargins) {
+  const auto dir = freshDir("cl_campbell");
+  const auto r = whirl("campbell " + kDeck + " --wind 10:2:14 --azimuths 6 --closed-loop --no-plot --out '" +
+                       dir.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("3 operating points (3 with a stable closed loop)"), std::string::npos) << r.out;
+  // What the linear model leaves out is said, naming the file.
+  EXPECT_NE(r.err.find("DISCON.IN: linear model: SS_Mode = 1"), std::string::npos) << r.err;
+  for (const char* f : {"campbell.csv", "campbell.dat", "campbell.gp", "open_loop_campbell.csv", "closed_loop_modes.csv",
+                        "margins.csv", "closed_loop.gp"})
+    EXPECT_TRUE(std::filesystem::exists(dir / f)) << f;
+  const std::string modes = slurp(dir / "closed_loop_modes.csv");
+  EXPECT_NE(modes.find(",closed,speed filter,"), std::string::npos);
+  EXPECT_NE(modes.find(",closed,rotor speed / pitch control,"), std::string::npos);
+  const std::string margins = slurp(dir / "margins.csv");
+  EXPECT_EQ(std::count(margins.begin(), margins.end(), '\n'), 4);
+}
+
+TEST(CliClosedLoop, ExportNamesTheControllerStatesAndRefusesMixedRegions) {
+  const auto dir = freshDir("cl_export");
+  auto r = whirl("export " + kDeck + " --wind 14 --azimuths 6 --closed-loop --format json --out '" + dir.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string json = slurp(dir / "statespace.json");
+  EXPECT_NE(json.find("controller: pitch PI integral"), std::string::npos);
+  EXPECT_NE(json.find("controller: collective pitch"), std::string::npos);
+  const auto bad = freshDir("cl_export_mixed");
+  r = whirl("export " + kDeck + " --wind 8:6:14 --azimuths 6 --closed-loop --format mat --out '" + bad.string() + "'");
+  EXPECT_NE(r.code, 0);
+  EXPECT_NE(r.err.find("the controller's states differ between 8 m/s (region 2) and 14 m/s (region 3)"), std::string::npos)
+      << r.err;
+  EXPECT_TRUE(std::filesystem::is_empty(bad));
+  r = whirl("export " + kDeck + " --wind 14 --closed-loop --format lin --out '" + bad.string() + "'");
+  EXPECT_NE(r.err.find("--closed-loop writes --format mat or json"), std::string::npos) << r.err;
+}
+
+TEST(CliClosedLoop, BodeWindToGeneratorSpeedHasNoStaticGain) {
+  const auto dir = freshDir("cl_bode");
+  const auto r = whirl("bode " + kDeck + " --wind 14 --azimuths 6 --closed-loop --inputs 'wind speed' --outputs "
+                       "'GenSpeed,controller: collective pitch' --no-plot --out '" + dir.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  // The pitch PI's integrator removes every steady speed error: |G(0)| of wind → GenSpeed is round-off
+  // against the open loop's 16.8 (rad/s)/(m/s) at 8 m/s (docs/user/commands/bode.md).
+  const auto at = r.out.find("GenSpeed / wind speed: ");
+  ASSERT_NE(at, std::string::npos) << r.out;
+  EXPECT_LT(std::abs(std::stod(r.out.substr(at + 23))), 1e-9) << r.out;
+  const auto pitch = r.out.find("controller: collective pitch / wind speed: ");
+  ASSERT_NE(pitch, std::string::npos) << r.out;
+  EXPECT_GT(std::stod(r.out.substr(pitch + 43)), 0.01);  // pitches to feather as the wind rises [rad/(m/s)]
+}
+
+TEST(CliClosedLoop, NeedsTheWindAndRoscosController) {
+  auto r = whirl("campbell " + kDeck + " --rpm 5:1:6 --closed-loop --no-plot --out '" + freshDir("cl_e1").string() + "'");
+  EXPECT_NE(r.code, 0);
+  EXPECT_NE(r.err.find("--closed-loop needs --wind"), std::string::npos) << r.err;
+  r = whirl("campbell cases/nrel5mw/Main_Aero.fst --wind 12 --closed-loop --no-plot --out '" + freshDir("cl_e2").string() + "'");
+  EXPECT_NE(r.code, 0);
+  EXPECT_NE(r.err.find("--closed-loop needs ROSCO's controller"), std::string::npos) << r.err;
+  r = whirl("campbell " + kDeck + " --wind 12 --without-speed-filter --no-plot --out '" + freshDir("cl_e3").string() + "'");
+  EXPECT_NE(r.err.find("--without-speed-filter goes with --closed-loop"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace whirl::test
