@@ -7,7 +7,8 @@
 #include "linearize/controller_tuning_whirl.hpp"
 #include "linearize/sweep.hpp"
 #include "linearize/trim.hpp"
-#include "modal/closed_loop_modes.hpp"
+#include "modal/closed_loop_campbell.hpp"
+#include "src/io/discon_input.hpp"
 #include "src/io/rotor_performance_input.hpp"
 #include "src/turbine/elastodyn_model.hpp"
 
@@ -62,25 +63,36 @@ void tuneWhirl(benchmark::State& state) {
 }
 BENCHMARK(tuneWhirl)->Unit(benchmark::kMillisecond);
 
-// The closed-loop Campbell: 23 wind speeds (3–25 m/s) trimmed, each plant linearized at 36 azimuths,
-// closed with a pitch PI and speed filter (region 3) or the held pitch (below), eigen and margins.
+// The closed-loop Campbell of `whirl campbell cases/nrel5mw/Main_ROSCO.fst --wind 3:1:25 --closed-loop`: the
+// 23 wind speeds trimmed with ROSCO's controller, each plant linearized at 36 azimuths, closed by the
+// controller linearized there, eigen, naming, margins of both loops, tracking (no files).
 void nrel5mwClosedLoopCampbell(benchmark::State& state) {
-  const Model m = readElastoDynModel(kRoot + "/cases/nrel5mw/Main_Aero.fst");
+  const std::string deck = kRoot + "/cases/nrel5mw/Main_ROSCO.fst";
+  const Model m = readElastoDynModel(deck);
+  const RoscoController c = *io::readDeckController(deck, {});
+  TrimOptions trim;
+  trim.controller = &c;
   for (auto _ : state) {
-    for (const SteadyState& s : trimSchedule(m, parseRange("3:1:25", "--wind"))) {
-      LinearController c;
-      c.lpf_freq = 1.5708;
-      c.pitch_active = s.above_rated;
-      c.pitch_kp = -6e-3;
-      c.pitch_ki = -3e-3;
-      c.torque = LinearController::Torque::Static;
-      c.torque_slope = s.above_rated ? -5e6 / 0.944 / (s.generator_speed * s.generator_speed) : 0;
-      const ClosedLoopPoint p = closedLoopPoint(m, s, c);
-      benchmark::DoNotOptimize(p.closed_modes.data());
-    }
+    const ClosedLoopCampbell d = closedLoopCampbell(m, c, trimSchedule(m, parseRange("3:1:25", "--wind"), trim));
+    benchmark::DoNotOptimize(d.closed.lines.data());
   }
 }
 BENCHMARK(nrel5mwClosedLoopCampbell)->Unit(benchmark::kMillisecond);
+
+// The same without the trim: the closed loop along an already trimmed schedule.
+void nrel5mwClosedLoopFromSchedule(benchmark::State& state) {
+  const std::string deck = kRoot + "/cases/nrel5mw/Main_ROSCO.fst";
+  const Model m = readElastoDynModel(deck);
+  const RoscoController c = *io::readDeckController(deck, {});
+  TrimOptions trim;
+  trim.controller = &c;
+  const std::vector<SteadyState> schedule = trimSchedule(m, parseRange("3:1:25", "--wind"), trim);
+  for (auto _ : state) {
+    const ClosedLoopCampbell d = closedLoopCampbell(m, c, schedule);
+    benchmark::DoNotOptimize(d.closed.lines.data());
+  }
+}
+BENCHMARK(nrel5mwClosedLoopFromSchedule)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace whirl

@@ -41,8 +41,10 @@ CampbellDiagram diagramOf(const std::vector<ClosedLoopPoint>& points, bool close
 ClosedLoopCampbell closedLoopCampbell(const Model& model, const RoscoController& controller,
                                       const std::vector<SteadyState>& schedule, const ClosedLoopCampbellOptions& opt) {
   ClosedLoopCampbell out;
+  ClosedLoopOptions point = opt.point;
+  if (point.outputs.empty()) point.outputs = {point.ports.speed_output};
   for (const SteadyState& s : schedule) {
-    out.points.push_back(closedLoopPoint(model, s, linearRosco(controller, s, opt.controller), opt.point));
+    out.points.push_back(closedLoopPoint(model, s, linearRosco(controller, s, opt.controller), point));
     if (opt.progress) opt.progress(static_cast<int>(out.points.size()), static_cast<int>(schedule.size()));
   }
   out.open = diagramOf(out.points, false, opt.tracking);

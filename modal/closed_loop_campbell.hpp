@@ -19,7 +19,9 @@
 namespace whirl {
 
 struct ClosedLoopCampbellOptions {
-  ClosedLoopOptions point;      ///< azimuths, frozen wake, margins, port names
+  /// Azimuths, frozen wake, margins, port names; the plant's outputs (default here: the speed output
+  /// alone, what the loop and the margins need).
+  ClosedLoopOptions point;
   RoscoLinearOptions controller;
   TrackingOptions tracking;
   /// Called after each point with (points done, points in all); may throw to stop.

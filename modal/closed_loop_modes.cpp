@@ -88,6 +88,12 @@ ClosedLoopPoint closedLoopPoint(const Model& model, const SteadyState& steady, c
                                 const ClosedLoopOptions& opt) {
   Model plant_model = model;
   plant_model.generator.speed_output = -1;  // the controller sets the generator torque
+  if (!opt.outputs.empty()) {
+    std::vector<Output> kept;
+    for (const Output& o : plant_model.outputs)
+      if (std::find(opt.outputs.begin(), opt.outputs.end(), o.name) != opt.outputs.end()) kept.push_back(o);
+    plant_model.outputs = std::move(kept);
+  }
   OperatingCondition c = steady.condition;
   c.generator_torque = steady.generator_torque;
   ExportOptions eo;

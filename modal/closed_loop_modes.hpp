@@ -46,6 +46,9 @@ struct ClosedLoopOptions {
   bool frozen_wake = true;
   MarginOptions margins;
   ClosedLoopPorts ports;
+  /// The plant's outputs kept (names, in the model's order); empty: all. Each output costs its
+  /// Jacobian at every azimuth; the loop needs ports.speed_output only.
+  std::vector<std::string> outputs;
 };
 
 /// One point: `controller` linearized at `steady` (gains scheduled at its pitch, region from it).
