@@ -78,5 +78,44 @@ TEST(LoopMargins, BrokenPitchLoopIsControllerTimesPlant) {
   }
 }
 
+TEST(LoopMargins, ModalEvaluationEqualsTheLuPath) {
+  // loopMargins(LoopSensitivity) evaluates S(jω) from one eigendecomposition; the margins equal those
+  // from the LU at every frequency (the function form) to the modal path's check, 1e-7.
+  StateSpaceModel p;
+  p.A = MatX(3, 3);
+  p.A << -0.05, 0.8, 0.0, 0.0, 0.0, 1.0, 3.0, -40.0, -0.3;
+  p.B = MatX::Zero(3, 3);
+  p.B(0, 1) = -0.45;
+  p.B(2, 1) = 2.0;
+  p.B(0, 0) = -2e-6;
+  p.C = MatX::Zero(1, 3);
+  p.C(0, 0) = 97;
+  p.D = MatX::Zero(1, 3);
+  p.u = {{"generator torque", "N m"}, {"collective pitch", "rad"}, {"wind speed", "m/s"}};
+  p.y = {{"GenSpeed", "rad/s"}};
+  p.x = {{"a", ""}, {"b", ""}, {"c", ""}};
+  LinearController c;
+  c.lpf_order = 1;
+  c.lpf_freq = 1.5708;
+  c.pitch_active = true;
+  c.pitch_kp = -6.2e-3;
+  c.pitch_ki = -3.3e-3;
+  c.torque = LinearController::Torque::Static;
+  c.torque_slope = -300;
+  for (BrokenLoop loop : {BrokenLoop::Pitch, BrokenLoop::Torque}) {
+    const LoopSensitivity s = loopSensitivity(p, c, loop);
+    const LoopMargins modal = loopMargins(s);
+    const LoopMargins lu = loopMargins([&](double w) { return sensitivityAt(s, w); });
+    for (auto [a, b] : {std::pair{modal.gain_margin, lu.gain_margin}, {modal.phase_margin, lu.phase_margin},
+                        {modal.delay_margin, lu.delay_margin}, {modal.peak_sensitivity, lu.peak_sensitivity}}) {
+      if (std::isinf(b)) {
+        EXPECT_EQ(a, b);
+      } else {
+        EXPECT_NEAR(a, b, 1e-6 * std::abs(b));
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace whirl
