@@ -11,6 +11,8 @@
 #include "linearize/controller_tuning.hpp"
 #include "linearize/controller_tuning_whirl.hpp"
 #include "linearize/trim.hpp"
+#include "modal/placement_check.hpp"
+#include "src/io/discon_input.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/common.hpp"
 #include "src/io/csv.hpp"
@@ -31,7 +33,7 @@ struct TuneOptions {
   double v_min = 0, v_rated = 0, v_max = 0;
   std::optional<double> inertia, rated_rotor_speed, rated_power, rotor_radius;
   std::string cp_surface, discon, out;
-  bool quasi_steady = false, pointwise = false;
+  bool quasi_steady = false, pointwise = false, full_model = false;
   int azimuths = 3;
 };
 
@@ -63,14 +65,16 @@ TuningTurbine turbineOf(const TuneOptions& opt, const Model& m) {
 
 /// whirl's trimmed points at ROSCO's wind speeds that the placement uses: the last below rated and
 /// every one from rated up; the above-rated flag by the wind speed, as ROSCO's schedule has it.
-std::vector<TuningPoint> whirlSchedule(const TuneOptions& opt, const Model& m, const TuningTurbine& t) {
+std::vector<TuningPoint> whirlSchedule(const TuneOptions& opt, const Model& m, const TuningTurbine& t,
+                                       std::vector<SteadyState>& trimmed) {
   const std::vector<double> all = roscoWindSpeeds(t, opt.goals);
   const size_t n_below = static_cast<size_t>(opt.goals.ws_gs_n - opt.goals.pc_gs_n - 1);
   const std::vector<double> winds(all.begin() + static_cast<long>(n_below) - 1, all.end());
   WhirlTuningOptions w;
   w.frozen_wake = !opt.quasi_steady;
   w.trim.azimuths = opt.azimuths;
-  std::vector<TuningPoint> s = whirlTuningSchedule(m, trimSchedule(m, winds, w.trim), w);
+  trimmed = trimSchedule(m, winds, w.trim);
+  std::vector<TuningPoint> s = whirlTuningSchedule(m, trimmed, w);
   for (size_t i = 0; i < s.size(); ++i) s[i].above_rated = i > 0;
   return s;
 }
@@ -94,6 +98,34 @@ std::string csvOf(const std::vector<TuningPoint>& s, const GainSchedule& g) {
   return t;
 }
 
+/// placement_check.csv: per pitch-schedule point the target and the whole model's nearest closed-loop root.
+std::string checkCsv(const std::vector<PlacementCheck>& checks) {
+  std::string t = "wind_speed_m_s,target_real_1_s,target_imag_1_s,pole_real_1_s,pole_imag_1_s,omega_rad_s,zeta,"
+                  "distance_1_s,stable\n";
+  for (const PlacementCheck& c : checks) {
+    for (double v : {c.wind_speed, c.target.real(), c.target.imag(), c.pole.real(), c.pole.imag(), c.omega, c.zeta,
+                     std::abs(c.pole - c.target)})
+      t += formatNumber(v) + ",";
+    t += c.stable ? "1\n" : "0\n";
+  }
+  return t;
+}
+
+void printChecks(const std::vector<PlacementCheck>& checks) {
+  if (checks.empty()) return;
+  double w_lo = 1e300, w_hi = 0, z_lo = 1e300, z_hi = -1e300;
+  int unstable = 0;
+  for (const PlacementCheck& c : checks) {
+    w_lo = std::min(w_lo, c.omega), w_hi = std::max(w_hi, c.omega);
+    z_lo = std::min(z_lo, c.zeta), z_hi = std::max(z_hi, c.zeta);
+    unstable += c.stable ? 0 : 1;
+  }
+  std::printf("whole model, closed with these gains: rotor-speed root omega %.3g to %.3g rad/s, zeta %.3g to %.3g "
+              "(target %.3g rad/s, %.3g); unstable at %d of %zu points\n",
+              w_lo, w_hi, z_lo, z_hi, std::abs(checks.front().target), -checks.front().target.real() / std::abs(checks.front().target),
+              unstable, checks.size());
+}
+
 void run(TuneOptions opt) {
   const auto start = std::chrono::steady_clock::now();
   const Model m = loadModel(opt.model);
@@ -102,14 +134,29 @@ void run(TuneOptions opt) {
   opt.goals.fit_linear_in_wind = !opt.pointwise;
   const TuningTurbine t = turbineOf(opt, m);
   const std::string discon_text = opt.discon.empty() ? std::string() : readText(opt.discon);
+  std::vector<SteadyState> trimmed;
   const std::vector<TuningPoint> s = opt.cp_surface.empty()
-                                         ? whirlSchedule(opt, m, t)
+                                         ? whirlSchedule(opt, m, t, trimmed)
                                          : roscoTuningSchedule(io::readRotorPerformance(opt.cp_surface), t, opt.goals);
   const GainSchedule g = placePoles(s, t, opt.goals);
+  std::vector<PlacementCheck> checks;
+  if (opt.full_model) {
+    if (!m.aero.active()) throw InputError(opt.model.case_path + ": --full-model needs an aeroelastic deck");
+    // The pitch schedule's points: whirl's trims from rated up, or the deck trimmed at the surface's.
+    std::vector<SteadyState> above;
+    if (trimmed.empty()) above = trimSchedule(m, g.wind_speed);
+    for (double u : trimmed.empty() ? std::vector<double>{} : g.wind_speed)
+      for (const SteadyState& st : trimmed)
+        if (std::abs(*st.condition.wind_speed - u) < 1e-9) above.push_back(st);
+    PlacementCheckOptions pc;
+    if (!discon_text.empty()) pc.speed_filter = io::parseDiscon(discon_text, opt.discon).F_LPFCornerFreq;
+    checks = checkPlacement(m, above, g, t, opt.goals, pc);
+  }
   const std::string dir = opt.out.empty() ? defaultOutputFolder(opt.model.case_path) : opt.out;
   prepareOutputFolder(dir);
   OutputSet files(dir);
   files.write("tune.csv", csvOf(s, g));
+  if (opt.full_model) files.write("placement_check.csv", checkCsv(checks));
   if (!opt.discon.empty()) files.write("DISCON.IN", disconWithGains(discon_text, opt.discon, g));
   files.commit();
   std::printf("sensitivities from %s; J = %.6g kg m^2, N = %g, R = %g m, rho = %g kg/m^3\n",
@@ -124,6 +171,7 @@ void run(TuneOptions opt) {
     ++k;
   }
   std::printf("VS_KP %.6g, VS_KI %.6g\n", g.vs_kp, g.vs_ki);
+  if (opt.full_model) printChecks(checks);
   std::printf("wrote");
   for (const auto& f : files.paths()) std::printf(" %s", f.c_str());
   std::printf("\n%.2f s\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
@@ -155,6 +203,9 @@ void addTuneCommand(CLI::App& app) {
   cmd->add_option("--discon", opt->discon, "DISCON.IN to write again with the new gain schedule");
   cmd->add_flag("--quasi-steady", opt->quasi_steady, "sensitivities with the induction following at once (default: frozen wake)");
   cmd->add_flag("--pointwise", opt->pointwise, "place each wind speed's own plant (default: ROSCO's line fit in the wind speed)");
+  cmd->add_flag("--full-model", opt->full_model,
+                "also close the whole linear model with the placed gains at each pitch-schedule point (with --discon: "
+                "its speed filter) and report where the rotor-speed root lands (placement_check.csv)");
   cmd->add_option("--azimuths", opt->azimuths, "equilibria per point, over one blade passage")->check(CLI::Range(1, 360));
   cmd->add_option("--out", opt->out, "output folder (default reports/<case name>)");
   cmd->callback([opt]() { run(*opt); });
