@@ -25,6 +25,8 @@ status=0
 for py in "${interpreters[@]}"; do
   site="$("$py" -c 'import sysconfig; print(sysconfig.get_paths()["purelib"])')"
   lines="$package_dir"
+  # An earlier run's whirl.pth may be what makes numpy importable: judge the interpreter without it.
+  rm -f "$site/whirl.pth" "$("$py" -c 'import site; print(site.getusersitepackages())')/whirl.pth"
   if ! PYTHONPATH="$package_dir" "$py" -c 'import numpy' >/dev/null 2>&1; then
     version='import sys; print(sys.version_info[:2])'
     same_version=False
