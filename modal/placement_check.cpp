@@ -1,6 +1,7 @@
 #include "modal/placement_check.hpp"
 
 #include <cmath>
+#include <Eigen/Eigenvalues>
 #include <limits>
 #include <numbers>
 
@@ -8,31 +9,52 @@
 
 namespace whirl {
 
+namespace {
+
+LinearController placedController(double kp, double ki, double gen_speed, const TuningTurbine& t, const TuningGoals& goals,
+                                  const PlacementCheckOptions& opt) {
+  LinearController c;
+  c.lpf_order = opt.speed_filter > 0 ? 1 : 0;
+  c.lpf_freq = opt.speed_filter;
+  c.pitch_active = true;
+  c.pitch_kp = kp;
+  c.pitch_ki = ki;
+  if (goals.constant_power) {
+    // The one-state model's constant-power term: N τ_g = P/Ω, so δτ_g = −P/ω_g² δω_g.
+    c.torque = LinearController::Torque::Static;
+    c.torque_slope = -t.rated_power / (gen_speed * gen_speed);
+  }
+  return c;
+}
+
+std::complex<double> targetRoot(const TuningGoals& goals) {
+  return {-goals.pc_zeta * goals.pc_omega, goals.pc_omega * std::sqrt(std::max(0.0, 1 - goals.pc_zeta * goals.pc_zeta))};
+}
+
+/// The closed loop's eigenvalue nearest `near`.
+std::complex<double> nearestRoot(const StateSpaceModel& closed, std::complex<double> near) {
+  const Eigen::VectorXcd ev = Eigen::EigenSolver<MatX>(closed.A, false).eigenvalues();
+  std::complex<double> best = ev(0);
+  for (Eigen::Index i = 1; i < ev.size(); ++i)
+    if (std::abs(ev(i) - near) < std::abs(best - near)) best = ev(i);
+  return best.imag() < 0 ? std::conj(best) : best;
+}
+
+}  // namespace
+
 std::vector<PlacementCheck> checkPlacement(const Model& model, const std::vector<SteadyState>& trimmed,
                                            const GainSchedule& g, const TuningTurbine& t, const TuningGoals& goals,
                                            const PlacementCheckOptions& opt) {
   if (trimmed.size() != g.wind_speed.size())
     throw InputError("placement check: " + std::to_string(trimmed.size()) + " trimmed points for " +
                      std::to_string(g.wind_speed.size()) + " points of the pitch schedule");
-  const std::complex<double> target(-goals.pc_zeta * goals.pc_omega,
-                                    goals.pc_omega * std::sqrt(std::max(0.0, 1 - goals.pc_zeta * goals.pc_zeta)));
+  const std::complex<double> target = targetRoot(goals);
   ClosedLoopOptions clo;
   clo.azimuths = opt.azimuths;
   clo.outputs = {clo.ports.speed_output};
   std::vector<PlacementCheck> out;
   for (size_t k = 0; k < trimmed.size(); ++k) {
-    LinearController c;
-    c.lpf_order = opt.speed_filter > 0 ? 1 : 0;
-    c.lpf_freq = opt.speed_filter;
-    c.pitch_active = true;
-    c.pitch_kp = g.kp[k];
-    c.pitch_ki = g.ki[k];
-    if (goals.constant_power) {
-      // The one-state model's constant-power term: N τ_g = P/Ω, so δτ_g = −P/ω_g² δω_g.
-      const double w = trimmed[k].generator_speed;
-      c.torque = LinearController::Torque::Static;
-      c.torque_slope = -t.rated_power / (w * w);
-    }
+    const LinearController c = placedController(g.kp[k], g.ki[k], trimmed[k].generator_speed, t, goals, opt);
     const ClosedLoopPoint p = closedLoopPoint(model, trimmed[k], c, clo);
     PlacementCheck r;
     r.wind_speed = g.wind_speed[k];
@@ -48,6 +70,48 @@ std::vector<PlacementCheck> checkPlacement(const Model& model, const std::vector
       }
     out.push_back(r);
   }
+  return out;
+}
+
+}  // namespace whirl
+
+namespace whirl {
+
+FullModelPlacement placeOnFullModel(const Model& model, const std::vector<SteadyState>& trimmed, const GainSchedule& g,
+                                    const TuningTurbine& t, const TuningGoals& goals, const PlacementCheckOptions& opt) {
+  if (trimmed.size() != g.wind_speed.size())
+    throw InputError("placement: " + std::to_string(trimmed.size()) + " trimmed points for " +
+                     std::to_string(g.wind_speed.size()) + " points of the pitch schedule");
+  const std::complex<double> target = targetRoot(goals);
+  ClosedLoopOptions clo;
+  clo.azimuths = opt.azimuths;
+  clo.outputs = {clo.ports.speed_output};
+  FullModelPlacement out{g, std::vector<bool>(g.kp.size(), false), {}};
+  for (size_t k = 0; k < trimmed.size(); ++k) {
+    const double w = trimmed[k].generator_speed;
+    const StateSpaceModel plant = closedLoopPoint(model, trimmed[k], placedController(g.kp[k], g.ki[k], w, t, goals, opt), clo).plant;
+    double kp = g.kp[k], ki = g.ki[k];
+    std::complex<double> root = nearestRoot(closeLoop(plant, placedController(kp, ki, w, t, goals, opt)), target);
+    auto rootAt = [&](double p, double i) { return nearestRoot(closeLoop(plant, placedController(p, i, w, t, goals, opt)), root); };
+    for (int it = 0; it < 30 && std::abs(root - target) >= 1e-9 * std::abs(target); ++it) {
+      const double hp = 1e-6 * std::abs(kp), hi = 1e-6 * std::abs(ki);
+      const std::complex<double> dp = (rootAt(kp + hp, ki) - rootAt(kp - hp, ki)) / (2 * hp);
+      const std::complex<double> di = (rootAt(kp, ki + hi) - rootAt(kp, ki - hi)) / (2 * hi);
+      // [Re dp, Re di; Im dp, Im di] [Δp; Δi] = target − root
+      const double det = dp.real() * di.imag() - di.real() * dp.imag();
+      if (!(std::abs(det) > 0)) break;
+      const std::complex<double> r = target - root;
+      kp += (r.real() * di.imag() - di.real() * r.imag()) / det;
+      ki += (dp.real() * r.imag() - r.real() * dp.imag()) / det;
+      root = rootAt(kp, ki);
+    }
+    if (std::abs(root - target) < 1e-9 * std::abs(target) && std::isfinite(kp) && std::isfinite(ki)) {
+      out.gains.kp[k] = kp;
+      out.gains.ki[k] = ki;
+      out.converged[k] = true;
+    }
+  }
+  out.checks = checkPlacement(model, trimmed, out.gains, t, goals, opt);
   return out;
 }
 

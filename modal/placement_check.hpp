@@ -32,4 +32,18 @@ std::vector<PlacementCheck> checkPlacement(const Model& model, const std::vector
                                            const GainSchedule& g, const TuningTurbine& t, const TuningGoals& goals,
                                            const PlacementCheckOptions& opt = {});
 
+/// The placement on the whole linear model: at each point the PI gains (K_p, K_i) that put the
+/// closed-loop root nearest the target exactly on it, by Newton's method on Re and Im of (root − target)
+/// with derivatives by central differences, started from the one-state gains of `g` (the root followed
+/// as the one nearest the previous iterate). The plant is linearized once per point; each iterate closes
+/// it again. `g`'s pitch-loop gains are replaced where Newton converges (|root − target| < 1e-9 |target|
+/// within 30 iterates); `converged[k]` says where (elsewhere the one-state gains stay).
+struct FullModelPlacement {
+  GainSchedule gains;
+  std::vector<bool> converged;
+  std::vector<PlacementCheck> checks;  ///< of the returned gains
+};
+FullModelPlacement placeOnFullModel(const Model& model, const std::vector<SteadyState>& trimmed, const GainSchedule& g,
+                                    const TuningTurbine& t, const TuningGoals& goals, const PlacementCheckOptions& opt = {});
+
 }  // namespace whirl

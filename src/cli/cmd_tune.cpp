@@ -2,6 +2,7 @@
 // with whirl's sensitivities along its trimmed schedule, or with a ROSCO Cp surface (--cp-surface);
 // writes tune.csv and, with --discon, that DISCON.IN with the new gain schedule.
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -33,7 +34,7 @@ struct TuneOptions {
   double v_min = 0, v_rated = 0, v_max = 0;
   std::optional<double> inertia, rated_rotor_speed, rated_power, rotor_radius;
   std::string cp_surface, discon, out;
-  bool quasi_steady = false, pointwise = false, full_model = false;
+  bool quasi_steady = false, pointwise = false, full_model = false, full_model_placement = false;
   int azimuths = 3;
 };
 
@@ -138,9 +139,10 @@ void run(TuneOptions opt) {
   const std::vector<TuningPoint> s = opt.cp_surface.empty()
                                          ? whirlSchedule(opt, m, t, trimmed)
                                          : roscoTuningSchedule(io::readRotorPerformance(opt.cp_surface), t, opt.goals);
-  const GainSchedule g = placePoles(s, t, opt.goals);
+  GainSchedule g = placePoles(s, t, opt.goals);
   std::vector<PlacementCheck> checks;
-  if (opt.full_model) {
+  int placed_on_full = -1;
+  if (opt.full_model || opt.full_model_placement) {
     if (!m.aero.active()) throw InputError(opt.model.case_path + ": --full-model needs an aeroelastic deck");
     // The pitch schedule's points: whirl's trims from rated up, or the deck trimmed at the surface's.
     std::vector<SteadyState> above;
@@ -150,13 +152,20 @@ void run(TuneOptions opt) {
         if (std::abs(*st.condition.wind_speed - u) < 1e-9) above.push_back(st);
     PlacementCheckOptions pc;
     if (!discon_text.empty()) pc.speed_filter = io::parseDiscon(discon_text, opt.discon).F_LPFCornerFreq;
-    checks = checkPlacement(m, above, g, t, opt.goals, pc);
+    if (opt.full_model_placement) {
+      const FullModelPlacement fp = placeOnFullModel(m, above, g, t, opt.goals, pc);
+      g = fp.gains;
+      checks = fp.checks;
+      placed_on_full = static_cast<int>(std::count(fp.converged.begin(), fp.converged.end(), true));
+    } else {
+      checks = checkPlacement(m, above, g, t, opt.goals, pc);
+    }
   }
   const std::string dir = opt.out.empty() ? defaultOutputFolder(opt.model.case_path) : opt.out;
   prepareOutputFolder(dir);
   OutputSet files(dir);
   files.write("tune.csv", csvOf(s, g));
-  if (opt.full_model) files.write("placement_check.csv", checkCsv(checks));
+  if (!checks.empty()) files.write("placement_check.csv", checkCsv(checks));
   if (!opt.discon.empty()) files.write("DISCON.IN", disconWithGains(discon_text, opt.discon, g));
   files.commit();
   std::printf("sensitivities from %s; J = %.6g kg m^2, N = %g, R = %g m, rho = %g kg/m^3\n",
@@ -171,7 +180,10 @@ void run(TuneOptions opt) {
     ++k;
   }
   std::printf("VS_KP %.6g, VS_KI %.6g\n", g.vs_kp, g.vs_ki);
-  if (opt.full_model) printChecks(checks);
+  if (placed_on_full >= 0)
+    std::printf("placed on the whole model at %d of %zu points (the others keep the one-state gains)\n", placed_on_full,
+                checks.size());
+  printChecks(checks);
   std::printf("wrote");
   for (const auto& f : files.paths()) std::printf(" %s", f.c_str());
   std::printf("\n%.2f s\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
@@ -206,6 +218,9 @@ void addTuneCommand(CLI::App& app) {
   cmd->add_flag("--full-model", opt->full_model,
                 "also close the whole linear model with the placed gains at each pitch-schedule point (with --discon: "
                 "its speed filter) and report where the rotor-speed root lands (placement_check.csv)");
+  cmd->add_flag("--full-model-placement", opt->full_model_placement,
+                "place the pitch loop's root on the whole linear model (Newton on K_p, K_i from the one-state gains; "
+                "with --discon its speed filter in the loop) and write those gains; implies --full-model");
   cmd->add_option("--azimuths", opt->azimuths, "equilibria per point, over one blade passage")->check(CLI::Range(1, 360));
   cmd->add_option("--out", opt->out, "output folder (default reports/<case name>)");
   cmd->callback([opt]() { run(*opt); });

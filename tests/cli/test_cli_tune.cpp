@@ -91,5 +91,15 @@ TEST(CliTuneSlow, FullModelCheckPlacesWhirlsGainsCloserThanTheCpSurfaces) {
   EXPECT_LT(ours, 0.2);
 }
 
+TEST(CliTuneSlow, FullModelPlacementPutsTheRootOnTheTarget) {
+  // Without a speed filter Newton on (K_p, K_i) reaches the target −0.42 + 0.43i at every point of the
+  // pitch schedule (the whole model's drivetrain is still unstable without the filter: another root).
+  const auto dir = freshDir("tune_place_full");
+  const auto r = whirl(kTune + "--full-model-placement --out '" + dir.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("placed on the whole model at 30 of 30 points"), std::string::npos) << r.out;
+  EXPECT_LT(meanDistance(dir / "placement_check.csv"), 1e-8);
+}
+
 }  // namespace
 }  // namespace whirl::test
