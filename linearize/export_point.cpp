@@ -14,11 +14,14 @@ ExportPoint exportOperatingPoint(const Model& m, const OperatingPoint& start, co
   if (az < 0) {
     const OperatingPoint op = solveOperatingPoint(m, start);
     e.equilibrium = op;
-    e.model = selectInputsOutputs(stateSpace(m, op, linearize(m, op)), opt.inputs, opt.outputs);
+    LinearizeOptions lo;
+    lo.frozen_wake = opt.frozen_wake;
+    e.model = selectInputsOutputs(stateSpace(m, op, linearize(m, op, lo)), opt.inputs, opt.outputs);
   } else {
     PeriodicOptions popt;
     popt.azimuths = opt.azimuths;
     popt.deflections = opt.deflections;
+    popt.linearize.frozen_wake = opt.frozen_wake;
     const PeriodicLinearization p = linearizePeriodic(m, start, popt);
     e.equilibrium = p.points.front();
     for (size_t k = 0; k < p.models.size(); ++k)

@@ -33,6 +33,9 @@ struct ExportOptions {
   std::vector<std::string> outputs;  ///< keep these, in this order (empty = all)
   bool drop_azimuth = false;         ///< remove the azimuth displacement state (dropAzimuth)
   const VecX* deflections = nullptr;  ///< a trim's equilibrium to start from (PeriodicOptions::deflections)
+  /// AeroDyn's frozen wake (the induction held in the perturbation), as OpenFAST linearizes; false: the
+  /// induction follows at once (quasi-steady BEM, what a time simulation's BEM does).
+  bool frozen_wake = true;
 };
 
 /// Solves the operating point of `model` from `start` (rates, pitch and inputs as set in the model) and

@@ -73,6 +73,7 @@ struct Problem {
   VecX q_kinematics;              // the coordinates of the kinematics in ws, when known
   bool kinematics_known = false;
   MatX Mfull;
+  VecX held;                     // the controller's commands (SimulationOptions::controller), per controlled input
   std::string ida_message;       // the last message IDA reported
   std::exception_ptr error;      // an exception thrown inside a callback, rethrown after IDASolve
 
@@ -99,6 +100,12 @@ struct Problem {
         qd(d.dof) += d.gain * v.rate;
         qdd(d.dof) += d.gain * v.acceleration;
       }
+    }
+    for (size_t k = 0; k < opt.controller.inputs.size(); ++k) {
+      const int i = opt.controller.inputs[k];
+      const double du = held(static_cast<Eigen::Index>(k)) - start.u(i);
+      u(i) = held(static_cast<Eigen::Index>(k));
+      for (const InputDofTarget& d : m.inputs[i].dofs) q(d.dof) += d.gain * du;
     }
     for (const DrivenDof& d : opt.driven) {
       const SignalValue v = evaluateSignal(d.signal, 0.0, t);
@@ -276,6 +283,8 @@ Simulation simulate(const Model& m, const OperatingPoint& start, const Simulatio
   if (!(opt.t_end > 0) || !std::isfinite(opt.t_end)) throw InputError("simulate: tmax: must be a finite time > 0");
   if (!(opt.dt_out > 0) || !std::isfinite(opt.dt_out)) throw InputError("simulate: dt-out: must be a finite time > 0");
   if (!(opt.rtol > 0) || !(opt.atol > 0)) throw InputError("simulate: tolerances: must be > 0");
+  if (opt.controller.step && (!(opt.controller.dt > 0) || !(opt.t_end / opt.controller.dt <= 1e6)))
+    throw InputError("simulate: controller time step: must be > 0 and at most 1e6 steps in the simulated time");
   if (start.q.size() != m.ndof() || start.qd.size() != m.ndof() || start.u.size() != m.ninput())
     throw InputError("simulate: the start point does not match the model's coordinates and inputs");
   if (!m.body_states.empty())
@@ -335,6 +344,9 @@ Simulation simulate(const Model& m, const OperatingPoint& start, const Simulatio
   for (const DrivenDof& d : opt.driven)
     for (double b : signalBreakpoints(d.signal))
       if (b > 0 && b < opt.t_end) stops.push_back(b);
+  const bool controlled = static_cast<bool>(opt.controller.step);
+  if (controlled)
+    for (long k = 1; k * opt.controller.dt < opt.t_end; ++k) stops.push_back(static_cast<double>(k) * opt.controller.dt);
   stops.push_back(opt.t_end);
   std::sort(stops.begin(), stops.end());
   stops.erase(std::unique(stops.begin(), stops.end()), stops.end());
@@ -354,6 +366,19 @@ Simulation simulate(const Model& m, const OperatingPoint& start, const Simulatio
   for (int k = 0; k < ns; ++k) {
     y[k] = start.q(p.states[k]);
     y[ns + k] = start.qd(p.states[k]);
+  }
+  // The controller's commands at a stop: from the motion there (the held values before the call).
+  auto control = [&](double tc) {
+    if (!controlled) return;
+    p.load(tc, y, nullptr);
+    p.held = opt.controller.step(tc, p.q, p.qd, p.u);
+    if (p.held.size() != static_cast<Eigen::Index>(opt.controller.inputs.size()) || !p.held.allFinite())
+      throw ComputeError(fmt::format("simulate: t = {:.6g} s: the controller's commands are not finite", tc));
+  };
+  if (controlled) {
+    p.held = VecX(static_cast<Eigen::Index>(opt.controller.inputs.size()));
+    for (size_t k = 0; k < opt.controller.inputs.size(); ++k) p.held(static_cast<Eigen::Index>(k)) = start.u(opt.controller.inputs[k]);
+    control(0.0);
   }
   consistentRates(p, 0.0, y, yp);
   h.mem = IDACreate(h.ctx);
@@ -418,6 +443,7 @@ Simulation simulate(const Model& m, const OperatingPoint& start, const Simulatio
       if (next_stop + 1 < stops.size()) {
         ++next_stop;
         addStatistics(h.mem, sim);
+        if (controlled && std::abs(ts / opt.controller.dt - std::round(ts / opt.controller.dt)) < 1e-9) control(ts);
         consistentRates(p, ts, y, yp);
         check(IDAReInit(h.mem, ts, h.y, h.yp), "IDAReInit");
         check(IDASetStopTime(h.mem, stops[next_stop]), "IDASetStopTime");

@@ -42,6 +42,16 @@ struct DrivenDof {
   TimeSignal signal;
 };
 
+/// A discrete-time controller in the loop, as ROSCO runs in OpenFAST (called every `dt` with the
+/// motion there, its commands held until the next call): at t = 0, dt, 2dt, … `step` gets the time,
+/// the coordinates, their rates and the inputs and returns the values of `inputs` (e.g. generator
+/// torque and collective pitch). The integrator stops and restarts at each call (the held inputs jump).
+struct DiscreteController {
+  double dt = 0.01;         ///< [s], > 0
+  std::vector<int> inputs;  ///< the inputs it sets (not driven by InputSignal at the same time)
+  std::function<VecX(double, const VecX&, const VecX&, const VecX&)> step;
+};
+
 struct SimulationOptions {
   double t_end = 10;      ///< [s], > 0
   double dt_out = 0.01;   ///< interval of the recorded instants [s], > 0
@@ -53,6 +63,8 @@ struct SimulationOptions {
   std::vector<InputSignal> inputs;
   std::vector<DrivenDof> driven;  ///< active coordinates on a prescribed motion; not states
   long max_steps = 200000;  ///< IDA steps between two recorded instants; more is a ComputeError (never hangs)
+  /// A controller in the loop (empty `step`: none).
+  DiscreteController controller;
   /// Called after each recorded instant with (t, t_end).
   std::function<void(double, double)> progress;
 };

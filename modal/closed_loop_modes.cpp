@@ -99,6 +99,7 @@ ClosedLoopPoint closedLoopPoint(const Model& model, const SteadyState& steady, c
   ExportOptions eo;
   eo.azimuths = opt.azimuths;
   eo.drop_azimuth = true;
+  eo.frozen_wake = opt.frozen_wake;
   if (!steady.azimuth_q.empty()) eo.deflections = &steady.azimuth_q.front();
   ClosedLoopPoint p;
   p.steady = steady;

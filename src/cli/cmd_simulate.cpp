@@ -9,9 +9,13 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <cstdio>
 
+#include "linearize/rosco_step.hpp"
 #include "linearize/simulate.hpp"
+#include "linearize/trim.hpp"
+#include "src/io/discon_input.hpp"
 #include "linearize/simulation_setup.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/common.hpp"
@@ -27,7 +31,9 @@ struct SimulateOptions {
   ModelOptions model;
   double tmax = 0, dt_out = 0.01, rtol = 1e-6, atol = 1e-8;
   std::vector<std::string> init, inputs, drives;
-  bool free_rotor = false, equilibrium = false, no_plot = false;
+  bool free_rotor = false, equilibrium = false, no_plot = false, closed_loop = false;
+  std::optional<double> wind;
+  double controller_dt = 0.01;
   std::string out, plot;
 };
 
@@ -53,6 +59,24 @@ void run(const SimulateOptions& opt) {
   const Model m = loadModel(opt.model);
   requireActiveDof(m, m.name);
   OperatingPoint start = startPoint(m, opt.model);
+  std::optional<RoscoController> controller;
+  std::optional<SteadyState> steady;
+  if (opt.closed_loop && !opt.wind) throw InputError("simulate: --closed-loop needs --wind U (it starts where ROSCO settles)");
+  if (opt.wind) {
+    // The trimmed steady state (with the deck's ROSCO controller when it names one), rotor free.
+    if (opt.model.rpm || opt.equilibrium) throw InputError("simulate: --wind starts at the trimmed state: not with --rpm or --equilibrium");
+    controller = io::readDeckController(opt.model.case_path, opt.model.sets);
+    if (opt.closed_loop && !controller)
+      throw InputError(opt.model.case_path + ": --closed-loop needs ROSCO's controller: ServoDyn with VSContrl = 5 and "
+                       "DLL_InFile naming its DISCON.IN");
+    TrimOptions trim;
+    if (controller) trim.controller = &*controller;
+    steady = trimAtWindSpeed(m, *opt.wind, trim);
+    OperatingCondition cond = steady->condition;
+    cond.generator_torque = steady->generator_torque;
+    start = solveOperatingPoint(m, initialPoint(m, cond));
+    checkSolvedPoints(opt.model, m, {start});
+  }
   if (opt.equilibrium) {
     start = solveOperatingPoint(m, start);
     checkSolvedPoints(opt.model, m, {start});
@@ -63,7 +87,8 @@ void run(const SimulateOptions& opt) {
   so.dt_out = opt.dt_out;
   so.rtol = opt.rtol;
   so.atol = opt.atol;
-  if (!opt.free_rotor) so.prescribed = m.roles.azimuth;
+  if (!opt.free_rotor && !opt.wind) so.prescribed = m.roles.azimuth;
+  if (opt.closed_loop) so.controller = roscoInTheLoop(m, *controller, *steady, opt.controller_dt, start);
   for (const std::string& s : opt.inputs) {
     const auto [name, signal] = splitAssignment(s, "--input");
     so.inputs.push_back({simulationInput(m, name, "--input"), parseTimeSignal(signal, "--input " + name)});
@@ -133,6 +158,15 @@ void addSimulateCommand(CLI::App& app) {
   cmd->add_option("--drive", opt->drives,
                   "prescribed motion of a coordinate from its start value, 'DOF=spinup(T,w)' (Kane's spin-up: "
                   "acceleration (w/T)(1 - cos 2 pi t/T), then rate w) or any --input signal; repeatable");
+  cmd->add_option("--wind", opt->wind,
+                  "start at the steady state trimmed at this wind speed [m/s] (with the deck's ROSCO controller when it "
+                  "names one), the rotor free")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_flag("--closed-loop", opt->closed_loop,
+                "with --wind: ROSCO's controller of the deck in the loop, setting generator torque and pitch every "
+                "--controller-dt");
+  cmd->add_option("--controller-dt", opt->controller_dt, "the controller's time step [s] (default 0.01)")
+      ->check(CLI::PositiveNumber);
   cmd->add_flag("--free-rotor", opt->free_rotor,
                 "the rotor azimuth is a state (starting at --rpm); otherwise the rotor turns at the constant --rpm");
   cmd->add_flag("--equilibrium", opt->equilibrium,

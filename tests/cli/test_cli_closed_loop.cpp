@@ -3,7 +3,10 @@
 // static gain from the wind to the generator speed, and the errors before anything is written.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "tests/cli/cli_support.hpp"
 
@@ -71,6 +74,42 @@ TEST(CliClosedLoop, NeedsTheWindAndRoscosController) {
   EXPECT_NE(r.err.find("--closed-loop needs ROSCO's controller"), std::string::npos) << r.err;
   r = whirl("campbell " + kDeck + " --wind 12 --without-speed-filter --no-plot --out '" + freshDir("cl_e3").string() + "'");
   EXPECT_NE(r.err.find("--without-speed-filter goes with --closed-loop"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace whirl::test
+
+namespace whirl::test {
+namespace {
+
+TEST(CliClosedLoop, SimulateWithRoscoReturnsToRatedSpeedAfterAWindStep) {
+  const auto dir = freshDir("cl_simulate");
+  const auto r = whirl("simulate " + kDeck + " --wind 14 --closed-loop --tmax 15 --input 'wind speed=step(1,0.2)' "
+                       "--no-plot --out '" + dir.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  // The last recorded generator speed within 0.1 rad/s of PC_RefSpd (122.90967 rad/s): the pitch PI's
+  // integrator has removed the error the step made (peak +0.58 rad/s at 3 s).
+  const std::string csv = slurp(dir / "timeseries.csv");
+  std::istringstream in(csv);
+  std::string header, line, last;
+  std::getline(in, header);
+  while (std::getline(in, line)) last = line;
+  auto column = [](const std::string& text, const std::string& name) {
+    std::vector<std::string> f;
+    std::istringstream s(text);
+    for (std::string c; std::getline(s, c, ',');) f.push_back(c);
+    return std::find(f.begin(), f.end(), name) - f.begin();
+  };
+  const auto col = column(header, "GenSpeed [rad/s]");
+  std::vector<std::string> f;
+  std::istringstream s(last);
+  for (std::string c; std::getline(s, c, ',');) f.push_back(c);
+  ASSERT_LT(static_cast<size_t>(col), f.size());
+  EXPECT_NEAR(std::stod(f[static_cast<size_t>(col)]), 122.90967, 0.1);
+  const auto bad = whirl("simulate cases/nrel5mw/Main_Aero.fst --wind 14 --closed-loop --tmax 1 --out '" +
+                         freshDir("cl_sim_bad").string() + "'");
+  EXPECT_NE(bad.code, 0);
+  EXPECT_NE(bad.err.find("--closed-loop needs ROSCO's controller"), std::string::npos) << bad.err;
 }
 
 }  // namespace
