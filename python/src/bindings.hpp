@@ -72,5 +72,6 @@ void bindSweeps(py::module_& m);
 void bindBode(py::module_& m);
 void bindSimulate(py::module_& m);
 void bindCompare(py::module_& m);
+void bindClosedLoop(py::module_& m);
 
 }  // namespace whirl::python

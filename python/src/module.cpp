@@ -17,4 +17,5 @@ PYBIND11_MODULE(_whirl, m) {
   whirl::python::bindBode(m);
   whirl::python::bindSimulate(m);
   whirl::python::bindCompare(m);
+  whirl::python::bindClosedLoop(m);
 }

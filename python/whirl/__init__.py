@@ -14,6 +14,8 @@ downwind, z up), the case's ground frame for YAML cases (docs/architecture.md, *
 """
 from __future__ import annotations
 
+import dataclasses
+import io
 import json
 import os
 import re
@@ -30,7 +32,7 @@ from . import lin
 
 __version__ = getattr(_whirl, "__version__", "0")
 __all__ = ["load", "from_dict", "compare", "Model", "OperatingPoint", "LinearModel", "ExportedModel", "StateSpace",
-           "CampbellTable", "BodeTable", "InputError", "ComputeError", "lin"]
+           "CampbellTable", "BodeTable", "ClosedLoop", "InputError", "ComputeError", "lin"]
 
 #: Bad input: a file that is missing or malformed, an unknown key, a value out of range. The message
 #: is the CLI's, ``file:line: key: reason``; the attributes ``file``, ``line`` (0 when unknown) and
@@ -177,6 +179,15 @@ def _schedule_rows(table: pd.DataFrame) -> list:
     return [(float(row[rpm]), value(row, wind), value(row, pitch)) for _, row in table.iterrows()]
 
 
+@dataclasses.dataclass
+class ClosedLoop:
+    """Result of :meth:`Model.closed_loop`: the CLI's closed-loop tables as DataFrames."""
+    modes: pd.DataFrame
+    margins: pd.DataFrame
+    campbell: pd.DataFrame
+    open_loop_campbell: pd.DataFrame
+
+
 class Model:
     """A loaded model: coordinates (DOFs), inputs, outputs and bodies, and the analyses of the CLI.
 
@@ -296,6 +307,24 @@ class Model:
         table.attrs["versus"] = "wind" if rpm is None else "rpm"
         table.attrs["title"] = "Campbell diagram: " + (self.name.split(". ")[0] or self.source)
         return table
+
+    def closed_loop(self, wind: Iterable[float], azimuths: int = 36, without_speed_filter: bool = False,
+                    progress: Union[None, bool, Callable[[int, int], Any]] = None) -> "ClosedLoop":
+        """The turbine with the deck's ROSCO controller in the loop along the wind (``whirl campbell
+        --wind … --closed-loop``): each wind speed [m/s] trimmed where the controller settles, the
+        open-loop plant (multiblade average over ``azimuths``, azimuth dropped) closed by the controller
+        linearized there. ``without_speed_filter`` leaves the generator-speed low pass out.
+
+        Returns a :class:`ClosedLoop` of DataFrames with the CLI's files' columns and numbers:
+        ``modes`` (closed_loop_modes.csv: every root, open and closed loop, eigenvalue [1/s],
+        controller share, unstable), ``margins`` (margins.csv: per wind speed and loop gain, phase and
+        delay margins, peak sensitivity; NaN where a loop does not act), ``campbell`` and
+        ``open_loop_campbell`` (the tracked lines, campbell.csv's columns).
+        Raises :class:`InputError` for a deck without ROSCO's controller.
+        """
+        t = _whirl.closed_loop(self._core, _floats(wind), azimuths, without_speed_filter, _progress(progress))
+        read = lambda text: pd.read_csv(io.StringIO(text), keep_default_na=False, na_values=["nan"])
+        return ClosedLoop(read(t["modes"]), read(t["margins"]), read(t["campbell"]), read(t["open_loop_campbell"]))
 
     def export(self, rpm: Union[None, float, Iterable[float]] = None, wind: Union[None, float, Iterable[float]] = None,
                schedule: Union[None, str, os.PathLike, pd.DataFrame] = None, azimuths: int = 36,

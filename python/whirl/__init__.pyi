@@ -72,6 +72,14 @@ class CampbellTable(pd.DataFrame):
 class BodeTable(pd.DataFrame):
     def plot(self, ax: Any = ...) -> Any: ...
 
+class ClosedLoop:
+    modes: pd.DataFrame
+    margins: pd.DataFrame
+    campbell: pd.DataFrame
+    open_loop_campbell: pd.DataFrame
+    def __init__(self, modes: pd.DataFrame, margins: pd.DataFrame, campbell: pd.DataFrame,
+                 open_loop_campbell: pd.DataFrame) -> None: ...
+
 class Model:
     name: str
     source: str
@@ -92,6 +100,8 @@ class Model:
                  schedule: Union[None, str, os.PathLike, pd.DataFrame] = ..., azimuths: int = ...,
                  progress: Union[None, bool, Callable[[int, int], Any]] = ..., participations: bool = ...,
                  allow_invalid_point: bool = ...) -> CampbellTable: ...
+    def closed_loop(self, wind: Iterable[float], azimuths: int = ..., without_speed_filter: bool = ...,
+                    progress: Union[None, bool, Callable[[int, int], Any]] = ...) -> ClosedLoop: ...
     def export(self, rpm: Union[None, float, Iterable[float]] = ..., wind: Union[None, float, Iterable[float]] = ...,
                schedule: Union[None, str, os.PathLike, pd.DataFrame] = ..., azimuths: int = ...,
                inputs: Sequence[str] = ..., outputs: Sequence[str] = ..., drop_azimuth: bool = ...,

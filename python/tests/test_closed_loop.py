@@ -1,0 +1,30 @@
+"""Model.closed_loop against `whirl campbell --closed-loop` (issue 43 from Python, issue 44): the same
+tables to the last digit, and the errors with the CLI's text."""
+import pandas as pd
+import pytest
+
+import whirl
+
+from conftest import case, cli, cli_error
+
+DECK = case("nrel5mw", "Main_ROSCO.fst")
+
+
+def test_closed_loop_equals_the_cli(tmp_path):
+    result = whirl.load(DECK).closed_loop(wind=[10, 14], azimuths=6)
+    code, _, err = cli("campbell", DECK, "--wind", "10:4:14", "--azimuths", 6, "--closed-loop", "--no-plot", "--out", tmp_path)
+    assert code == 0, err
+    read = lambda name: pd.read_csv(tmp_path / name, keep_default_na=False, na_values=["nan"])
+    pd.testing.assert_frame_equal(result.modes, read("closed_loop_modes.csv"), check_exact=True)
+    pd.testing.assert_frame_equal(result.margins, read("margins.csv"), check_exact=True)
+    pd.testing.assert_frame_equal(result.campbell, read("campbell.csv"), check_exact=True)
+    pd.testing.assert_frame_equal(result.open_loop_campbell, read("open_loop_campbell.csv"), check_exact=True)
+    # 10 m/s: the torque PI acts, the pitch loop does not (NaN margins); 14 m/s: the pitch loop acts.
+    assert result.margins["pitch_gain_margin"].isna().tolist() == [True, False]
+    assert result.margins["stable"].tolist() == [1, 1]
+    assert "controller: pitch PI integral" not in set(result.modes["mode"])
+
+
+def test_closed_loop_needs_roscos_controller():
+    with pytest.raises(whirl.InputError, match="closed_loop needs ROSCO's controller"):
+        whirl.load(case("nrel5mw", "Main_Aero.fst")).closed_loop(wind=[12])
