@@ -47,10 +47,9 @@ void run(const BodeOptions& opt) {
   OperatingCondition c = operatingCondition(m, opt.model);
   std::string where;
   // Trimmed with the deck's ROSCO controller when it has one (docs/user/controller.md).
-  const std::optional<RoscoController> controller = io::readDeckController(opt.model.case_path, opt.model.sets);
-  if (opt.closed_loop && (!opt.wind || !controller))
-    throw InputError(opt.model.case_path + ": bode --closed-loop needs --wind and ROSCO's controller (ServoDyn with "
-                     "VSContrl = 5 and DLL_InFile naming its DISCON.IN)");
+  if (opt.closed_loop && !opt.wind) throw InputError("bode: --closed-loop needs --wind");
+  const std::optional<RoscoController> controller =
+      opt.closed_loop ? closedLoopController(opt.model) : io::readDeckController(opt.model.case_path, opt.model.sets);
   if (opt.without_speed_filter && !opt.closed_loop) throw InputError("bode: --without-speed-filter goes with --closed-loop");
   std::optional<SteadyState> steady;
   if (opt.wind) {

@@ -44,11 +44,7 @@ void runClosedLoop(const CampbellOptions& opt) {
   if (!opt.formats.empty() || !opt.schedule.empty() || !opt.rpm_range.empty())
     throw InputError("campbell: --closed-loop goes with --wind alone, without --rpm, --schedule or --format");
   const Model m = loadModel(opt.model);
-  const std::optional<RoscoController> controller = io::readDeckController(opt.model.case_path, opt.model.sets);
-  if (!controller)
-    throw InputError(opt.model.case_path +
-                     ": --closed-loop needs ROSCO's controller: ServoDyn with VSContrl = 5 and DLL_InFile naming its "
-                     "DISCON.IN (docs/user/controller.md)");
+  const std::optional<RoscoController> controller = closedLoopController(opt.model);
   for (const std::string& n : controller->notes) std::fprintf(stderr, "whirl: note: %s\n", n.c_str());
   for (const std::string& n : linearRoscoNotes(*controller))
     std::fprintf(stderr, "whirl: note: %s: linear model: %s\n", controller->file.c_str(), n.c_str());

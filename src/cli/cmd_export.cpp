@@ -40,11 +40,7 @@ std::vector<ExportPoint> closedLoopPoints(const Model& base, const CliOptions& o
     throw InputError("export: --closed-loop writes --format mat or json (a .lin file holds OpenFAST's open-loop plant)");
   if (!opt.inputs.empty() || !opt.outputs.empty())
     throw InputError("export: --closed-loop keeps every input and output (--inputs/--outputs select the open-loop plant's)");
-  const std::optional<RoscoController> controller = io::readDeckController(opt.model.case_path, opt.model.sets);
-  if (!controller)
-    throw InputError(opt.model.case_path +
-                     ": --closed-loop needs ROSCO's controller: ServoDyn with VSContrl = 5 and DLL_InFile naming its "
-                     "DISCON.IN (docs/user/controller.md)");
+  const std::optional<RoscoController> controller = closedLoopController(opt.model);
   TrimOptions trim;
   trim.controller = &*controller;
   ClosedLoopOptions clo;

@@ -65,10 +65,7 @@ void run(const SimulateOptions& opt) {
   if (opt.wind) {
     // The trimmed steady state (with the deck's ROSCO controller when it names one), rotor free.
     if (opt.model.rpm || opt.equilibrium) throw InputError("simulate: --wind starts at the trimmed state: not with --rpm or --equilibrium");
-    controller = io::readDeckController(opt.model.case_path, opt.model.sets);
-    if (opt.closed_loop && !controller)
-      throw InputError(opt.model.case_path + ": --closed-loop needs ROSCO's controller: ServoDyn with VSContrl = 5 and "
-                       "DLL_InFile naming its DISCON.IN");
+    controller = opt.closed_loop ? closedLoopController(opt.model) : io::readDeckController(opt.model.case_path, opt.model.sets);
     TrimOptions trim;
     if (controller) trim.controller = &*controller;
     steady = trimAtWindSpeed(m, *opt.wind, trim);

@@ -14,6 +14,7 @@
 
 #include "linearize/load_jump.hpp"
 #include "linearize/point_validity.hpp"
+#include "src/io/discon_input.hpp"
 #include "src/model/error.hpp"
 #include "src/model/text.hpp"
 #include "src/parallel/session.hpp"
@@ -167,6 +168,15 @@ void noteHiddenFirstOrderLines(const CampbellDiagram& d, const CampbellPlotOptio
                  "whirl: note: %zu lines carried by first-order states (e.g. '%s': roots of HydroDyn's radiation "
                  "fit) are in the tables, not drawn; --first-order-lines draws them\n",
                  hidden, withoutControlCharacters(example).c_str());
+}
+
+RoscoController closedLoopController(const ModelOptions& opt) {
+  std::optional<RoscoController> c = io::readDeckController(opt.case_path, opt.sets);
+  if (!c)
+    throw InputError(opt.case_path +
+                     ": --closed-loop needs ROSCO's controller: ServoDyn with VSContrl = 5 and DLL_InFile naming its "
+                     "DISCON.IN (docs/user/controller.md)");
+  return std::move(*c);
 }
 
 }  // namespace whirl::cli

@@ -9,6 +9,7 @@
 
 #include "linearize/operating_point.hpp"
 #include "src/model/model.hpp"
+#include "src/model/rosco_controller.hpp"
 #include "src/model/operating_condition.hpp"
 #include "src/writers/campbell_output.hpp"
 
@@ -65,6 +66,10 @@ OperatingPoint startPoint(const Model& model, const ModelOptions& opt);
 /// (under mpirun: rank 0's share, "on rank 0 of K"). Only when stderr is a terminal; sweeps shorter
 /// than a second stay quiet; the clock starts when this is called.
 std::function<void(int, int)> sweepProgress(const std::string& command);
+
+/// The deck's ROSCO controller for a `--closed-loop` command (io::readDeckController with --set).
+/// \throws InputError "CASE: --closed-loop needs ROSCO's controller: …" when the deck names none.
+RoscoController closedLoopController(const ModelOptions& opt);
 
 /// reports/<case file stem>, the default output folder of a case.
 std::string defaultOutputFolder(const std::string& case_path);
