@@ -58,4 +58,15 @@ std::optional<std::string> invalidMotion(const Model& m, const Simulation& sim) 
   return std::nullopt;
 }
 
+WindStart windStart(const Model& m, double wind, const RoscoController* controller) {
+  TrimOptions trim;
+  trim.controller = controller;
+  WindStart w;
+  w.steady = trimAtWindSpeed(m, wind, trim);
+  OperatingCondition cond = w.steady.condition;
+  cond.generator_torque = w.steady.generator_torque;
+  w.start = solveOperatingPoint(m, initialPoint(m, cond));
+  return w;
+}
+
 }  // namespace whirl

@@ -8,6 +8,7 @@
 
 #include "linearize/operating_point.hpp"
 #include "linearize/simulate.hpp"
+#include "linearize/trim.hpp"
 
 namespace whirl {
 
@@ -22,6 +23,15 @@ int simulationInput(const Model& m, const std::string& name, const std::string& 
 
 /// Index of the active coordinate `name` a signal drives. \throws InputError "key: 'NAME': no such active coordinate"
 int drivenCoordinate(const Model& m, const std::string& name, const std::string& key);
+
+/// Where a simulation at wind speed `wind` [m/s] starts: the steady state trimmed there (with
+/// `controller` when given, ROSCO's), and the equilibrium at azimuth 0 under its condition and generator
+/// torque (`whirl simulate --wind`, Model.simulate(wind=…)); the rotor is to be free.
+struct WindStart {
+  SteadyState steady;
+  OperatingPoint start;
+};
+WindStart windStart(const Model& m, double wind, const RoscoController* controller);
 
 /// The first recorded instant outside the model's range of validity (deflections, slopes; only the
 /// geometry is checked), as "t = … s: the motion leaves the model's range of validity: <problem>";

@@ -10,6 +10,7 @@
 #include <algorithm>
 
 #include "linearize/point_validity.hpp"
+#include "linearize/rosco_step.hpp"
 #include "linearize/simulate.hpp"
 #include "linearize/simulation_setup.hpp"
 #include "python/src/bindings.hpp"
@@ -47,7 +48,8 @@ py::tuple simulateModel(const PyModel& p, double tmax, std::optional<double> rpm
                         const std::vector<std::pair<std::string, std::string>>& drives, bool free_rotor,
                         bool equilibrium, double rtol, double atol, bool allow_invalid_point,
                         const std::optional<std::string>& out, const std::vector<std::string>& plot_channels,
-                        bool plot, const py::object& progress) {
+                        bool plot, const py::object& progress, std::optional<double> wind, bool closed_loop,
+                        double controller_dt) {
   const Model& m = *p.model;
   if (!(tmax > 0)) throw InputError("tmax: simulated time must be positive [s]");
   requireActiveDof(m, m.name);
@@ -58,7 +60,22 @@ py::tuple simulateModel(const PyModel& p, double tmax, std::optional<double> rpm
   so.dt_out = dt_out;
   so.rtol = rtol;
   so.atol = atol;
-  if (!free_rotor) so.prescribed = m.roles.azimuth;
+  if (!free_rotor && !wind) so.prescribed = m.roles.azimuth;
+  // wind=: the trimmed start of `whirl simulate --wind` (with the deck's ROSCO controller), closed_loop=:
+  // that controller in the loop (linearize/rosco_step.hpp).
+  if (closed_loop && !wind) throw InputError("closed_loop: needs wind= (it starts where ROSCO settles)");
+  if (wind) {
+    if (rpm || equilibrium) throw InputError("wind: starts at the trimmed state: not with rpm= or equilibrium=");
+    const std::optional<RoscoController> controller = deckController(p);
+    if (closed_loop && !controller)
+      throw InputError(p.source + ": closed_loop needs ROSCO's controller: ServoDyn with VSContrl = 5 and DLL_InFile "
+                       "naming its DISCON.IN (docs/user/controller.md)");
+    if (!(controller_dt > 0)) throw InputError("controller_dt: must be > 0 [s]");
+    const WindStart w = windStart(m, *wind, controller ? &*controller : nullptr);
+    start = w.start;
+    checkValidity(p, m, {start}, "", allow_invalid_point);
+    if (closed_loop) so.controller = roscoInTheLoop(m, *controller, w.steady, controller_dt, start);
+  }
   for (const auto& [name, signal] : inputs)
     so.inputs.push_back({simulationInput(m, name, "inputs"), parseTimeSignal(signal, "inputs " + name)});
   for (const auto& [name, signal] : drives) {
@@ -132,7 +149,8 @@ void bindSimulate(py::module_& m) {
         py::arg("equilibrium") = false, py::arg("rtol") = 1e-6, py::arg("atol") = 1e-8,
         py::arg("allow_invalid_point") = false, py::arg("out") = py::none(),
         py::arg("plot_channels") = std::vector<std::string>{}, py::arg("plot") = true,
-        py::arg("progress") = py::none());
+        py::arg("progress") = py::none(), py::arg("wind") = py::none(), py::arg("closed_loop") = false,
+        py::arg("controller_dt") = 0.01);
 }
 
 }  // namespace whirl::python

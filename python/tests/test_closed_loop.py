@@ -1,5 +1,6 @@
 """Model.closed_loop against `whirl campbell --closed-loop` (issue 43 from Python, issue 44): the same
 tables to the last digit, and the errors with the CLI's text."""
+import numpy as np
 import pandas as pd
 import pytest
 
@@ -14,7 +15,7 @@ def test_closed_loop_equals_the_cli(tmp_path):
     result = whirl.load(DECK).closed_loop(wind=[10, 14], azimuths=6)
     code, _, err = cli("campbell", DECK, "--wind", "10:4:14", "--azimuths", 6, "--closed-loop", "--no-plot", "--out", tmp_path)
     assert code == 0, err
-    read = lambda name: pd.read_csv(tmp_path / name, keep_default_na=False, na_values=["nan"])
+    read = lambda name: pd.read_csv(tmp_path / name, keep_default_na=False, na_values=["nan"], float_precision="round_trip")
     pd.testing.assert_frame_equal(result.modes, read("closed_loop_modes.csv"), check_exact=True)
     pd.testing.assert_frame_equal(result.margins, read("margins.csv"), check_exact=True)
     pd.testing.assert_frame_equal(result.campbell, read("campbell.csv"), check_exact=True)
@@ -28,3 +29,17 @@ def test_closed_loop_equals_the_cli(tmp_path):
 def test_closed_loop_needs_roscos_controller():
     with pytest.raises(whirl.InputError, match="closed_loop needs ROSCO's controller"):
         whirl.load(case("nrel5mw", "Main_Aero.fst")).closed_loop(wind=[12])
+
+
+def test_simulate_with_rosco_equals_the_cli(tmp_path):
+    table = whirl.load(DECK).simulate(tmax=3, wind=14, closed_loop=True, inputs={"wind speed": "step(1,0.2)"},
+                                      plot=False)
+    code, _, err = cli("simulate", DECK, "--wind", 14, "--closed-loop", "--tmax", 3, "--input", "wind speed=step(1,0.2)",
+                       "--no-plot", "--out", tmp_path)
+    assert code == 0, err
+    ref = pd.read_csv(tmp_path / "timeseries.csv", index_col=0, float_precision="round_trip")
+    np.testing.assert_array_equal(table.index.to_numpy(), ref.index.to_numpy())
+    np.testing.assert_array_equal(table.to_numpy(), ref.to_numpy())  # the same bits
+    assert table["GenSpeed [rad/s]"].iloc[-1] > table["GenSpeed [rad/s]"].iloc[0]  # the step speeds it up first
+    with pytest.raises(whirl.InputError, match="closed_loop: needs wind="):
+        whirl.load(DECK).simulate(tmax=1, closed_loop=True)

@@ -323,7 +323,8 @@ class Model:
         Raises :class:`InputError` for a deck without ROSCO's controller.
         """
         t = _whirl.closed_loop(self._core, _floats(wind), azimuths, without_speed_filter, _progress(progress))
-        read = lambda text: pd.read_csv(io.StringIO(text), keep_default_na=False, na_values=["nan"])
+        read = lambda text: pd.read_csv(io.StringIO(text), keep_default_na=False, na_values=["nan"],
+                                        float_precision="round_trip")
         return ClosedLoop(read(t["modes"]), read(t["margins"]), read(t["campbell"]), read(t["open_loop_campbell"]))
 
     def export(self, rpm: Union[None, float, Iterable[float]] = None, wind: Union[None, float, Iterable[float]] = None,
@@ -384,7 +385,8 @@ class Model:
                  drives: Optional[Mapping[str, str]] = None, free_rotor: bool = False, equilibrium: bool = False,
                  rtol: float = 1e-6, atol: float = 1e-8, out: Union[None, str, os.PathLike] = None,
                  plot: Union[bool, Sequence[str]] = True, progress: Optional[Callable[[float, float], Any]] = None,
-                 allow_invalid_point: bool = False) -> pd.DataFrame:
+                 allow_invalid_point: bool = False, wind: Optional[float] = None, closed_loop: bool = False,
+                 controller_dt: float = 0.01) -> pd.DataFrame:
         """Integrate the nonlinear equations in time (``whirl simulate``: SUNDIALS IDA, AD Jacobians).
 
         Starts from the model's initial point (at ``rpm`` [rpm] when given), or its equilibrium
@@ -404,12 +406,16 @@ class Model:
         timeseries.gp (and the images when ``plot`` and Gnuplot is installed; a list of column names
         for ``plot`` chooses the panels). ``progress(t, tmax)`` is called after each recorded instant;
         Ctrl-C stops the integration there (KeyboardInterrupt).
+
+        ``wind`` [m/s]: start at the steady state trimmed there (with the deck's ROSCO controller when
+        it names one), the rotor free (``--wind``); ``closed_loop``: ROSCO's controller in the loop,
+        setting generator torque and collective pitch every ``controller_dt`` [s] (``--closed-loop``).
         """
         channels = [] if isinstance(plot, bool) else list(plot)
         names, values, stats, warning = _whirl.simulate(
             self._core, float(tmax), rpm, dt_out, [(k, float(v)) for k, v in (init or {}).items()],
             list((inputs or {}).items()), list((drives or {}).items()), free_rotor, equilibrium, rtol, atol,
-            allow_invalid_point, _folder(out), channels, bool(plot), progress)
+            allow_invalid_point, _folder(out), channels, bool(plot), progress, wind, closed_loop, controller_dt)
         table = pd.DataFrame(np.asarray(values)[:, 1:], index=pd.Index(np.asarray(values)[:, 0], name=names[0]),
                              columns=names[1:])
         table.attrs.update(dict(stats))

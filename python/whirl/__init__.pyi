@@ -117,7 +117,8 @@ class Model:
                  drives: Optional[Mapping[str, str]] = ..., free_rotor: bool = ..., equilibrium: bool = ...,
                  rtol: float = ..., atol: float = ..., out: Union[None, str, os.PathLike] = ...,
                  plot: Union[bool, Sequence[str]] = ..., progress: Optional[Callable[[float, float], Any]] = ...,
-                 allow_invalid_point: bool = ...) -> pd.DataFrame: ...
+                 allow_invalid_point: bool = ..., wind: Optional[float] = ...,
+                 closed_loop: bool = ..., controller_dt: float = ...) -> pd.DataFrame: ...
 
 def load(path: Union[str, os.PathLike, Mapping[str, Any]], set: Optional[Mapping[str, Any]] = ...,
          allow_outside_files: bool = ...) -> Model: ...

@@ -66,12 +66,9 @@ void run(const SimulateOptions& opt) {
     // The trimmed steady state (with the deck's ROSCO controller when it names one), rotor free.
     if (opt.model.rpm || opt.equilibrium) throw InputError("simulate: --wind starts at the trimmed state: not with --rpm or --equilibrium");
     controller = opt.closed_loop ? closedLoopController(opt.model) : io::readDeckController(opt.model.case_path, opt.model.sets);
-    TrimOptions trim;
-    if (controller) trim.controller = &*controller;
-    steady = trimAtWindSpeed(m, *opt.wind, trim);
-    OperatingCondition cond = steady->condition;
-    cond.generator_torque = steady->generator_torque;
-    start = solveOperatingPoint(m, initialPoint(m, cond));
+    const WindStart w = windStart(m, *opt.wind, controller ? &*controller : nullptr);
+    steady = w.steady;
+    start = w.start;
     checkSolvedPoints(opt.model, m, {start});
   }
   if (opt.equilibrium) {
