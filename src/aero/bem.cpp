@@ -584,7 +584,7 @@ InflowRoot findInflowRoot(const BemStation& s, double Vx, double Vy, const BemOp
     // hold a pair of valid roots between ends of one sign, which AeroDyn's search passes over (to the
     // geometric angle when no other bracket holds a valid root) and the secant steps would reach.
     // Where the bracket holds several roots and its ends change sign, the hint can still reach another
-    // root than Brent's (README, Aerodynamics).
+    // root than Brent's (docs/theory/aerodynamics.md).
     const double first_lo = std::min(regions[0][0], regions[0][1]), first_hi = std::max(regions[0][0], regions[0][1]);
     const bool reversed = Vx > 0 && Vy < 0;
     if (phi_hint && !reversed && *phi_hint > first_lo && *phi_hint < first_hi) {

@@ -192,7 +192,7 @@ void addCampbellCommand(CLI::App& app) {
   cmd->add_option("--azimuths", opt->azimuths, "azimuths per revolution for the multiblade average")
       ->check(CLI::Range(1, 3600));
   cmd->add_option("--out", opt->out, "output folder (default reports/<case name>)");
-  cmd->add_option("--tracking", opt->tracking, "mode-tracking overrides file (rename, assign; see README)");
+  cmd->add_option("--tracking", opt->tracking, "mode-tracking overrides file (rename, assign; docs/theory/mode-tracking.md)");
   cmd->add_option("--versus", opt->versus, "x axis: rpm, wind or auto (wind with --schedule or --wind)")
       ->check(CLI::IsMember({"rpm", "wind", "auto"}));
   cmd->add_option("--max-freq", opt->max_freq, "top of the frequency axis [Hz] (default: automatic)");
