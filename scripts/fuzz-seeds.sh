@@ -41,6 +41,9 @@ add fuzz_schedule cases/nrel5mw/NREL5MW_Oper.csv tests/mpi/*.csv fuzz/seeds/sche
 add fuzz_compare cases/*/table9_1.csv cases/*/reference.csv fuzz/seeds/compare/*
 add fuzz_tracking fuzz/seeds/tracking/*
 add fuzz_rotor_performance tests/data/rosco/Cp_Ct_Cq.NREL5MW.txt
+# The FuzzedDataProvider harnesses decode any bytes: the small cases give their YAML-case path text to start from.
+for h in fuzz_cli fuzz_study fuzz_simulate; do add $h cases/landbased_2dof/*.yaml cases/flex_4dof/*.yaml cases/tower_topmass/tower_topmass.yaml; done
+add fuzz_writers cases/*/reference.csv
 for h in aerodyn ad_blade airfoil inflowwind; do cp -r "$out/fuzz_$h" "$out/fuzz_read_$h"; done
 cp -r "$out/fuzz_servodyn_aero" "$out/fuzz_read_servodyn"
 for h in case_yaml fst elastodyn ed_tower ed_blade; do cp -r "$out/fuzz_$h" "$out/fuzz_read_$h"; done

@@ -44,20 +44,7 @@ int main(int argc, char** argv) {
       "PETSc/SLEPc options (-eps_*, -pep_*, -st_*, -mat_mumps_*, …) go after a lone `--` or in --petsc \"…\", "
       "e.g. whirl modes CASE --solver sparse -- -eps_tol 1e-10. Under `mpirun -n K`, `campbell`, `study` and "
       "`export` spread their operating points over the K ranks; rank 0 writes the output.");
-  whirl::cli::addLinearizeCommand(app);
-  whirl::cli::addModesCommand(app);
-  whirl::cli::addCampbellCommand(app);
-  whirl::cli::addLinCommand(app);
-  whirl::cli::addCompareCommand(app);
-  whirl::cli::addExportCommand(app);
-  whirl::cli::addStudyCommand(app);
-  whirl::cli::addShapesCommand(app);
-  whirl::cli::addSteadyCommand(app);
-  whirl::cli::addBodeCommand(app);
-  whirl::cli::addSimulateCommand(app);
-  whirl::cli::addVerifyCommand(app);
-  whirl::cli::addReportCommand(app);
-  whirl::cli::addTuneCommand(app);
+  whirl::cli::addCommands(app);
   std::vector<char*> cargv;
   for (auto& a : args) cargv.push_back(a.data());
   cargv.push_back(nullptr);

@@ -19,8 +19,10 @@ constexpr const char* kColours[] = {"#0072b2", "#d55e00", "#009e73", "#cc79a7", 
                                     "#56b4e9", "#000000", "#8b1a1a", "#6a3d9a", "#b8a000"};
 constexpr int kPointTypes[] = {7, 5, 9, 13, 11, 6, 4, 8, 12};
 
-/// Smallest number with two significant digits ≥ v (v > 0).
+/// Smallest number with two significant digits ≥ v (v > 0). A v past 1e300 (1.05 × a frequency near
+/// DBL_MAX is inf) is returned as is: its exponent cast to int was undefined (UBSan; fuzz_writers).
 double niceCeil(double v) {
+  if (!(v > 0 && v < 1e300)) return v;
   const int e = static_cast<int>(std::floor(std::log10(v))) - 1;
   const double scale = std::pow(10.0, std::abs(e));  // exact for the exponents met here
   return e < 0 ? std::ceil(v * scale - 1e-9) / scale : std::ceil(v / scale - 1e-9) * scale;

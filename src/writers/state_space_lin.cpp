@@ -118,16 +118,18 @@ StateSpaceModel inFileUnits(const StateSpaceModel& m, std::vector<std::string>& 
   for (size_t j = 0; j < order.size(); ++j) {
     const auto c = static_cast<Eigen::Index>(j), from = static_cast<Eigen::Index>(order[j]);
     f.u[j] = m.u[order[j]];
-    f.B.col(c) = m.B.col(from);
-    f.D.col(c) = m.D.col(from);
+    // Blocks of an empty matrix offset Eigen's null data pointer (UBSan; fuzz_writers): a model
+    // without states has a 0 × nu B, one without outputs a 0 × nu D.
+    if (f.B.rows() > 0) f.B.col(c) = m.B.col(from);
+    if (f.D.rows() > 0) f.D.col(c) = m.D.col(from);
     ud.push_back(linInputDescription(f.u[j]));
   }
   for (size_t i = 0; i < m.y.size(); ++i) {
     const double scale = linOutputChannel(m.y[i]).scale;
     const auto r = static_cast<Eigen::Index>(i);
     f.y[i].op *= scale;
-    f.C.row(r) *= scale;
-    f.D.row(r) *= scale;
+    if (f.C.cols() > 0) f.C.row(r) *= scale;
+    if (f.D.cols() > 0) f.D.row(r) *= scale;
     yd.push_back(linOutputDescription(m.y[i]));
   }
   return f;

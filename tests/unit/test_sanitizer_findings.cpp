@@ -15,6 +15,8 @@
 #include "src/io/openfast_lin.hpp"
 #include "src/model/error.hpp"
 #include "src/turbine/elastodyn_model.hpp"
+#include "src/writers/campbell_output.hpp"
+#include "src/writers/state_space_files.hpp"
 #include "test_util.hpp"
 
 namespace whirl {
@@ -43,6 +45,42 @@ TEST(SanitizerFindings, SimulateModelWithoutInputs) {
   EXPECT_EQ(sim.time.size(), 6u);
   EXPECT_EQ(sim.u.cols(), 0);
   EXPECT_EQ(sim.q.rows(), 6);
+}
+
+// fuzz_writers: the .lin of a model with inputs and outputs but no states reordered the inputs of its
+// 0 × nu B and scaled the rows of its ny × 0 C, blocks that offset Eigen's null data pointer
+// (UBSan: pointer-overflow; fails only under -DWHIRL_SANITIZE=ON).
+TEST(SanitizerFindings, LinFileOfAModelWithoutStates) {
+  StateSpaceModel m;
+  m.u = {{"generator torque", "N m", 1.0, -1, -1, false}, {"wind speed", "m/s", 8.0, -1, -1, false}};
+  m.y = {{"GenSpeed", "rad/s", 1.0, -1, -1, false}, {"RtAeroFxh", "N", 2.0, -1, -1, false}};
+  m.xdot_op = VecX::Zero(0);
+  m.A = MatX::Zero(0, 0);
+  m.B = MatX::Zero(0, 2);
+  m.C = MatX::Zero(2, 0);
+  m.D = MatX::Ones(2, 2);
+  const std::string text = linFileText(m, "no states");
+  EXPECT_NE(text.find("B: 0 x 2\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("C: 2 x 0\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("D: 2 x 2\n"), std::string::npos) << text;
+}
+
+// fuzz_writers: a Campbell line at 1.75e308 Hz made the frequency axis 1.05 × 1.75e308 = inf, whose
+// log10 was cast to int (UBSan: float-cast-overflow; fails only under -DWHIRL_SANITIZE=ON).
+TEST(SanitizerFindings, CampbellScriptOfAHugeFrequency) {
+  CampbellDiagram d;
+  CampbellPoint p;
+  p.rpm = 5;
+  p.coordinates = {"q"};
+  Mode m;
+  m.freq_hz = 1.75e308;  // 1.05 × this is inf
+  m.shape = Eigen::VectorXcd::Ones(1);
+  m.participation = VecX::Ones(1);
+  p.modes = {m};
+  d.points = {p};
+  d.lines = {{"q", {0}}};
+  const std::string gp = campbellGnuplotScript(d);
+  EXPECT_NE(gp.find("fmax = inf"), std::string::npos) << gp;
 }
 
 // The NREL 5MW .lin at 9 rpm of tests/data with one line replaced.
