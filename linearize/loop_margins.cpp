@@ -100,6 +100,20 @@ class ModalSensitivity {
     lambda_ = es.eigenvalues();
     right_ = lu.solve(s.b.cast<cd>());
     left_ = V.transpose() * s.c.cast<cd>();
+    check(opt);
+  }
+  /// From right and left eigenvectors: V⁻¹ b has the entries (u_iᴴ b)/(u_iᴴ v_i).
+  ModalSensitivity(const LoopSensitivity& s, const ModalBasis& basis, const MarginOptions& opt) : s_(s) {
+    if (basis.values.size() != s.A.rows() || basis.right.rows() != s.A.rows() || basis.left.rows() != s.A.rows()) return;
+    lambda_ = basis.values;
+    right_ = Eigen::VectorXcd(lambda_.size());
+    for (Eigen::Index i = 0; i < lambda_.size(); ++i)
+      right_(i) = basis.left.col(i).dot(s.b.cast<cd>()) / basis.left.col(i).dot(basis.right.col(i));
+    left_ = basis.right.transpose() * s.c.cast<cd>();
+    check(opt);
+  }
+  void check(const MarginOptions& opt) {
+    const LoopSensitivity& s = s_;
     if (!right_.allFinite() || !left_.allFinite()) return;
     modal_ = true;
     for (int k = 0; k <= 2 && modal_; ++k) {
@@ -109,7 +123,7 @@ class ModalSensitivity {
     }
     if (!modal_) return;
     for (Eigen::Index i = 0; i < lambda_.size() && modal_; ++i) {
-      const double w = std::abs(lambda_(i).imag());  // next to each resonance, where cancellation is worst
+      const double w = lambda_(i).imag();  // next to each resonance (one of a pair), where cancellation is worst
       if (w < opt.min_frequency || w > opt.max_frequency) continue;
       const cd exact = sensitivityAt(s, w);
       modal_ = std::abs((*this)(w) - exact) <= kModalTolerance * std::max(1.0, std::abs(exact));
@@ -132,6 +146,11 @@ class ModalSensitivity {
 
 LoopMargins loopMargins(const LoopSensitivity& s, const MarginOptions& opt) {
   const ModalSensitivity S(s, opt);
+  return loopMargins([&](double w) { return S(w); }, opt);
+}
+
+LoopMargins loopMargins(const LoopSensitivity& s, const ModalBasis& basis, const MarginOptions& opt) {
+  const ModalSensitivity S(s, basis, opt);
   return loopMargins([&](double w) { return S(w); }, opt);
 }
 

@@ -40,4 +40,13 @@ LoopMargins loopMargins(const std::function<std::complex<double>(double)>& sensi
 /// The margins of a loop sensitivity.
 LoopMargins loopMargins(const LoopSensitivity& s, const MarginOptions& opt = {});
 
+/// An eigendecomposition of the loop's state matrix already at hand (the closed loop's, whose modes
+/// are named anyway): eigenvalues, right and left eigenvectors (columns, any scaling).
+struct ModalBasis {
+  Eigen::VectorXcd values;
+  Eigen::MatrixXcd right, left;
+};
+/// As above, the sensitivity evaluated from `basis` (checked against the LU as without it).
+LoopMargins loopMargins(const LoopSensitivity& s, const ModalBasis& basis, const MarginOptions& opt = {});
+
 }  // namespace whirl

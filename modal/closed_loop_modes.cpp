@@ -51,7 +51,11 @@ std::string whirlName(const std::string& name, const StateSpaceModel& s, const E
 }  // namespace
 
 std::vector<ClosedLoopMode> namedModes(const StateSpaceModel& s, bool has_pitch_loop, double rotor_speed) {
-  const EigenDecomposition e = eigenStandard(s.A, true);
+  return namedModes(s, eigenStandard(s.A, true), has_pitch_loop, rotor_speed);
+}
+
+std::vector<ClosedLoopMode> namedModes(const StateSpaceModel& s, const EigenDecomposition& e, bool has_pitch_loop,
+                                       double rotor_speed) {
   const Eigen::Index n = e.values.size();
   std::vector<ClosedLoopMode> modes;
   for (Eigen::Index j = 0; j < n; ++j) {
@@ -106,7 +110,11 @@ ClosedLoopPoint closedLoopPoint(const Model& model, const SteadyState& steady, c
   p.plant = exportOperatingPoint(plant_model, c, eo).model;
   p.closed = closeLoop(p.plant, controller, opt.ports);
   p.open_modes = namedModes(p.plant, false, c.rotor_speed);
-  p.closed_modes = namedModes(p.closed, controller.pitch_active, c.rotor_speed);
+  // One decomposition of the closed loop's A for its modes and both loops' margins (the broken loops'
+  // sensitivities share it).
+  const EigenDecomposition e = eigenStandard(p.closed.A, true);
+  const ModalBasis basis{e.values, e.vectors, e.left};
+  p.closed_modes = namedModes(p.closed, e, controller.pitch_active, c.rotor_speed);
   p.least_damping = 1;
   for (const ClosedLoopMode& m : p.closed_modes) {
     if (m.eigenvalue.real() >= 0) p.stable = false;
@@ -114,9 +122,10 @@ ClosedLoopPoint closedLoopPoint(const Model& model, const SteadyState& steady, c
   }
   const double nan = std::numeric_limits<double>::quiet_NaN();
   p.pitch = p.torque = LoopMargins{nan, nan, nan, nan, nan, nan, nan};
-  if (controller.pitch_active) p.pitch = loopMargins(loopSensitivity(p.plant, controller, BrokenLoop::Pitch, opt.ports), opt.margins);
+  if (controller.pitch_active)
+    p.pitch = loopMargins(loopSensitivity(p.plant, controller, BrokenLoop::Pitch, opt.ports), basis, opt.margins);
   if (controller.torque != LinearController::Torque::Held)
-    p.torque = loopMargins(loopSensitivity(p.plant, controller, BrokenLoop::Torque, opt.ports), opt.margins);
+    p.torque = loopMargins(loopSensitivity(p.plant, controller, BrokenLoop::Torque, opt.ports), basis, opt.margins);
   return p;
 }
 

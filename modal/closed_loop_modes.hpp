@@ -59,5 +59,9 @@ ClosedLoopPoint closedLoopPoint(const Model& model, const SteadyState& steady, c
 /// pattern's cyclic modes are named backward or forward whirl (BW, FW) at `rotor_speed` [rad/s] (its
 /// sign the rotor's sense), cos or sin when parked (|Ω| < 0.01 rad/s).
 std::vector<ClosedLoopMode> namedModes(const StateSpaceModel& s, bool has_pitch_loop, double rotor_speed = 0);
+struct EigenDecomposition;
+/// As above from the decomposition of s.A with left eigenvectors (eigenStandard(s.A, true)).
+std::vector<ClosedLoopMode> namedModes(const StateSpaceModel& s, const EigenDecomposition& e, bool has_pitch_loop,
+                                       double rotor_speed);
 
 }  // namespace whirl
