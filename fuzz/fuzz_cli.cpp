@@ -45,10 +45,11 @@ struct Command {
   std::vector<Option> options;
 };
 
+// No 1 nm tower: valid, but so stiff that `simulate` needs 0.5 s to give up (IDA_TOO_MUCH_WORK), 8 s
+// under ASan, a libFuzzer timeout that is not a hang.
 const std::vector<const char*> kSetTemplates = {"gravity=0",
                                                 "gravity=-9.81",
                                                 "gravity=[0, 0, 1e9]",
-                                                "bodies.tower.length=1e-9",
                                                 "bodies.tower.length=0",
                                                 "bodies.0.mass=-1",
                                                 "name=x",

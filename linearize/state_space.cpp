@@ -149,6 +149,9 @@ std::vector<StateSpaceVariable> pick(const std::vector<StateSpaceVariable>& v, c
 
 MatX pickRows(const MatX& M, const std::vector<int>& idx) {
   MatX out(static_cast<Eigen::Index>(idx.size()), M.cols());
+  // A row of a matrix without columns (B of a model without inputs) offsets Eigen's null data
+  // pointer (UBSan; fuzz_cli: export --drop-azimuth of cases/floating_3dof).
+  if (M.cols() == 0) return out;
   for (size_t k = 0; k < idx.size(); ++k) out.row(k) = M.row(idx[k]);
   return out;
 }

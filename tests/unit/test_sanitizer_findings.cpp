@@ -10,6 +10,7 @@
 #include "linearize/linearize.hpp"
 #include "linearize/operating_point.hpp"
 #include "linearize/simulate.hpp"
+#include "linearize/state_space.hpp"
 #include "modal/mbc_lin.hpp"
 #include "src/io/case_file.hpp"
 #include "src/io/openfast_lin.hpp"
@@ -81,6 +82,28 @@ TEST(SanitizerFindings, CampbellScriptOfAHugeFrequency) {
   d.lines = {{"q", {0}}};
   const std::string gp = campbellGnuplotScript(d);
   EXPECT_NE(gp.find("fmax = inf"), std::string::npos) << gp;
+}
+
+// fuzz_cli (`export cases/floating_3dof/floating_3dof.yaml --format mat --drop-azimuth`): dropping the
+// azimuth of a model without inputs took rows of its nx × 0 B, offsets of Eigen's null data pointer
+// (UBSan: pointer-overflow; fails only under -DWHIRL_SANITIZE=ON).
+TEST(SanitizerFindings, DropAzimuthOfAModelWithoutInputs) {
+  StateSpaceModel m;
+  m.x = {{"azimuth", "rad", 0.0, -1, -1, true},
+         {"surge", "m", 0.0, -1, -1, false},
+         {"d(azimuth)/dt", "rad/s", 1.0, -1, 0, false},
+         {"d(surge)/dt", "m/s", 0.0, -1, 1, false}};
+  m.xdot_op = VecX::Zero(4);
+  m.A = MatX::Identity(4, 4);
+  m.B = MatX::Zero(4, 0);
+  m.C = MatX::Zero(0, 4);
+  m.D = MatX::Zero(0, 0);
+  const StateSpaceModel r = dropAzimuth(m);
+  EXPECT_EQ(r.x.size(), 3u);
+  EXPECT_EQ(r.A.rows(), 3);
+  EXPECT_EQ(r.B.rows(), 3);
+  EXPECT_EQ(r.B.cols(), 0);
+  EXPECT_EQ(r.C.cols(), 3);
 }
 
 // The NREL 5MW .lin at 9 rpm of tests/data with one line replaced.
