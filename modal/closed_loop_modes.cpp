@@ -105,9 +105,15 @@ ClosedLoopPoint closedLoopPoint(const Model& model, const SteadyState& steady, c
   eo.drop_azimuth = true;
   eo.frozen_wake = opt.frozen_wake;
   if (!steady.azimuth_q.empty()) eo.deflections = &steady.azimuth_q.front();
+  return closedLoopPoint(exportOperatingPoint(plant_model, c, eo).model, steady, controller, opt);
+}
+
+ClosedLoopPoint closedLoopPoint(const StateSpaceModel& plant, const SteadyState& steady,
+                                const LinearController& controller, const ClosedLoopOptions& opt) {
+  const OperatingCondition& c = steady.condition;
   ClosedLoopPoint p;
   p.steady = steady;
-  p.plant = exportOperatingPoint(plant_model, c, eo).model;
+  p.plant = plant;
   p.closed = closeLoop(p.plant, controller, opt.ports);
   p.open_modes = namedModes(p.plant, false, c.rotor_speed);
   // One decomposition of the closed loop's A for its modes and both loops' margins (the broken loops'

@@ -54,6 +54,10 @@ struct ClosedLoopOptions {
 /// One point: `controller` linearized at `steady` (gains scheduled at its pitch, region from it).
 ClosedLoopPoint closedLoopPoint(const Model& model, const SteadyState& steady, const LinearController& controller,
                                 const ClosedLoopOptions& opt = {});
+/// The same on an open-loop plant already linearized there (ClosedLoopPoint::plant of a previous call):
+/// only the closing, the modes and the margins.
+ClosedLoopPoint closedLoopPoint(const StateSpaceModel& plant, const SteadyState& steady,
+                                const LinearController& controller, const ClosedLoopOptions& opt = {});
 
 /// The modes of a state matrix named as above; `has_pitch_loop` names the rotor-speed mode; a blade
 /// pattern's cyclic modes are named backward or forward whirl (BW, FW) at `rotor_speed` [rad/s] (its

@@ -40,52 +40,54 @@ std::complex<double> nearestRoot(const StateSpaceModel& closed, std::complex<dou
   return best.imag() < 0 ? std::conj(best) : best;
 }
 
+/// The plant's options of both functions (the loop needs only the generator speed), after checking
+/// that there is one trimmed point per point of the schedule.
+ClosedLoopOptions plantOptions(const std::vector<SteadyState>& trimmed, const GainSchedule& g,
+                               const PlacementCheckOptions& opt) {
+  if (trimmed.size() != g.wind_speed.size())
+    throw InputError("placement: " + std::to_string(trimmed.size()) + " trimmed points for " +
+                     std::to_string(g.wind_speed.size()) + " points of the pitch schedule");
+  ClosedLoopOptions clo;
+  clo.azimuths = opt.azimuths;
+  clo.outputs = {clo.ports.speed_output};
+  return clo;
+}
+
+/// The check of one closed-loop point: its root nearest the target.
+PlacementCheck checkOf(const ClosedLoopPoint& p, double wind_speed, std::complex<double> target) {
+  PlacementCheck r;
+  r.wind_speed = wind_speed;
+  r.target = target;
+  r.stable = p.stable;
+  double best = std::numeric_limits<double>::infinity();
+  for (const ClosedLoopMode& m : p.closed_modes)
+    if (std::abs(m.eigenvalue - target) < best) {
+      best = std::abs(m.eigenvalue - target);
+      r.pole = m.eigenvalue;
+      r.omega = 2 * std::numbers::pi * m.freq_hz;
+      r.zeta = m.damping_ratio;
+    }
+  return r;
+}
+
 }  // namespace
 
 std::vector<PlacementCheck> checkPlacement(const Model& model, const std::vector<SteadyState>& trimmed,
                                            const GainSchedule& g, const TuningTurbine& t, const TuningGoals& goals,
                                            const PlacementCheckOptions& opt) {
-  if (trimmed.size() != g.wind_speed.size())
-    throw InputError("placement check: " + std::to_string(trimmed.size()) + " trimmed points for " +
-                     std::to_string(g.wind_speed.size()) + " points of the pitch schedule");
-  const std::complex<double> target = targetRoot(goals);
-  ClosedLoopOptions clo;
-  clo.azimuths = opt.azimuths;
-  clo.outputs = {clo.ports.speed_output};
+  const ClosedLoopOptions clo = plantOptions(trimmed, g, opt);
   std::vector<PlacementCheck> out;
   for (size_t k = 0; k < trimmed.size(); ++k) {
     const LinearController c = placedController(g.kp[k], g.ki[k], trimmed[k].generator_speed, t, goals, opt);
-    const ClosedLoopPoint p = closedLoopPoint(model, trimmed[k], c, clo);
-    PlacementCheck r;
-    r.wind_speed = g.wind_speed[k];
-    r.target = target;
-    r.stable = p.stable;
-    double best = std::numeric_limits<double>::infinity();
-    for (const ClosedLoopMode& m : p.closed_modes)
-      if (std::abs(m.eigenvalue - target) < best) {
-        best = std::abs(m.eigenvalue - target);
-        r.pole = m.eigenvalue;
-        r.omega = 2 * std::numbers::pi * m.freq_hz;
-        r.zeta = m.damping_ratio;
-      }
-    out.push_back(r);
+    out.push_back(checkOf(closedLoopPoint(model, trimmed[k], c, clo), g.wind_speed[k], targetRoot(goals)));
   }
   return out;
 }
 
-}  // namespace whirl
-
-namespace whirl {
-
 FullModelPlacement placeOnFullModel(const Model& model, const std::vector<SteadyState>& trimmed, const GainSchedule& g,
                                     const TuningTurbine& t, const TuningGoals& goals, const PlacementCheckOptions& opt) {
-  if (trimmed.size() != g.wind_speed.size())
-    throw InputError("placement: " + std::to_string(trimmed.size()) + " trimmed points for " +
-                     std::to_string(g.wind_speed.size()) + " points of the pitch schedule");
+  const ClosedLoopOptions clo = plantOptions(trimmed, g, opt);
   const std::complex<double> target = targetRoot(goals);
-  ClosedLoopOptions clo;
-  clo.azimuths = opt.azimuths;
-  clo.outputs = {clo.ports.speed_output};
   FullModelPlacement out{g, std::vector<bool>(g.kp.size(), false), {}};
   for (size_t k = 0; k < trimmed.size(); ++k) {
     const double w = trimmed[k].generator_speed;
@@ -110,8 +112,10 @@ FullModelPlacement placeOnFullModel(const Model& model, const std::vector<Steady
       out.gains.ki[k] = ki;
       out.converged[k] = true;
     }
+    // The check of the gains kept, on the plant at hand (not linearized again).
+    const LinearController kept = placedController(out.gains.kp[k], out.gains.ki[k], w, t, goals, opt);
+    out.checks.push_back(checkOf(closedLoopPoint(plant, trimmed[k], kept, clo), g.wind_speed[k], target));
   }
-  out.checks = checkPlacement(model, trimmed, out.gains, t, goals, opt);
   return out;
 }
 

@@ -40,10 +40,9 @@ TEST(LoopMargins, ThirdOrderLoopHasClosedFormMargins) {
   EXPECT_GT(m.peak_sensitivity, 1);
 }
 
-TEST(LoopMargins, BrokenPitchLoopIsControllerTimesPlant) {
-  // A rotor (state 0: generator speed / 97) with a lightly damped mode coupled to it; pitch PI with a
-  // first-order speed filter and a first-order actuator; torque held. L = −K(s) G(s) with
-  // G = C_g (sI − A)⁻¹ B_θ and K = (−K_p − K_i/s) · ω_c/(s + ω_c) · ω_a/(s + ω_a).
+/// A rotor (state 0: generator speed / 97) with a lightly damped mode coupled to it; torque, pitch and
+/// wind inputs, the generator speed as output.
+StateSpaceModel rotorPlant() {
   StateSpaceModel p;
   p.A = MatX(3, 3);
   p.A << -0.05, 0.8, 0.0, 0.0, 0.0, 1.0, 3.0, -40.0, -0.3;
@@ -57,6 +56,14 @@ TEST(LoopMargins, BrokenPitchLoopIsControllerTimesPlant) {
   p.u = {{"generator torque", "N m"}, {"collective pitch", "rad"}, {"wind speed", "m/s"}};
   p.y = {{"GenSpeed", "rad/s"}};
   p.x = {{"a", ""}, {"b", ""}, {"c", ""}};
+  return p;
+}
+
+TEST(LoopMargins, BrokenPitchLoopIsControllerTimesPlant) {
+  // A rotor (state 0: generator speed / 97) with a lightly damped mode coupled to it; pitch PI with a
+  // first-order speed filter and a first-order actuator; torque held. L = −K(s) G(s) with
+  // G = C_g (sI − A)⁻¹ B_θ and K = (−K_p − K_i/s) · ω_c/(s + ω_c) · ω_a/(s + ω_a).
+  const StateSpaceModel p = rotorPlant();
   LinearController c;
   c.lpf_order = 1;
   c.lpf_freq = 1.5708;
@@ -81,19 +88,7 @@ TEST(LoopMargins, BrokenPitchLoopIsControllerTimesPlant) {
 TEST(LoopMargins, ModalEvaluationEqualsTheLuPath) {
   // loopMargins(LoopSensitivity) evaluates S(jω) from one eigendecomposition; the margins equal those
   // from the LU at every frequency (the function form) to the modal path's check, 1e-7.
-  StateSpaceModel p;
-  p.A = MatX(3, 3);
-  p.A << -0.05, 0.8, 0.0, 0.0, 0.0, 1.0, 3.0, -40.0, -0.3;
-  p.B = MatX::Zero(3, 3);
-  p.B(0, 1) = -0.45;
-  p.B(2, 1) = 2.0;
-  p.B(0, 0) = -2e-6;
-  p.C = MatX::Zero(1, 3);
-  p.C(0, 0) = 97;
-  p.D = MatX::Zero(1, 3);
-  p.u = {{"generator torque", "N m"}, {"collective pitch", "rad"}, {"wind speed", "m/s"}};
-  p.y = {{"GenSpeed", "rad/s"}};
-  p.x = {{"a", ""}, {"b", ""}, {"c", ""}};
+  const StateSpaceModel p = rotorPlant();
   LinearController c;
   c.lpf_order = 1;
   c.lpf_freq = 1.5708;
