@@ -8,20 +8,25 @@ namespace whirl {
 namespace {
 
 /// A signal of the controller as a linear combination of its states and its inputs: the generator
-/// speed ω_g, the wind U and the disturbances d_τ, d_θ added at the torque and actuator inputs.
+/// speed ω_g, the wind U, the disturbances d_τ, d_θ added at the torque and actuator inputs and the
+/// floating feedback's velocity v.
 struct Signal {
   VecX x;
-  double w = 0, u = 0, dt = 0, dp = 0;
+  double w = 0, u = 0, dt = 0, dp = 0, v = 0;
 };
 
-/// The controller's equations, filled block by block: ẋ = A x + B [ω_g; U].
+/// Columns of the controller's inputs: fed by the plant (ω_g, U, v) and the two disturbances.
+constexpr int kPlantFed[3] = {0, 1, 4};
+constexpr int kDisturbance[2] = {2, 3};
+
+/// The controller's equations, filled block by block: ẋ = A x + B [ω_g; U; d_τ; d_θ; v].
 struct Builder {
   MatX A, B;
   std::vector<std::string> names;
   int next = 0;
 
-  explicit Builder(int n) : A(MatX::Zero(n, n)), B(MatX::Zero(n, 4)) {}
-  Signal zero() const { return {VecX::Zero(A.rows()), 0, 0, 0, 0}; }
+  explicit Builder(int n) : A(MatX::Zero(n, n)), B(MatX::Zero(n, 5)) {}
+  Signal zero() const { return {VecX::Zero(A.rows()), 0, 0, 0, 0, 0}; }
   int add(const std::string& name) {
     names.push_back("controller: " + name);
     return next++;
@@ -33,6 +38,7 @@ struct Builder {
     B(i, 1) += k * s.u;
     B(i, 2) += k * s.dt;
     B(i, 3) += k * s.dp;
+    B(i, 4) += k * s.v;
   }
   Signal state(int i) const {
     Signal s = zero();
@@ -42,7 +48,8 @@ struct Builder {
 };
 
 Signal combine(const Signal& a, double ka, const Signal& b, double kb) {
-  return {ka * a.x + kb * b.x, ka * a.w + kb * b.w, ka * a.u + kb * b.u, ka * a.dt + kb * b.dt, ka * a.dp + kb * b.dp};
+  return {ka * a.x + kb * b.x, ka * a.w + kb * b.w, ka * a.u + kb * b.u, ka * a.dt + kb * b.dt, ka * a.dp + kb * b.dp,
+          ka * a.v + kb * b.v};
 }
 
 /// First- or second-order low pass of `in` (unit static gain).
@@ -72,6 +79,28 @@ Signal notch(Builder& b, const Signal& in, const SpeedNotch& n, const std::strin
   return combine(in, 1, b.state(j), 2 * (n.beta_num - n.beta_den) * n.freq);
 }
 
+/// s/(s + ω_h) = 1 − ω_h/(s + ω_h).
+Signal highPass(Builder& b, const Signal& in, double wh, const std::string& name) {
+  if (wh <= 0) return in;
+  const int i = b.add(name);
+  b.feed(i, b.state(i), -wh);
+  b.feed(i, in, wh);
+  return combine(in, 1, b.state(i), -1);
+}
+
+bool hasFloatingFeedback(const LinearController& c) { return c.pitch_active && c.floating_mode > 0; }
+
+/// −K_fl · F(s) v: ROSCO's low pass, high pass and tower-top notches on the velocity.
+Signal floatingFeedback(Builder& b, const LinearController& c) {
+  Signal v = b.zero();
+  v.v = 1;
+  v = lowPass(b, v, 2, c.floating_lpf_freq, c.floating_lpf_damping, "floating feedback filter");
+  v = highPass(b, v, c.floating_hpf_freq, "floating feedback high pass");
+  for (size_t k = 0; k < c.floating_notches.size(); ++k)
+    v = notch(b, v, c.floating_notches[k], "floating feedback notch " + std::to_string(k + 1));
+  return combine(v, -c.floating_kp, b.zero(), 0);
+}
+
 bool hasReferenceFilter(const LinearController& c) {
   return c.reference_per_wind != 0 && c.reference_filter_freq > 0;
 }
@@ -79,6 +108,8 @@ bool hasReferenceFilter(const LinearController& c) {
 int stateCount(const LinearController& c) {
   int n = c.lpf_order + 2 * static_cast<int>(c.notches.size());
   if (c.pitch_active) n += 1 + c.actuator_order;
+  if (hasFloatingFeedback(c))
+    n += 2 + (c.floating_hpf_freq > 0 ? 1 : 0) + 2 * static_cast<int>(c.floating_notches.size());
   if (c.torque == LinearController::Torque::PI) n += 1 + (hasReferenceFilter(c) ? 1 : 0);
   return n;
 }
@@ -106,6 +137,7 @@ StateSpaceModel controllerStateSpace(const LinearController& c) {
     const int i = b.add("pitch PI integral");
     b.feed(i, speed, -c.pitch_ki);
     pitch_in = combine(speed, -c.pitch_kp, b.state(i), 1);
+    if (hasFloatingFeedback(c)) pitch_in = combine(pitch_in, 1, floatingFeedback(b, c), 1);
     pitch_in.dp += 1;
     pitch = lowPass(b, pitch_in, c.actuator_order, c.actuator_freq, c.actuator_damping, "pitch actuator");
   }
@@ -131,14 +163,15 @@ StateSpaceModel controllerStateSpace(const LinearController& c) {
   s.A = b.A;
   s.B = b.B;
   s.C = MatX(3, b.A.rows());
-  s.D = MatX(3, 4);
+  s.D = MatX(3, 5);
   s.C.row(0) = torque.x.transpose();
   s.C.row(1) = pitch.x.transpose();
   s.C.row(2) = pitch_in.x.transpose();
-  s.D << torque.w, torque.u, torque.dt, torque.dp, pitch.w, pitch.u, pitch.dt, pitch.dp, pitch_in.w, pitch_in.u,
-      pitch_in.dt, pitch_in.dp;
+  s.D << torque.w, torque.u, torque.dt, torque.dp, torque.v, pitch.w, pitch.u, pitch.dt, pitch.dp, pitch.v, pitch_in.w,
+      pitch_in.u, pitch_in.dt, pitch_in.dp, pitch_in.v;
   for (const std::string& n : b.names) s.x.push_back({n, "", 0, -1, -1, false});
-  s.u = {{"generator speed", "rad/s"}, {"wind speed", "m/s"}, {"torque disturbance", "N m"}, {"pitch disturbance", "rad"}};
+  s.u = {{"generator speed", "rad/s"}, {"wind speed", "m/s"}, {"torque disturbance", "N m"}, {"pitch disturbance", "rad"},
+         {"floating feedback velocity", c.floating_mode == 2 ? "rad/s" : "m/s"}};
   s.y = {{"generator torque", "N m"}, {"collective pitch", "rad"}, {"actuator input", "rad"}};
   return s;
 }
@@ -152,25 +185,41 @@ struct Closed {
   MatX extra_in, extra_out, extra_d;
 };
 
+/// Columns `cols` of m.
+MatX columns(const MatX& m, const int* cols, int count) {
+  MatX out(m.rows(), count);
+  for (int j = 0; j < count; ++j) out.col(j) = m.col(cols[j]);
+  return out;
+}
+
 Closed close(const StateSpaceModel& plant, const LinearController& c, const ClosedLoopPorts& ports) {
   const StateSpaceModel full = controllerStateSpace(c);
   StateSpaceModel k = full;
-  k.B = full.B.leftCols(2);
+  k.B = columns(full.B, kPlantFed, 3);
   k.C = full.C.topRows(2);
-  k.D = full.D.topLeftCorner(2, 2);
+  k.D = columns(full.D.topRows(2), kPlantFed, 3);
   const int it = indexOf(plant.u, ports.torque_input, "input");
   const int ip = indexOf(plant.u, ports.pitch_input, "input");
   const int ig = indexOf(plant.y, ports.speed_output, "output");
-  int iw = -1;
+  int iw = -1, iv = -1;
   if (k.B.col(1).any() || k.D.col(1).any()) iw = indexOf(plant.u, ports.wind_input, "input");
+  if (hasFloatingFeedback(c)) iv = indexOf(plant.y, floatingFeedbackOutput(c, ports), "output");
   if (plant.D(ig, it) != 0 || plant.D(ig, ip) != 0)
     throw InputError(where("", 0, ports.speed_output, "depends directly on the torque or the pitch (an algebraic loop)"));
+  if (iv >= 0 && (plant.D(iv, it) != 0 || plant.D(iv, ip) != 0))
+    throw InputError(where("", 0, plant.y[static_cast<size_t>(iv)].name,
+                           "depends directly on the torque or the pitch (an algebraic loop)"));
   const Eigen::Index n = plant.A.rows(), m = k.A.rows(), nu = plant.B.cols();
-  // Controller inputs [ω_g; U] = G_x x + G_u u, with ω_g = C_g x + D_g u and U the plant's wind input.
-  MatX Gx = MatX::Zero(2, n), Gu = MatX::Zero(2, nu);
+  // Controller inputs [ω_g; U; v] = G_x x + G_u u, with ω_g = C_g x + D_g u, U the plant's wind input
+  // and v the floating feedback's velocity output.
+  MatX Gx = MatX::Zero(3, n), Gu = MatX::Zero(3, nu);
   Gx.row(0) = plant.C.row(ig);
   Gu.row(0) = plant.D.row(ig);
   if (iw >= 0) Gu(1, iw) = 1;
+  if (iv >= 0) {
+    Gx.row(2) = plant.C.row(iv);
+    Gu.row(2) = plant.D.row(iv);
+  }
   // Plant inputs: u_plant = u + S (C_k x_k + D_k [ω_g; U]), S placing torque and pitch.
   MatX S = MatX::Zero(nu, 2);
   S(it, 0) = 1;
@@ -205,21 +254,26 @@ Closed close(const StateSpaceModel& plant, const LinearController& c, const Clos
   }
   // Disturbances d = [d_τ; d_θ] enter the controller's outputs through D_d (2 × 2 of full.D) and its
   // states through B_d; the plant sees them through BS.
-  const MatX Bd = full.B.rightCols(2), Dd = full.D.topRightCorner(2, 2);
+  const MatX Bd = columns(full.B, kDisturbance, 2), Dd = columns(full.D.topRows(2), kDisturbance, 2);
   Closed out{cl, MatX(n + m, 2), MatX(2, n + m), MatX(2, 2)};
   out.extra_in.topRows(n) = BS * Dd;
   out.extra_in.bottomRows(m) = Bd;
   // Outputs: the torque command (row 0 of the controller) and the actuator input (row 2).
-  MatX Ck(2, m), Dk(2, 4);
+  MatX Ck(2, m), Dk(2, 5);
   Ck << full.C.row(0), full.C.row(2);
   Dk << full.D.row(0), full.D.row(2);
-  out.extra_out.leftCols(n) = Dk.leftCols(2) * Gx;
+  out.extra_out.leftCols(n) = columns(Dk, kPlantFed, 3) * Gx;
   out.extra_out.rightCols(m) = Ck;
-  out.extra_d = Dk.rightCols(2);
+  out.extra_d = columns(Dk, kDisturbance, 2);
   return out;
 }
 
 }  // namespace
+
+std::string floatingFeedbackOutput(const LinearController& c, const ClosedLoopPorts& ports) {
+  if (!hasFloatingFeedback(c)) return "";
+  return c.floating_mode == 2 ? ports.nacelle_pitch_rate_output : ports.tower_top_velocity_output;
+}
 
 StateSpaceModel closeLoop(const StateSpaceModel& plant, const LinearController& c, const ClosedLoopPorts& ports) {
   return close(plant, c, ports).cl;

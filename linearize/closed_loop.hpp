@@ -21,7 +21,14 @@
 ///   (δτ = 0); below rated ROSCO's PI (VS_KP, VS_KI) on ω_ref − ω_f with TSR tracking's reference
 ///   ω_ref = λ_opt N U / R (the wind-speed estimate taken equal to the wind, through the reference's
 ///   first-order low pass), held at VS_RefSpd in
-///   region 2½; or the k ω_f² law (δτ = 2 k ω_f δω_f).
+///   region 2½; or the k ω_f² law (δτ = 2 k ω_f δω_f);
+/// - floating feedback (ROSCO's Fl_Mode; Controllers.f90 FloatingFeedback, Filters.f90): ROSCO
+///   integrates the tower top's fore-aft acceleration (Fl_Mode 1) or the nacelle's pitch acceleration
+///   (Fl_Mode 2) after a second-order low pass, a first-order high pass s/(s + ω_h) and the tower-top
+///   notches, and adds −K_fl times it to the pitch command. The filters are linear, so integrating the
+///   filtered acceleration equals filtering the velocity: the linear model feeds the velocity back
+///   (outputs YawBrTVxp, NcIMURVys) through the same filters and leaves out the integrator's pole at 0,
+///   which the acceleration's zero at 0 cancels (a minimal realization of the same transfer function).
 #include <string>
 #include <vector>
 
@@ -59,6 +66,15 @@ struct LinearController {
   /// Torque::PI with reference_per_wind ≠ 0: first-order low pass on the reference [rad/s] (ROSCO's
   /// F_VSRefSpdCornerFreq; 0: none). Driven by the wind alone, its root is the corner frequency.
   double reference_filter_freq = 0;
+
+  /// Floating feedback on the pitch (with pitch_active): 0 none, 1 the tower top's fore-aft velocity
+  /// [m/s], 2 the nacelle's pitch rate [rad/s]; δθ_c += −floating_kp · F(s) v.
+  int floating_mode = 0;
+  double floating_kp = 0;            ///< ROSCO's Fl_Kp scheduled at the point [s] (rad per m/s; per rad/s)
+  double floating_lpf_freq = 0;      ///< second-order low pass [rad/s] (F_FlCornerFreq)
+  double floating_lpf_damping = 0;   ///< its damping [-]
+  double floating_hpf_freq = 0;      ///< first-order high pass [rad/s] (F_FlHighPassFreq; 0: none)
+  std::vector<SpeedNotch> floating_notches;  ///< F_TwrTopNotch_Ind
 };
 
 /// Names of the roles the plant must have.
@@ -67,7 +83,12 @@ struct ClosedLoopPorts {
   std::string pitch_input = "collective pitch";
   std::string wind_input = "wind speed";  ///< may be absent when reference_per_wind = 0
   std::string speed_output = "GenSpeed";
+  std::string tower_top_velocity_output = "YawBrTVxp";  ///< floating_mode 1
+  std::string nacelle_pitch_rate_output = "NcIMURVys";  ///< floating_mode 2
 };
+
+/// The plant output the floating feedback reads (empty when floating_mode is 0).
+std::string floatingFeedbackOutput(const LinearController& c, const ClosedLoopPorts& ports = {});
 
 /// The closed loop: states [plant x; controller states] (the controller's named "controller: speed
 /// filter", "controller: pitch PI integral", …, first-order), the plant's inputs kept as disturbances
@@ -77,9 +98,9 @@ struct ClosedLoopPorts {
 /// generator speed depends directly on the torque or the pitch (D ≠ 0, an algebraic loop).
 StateSpaceModel closeLoop(const StateSpaceModel& plant, const LinearController& c, const ClosedLoopPorts& ports = {});
 
-/// The controller alone as a state-space model: u = [δω_g; δU; d_τ; d_θ] (d_τ added to the torque
-/// command, d_θ at the actuator input), y = [δτ; δθ; the actuator input]. Its states are named as
-/// closeLoop names them.
+/// The controller alone as a state-space model: u = [δω_g; δU; d_τ; d_θ; δv] (d_τ added to the torque
+/// command, d_θ at the actuator input, v the floating feedback's velocity), y = [δτ; δθ; the actuator
+/// input]. Its states are named as closeLoop names them.
 StateSpaceModel controllerStateSpace(const LinearController& c);
 
 /// Where a loop is broken for its margins: at the actuator input of the pitch loop, or at the

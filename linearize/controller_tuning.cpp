@@ -105,6 +105,9 @@ std::vector<TuningPoint> roscoTuningSchedule(const aero::RotorPerformance& perf,
     const double q = 0.5 * t.air_density * area * R * v[i] * v[i];  // torque per Cp/λ
     p.dq_dpitch = q / p.tsr * d.pitch;
     p.dq_domega = q / (p.tsr * p.tsr) * (d.tsr * p.tsr - cp_op) * R / v[i];
+    // ROSCO's dtau_dv = ρA/(2Ω_rated) (∂Cp/∂λ · ∂λ/∂U · U³ + 3 Cp U²), ∂λ/∂U = −λ/U.
+    p.dq_dwind = 0.5 * t.air_density * area / t.rated_rotor_speed *
+                 (d.tsr * (-p.tsr / v[i]) * v[i] * v[i] * v[i] + 3 * cp_op * v[i] * v[i]);
     s.push_back(p);
   }
   return s;
@@ -151,6 +154,20 @@ GainSchedule placePoles(const std::vector<TuningPoint>& schedule, const TuningTu
   gs.vs_kp = (2 * g.vs_zeta * g.vs_omega + gs.vs_a) / b_tau;
   gs.vs_ki = g.vs_omega * g.vs_omega / b_tau;
   return gs;
+}
+
+double floatingFeedbackGain(const std::vector<TuningPoint>& schedule, double wind) {
+  for (size_t i = 0; i + 1 < schedule.size(); ++i) {
+    const TuningPoint &a = schedule[i], &b = schedule[i + 1];
+    if (wind < a.wind_speed || wind > b.wind_speed) continue;
+    if (a.dq_dpitch == 0 || b.dq_dpitch == 0)
+      throw ComputeError("tuning: dQ/dpitch = 0 near " + std::to_string(wind) + " m/s, no floating-feedback gain");
+    const double ka = a.dq_dwind / a.dq_dpitch, kb = b.dq_dwind / b.dq_dpitch;
+    const double f = b.wind_speed > a.wind_speed ? (wind - a.wind_speed) / (b.wind_speed - a.wind_speed) : 0;
+    return ka + f * (kb - ka);
+  }
+  throw ComputeError("tuning: the floating-feedback wind speed " + std::to_string(wind) +
+                     " m/s is outside the schedule's wind speeds");
 }
 
 }  // namespace whirl

@@ -52,6 +52,7 @@ struct TuningPoint {
   double rotor_speed = 0;  ///< Ω [rad/s]
   double dq_dpitch = 0;    ///< ∂Q/∂β, rotor aerodynamic torque [N m/rad]
   double dq_domega = 0;    ///< ∂Q/∂Ω [N m s/rad]
+  double dq_dwind = 0;     ///< ∂Q/∂U [N m s/m]
   bool above_rated = false;
 };
 
@@ -74,11 +75,20 @@ struct GainSchedule {
   std::vector<double> a, b;        ///< the placed plant's A [1/s] and B_β [1/s²] (after any fit)
   double vs_kp = 0, vs_ki = 0;     ///< VS_KP, VS_KI at the last below-rated point [N m s/rad, N m/rad]
   double vs_a = 0;                 ///< the torque loop's A there [1/s]
+  /// Floating feedback (floatingFeedbackGain): ROSCO's Fl_Mode (0: none), Fl_Kp [s] at Fl_U [m/s].
+  int fl_mode = 0;
+  double fl_kp = 0, fl_wind = 0;
 };
 
 /// The placement on a schedule: the above-rated points (in order) give the pitch schedule, the last
 /// below-rated point the torque gains (ROSCO writes `vs_gain_schedule.Kp[-1]`). \throws ComputeError
 /// when the schedule has no point on either side or ∂Q/∂β = 0.
 GainSchedule placePoles(const std::vector<TuningPoint>& schedule, const TuningTurbine& t, const TuningGoals& g);
+
+/// ROSCO's floating-feedback gain (`tune_controller`, Fl_Mode 1): K_fl = (∂Q/∂U)/(∂Q/∂β) [s], the pitch
+/// that cancels the change of aerodynamic torque from a tower-top velocity, interpolated in the wind
+/// speed at `wind` (ROSCO's U_Fl, by default 1.05 v_rated). \throws ComputeError when `wind` is outside
+/// the schedule or ∂Q/∂β = 0 there.
+double floatingFeedbackGain(const std::vector<TuningPoint>& schedule, double wind);
 
 }  // namespace whirl

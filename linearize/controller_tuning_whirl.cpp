@@ -6,6 +6,8 @@
 
 #include "linearize/operating_point.hpp"
 #include "linearize/periodic.hpp"
+#include "src/dynamics/mass_matrix.hpp"
+#include "src/dynamics/workspace.hpp"
 #include "src/model/error.hpp"
 
 namespace whirl {
@@ -25,6 +27,7 @@ std::vector<TuningPoint> whirlTuningSchedule(const Model& model, const std::vect
   if (pitch_in < 0) throw InputError(where("", 0, "collective pitch", "the model has no collective pitch input"));
   const int az = findAzimuthDof(model);
   if (az < 0) throw InputError(where("", 0, "azimuth", "the model has no rotating coordinate"));
+  const int wind_in = model.roles.wind_speed_input;
   // The plant without the torque law: the generator torque is the controller's input.
   Model plant = model;
   plant.generator.speed_output = -1;
@@ -51,6 +54,7 @@ std::vector<TuningPoint> whirlTuningSchedule(const Model& model, const std::vect
       const int i = stateIndex(lin, az);
       tp.dq_dpitch += lin.Q(i, pitch_in) / static_cast<double>(p.models.size());
       tp.dq_domega -= lin.C(i, i) / static_cast<double>(p.models.size());
+      if (wind_in >= 0) tp.dq_dwind += lin.Q(i, wind_in) / static_cast<double>(p.models.size());
     }
     const double R = model.aero.rotor_radius;
     tp.tsr = tp.wind_speed > 0 ? tp.rotor_speed * R / tp.wind_speed : 0;
@@ -62,10 +66,12 @@ std::vector<TuningPoint> whirlTuningSchedule(const Model& model, const std::vect
 double rotorInertia(const Model& model) {
   const int az = findAzimuthDof(model);
   if (az < 0) throw InputError(where("", 0, "azimuth", "the model has no rotating coordinate"));
+  // The mass matrix alone: a linearization at the initial point would need its induction (frozen wake).
   const OperatingPoint p = initialPoint(model);
-  const LinearModel lin = linearize(model, p, LinearizeOptions{true, false});
-  const int i = stateIndex(lin, az);
-  return lin.M(i, i);
+  Workspace<double> ws(model);
+  MatX M;
+  massMatrix(model, ws, p.q, M);
+  return M(az, az);
 }
 
 double gearboxRatio(const Model& model) {

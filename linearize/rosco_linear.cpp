@@ -30,6 +30,20 @@ void setTorquePI(const RoscoController& c, LinearController& k) {
   k.torque_ki = c.VS_KI.empty() ? 0 : c.VS_KI.front();
 }
 
+/// ROSCO's floating feedback (Fl_Mode) on the pitch loop, its gain scheduled on the wind-speed estimate
+/// (equal to the wind at a steady state); at a steady state the velocity is zero, so the schedule's
+/// slope drops out as the pitch gains' does.
+void setFloatingFeedback(const RoscoController& c, const SteadyState& s, LinearController& k) {
+  if (c.Fl_Mode == 0 || c.Fl_Kp.empty()) return;
+  const double wind = s.condition.wind_speed.value_or(0);
+  k.floating_mode = c.Fl_Mode;
+  k.floating_kp = c.Fl_Kp.size() == 1 ? c.Fl_Kp.front() : roscoInterp(c.Fl_U, c.Fl_Kp, wind);
+  k.floating_lpf_freq = c.F_FlCornerFreq;
+  k.floating_lpf_damping = c.F_FlCornerDamp;
+  k.floating_hpf_freq = c.F_FlHighPassFreq;
+  for (const RoscoNotch& n : c.twr_top_notches) k.floating_notches.push_back({n.freq, n.beta_num, n.beta_den});
+}
+
 }  // namespace
 
 LinearController linearRosco(const RoscoController& c, const SteadyState& s, const RoscoLinearOptions& opt) {
@@ -51,6 +65,7 @@ LinearController linearRosco(const RoscoController& c, const SteadyState& s, con
       k.actuator_order = c.PA_Mode;
       k.actuator_freq = c.PA_CornerFreq;
       k.actuator_damping = c.PA_Damping;
+      setFloatingFeedback(c, s, k);
     }
     setTorqueAtLimit(c, w, k);
     if (c.VS_ControlMode == 1) {
@@ -95,8 +110,11 @@ std::vector<std::string> linearRoscoNotes(const RoscoController& c) {
                 "steady state (the pitch loop's below rated, the torque loop's above), so it leaves the "
                 "linear model unchanged");
   if (c.Fl_Mode > 0)
-    n.push_back("Fl_Mode = " + std::to_string(c.Fl_Mode) +
-                ": the floating feedback (nacelle velocity to pitch) is not in the linear model");
+    n.push_back("Fl_Mode = " + std::to_string(c.Fl_Mode) + ": the floating feedback acts in region 3 (below rated " +
+                "the pitch sits at its minimum, where ROSCO's saturation passes only the positive half of it); " +
+                "the integral of the filtered " +
+                (c.Fl_Mode == 1 ? std::string("tower-top acceleration is the filtered velocity YawBrTVxp")
+                                : std::string("nacelle pitch acceleration is the filtered pitch rate NcIMURVys")));
   if (c.PA_Mode == 0)
     n.push_back("PA_Mode = 0: no pitch actuator in the controller; the pitch command is the blades' pitch");
   n.push_back("discrete-time filters and integrators as their continuous equivalents (phase error ω·DT/2), the "

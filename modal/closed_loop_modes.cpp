@@ -93,9 +93,12 @@ ClosedLoopPoint closedLoopPoint(const Model& model, const SteadyState& steady, c
   Model plant_model = model;
   plant_model.generator.speed_output = -1;  // the controller sets the generator torque
   if (!opt.outputs.empty()) {
+    std::vector<std::string> wanted = opt.outputs;
+    const std::string floating = floatingFeedbackOutput(controller, opt.ports);  // the loop reads it too
+    if (!floating.empty()) wanted.push_back(floating);
     std::vector<Output> kept;
     for (const Output& o : plant_model.outputs)
-      if (std::find(opt.outputs.begin(), opt.outputs.end(), o.name) != opt.outputs.end()) kept.push_back(o);
+      if (std::find(wanted.begin(), wanted.end(), o.name) != wanted.end()) kept.push_back(o);
     plant_model.outputs = std::move(kept);
   }
   OperatingCondition c = steady.condition;

@@ -36,6 +36,8 @@ struct TuneOptions {
   std::string cp_surface, discon, out;
   bool quasi_steady = false, pointwise = false, full_model = false, full_model_placement = false;
   int azimuths = 3;
+  int fl_mode = 0;                 ///< ROSCO's floating feedback to tune (1) or none (0)
+  std::optional<double> fl_wind;   ///< its U_Fl [m/s]; default 1.05 v_rated (ROSCO's)
 };
 
 std::string readText(const std::string& path) {
@@ -44,7 +46,7 @@ std::string readText(const std::string& path) {
   return text;
 }
 
-TuningTurbine turbineOf(const TuneOptions& opt, const Model& m) {
+TuningTurbine turbineOf(const TuneOptions& opt, const Model& m, const std::optional<RoscoController>& rosco) {
   TuningTurbine t;
   // ROSCO's R is ElastoDyn's TipRad, along the blade; whirl's default is the swept disk's radius.
   t.rotor_radius = opt.rotor_radius.value_or(m.aero.rotor_radius);
@@ -52,12 +54,15 @@ TuningTurbine turbineOf(const TuneOptions& opt, const Model& m) {
   t.gearbox_ratio = gearboxRatio(m);
   t.inertia = opt.inertia ? *opt.inertia : rotorInertia(m);
   const GeneratorTorqueLaw& law = m.generator;
-  if (!opt.rated_rotor_speed && !(law.active() && law.rated_speed > 0))
-    throw InputError("tune: --rated-rotor-speed: the deck has no rated generator speed; give it");
-  t.rated_rotor_speed = opt.rated_rotor_speed.value_or(law.rated_speed / t.gearbox_ratio);
-  if (!opt.rated_power && !(law.active() && law.rated_torque > 0))
-    throw InputError("tune: --rated-power: the deck has no rated generator torque; give it");
-  t.rated_power = opt.rated_power.value_or(law.rated_speed * law.rated_torque * law.efficiency);
+  // A ROSCO deck's rated point is its controller's: PC_RefSpd and VS_RtPwr (ServoDyn's VS_* are unused).
+  if (opt.rated_rotor_speed) t.rated_rotor_speed = *opt.rated_rotor_speed;
+  else if (rosco) t.rated_rotor_speed = rosco->PC_RefSpd / t.gearbox_ratio;
+  else if (law.active() && law.rated_speed > 0) t.rated_rotor_speed = law.rated_speed / t.gearbox_ratio;
+  else throw InputError("tune: --rated-rotor-speed: the deck has no rated generator speed; give it");
+  if (opt.rated_power) t.rated_power = *opt.rated_power;
+  else if (rosco) t.rated_power = rosco->VS_RtPwr;
+  else if (law.active() && law.rated_torque > 0) t.rated_power = law.rated_speed * law.rated_torque * law.efficiency;
+  else throw InputError("tune: --rated-power: the deck has no rated generator torque; give it");
   t.v_min = opt.v_min;
   t.v_rated = opt.v_rated;
   t.v_max = opt.v_max;
@@ -67,13 +72,14 @@ TuningTurbine turbineOf(const TuneOptions& opt, const Model& m) {
 /// whirl's trimmed points at ROSCO's wind speeds that the placement uses: the last below rated and
 /// every one from rated up; the above-rated flag by the wind speed, as ROSCO's schedule has it.
 std::vector<TuningPoint> whirlSchedule(const TuneOptions& opt, const Model& m, const TuningTurbine& t,
-                                       std::vector<SteadyState>& trimmed) {
+                                       const std::optional<RoscoController>& rosco, std::vector<SteadyState>& trimmed) {
   const std::vector<double> all = roscoWindSpeeds(t, opt.goals);
   const size_t n_below = static_cast<size_t>(opt.goals.ws_gs_n - opt.goals.pc_gs_n - 1);
   const std::vector<double> winds(all.begin() + static_cast<long>(n_below) - 1, all.end());
   WhirlTuningOptions w;
   w.frozen_wake = !opt.quasi_steady;
   w.trim.azimuths = opt.azimuths;
+  if (rosco) w.trim.controller = &*rosco;  // a ROSCO deck settles where its controller does
   trimmed = trimSchedule(m, winds, w.trim);
   std::vector<TuningPoint> s = whirlTuningSchedule(m, trimmed, w);
   for (size_t i = 0; i < s.size(); ++i) s[i].above_rated = i > 0;
@@ -82,11 +88,13 @@ std::vector<TuningPoint> whirlSchedule(const TuneOptions& opt, const Model& m, c
 
 std::string csvOf(const std::vector<TuningPoint>& s, const GainSchedule& g) {
   std::string t =
-      "wind_speed_m_s,rotor_speed_rpm,pitch_deg,tsr,dq_dpitch_nm_rad,dq_domega_nms_rad,a_1_s,b_beta_1_s2,kp_s,ki\n";
+      "wind_speed_m_s,rotor_speed_rpm,pitch_deg,tsr,dq_dpitch_nm_rad,dq_domega_nms_rad,dq_dwind_nms_m,a_1_s,b_beta_1_s2,"
+      "kp_s,ki\n";
   size_t k = 0;
   for (const TuningPoint& p : s) {
     const bool placed = p.above_rated && k < g.wind_speed.size() && std::abs(g.wind_speed[k] - p.wind_speed) < 1e-9;
-    for (double v : {p.wind_speed, p.rotor_speed * 30 / kPi, p.pitch * 180 / kPi, p.tsr, p.dq_dpitch, p.dq_domega})
+    for (double v :
+         {p.wind_speed, p.rotor_speed * 30 / kPi, p.pitch * 180 / kPi, p.tsr, p.dq_dpitch, p.dq_domega, p.dq_dwind})
       t += formatNumber(v) + ",";
     if (placed) {
       t += formatNumber(g.a[k]) + "," + formatNumber(g.b[k]) + "," + formatNumber(g.kp[k]) + "," + formatNumber(g.ki[k]);
@@ -133,20 +141,32 @@ void run(TuneOptions opt) {
   if (!m.aero.active() && opt.cp_surface.empty())
     throw InputError(opt.model.case_path + ": the model has no aerodynamics; give --cp-surface or an aeroelastic deck");
   opt.goals.fit_linear_in_wind = !opt.pointwise;
-  const TuningTurbine t = turbineOf(opt, m);
+  // The deck's ROSCO controller, when it names one: its rated point and its trim.
+  const std::optional<RoscoController> rosco = io::readDeckController(opt.model.case_path, opt.model.sets);
+  const TuningTurbine t = turbineOf(opt, m, rosco);
   const std::string discon_text = opt.discon.empty() ? std::string() : readText(opt.discon);
   std::vector<SteadyState> trimmed;
   const std::vector<TuningPoint> s = opt.cp_surface.empty()
-                                         ? whirlSchedule(opt, m, t, trimmed)
+                                         ? whirlSchedule(opt, m, t, rosco, trimmed)
                                          : roscoTuningSchedule(io::readRotorPerformance(opt.cp_surface), t, opt.goals);
   GainSchedule g = placePoles(s, t, opt.goals);
+  if (opt.fl_mode > 0) {
+    g.fl_mode = opt.fl_mode;
+    g.fl_wind = opt.fl_wind.value_or(1.05 * t.v_rated);
+    g.fl_kp = floatingFeedbackGain(s, g.fl_wind);
+  }
   std::vector<PlacementCheck> checks;
   int placed_on_full = -1;
   if (opt.full_model || opt.full_model_placement) {
     if (!m.aero.active()) throw InputError(opt.model.case_path + ": --full-model needs an aeroelastic deck");
     // The pitch schedule's points: whirl's trims from rated up, or the deck trimmed at the surface's.
     std::vector<SteadyState> above;
-    if (trimmed.empty()) above = trimSchedule(m, g.wind_speed);
+    if (trimmed.empty()) {
+      TrimOptions to;
+      to.azimuths = opt.azimuths;
+      if (rosco) to.controller = &*rosco;
+      above = trimSchedule(m, g.wind_speed, to);
+    }
     for (double u : trimmed.empty() ? std::vector<double>{} : g.wind_speed)
       for (const SteadyState& st : trimmed)
         if (std::abs(*st.condition.wind_speed - u) < 1e-9) above.push_back(st);
@@ -168,7 +188,7 @@ void run(TuneOptions opt) {
   if (!checks.empty()) files.write("placement_check.csv", checkCsv(checks));
   if (!opt.discon.empty()) files.write("DISCON.IN", disconWithGains(discon_text, opt.discon, g));
   files.commit();
-  std::printf("sensitivities from %s; J = %.6g kg m^2, N = %g, R = %g m, rho = %g kg/m^3\n",
+  std::printf("sensitivities from %s; J = %.9g kg m^2, N = %g, R = %g m, rho = %g kg/m^3\n",
               opt.cp_surface.empty() ? "whirl's trimmed linearization" : opt.cp_surface.c_str(), t.inertia,
               t.gearbox_ratio, t.rotor_radius, t.air_density);
   std::printf("%8s %8s %12s %12s %11s %11s\n", "wind", "pitch", "dQ/dpitch", "dQ/dOmega", "PC_GS_KP", "PC_GS_KI");
@@ -180,6 +200,7 @@ void run(TuneOptions opt) {
     ++k;
   }
   std::printf("VS_KP %.6g, VS_KI %.6g\n", g.vs_kp, g.vs_ki);
+  if (g.fl_mode > 0) std::printf("Fl_Kp %.6g s at Fl_U %.4g m/s\n", g.fl_kp, g.fl_wind);
   if (placed_on_full >= 0)
     std::printf("placed on the whole model at %d of %zu points (the others keep the one-state gains)\n", placed_on_full,
                 checks.size());
@@ -209,8 +230,8 @@ void addTuneCommand(CLI::App& app) {
   cmd->add_option("--pc-gs-n", opt->goals.pc_gs_n, "of them above rated (ROSCO's PC_GS_n)")->check(CLI::Range(2, 999));
   cmd->add_option("--inertia", opt->inertia, "rotor + generator inertia about the low-speed shaft [kg m^2] (default: the model's)");
   cmd->add_option("--rotor-radius", opt->rotor_radius, "R of the tip-speed ratio and the Cp surface [m] (default: the swept disk's, coned)");
-  cmd->add_option("--rated-rotor-speed", opt->rated_rotor_speed, "[rad/s] (default: the deck's rated generator speed / gearbox ratio)");
-  cmd->add_option("--rated-power", opt->rated_power, "[W] (default: the deck's rated speed x torque x efficiency)");
+  cmd->add_option("--rated-rotor-speed", opt->rated_rotor_speed, "[rad/s] (default: the deck's rated generator speed / gearbox ratio; ROSCO's PC_RefSpd / gearbox ratio)");
+  cmd->add_option("--rated-power", opt->rated_power, "[W] (default: the deck's rated speed x torque x efficiency; ROSCO's VS_RtPwr)");
   cmd->add_option("--cp-surface", opt->cp_surface, "ROSCO rotor performance file (Cp_Ct_Cq.*.txt): ROSCO's own tuning");
   cmd->add_option("--discon", opt->discon, "DISCON.IN to write again with the new gain schedule");
   cmd->add_flag("--quasi-steady", opt->quasi_steady, "sensitivities with the induction following at once (default: frozen wake)");
@@ -218,6 +239,11 @@ void addTuneCommand(CLI::App& app) {
   cmd->add_flag("--full-model", opt->full_model,
                 "also close the whole linear model with the placed gains at each pitch-schedule point (with --discon: "
                 "its speed filter) and report where the rotor-speed root lands (placement_check.csv)");
+  cmd->add_option("--fl-mode", opt->fl_mode,
+                  "tune ROSCO's floating feedback too (1: tower-top velocity): Fl_Kp = (dQ/dU)/(dQ/dpitch) at --fl-wind, "
+                  "written with --discon as Fl_Mode, Fl_Kp, Fl_U")
+      ->check(CLI::Range(0, 1));
+  cmd->add_option("--fl-wind", opt->fl_wind, "wind speed of the floating-feedback gain [m/s] (default: 1.05 x --v-rated, as ROSCO)");
   cmd->add_flag("--full-model-placement", opt->full_model_placement,
                 "place the pitch loop's root on the whole linear model (Newton on K_p, K_i from the one-state gains; "
                 "with --discon its speed filter in the loop) and write those gains; implies --full-model");

@@ -125,6 +125,14 @@ void addOutputs(Builder& b, const TowerParts& tower, const DrivetrainParts& dt, 
   imu.body = dt.nacelle;
   imu.frame_body = dt.nacelle;
   imu.direction = Vec3::UnitY();
+  y.push_back(imu);
+  // The velocities ROSCO's floating feedback integrates from these accelerations (Fl_Mode 1: the
+  // tower top's fore-aft, YawBrTVxp; Fl_Mode 2: the nacelle's pitch rate, NcIMURVys), as ElastoDyn
+  // names them: a closed loop feeds them back directly (linearize/closed_loop.hpp).
+  y.push_back(pointOutput("YawBrTVxp", "m/s", 1, dt.bearing, -1, dt.bearing, Vec3::UnitX()));
+  imu.name = "NcIMURVys";
+  imu.unit = "rad/s";
+  imu.order = 1;
   y.push_back(std::move(imu));
 }
 

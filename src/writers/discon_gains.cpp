@@ -69,8 +69,9 @@ std::string disconWithGains(const std::string& text, const std::string& file, co
     b = e + 1;
   }
   std::map<std::string, size_t> at;
-  const std::vector<std::string> keys = {"PC_GS_n", "PC_GS_angles", "PC_GS_KP", "PC_GS_KI", "PC_GS_KD",
-                                         "PC_GS_TF", "VS_KP",   "VS_KI"};
+  std::vector<std::string> keys = {"PC_GS_n", "PC_GS_angles", "PC_GS_KP", "PC_GS_KI", "PC_GS_KD",
+                                   "PC_GS_TF", "VS_KP",   "VS_KI"};
+  if (g.fl_mode > 0) keys.insert(keys.end(), {"Fl_Mode", "Fl_Kp", "Fl_U"});
   for (size_t i = 0; i < lines.size(); ++i) {
     const Line l = splitLine(lines[i]);
     if (!l.has_comment || l.values.find_first_not_of(" \t") == std::string::npos) continue;
@@ -107,6 +108,19 @@ std::string disconWithGains(const std::string& text, const std::string& file, co
   replace("PC_GS_KI", row(g.ki, "%.3e", 12));
   replace("VS_KP", formatted("%-14.5e", g.vs_kp) + "      ");
   replace("VS_KI", formatted("%-14.5e", g.vs_ki) + "      ");
+  if (g.fl_mode > 0) {
+    // One gain at one wind speed (Fl_n, when the file has it, must then be 1: ROSCO's default).
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%-20d", g.fl_mode);
+    replace("Fl_Mode", buf);
+    replace("Fl_Kp", formatted("%-20.4f", g.fl_kp));
+    replace("Fl_U", formatted("%-20.4f", g.fl_wind));
+    for (size_t i = 0; i < lines.size(); ++i) {
+      const Line l = splitLine(lines[i]);
+      if (l.has_comment && keyOf(l) == "Fl_n" && std::strtol(l.values.c_str(), nullptr, 10) != 1)
+        lines[i] = std::string("1                   ") + l.rest;
+    }
+  }
   std::string out;
   for (const std::string& l : lines) out += l;
   return out;

@@ -28,6 +28,7 @@ const std::map<std::string, Known>& knownOutputs() {
       {"TwrBsMxt", {"ED", "kN-m", 1e-3}},       {"RootMFlp", {"ED", "kN-m", 1e-3}},
       {"RootMEdg", {"ED", "kN-m", 1e-3}},       {"BldPitch", {"ED", "deg", kDeg}},
       {"TeetDefl", {"ED", "deg", kDeg}},        {"NcIMURAys", {"ED", "deg/s^2", kDeg}},
+      {"YawBrTVxp", {"ED", "m/s", 1}},          {"NcIMURVys", {"ED", "deg/s", kDeg}},
       {"PtfmSurge", {"ED", "m", 1}},            {"PtfmSway", {"ED", "m", 1}},
       {"PtfmHeave", {"ED", "m", 1}},            {"PtfmRoll", {"ED", "deg", kDeg}},
       {"PtfmPitch", {"ED", "deg", kDeg}},       {"PtfmYaw", {"ED", "deg", kDeg}},

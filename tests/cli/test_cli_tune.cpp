@@ -29,7 +29,54 @@ TEST(CliTune, CpSurfaceWritesRoscosDisconAgain) {
   EXPECT_EQ(slurp(dir / "DISCON.IN"), slurp(std::filesystem::path(WHIRL_SOURCE_DIR) / kRosco / "DISCON.IN"));
   const std::string csv = slurp(dir / "tune.csv");
   EXPECT_EQ(csv.substr(0, csv.find('\n')),
-            "wind_speed_m_s,rotor_speed_rpm,pitch_deg,tsr,dq_dpitch_nm_rad,dq_domega_nms_rad,a_1_s,b_beta_1_s2,kp_s,ki");
+            "wind_speed_m_s,rotor_speed_rpm,pitch_deg,tsr,dq_dpitch_nm_rad,dq_domega_nms_rad,dq_dwind_nms_m,a_1_s,"
+            "b_beta_1_s2,kp_s,ki");
+}
+
+/// The numbers of one tune.csv row.
+std::vector<double> csvRow(const std::string& line) {
+  std::vector<double> v;
+  std::istringstream row(line);
+  for (std::string c; std::getline(row, c, ',');) v.push_back(c.empty() ? 0.0 : std::stod(c));
+  return v;
+}
+
+TEST(CliTune, RoscoDeckWithItsOwnRatedPointAndTheFloatingFeedbackGain) {
+  // A ROSCO deck (ServoDyn VSContrl = 5) gives tune its rated point (PC_RefSpd, VS_RtPwr) and its trim;
+  // the inertia is the model's: ROSCO's WE_Jtot for this turbine is 43702538.057 kg m² (ElastoDyn's
+  // rotor inertia + GenIner·97², tests/data/rosco/DISCON.IN), whirl's mass matrix gives it to 1e-8.
+  const auto dir = freshDir("tune_fl");
+  const auto r = whirl("tune cases/nrel5mw/Main_ROSCO.fst --pc-omega 0.6 --pc-zeta 0.7 --vs-omega 0.15 --vs-zeta 0.7 "
+                       "--v-min 3 --v-rated 11.4 --v-max 25 --fl-mode 1 --discon " + kRosco + "DISCON.IN --out '" +
+                       dir.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const size_t j = r.out.find("J = ");
+  ASSERT_NE(j, std::string::npos) << r.out;
+  EXPECT_NEAR(std::stod(r.out.substr(j + 4)), 43702538.057, 0.5);
+  // Fl_Kp = (dQ/dU)/(dQ/dpitch) at 1.05 × 11.4 m/s, interpolated between the schedule's rows of tune.csv.
+  std::istringstream csv(slurp(dir / "tune.csv"));
+  std::string line;
+  std::getline(csv, line);
+  std::vector<std::vector<double>> rows;
+  while (std::getline(csv, line)) rows.push_back(csvRow(line));
+  const double u = 1.05 * 11.4;
+  double expected = 0;
+  for (size_t i = 0; i + 1 < rows.size(); ++i)
+    if (rows[i][0] <= u && u <= rows[i + 1][0]) {
+      const double ka = rows[i][6] / rows[i][4], kb = rows[i + 1][6] / rows[i + 1][4];
+      expected = ka + (u - rows[i][0]) / (rows[i + 1][0] - rows[i][0]) * (kb - ka);
+    }
+  ASSERT_LT(expected, 0);  // pitching to feather as the rotor moves into the wind
+  const std::string discon = slurp(dir / "DISCON.IN");
+  auto valueOf = [&](const std::string& key) {
+    const size_t k = discon.find("! " + key + " ");
+    EXPECT_NE(k, std::string::npos) << key;
+    const size_t b = discon.rfind('\n', k) + 1;
+    return std::stod(discon.substr(b, k - b));
+  };
+  EXPECT_EQ(valueOf("Fl_Mode"), 1);
+  EXPECT_NEAR(valueOf("Fl_Kp"), expected, 0.5e-4);  // written with 4 decimals
+  EXPECT_NEAR(valueOf("Fl_U"), u, 0.5e-4);
 }
 
 TEST(CliTune, DisconWithoutAGainKeyIsAnErrorAndNothingIsWritten) {

@@ -148,6 +148,59 @@ TEST(ClosedLoop, PitchLoopWithFilterAndActuatorEqualsTransferFunctions) {
   expectSameEigenvalues(cl.A, independentClosedLoop(p, kt, kp), {-c.lpf_freq, notch_pole, std::conj(notch_pole)});
 }
 
+TEST(ClosedLoop, FloatingFeedbackEqualsTransferFunctions) {
+  // ROSCO's Fl_Mode 1 (Controllers.f90 FloatingFeedback): θ_c += −K_fl · LPF₂ · HPF · notch applied to
+  // the tower-top velocity, here the rate of the plant's second coordinate.
+  LinearController c;
+  c.lpf_order = 1;
+  c.lpf_freq = 1.5708;
+  c.pitch_active = true;
+  c.pitch_kp = -4.26e-3;  // cases/oc3_hywind/rosco/DISCON.IN, first point
+  c.pitch_ki = -5.198e-4;
+  c.floating_mode = 1;
+  c.floating_kp = -0.032;  // Fl_Kp, same file
+  c.floating_lpf_freq = 0.2115;
+  c.floating_lpf_damping = 1.0;
+  c.floating_hpf_freq = 0.01042;
+  c.floating_notches = {{3.0, 0.0, 0.25}};
+  StateSpaceModel p = plant();
+  p.C.conservativeResize(3, p.C.cols());
+  p.C.row(2).setZero();
+  p.C(2, 4) = 1;
+  p.D.conservativeResize(3, p.D.cols());
+  p.D.row(2).setZero();
+  p.y.push_back({"YawBrTVxp", "m/s"});
+  const StateSpaceModel cl = closeLoop(p, c);
+  EXPECT_EQ(cl.x.size(), p.x.size() + 1 + 1 + 2 + 1 + 2);
+  // Independent: K_θ = −(K_p s + K_i)/s · ω_c/(s + ω_c) on ω_g; K_fl = −K_fl ω_l²/(s² + 2ζω_l s + ω_l²) ·
+  // s/(s + ω_h) · notch on v; both added at the pitch input.
+  const Realization kp = realize(mul(Poly{-c.pitch_kp, -c.pitch_ki}, Poly{c.lpf_freq}), mul(Poly{1, 0}, Poly{1, c.lpf_freq}));
+  const double wl = c.floating_lpf_freq, wh = c.floating_hpf_freq;
+  const SpeedNotch& nt = c.floating_notches[0];
+  const Poly fl_n = mul(mul(Poly{-c.floating_kp * wl * wl}, Poly{1, 0}), Poly{1, 2 * nt.beta_num * nt.freq, nt.freq * nt.freq});
+  const Poly fl_d = mul(mul(Poly{1, 2 * c.floating_lpf_damping * wl, wl * wl}, Poly{1, wh}),
+                        Poly{1, 2 * nt.beta_den * nt.freq, nt.freq * nt.freq});
+  const Realization kf = realize(fl_n, fl_d);
+  const Eigen::Index n = p.A.rows(), mp = kp.A.rows(), mf = kf.A.rows();
+  const VecX Cg = p.C.row(0).transpose(), Cv = p.C.row(2).transpose(), bp = p.B.col(1);
+  MatX A = MatX::Zero(n + mp + mf, n + mp + mf);
+  A.topLeftCorner(n, n) = p.A + bp * (kp.D * Cg.transpose() + kf.D * Cv.transpose());
+  A.block(0, n, n, mp) = bp * kp.C;
+  A.block(0, n + mp, n, mf) = bp * kf.C;
+  A.block(n, 0, mp, n) = kp.B * Cg.transpose();
+  A.block(n, n, mp, mp) = kp.A;
+  A.block(n + mp, 0, mf, n) = kf.B * Cv.transpose();
+  A.block(n + mp, n + mp, mf, mf) = kf.A;
+  expectSameEigenvalues(cl.A, A);
+  // Without the plant's velocity output the loop cannot close: an InputError naming it.
+  try {
+    closeLoop(plant(), c);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("YawBrTVxp"), std::string::npos) << e.what();
+  }
+}
+
 TEST(ClosedLoop, TorquePiSecondOrderFilterEqualsTransferFunctions) {
   LinearController c;
   c.lpf_order = 2;

@@ -39,7 +39,7 @@ TEST(ElastoDynModel, DofNamesAndSwitchesOfTheNrel5mwFile) {
     EXPECT_TRUE(m.findInput(in).has_value()) << in;
   EXPECT_EQ(m.inputs[*m.findInput("collective pitch")].dofs.size(), 3u);
   EXPECT_EQ(m.inputs[*m.findInput("blade 2 pitch")].blade, 1);
-  EXPECT_EQ(m.outputs.size(), 20u);  // 15 + BldPitch1..3, TwrBsMyt, NcIMURAys (issue 41)
+  EXPECT_EQ(m.outputs.size(), 22u);  // 15 + BldPitch1..3, TwrBsMyt, NcIMURAys (issue 41), YawBrTVxp, NcIMURVys (issue 43)
   ASSERT_EQ(m.springs.size(), 2u);  // drivetrain, yaw (ServoDyn)
   EXPECT_DOUBLE_EQ(m.springs[0].k, 8.67637e8);
   EXPECT_DOUBLE_EQ(m.springs[0].c, 6.215e6);
