@@ -114,3 +114,33 @@ TEST(CliClosedLoop, SimulateWithRoscoReturnsToRatedSpeedAfterAWindStep) {
 
 }  // namespace
 }  // namespace whirl::test
+
+namespace whirl::test {
+namespace {
+
+TEST(CliVerifyClosedLoopSlow, WindStepTableAndFiles) {
+  // The numbers are checked in tests/validation/test_closed_loop_simulation.cpp (same function); here the
+  // command: its table, its files, and the errors before anything is written.
+  const auto dir = freshDir("cl_verify");
+  const auto r = whirl("verify " + kDeck + " --closed-loop --wind 14 --tmax 4 --no-plot --out '" + dir.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  for (const char* s : {"region 3", "GenSpeed", "TTDspFA", "collective pitch"})
+    EXPECT_NE(r.out.find(s), std::string::npos) << s << "\n" << r.out;
+  const std::string csv = slurp(dir / "closed_loop_step.csv");
+  EXPECT_EQ(csv.substr(0, csv.find('\n')),
+            "time_s,wind_speed_m_s,GenSpeed_nonlinear,GenSpeed_linear,TTDspFA_nonlinear,TTDspFA_linear,"
+            "collective_pitch_nonlinear,collective_pitch_linear");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 81);  // 0 to 4 s every 0.05 s
+  EXPECT_TRUE(std::filesystem::exists(dir / "closed_loop_step.gp"));
+  const auto no_wind = whirl("verify " + kDeck + " --closed-loop --out '" + (dir / "x").string() + "'");
+  EXPECT_NE(no_wind.code, 0);
+  EXPECT_NE(no_wind.err.find("--closed-loop needs --wind"), std::string::npos) << no_wind.err;
+  const auto bad_output = whirl("verify " + kDeck + " --closed-loop --wind 14 --output Nope --out '" + (dir / "y").string() + "'");
+  EXPECT_NE(bad_output.code, 0);
+  EXPECT_NE(bad_output.err.find("Nope: the model has no output of this name"), std::string::npos) << bad_output.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "x"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "y"));
+}
+
+}  // namespace
+}  // namespace whirl::test

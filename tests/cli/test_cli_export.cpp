@@ -45,7 +45,7 @@ TEST(CliExport, MatOfTheFstMatchesLinearize) {
   const auto dir = test::freshDir("export_mat");
   const auto r = test::whirl("export " + kFst + " --format mat --azimuths 6 --out " + dir.string());
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_THAT(r.out, HasSubstr("32 states, 9 inputs, 20 outputs (multiblade average over 6 azimuths)"));
+  EXPECT_THAT(r.out, HasSubstr("32 states, 9 inputs, 22 outputs (multiblade average over 6 azimuths)"));
   const auto lin = test::whirl("linearize " + kFst + " --out " + (dir / "lin").string());
   ASSERT_EQ(lin.code, 0) << lin.err;
   const auto A = csvMatrix(dir / "lin" / "A.csv");

@@ -200,7 +200,7 @@ TEST(StateSpaceFiles, LinHeaderAndDescriptionsFollowOpenFast) {
             std::string::npos);
   EXPECT_NE(t.find("Jacobians included in this file?"), std::string::npos);
   EXPECT_NE(t.find("\nA: 32 x 32\n"), std::string::npos);
-  EXPECT_NE(t.find("\nD: 20 x 9\n"), std::string::npos);
+  EXPECT_NE(t.find("\nD: 22 x 9\n"), std::string::npos);
 }
 
 TEST(StateSpaceFiles, JsonHasTheSameContent) {
