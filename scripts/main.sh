@@ -5,7 +5,8 @@
 # - reports/nrel5mw_aero/: aeroelastic (AeroDyn BEMT, frozen wake) along the wind, 3–25 m/s, each
 #   point trimmed (rotor speed below rated, pitch above), with the steady performance table, the
 #   interactive report campbell.html (mode shapes, docs/user/mode-shapes.md) and HAWCStab2's .cmb/.amp/.opt;
-# - reports/nrel5mw_rosco/: with ROSCO's controller, open and closed loop (below).
+# - reports/nrel5mw_rosco/: with ROSCO's controller, open and closed loop (below);
+# - reports/oc3_hywind_rosco/: the floating NREL 5MW with its ROSCO controller, closed loop (below).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/build.sh
@@ -22,3 +23,10 @@ build/whirl steady cases/nrel5mw/Main_ROSCO.fst --wind 3:1:25 --out reports/nrel
 build/whirl campbell cases/nrel5mw/Main_ROSCO.fst --wind 3:1:25 --azimuths 36 --max-freq 3.2 --out reports/nrel5mw_rosco
 build/whirl campbell cases/nrel5mw/Main_ROSCO.fst --wind 3:1:25 --azimuths 36 --max-freq 3.2 --closed-loop \
   --out reports/nrel5mw_rosco/closed_loop
+# The NREL 5MW on the OC3-Hywind spar with a floating ROSCO controller (floating feedback Fl_Mode 1;
+# cases/oc3_hywind/rosco/README.md): closed loop along the wind (reports/oc3_hywind_rosco/closed_loop/)
+# and a wind step, nonlinear against the linear closed loop (reports/oc3_hywind_rosco/step_16mps/).
+build/whirl campbell cases/oc3_hywind/Main_ROSCO.fst --set RdtnMod=0 --wind 3:1:25 --azimuths 36 --max-freq 3.2 \
+  --closed-loop --out reports/oc3_hywind_rosco/closed_loop
+build/whirl verify cases/oc3_hywind/Main_ROSCO.fst --set RdtnMod=0 --closed-loop --wind 16 --tmax 60 \
+  --output GenSpeed --output PtfmPitch --output TTDspFA --out reports/oc3_hywind_rosco/step_16mps

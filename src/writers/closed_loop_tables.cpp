@@ -95,16 +95,23 @@ std::string marginEntries(const std::vector<ClosedLoopPoint>& points,
 std::string closedLoopGnuplotScript(const ClosedLoopCampbell& c, const CampbellPlotOptions& opt) {
   bool unstable = false;
   for (const ClosedLoopPoint& p : c.points) unstable = unstable || !p.stable;
-  const std::string unstable_f = "'closed_loop_modes.csv' using 1:(strcol(4) eq 'closed' && $12 == 1 ? $6 : NaN) "
-                                 "with points pt 2 ps 2 lw 2 lc rgb 'red' title 'unstable'";
-  const std::string unstable_z = "'closed_loop_modes.csv' using 1:(strcol(4) eq 'closed' && $12 == 1 ? 100*$8 : NaN) "
-                                 "with points pt 2 ps 2 lw 2 lc rgb 'red' notitle";
+  // The unstable roots as an inline data block (wind, frequency, damping %): the panels read
+  // whitespace-separated .dat files, and Gnuplot has one separator at a time (the CSV's commas would
+  // leave no valid point).
+  std::string block = "$unstable << EOD\n";
+  for (const ClosedLoopPoint& p : c.points)
+    for (const ClosedLoopMode& m : p.closed_modes)
+      if (m.eigenvalue.real() >= 0)
+        block += formatNumber(p.steady.condition.wind_speed.value_or(0)) + " " + formatNumber(m.freq_hz) + " " +
+                 formatNumber(100 * m.damping_ratio) + "\n";
+  block += "EOD\n";
+  const std::string unstable_f = "$unstable using 1:2 with points pt 2 ps 2 lw 2 lc rgb 'red' title 'unstable'";
+  const std::string unstable_z = "$unstable using 1:3 with points pt 2 ps 2 lw 2 lc rgb 'red' notitle";
   auto panel = [&](const std::string& column, const std::string& red) {
     std::string entries = lineEntries(c.open, "open_loop_campbell.dat", column, true, opt);
     const std::string closed = lineEntries(c.closed, "campbell.dat", column, false, opt);
     for (const std::string& e : {closed, unstable ? red : std::string()})
       if (!e.empty()) entries += (entries.empty() ? "" : ", \\\n       ") + e;
-    // Unstable roots come from the CSV: switch the separator for them only.
     return "  plot " + (entries.empty() ? std::string("NaN notitle") : entries) + "\n";
   };
   using Col = std::tuple<std::string, std::string, std::function<double(const ClosedLoopPoint&)>>;
@@ -120,7 +127,8 @@ std::string closedLoopGnuplotScript(const ClosedLoopCampbell& c, const CampbellP
   return "# Closed-loop Campbell diagram and loop margins written by whirl: gnuplot closed_loop.gp (from this folder)\n"
          "# Open loop grey dashed, closed loop in colour (lines tracked along the wind), unstable roots red.\n"
          "if (!exists('png_out')) png_out = 'closed_loop.png'\n"
-         "if (!exists('svg_out')) svg_out = 'closed_loop.svg'\n"
+         "if (!exists('svg_out')) svg_out = 'closed_loop.svg'\n" +
+         (unstable ? block : std::string()) +
          "set datafile separator whitespace\n"
          "set key noenhanced outside right font ',8'\n"
          "set grid\n"

@@ -144,3 +144,27 @@ TEST(CliVerifyClosedLoopSlow, WindStepTableAndFiles) {
 
 }  // namespace
 }  // namespace whirl::test
+
+namespace whirl::test {
+namespace {
+
+TEST(CliClosedLoopSlow, FloatingDeckMarksItsUnstableRootInThePlot) {
+  // cases/oc3_hywind/Main_ROSCO.fst: at 13 m/s the platform-pitch root is just unstable (ζ −0.16 %,
+  // docs/user/closed-loop.md). The red marker reads an inline data block: the CSV it read before could not
+  // be parsed with the .dat files' separator, and Gnuplot warned "no valid points" and drew no marker.
+  const auto dir = freshDir("cl_oc3");
+  const auto r = whirl("campbell cases/oc3_hywind/Main_ROSCO.fst --set RdtnMod=0 --wind 13:1:14 --azimuths 12 "
+                       "--closed-loop --out '" + dir.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("2 operating points (1 with a stable closed loop)"), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find("unstable at 13 m/s"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("no valid points"), std::string::npos) << r.err;
+  const std::string gp = slurp(dir / "closed_loop.gp");
+  EXPECT_NE(gp.find("$unstable << EOD\n13 "), std::string::npos) << gp.substr(0, 400);
+  // The floating feedback's filter states are named.
+  EXPECT_NE(slurp(dir / "closed_loop_modes.csv").find("floating feedback"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace whirl::test
+
