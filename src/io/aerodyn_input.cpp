@@ -59,6 +59,32 @@ void readWake(const OpenFastFile& f, AeroDynInput& a) {
     a.dbemt_key = "FrozenWake";
   }
   a.frozen_wake = a.DBEMT_Mod == -1;
+  if (f.has("tau1_const")) a.tau1_const = f.getDoubleOrDefault("tau1_const");
+  if ((a.DBEMT_Mod == 1 || a.DBEMT_Mod == 3) && a.Wake_Mod == 1) {
+    if (!a.tau1_const)
+      throw InputError(f.where(f.has("tau1_const") ? "tau1_const" : a.dbemt_key,
+                               "DBEMT_Mod " + std::to_string(a.DBEMT_Mod) + " needs tau1_const (a time constant in s)"));
+    if (!(*a.tau1_const > 0.0))
+      throw InputError(f.where("tau1_const", "must be > 0 with DBEMT_Mod " + std::to_string(a.DBEMT_Mod) + " (is " +
+                                                 numberText(*a.tau1_const) + ")"));
+  }
+}
+
+/// UAStartRad, UAEndRad (fractions of the largest element radius, AeroDyn_IO.f90: 0 and 1 when missing) and
+/// AoA34.
+void readUaSpan(const OpenFastFile& f, AeroDynInput& a) {
+  auto fraction = [&](const char* key, double fallback) {
+    const std::optional<double> v = f.has(key) ? f.getDoubleOrDefault(key) : std::nullopt;
+    if (v && (*v < 0.0 || *v > 1.0))
+      throw InputError(f.where(key, "must be a fraction of the rotor radius in [0, 1] (is " + numberText(*v) + ")"));
+    return v.value_or(fallback);
+  };
+  a.UAStartRad = fraction("UAStartRad", 0.0);
+  a.UAEndRad = fraction("UAEndRad", 1.0);
+  if (a.UAStartRad > a.UAEndRad)
+    throw InputError(f.where("UAEndRad", "must not be below UAStartRad (" + numberText(a.UAEndRad) + " < " +
+                                             numberText(a.UAStartRad) + "): no element would have UA"));
+  a.AoA34 = f.findBool("AoA34").value_or(true);
 }
 
 void readUnsteadyAero(const OpenFastFile& f, AeroDynInput& a) {
@@ -175,6 +201,7 @@ AeroDynInput readAeroDyn(const std::filesystem::path& file, const AeroDynEnviron
 
   readWake(f, a);
   readUnsteadyAero(f, a);
+  readUaSpan(f, a);
   a.TwrPotent = f.getInt("TwrPotent");
   a.TwrShadow = switchOrFlag(f, "TwrShadow", 0);
   a.TwrAero = f.getBool("TwrAero");

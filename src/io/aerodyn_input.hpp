@@ -76,6 +76,9 @@ struct AeroDynInput {
   int DBEMT_Mod = 0;
   std::string dbemt_key = "DBEMT_Mod";  ///< key that set DBEMT_Mod ("DBEMT_Mod", "FrozenWake" or "WakeMod")
   bool frozen_wake = false;             ///< induction held at its operating-point value when linearizing
+  /// DBEMT's time constant τ1 [s] (`tau1_const`, used with DBEMT_Mod 1 and 3; must then be > 0, AeroDyn's
+  /// DBEMT_ValidateInitInp); nullopt when absent.
+  std::optional<double> tau1_const;
 
   // ---- airfoil aerodynamics ----
   /// Unsteady airfoil model, as OpenFAST v4's UA_Mod: 0 quasi-steady; > 0 a dynamic-stall model
@@ -83,6 +86,11 @@ struct AeroDynInput {
   int UA_Mod = 0;
   std::string ua_key = "AFAeroMod";  ///< key that decided it ("AFAeroMod" or "UA_Mod")
   bool unsteadyAero() const { return UA_Mod > 0; }
+  /// The span over which UA runs, as fractions of the largest element radius (`UAStartRad`, `UAEndRad`;
+  /// AeroDyn: 0 and 1 when the lines are missing; elements below UAStartRad or above UAEndRad have no UA).
+  double UAStartRad = 0.0;
+  double UAEndRad = 1.0;
+  bool AoA34 = true;  ///< angle of attack at 3/4 chord (`AoA34`, OpenFAST v4+; true when absent)
 
   // ---- other physics switches (0 / false = off) ----
   int TwrPotent = 0;        ///< tower potential flow {0 none, 1 baseline, 2 Bak correction}

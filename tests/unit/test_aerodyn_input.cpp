@@ -334,3 +334,46 @@ TEST(AeroDynInputErrors, TruncatedTowerTable) {
 }
 
 }  // namespace
+
+namespace {
+
+// Dynamic inflow and unsteady-airfoil keys (issue 47): tau1_const, UAStartRad, UAEndRad, AoA34 as read,
+// AeroDyn's fallbacks when the lines are missing, and the refusals.
+TEST(AeroDynInput, DynamicInflowAndUnsteadyAirfoilKeys) {
+  const AeroDynInput v3 = readAeroDyn(aeroDir() / kV3);
+  EXPECT_EQ(v3.tau1_const, std::optional<double>(4.0));
+  EXPECT_DOUBLE_EQ(v3.UAStartRad, 0.15);
+  EXPECT_DOUBLE_EQ(v3.UAEndRad, 1.0);
+  EXPECT_TRUE(v3.AoA34);  // no AoA34 line before OpenFAST v4: true, as AeroDyn
+  const AeroDynInput v5 = readAeroDyn(aeroDir() / kV5);
+  EXPECT_FALSE(v5.AoA34);
+  EXPECT_DOUBLE_EQ(v5.UAStartRad, 0.0);
+  // The r-test deck with UA_Mod 4 and DBEMT_Mod 3 (tests/data/openfast-lin/ua4-dbemt3/case/AD.dat):
+  // no UAStartRad/UAEndRad lines, 0 and 1 (AeroDyn_IO.f90).
+  const AeroDynInput ua = readAeroDyn(whirl::test::sourceDir() / "tests/data/openfast-lin/ua4-dbemt3/case/AD.dat");
+  EXPECT_EQ(ua.UA_Mod, 4);
+  EXPECT_EQ(ua.DBEMT_Mod, 3);
+  EXPECT_EQ(ua.tau1_const, std::optional<double>(100.0));
+  EXPECT_DOUBLE_EQ(ua.UAStartRad, 0.0);
+  EXPECT_DOUBLE_EQ(ua.UAEndRad, 1.0);
+}
+
+TEST(AeroDynInputErrors, DynamicInflowAndUnsteadyAirfoilKeys) {
+  const std::string dbemt3 = "          3   DBEMT_Mod";
+  {
+    AeroScratch s;
+    s.edit(kV5, "         -1   DBEMT_Mod", dbemt3);
+    EXPECT_EQ(readAeroDyn(s.path(kV5)).tau1_const, std::optional<double>(4.0));  // accepted
+    s.edit(kV5, "          4   tau1_const", "          0   tau1_const");
+    EXPECT_EQ(whirl::test::withFilePlaceholder(inputErrorMessage([&] { readAeroDyn(s.path(kV5)); }), s.path(kV5)),
+              "<file>:43: tau1_const: must be > 0 with DBEMT_Mod 3 (is 0)");
+  }
+  EXPECT_EQ(editedError(kV5, "          0   UAStartRad", "        1.5   UAStartRad"),
+            "<file>:51: UAStartRad: must be a fraction of the rotor radius in [0, 1] (is 1.5)");
+  EXPECT_EQ(editedError(kV5, "          1   UAEndRad", "       -0.1   UAEndRad"),
+            "<file>:52: UAEndRad: must be a fraction of the rotor radius in [0, 1] (is -0.1)");
+  EXPECT_EQ(editedError(kV3, "1.0           UAEndRad", "0.1           UAEndRad"),
+            "<file>:41: UAEndRad: must not be below UAStartRad (0.1 < 0.15): no element would have UA");
+}
+
+}  // namespace
