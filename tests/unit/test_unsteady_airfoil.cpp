@@ -4,6 +4,8 @@
 // OpenFAST's own linearization (r-test Fake5MW_AeroLin_B1_UA4_DBEMT3, tests/data/openfast-lin/ua4-dbemt3).
 #include <gtest/gtest.h>
 
+#include <Eigen/Eigenvalues>
+
 #include <cmath>
 #include <algorithm>
 #include <fstream>
@@ -14,6 +16,7 @@
 
 #include "src/aero/dynamic_inflow.hpp"
 #include "src/aero/unsteady_airfoil.hpp"
+#include "src/aero/unsteady_airfoil_linear.hpp"
 #include "src/io/airfoil_input.hpp"
 #include "src/io/airfoil_ua.hpp"
 #include "src/model/scalar.hpp"
@@ -266,6 +269,41 @@ TEST(DynamicInflow, SteadyStateAndTimeConstants) {
   EXPECT_DOUBLE_EQ(start.v1, (1 - kOyeK) / 10.0);
   EXPECT_DOUBLE_EQ(dbemtTau2(100.0, 1.0), 13.0);
   EXPECT_DOUBLE_EQ(dbemtTau2(100.0, 0.0), 39.0);
+}
+
+}  // namespace
+
+namespace {
+
+TEST(UnsteadyAirfoilLinear, SlowInputsGiveTheQuasiSteadyDerivative) {
+  // Reduced frequency → 0: the linear model's static gain D − C A⁻¹ B equals the derivative of the model's
+  // own steady loads Cl(hgmSteady(α), α) (central differences, 1e-6 relative) everywhere, and in the
+  // attached region the static polar's slope C_lalpha = 2π — the quasi-steady value whirl's frozen-wake
+  // linearization uses. The direct term D (the instantaneous response) is not that slope: in attached flow
+  // ∂Cl/∂α34 at fixed states is C_lalpha (1 − A1 − A2) = 0 (Jones's split: all lift is lagged).
+  const ThinAirfoil af;
+  const UaSection s = af.section(1.5);
+  for (double deg : {3.3, 12.4, 15.7, 30.2}) {
+    const UaInput<double> in{deg * kDeg, deg * kDeg, 45.0, 0.0};
+    const UaElementLinear lin = uaElementLinear(s, hgmSteady(s, in), in);
+    const auto gain = lin.staticGain();
+    const double h = 1e-6;
+    auto steadyCl = [&](double a) {
+      const UaInput<double> i{a, a, 45.0, 0.0};
+      return hgmLoads(s, hgmSteady(s, i), i);
+    };
+    const auto p = steadyCl(deg * kDeg + h), m = steadyCl(deg * kDeg - h);
+    EXPECT_NEAR(gain(0, 0), (p.cl - m.cl) / (2 * h), 1e-6 * std::max(1.0, std::abs(gain(0, 0)))) << deg;
+    EXPECT_NEAR(gain(1, 0), (p.cd - m.cd) / (2 * h), 1e-6 * std::max(1.0, std::abs(gain(1, 0)))) << deg;
+    EXPECT_NEAR(gain(2, 0), (p.cm - m.cm) / (2 * h), 1e-6 * std::max(1.0, std::abs(gain(2, 0)))) << deg;
+    if (deg < 10) {
+      EXPECT_NEAR(gain(0, 0), 2 * kPi, 1e-10);
+      EXPECT_NEAR(lin.D(0, 0), 0.0, 1e-12);
+    }
+    // All four states decay (time constants c/(2U) times b_i⁻¹, T_p, T_f0).
+    const Eigen::EigenSolver<Eigen::Matrix4d> es(lin.A);
+    for (int k = 0; k < 4; ++k) EXPECT_LT(es.eigenvalues()(k).real(), 0.0);
+  }
 }
 
 }  // namespace
