@@ -23,6 +23,10 @@
 /// then blended towards the static polar at the section's α near UACutout and at U below 1 m/s
 /// (AeroDyn's UA_BlendSteady). Tu ω is limited to ±1.5 as AeroDyn does.
 ///
+/// UA_Mod 6 (Øye's dynamic stall, AeroDyn's UA_OYE) goes through the same functions with
+/// UaSection::ua_mod = 6: only x4 moves, towards f_st(α34) with T_f0 Tu; x1 = x2 = 0 and αE = α34; Cl =
+/// x4 Cl_fa(α34) + (1 − x4) Cl_fs(α34), Cd and Cm static at α34 (no ω terms), then the same blending.
+///
 /// Left out (as AeroDyn's UA_Mod 4): vortex lift (UA_Mod 5's fifth state), the U̇ terms, and the 2π
 /// wrap of α34 relative to x1/A1 (AddOrSub2Pi: it matters only when α crosses ±180°).
 #include "src/aero/polar.hpp"
@@ -51,6 +55,7 @@ struct UaSection {
   const UaTable* ua = nullptr;   ///< UA constants and separation columns (not owned)
   double chord = 0;              ///< [m]
   bool has_cm = true;            ///< the table has a Cm column (AeroDyn ColCm > 0)
+  int ua_mod = 4;                ///< 4 (HGM) or 6 (Øye)
 };
 
 /// Tu = c / (2 max(U, 0.01)), within [0.001, 50] s (AeroDyn Get_Tu).

@@ -45,7 +45,9 @@ T absT(const T& v) {
 
 /// αE = α34 (1 − A1 − A2) + x1 + x2, α34 wrapped into (−π, π] first (Get_HGM_constants).
 template <class T>
-T effectiveAngle(const UaConstants& c, const T& alpha_34, const HgmState<T>& x) {
+T effectiveAngle(const UaSection& s, const T& alpha_34, const HgmState<T>& x) {
+  if (s.ua_mod == 6) return alpha_34;  // UA_OYE: no shed vorticity
+  const UaConstants& c = s.ua->c;
   return alpha_34 * (1.0 - c.A1 - c.A2) + x.x1 + x.x2;
 }
 
@@ -69,9 +71,13 @@ HgmState<T> hgmDerivative(const UaSection& s, const HgmState<T>& x, const UaInpu
   const UaConstants& c = s.ua->c;
   const T tu = hgmTimeScale(in.u, s.chord);
   const T a34 = wrapped(in.alpha_34);
-  const T alpha_e = effectiveAngle(c, a34, x);
-  const T alpha_f = x.x3 / c.c_lalpha + c.alpha0;  // Get_alphaF, eq. 15
   const T x4 = clampT<T>(x.x4, 0.0, 1.0);
+  if (s.ua_mod == 6) {  // UA_OYE: x4 alone, alphaF = α34
+    const T zero(0.0);
+    return {zero, zero, zero, (separationAt(*s.ua, a34).f_st - x4) / (c.T_f0 * tu)};
+  }
+  const T alpha_e = effectiveAngle(s, a34, x);
+  const T alpha_f = x.x3 / c.c_lalpha + c.alpha0;  // Get_alphaF, eq. 15
   const T f_st = separationAt(*s.ua, alpha_f).f_st;
   const T cl_p = c.c_lalpha * (alpha_e - c.alpha0) + kPi * tuOmega(tu, in.omega);  // eq. 13
   HgmState<T> d;
@@ -89,6 +95,9 @@ HgmState<T> hgmSteady(const UaSection& s, const UaInput<T>& in) {
   const T tu = hgmTimeScale(in.u, s.chord);
   const T a34 = wrapped(in.alpha_34);
   HgmState<T> x;
+  if (s.ua_mod == 6) {  // HGM_Steady for UA_OYE: x3 the static Cl (unused), x4 = f_st(α34)
+    return {T(0.0), T(0.0), evaluate(*s.polar, a34).cl, separationAt(*s.ua, a34).f_st};
+  }
   x.x1 = c.A1 * a34;
   x.x2 = c.A2 * a34;
   x.x3 = c.c_lalpha * (a34 - c.alpha0) + kPi * tuOmega(tu, in.omega);
@@ -103,7 +112,7 @@ Coefficients<T> hgmLoads(const UaSection& s, const HgmState<T>& x, const UaInput
   const UaConstants& c = s.ua->c;
   const T tu = hgmTimeScale(in.u, s.chord);
   const T a34 = wrapped(in.alpha_34);
-  const T alpha_e = effectiveAngle(c, a34, x);
+  const T alpha_e = effectiveAngle(s, a34, x);
   const T tw = tuOmega(tu, in.omega);
   const T x4 = clampT<T>(x.x4, 0.0, 1.0);
   const Coefficients<T> st_e = evaluate(*s.polar, alpha_e);
@@ -115,9 +124,15 @@ Coefficients<T> hgmLoads(const UaSection& s, const HgmState<T>& x, const UaInput
   const T delta = 0.5 * (root(sep_e.f_st) - root(x4)) - 0.25 * (sep_e.f_st - x4);
   const T cl_circ = x4 * cl_fa + (1.0 - x4) * sep_e.cl_fs;  // eq. 19
   Coefficients<T> out;
-  out.cl = cl_circ + kPi * tw;                                                              // eq. 16
-  out.cd = st_e.cd + (a34 - alpha_e) * cl_circ + (st_e.cd - c.Cd0) * delta + cl_circ * tw;  // eq. 17
-  out.cm = s.has_cm ? T(st_e.cm - 0.5 * kPi * tw) : T(0.0);                                 // eq. 18
+  if (s.ua_mod == 6) {  // UA_OYE: the lagged separation only, static Cd and Cm
+    out.cl = cl_circ;
+    out.cd = st_e.cd;
+    out.cm = s.has_cm ? st_e.cm : T(0.0);
+  } else {
+    out.cl = cl_circ + kPi * tw;                                                              // eq. 16
+    out.cd = st_e.cd + (a34 - alpha_e) * cl_circ + (st_e.cd - c.Cd0) * delta + cl_circ * tw;  // eq. 17
+    out.cm = s.has_cm ? T(st_e.cm - 0.5 * kPi * tw) : T(0.0);                                 // eq. 18
+  }
   // UA_BlendSteady: towards the static polar at the section's α near UACutout and at low speed.
   const T w = (1.0 - blendCosine(absT(wrapped(in.alpha_ac)), c.ua_cutout_blend, c.ua_cutout)) *
               blendCosine(absT(in.u), kUMin, 1.0);

@@ -17,7 +17,8 @@ struct UaElementLinear {
   Eigen::Matrix<double, 3, 4> C;     ///< ∂[Cl, Cd, Cm]/∂x
   Eigen::Matrix<double, 3, 3> D;     ///< ∂[Cl, Cd, Cm]/∂[α34, U, ω] at fixed states
   /// The static (s → 0) gain D − C A⁻¹ B: the loads' response to slow changes of the inputs, the
-  /// quasi-steady derivative of the model's steady loads (A is Hurwitz: all its time constants positive).
+  /// quasi-steady derivative of the model's steady loads (UA_Mod 4: A is Hurwitz, all its time constants
+  /// positive; UA_Mod 6 leaves x1..x3 out and A singular: use its x4 row and column alone).
   Eigen::Matrix<double, 3, 3> staticGain() const;
 };
 

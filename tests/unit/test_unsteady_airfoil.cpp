@@ -307,3 +307,48 @@ TEST(UnsteadyAirfoilLinear, SlowInputsGiveTheQuasiSteadyDerivative) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(UnsteadyAirfoilOye, SeparationLagOnlyAndStaticSteadyState) {
+  // UA_Mod 6 (AeroDyn's UA_OYE): x4 alone relaxes towards f_st(α34) with the time constant T_f0 c/(2U);
+  // from the steady state at 12 deg, after a step to 16 deg, x4(t) = f16 + (f12 − f16) e^{−t/(T_f0 Tu)}
+  // (one linear ODE: RK4 with h = 0.01 T_f0 Tu, global error ~1e-11 per 100 steps). The steady loads are the static polar's
+  // at the knots; Cd and Cm are static at every state.
+  const ThinAirfoil af;
+  UaSection s = af.section(1.5);
+  s.ua_mod = 6;
+  const double u = 30.0, tu = 1.5 / 60.0, tf = af.ua.c.T_f0 * tu;
+  for (double d : {-30.0, 0.0, 5.0, 12.0, 17.0, 60.0}) {
+    const UaInput<double> in{d * kDeg, d * kDeg, u, 0.3};
+    const HgmState<double> x = hgmSteady(s, in);
+    EXPECT_NEAR(hgmDerivative(s, x, in).x4, 0.0, 1e-14);
+    const auto l = hgmLoads(s, x, in);
+    const auto st = evaluate(af.polar, d * kDeg);
+    EXPECT_NEAR(l.cl, st.cl, 1e-12) << d;  // no π Tu ω term in UA_Mod 6
+    EXPECT_NEAR(l.cd, st.cd, 1e-12) << d;
+    EXPECT_NEAR(l.cm, st.cm, 1e-12) << d;
+  }
+  const UaInput<double> start{12 * kDeg, 12 * kDeg, u, 0.0}, step{16 * kDeg, 16 * kDeg, u, 0.0};
+  HgmState<double> x = hgmSteady(s, start);
+  const double f12 = x.x4, f16 = separationAt(af.ua, 16 * kDeg).f_st;
+  ASSERT_GT(f12 - f16, 0.05);
+  const double h = 0.01 * tf;
+  for (int k = 1; k <= 300; ++k) {
+    const auto k1 = hgmDerivative(s, x, step);
+    const auto k2 = hgmDerivative(s, add(x, k1, h / 2), step);
+    const auto k3 = hgmDerivative(s, add(x, k2, h / 2), step);
+    const auto k4 = hgmDerivative(s, add(x, k3, h), step);
+    EXPECT_EQ(k1.x1, 0.0);
+    EXPECT_EQ(k1.x3, 0.0);
+    x.x4 += h / 6 * (k1.x4 + 2 * k2.x4 + 2 * k3.x4 + k4.x4);
+    if (k % 100 == 0) {
+      EXPECT_NEAR(x.x4, f16 + (f12 - f16) * std::exp(-k * h / tf), 1e-10) << k;
+    }
+  }
+  const UaElementLinear lin = uaElementLinear(s, x, step);
+  EXPECT_NEAR(lin.A(3, 3), -1.0 / tf, 1e-9);
+  EXPECT_EQ(lin.A.topRows<3>().norm(), 0.0);
+}
+
+}  // namespace
