@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "src/aero/ua_coefficients.hpp"
+#include "src/aero/ua_span.hpp"
 #include "src/io/airfoil_input.hpp"
 #include "src/io/airfoil_ua.hpp"
 #include "tests/unit/aero_test_util.hpp"
@@ -165,6 +166,28 @@ TEST(UaCoefficients, BadConstantsNameFileLineAndKey) {
               HasSubstr("NumTabs: table 3 asked for, the file has 2"));
   EXPECT_THAT(inputErrorMessage([&] { airfoilUa(readAirfoil(uaDeckDir() / "case/NACA64_A17_2Prop.dat"), 0, 5); }),
               HasSubstr("NACA64_A17_2Prop.dat:14: InclUAdata: UA_Mod 5"));
+}
+
+}  // namespace
+
+namespace {
+
+TEST(UaSpan, ElementsWithStatesAsAeroDynDecides) {
+  // The r-test deck (AD_blade_4stations.dat: node 1 Cylinder1.dat, nodes 2–4 NACA64_A17_2Prop.dat; no
+  // UAStartRad/UAEndRad): OpenFAST's .lin lists UA states at nodes 2–4 only (states 19–30).
+  const UaTable cyl = airfoilUa(readAirfoil(uaDeckDir() / "5MW_Baseline/Airfoils/Cylinder1.dat"), 0, 4);
+  const UaTable naca = naca64Table1();
+  EXPECT_FALSE(whirl::aero::uaPossible(cyl));
+  EXPECT_TRUE(whirl::aero::uaPossible(naca));
+  // Span rule: frac = r/rMax; off up to the last element below UAStartRad and from the first above UAEndRad.
+  const std::vector<double> r{1.5, 24.05, 44.55, 63.0};
+  using whirl::aero::uaSpanMask;
+  EXPECT_EQ(uaSpanMask(r, 63.0, 0.0, 1.0), (std::vector<bool>{true, true, true, true}));
+  EXPECT_EQ(uaSpanMask(r, 63.0, 0.3, 1.0), (std::vector<bool>{false, true, true, true}));
+  EXPECT_EQ(uaSpanMask(r, 63.0, 0.4, 0.9), (std::vector<bool>{false, false, true, false}));
+  // AeroDyn's rule is by index, not by each element's own fraction: an element above UAStartRad that lies
+  // inside of one below it (a non-monotonic r) is off too.
+  EXPECT_EQ(uaSpanMask({1.5, 30.0, 20.0, 63.0}, 63.0, 0.4, 1.0), (std::vector<bool>{false, false, false, true}));
 }
 
 }  // namespace
