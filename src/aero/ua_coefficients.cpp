@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "src/model/error.hpp"
@@ -162,6 +163,12 @@ void liftSlopes(const UaGiven& g, const Rows& r, const std::vector<double>& cn, 
   while (lo + 1 < s.high_limit && r.alpha[lo] < c.alpha_lower + margin) ++lo;
   std::size_t hi = s.high_limit;
   while (hi > lo + 1 && r.alpha[hi] > c.alpha_upper - margin) --hi;
+  if (hi <= lo) {  // fewer than two rows: AeroDyn's Calculate_C_alpha gives ε slopes and alpha0 = 0
+    c.c_nalpha = g.c_nalpha.value_or(std::numeric_limits<double>::epsilon());
+    c.c_lalpha = g.c_lalpha.value_or(std::numeric_limits<double>::epsilon());
+    c.alpha0 = g.alpha0.value_or(0.0);
+    return;
+  }
   const Eigen::Index m = static_cast<Eigen::Index>(hi - lo + 1);
   Eigen::MatrixXd a(m, 2);
   Eigen::MatrixXd b(m, 2);
@@ -193,7 +200,10 @@ void separationZero(const Rows& r, const UaConstants& c, std::vector<double>& f,
   if (i_temp == n || i_high == n) return;  // no row beyond the linear region on one side
   const double a_up = r.alpha[i_high], a_lo = r.alpha[i_low];
   const double cn_up = fa[i_high], cn_lo = fa[i_low];
-  const double rate = (cn_up - cn_lo) / ((a_up - 2 * kPi) - a_lo);
+  // The wrap-around slope from the upper break (−2π) to the lower one; 0 when they coincide (a table of
+  // three rows, −180°, 0, 180°), where AeroDyn divides by zero (the column is not used by UA_Mod 4 or 6).
+  const double span = (a_up - 2 * kPi) - a_lo;
+  const double rate = span != 0.0 ? (cn_up - cn_lo) / span : 0.0;
   for (std::size_t k = 0; k <= i_low; ++k) {
     fa[k] = (r.alpha[k] - a_lo) * rate + cn_lo;
     fs[k] = r.cl[k];

@@ -191,3 +191,27 @@ TEST(UaSpan, ElementsWithStatesAsAeroDynDecides) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(UaCoefficients, SmallAndOddTablesDoNotBreak) {
+  // Three rows (-180, 0, 180 deg) and a coarse table: every constant finite, f_st within [0, 1].
+  using whirl::aero::uaTable;
+  const double pi = std::numbers::pi;
+  for (const std::vector<double>& a : {std::vector<double>{-pi, 0.0, pi}, std::vector<double>{-pi, -0.5, 0.1, 0.5, pi}}) {
+    std::vector<double> cl, cd, cm;
+    for (double x : a) {
+      cl.push_back(std::sin(2 * x) + 0.3 * std::sin(x));
+      cd.push_back(0.02 + std::sin(x) * std::sin(x));
+      cm.push_back(0.0);
+    }
+    const UaTable t = uaTable({}, a, cl, cd, cm, whirl::aero::PolarInterp::Linear, 4, "t");
+    EXPECT_TRUE(std::isfinite(t.c.c_lalpha) && std::isfinite(t.c.alpha0) && std::isfinite(t.c.Cm0));
+    for (double f : t.columns.cl) {
+      EXPECT_GE(f, 0.0);
+      EXPECT_LE(f, 1.0);
+    }
+  }
+}
+
+}  // namespace
