@@ -10,7 +10,7 @@
 #include "linearize/periodic.hpp"
 #include "linearize/point_validity.hpp"
 #include "linearize/trim.hpp"
-#include "modal/campbell_sweep.hpp"
+#include "modal/campbell_diagram.hpp"
 #include "modal/lin_modes.hpp"
 #include "modal/rotor_modes.hpp"
 #include "modal/tracking.hpp"
@@ -131,8 +131,9 @@ py::dict campbell(const PyModel& p, const std::optional<std::vector<double>>& rp
       trim.progress = guard.phase(0);
       for (const SteadyState& s : trimSchedule(m, *wind, trim)) points.push_back(sweepPointOf(s));
     }
-    d.points = campbellSweep(m, points, sweep);
-    d.lines = trackModes(d.points);
+    CampbellDiagramOptions cd;
+    cd.sweep = sweep;
+    d = campbellDiagram(m, points, cd);
   });
   return campbellColumns(d, participations);
 }

@@ -113,8 +113,7 @@ void addBodeCommand(CLI::App& app) {
   cmd->add_option("--from", opt->f0, "lowest frequency [Hz]")->check(CLI::PositiveNumber);
   cmd->add_option("--to", opt->f1, "highest frequency [Hz]")->check(CLI::PositiveNumber);
   cmd->add_option("--points", opt->points, "number of frequencies")->check(CLI::Range(2, 100000));
-  cmd->add_option("--azimuths", opt->azimuths, "azimuths per revolution for the multiblade average")
-      ->check(CLI::Range(1, 3600));
+  addMultibladeAzimuths(*cmd, opt->azimuths);
   cmd->add_option("--out", opt->out, "output folder (default reports/<case name>)");
   cmd->add_flag("--closed-loop", opt->closed_loop,
                 "with --wind on a deck with ROSCO's controller: the closed loop's response (outputs also "

@@ -6,7 +6,7 @@
 
 #include "linearize/trim.hpp"
 #include "src/writers/campbell_output.hpp"
-#include "modal/campbell_sweep.hpp"
+#include "modal/campbell_diagram.hpp"
 #include "modal/closed_loop_campbell.hpp"
 #include "src/writers/closed_loop_tables.hpp"
 #include "linearize/sweep.hpp"
@@ -60,10 +60,8 @@ void runClosedLoop(const CampbellOptions& opt) {
   clo.tracking.overrides_file = opt.tracking;
   clo.progress = sweepProgress("campbell");
   ClosedLoopCampbell c = closedLoopCampbell(m, *controller, schedule, clo);
-  std::string name = m.name.substr(0, m.name.find(". "));
-  if (name.empty() || name.size() > 70) name = std::filesystem::path(opt.model.case_path).filename().string();
-  c.closed.title = "Closed-loop Campbell diagram: " + name;
-  c.open.title = "Open-loop Campbell diagram: " + name;
+  c.closed.title = "Closed-loop " + campbellTitle(m, opt.model.case_path);
+  c.open.title = "Open-loop " + campbellTitle(m, opt.model.case_path);
   for (const ClosedLoopPoint& p : c.points)
     if (!p.stable)
       std::fprintf(stderr, "whirl: warning: the closed loop is unstable at %g m/s (least damping ratio %.3g %%)\n",
@@ -108,46 +106,23 @@ void run(const CampbellOptions& opt) {
   prepareOutputFolder(dir);
 
   if (parallel::launchedByMpi()) parallel::requirePetsc("mpirun");  // start-up outside the timing
-  SweepOptions sweep;
-  sweep.azimuths = opt.azimuths;
-  sweep.check_point = [&opt](const Model& pm, const std::vector<OperatingPoint>& ops, const SweepPoint& sp) {
+  CampbellDiagramOptions cd;
+  cd.sweep.azimuths = opt.azimuths;
+  cd.sweep.check_point = [&opt](const Model& pm, const std::vector<OperatingPoint>& ops, const SweepPoint& sp) {
     return checkSolvedPoints(opt.model, pm, ops, fmt::format("{:g} rpm", sp.rpm));
   };
   const auto start = std::chrono::steady_clock::now();
-  sweep.progress = sweepProgress("campbell");
-  CampbellDiagram d;
-  // Title: the model's name up to its first sentence (ElastoDyn headers run long), else the file.
-  std::string name = m.name.substr(0, m.name.find(". "));
-  if (name.empty() || name.size() > 70) name = std::filesystem::path(opt.model.case_path).filename().string();
-  d.title = "Campbell diagram: " + name;
-  d.points = campbellSweep(m, points, sweep);
-  if (parallel::rank() != 0) return;  // under mpirun: rank 0 tracks and writes
-  TrackingOptions track;
-  track.overrides_file = opt.tracking;
-  d.lines = trackModes(d.points, track);
+  cd.sweep.progress = sweepProgress("campbell");
+  cd.tracking.overrides_file = opt.tracking;
+  cd.title = campbellTitle(m, opt.model.case_path);
+  const CampbellDiagram d = campbellDiagram(m, points, cd);
+  if (parallel::rank() != 0) return;  // under mpirun: rank 0 writes
   // Negative damping is an instability: say where, one line per tracked mode.
-  for (const CampbellLine& line : d.lines) {
-    int count = 0;
-    double worst = 0;
-    std::size_t at = 0;
-    for (std::size_t p = 0; p < d.points.size(); ++p) {
-      if (line.mode[p] < 0) continue;
-      const Mode& md = d.points[p].modes[static_cast<std::size_t>(line.mode[p])];
-      if (md.rigid_body || !(md.damping_ratio < 0)) continue;
-      ++count;
-      if (md.damping_ratio < worst) {
-        worst = md.damping_ratio;
-        at = p;
-      }
-    }
-    if (count > 0) {
-      const CampbellPoint& p = d.points[at];
-      char where[64];
-      if (p.wind_speed) std::snprintf(where, sizeof where, "%g m/s", *p.wind_speed);
-      else std::snprintf(where, sizeof where, "%g rpm", p.rpm);
-      std::fprintf(stderr, "whirl: warning: %s is unstable (negative damping) at %d of %zu points; lowest %.3g %% at %s\n",
-                   line.name.c_str(), count, d.points.size(), 100 * worst, where);
-    }
+  for (const LineInstability& u : lineInstabilities(d)) {
+    const CampbellPoint& p = d.points[u.at];
+    const std::string where = p.wind_speed ? fmt::format("{:g} m/s", *p.wind_speed) : fmt::format("{:g} rpm", p.rpm);
+    std::fprintf(stderr, "whirl: warning: %s is unstable (negative damping) at %d of %zu points; lowest %.3g %% at %s\n",
+                 u.name.c_str(), u.points, d.points.size(), 100 * u.lowest_damping, where.c_str());
   }
 
   CampbellPlotOptions plot;
@@ -189,8 +164,7 @@ void addCampbellCommand(CLI::App& app) {
   cmd->add_option("--wind", opt->wind_range,
                   "wind speeds START:STEP:STOP [m/s], each trimmed (rotor speed below rated, pitch above; needs "
                   "aerodynamics and a generator torque law)");
-  cmd->add_option("--azimuths", opt->azimuths, "azimuths per revolution for the multiblade average")
-      ->check(CLI::Range(1, 3600));
+  addMultibladeAzimuths(*cmd, opt->azimuths);
   cmd->add_option("--out", opt->out, "output folder (default reports/<case name>)");
   cmd->add_option("--tracking", opt->tracking, "mode-tracking overrides file (rename, assign; docs/theory/mode-tracking.md)");
   cmd->add_option("--versus", opt->versus, "x axis: rpm, wind or auto (wind with --schedule or --wind)")

@@ -171,8 +171,7 @@ void addExportCommand(CLI::App& app) {
   cmd->add_option("--wind", opt->wind_range,
                   "wind speeds START:STEP:STOP [m/s], each trimmed as `whirl steady` (aerodynamic models with a "
                   "generator torque law)");
-  cmd->add_option("--azimuths", opt->azimuths, "azimuths per revolution (periodic linearization, multiblade average)")
-      ->check(CLI::Range(1, 3600));
+  addMultibladeAzimuths(*cmd, opt->azimuths);
   cmd->add_option("--format", opt->format, "mat, lin or json")->required()->check(CLI::IsMember({"mat", "lin", "json"}));
   cmd->add_option("--out", opt->out, "output folder (default reports/<case name>)");
   cmd->add_option("--inputs", opt->inputs, "keep these inputs, comma-separated, in this order (default: all)");

@@ -111,8 +111,7 @@ void addModesCommand(CLI::App& app) {
                "averaged over the azimuths)");
   addModelOptions(*cmd, opt->model);
   cmd->add_option("--format", opt->format, "table, csv or json")->check(CLI::IsMember({"table", "csv", "json"}));
-  cmd->add_option("--azimuths", opt->azimuths, "azimuths per revolution for rotors (multiblade average)")
-      ->check(CLI::Range(1, 3600));
+  addMultibladeAzimuths(*cmd, opt->azimuths);
   cmd->add_option("--solver", opt->solver,
                   "eigensolver: dense (LAPACK, all modes), sparse (SLEPc, the lowest --nmodes, each with its "
                   "residual) or auto (sparse from " + std::to_string(kSparseSolverThreshold) + " coordinates)")

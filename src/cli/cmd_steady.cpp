@@ -121,7 +121,7 @@ void addSteadyCommand(CLI::App& app) {
   addModelOptions(*cmd, opt->model, false);
   cmd->add_option("--wind", opt->wind_range, "wind speeds START:STEP:STOP [m/s], trimmed");
   cmd->add_option("--schedule", opt->schedule, "operating schedule CSV (WindSpeed, RotSpeed, BldPitch columns)");
-  cmd->add_option("--azimuths", opt->azimuths, "equilibria per point, over one blade passage")->check(CLI::Range(1, 360));
+  addTrimAzimuths(*cmd, opt->azimuths);
   cmd->add_option("--out", opt->out, "output folder (default reports/<case name>)");
   cmd->add_flag("--no-plot", opt->no_plot, "write the table and the Gnuplot script, do not run Gnuplot");
   cmd->callback([opt]() { run(*opt); });

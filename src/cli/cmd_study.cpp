@@ -99,8 +99,7 @@ void addStudyCommand(CLI::App& app) {
       ->required();
   cmd->add_option("--rpm", opt->rpm_range, "rotor speeds START:STEP:STOP [rpm]");
   cmd->add_option("--schedule", opt->schedule, "operating schedule CSV (wind speed, RotSpeed, BldPitch columns)");
-  cmd->add_option("--azimuths", opt->azimuths, "azimuths per revolution for the multiblade average")
-      ->check(CLI::Range(1, 3600));
+  addMultibladeAzimuths(*cmd, opt->azimuths);
   cmd->add_option("--out", opt->out, "output folder (default reports/<case name>)");
   cmd->add_option("--tracking", opt->tracking, "mode-tracking overrides file, applied to every set");
   cmd->callback([opt]() { runWithCaseSource(opt->model.case_path, [&] { run(*opt); }); });

@@ -247,7 +247,7 @@ void addTuneCommand(CLI::App& app) {
   cmd->add_flag("--full-model-placement", opt->full_model_placement,
                 "place the pitch loop's root on the whole linear model (Newton on K_p, K_i from the one-state gains; "
                 "with --discon its speed filter in the loop) and write those gains; implies --full-model");
-  cmd->add_option("--azimuths", opt->azimuths, "equilibria per point, over one blade passage")->check(CLI::Range(1, 360));
+  addTrimAzimuths(*cmd, opt->azimuths);
   cmd->add_option("--out", opt->out, "output folder (default reports/<case name>)");
   cmd->callback([opt]() { run(*opt); });
 }

@@ -35,6 +35,15 @@ void addModelOptions(CLI::App& cmd, ModelOptions& opt, bool with_rpm) {
                "let a YAML case's `file:` entries name files outside the case folder");
 }
 
+CLI::Option* addMultibladeAzimuths(CLI::App& cmd, int& azimuths) {
+  return cmd.add_option("--azimuths", azimuths, "azimuths per revolution: periodic linearization, multiblade average")
+      ->check(CLI::Range(1, 3600));
+}
+
+CLI::Option* addTrimAzimuths(CLI::App& cmd, int& azimuths) {
+  return cmd.add_option("--azimuths", azimuths, "equilibria per point, over one blade passage")->check(CLI::Range(1, 360));
+}
+
 OperatingCondition operatingCondition(const Model& m, const ModelOptions& opt) {
   OperatingCondition c = modelCondition(m);
   if (opt.rpm) {

@@ -15,6 +15,7 @@
 
 namespace CLI {
 class App;
+class Option;
 }
 
 namespace whirl::cli {
@@ -30,6 +31,12 @@ struct ModelOptions {
 
 /// Registers CASE, --set, --allow-invalid-point, --allow-outside-files and (when with_rpm) --rpm.
 void addModelOptions(CLI::App& cmd, ModelOptions& opt, bool with_rpm = true);
+
+/// `--azimuths N` of the commands that linearize a rotor over a revolution and average it in multiblade
+/// coordinates: one help text and range (1–3600) for all of them.
+CLI::Option* addMultibladeAzimuths(CLI::App& cmd, int& azimuths);
+/// `--azimuths N` of the commands that trim: equilibria per point over one blade passage (1–360).
+CLI::Option* addTrimAzimuths(CLI::App& cmd, int& azimuths);
 
 /// Loads the case — a YAML case file (.yaml, .yml), or an OpenFAST .fst / ElastoDyn .dat — with
 /// --set applied before the model is built. --rpm does not change the model: see operatingCondition.
