@@ -187,9 +187,11 @@ TEST(UnsteadyAirfoil, ElementBlockMatchesOpenFastLinearization) {
   // The UA rows and columns of OpenFAST's A (states 19–30: x1..x4 at nodes 2–4) depend on the element
   // only through Tu, the constants and the slope of f_st at alphaF. Tu and α34 follow from the
   // operating point's x1, x2 and their xdot (dx_i/dt = b_i/Tu (A_i α34 − x_i)), independently of A.
-  // whirl's AD Jacobian ∂(dx/dt)/∂x at OpenFAST's x then matches A's 4x4 block: the entries set by
-  // constants to 1e-6 relative (A has 13 digits; the derived Tu carries ~1e-9), ∂ẋ4/∂x3 (the f_st slope, OpenFAST by central differences of a piecewise-linear
-  // table) within 1 %; the other entries of OpenFAST's block are below 1e-14 (zero here).
+  // whirl's AD Jacobian ∂(dx/dt)/∂x at OpenFAST's x then matches A's 4x4 block. Measured: the diagonal
+  // within 5e-12, ∂ẋ3/∂x1 = ∂ẋ3/∂x2 = C_lalpha/(T_p Tu) within 5.8e-7 at all three nodes (a constant
+  // factor: AeroDyn's single-precision constants), ∂ẋ4/∂x3 (the f_st slope, which OpenFAST forms by
+  // central differences on its piecewise-linear table) within 1.7e-6; OpenFAST's other entries are below
+  // 1e-14 (zero here). Tolerances 1e-6 and, for the f_st slope, 1e-5.
   const Reference ref;
   ASSERT_EQ(ref.a.size(), 900u);
   ASSERT_EQ(ref.x.size(), 30u);
@@ -219,7 +221,7 @@ TEST(UnsteadyAirfoil, ElementBlockMatchesOpenFastLinearization) {
     for (int r = 0; r < 4; ++r)
       for (int k = 0; k < 4; ++k) {
         const double ofa = ref.A(b + r, b + k), mine = rows[r]->derivatives()(k);
-        const double tol = (r == 3 && k == 2) ? 0.01 * std::abs(ofa) : 1e-6 * std::max(std::abs(ofa), 1e-8);
+        const double tol = (r == 3 && k == 2) ? 1e-5 * std::abs(ofa) : 1e-6 * std::max(std::abs(ofa), 1e-8);
         EXPECT_NEAR(mine, ofa, tol) << "node " << node + 2 << " A(" << b + r << "," << b + k << ")";
       }
     // And the state derivatives themselves at OpenFAST's point (ω unknown: x3's row is left out).
