@@ -117,7 +117,7 @@ std::size_t commentStart(std::string_view s) {
 
 class DisconFile {
  public:
-  DisconFile(const std::string& text, std::string file) : file_(std::move(file)) {
+  DisconFile(const std::string& text, std::string file, OverrideSet* overrides) : file_(std::move(file)) {
     std::istringstream in(text);
     std::string raw;
     int lineno = 0;
@@ -156,6 +156,8 @@ class DisconFile {
       if (!knownKeys().count(lower))
         throw InputError(where(file_, lineno, e.key, "not a key of ROSCO's DISCON.IN (ROSCO 2.10 or earlier): check the spelling"));
       if (e.values.empty()) throw InputError(where(file_, lineno, e.key, "no value before the key"));
+      if (overrides)  // --set KEY=VALUE: the value as if written here (its line stays the key's)
+        if (const std::optional<std::string> v = overrides->take(e.key, file_)) e.values = valueWords(*v);
       const auto [it, fresh] = index_.emplace(lower, entries_.size());
       if (!fresh)
         throw InputError(where(file_, lineno, e.key,
@@ -477,8 +479,8 @@ void noteDisconModes(const DisconFile& f, RoscoController& c) {
 
 }  // namespace
 
-RoscoController parseDiscon(const std::string& text, const std::filesystem::path& file) {
-  const DisconFile f(text, file.string());
+RoscoController parseDiscon(const std::string& text, const std::filesystem::path& file, OverrideSet* overrides) {
+  const DisconFile f(text, file.string(), overrides);
   RoscoController c;
   c.file = file.string();
   readDisconParameters(f, c);
@@ -487,13 +489,13 @@ RoscoController parseDiscon(const std::string& text, const std::filesystem::path
   return c;
 }
 
-std::optional<RoscoController> readServoDynController(const ServoDynInput& servo) {
+std::optional<RoscoController> readServoDynController(const ServoDynInput& servo, OverrideSet* overrides) {
   const OpenFastFile& f = servo.source;
   if (servo.VSContrl.value_or(0) != 5 || !f.has("DLL_InFile")) return std::nullopt;
   const std::filesystem::path file = f.getPath("DLL_InFile");
   std::error_code ec;
   if (!std::filesystem::is_regular_file(file, ec)) return std::nullopt;
-  RoscoController c = readDiscon(file);
+  RoscoController c = readDiscon(file, overrides);
   if (servo.PCMode.value_or(0) != 5 && c.PC_ControlMode != 0) {
     c.PC_ControlMode = 0;
     c.notes.push_back(f.where("PCMode", std::to_string(servo.PCMode.value_or(0)) +
@@ -511,13 +513,13 @@ std::optional<RoscoController> readDeckController(const std::filesystem::path& d
   if (fst.CompServo == 0) return std::nullopt;
   const std::optional<ServoDynInput> servo = readServoDynIfEnabled(fst, &set);
   if (!servo) return std::nullopt;
-  return readServoDynController(*servo);
+  return readServoDynController(*servo, &set);
 }
 
-RoscoController readDiscon(const std::filesystem::path& file) {
+RoscoController readDiscon(const std::filesystem::path& file, OverrideSet* overrides) {
   std::string text;  // the one preamble of every input file (regular files only, size bounded)
   if (!readInputFile(file.string(), text)) throw InputError(where(file.string(), 0, "", "cannot open file"));
-  return parseDiscon(text, file);
+  return parseDiscon(text, file, overrides);
 }
 
 }  // namespace whirl::io

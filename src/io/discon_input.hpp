@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "src/io/openfast_overrides.hpp"
 #include "src/io/servodyn_input.hpp"
 #include "src/model/rosco_controller.hpp"
 
@@ -28,23 +29,24 @@ namespace whirl::io {
 /// `PS_WindSpeeds`, `PC_MinPit < PC_MaxPit`, negative `VS_KP/VS_KI`, …), and `notes` naming each active
 /// mode whirl does not model with what the linear model assumes instead. Throws InputError
 /// "file:line: key: reason" (the file alone for an unreadable file, the key without a line for a
-/// missing key).
-RoscoController readDiscon(const std::filesystem::path& file);
+/// missing key). `overrides` (--set KEY=VALUE) replace the values of the keys the file writes.
+RoscoController readDiscon(const std::filesystem::path& file, OverrideSet* overrides = nullptr);
 
 /// The ROSCO controller of a ServoDyn deck: with `VSContrl = 5` and a `DLL_InFile` naming a file that
 /// exists, that file read as a DISCON.IN (errors as readDiscon's). With `PCMode` other than 5 the pitch is
 /// not the library's: PC_ControlMode is set to 0 (pitch held at fine pitch) and a note says so. nullopt
 /// without VSContrl = 5 or when `DLL_InFile` is absent, "unused" or names no file (the plant then stays
 /// open loop, with ServoDyn's note, externalTorqueController).
-std::optional<RoscoController> readServoDynController(const ServoDynInput& servo);
+std::optional<RoscoController> readServoDynController(const ServoDynInput& servo, OverrideSet* overrides = nullptr);
 
 /// The ROSCO controller of an OpenFAST deck (`.fst` with `CompServo = 1`), with the `--set KEY=VALUE`
-/// overrides `sets` applied to the .fst and ServoDyn files (keys of other files are ignored here):
+/// overrides `sets` applied to the .fst, ServoDyn and DISCON.IN files (keys of other files are ignored here):
 /// readServoDynController of its ServoDyn file; nullopt for anything else (an ElastoDyn `.dat`, a YAML
 /// case, a deck without ServoDyn or without a ROSCO DISCON.IN).
 std::optional<RoscoController> readDeckController(const std::filesystem::path& deck, const std::vector<std::string>& sets);
 
 /// As readDiscon, from text (`file` names it in messages).
-RoscoController parseDiscon(const std::string& text, const std::filesystem::path& file);
+RoscoController parseDiscon(const std::string& text, const std::filesystem::path& file,
+                            OverrideSet* overrides = nullptr);
 
 }  // namespace whirl::io

@@ -1,6 +1,7 @@
 #include "src/io/openfast_overrides.hpp"
 
 #include <algorithm>
+#include <cctype>
 
 #include "src/model/error.hpp"
 
@@ -34,6 +35,21 @@ void OverrideSet::applyTo(OpenFastFile& file) {
     file.setValue(overrides_[i].key, overrides_[i].value);
     used_[i] = true;
   }
+}
+
+std::optional<std::string> OverrideSet::take(const std::string& key, const std::string& file) {
+  if (std::find(files_.begin(), files_.end(), file) == files_.end()) files_.push_back(file);
+  auto lower = [](std::string s) {
+    for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return s;
+  };
+  std::optional<std::string> value;
+  for (std::size_t i = 0; i < overrides_.size(); ++i)
+    if (lower(overrides_[i].key) == lower(key)) {
+      value = overrides_[i].value;  // the last one given wins, as in applyTo
+      used_[i] = true;
+    }
+  return value;
 }
 
 void OverrideSet::requireAllUsed() const {

@@ -6,6 +6,7 @@
 /// (.fst, ElastoDyn, tower, blade, ServoDyn), and `--set NacMass=250000` or `--set TwFAM1Sh(2)=0.71`
 /// should not need to say which. A key that no file read contains is an error ("unknown key"), checked
 /// once all files are read by `requireAllUsed`.
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -31,6 +32,10 @@ class OverrideSet {
 
   /// Sets each override whose key `file` contains; remembers the file name for messages.
   void applyTo(OpenFastFile& file);
+
+  /// The value given for `key` (case-insensitive) in a file read by its own parser (ROSCO's DISCON.IN),
+  /// marking it used and remembering `file` for messages; nullopt when no override names the key.
+  std::optional<std::string> take(const std::string& key, const std::string& file);
 
   /// Throws InputError("key: unknown key (not in any file read: a.fst, b.dat)") for the first override
   /// that no file contained.

@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "src/io/aero_support.hpp"
+#include "src/io/discon_input.hpp"
 #include "src/io/openfast_overrides.hpp"
 #include "src/io/openfast_support.hpp"
 #include "src/turbine/elastodyn_fem_shapes.hpp"
@@ -123,6 +124,8 @@ io::OpenFastTurbine readElastoDynTurbine(const std::string& path, const std::vec
     io::requireSupported(deck.inflow);
     opt.aero = std::move(deck);
     opt.torque_law = io::readServoDynIfEnabled(t.fst, &set);
+    // A ROSCO DISCON.IN's keys take --set too (the controller is read again by the commands that use it).
+    if (opt.torque_law) io::readServoDynController(*opt.torque_law, &set);
     if (opt.torque_law)
       if (std::optional<std::string> note = io::externalTorqueController(*opt.torque_law)) {
         opt.aero->notes.push_back(std::move(*note));

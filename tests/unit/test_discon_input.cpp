@@ -110,6 +110,24 @@ TEST(DisconInput, ToleratesOrderAndMissingOptionalKeys) {
   EXPECT_EQ(c.at("VS_TSRopt").line, 1);
 }
 
+TEST(DisconInput, OverridesReplaceTheValuesOfTheKeysWritten) {
+  // --set KEY=VALUE on a ROSCO deck: the value as if written on the key's line (case-insensitive key),
+  // used up; a key the file does not write stays unused (the caller reports it unknown).
+  const std::string text = readText(disconFile());
+  whirl::io::OverrideSet set(std::vector<whirl::io::KeyOverride>{{"vs_tsropt", "8.25"}, {"NotAKey", "1"}});
+  const RoscoController c = parseDiscon(text, "DISCON.IN", &set);
+  EXPECT_DOUBLE_EQ(c.VS_TSRopt, 8.25);
+  EXPECT_EQ(c.at("VS_TSRopt").line, parseDiscon(text, "DISCON.IN").at("VS_TSRopt").line);
+  EXPECT_THROW(set.requireAllUsed(), InputError);
+  whirl::io::OverrideSet bad(std::vector<whirl::io::KeyOverride>{{"PC_GS_KP", "-0.01 -0.02"}});
+  try {
+    parseDiscon(text, "DISCON.IN", &bad);
+    FAIL() << "a gain table of the wrong length was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("PC_GS_KP: 2 values"), std::string::npos) << e.what();
+  }
+}
+
 TEST(DisconInputErrors, MissingNeededKey) {
   const std::string text = readText(disconFile());
   EXPECT_EQ(errorOf(removeLine(text, "! VS_RtPwr")), "DISCON.IN: VS_RtPwr: missing (the torque controller needs it)");
