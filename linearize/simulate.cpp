@@ -232,6 +232,38 @@ std::string flagName(int flag) {
   return name;
 }
 
+/// What an IDA failure means for a user, in words, then SUNDIALS' flag name (for a bug report): its own
+/// message (`p.ida_message`) names internal options (mxstep, tout) a user cannot set.
+std::string idaFailure(int flag, double t, const SimulationOptions& opt) {
+  std::string why;
+  switch (flag) {
+    case IDA_TOO_MUCH_WORK:
+      why = fmt::format("more than {} integrator steps between two output instants ({:g} s apart): the motion is too "
+                        "fast for the time step it needs (a rotor spinning up, a diverging model?)",
+                        opt.max_steps, opt.dt_out);
+      break;
+    case IDA_TOO_MUCH_ACC:
+      why = "the tolerances cannot be met (--rtol, --atol too small for double precision?)";
+      break;
+    case IDA_ERR_FAIL:
+    case IDA_CONV_FAIL:
+      why = "the integrator's step size fell to its minimum without meeting the tolerances: the motion diverges or "
+            "jumps (an unstable model, an input step too large, an operating point outside the model's range?)";
+      break;
+    case IDA_LSETUP_FAIL:
+    case IDA_LSOLVE_FAIL:
+      why = "the iteration matrix could not be factored or solved (a singular mass matrix along the motion?)";
+      break;
+    case IDA_RES_FAIL:
+    case IDA_REP_RES_ERR:
+      why = "the equations could not be evaluated along the motion (a state outside the model's range?)";
+      break;
+    default:
+      why = "the integration failed";
+  }
+  return fmt::format("simulate: t = {:.6g} s: {} (SUNDIALS IDA: {})", t, why, flagName(flag));
+}
+
 // IDA's counters of the segment since the last (re)initialization.
 void addStatistics(void* mem, Simulation& sim) {
   long nsteps = 0, nres = 0, nni = 0, nnf = 0, netf = 0;
@@ -434,9 +466,7 @@ Simulation simulate(const Model& m, const OperatingPoint& start, const Simulatio
             "simulate: t = {:.6g} s: more than {} integrator steps (src/model/limits.hpp) for {:g} s of {:g}: the "
             "motion is too fast for the time step it needs (a rotor spinning up, a diverging model?)",
             t, limits::kMaxSimulationSteps, t, opt.t_end));
-      if (flag < 0)
-        throw ComputeError(fmt::format("simulate: t = {:.6g} s: IDA {}{}{}", t, flagName(flag),
-                                       p.ida_message.empty() ? "" : ": ", p.ida_message));
+      if (flag < 0) throw ComputeError(idaFailure(flag, t, opt));
       if (flag != IDA_TSTOP_RETURN) break;
       // At an input breakpoint: restart from consistent rates under the inputs after it.
       const double ts = stops[next_stop];

@@ -43,16 +43,17 @@ const OpenFastEntry* entryAfter(const OpenFastFile& f, std::string_view key, int
 }
 
 /// The UA constants the continuous models divide by or take as angles: time constants positive, the
-/// zero-lift angle within ±180° (AeroDyn's UA_ValidateAFI checks the angle; a zero time constant would
-/// divide by zero in UA_CalcContStateDeriv).
-void checkUa(const OpenFastFile& t, const AirfoilUAData& ua) {
+/// zero-lift angle within ±180° (AeroDyn's UA_ValidateAFI; a zero time constant would divide by zero
+/// in UA_CalcContStateDeriv). The first violation, "file:line: key: reason", or empty. Not an error here:
+/// AeroDyn validates only the airfoils UA runs on (a cylinder's table may hold zeros: certtest Test10).
+std::string uaProblem(const OpenFastFile& t, const AirfoilUAData& ua) {
   const std::pair<const char*, const std::optional<double>*> positive[] = {
       {"T_f0", &ua.T_f0}, {"T_V0", &ua.T_V0}, {"T_p", &ua.T_p}, {"T_VL", &ua.T_VL}};
   for (const auto& [key, v] : positive)
-    if (*v && !(**v > 0.0))
-      throw InputError(t.where(key, "must be > 0 (is " + numberText(**v) + ")"));
+    if (*v && !(**v > 0.0)) return t.where(key, "must be > 0 (is " + numberText(**v) + ")");
   if (ua.alpha0 && std::abs(*ua.alpha0) > 180.0)
-    throw InputError(t.where("alpha0", "must be within -180 to 180 deg (is " + numberText(*ua.alpha0) + ")"));
+    return t.where("alpha0", "must be within -180 to 180 deg (is " + numberText(*ua.alpha0) + ")");
+  return "";
 }
 
 void readUa(const OpenFastFile& t, AirfoilUAData& ua) {
@@ -82,7 +83,7 @@ void readUa(const OpenFastFile& t, AirfoilUAData& ua) {
   };
   for (const Field& fd : fields)
     if (t.has(fd.key)) ua.*fd.member = t.getDoubleOrDefault(fd.key);
-  checkUa(t, ua);
+  ua.invalid = uaProblem(t, ua);
 }
 
 /// Reads the NumAlf rows after line `num_alf_line` into `tab`.

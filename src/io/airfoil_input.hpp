@@ -34,6 +34,10 @@ struct AirfoilColumns {
 /// Units as in the file: angles in degrees, C_nalpha and C_lalpha per radian, the rest dimensionless.
 struct AirfoilUAData {
   bool included = false;  ///< InclUAdata: the table carries UA constants
+  /// "file:line: key: reason" of the first constant unusable by a UA model (a time constant ≤ 0, |alpha0|
+  /// > 180°); empty when all are usable. AeroDyn checks them only for the airfoils of elements with UA
+  /// (UnsteadyAero.f90, UA_ValidateAFI), so the reader keeps the reason and io::airfoilUa raises it.
+  std::string invalid;
   std::optional<double> alpha0, alpha1, alpha2;  ///< zero-lift and stall angles (deg)
   std::optional<double> alphaUpper, alphaLower;  ///< UA_Mod 7 limits (deg), OpenFAST v3.4+
   std::optional<double> eta_e;                   ///< recovery factor (-)

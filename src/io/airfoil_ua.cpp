@@ -76,6 +76,7 @@ aero::UaTable airfoilUa(const AirfoilInput& af, std::size_t table, int ua_mod) {
   const std::string source = af.path.string() + ":" + std::to_string(t.re_line) + ": InclUAdata";
   aero::UaTable out;
   if (constantTable(t)) return out;  // included = false: AeroDyn runs no UA on a constant table
+  if (!t.ua.invalid.empty()) throw InputError(t.ua.invalid);  // UA runs on it: AeroDyn's UA_ValidateAFI
   std::vector<double> alpha(t.alpha_deg.size());
   for (std::size_t k = 0; k < alpha.size(); ++k) alpha[k] = t.alpha_deg[k] * std::numbers::pi / 180.0;
   const aero::PolarInterp interp =
