@@ -159,11 +159,41 @@ OperatingPoint solveOperatingPoint(const Model& m, const OperatingPoint& start, 
   return solveOperatingPoint(m, start, opt, lw);
 }
 
-OperatingPoint solveOperatingPoint(const Model& m, const OperatingPoint& start, const EquilibriumOptions& opt,
-                                   LinearizeWorkspace& lw) {
-  OperatingPoint op = start;
+namespace {
+
+/// One solve's state between its phases: the point, its residual (all coordinates, and on the solved
+/// ones), and what the failure message and the load-jump check need.
+struct EquilibriumSolve {
+  const Model& m;
+  const EquilibriumOptions& opt;
+  LinearizeWorkspace& lw;
+  OperatingPoint op;
+  VecX e, es;
+  int ns = 0;
+  AeroRecord* record = nullptr;  ///< every residual records the blade elements (the last one is the record)
+  bool fresh = true;             ///< e and the record are those of op.q
+  double scale = 1;
+  VecX load_seen;                ///< the largest loads seen on each solved coordinate (for the message)
+  MatX K_first;                  ///< the first Newton matrix (for the message)
+  VecX q_before, q_before2, es_before;  ///< the two iterates before op.q and the residual at the last one
+  LoadJump jump;
+
+  EquilibriumSolve(const Model& model, const EquilibriumOptions& o, LinearizeWorkspace& w, const OperatingPoint& start)
+      : m(model), opt(o), lw(w), op(start), e(model.ndof()) {}
+
+  VecX solvedResidual() {
+    residual(m, lw.ws, op.q, op.qd, op.qdd, op.u, e, nullptr, record);
+    VecX r(ns);
+    for (int k = 0; k < ns; ++k) r(k) = e(op.solved[k]);
+    return r;
+  }
+  double target() const { return opt.tolerance * scale; }
+};
+
+/// The coordinates Newton solves: the active, non-rotating ones not held (unrestrained or given).
+void chooseSolved(const Model& m, const EquilibriumOptions& opt, OperatingPoint& op) {
   op.solved.clear();
-  op.held = opt.held ? *opt.held : unrestrainedCoordinates(m, start.q, start.qd, start.u);
+  op.held = opt.held ? *opt.held : unrestrainedCoordinates(m, op.q, op.qd, op.u);
   for (int i : m.activeDofs()) {
     if (m.dofs[i].rotating) continue;
     if (op.qd(i) != 0.0)
@@ -171,200 +201,221 @@ OperatingPoint solveOperatingPoint(const Model& m, const OperatingPoint& start, 
     if (std::find(op.held.begin(), op.held.end(), i) != op.held.end()) continue;
     op.solved.push_back(i);
   }
-  Workspace<double>& ws = lw.ws;
-  JacobianWorkspace& jw = lw.jw;
-  VecX e(m.ndof());
-  const int ns = static_cast<int>(op.solved.size());
-  // Every residual records the blade elements, so that the last one, at the solution, is the record
-  // (no evaluation again at the end); `fresh`: e and the record are those of op.q.
-  AeroRecord* record = m.aero.active() ? &op.aero : nullptr;
-  bool fresh = true;
-  auto solvedResidual = [&]() {
-    residual(m, ws, op.q, op.qd, op.qdd, op.u, e, nullptr, record);
-    VecX es(ns);
-    for (int k = 0; k < ns; ++k) es(k) = e(op.solved[k]);
-    return es;
-  };
-  double cold_scale = -1;
-  if (!(opt.load_scale > 0) && opt.scale_from) {
-    const OperatingPoint& c = *opt.scale_from;
-    residual(m, ws, c.q, c.qd, c.qdd, c.u, e);
-    cold_scale = 0;
-    for (int i : op.solved) cold_scale = std::max(cold_scale, std::abs(e(i)));
-  }
-  VecX es = solvedResidual();
-  if (!e.allFinite()) throw ComputeError("operating point: the residual is not finite (NaN in the model or inputs)");
-  // Load scale: the residual at the undeflected start, or the gravity/centrifugal loads it holds; moored,
-  // at least the line tensions, whose balance at a symmetric start leaves a residual of their round-off.
-  double scale = opt.load_scale;
-  if (!(scale > 0))
-    scale = std::max({1.0, cold_scale >= 0 ? cold_scale : es.lpNorm<Eigen::Infinity>(), largestMooringTension(m, ws)});
-  op.load_scale = scale;
-  op.iterations = 0;
-  const double target = opt.tolerance * scale;
-  // For the message when Newton fails: the stiffness of the first Newton matrix and the largest
-  // loads seen on each solved coordinate over the iterations.
-  VecX load_seen = es.cwiseAbs();
-  // The two iterates before op.q and the residual at the last one: a jump of the loads between them.
-  VecX q_before, q_before2, es_before;
-  LoadJump jump;
-  MatX K_first;
-  if ((opt.chord || opt.chord_matrix) && ns > 0 && es.lpNorm<Eigen::Infinity>() > target) {
-    // Chord steps are a residual and a back-substitution each, a fifth of a Newton step (which
-    // needs the AD stiffness); a step that gains less than 4× is undone and Newton goes on.
-    MatX Kc = opt.chord ? chordMatrix(*opt.chord, op.solved) : *opt.chord_matrix;
-    if (Kc.rows() == ns && Kc.cols() == ns) {
-      // A regular chord matrix is inverted once and its inverse follows the Broyden updates by
-      // Sherman–Morrison (n² per step instead of a factorization); a rank-deficient one (a rigid-body
-      // motion the hold rule does not catch) keeps the minimum-norm steps of its factorization.
-      Eigen::CompleteOrthogonalDecomposition<MatX> cod(Kc);
-      MatX Kinv;
-      if (cod.rank() == ns) Kinv = Kc.partialPivLu().inverse();
-      double prev = es.lpNorm<Eigen::Infinity>();
-      while (op.iterations < 8 && prev > target) {
-        if (op.iterations > 0 && Kinv.size() == 0) cod.compute(Kc);
-        const VecX dq = Kinv.size() > 0 ? VecX(Kinv * es) : VecX(cod.solve(es));
-        for (int k = 0; k < ns; ++k) op.q(op.solved[k]) += dq(k);
-        const VecX next = solvedResidual();
-        const double now = next.lpNorm<Eigen::Infinity>();
-        if (!(now < 0.25 * prev)) {
-          for (int k = 0; k < ns; ++k) op.q(op.solved[k]) -= dq(k);
-          fresh = false;
-          break;
-        }
-        // Broyden's update (Broyden 1965): the matrix that maps this step onto the residual's change,
-        // Kc dq = es − next, nearest the last one; as Kc dq = es, the correction is −next dqᵀ / dqᵀdq.
-        const double dq2 = dq.squaredNorm();
-        Kc -= next * dq.transpose() / dq2;
-        if (Kinv.size() > 0) {
-          // (Kc + u dqᵀ)⁻¹ = Kinv − (Kinv u)(dqᵀ Kinv) / (1 + dqᵀ Kinv u), u = −next / dqᵀdq.
-          const VecX Ku = -(Kinv * next) / dq2;
-          const double denom = 1.0 + dq.dot(Ku);
-          if (std::abs(denom) > 1e-8) {
-            const Eigen::RowVectorXd dK = dq.transpose() * Kinv;
-            Kinv -= Ku * dK / denom;
-          } else {  // nearly singular after the update: factorize it
-            Kinv.resize(0, 0);
-          }
-        }
-        es = next;
-        prev = now;
-        ++op.iterations;
-      }
-      // The updated matrix is nearer the Jacobian here than the one given: a next solve nearby (the
-      // trim's next rotor speed or pitch) starts from it (a Newton step below replaces it).
-      if (opt.newton_matrix && op.iterations > 0) *opt.newton_matrix = Kc;
-    }
-  }
-  while (ns > 0 && es.lpNorm<Eigen::Infinity>() > opt.tolerance * scale) {
-    if (op.iterations >= opt.max_iterations) {
-      Eigen::Index worst;
-      es.cwiseAbs().maxCoeff(&worst);
-      std::string msg = "operating point did not converge in " + std::to_string(opt.max_iterations) +
-                        " Newton iterations: residual " + std::to_string(es(worst)) + " on DOF '" +
-                        m.dofs[op.solved[worst]].name + "'";
-      if (jump.dof >= 0) msg += ": " + describe(m, jump);
-      const int weak = weakJoint(m, op.solved, K_first, load_seen);
-      if (weak >= 0) {
-        // The load on it is what the rest of the structure pushes with while it is held: solve
-        // again with it held at its start value (the iterates above wander).
-        const int d = op.solved[weak];
-        std::string load = fmt::format("up to {:.4g}", load_seen(weak));
-        try {
-          std::vector<int> held = op.held;
-          held.push_back(d);
-          EquilibriumOptions again = opt;
-          again.chord = nullptr;
-          again.held = &held;
-          const OperatingPoint h = solveOperatingPoint(m, start, again, lw);
-          load = fmt::format("{:.4g}", h.e(d));
-        } catch (const ComputeError&) {
-        }
-        const std::string unit = loadUnit(m, d);
-        msg += fmt::format(": DOF '{}' is nearly unrestrained (stiffness {:.4g} {}/{}) and a load of {} {} acts on it; {}",
-                           m.dofs[d].name, std::abs(K_first(weak, weak)), unit, unit == "N m" ? "rad" : "m", load, unit,
-                           holdAdvice(m, d));
-      }
-      throw ComputeError(msg);
-    }
-    // The AD passes see the element inflows of the residual just evaluated: hand them its BEM roots
-    // (aero_section.hxx) instead of solving every element again.
-    jw.ws.bem = ws.bem;
-    const MatX J = residualJacobian(m, jw, op.q, op.qd, op.qdd, op.u, Wrt::Q, op.solved);
-    MatX K(ns, ns);
-    for (int r = 0; r < ns; ++r) K.row(r) = -J.row(op.solved[r]);
-    if (K_first.size() == 0) K_first = K;
-    if (opt.newton_matrix) *opt.newton_matrix = K;
-    // Coordinates without stiffness are held above; a singular K left (a rigid-body motion the rule
-    // does not catch, e.g. with a spring of zero stiffness elsewhere in the chain) is fine as long as
-    // nothing pushes along it. Minimum-norm step; refuse a load in the null space.
-    Eigen::CompleteOrthogonalDecomposition<MatX> cod(K);
-    const VecX dq = cod.solve(es);
-    if (cod.rank() < ns) {
-      const double unbalanced = (K * dq - es).lpNorm<Eigen::Infinity>();
-      if (unbalanced > 1e-6 * scale) {
-        Eigen::FullPivLU<MatX> lu(K);
-        const MatX ker = lu.kernel();
-        Eigen::Index worst = 0;
-        ker.col(0).cwiseAbs().maxCoeff(&worst);
-        const int d = op.solved[worst];
-        throw ComputeError(noEquilibrium(m, d, es(worst)));
-      }
-    }
-    q_before2 = std::move(q_before);
-    q_before = op.q;
-    es_before = es;
+}
+
+/// The residual at the undeflected start (EquilibriumOptions::scale_from) on the solved coordinates,
+/// −1 without one. Evaluated before the start's residual: the workspace then holds the start's BEM roots,
+/// which the first Jacobian starts from.
+double coldScale(EquilibriumSolve& s) {
+  if (s.opt.load_scale > 0 || !s.opt.scale_from) return -1;
+  const OperatingPoint& c = *s.opt.scale_from;
+  residual(s.m, s.lw.ws, c.q, c.qd, c.qdd, c.u, s.e);
+  double cold = 0;
+  for (int i : s.op.solved) cold = std::max(cold, std::abs(s.e(i)));
+  return cold;
+}
+
+/// Load scale: the residual at the undeflected start, or the gravity/centrifugal loads it holds; moored,
+/// at least the line tensions, whose balance at a symmetric start leaves a residual of their round-off.
+double loadScale(EquilibriumSolve& s, double cold) {
+  if (s.opt.load_scale > 0) return s.opt.load_scale;
+  return std::max({1.0, cold >= 0 ? cold : s.es.lpNorm<Eigen::Infinity>(), largestMooringTension(s.m, s.lw.ws)});
+}
+
+/// Chord steps from a given matrix (a neighbour's), Broyden-updated: a residual and a back-substitution
+/// each, a fifth of a Newton step (which needs the AD stiffness); a step that gains less than 4× is
+/// undone and Newton goes on.
+void chordSteps(EquilibriumSolve& s) {
+  const EquilibriumOptions& opt = s.opt;
+  OperatingPoint& op = s.op;
+  const int ns = s.ns;
+  if (!(opt.chord || opt.chord_matrix) || ns == 0 || !(s.es.lpNorm<Eigen::Infinity>() > s.target())) return;
+  MatX Kc = opt.chord ? chordMatrix(*opt.chord, op.solved) : *opt.chord_matrix;
+  if (Kc.rows() != ns || Kc.cols() != ns) return;
+  // A regular chord matrix is inverted once and its inverse follows the Broyden updates by
+  // Sherman–Morrison (n² per step instead of a factorization); a rank-deficient one (a rigid-body
+  // motion the hold rule does not catch) keeps the minimum-norm steps of its factorization.
+  Eigen::CompleteOrthogonalDecomposition<MatX> cod(Kc);
+  MatX Kinv;
+  if (cod.rank() == ns) Kinv = Kc.partialPivLu().inverse();
+  double prev = s.es.lpNorm<Eigen::Infinity>();
+  while (op.iterations < 8 && prev > s.target()) {
+    if (op.iterations > 0 && Kinv.size() == 0) cod.compute(Kc);
+    const VecX dq = Kinv.size() > 0 ? VecX(Kinv * s.es) : VecX(cod.solve(s.es));
     for (int k = 0; k < ns; ++k) op.q(op.solved[k]) += dq(k);
-    ++op.iterations;
-    es = solvedResidual();
-    fresh = true;
-    if (!es.allFinite()) throw ComputeError("operating point: Newton diverged (residual not finite)");
-    load_seen = load_seen.cwiseMax(es.cwiseAbs());
-    // Back where it was two steps ago: the two last iterates may straddle a jump of the loads.
-    if (q_before2.size() > 0 &&
-        (op.q - q_before2).lpNorm<Eigen::Infinity>() <= 1e-3 * (op.q - q_before).lpNorm<Eigen::Infinity>()) {
-      AeroRecord other;
-      VecX e_other(m.ndof());
-      residual(m, ws, q_before, op.qd, op.qdd, op.u, e_other, nullptr, record ? &other : nullptr);
-      jump = loadJump(op.solved, op.q, q_before, es, es_before, record, record ? &other : nullptr);
-      const bool on_jump = jump.dof >= 0 && jump.size <= kMaxLoadJump * scale;
-      if (on_jump && es_before.norm() < es.norm()) op.q = q_before;
-      // Again at op.q: the workspace's BEM roots are those the next Jacobian (or the linearization) starts from.
-      es = solvedResidual();
-      if (on_jump) {
-        op.load_jump = jump;
-        break;
+    const VecX next = s.solvedResidual();
+    const double now = next.lpNorm<Eigen::Infinity>();
+    if (!(now < 0.25 * prev)) {
+      for (int k = 0; k < ns; ++k) op.q(op.solved[k]) -= dq(k);
+      s.fresh = false;
+      break;
+    }
+    // Broyden's update (Broyden 1965): the matrix that maps this step onto the residual's change,
+    // Kc dq = es − next, nearest the last one; as Kc dq = es, the correction is −next dqᵀ / dqᵀdq.
+    const double dq2 = dq.squaredNorm();
+    Kc -= next * dq.transpose() / dq2;
+    if (Kinv.size() > 0) {
+      // (Kc + u dqᵀ)⁻¹ = Kinv − (Kinv u)(dqᵀ Kinv) / (1 + dqᵀ Kinv u), u = −next / dqᵀdq.
+      const VecX Ku = -(Kinv * next) / dq2;
+      const double denom = 1.0 + dq.dot(Ku);
+      if (std::abs(denom) > 1e-8) {
+        const Eigen::RowVectorXd dK = dq.transpose() * Kinv;
+        Kinv -= Ku * dK / denom;
+      } else {  // nearly singular after the update: factorize it
+        Kinv.resize(0, 0);
       }
     }
-    if (dq.lpNorm<Eigen::Infinity>() < 1e-14 * (1.0 + op.q.lpNorm<Eigen::Infinity>())) break;
+    s.es = next;
+    prev = now;
+    ++op.iterations;
   }
-  op.residual_norm = es.norm();
-  if (!fresh) residual(m, ws, op.q, op.qd, op.qdd, op.u, e, nullptr, record);
-  if (!record) op.aero = AeroRecord{};
-  op.e = e;
+  // The updated matrix is nearer the Jacobian here than the one given: a next solve nearby (the
+  // trim's next rotor speed or pitch) starts from it (a Newton step below replaces it).
+  if (opt.newton_matrix && op.iterations > 0) *opt.newton_matrix = Kc;
+}
+
+/// Newton gave up: the largest residual, a load jump it straddled, and a nearly unrestrained coordinate
+/// with the load on it (solved again with it held at its start value: the iterates above wander).
+[[noreturn]] void notConverged(EquilibriumSolve& s, const OperatingPoint& start) {
+  const Model& m = s.m;
+  Eigen::Index worst;
+  s.es.cwiseAbs().maxCoeff(&worst);
+  std::string msg = "operating point did not converge in " + std::to_string(s.opt.max_iterations) +
+                    " Newton iterations: residual " + std::to_string(s.es(worst)) + " on DOF '" +
+                    m.dofs[s.op.solved[worst]].name + "'";
+  if (s.jump.dof >= 0) msg += ": " + describe(m, s.jump);
+  const int weak = weakJoint(m, s.op.solved, s.K_first, s.load_seen);
+  if (weak >= 0) {
+    const int d = s.op.solved[weak];
+    std::string load = fmt::format("up to {:.4g}", s.load_seen(weak));
+    try {
+      std::vector<int> held = s.op.held;
+      held.push_back(d);
+      EquilibriumOptions again = s.opt;
+      again.chord = nullptr;
+      again.held = &held;
+      const OperatingPoint h = solveOperatingPoint(m, start, again, s.lw);
+      load = fmt::format("{:.4g}", h.e(d));
+    } catch (const ComputeError&) {
+    }
+    const std::string unit = loadUnit(m, d);
+    msg += fmt::format(": DOF '{}' is nearly unrestrained (stiffness {:.4g} {}/{}) and a load of {} {} acts on it; {}",
+                       m.dofs[d].name, std::abs(s.K_first(weak, weak)), unit, unit == "N m" ? "rad" : "m", load, unit,
+                       holdAdvice(m, d));
+  }
+  throw ComputeError(msg);
+}
+
+/// One Newton step; false when the iteration should stop before the tolerance (on a load jump, or a
+/// step at round-off).
+bool newtonStep(EquilibriumSolve& s) {
+  const Model& m = s.m;
+  OperatingPoint& op = s.op;
+  const int ns = s.ns;
+  // The AD passes see the element inflows of the residual just evaluated: hand them its BEM roots
+  // (aero_section.hxx) instead of solving every element again.
+  s.lw.jw.ws.bem = s.lw.ws.bem;
+  const MatX J = residualJacobian(m, s.lw.jw, op.q, op.qd, op.qdd, op.u, Wrt::Q, op.solved);
+  MatX K(ns, ns);
+  for (int r = 0; r < ns; ++r) K.row(r) = -J.row(op.solved[r]);
+  if (s.K_first.size() == 0) s.K_first = K;
+  if (s.opt.newton_matrix) *s.opt.newton_matrix = K;
+  // Coordinates without stiffness are held above; a singular K left (a rigid-body motion the rule
+  // does not catch, e.g. with a spring of zero stiffness elsewhere in the chain) is fine as long as
+  // nothing pushes along it. Minimum-norm step; refuse a load in the null space.
+  Eigen::CompleteOrthogonalDecomposition<MatX> cod(K);
+  const VecX dq = cod.solve(s.es);
+  if (cod.rank() < ns) {
+    const double unbalanced = (K * dq - s.es).lpNorm<Eigen::Infinity>();
+    if (unbalanced > 1e-6 * s.scale) {
+      Eigen::FullPivLU<MatX> lu(K);
+      const MatX ker = lu.kernel();
+      Eigen::Index worst = 0;
+      ker.col(0).cwiseAbs().maxCoeff(&worst);
+      throw ComputeError(noEquilibrium(m, op.solved[worst], s.es(worst)));
+    }
+  }
+  s.q_before2 = std::move(s.q_before);
+  s.q_before = op.q;
+  s.es_before = s.es;
+  for (int k = 0; k < ns; ++k) op.q(op.solved[k]) += dq(k);
+  ++op.iterations;
+  s.es = s.solvedResidual();
+  s.fresh = true;
+  if (!s.es.allFinite()) throw ComputeError("operating point: Newton diverged (residual not finite)");
+  s.load_seen = s.load_seen.cwiseMax(s.es.cwiseAbs());
+  // Back where it was two steps ago: the two last iterates may straddle a jump of the loads.
+  if (s.q_before2.size() > 0 &&
+      (op.q - s.q_before2).lpNorm<Eigen::Infinity>() <= 1e-3 * (op.q - s.q_before).lpNorm<Eigen::Infinity>()) {
+    AeroRecord other;
+    VecX e_other(m.ndof());
+    residual(m, s.lw.ws, s.q_before, op.qd, op.qdd, op.u, e_other, nullptr, s.record ? &other : nullptr);
+    s.jump = loadJump(op.solved, op.q, s.q_before, s.es, s.es_before, s.record, s.record ? &other : nullptr);
+    const bool on_jump = s.jump.dof >= 0 && s.jump.size <= kMaxLoadJump * s.scale;
+    if (on_jump && s.es_before.norm() < s.es.norm()) op.q = s.q_before;
+    // Again at op.q: the workspace's BEM roots are those the next Jacobian (or the linearization) starts from.
+    s.es = s.solvedResidual();
+    if (on_jump) {
+      op.load_jump = s.jump;
+      return false;
+    }
+  }
+  return !(dq.lpNorm<Eigen::Infinity>() < 1e-14 * (1.0 + op.q.lpNorm<Eigen::Infinity>()));
+}
+
+/// The solved point's record: residuals, inflow, the loads on the held coordinates — which must not
+/// move a resting turbine far (at rotor speed linearizePeriodic checks their mean over the revolution).
+void finish(EquilibriumSolve& s) {
+  const Model& m = s.m;
+  OperatingPoint& op = s.op;
+  op.residual_norm = s.es.norm();
+  if (!s.fresh) residual(m, s.lw.ws, op.q, op.qd, op.qdd, op.u, s.e, nullptr, s.record);
+  if (!s.record) op.aero = AeroRecord{};
+  op.e = s.e;
   op.inflow = op.aero.inflow();
   op.held_load.resize(static_cast<Eigen::Index>(op.held.size()));
-  for (size_t k = 0; k < op.held.size(); ++k) op.held_load(static_cast<Eigen::Index>(k)) = e(op.held[k]);
+  for (size_t k = 0; k < op.held.size(); ++k) op.held_load(static_cast<Eigen::Index>(k)) = s.e(op.held[k]);
   if (op.qd.isZero(0.0) && !op.held.empty()) {
-    // Nothing turns: the load on a held coordinate is steady (at rotor speed linearizePeriodic
-    // checks its mean over the revolution).
     MatX M;
-    massMatrix(m, ws, op.q, M);
+    massMatrix(m, s.lw.ws, op.q, M);
     for (int d : op.held) {
-      const double drift = 0.5 * std::abs(e(d)) / M(d, d) * kHeldDriftTime * kHeldDriftTime;
+      const double drift = 0.5 * std::abs(s.e(d)) / M(d, d) * kHeldDriftTime * kHeldDriftTime;
       if (!(drift <= kMaxHeldDrift))
-        throw ComputeError(noEquilibrium(m, d, e(d), fmt::format("{:.3g} {} in {:g} s", drift,
-                                                                    loadUnit(m, d) == "N m" ? "rad" : "m",
-                                                                    kHeldDriftTime)));
+        throw ComputeError(noEquilibrium(m, d, s.e(d), fmt::format("{:.3g} {} in {:g} s", drift,
+                                                                      loadUnit(m, d) == "N m" ? "rad" : "m",
+                                                                      kHeldDriftTime)));
     }
   }
   op.residual_max_active = 0;
   for (int i : m.activeDofs())
-    if (std::abs(e(i)) >= op.residual_max_active) {
-      op.residual_max_active = std::abs(e(i));
+    if (std::abs(s.e(i)) >= op.residual_max_active) {
+      op.residual_max_active = std::abs(s.e(i));
       op.residual_max_dof = m.dofs[i].name;
     }
-  return op;
+}
+
+}  // namespace
+
+OperatingPoint solveOperatingPoint(const Model& m, const OperatingPoint& start, const EquilibriumOptions& opt,
+                                   LinearizeWorkspace& lw) {
+  EquilibriumSolve s(m, opt, lw, start);
+  chooseSolved(m, opt, s.op);
+  s.ns = static_cast<int>(s.op.solved.size());
+  s.record = m.aero.active() ? &s.op.aero : nullptr;
+  const double cold = coldScale(s);
+  s.es = s.solvedResidual();
+  if (!s.e.allFinite()) throw ComputeError("operating point: the residual is not finite (NaN in the model or inputs)");
+  s.scale = loadScale(s, cold);
+  s.op.load_scale = s.scale;
+  s.op.iterations = 0;
+  s.load_seen = s.es.cwiseAbs();
+  chordSteps(s);
+  while (s.ns > 0 && s.es.lpNorm<Eigen::Infinity>() > s.target()) {
+    if (s.op.iterations >= opt.max_iterations) notConverged(s, start);
+    if (!newtonStep(s)) break;
+  }
+  finish(s);
+  return s.op;
 }
 
 }  // namespace whirl
