@@ -304,14 +304,9 @@ void checkSimulationSize(const Model& m, const OperatingPoint& start, const Simu
         revolutions, opt.t_end, rate * 30 / M_PI, limits::kMaxSimulationRevolutions));
 }
 
-}  // namespace
-
-double simulationBemTolerance(double model_tolerance, double rtol) {
-  constexpr double kAeroDynIndToler = 5e-10;  // AeroDyn: IndToler "default" in double precision
-  return std::max(model_tolerance, std::min(kAeroDynIndToler, 1e-3 * rtol));
-}
-
-Simulation simulate(const Model& m, const OperatingPoint& start, const SimulationOptions& opt) {
+/// The options and the start point against the model: times, tolerances, the controller's step, sizes,
+/// the signals' inputs and the driven coordinates.
+void checkOptions(const Model& m, const OperatingPoint& start, const SimulationOptions& opt) {
   if (!(opt.t_end > 0) || !std::isfinite(opt.t_end)) throw InputError("simulate: tmax: must be a finite time > 0");
   if (!(opt.dt_out > 0) || !std::isfinite(opt.dt_out)) throw InputError("simulate: dt-out: must be a finite time > 0");
   if (!(opt.rtol > 0) || !(opt.atol > 0)) throw InputError("simulate: tolerances: must be > 0");
@@ -329,46 +324,11 @@ Simulation simulate(const Model& m, const OperatingPoint& start, const Simulatio
   for (const DrivenDof& d : opt.driven)
     if (std::find(active.begin(), active.end(), d.dof) == active.end())
       throw InputError("simulate: driven coordinate: not an active coordinate of the model");
-  checkSimulationSize(m, start, opt);
-  Problem p(m, start, opt);
-  auto held = [&](int i) {
-    return std::find(opt.prescribed.begin(), opt.prescribed.end(), i) != opt.prescribed.end() ||
-           std::any_of(opt.driven.begin(), opt.driven.end(), [i](const DrivenDof& d) { return d.dof == i; });
-  };
-  for (int i : active)
-    if (!held(i)) p.states.push_back(i);
-  const int ns = p.n();
+}
 
-  Simulation sim;
-  sim.states = p.states;
-  const long nout = static_cast<long>(std::floor(opt.t_end / opt.dt_out + 1e-9)) + 1;
-  const bool last_extra = (nout - 1) * opt.dt_out < opt.t_end * (1 - 1e-12);
-  const long nrec = nout + (last_extra ? 1 : 0);
-  sim.q.resize(nrec, m.ndof());
-  sim.qd.resize(nrec, m.ndof());
-  sim.u.resize(nrec, m.ninput());
-  sim.y.resize(nrec, m.noutput());
-  sim.time.reserve(static_cast<std::size_t>(nrec));
-  for (MatX* a : {&sim.q, &sim.qd, &sim.u, &sim.y}) prefault(a->data(), a->size() * sizeof(double));
-  Workspace<double> wy(m);
-  VecX y_out(m.noutput());
-  auto record = [&](long k, double t, const double* y, const double* yp) {
-    p.load(t, y, yp);
-    sim.time.push_back(t);
-    sim.q.row(k) = p.q.transpose();
-    sim.qd.row(k) = p.qd.transpose();
-    if (m.ninput() > 0) sim.u.row(k) = p.u.transpose();  // row k of a 0-column matrix: offset on a null pointer
-    if (m.noutput() > 0) {
-      // The BEM roots of the integrator's last residual start the outputs' root searches: a step
-      // away instead of one recorded interval (the outputs' own last roots); the same roots.
-      wy.bem = p.ws.bem;
-      evaluateOutputs(m, wy, p.q, p.qd, p.qdd, y_out, &p.u);
-      sim.y.row(k) = y_out.transpose();
-    }
-    if (opt.progress) opt.progress(t, opt.t_end);
-  };
-
-  // Breakpoints of the inputs inside (0, t_end), then t_end: IDA stops and restarts there.
+/// Breakpoints of the inputs inside (0, t_end), the controller's calls, then t_end: IDA stops and
+/// restarts there.
+std::vector<double> stopTimes(const SimulationOptions& opt) {
   std::vector<double> stops;
   for (const InputSignal& in : opt.inputs)
     for (double b : signalBreakpoints(in.signal))
@@ -376,43 +336,17 @@ Simulation simulate(const Model& m, const OperatingPoint& start, const Simulatio
   for (const DrivenDof& d : opt.driven)
     for (double b : signalBreakpoints(d.signal))
       if (b > 0 && b < opt.t_end) stops.push_back(b);
-  const bool controlled = static_cast<bool>(opt.controller.step);
-  if (controlled)
+  if (opt.controller.step)
     for (long k = 1; k * opt.controller.dt < opt.t_end; ++k) stops.push_back(static_cast<double>(k) * opt.controller.dt);
   stops.push_back(opt.t_end);
   std::sort(stops.begin(), stops.end());
   stops.erase(std::unique(stops.begin(), stops.end()), stops.end());
+  return stops;
+}
 
-  if (ns == 0) {  // everything prescribed: the motion is known
-    for (long k = 0; k < nrec; ++k) record(k, std::min(k * opt.dt_out, opt.t_end), nullptr, nullptr);
-    return sim;
-  }
-
-  IdaHandles h;
-  check(SUNContext_Create(nullptr, &h.ctx), "SUNContext_Create");
-  h.y = newFastSerialVector(2 * ns, h.ctx);
-  h.yp = newFastSerialVector(2 * ns, h.ctx);
-  if (!h.y || !h.yp) throw ComputeError("simulate: SUNDIALS: cannot allocate the state vectors");
-  double* y = N_VGetArrayPointer(h.y);
-  double* yp = N_VGetArrayPointer(h.yp);
-  for (int k = 0; k < ns; ++k) {
-    y[k] = start.q(p.states[k]);
-    y[ns + k] = start.qd(p.states[k]);
-  }
-  // The controller's commands at a stop: from the motion there (the held values before the call).
-  auto control = [&](double tc) {
-    if (!controlled) return;
-    p.load(tc, y, nullptr);
-    p.held = opt.controller.step(tc, p.q, p.qd, p.u);
-    if (p.held.size() != static_cast<Eigen::Index>(opt.controller.inputs.size()) || !p.held.allFinite())
-      throw ComputeError(fmt::format("simulate: t = {:.6g} s: the controller's commands are not finite", tc));
-  };
-  if (controlled) {
-    p.held = VecX(static_cast<Eigen::Index>(opt.controller.inputs.size()));
-    for (size_t k = 0; k < opt.controller.inputs.size(); ++k) p.held(static_cast<Eigen::Index>(k)) = start.u(opt.controller.inputs[k]);
-    control(0.0);
-  }
-  consistentRates(p, 0.0, y, yp);
+/// IDA on the residual with whirl's block-elimination linear solver and Newton, the tolerances and the
+/// step limit of `opt`, started from h.y, h.yp at t = 0.
+void attachIntegrator(IdaHandles& h, Problem& p, const Model& m, int ns, const SimulationOptions& opt) {
   h.mem = IDACreate(h.ctx);
   if (!h.mem) throw ComputeError("simulate: SUNDIALS: IDACreate failed");
   check(IDASetErrHandlerFn(h.mem, errorHandler, &p), "IDASetErrHandlerFn");
@@ -449,6 +383,90 @@ Simulation simulate(const Model& m, const OperatingPoint& start, const Simulatio
   check(IDASetNonlinearSolver(h.mem, h.nls), "IDASetNonlinearSolver");
   check(attachConvergenceTest(h.nls, h.ls), "SUNNonlinSolSetConvTestFn");
   check(IDASetMaxNumSteps(h.mem, opt.max_steps), "IDASetMaxNumSteps");
+}
+
+}  // namespace
+
+double simulationBemTolerance(double model_tolerance, double rtol) {
+  constexpr double kAeroDynIndToler = 5e-10;  // AeroDyn: IndToler "default" in double precision
+  return std::max(model_tolerance, std::min(kAeroDynIndToler, 1e-3 * rtol));
+}
+
+Simulation simulate(const Model& m, const OperatingPoint& start, const SimulationOptions& opt) {
+  checkOptions(m, start, opt);
+  checkSimulationSize(m, start, opt);
+  Problem p(m, start, opt);
+  auto held = [&](int i) {
+    return std::find(opt.prescribed.begin(), opt.prescribed.end(), i) != opt.prescribed.end() ||
+           std::any_of(opt.driven.begin(), opt.driven.end(), [i](const DrivenDof& d) { return d.dof == i; });
+  };
+  for (int i : m.activeDofs())
+    if (!held(i)) p.states.push_back(i);
+  const int ns = p.n();
+
+  Simulation sim;
+  sim.states = p.states;
+  const long nout = static_cast<long>(std::floor(opt.t_end / opt.dt_out + 1e-9)) + 1;
+  const bool last_extra = (nout - 1) * opt.dt_out < opt.t_end * (1 - 1e-12);
+  const long nrec = nout + (last_extra ? 1 : 0);
+  sim.q.resize(nrec, m.ndof());
+  sim.qd.resize(nrec, m.ndof());
+  sim.u.resize(nrec, m.ninput());
+  sim.y.resize(nrec, m.noutput());
+  sim.time.reserve(static_cast<std::size_t>(nrec));
+  for (MatX* a : {&sim.q, &sim.qd, &sim.u, &sim.y}) prefault(a->data(), a->size() * sizeof(double));
+  Workspace<double> wy(m);
+  VecX y_out(m.noutput());
+  auto record = [&](long k, double t, const double* y, const double* yp) {
+    p.load(t, y, yp);
+    sim.time.push_back(t);
+    sim.q.row(k) = p.q.transpose();
+    sim.qd.row(k) = p.qd.transpose();
+    if (m.ninput() > 0) sim.u.row(k) = p.u.transpose();  // row k of a 0-column matrix: offset on a null pointer
+    if (m.noutput() > 0) {
+      // The BEM roots of the integrator's last residual start the outputs' root searches: a step
+      // away instead of one recorded interval (the outputs' own last roots); the same roots.
+      wy.bem = p.ws.bem;
+      evaluateOutputs(m, wy, p.q, p.qd, p.qdd, y_out, &p.u);
+      sim.y.row(k) = y_out.transpose();
+    }
+    if (opt.progress) opt.progress(t, opt.t_end);
+  };
+
+  const bool controlled = static_cast<bool>(opt.controller.step);
+  const std::vector<double> stops = stopTimes(opt);
+
+  if (ns == 0) {  // everything prescribed: the motion is known
+    for (long k = 0; k < nrec; ++k) record(k, std::min(k * opt.dt_out, opt.t_end), nullptr, nullptr);
+    return sim;
+  }
+
+  IdaHandles h;
+  check(SUNContext_Create(nullptr, &h.ctx), "SUNContext_Create");
+  h.y = newFastSerialVector(2 * ns, h.ctx);
+  h.yp = newFastSerialVector(2 * ns, h.ctx);
+  if (!h.y || !h.yp) throw ComputeError("simulate: SUNDIALS: cannot allocate the state vectors");
+  double* y = N_VGetArrayPointer(h.y);
+  double* yp = N_VGetArrayPointer(h.yp);
+  for (int k = 0; k < ns; ++k) {
+    y[k] = start.q(p.states[k]);
+    y[ns + k] = start.qd(p.states[k]);
+  }
+  // The controller's commands at a stop: from the motion there (the held values before the call).
+  auto control = [&](double tc) {
+    if (!controlled) return;
+    p.load(tc, y, nullptr);
+    p.held = opt.controller.step(tc, p.q, p.qd, p.u);
+    if (p.held.size() != static_cast<Eigen::Index>(opt.controller.inputs.size()) || !p.held.allFinite())
+      throw ComputeError(fmt::format("simulate: t = {:.6g} s: the controller's commands are not finite", tc));
+  };
+  if (controlled) {
+    p.held = VecX(static_cast<Eigen::Index>(opt.controller.inputs.size()));
+    for (size_t k = 0; k < opt.controller.inputs.size(); ++k) p.held(static_cast<Eigen::Index>(k)) = start.u(opt.controller.inputs[k]);
+    control(0.0);
+  }
+  consistentRates(p, 0.0, y, yp);
+  attachIntegrator(h, p, m, ns, opt);
   size_t next_stop = 0;
   check(IDASetStopTime(h.mem, stops[next_stop]), "IDASetStopTime");
 
