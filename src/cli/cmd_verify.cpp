@@ -5,6 +5,7 @@
 // response to a small wind step, nonlinear with ROSCO's discrete laws vs the linear closed loop
 // (modal/closed_loop_step.hpp).
 #include <CLI/CLI.hpp>
+#include <fmt/format.h>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -40,15 +41,22 @@ struct VerifyOptions {
 void runClosedLoop(const VerifyOptions& opt) {
   if (!opt.wind) throw InputError("verify: --closed-loop needs --wind U (the step starts where ROSCO settles)");
   if (!opt.dofs.empty()) throw InputError("verify: --dof perturbs the open loop's coordinates, not with --closed-loop");
+  ClosedLoopStepOptions so = opt.step;
+  if (opt.tmax_given) so.t_end = opt.check.t_end;
+  if (opt.dt_given) so.dt_out = opt.check.dt_out;
+  // The library's checks again under the options' names, before the trim.
+  if (!(so.wind_step != 0) || !std::isfinite(so.wind_step)) throw InputError("verify: --wind-step: must be non-zero");
+  if (!(so.step_time < so.t_end))
+    throw InputError("verify: --step-time: the step must come before the end (--tmax " + fmt::format("{:g}", so.t_end) + " s)");
+  for (size_t i = 0; i < so.outputs.size(); ++i)
+    for (size_t j = 0; j < i; ++j)
+      if (so.outputs[i] == so.outputs[j]) throw InputError("verify: --output: " + so.outputs[i] + " given twice");
   const Model m = loadModel(opt.model);
   const RoscoController c = closedLoopController(opt.model);
   TrimOptions trim;
   trim.controller = &c;
   trim.azimuths = opt.step.azimuths;
   const SteadyState st = trimAtWindSpeed(m, *opt.wind, trim);
-  ClosedLoopStepOptions so = opt.step;
-  if (opt.tmax_given) so.t_end = opt.check.t_end;
-  if (opt.dt_given) so.dt_out = opt.check.dt_out;
   const ClosedLoopStep r = closedLoopStep(m, c, st, so);
   const std::string dir = opt.out.empty() ? defaultOutputFolder(opt.model.case_path) : opt.out;
   prepareOutputFolder(dir);

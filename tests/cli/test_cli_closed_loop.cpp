@@ -138,8 +138,17 @@ TEST(CliVerifyClosedLoopSlow, WindStepTableAndFiles) {
   const auto bad_output = whirl("verify " + kDeck + " --closed-loop --wind 14 --output Nope --out '" + (dir / "y").string() + "'");
   EXPECT_NE(bad_output.code, 0);
   EXPECT_NE(bad_output.err.find("Nope: the model has no output of this name"), std::string::npos) << bad_output.err;
+  for (const auto& [args, message] : std::vector<std::pair<std::string, std::string>>{
+           {"--wind-step 0", "--wind-step: must be non-zero"},
+           {"--step-time 20", "--step-time: the step must come before the end (--tmax 12 s)"},
+           {"--output GenSpeed --output GenSpeed", "--output: GenSpeed given twice"}}) {
+    const auto bad = whirl("verify " + kDeck + " --closed-loop --wind 14 " + args + " --out '" + (dir / "z").string() + "'");
+    EXPECT_NE(bad.code, 0) << args;
+    EXPECT_NE(bad.err.find(message), std::string::npos) << bad.err;
+  }
   EXPECT_FALSE(std::filesystem::exists(dir / "x"));
   EXPECT_FALSE(std::filesystem::exists(dir / "y"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "z"));
 }
 
 }  // namespace
