@@ -43,3 +43,20 @@ def test_simulate_with_rosco_equals_the_cli(tmp_path):
     assert table["GenSpeed [rad/s]"].iloc[-1] > table["GenSpeed [rad/s]"].iloc[0]  # the step speeds it up first
     with pytest.raises(whirl.InputError, match="closed_loop: needs wind="):
         whirl.load(DECK).simulate(tmax=1, closed_loop=True)
+
+
+def test_closed_loop_step_equals_verify_closed_loop(tmp_path):
+    # `whirl verify --closed-loop`'s closed_loop_step.csv to the last digit; the rise of the generator speed
+    # agrees with the linear closed loop (tests/validation/test_closed_loop_simulation.cpp checks the numbers).
+    table = whirl.load(DECK).closed_loop_step(wind=14, tmax=3, outputs=["GenSpeed"])
+    code, _, err = cli("verify", DECK, "--closed-loop", "--wind", 14, "--tmax", 3, "--output", "GenSpeed", "--no-plot",
+                       "--out", tmp_path)
+    assert code == 0, err
+    ref = pd.read_csv(tmp_path / "closed_loop_step.csv", float_precision="round_trip")
+    pd.testing.assert_frame_equal(table, ref, check_exact=True)
+    assert list(table.columns) == ["time_s", "wind_speed_m_s", "GenSpeed_nonlinear", "GenSpeed_linear",
+                                   "collective_pitch_nonlinear", "collective_pitch_linear"]
+    with pytest.raises(whirl.InputError, match="closed_loop_step needs ROSCO's controller"):
+        whirl.load(case("nrel5mw", "Main_Aero.fst")).closed_loop_step(wind=14)
+    with pytest.raises(whirl.InputError, match="Nope: the model has no output of this name"):
+        whirl.load(DECK).closed_loop_step(wind=14, tmax=2, outputs=["Nope"])

@@ -327,6 +327,21 @@ class Model:
                                         float_precision="round_trip")
         return ClosedLoop(read(t["modes"]), read(t["margins"]), read(t["campbell"]), read(t["open_loop_campbell"]))
 
+    def closed_loop_step(self, wind: float, wind_step: float = 0.1, step_time: float = 1.0, tmax: float = 12.0,
+                         dt_out: float = 0.05, controller_dt: float = 0.01, azimuths: int = 12,
+                         outputs: Sequence[str] = ("GenSpeed", "TTDspFA")) -> pd.DataFrame:
+        """The linear closed loop checked against the nonlinear turbine with its ROSCO controller
+        (``whirl verify --closed-loop``): from the steady state at ``wind`` [m/s], a wind step
+        ``wind_step`` [m/s] at ``step_time`` [s], simulated with ROSCO's discrete laws every
+        ``controller_dt`` and by the linear closed loop (quasi-steady induction, multiblade average over
+        ``azimuths``). Returns closed_loop_step.csv as a DataFrame: ``time_s``, ``wind_speed_m_s``, then
+        per signal (``outputs`` and the pitch command) ``<name>_nonlinear`` and ``<name>_linear``, the
+        changes from the steady values. Raises :class:`InputError` for a deck without ROSCO's controller.
+        """
+        text = _whirl.closed_loop_step(self._core, float(wind), float(wind_step), float(step_time), float(tmax),
+                                       float(dt_out), float(controller_dt), int(azimuths), list(outputs))
+        return pd.read_csv(io.StringIO(text), float_precision="round_trip")
+
     def export(self, rpm: Union[None, float, Iterable[float]] = None, wind: Union[None, float, Iterable[float]] = None,
                schedule: Union[None, str, os.PathLike, pd.DataFrame] = None, azimuths: int = 36,
                inputs: Sequence[str] = (), outputs: Sequence[str] = (), drop_azimuth: bool = False,

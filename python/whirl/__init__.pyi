@@ -102,6 +102,9 @@ class Model:
                  allow_invalid_point: bool = ...) -> CampbellTable: ...
     def closed_loop(self, wind: Iterable[float], azimuths: int = ..., without_speed_filter: bool = ...,
                     progress: Union[None, bool, Callable[[int, int], Any]] = ...) -> ClosedLoop: ...
+    def closed_loop_step(self, wind: float, wind_step: float = ..., step_time: float = ..., tmax: float = ...,
+                         dt_out: float = ..., controller_dt: float = ..., azimuths: int = ...,
+                         outputs: Sequence[str] = ...) -> pd.DataFrame: ...
     def export(self, rpm: Union[None, float, Iterable[float]] = ..., wind: Union[None, float, Iterable[float]] = ...,
                schedule: Union[None, str, os.PathLike, pd.DataFrame] = ..., azimuths: int = ...,
                inputs: Sequence[str] = ..., outputs: Sequence[str] = ..., drop_azimuth: bool = ...,
