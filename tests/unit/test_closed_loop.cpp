@@ -199,6 +199,19 @@ TEST(ClosedLoop, FloatingFeedbackEqualsTransferFunctions) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("YawBrTVxp"), std::string::npos) << e.what();
   }
+  // Fl_Mode 2 reads the nacelle's pitch rate instead: the same loop on the output of that name.
+  LinearController c2 = c;
+  c2.floating_mode = 2;
+  StateSpaceModel p2 = p;
+  p2.y.back().name = "NcIMURVys";
+  expectSameEigenvalues(closeLoop(p2, c2).A, cl.A);
+  EXPECT_EQ(floatingFeedbackOutput(c2), "NcIMURVys");
+  EXPECT_THROW(closeLoop(p, c2), InputError);  // the plant has YawBrTVxp only
+  // Without the pitch loop (below rated) the feedback has nothing to act through: no states, no output needed.
+  LinearController below = c;
+  below.pitch_active = false;
+  EXPECT_EQ(floatingFeedbackOutput(below), "");
+  EXPECT_EQ(closeLoop(plant(), below).x.size(), plant().x.size() + 1);  // the speed filter only
 }
 
 TEST(ClosedLoop, TorquePiSecondOrderFilterEqualsTransferFunctions) {
