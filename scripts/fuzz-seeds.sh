@@ -36,6 +36,7 @@ add fuzz_read_seastate tests/data/openfast/v4_seastate/SeaState.dat
 add fuzz_read_hydrodyn cases/*/5MW_Baseline/*_HydroDyn.dat tests/data/openfast/decks/certtest/5MW_Baseline/*_HydroDyn.dat
 add fuzz_read_discon cases/nrel5mw/rosco/DISCON.IN
 add fuzz_lin tests/data/openfast-lin/*/*.lin
+add fuzz_read_beamdyn cases/nrel5mw_beamdyn/5MW_Baseline/*_BeamDyn_Blade.dat
 add fuzz_subdyn cases/oc3_monopile/5MW_Baseline/*_SubDyn.dat tests/data/subdyn/*.dat
 add fuzz_schedule cases/nrel5mw/NREL5MW_Oper.csv tests/mpi/*.csv fuzz/seeds/schedule/*
 add fuzz_compare cases/*/table9_1.csv cases/*/reference.csv fuzz/seeds/compare/*

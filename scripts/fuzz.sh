@@ -22,7 +22,7 @@ shift || true
 out=${FUZZ_BUILD_DIR:-build-fuzz}
 all=(fuzz_case_yaml fuzz_openfast_parse fuzz_fst fuzz_elastodyn fuzz_servodyn fuzz_ed_tower fuzz_ed_blade fuzz_lin
      fuzz_schedule fuzz_compare fuzz_tracking fuzz_aerodyn fuzz_ad_blade fuzz_airfoil fuzz_inflowwind fuzz_servodyn_aero
-     fuzz_read_aerodyn fuzz_read_ad_blade fuzz_read_airfoil fuzz_read_inflowwind fuzz_read_servodyn fuzz_subdyn
+     fuzz_read_aerodyn fuzz_read_ad_blade fuzz_read_airfoil fuzz_read_inflowwind fuzz_read_servodyn fuzz_subdyn fuzz_read_beamdyn
      fuzz_read_case_yaml fuzz_read_fst fuzz_read_elastodyn fuzz_read_ed_tower fuzz_read_ed_blade
      fuzz_read_aerodyn14 fuzz_read_airfoil14 fuzz_read_wamit_ss fuzz_read_map fuzz_read_moordyn
      fuzz_read_hydrodyn fuzz_read_seastate fuzz_read_discon fuzz_rotor_performance

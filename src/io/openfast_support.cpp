@@ -10,9 +10,8 @@ namespace whirl::io {
 
 std::vector<std::string> unsupportedOptions(const FstInput& fst) {
   Refusals r(fst.source);
-  r.addIf(fst.CompElast == 2, "CompElast",
-          "BeamDyn blades are not modelled, CompElast = 1 uses the ElastoDyn blade files");
-  r.addIf(fst.CompElast != 1 && fst.CompElast != 2, "CompElast", "only ElastoDyn (CompElast = 1) is modelled");
+  r.addIf(fst.CompElast != 1 && fst.CompElast != 2, "CompElast",
+          "only ElastoDyn (CompElast = 1) and ElastoDyn with BeamDyn blades (2) are modelled");
   r.addIf(fst.CompSub == 2, "CompSub", "an external platform (ExtPtfm superelement) is not modelled",
           "CompSub = 0 or 1 (SubDyn)");
   r.addIf(fst.CompSub != 0 && fst.CompSub != 1 && fst.CompSub != 2, "CompSub", "unknown substructure module",

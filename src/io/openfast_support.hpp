@@ -13,7 +13,7 @@
 
 namespace whirl::io {
 
-/// Options of the `.fst` whirl cannot model: CompElast != 1 (BeamDyn or Simplified-ElastoDyn blades),
+/// Options of the `.fst` whirl cannot model: CompElast other than 1 or 2 (Simplified ElastoDyn),
 /// CompSub = 2 (ExtPtfm) or unknown, MHK != 0 (buoyancy, added mass), NRotors > 1.
 /// Load modules are not listed here: aero, inflow and controls are read on request; HydroDyn and MAP++
 /// are read when a platform DOF is on and CompSub = 0 (requireSupported checks the combination).

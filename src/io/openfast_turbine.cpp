@@ -21,6 +21,9 @@ OpenFastTurbine readOpenFastTurbine(const std::filesystem::path& fst, OverrideSe
   OpenFastTurbine t;
   t.fst = readFst(fst, overrides);
   t.elastodyn = readElastoDyn(t.fst.source.getExistingPath("EDFile"), overrides);
+  if (t.fst.CompElast == 2)
+    for (int k = 1; k <= t.elastodyn.config.NumBl; ++k)
+      t.beamdyn.push_back(readBeamDyn(t.fst.source.getExistingPath("BDBldFile(" + std::to_string(k) + ")"), overrides));
   if (t.fst.CompSub == 1) {
     // A mooring on a SubDyn substructure is refused by requireSupported, unread.
     t.subdyn = readSubDyn(t.fst.source.getExistingPath("SubFile"), overrides);

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <optional>
 
+#include "src/io/beamdyn_input.hpp"
 #include "src/io/elastodyn_input.hpp"
 #include "src/io/fst_input.hpp"
 #include "src/io/hydrodyn_input.hpp"
@@ -26,9 +27,11 @@ struct OpenFastTurbine {
   std::optional<SeaStateInput> seastate;  ///< with the HydroDyn file when CompSeaSt = 1 (OpenFAST v4+)
   std::optional<MapInput> mooring;        ///< with a platform DOF on: MAP++ (CompMooring = 1) or MoorDyn (3)
   std::optional<SubDynInput> subdyn;      ///< with CompSub = 1 (then a mooring is not read)
+  /// With CompElast = 2: the BeamDyn file of each blade (BDBldFile(k), k = 1 … NumBl).
+  std::vector<BeamDynInput> beamdyn;
 };
 
-/// Reads `fst` and the ElastoDyn files it names, its SubDyn file (CompSub = 1), and otherwise, with a
+/// Reads `fst` and the ElastoDyn files it names, the BeamDyn files with CompElast = 2, its SubDyn file (CompSub = 1), and otherwise, with a
 /// platform DOF on, its HydroDyn (CompHydro = 1) and MAP++ (CompMooring = 1) or MoorDyn (3) files. `overrides` (may be
 /// null) apply to every file read; call overrides->requireAllUsed() once all the files the run needs are read. Throws
 /// InputError naming file, line and key, e.g. "a.fst:33: EDFile: file not found: …".

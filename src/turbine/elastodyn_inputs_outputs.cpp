@@ -99,9 +99,9 @@ void addOutputs(Builder& b, const TowerParts& tower, const DrivetrainParts& dt, 
   // Blade body: y = out of plane (flap), z = in plane (edge), both turning with the pitch.
   for (size_t k = 0; k < rotor.shape_dofs.size(); ++k) {
     std::vector<std::pair<int, double>> flap, edge;
-    for (int s = 0; s < 3; ++s) {
-      flap.push_back({rotor.shape_dofs[k][s], rotor.root_moment_gains[k](0, s)});
-      edge.push_back({rotor.shape_dofs[k][s], rotor.root_moment_gains[k](1, s)});
+    for (std::size_t s = 0; s < rotor.shape_dofs[k].size(); ++s) {
+      flap.push_back({rotor.shape_dofs[k][s], rotor.root_moment_gains[k](0, static_cast<Eigen::Index>(s))});
+      edge.push_back({rotor.shape_dofs[k][s], rotor.root_moment_gains[k](1, static_cast<Eigen::Index>(s))});
     }
     y.push_back(dofOutput("RootMFlp" + std::to_string(k + 1), "N m", 0, flap));
     y.push_back(dofOutput("RootMEdg" + std::to_string(k + 1), "N m", 0, edge));

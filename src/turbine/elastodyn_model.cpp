@@ -61,7 +61,7 @@ std::optional<io::ServoDynInput> yawSpring(const io::OpenFastTurbine& t, const E
 Model buildElastoDynModel(const io::OpenFastTurbine& t, const ElastoDynModelOptions& opt) {
   io::requireSupported(t);
   const io::ElastoDynInput& ed = t.elastodyn;
-  elastodyn::Builder b{ed, opt, ModelBuilder{}};
+  elastodyn::Builder b{ed, opt, ModelBuilder{}, t.beamdyn.empty() ? nullptr : &t.beamdyn};
   // The title names the model and titles the Campbell plot.
   requirePrintable(ed.source.title(), ed.source.path().string(), ed.source.titleLine(), "title");
   b.model().name = ed.source.title();
@@ -105,6 +105,13 @@ io::OpenFastTurbine readElastoDynTurbine(const std::string& path, const std::vec
       if (v != "fem" && v != "polynomial")
         throw InputError("--set '" + text + "': shapes: expected polynomial (the files' mode-shape polynomials) or fem");
       opt.fem_shapes = v == "fem";
+      continue;
+    }
+    if (io::toLower(o.key) == "blade_elements" || io::toLower(o.key) == "blade_modes") {  // BeamDyn blades
+      const std::optional<double> v = io::parseFortranDouble(o.value);
+      if (!v || *v != std::floor(*v) || *v < 1 || *v > 10000)
+        throw InputError("--set '" + text + "': " + o.key + ": expected a positive integer");
+      (io::toLower(o.key) == "blade_modes" ? opt.blade_modes : opt.blade_elements) = static_cast<int>(*v);
       continue;
     }
     file_overrides.push_back(std::move(o));

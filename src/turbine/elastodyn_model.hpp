@@ -87,6 +87,10 @@ struct ElastoDynModelOptions {
   /// Tower and blade shapes from the beam FE (elastodyn_fem_shapes.hpp) instead of the files' polynomials:
   /// tower with the rotor-nacelle top mass and gravity, blades at the initial rotor speed RotSpeed.
   bool fem_shapes = false;
+  /// BeamDyn blades (CompElast = 2, beamdyn_blade.hpp): equal 6 × 6 elements along the axis and the
+  /// fixed-root modes kept (`--set blade_elements=N`, `--set blade_modes=N`).
+  int blade_elements = 60;
+  int blade_modes = 8;
   /// Aerodynamics (AeroDyn, InflowWind) when the .fst has CompAero = 2: read by readElastoDynTurbine.
   /// Absent: a structural model. (elastodyn_aero.cpp; frames and conventions in src/model/aero_model.hpp.)
   std::optional<io::AeroDeckInput> aero;
@@ -101,8 +105,8 @@ struct ElastoDynModelOptions {
 Model buildElastoDynModel(const io::OpenFastTurbine& turbine, const ElastoDynModelOptions& opt = {});
 
 /// Reads `fst_or_dat_path` (a `.fst`, or any other name: an ElastoDyn main file) with KEY=VALUE
-/// overrides applied to every file read; `gravity=<m/s²>` and `shapes=polynomial|fem` (any case) are whirl
-/// options instead (ElastoDynModelOptions::gravity, fem_shapes).
+/// overrides applied to every file read; `gravity=<m/s²>`, `shapes=polynomial|fem` (any case),
+/// `blade_elements=N` and `blade_modes=N` are whirl options instead (ElastoDynModelOptions).
 /// Every override must be used by some file read. Throws InputError naming file, line and key.
 Model readElastoDynModel(const std::string& fst_or_dat_path, const std::vector<std::string>& overrides = {});
 

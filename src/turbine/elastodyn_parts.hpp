@@ -24,6 +24,8 @@ struct Builder {
   const io::ElastoDynInput& ed;
   const ElastoDynModelOptions& opt;
   ModelBuilder builder;
+  /// The BeamDyn blades (CompElast = 2), one per blade; null: ElastoDyn's blades.
+  const std::vector<io::BeamDynInput>* beamdyn = nullptr;
 
   Model& model() { return builder.model(); }
   const Model& model() const { return builder.model(); }
@@ -126,8 +128,9 @@ struct BladeParts {
 struct RotorParts {
   std::vector<BladeParts> blades;
   std::vector<int> pitch;                     ///< pitch DOF of each blade
-  std::vector<std::array<int, 3>> shape_dofs; ///< flap 1, edge 1, flap 2 DOFs of each blade
-  std::vector<MatX> root_moment_gains;        ///< per blade, 2 × 3: (m_y flap, m_z edge) at the root
+  /// Elastic DOFs of each blade: flap 1, edge 1, flap 2 (ElastoDyn) or the kept FE modes (BeamDyn).
+  std::vector<std::vector<int>> shape_dofs;
+  std::vector<MatX> root_moment_gains;        ///< per blade, 2 × shapes: (m_y flap, m_z edge) at the root
   int teeter = -1;                            ///< teeter DOF (2 blades), −1 without one
 };
 

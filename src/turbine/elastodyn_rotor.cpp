@@ -2,6 +2,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "src/turbine/beamdyn_blade.hpp"
 #include "src/turbine/elastodyn_blade_shapes.hpp"
 #include "src/turbine/elastodyn_fem_shapes.hpp"
 #include "src/turbine/elastodyn_parts.hpp"
@@ -39,14 +40,20 @@ RotorParts addBlades(Builder& b, const RotorHub& hub) {
   const int nb = c.NumBl;
   for (int k = 0; k < nb; ++k) {
     const std::string name = "blade " + std::to_string(k + 1);
-    const io::ElastoDynBlade& file = ed.blades.at(static_cast<std::size_t>(k));
-    const double tip_mass = ed.mass.TipMass[static_cast<std::size_t>(k)];
-    ElastoDynBladeBeam beam = elastoDynBladeBeam(file, L, nodes, tip_mass);
+    // BeamDyn (CompElast = 2): the FE blade's fixed-root modes as shapes, its exact modal stiffness and
+    // damping; ElastoDyn's TipMass is not applied (OpenFAST applies it to ElastoDyn's blades only).
+    std::optional<BeamDynBladeBody> fe;
+    if (b.beamdyn)
+      fe = beamDynBladeBody(b.beamdyn->at(static_cast<std::size_t>(k)), {b.opt.blade_elements, b.opt.blade_modes});
+    const double tip_mass = fe ? 0.0 : ed.mass.TipMass[static_cast<std::size_t>(k)];
+    ElastoDynBladeBeam beam = fe ? fe->beam : elastoDynBladeBeam(ed.blades.at(static_cast<std::size_t>(k)), L, nodes, tip_mass);
     // shapes=fem: the FE modes of the blade's properties at the initial rotor speed RotSpeed.
-    if (b.opt.fem_shapes)
+    if (b.opt.fem_shapes && !fe)
       beam.shapes = elastoDynBladeFemShapes(elastoDynBladeModeInput(beam, c.HubRad, ed.init.RotSpeed * pi / 30));
     BeamOptions o;
-    o.integration = {BeamIntegration::Midpoint, nodes};
+    // The FE shapes are linear between the FE nodes: 4 trapezoid points per element.
+    o.integration = fe ? BeamIntegration{BeamIntegration::Trapezoid, 4 * b.opt.blade_elements}
+                       : BeamIntegration{BeamIntegration::Midpoint, nodes};
     o.axial_shortening = b.opt.axial_shortening;
     const BeamBody bb = buildBeamBody(beam.props, beam.shapes, o, name);
 
@@ -64,17 +71,24 @@ RotorParts addBlades(Builder& b, const RotorHub& hub) {
     bl.joint = JointType::Revolute;
     bl.axis = -Vec3::UnitX();
     bl.inertia = bb.inertia;
-    bl.elastic.K = applyStiffnessTuners(bb.elastic.K, beam.stiffness_tuner);
-    bl.elastic.D = elastoDynModalDamping(bl.elastic.K, beam.generalized_mass.array() - tip_mass, beam.damping_ratio);
-    bl.points.push_back(beamPoint(beam.props, beam.shapes, o.axial_shortening, L, "tip"));
-    bl.nodes = beamNodes(beam.props, beam.shapes, o.axial_shortening, L);
+    if (fe) {
+      bl.elastic.K = fe->K;
+      bl.elastic.D = fe->D;
+    } else {
+      bl.elastic.K = applyStiffnessTuners(bb.elastic.K, beam.stiffness_tuner);
+      bl.elastic.D = elastoDynModalDamping(bl.elastic.K, beam.generalized_mass.array() - tip_mass, beam.damping_ratio);
+    }
+    const double length = fe ? fe->length : L;
+    bl.points.push_back(beamPoint(beam.props, beam.shapes, o.axial_shortening, length, "tip"));
+    bl.nodes = beamNodes(beam.props, beam.shapes, o.axial_shortening, length);
     const int body = b.addBody(std::move(bl));
     out.pitch.push_back(
         b.addDof(name + " pitch", body, DofKind::Joint, 0, false, ed.init.BlPitch[static_cast<std::size_t>(k)] * deg));
     out.blades.push_back({body, out.pitch.back(), beam});
-    std::array<int, 3> dofs{};
-    for (int s = 0; s < 3; ++s) {
-      const int d = b.addDof(name + " " + beam.shapes[s]->name, body, DofKind::Elastic, s, on[s]);
+    std::vector<int> dofs(beam.shapes.size());
+    for (std::size_t s = 0; s < beam.shapes.size(); ++s) {
+      const int d = b.addDof(name + " " + beam.shapes[s]->name, body, DofKind::Elastic, static_cast<int>(s),
+                             fe ? true : on[s]);
       b.model().dofs[d].blade = k;  // rotating frame, blade k: multiblade coordinates
       dofs[s] = d;
     }

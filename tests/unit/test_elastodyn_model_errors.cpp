@@ -47,7 +47,7 @@ TEST_F(ElastoDynModelErrors, MissingServoDynWhenTheYawSpringIsNeeded) {
 TEST_F(ElastoDynModelErrors, UnsupportedOption) {
   const std::string msg = error({"PtfmPDOF=True"});
   EXPECT_THAT(msg, HasSubstr(path(kEd) + ":23: PtfmPDOF: True not supported by whirl (platform DOFs"));
-  EXPECT_THAT(error({"CompElast=2"}), HasSubstr(path(kFst) + ":13: CompElast: 2 not supported by whirl"));
+  EXPECT_THAT(error({"CompElast=3"}), HasSubstr(path(kFst) + ":13: CompElast: 3 not supported by whirl"));
 }
 
 TEST_F(ElastoDynModelErrors, NaNProperty) {

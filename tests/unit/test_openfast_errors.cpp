@@ -250,11 +250,12 @@ TEST_F(BadInput, UserDefinedTeeterIsRefused) {
                 "UserTeet) is not modelled; whirl supports only TeetMod = 0 or 1)");
 }
 
-TEST_F(BadInput, PlatformDofAndBeamDynAreRefused) {
+TEST_F(BadInput, PlatformDofAndSimplifiedElastoDynAreRefused) {
   edit(kEd, "False         PtfmPDOF", "True          PtfmPDOF");
-  edit(kFst, "          1   CompElast", "          2   CompElast");
+  edit(kFst, "          1   CompElast", "          3   CompElast");
   const std::string msg = inputErrorMessage([&] { whirl::io::requireSupported(read()); });
-  EXPECT_THAT(msg, StartsWith(path(kFst) + ":13: CompElast: 2 not supported by whirl (BeamDyn blades"));
+  EXPECT_THAT(msg, StartsWith(path(kFst) + ":13: CompElast: 3 not supported by whirl (only ElastoDyn (CompElast = 1) "
+                                           "and ElastoDyn with BeamDyn blades (2) are modelled)"));
   EXPECT_THAT(msg, HasSubstr(path(kEd) + ":23: PtfmPDOF: True not supported by whirl (platform DOFs"));
 }
 
