@@ -1,6 +1,8 @@
 #include "linearize/linearize.hpp"
 
 #include "linearize/jacobian.hpp"
+#include "linearize/unsteady_aero.hpp"
+#include "src/dynamics/aero_unsteady.hpp"
 #include "src/dynamics/mass_matrix.hpp"
 #include "src/dynamics/residual.hpp"
 #include "src/model/error.hpp"
@@ -48,6 +50,31 @@ void firstOrderStates(const Model& m, LinearModel& lin, MatX& G, MatX& Bz) {
     }
     z0 += k;
   }
+}
+
+// The unsteady-airfoil states (linearize/unsteady_aero.hpp) after the body states: K, C, Q take the UA loads'
+// changes, G their columns, and Zq = [Z_q, Z_q̇] (on the active coordinates), Za = A_zz, Zu = Z_u their rows;
+// names, groups and steady values into lin.
+void addUnsteadyAero(const Model& m, const OperatingPoint& op, bool inputs, LinearModel& lin, MatX& G, MatX& Zq,
+                     MatX& Za, MatX& Zu) {
+  const UnsteadyAeroLinear ua = unsteadyAeroLinear(m, op, lin.dofs, inputs);
+  const int n = static_cast<int>(lin.dofs.size()), nb = static_cast<int>(G.cols());
+  const int nz = static_cast<int>(ua.z.size());
+  for (int r = 0; r < n; ++r) {
+    lin.K.row(r) += ua.dK.row(lin.dofs[r]);
+    lin.C.row(r) += ua.dC.row(lin.dofs[r]);
+    if (inputs) lin.Q.row(r) += ua.dQ.row(lin.dofs[r]);
+  }
+  G.conservativeResize(n, nb + nz);
+  for (int r = 0; r < n; ++r) G.block(r, nb, 1, nz) = ua.G.row(lin.dofs[r]);
+  Zq.resize(nz, 2 * n);
+  Zq << ua.Zq, ua.Zqd;
+  Za = ua.Azz;
+  Zu = ua.Zu;
+  lin.first_order_names.insert(lin.first_order_names.end(), ua.names.begin(), ua.names.end());
+  lin.first_order_groups.insert(lin.first_order_groups.end(), ua.groups.begin(), ua.groups.end());
+  lin.first_order_values.conservativeResize(nb + nz);
+  lin.first_order_values.tail(nz) = ua.z;
 }
 
 }  // namespace
@@ -104,8 +131,13 @@ LinearModel linearize(const Model& m, const OperatingPoint& op, LinearizeWorkspa
                        "inertias and which DOFs are frozen)");
   MatX G, Bz;  // loads of the first-order states on the coordinates, their drive by the rates
   firstOrderStates(m, lin, G, Bz);
+  const int nb = static_cast<int>(G.cols());  // body states, then the unsteady-airfoil states
+  lin.first_order_values = VecX::Zero(nb);
+  MatX Zq, Za, Zu;  // the UA rows: [Z_q, Z_q̇] on the active coordinates, A_zz, Z_u
+  if (opt.unsteady_aero && frozen && m.aero.ua_mod > 0 && uaStateCount(m.aero) > 0)
+    addUnsteadyAero(m, op, nu > 0, lin, G, Zq, Za, Zu);
   const int nz = static_cast<int>(G.cols());
-  // One solve with the right-hand sides [K C G Q].
+  // One solve with the right-hand sides [K C G Q] (K, C, Q with the UA loads' changes, if any).
   MatX rhs(n, 2 * n + nz + nu);
   rhs << lin.K, lin.C, G, lin.Q;
   ldltSolveInPlace(ldlt, rhs);
@@ -114,15 +146,20 @@ LinearModel linearize(const Model& m, const OperatingPoint& op, LinearizeWorkspa
   lin.A.block(n, 0, n, 2 * n) = -rhs.leftCols(2 * n);
   if (nz > 0) {
     lin.A.block(n, 2 * n, n, nz) = rhs.middleCols(2 * n, nz);
-    lin.A.block(2 * n, n, nz, n) = Bz;
+    lin.A.block(2 * n, n, nb, n) = Bz;
     int z0 = 0;
     for (const BodyStateSpace& bs : m.body_states) {
       lin.A.block(2 * n + z0, 2 * n + z0, bs.A.rows(), bs.A.rows()) = bs.A;
       z0 += static_cast<int>(bs.A.rows());
     }
+    if (nz > nb) {
+      lin.A.block(2 * n + nb, 0, nz - nb, 2 * n) = Zq;
+      lin.A.block(2 * n + nb, 2 * n + nb, nz - nb, nz - nb) = Za;
+    }
   }
   lin.B = MatX::Zero(2 * n + nz, nu);
   if (nu > 0) lin.B.block(n, 0, n, nu) = rhs.rightCols(nu);
+  if (nu > 0 && nz > nb) lin.B.bottomRows(nz - nb) = Zu;
   return lin;
 }
 

@@ -14,9 +14,10 @@ namespace {
 struct LinearizeOptions {
   ModelOptions model;
   std::string out;
+  bool unsteady_aero = false;
 };
 
-// [q; q̇; z]: the coordinates, their rates, the first-order states (HydroDyn radiation).
+// [q; q̇; z]: the coordinates, their rates, the first-order states (HydroDyn radiation, unsteady airfoils).
 std::vector<std::string> stateNames(const LinearModel& lin) {
   std::vector<std::string> s = lin.dof_names;
   for (const auto& d : lin.dof_names) s.push_back("d(" + d + ")/dt");
@@ -34,7 +35,9 @@ void run(const LinearizeOptions& opt) {
   const Model m = loadModel(opt.model);
   const OperatingPoint op = solveOperatingPoint(m, startPoint(m, opt.model));
   const std::vector<std::string> problems = checkSolvedPoints(opt.model, m, {op});
-  const LinearModel lin = linearize(m, op);
+  whirl::LinearizeOptions lo;
+  lo.unsteady_aero = opt.unsteady_aero;
+  const LinearModel lin = linearize(m, op, lo);
   const std::string dir = opt.out.empty() ? defaultOutputFolder(opt.model.case_path) : opt.out;
   prepareOutputFolder(dir);
   OutputSet files(dir);  // the seven files appear together, or none
@@ -58,6 +61,9 @@ void run(const LinearizeOptions& opt) {
   j["operating_point"]["qd"] = namedValues(m, op.qd);
   j["operating_point"]["u"] = nlohmann::json::object();
   for (int i = 0; i < m.ninput(); ++i) j["operating_point"]["u"][m.inputs[i].name] = op.u(i);
+  j["operating_point"]["first_order"] = nlohmann::json::object();
+  for (size_t k = 0; k < lin.first_order_names.size(); ++k)
+    j["operating_point"]["first_order"][lin.first_order_names[k]] = lin.first_order_values(static_cast<Eigen::Index>(k));
   j["equilibrium"]["solved_dofs"] = nlohmann::json::array();
   for (int i : op.solved) j["equilibrium"]["solved_dofs"].push_back(m.dofs[i].name);
   j["equilibrium"]["held_dofs"] = nlohmann::json::array();  // unrestrained: held at their value
@@ -85,6 +91,8 @@ void addLinearizeCommand(CLI::App& app) {
       "linearize", "solve the operating point and write M, C, K, Q, A, B (CSV) and linearization.json");
   addModelOptions(*cmd, opt->model);
   cmd->add_option("--out", opt->out, "output folder (default reports/<case name>)");
+  cmd->add_flag("--unsteady-aero", opt->unsteady_aero,
+                "unsteady airfoil states (the deck's UA_Mod 4 or 6) in the linear model, on the frozen wake");
   cmd->callback([opt]() { runWithCaseSource(opt->model.case_path, [&] { run(*opt); }); });
 }
 

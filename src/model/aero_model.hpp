@@ -16,6 +16,7 @@
 
 #include "src/aero/bem.hpp"
 #include "src/aero/polar.hpp"
+#include "src/aero/ua_coefficients.hpp"
 #include "src/model/types.hpp"
 
 namespace whirl {
@@ -29,6 +30,9 @@ struct AeroStation {
   double twist = 0;    ///< aerodynamic twist, positive towards feather [rad]
   int polar = -1;      ///< index into AeroModel::polars
   double weight = 0;   ///< length the element's load per unit length acts over (trapezoid rule) [m]
+  /// Carries unsteady-airfoil states (AeroModel::ua_mod > 0, inside UAStartRad … UAEndRad and a table that
+  /// allows them: src/aero/ua_span.hpp).
+  bool ua = false;
 };
 
 /// The elements of one blade.
@@ -60,6 +64,11 @@ struct AeroModel {
   bool induction = true;        ///< BEM induction (AeroDyn WakeMod = 1); false: geometric inflow (WakeMod = 0)
   aero::BemOptions bem;
   SteadyWind wind;
+  /// Unsteady airfoil aerodynamics (AeroDyn UA_Mod): 0 none, 4 (HGM) or 6 (Øye); other values leave it 0.
+  /// Used only by linearizations that ask for the states (LinearizeOptions::unsteady_aero).
+  int ua_mod = 0;
+  std::vector<aero::UaTable> ua_tables;  ///< per polar (same index) when ua_mod > 0
+  std::vector<bool> ua_has_cm;           ///< per polar: the table has a Cm column read (AeroDyn ColCm > 0)
 
   bool active() const { return !blades.empty(); }
   /// Number of elements over all blades (the length of an AeroInflow).

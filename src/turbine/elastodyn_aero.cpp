@@ -4,7 +4,9 @@
 #include <numbers>
 #include <string>
 
+#include "src/aero/ua_span.hpp"
 #include "src/dynamics/generator_torque.hpp"
+#include "src/io/airfoil_ua.hpp"
 #include "src/model/error.hpp"
 #include "src/shapes/beam.hpp"
 #include "src/turbine/elastodyn_parts.hpp"
@@ -64,6 +66,34 @@ AeroBlade bladeElements(Builder& b, const BladeParts& blade, const io::AeroDynBl
   return out;
 }
 
+// The unsteady-airfoil data of the deck (UA_Mod 4 or 6): each airfoil's table (the one kept, as the polar)
+// and which elements carry states, by AeroDyn's span rule on the elements' distances from the rotor axis in
+// the undeflected, coned rotor (AeroDyn Init_MiscVars: rLocal at initialization) and its airfoil rule.
+void addUnsteadyAirfoils(AeroModel& am, const io::AeroDeckInput& deck, double hub_radius, double precone) {
+  const io::AeroDynInput& ad = deck.aerodyn;
+  if (ad.UA_Mod != 4 && ad.UA_Mod != 6) return;
+  am.ua_mod = ad.UA_Mod;
+  for (const io::AirfoilInput& af : deck.airfoils) {
+    am.ua_tables.push_back(io::airfoilUa(af, 0, ad.UA_Mod));
+    am.ua_has_cm.push_back(ad.UseBlCm && !af.tables.front().cm.empty());
+  }
+  std::vector<std::vector<double>> r(am.blades.size());
+  double r_max = 0;
+  for (std::size_t k = 0; k < am.blades.size(); ++k)
+    for (const AeroStation& st : am.blades[k].stations) {
+      r[k].push_back((hub_radius + st.span) * std::cos(precone));
+      r_max = std::max(r_max, r[k].back());
+    }
+  if (!(r_max > 0)) return;
+  for (std::size_t k = 0; k < am.blades.size(); ++k) {
+    const std::vector<bool> on = aero::uaSpanMask(r[k], r_max, ad.UAStartRad, ad.UAEndRad);
+    for (std::size_t j = 0; j < on.size(); ++j) {
+      AeroStation& st = am.blades[k].stations[j];
+      st.ua = on[j] && aero::uaPossible(am.ua_tables[static_cast<std::size_t>(st.polar)]);
+    }
+  }
+}
+
 }  // namespace
 
 void addAerodynamics(Builder& b, const DrivetrainParts& dt, const RotorParts& rotor, const io::AeroDeckInput& deck) {
@@ -104,6 +134,7 @@ void addAerodynamics(Builder& b, const DrivetrainParts& dt, const RotorParts& ro
   am.bem.ai_drag = ad.AIDrag;
   am.bem.ti_drag = ad.TIDrag;
   am.bem.max_iter = std::max(ad.MaxIter, 100);
+  if (!v14) addUnsteadyAirfoils(am, deck, c.HubRad, c.PreCone.front() * deg);
 
   const io::InflowWindInput& w = deck.inflow;
   Input wind;

@@ -1,0 +1,109 @@
+#include "linearize/unsteady_aero.hpp"
+
+#include <algorithm>
+
+#include "src/dynamics/aero_unsteady.hpp"
+#include "src/dynamics/kinematics.hpp"
+#include "src/model/error.hpp"
+
+namespace whirl {
+namespace {
+
+void requireFrozenInduction(const Model& m, const OperatingPoint& op) {
+  if (m.aero.ua_mod <= 0) throw ComputeError("unsteady-airfoil states: the model has no UA_Mod 4 or 6");
+  if (static_cast<int>(op.inflow.axial.size()) != m.aero.nstations())
+    throw ComputeError("unsteady-airfoil states: the operating point carries no induction of the blade elements "
+                       "(solve it with solveOperatingPoint)");
+}
+
+// One column of the AD evaluation: which argument and which index.
+struct Column {
+  enum Kind { Q, Qd, U, Z } kind;
+  int index;
+};
+
+}  // namespace
+
+VecX unsteadyAeroSteadyStates(const Model& m, const OperatingPoint& op) {
+  requireFrozenInduction(m, op);
+  Workspace<double> ws(m);
+  forwardKinematics(m, ws, op.q, op.qd, op.qdd);
+  const int nz = uaStateCount(m.aero), ns = uaStatesPerElement(m.aero);
+  VecX z = VecX::Zero(nz), e = VecX::Zero(m.ndof());
+  std::vector<aero::UaInput<double>> inputs;
+  addUnsteadyAeroLoads<double>(m, ws, op.q, op.qd, op.u, op.inflow, &z, e, nullptr, &inputs);
+  int zi = 0, k = 0;
+  for (const AeroBlade& b : m.aero.blades)
+    for (const AeroStation& st : b.stations) {
+      if (!st.ua) continue;
+      const aero::HgmState<double> x = aero::hgmSteady(uaSection(m.aero, st), inputs[static_cast<std::size_t>(k++)]);
+      if (ns == 4) z.segment(zi, 4) << x.x1, x.x2, x.x3, x.x4;
+      else z(zi) = x.x4;
+      zi += ns;
+    }
+  return z;
+}
+
+UnsteadyAeroLinear unsteadyAeroLinear(const Model& m, const OperatingPoint& op, const std::vector<int>& cols,
+                                      bool inputs) {
+  UnsteadyAeroLinear out;
+  out.z = unsteadyAeroSteadyStates(m, op);
+  uaStateNames(m.aero, out.names, out.groups);
+  const int n = m.ndof(), nz = static_cast<int>(out.z.size()), nc = static_cast<int>(cols.size());
+  const int nu = inputs ? m.ninput() : 0;
+  std::vector<Column> all;
+  for (int c : cols) all.push_back({Column::Q, c});
+  for (int c : cols) all.push_back({Column::Qd, c});
+  for (int i = 0; i < nu; ++i) all.push_back({Column::U, i});
+  for (int i = 0; i < nz; ++i) all.push_back({Column::Z, i});
+  Workspace<ADChunk> ws(m);
+  auto load = [](const VecX& v) {
+    VecXT<ADChunk> a(v.size());
+    for (Eigen::Index i = 0; i < v.size(); ++i) a(i) = ADChunk(v(i));
+    return a;
+  };
+  VecXT<ADChunk> q = load(op.q), qd = load(op.qd), qdd = load(op.qdd), u = load(op.u), z = load(out.z);
+  VecXT<ADChunk> e_ua(n), e_qs(n), zdot(nz);
+  // Seeds direction k of a column (on: 1, off: 0); an input that drives frozen coordinates (pitch) seeds
+  // them with its gain, as residualJacobian does.
+  auto seed = [&](const Column& c, int k, bool on) {
+    const double s = on ? 1.0 : 0.0;
+    switch (c.kind) {
+      case Column::Q: q(c.index).derivatives()(k) = s; break;
+      case Column::Qd: qd(c.index).derivatives()(k) = s; break;
+      case Column::Z: z(c.index).derivatives()(k) = s; break;
+      case Column::U:
+        u(c.index).derivatives()(k) = s;
+        for (const InputDofTarget& t : m.inputs[c.index].dofs) q(t.dof).derivatives()(k) = on ? t.gain : 0.0;
+        break;
+    }
+  };
+  const int ntot = static_cast<int>(all.size());
+  MatX Je(n, ntot), Jz(nz, ntot);
+  for (int c0 = 0; c0 < ntot; c0 += kChunk) {
+    const int w = std::min(kChunk, ntot - c0);
+    for (int k = 0; k < w; ++k) seed(all[c0 + k], k, true);
+    forwardKinematics(m, ws, q, qd, qdd);
+    for (int i = 0; i < n; ++i) e_ua(i) = e_qs(i) = ADChunk(0.0);
+    addUnsteadyAeroLoads<ADChunk>(m, ws, q, qd, u, op.inflow, &z, e_ua, &zdot);
+    addUnsteadyAeroLoads<ADChunk>(m, ws, q, qd, u, op.inflow, nullptr, e_qs, nullptr);
+    for (int k = 0; k < w; ++k) {
+      const bool state = all[c0 + k].kind == Column::Z;  // e_QS does not depend on z
+      for (int i = 0; i < n; ++i)
+        Je(i, c0 + k) = e_ua(i).derivatives()(k) - (state ? 0.0 : e_qs(i).derivatives()(k));
+      for (int i = 0; i < nz; ++i) Jz(i, c0 + k) = zdot(i).derivatives()(k);
+    }
+    for (int k = 0; k < w; ++k) seed(all[c0 + k], k, false);
+  }
+  out.dK = -Je.leftCols(nc);
+  out.dC = -Je.middleCols(nc, nc);
+  out.dQ = Je.middleCols(2 * nc, nu);
+  out.G = Je.rightCols(nz);
+  out.Zq = Jz.leftCols(nc);
+  out.Zqd = Jz.middleCols(nc, nc);
+  out.Zu = Jz.middleCols(2 * nc, nu);
+  out.Azz = Jz.rightCols(nz);
+  return out;
+}
+
+}  // namespace whirl

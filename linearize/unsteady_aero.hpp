@@ -1,0 +1,38 @@
+#pragma once
+/// \file
+/// The unsteady-airfoil states of a linear model (AeroDyn UA_Mod 4 or 6 on the frozen wake; issue 47):
+/// with z the states of the elements that carry them (src/dynamics/aero_unsteady.hpp) the linearized
+/// equations are
+///   M δq̈ + (C + ΔC) δq̇ + (K + ΔK) δq = (Q + ΔQ) δu + G δz,
+///   δż = Z_q δq + Z_q̇ δq̇ + A_zz δz + Z_u δu,
+/// with ΔK = −∂(e_UA − e_QS)/∂q, ΔC = −∂(e_UA − e_QS)/∂q̇, ΔQ = ∂(e_UA − e_QS)/∂u: the UA loads' derivatives
+/// at fixed states replace the quasi-steady frozen-wake ones that K, C, Q hold (e_UA, e_QS: the blade
+/// loads with and without states, same kinematics and frozen induction), G = ∂e_UA/∂z. Everything by one
+/// forward-AD evaluation per chunk of columns; z at its steady value for the point's inputs (aero::hgmSteady).
+#include <vector>
+
+#include "linearize/operating_point.hpp"
+
+namespace whirl {
+
+struct UnsteadyAeroLinear {
+  VecX z;                 ///< the states at the operating point (steady for its inputs), dim nz
+  MatX dK, dC;            ///< ndof × ncol: ΔK, ΔC on the columns asked for, all residual rows
+  MatX dQ;                ///< ndof × ninput (or × 0 without inputs)
+  MatX G;                 ///< ndof × nz
+  MatX Zq, Zqd;           ///< nz × ncol
+  MatX Zu;                ///< nz × ninput (or × 0)
+  MatX Azz;               ///< nz × nz
+  std::vector<std::string> names, groups;  ///< uaStateNames
+};
+
+/// The blocks above at op (its frozen induction: op.inflow), columns `cols` of q and q̇ (model coordinates),
+/// the input columns when `inputs`. Requires m.aero.ua_mod > 0 and an induction of every element in
+/// op.inflow (ComputeError otherwise).
+UnsteadyAeroLinear unsteadyAeroLinear(const Model& m, const OperatingPoint& op, const std::vector<int>& cols,
+                                      bool inputs);
+
+/// The states' steady values at op (what unsteadyAeroLinear linearizes about).
+VecX unsteadyAeroSteadyStates(const Model& m, const OperatingPoint& op);
+
+}  // namespace whirl

@@ -1,0 +1,159 @@
+// Blade-element loads with unsteady-airfoil states (aero_unsteady.hpp); instantiated for double and ADChunk.
+#include "src/dynamics/aero_unsteady.hpp"
+
+#include <cmath>
+
+#include "src/aero/bem.hpp"
+#include "src/dynamics/aero_element.hxx"
+#include "src/dynamics/aero_section.hxx"
+#include "src/dynamics/point_force.hxx"
+
+namespace whirl {
+namespace {
+
+template <class T>
+T atan2S(const T& y, const T& x) {
+  if constexpr (std::is_same_v<T, double>) {
+    return std::atan2(y, x);
+  } else {  // the fixed-size AD type (Eigen's overload goes through a dynamic-size derivative vector)
+    const double xv = x.value(), yv = y.value(), h = xv * xv + yv * yv;
+    return T(std::atan2(yv, xv), (xv * y.derivatives() - yv * x.derivatives()) / h);
+  }
+}
+
+// The section loads from the UA coefficients at the frozen-wake flow (x, y) = (Vx + AxInd, Vy + TnInd),
+// as aero::frozenLoads forms them from the static polar (AeroDyn SetOutputsFromBEMT).
+template <class T>
+aero::SectionLoads<T> loadsOfCoefficients(const T& x, const T& y, const T& phi, const T& alpha, const T& W,
+                                          const aero::Coefficients<T>& c, double chord, double rho) {
+  aero::SectionLoads<T> L;
+  L.phi = phi;
+  L.alpha = alpha;
+  L.W = W;
+  L.cl = c.cl;
+  L.cd = c.cd;
+  L.cm = c.cm;
+  const T sphi = x / W, cphi = y / W;
+  L.cx = c.cl * cphi + c.cd * sphi;
+  L.cy = c.cl * sphi - c.cd * cphi;
+  const T qd = 0.5 * rho * W * W;
+  L.fx = L.cx * qd * chord;
+  L.fy = -L.cy * qd * chord;
+  L.mz = c.cm * qd * (chord * chord);
+  return L;
+}
+
+}  // namespace
+
+int uaStatesPerElement(const AeroModel& am) { return am.ua_mod == 4 ? 4 : am.ua_mod == 6 ? 1 : 0; }
+
+int uaStateCount(const AeroModel& am) {
+  int n = 0;
+  for (const AeroBlade& b : am.blades)
+    for (const AeroStation& st : b.stations) n += st.ua ? 1 : 0;
+  return n * uaStatesPerElement(am);
+}
+
+void uaStateNames(const AeroModel& am, std::vector<std::string>& names, std::vector<std::string>& groups) {
+  const int ns = uaStatesPerElement(am);
+  for (std::size_t b = 0; b < am.blades.size(); ++b)
+    for (std::size_t j = 0; j < am.blades[b].stations.size(); ++j) {
+      if (!am.blades[b].stations[j].ua) continue;
+      for (int k = 0; k < ns; ++k) {
+        const std::string x = "UA x" + std::to_string(ns == 1 ? 4 : k + 1);
+        groups.push_back(x + " blade " + std::to_string(b + 1));
+        names.push_back(groups.back() + " element " + std::to_string(j + 1));
+      }
+    }
+}
+
+aero::UaSection uaSection(const AeroModel& am, const AeroStation& st) {
+  const auto p = static_cast<std::size_t>(st.polar);
+  return {&am.polars[p], &am.ua_tables[p], st.chord, static_cast<bool>(am.ua_has_cm[p]), am.ua_mod};
+}
+
+template <class T>
+void addUnsteadyAeroLoads(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T>& qd,
+                          const VecXT<T>& u, const AeroInflow& frozen, const VecXT<T>* z, VecXT<T>& e,
+                          VecXT<T>* zdot, std::vector<aero::UaInput<T>>* inputs) {
+  using std::sqrt;
+  const AeroModel& am = m.aero;
+  if (!am.active()) return;
+  const FrameState<T>& hub = ws.frames[am.hub_body];
+  const Vec3T<T> disk = hub.R.col(0);
+  const T speed = m.roles.wind_speed_input >= 0 ? u(m.roles.wind_speed_input) : T(0);
+  const Vec3 wind_dir = detail::windDirection(am.wind);
+  const int ns = uaStatesPerElement(am);
+  if (inputs) inputs->clear();
+  int index = 0, zi = 0;  // element over all blades, first state of the next element with states
+  for (std::size_t bi = 0; bi < am.blades.size(); ++bi) {
+    const AeroBlade& blade = am.blades[bi];
+    const Body& body = m.bodies[blade.body];
+    const FrameState<T>& f = ws.frames[blade.body];
+    const BasisState<T>& bs = ws.basis[blade.body];
+    const T pitch = blade.pitch_dof >= 0 ? q(blade.pitch_dof) : T(0);
+    const T* qe = body.inertia.ne > 0 ? q.data() + body.elastic_dof : nullptr;
+    const T* qde = body.inertia.ne > 0 ? qd.data() + body.elastic_dof : nullptr;
+    const detail::BladeMotion<T> bm{f.R, f.r, f.v, f.w, bs.c, bs.cd, qe, pitch};
+    const detail::BladeAxes<T> axes = detail::bladeAxes(body, bm);
+    detail::BodyLoadSum<T> sum(body.inertia.ne, body.points[blade.stations.front().point].P.cols());
+    for (std::size_t si = 0; si < blade.stations.size(); ++si, ++index) {
+      const AeroStation& st = blade.stations[si];
+      const BodyPoint& pt = body.points[st.point];
+      const detail::ElementFrame<T> g = detail::elementFrame(body, pt, bm, axes);
+      const Vec3T<T> rel = detail::steadyWind(am.wind, wind_dir, speed, g.pos(2)) - g.vel;
+      const T vx = rel.dot(g.xn), vy = rel.dot(g.ya);
+      const Vec3T<T> d = g.pos - hub.r;
+      const Vec3T<T> dr = d - d.dot(disk) * disk;
+      const double r = sqrt(valueOf(dr.dot(dr)));
+      const T theta = T(st.twist) + T(pitch - g.twist);
+      const double ax = frozen.axial(index), tn = frozen.tangential(index);
+      aero::SectionLoads<T> L;
+      if (!st.ua || !z) {
+        L = aero::frozenLoads(detail::bemStation(am, st, r), vx, vy, theta, ax, tn, am.air_density, am.bem);
+      } else {
+        const T x = valueOf(vx) == 0 ? vx : T(vx + ax), y = valueOf(vy) == 0 ? vy : T(vy + tn);
+        const T phi = atan2S(x, y), alpha = phi - theta, W = sqrt(x * x + y * y);
+        // The section's rotation rate about the span axis: the body frame's and the elastic twist's.
+        Vec3T<T> twist_rate = Vec3T<T>::Zero();
+        for (int j = 0; j < body.inertia.ne; ++j) twist_rate += pt.theta.col(j) * qde[j];
+        const T omega = (f.w + f.R * twist_rate).dot(g.zn);
+        using std::cos;
+        using std::sin;
+        aero::UaInput<T> in{atan2S(T(W * sin(alpha) + omega * (0.5 * st.chord)), T(W * cos(alpha))), alpha, W, omega};
+        const aero::UaSection sec = uaSection(am, st);
+        aero::HgmState<T> xs{T(0.0), T(0.0), T(0.0), T(0.0)};
+        if (ns == 4) xs = {(*z)(zi), (*z)(zi + 1), (*z)(zi + 2), (*z)(zi + 3)};
+        else xs.x4 = (*z)(zi);
+        L = loadsOfCoefficients(x, y, phi, alpha, W, aero::hgmLoads(sec, xs, in), st.chord, am.air_density);
+        if (zdot) {
+          const aero::HgmState<T> dx = aero::hgmDerivative(sec, xs, in);
+          if (ns == 4) {
+            (*zdot)(zi) = dx.x1;
+            (*zdot)(zi + 1) = dx.x2;
+            (*zdot)(zi + 2) = dx.x3;
+            (*zdot)(zi + 3) = dx.x4;
+          } else {
+            (*zdot)(zi) = dx.x4;
+          }
+        }
+        if (inputs) inputs->push_back(in);
+      }
+      if (st.ua) zi += ns;
+      const Vec3T<T> Fb = L.fx * g.xnb + L.fy * g.yab;
+      const Vec3T<T> Mb = L.mz * g.znb;
+      sum.addBody(pt, g.s, Fb, Mb, st.weight);
+    }
+    sum.project(m, ws, blade.body, e);
+  }
+}
+
+template void addUnsteadyAeroLoads<double>(const Model&, Workspace<double>&, const VecX&, const VecX&, const VecX&,
+                                           const AeroInflow&, const VecX*, VecX&, VecX*,
+                                           std::vector<aero::UaInput<double>>*);
+template void addUnsteadyAeroLoads<ADChunk>(const Model&, Workspace<ADChunk>&, const VecXT<ADChunk>&,
+                                            const VecXT<ADChunk>&, const VecXT<ADChunk>&, const AeroInflow&,
+                                            const VecXT<ADChunk>*, VecXT<ADChunk>&, VecXT<ADChunk>*,
+                                            std::vector<aero::UaInput<ADChunk>>*);
+
+}  // namespace whirl

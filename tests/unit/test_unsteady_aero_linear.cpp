@@ -1,0 +1,184 @@
+// The unsteady-airfoil states in a turbine's linear model (linearize/unsteady_aero.hpp, issue 47 step 3), on
+// the one-blade NREL 5MW rotor of OpenFAST's r-test Fake5MW_AeroLin_B1_UA4_DBEMT3 (UA_Mod 4, elements 2-4 with
+// states; tests/data/openfast-lin/ua4-dbemt3).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <functional>
+#include <numbers>
+
+#include "linearize/linearize.hpp"
+#include "linearize/operating_point.hpp"
+#include "linearize/unsteady_aero.hpp"
+#include "src/aero/polar.hpp"
+#include "src/dynamics/aero_unsteady.hpp"
+#include "src/dynamics/kinematics.hpp"
+#include "src/turbine/elastodyn_model.hpp"
+
+namespace {
+
+using namespace whirl;
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+std::string uaDeck() {
+  return (std::filesystem::path(WHIRL_SOURCE_DIR) /
+          "tests/data/openfast-lin/ua4-dbemt3/case/Fake5MW_AeroLin_B1_UA4_DBEMT3.fst")
+      .string();
+}
+
+// [e_UA; ż] (or e_QS without states) in double at (q, q̇, u, z).
+struct Evaluation {
+  VecX e, zdot;
+};
+Evaluation evaluate(const Model& m, const OperatingPoint& op, const VecX& q, const VecX& qd, const VecX& u,
+                    const VecX* z) {
+  Workspace<double> ws(m);
+  forwardKinematics(m, ws, q, qd, op.qdd);
+  Evaluation out{VecX::Zero(m.ndof()), VecX::Zero(uaStateCount(m.aero))};
+  addUnsteadyAeroLoads<double>(m, ws, q, qd, u, op.inflow, z, out.e, z ? &out.zdot : nullptr);
+  return out;
+}
+
+OperatingPoint rTestPoint(const Model& m) { return solveOperatingPoint(m, initialPoint(m)); }
+
+TEST(UnsteadyAeroLinear, StatesOnTheElementsAeroDynGivesThem) {
+  // OpenFAST's .lin of the deck lists UA states x1-x4 at nodes 2, 3, 4 of blade 1 (node 1: Cylinder1.dat).
+  const Model m = readElastoDynModel(uaDeck());
+  EXPECT_EQ(m.aero.ua_mod, 4);
+  ASSERT_EQ(uaStateCount(m.aero), 12);
+  std::vector<std::string> names, groups;
+  uaStateNames(m.aero, names, groups);
+  EXPECT_EQ(names.front(), "UA x1 blade 1 element 2");
+  EXPECT_EQ(names.back(), "UA x4 blade 1 element 4");
+  EXPECT_EQ(groups.back(), "UA x4 blade 1");
+}
+
+TEST(UnsteadyAeroLinear, AdJacobianEqualsCentralDifferences) {
+  const Model m = readElastoDynModel(uaDeck());
+  const OperatingPoint op = rTestPoint(m);
+  const std::vector<int> cols = m.activeDofs();
+  const UnsteadyAeroLinear ua = unsteadyAeroLinear(m, op, cols, true);
+  const int nz = static_cast<int>(ua.z.size());
+  // The steady states are the equilibrium of ż.
+  EXPECT_LT(evaluate(m, op, op.q, op.qd, op.u, &ua.z).zdot.cwiseAbs().maxCoeff(), 1e-10);
+  // Central differences with steps h: truncation ~h² f''' ≲ 1e-7 relative; round-off ~1e-16/h.
+  auto check = [&](const char* what, const MatX& ad, const std::function<VecX(double)>& f, double h, int col) {
+    const VecX fd = (f(h) - f(-h)) / (2 * h);
+    const double scale = std::max(1.0, fd.cwiseAbs().maxCoeff());
+    EXPECT_LT((ad.col(col) - fd).cwiseAbs().maxCoeff(), 1e-6 * scale) << what << " column " << col;
+  };
+  for (int c = 0; c < static_cast<int>(cols.size()); ++c) {
+    auto dq = [&](double h, bool rate, bool states) {
+      VecX q = op.q, qd = op.qd;
+      (rate ? qd : q)(cols[c]) += h;
+      return states ? evaluate(m, op, q, qd, op.u, &ua.z) : evaluate(m, op, q, qd, op.u, nullptr);
+    };
+    const double hq = 1e-5 * std::max(1.0, std::abs(op.q(cols[c])));
+    check("dK", -ua.dK, [&](double h) { return VecX(dq(h, false, true).e - dq(h, false, false).e); }, hq, c);
+    check("dC", -ua.dC, [&](double h) { return VecX(dq(h, true, true).e - dq(h, true, false).e); }, 1e-5, c);
+    check("Zq", ua.Zq, [&](double h) { return dq(h, false, true).zdot; }, hq, c);
+    check("Zqd", ua.Zqd, [&](double h) { return dq(h, true, true).zdot; }, 1e-5, c);
+  }
+  for (int k = 0; k < nz; ++k) {
+    auto dz = [&](double h) {
+      VecX z = ua.z;
+      z(k) += h;
+      return evaluate(m, op, op.q, op.qd, op.u, &z);
+    };
+    check("G", ua.G, [&](double h) { return dz(h).e; }, 1e-6, k);
+    check("Azz", ua.Azz, [&](double h) { return dz(h).zdot; }, 1e-6, k);
+  }
+  const int wind = m.roles.wind_speed_input;
+  auto du = [&](double h) {
+    VecX u = op.u;
+    u(wind) += h;
+    return std::pair{evaluate(m, op, op.q, op.qd, u, &ua.z), evaluate(m, op, op.q, op.qd, u, nullptr)};
+  };
+  check("dQ", ua.dQ, [&](double h) { auto [a, b] = du(h); return VecX(a.e - b.e); }, 1e-4, wind);
+  check("Zu", ua.Zu, [&](double h) { return du(h).first.zdot; }, 1e-4, wind);
+}
+
+TEST(UnsteadyAeroLinear, LinearModelCarriesTheStatesAfterTheStructure) {
+  const Model m = readElastoDynModel(uaDeck());
+  const OperatingPoint op = rTestPoint(m);
+  LinearizeOptions with;
+  with.unsteady_aero = true;
+  const LinearModel qs = linearize(m, op), ua = linearize(m, op, with);
+  const int n = static_cast<int>(qs.dofs.size());
+  ASSERT_EQ(ua.A.rows(), 2 * n + 12);
+  ASSERT_EQ(ua.B.rows(), 2 * n + 12);
+  ASSERT_EQ(ua.first_order_names.size(), 12u);
+  EXPECT_EQ(ua.first_order_names[4], "UA x1 blade 1 element 3");
+  const UnsteadyAeroLinear blocks = unsteadyAeroLinear(m, op, qs.dofs, true);
+  EXPECT_EQ(ua.first_order_values, blocks.z);
+  for (int r = 0; r < n; ++r) {
+    EXPECT_NEAR(ua.K(r, r), qs.K(r, r) + blocks.dK(qs.dofs[r], r), 1e-9 * std::abs(qs.K(r, r)));
+    EXPECT_NEAR(ua.C(r, r), qs.C(r, r) + blocks.dC(qs.dofs[r], r), 1e-9 * std::abs(qs.C(r, r)));
+  }
+  // The states' own rows: [Z_q, Z_q̇, A_zz] and Z_u.
+  EXPECT_EQ(MatX(ua.A.bottomRightCorner(12, 12)), blocks.Azz);
+  EXPECT_EQ(MatX(ua.A.block(2 * n, 0, 12, n)), MatX(blocks.Zq));
+  EXPECT_EQ(MatX(ua.B.bottomRows(12)), blocks.Zu);
+  // Without the option every matrix is the quasi-steady one, bit for bit.
+  const LinearModel again = linearize(m, op);
+  EXPECT_EQ(again.A, qs.A);
+  EXPECT_EQ(again.B, qs.B);
+}
+
+TEST(UnsteadyAeroLinear, SlowLimitIsTheQuasiSteadyFrozenWake) {
+  // Eliminating the states of a slow motion (ż ≈ 0: z = −A_zz⁻¹(Z_q δq + Z_q̇ δq̇)) leaves
+  // K + ΔK + G A_zz⁻¹ Z_q and C + ΔC + G A_zz⁻¹ Z_q̇, which are K and C of the quasi-steady frozen wake where
+  // the HGM model's static gain is the polar's slope: attached flow on a straight-line lift (the thin-airfoil
+  // table of test_unsteady_airfoil.cpp within ±10°, f_st = 1) and no pitch-rate terms (a parked rotor: ω = 0
+  // and ∂ω/∂q = 0; flap shapes do not twist the section). The rotor is parked and pitched to 85° so that
+  // every element's α lies within −8°..5°.
+  Model m = readElastoDynModel(uaDeck());
+  std::vector<double> a, cl, cd, cm;
+  for (int d = -180; d <= 180; ++d) {
+    const double x = d * kDeg;
+    a.push_back(x);
+    double l;
+    if (std::abs(d) <= 10) l = 2 * std::numbers::pi * x;
+    else if (std::abs(d) <= 20) l = std::copysign(2 * std::numbers::pi * 10 * kDeg - 0.06 * (std::abs(d) - 10), x);
+    else l = std::sin(2 * x);
+    cl.push_back(l);
+    cd.push_back(0.01 + 1.2 * std::sin(x) * std::sin(x));
+    cm.push_back(-0.05 * std::sin(x));
+  }
+  aero::UaGiven g;
+  g.alpha0 = 0.0;
+  g.c_lalpha = 2 * std::numbers::pi;
+  g.c_nalpha = 2 * std::numbers::pi;
+  m.aero.polars.push_back(aero::makePolar("thin", a, cl, cd, cm, aero::PolarInterp::Linear, "thin"));
+  m.aero.ua_tables.push_back(aero::uaTable(g, a, cl, cd, cm, aero::PolarInterp::Linear, 4, "thin"));
+  m.aero.ua_has_cm.push_back(true);
+  for (AeroStation& st : m.aero.blades[0].stations)
+    if (st.ua) st.polar = static_cast<int>(m.aero.polars.size()) - 1;
+  OperatingCondition parked;
+  parked.rotor_speed = 0;
+  parked.collective_pitch = 85 * kDeg;
+  parked.wind_speed = 13;
+  const OperatingPoint op = solveOperatingPoint(m, initialPoint(m, parked));
+  const std::vector<int> cols = m.activeDofs();
+  const UnsteadyAeroLinear ua = unsteadyAeroLinear(m, op, cols, false);
+  const MatX Ginv = ua.G * ua.Azz.inverse();
+  const MatX dK = ua.dK + Ginv * ua.Zq, dC = ua.dC + Ginv * ua.Zqd;
+  const LinearModel qs = linearize(m, op);
+  for (int c = 0; c < static_cast<int>(cols.size()); ++c) {
+    const int r = cols[c];
+    // No stiffness from the states here (the flap does not turn the section's flow at a parked rotor):
+    // round-off of the structure's K.
+    EXPECT_LT(std::abs(dK(r, c)), 1e-12 * std::abs(qs.K(c, c)));
+    // The states carry the flap's aerodynamic damping, and eliminated they give the quasi-steady one back:
+    // to 1e-4 because ω is not quite 0 here: the elastic rotation rates about the chord axes, projected on
+    // the deflected span axis, give ∂ω/∂q̇ ≈ 4e-7…1.2e-6 (rad/s)/(m/s) at the three elements (measured from
+    // the recorded UA inputs), and with the pitch-rate gain ∂Cl/∂ω ≈ 0.15…0.49 s against ∂Cl/∂α ∂α/∂q̇ ≈
+    // 3.9e-3 s/m that is a relative 5e-5 at most.
+    const double aero = std::abs((Ginv * ua.Zqd)(r, c));
+    ASSERT_GT(aero, 1e-2 * std::abs(qs.C(c, c)));
+    EXPECT_LT(std::abs(dC(r, c)), 1e-4 * aero);
+  }
+}
+
+}  // namespace
