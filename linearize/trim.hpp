@@ -28,7 +28,7 @@ struct TrimOptions {
   double min_pitch = 0.0;       ///< fine pitch [rad]
   double max_pitch = 0.7;       ///< upper end of the pitch bracket [rad] (40°)
   double tolerance = 1e-9;      ///< on the torque balance, relative to the rated generator torque × gear ratio
-  /// ROSCO's controller of the deck (io::readDeckController, src/io/discon_input.hpp), or null. When set,
+  /// ROSCO's controller of the deck (Model::deck_controller; io::readDeckController), or null. When set,
   /// the trim settles where that controller does (docs/theory/controller.md), with the generator torque
   /// it commands as the condition's generator torque (the model's torque law, if any, is not used).
   const RoscoController* controller = nullptr;

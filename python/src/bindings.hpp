@@ -58,7 +58,7 @@ std::vector<std::string> checkValidity(const PyModel& p, const Model& m, const s
                                        const std::string& where, bool allow_invalid_point);
 
 /// The ROSCO controller of the model's deck, as the commands read it along the wind
-/// (io::readDeckController with the model's overrides); none for a YAML case or a dict.
+/// (Model::deck_controller, read with the deck and its overrides); none for a YAML case or a dict.
 std::optional<RoscoController> deckController(const PyModel& p);
 
 /// The sweep points of a schedule: a CSV path (readSchedule), or rows (rpm, wind speed or None,

@@ -86,11 +86,7 @@ py::list bodyTable(const Model& m) {
 
 }  // namespace
 
-std::optional<RoscoController> deckController(const PyModel& p) {
-  if (p.source == "<dict>") return std::nullopt;
-  py::gil_scoped_release released;
-  return io::readDeckController(p.source, p.sets);
-}
+std::optional<RoscoController> deckController(const PyModel& p) { return p.model->deck_controller; }
 
 OperatingCondition conditionOf(const Model& m, std::optional<double> rpm, std::optional<double> wind,
                                std::optional<double> pitch_deg, std::optional<double> azimuth_deg) {

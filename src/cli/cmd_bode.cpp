@@ -49,7 +49,7 @@ void run(const BodeOptions& opt) {
   // Trimmed with the deck's ROSCO controller when it has one (docs/user/controller.md).
   if (opt.closed_loop && !opt.wind) throw InputError("bode: --closed-loop needs --wind");
   const std::optional<RoscoController> controller =
-      opt.closed_loop ? closedLoopController(opt.model) : io::readDeckController(opt.model.case_path, opt.model.sets);
+      opt.closed_loop ? closedLoopController(m, opt.model) : m.deck_controller;
   if (opt.without_speed_filter && !opt.closed_loop) throw InputError("bode: --without-speed-filter goes with --closed-loop");
   std::optional<SteadyState> steady;
   if (opt.wind) {

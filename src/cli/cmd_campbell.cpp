@@ -44,7 +44,7 @@ void runClosedLoop(const CampbellOptions& opt) {
   if (!opt.formats.empty() || !opt.schedule.empty() || !opt.rpm_range.empty())
     throw InputError("campbell: --closed-loop goes with --wind alone, without --rpm, --schedule or --format");
   const Model m = loadModel(opt.model);
-  const std::optional<RoscoController> controller = closedLoopController(opt.model);
+  const std::optional<RoscoController> controller = closedLoopController(m, opt.model);
   for (const std::string& n : controller->notes) std::fprintf(stderr, "whirl: note: %s\n", n.c_str());
   for (const std::string& n : linearRoscoNotes(*controller))
     std::fprintf(stderr, "whirl: note: %s: linear model: %s\n", controller->file.c_str(), n.c_str());
@@ -94,7 +94,7 @@ void run(const CampbellOptions& opt) {
   const Model m = loadModel(opt.model);
   // Along the wind: trimmed with the deck's ROSCO controller when it has one (docs/user/controller.md).
   auto trimmed = [&] {
-    const std::optional<RoscoController> controller = io::readDeckController(opt.model.case_path, opt.model.sets);
+    const std::optional<RoscoController>& controller = m.deck_controller;
     TrimOptions trim;
     if (controller) trim.controller = &*controller;
     return trimmedPoints(m, opt.wind_range, trim);

@@ -40,7 +40,7 @@ std::vector<ExportPoint> closedLoopPoints(const Model& base, const CliOptions& o
     throw InputError("export: --closed-loop writes --format mat or json (a .lin file holds OpenFAST's open-loop plant)");
   if (!opt.inputs.empty() || !opt.outputs.empty())
     throw InputError("export: --closed-loop keeps every input and output (--inputs/--outputs select the open-loop plant's)");
-  const std::optional<RoscoController> controller = closedLoopController(opt.model);
+  const std::optional<RoscoController> controller = closedLoopController(base, opt.model);
   TrimOptions trim;
   trim.controller = &*controller;
   ClosedLoopOptions clo;
@@ -114,7 +114,7 @@ void run(const CliOptions& opt) {
       throw InputError("--rpm: the model has no rotating DOF (mark the azimuth with `rotating: true`)");
   } else if (!opt.wind_range.empty()) {
     // Each wind speed trimmed, as `whirl steady` (with the deck's ROSCO controller when it has one).
-    const std::optional<RoscoController> controller = io::readDeckController(opt.model.case_path, opt.model.sets);
+    const std::optional<RoscoController>& controller = base.deck_controller;
     TrimOptions trim;
     if (controller) trim.controller = &*controller;
     points = trimmedPoints(base, opt.wind_range, trim);

@@ -65,7 +65,7 @@ void run(const SimulateOptions& opt) {
   if (opt.wind) {
     // The trimmed steady state (with the deck's ROSCO controller when it names one), rotor free.
     if (opt.model.rpm || opt.equilibrium) throw InputError("simulate: --wind starts at the trimmed state: not with --rpm or --equilibrium");
-    controller = opt.closed_loop ? closedLoopController(opt.model) : io::readDeckController(opt.model.case_path, opt.model.sets);
+    controller = opt.closed_loop ? closedLoopController(m, opt.model) : m.deck_controller;
     const WindStart w = windStart(m, *opt.wind, controller ? &*controller : nullptr);
     steady = w.steady;
     start = w.start;

@@ -65,7 +65,7 @@ void run(const SteadyOptions& opt) {
   TrimOptions trim;
   trim.azimuths = opt.azimuths;
   // The deck's ROSCO controller, when it names one: the trim settles where it does (docs/user/controller.md).
-  const std::optional<RoscoController> controller = io::readDeckController(opt.model.case_path, opt.model.sets);
+  const std::optional<RoscoController>& controller = m.deck_controller;
   if (controller) trim.controller = &*controller;
   const auto start = std::chrono::steady_clock::now();
   std::vector<SteadyState> rows;

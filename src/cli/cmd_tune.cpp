@@ -142,7 +142,7 @@ void run(TuneOptions opt) {
     throw InputError(opt.model.case_path + ": the model has no aerodynamics; give --cp-surface or an aeroelastic deck");
   opt.goals.fit_linear_in_wind = !opt.pointwise;
   // The deck's ROSCO controller, when it names one: its rated point and its trim.
-  const std::optional<RoscoController> rosco = io::readDeckController(opt.model.case_path, opt.model.sets);
+  const std::optional<RoscoController>& rosco = m.deck_controller;
   const TuningTurbine t = turbineOf(opt, m, rosco);
   const std::string discon_text = opt.discon.empty() ? std::string() : readText(opt.discon);
   std::vector<SteadyState> trimmed;

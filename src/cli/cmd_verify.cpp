@@ -52,7 +52,7 @@ void runClosedLoop(const VerifyOptions& opt) {
     for (size_t j = 0; j < i; ++j)
       if (so.outputs[i] == so.outputs[j]) throw InputError("verify: --output: " + so.outputs[i] + " given twice");
   const Model m = loadModel(opt.model);
-  const RoscoController c = closedLoopController(opt.model);
+  const RoscoController c = closedLoopController(m, opt.model);
   TrimOptions trim;
   trim.controller = &c;
   trim.azimuths = opt.step.azimuths;

@@ -179,8 +179,8 @@ void noteHiddenFirstOrderLines(const CampbellDiagram& d, const CampbellPlotOptio
                  hidden, withoutControlCharacters(example).c_str());
 }
 
-RoscoController closedLoopController(const ModelOptions& opt) {
-  std::optional<RoscoController> c = io::readDeckController(opt.case_path, opt.sets);
+RoscoController closedLoopController(const Model& m, const ModelOptions& opt) {
+  std::optional<RoscoController> c = m.deck_controller;
   if (!c)
     throw InputError(opt.case_path +
                      ": --closed-loop needs ROSCO's controller: ServoDyn with VSContrl = 5 and DLL_InFile naming its "

@@ -74,9 +74,9 @@ OperatingPoint startPoint(const Model& model, const ModelOptions& opt);
 /// than a second stay quiet; the clock starts when this is called.
 std::function<void(int, int)> sweepProgress(const std::string& command);
 
-/// The deck's ROSCO controller for a `--closed-loop` command (io::readDeckController with --set).
+/// The deck's ROSCO controller for a `--closed-loop` command (Model::deck_controller of the loaded deck).
 /// \throws InputError "CASE: --closed-loop needs ROSCO's controller: …" when the deck names none.
-RoscoController closedLoopController(const ModelOptions& opt);
+RoscoController closedLoopController(const Model& m, const ModelOptions& opt);
 
 /// reports/<case file stem>, the default output folder of a case.
 std::string defaultOutputFolder(const std::string& case_path);

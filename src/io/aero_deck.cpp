@@ -102,9 +102,13 @@ AeroDeckInput readAeroDeck(const FstInput& fst, OverrideSet* overrides) {
     if (v14->MultiTab == "RENUM") deck.reynolds = aero::ReynoldsInterp::Linear;
     return deck;
   }
+  std::vector<std::filesystem::path> read;  // blades sharing a file read it once
   for (std::size_t k = 0; k < ad.ADBlFile.size(); ++k) {
     const std::filesystem::path p = ad.source.getExistingPath(indexedKey("ADBlFile", static_cast<int>(k) + 1));
-    deck.blades.push_back(readAeroDynBlade(p, overrides));
+    const auto same = std::find(read.begin(), read.end(), p);
+    deck.blades.push_back(same != read.end() ? deck.blades[static_cast<std::size_t>(same - read.begin())]
+                                             : readAeroDynBlade(p, overrides));
+    read.push_back(p);
     checkAirfoilIds(ad, deck.blades.back());
   }
   deck.airfoils = readAirfoils(ad, "AFNames", [&](const std::filesystem::path& p) { return readAirfoil(p, ad.InCol); });

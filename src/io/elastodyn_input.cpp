@@ -1,5 +1,7 @@
 #include "src/io/elastodyn_input.hpp"
 
+#include <algorithm>
+
 #include <cmath>
 #include <utility>
 
@@ -246,8 +248,12 @@ ElastoDynInput readElastoDyn(const std::filesystem::path& file, OverrideSet* ove
   ed.TwrFile = f.getExistingPath("TwrFile");
   ed.tower = readElastoDynTower(ed.TwrFile, overrides);
   for (int k = 1; k <= ed.config.NumBl; ++k) {
-    ed.BldFile.push_back(f.getExistingPath(indexedKey("BldFile", k)));
-    ed.blades.push_back(readElastoDynBlade(ed.BldFile.back(), overrides));
+    const std::filesystem::path p = f.getExistingPath(indexedKey("BldFile", k));
+    // Blades sharing a file (the usual deck) read it once: the same file with the same overrides.
+    const auto same = std::find(ed.BldFile.begin(), ed.BldFile.end(), p);
+    ed.blades.push_back(same != ed.BldFile.end() ? ed.blades[static_cast<std::size_t>(same - ed.BldFile.begin())]
+                                                 : readElastoDynBlade(p, overrides));
+    ed.BldFile.push_back(p);
   }
   return ed;
 }

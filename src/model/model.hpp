@@ -19,6 +19,7 @@
 #include "src/model/body_state_space.hpp"
 #include "src/model/mooring.hpp"
 #include "src/model/output.hpp"
+#include "src/model/rosco_controller.hpp"
 #include "src/model/types.hpp"
 
 namespace whirl {
@@ -161,6 +162,9 @@ struct Model {
   std::vector<DofSpring> springs;
   std::vector<BodyMatrices> body_matrices;
   std::vector<BodyStateSpace> body_states;  ///< first-order states on free joints (linear model only)
+  /// The deck's ROSCO controller (ServoDyn VSContrl = 5 naming a DISCON.IN), read with the deck and its
+  /// --set overrides; the commands trim and close the loop with it. Absent otherwise (a YAML case).
+  std::optional<RoscoController> deck_controller;
   std::vector<MooringLine> mooring;      ///< quasi-static catenary lines (mooring.hpp)
   AeroModel aero;                        ///< blade elements, polars, wind (empty: no aerodynamics)
   GeneratorTorqueLaw generator;          ///< generator torque against speed (inactive: torque = its input)

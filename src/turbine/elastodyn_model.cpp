@@ -81,6 +81,7 @@ Model buildElastoDynModel(const io::OpenFastTurbine& t, const ElastoDynModelOpti
     if (opt.torque_law) elastodyn::addGeneratorTorqueLaw(b, *opt.torque_law);
   }
 
+  b.model().deck_controller = opt.controller;
   elastodyn::addOffshoreLoads(b, platform, t);
   if (ed.dof.DrTrDOF) b.model().springs.push_back({dt.drivetrain, ed.drivetrain.DTTorSpr, ed.drivetrain.DTTorDmp, 0.0});
   if (const std::optional<io::ServoDynInput> s = yawSpring(t, opt))
@@ -121,8 +122,14 @@ io::OpenFastTurbine readElastoDynTurbine(const std::string& path, const std::vec
   io::OpenFastTurbine t;
   if (io::toLower(p.extension().string()) == ".fst") t = io::readOpenFastTurbine(p, &set);
   else t.elastodyn = io::readElastoDyn(p, &set);
-  if (opt.yaw_spring_from_servodyn && t.elastodyn.dof.YawDOF && t.fst.CompServo != 0)
-    opt.servodyn = io::readServoDynIfEnabled(t.fst, &set);
+  // ServoDyn is read once, for the yaw spring and for the torque law (issue 42: it was read twice).
+  std::optional<io::ServoDynInput> servo;
+  bool servo_read = false;
+  auto servoDyn = [&]() -> const std::optional<io::ServoDynInput>& {
+    if (!servo_read) servo = io::readServoDynIfEnabled(t.fst, &set), servo_read = true;
+    return servo;
+  };
+  if (opt.yaw_spring_from_servodyn && t.elastodyn.dof.YawDOF && t.fst.CompServo != 0) opt.servodyn = servoDyn();
   // Aerodynamics follows the deck: CompAero = 2 reads AeroDyn, its blades and airfoils and InflowWind
   // (`--set CompAero=0` gives the structural model of the same deck).
   if (t.fst.CompAero != 0) {
@@ -130,9 +137,9 @@ io::OpenFastTurbine readElastoDynTurbine(const std::string& path, const std::vec
     io::requireSupported(deck.aerodyn);
     io::requireSupported(deck.inflow);
     opt.aero = std::move(deck);
-    opt.torque_law = io::readServoDynIfEnabled(t.fst, &set);
-    // A ROSCO DISCON.IN's keys take --set too (the controller is read again by the commands that use it).
-    if (opt.torque_law) io::readServoDynController(*opt.torque_law, &set);
+    opt.torque_law = servoDyn();
+    // A ROSCO DISCON.IN, with the --set overrides of its keys: the model carries it to the commands.
+    if (opt.torque_law) opt.controller = io::readServoDynController(*opt.torque_law, &set);
     if (opt.torque_law)
       if (std::optional<std::string> note = io::externalTorqueController(*opt.torque_law)) {
         opt.aero->notes.push_back(std::move(*note));

@@ -96,6 +96,8 @@ struct ElastoDynModelOptions {
   std::optional<io::AeroDeckInput> aero;
   /// ServoDyn's generator torque law for an aerodynamic model (VSContrl = 1), when ServoDyn is on.
   std::optional<io::ServoDynInput> torque_law;
+  /// The deck's ROSCO controller (VSContrl = 5 and a DISCON.IN), read by readElastoDynTurbine: Model::deck_controller.
+  std::optional<RoscoController> controller;
 };
 
 /// Builds and finalizes the model of the turbine read from an OpenFAST .fst (or an ElastoDyn .dat alone:
