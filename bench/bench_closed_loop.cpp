@@ -44,7 +44,8 @@ TuningGoals nrel5mwGoals() {
 void tuneCpSurface(benchmark::State& state) {
   for (auto _ : state) {
     const aero::RotorPerformance p = io::readRotorPerformance(kRoot + "/tests/data/rosco/Cp_Ct_Cq.NREL5MW.txt");
-    const GainSchedule g = placePoles(roscoTuningSchedule(p, nrel5mwTuning(), nrel5mwGoals()), nrel5mwTuning(), nrel5mwGoals());
+    const GainSchedule g = placePoles(roscoTuningSchedule(p, nrel5mwTuning(), nrel5mwGoals()), nrel5mwTuning(),
+                                      nrel5mwGoals());
     benchmark::DoNotOptimize(g.kp.data());
   }
 }

@@ -50,8 +50,8 @@ void linearization(benchmark::State& state, const std::string& name) {
   state.counters["dofs"] = static_cast<double>(m.activeDofs().size());
 }
 
-#define WHIRL_CASE_BENCH(name)                                                               \
-  BENCHMARK_CAPTURE(residualDouble, name, #name)->Unit(benchmark::kMicrosecond);             \
+#define WHIRL_CASE_BENCH(name)                                                   \
+  BENCHMARK_CAPTURE(residualDouble, name, #name)->Unit(benchmark::kMicrosecond); \
   BENCHMARK_CAPTURE(linearization, name, #name)->Unit(benchmark::kMicrosecond);
 
 WHIRL_CASE_BENCH(landbased_2dof)
@@ -108,8 +108,9 @@ void nrel5mwAzimuths(benchmark::State& state) {
       LinearModel l = linearize(m, op, lw);
       benchmark::DoNotOptimize(l.A.data());
     }
-  state.counters["per_linearization"] = benchmark::Counter(
-      static_cast<double>(points.size()), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["per_linearization"] = benchmark::Counter(static_cast<double>(points.size()),
+                                                           benchmark::Counter::kIsIterationInvariantRate |
+                                                               benchmark::Counter::kInvert);
 }
 BENCHMARK(nrel5mwAzimuths)->Unit(benchmark::kMicrosecond);
 

@@ -26,8 +26,8 @@ void idaCounters(benchmark::State& state, const Simulation& sim, double t_end) {
   state.counters["residuals"] = static_cast<double>(sim.residual_evaluations);
   state.counters["jacobians"] = static_cast<double>(sim.jacobian_evaluations);
   state.counters["mass"] = static_cast<double>(sim.mass_matrix_evaluations);
-  state.counters["x_real_time"] =
-      benchmark::Counter(t_end * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["x_real_time"] = benchmark::Counter(t_end * static_cast<double>(state.iterations()),
+                                                     benchmark::Counter::kIsRate);
 }
 
 void nrel5mwSimulate600s(benchmark::State& state) {

@@ -2,9 +2,9 @@
 /// \file
 /// Runs one whirl subcommand in-process, as src/cli/main.cpp does (CLI11 parse, the command's
 /// callback), with its stdout sent to /dev/null. CLI::ParseError counts as an expected error.
-#include <CLI/CLI.hpp>
 #include <fcntl.h>
 #include <unistd.h>
+#include <CLI/CLI.hpp>
 
 #include "fuzz/fuzz_support.hpp"
 

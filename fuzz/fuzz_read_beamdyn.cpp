@@ -34,8 +34,8 @@ constexpr const char* kPrimary =
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   whirl::fuzz::writeInput("fuzz_BeamDyn_Blade.dat", data, size);
-  const std::string primary = whirl::fuzz::writeInput(
-      "fuzz_BeamDyn.dat", reinterpret_cast<const uint8_t*>(kPrimary), std::char_traits<char>::length(kPrimary));
+  const std::string primary = whirl::fuzz::writeInput("fuzz_BeamDyn.dat", reinterpret_cast<const uint8_t*>(kPrimary),
+                                                      std::char_traits<char>::length(kPrimary));
   whirl::fuzz::expectOnlyInputErrors([&] {
     const whirl::io::BeamDynInput bd = whirl::io::readBeamDyn(primary);
     whirl::beamDynBladeBody(bd, {6, 4});

@@ -48,8 +48,8 @@ struct Builder {
 };
 
 Signal combine(const Signal& a, double ka, const Signal& b, double kb) {
-  return {ka * a.x + kb * b.x, ka * a.w + kb * b.w, ka * a.u + kb * b.u, ka * a.dt + kb * b.dt, ka * a.dp + kb * b.dp,
-          ka * a.v + kb * b.v};
+  return {ka * a.x + kb * b.x,   ka * a.w + kb * b.w,   ka * a.u + kb * b.u,
+          ka * a.dt + kb * b.dt, ka * a.dp + kb * b.dp, ka * a.v + kb * b.v};
 }
 
 /// First- or second-order low pass of `in` (unit static gain).
@@ -101,9 +101,7 @@ Signal floatingFeedback(Builder& b, const LinearController& c) {
   return combine(v, -c.floating_kp, b.zero(), 0);
 }
 
-bool hasReferenceFilter(const LinearController& c) {
-  return c.reference_per_wind != 0 && c.reference_filter_freq > 0;
-}
+bool hasReferenceFilter(const LinearController& c) { return c.reference_per_wind != 0 && c.reference_filter_freq > 0; }
 
 int stateCount(const LinearController& c) {
   int n = c.lpf_order + 2 * static_cast<int>(c.notches.size());
@@ -142,11 +140,8 @@ StateSpaceModel controllerStateSpace(const LinearController& c) {
     pitch = lowPass(b, pitch_in, c.actuator_order, c.actuator_freq, c.actuator_damping, "pitch actuator");
   }
   switch (c.torque) {
-    case LinearController::Torque::Held:
-      break;
-    case LinearController::Torque::Static:
-      torque = combine(speed, c.torque_slope, b.zero(), 0);
-      break;
+    case LinearController::Torque::Held: break;
+    case LinearController::Torque::Static: torque = combine(speed, c.torque_slope, b.zero(), 0); break;
     case LinearController::Torque::PI: {
       Signal ref = b.zero();
       ref.u = c.reference_per_wind;
@@ -170,7 +165,10 @@ StateSpaceModel controllerStateSpace(const LinearController& c) {
   s.D << torque.w, torque.u, torque.dt, torque.dp, torque.v, pitch.w, pitch.u, pitch.dt, pitch.dp, pitch.v, pitch_in.w,
       pitch_in.u, pitch_in.dt, pitch_in.dp, pitch_in.v;
   for (const std::string& n : b.names) s.x.push_back({n, "", 0, -1, -1, false});
-  s.u = {{"generator speed", "rad/s"}, {"wind speed", "m/s"}, {"torque disturbance", "N m"}, {"pitch disturbance", "rad"},
+  s.u = {{"generator speed", "rad/s"},
+         {"wind speed", "m/s"},
+         {"torque disturbance", "N m"},
+         {"pitch disturbance", "rad"},
          {"floating feedback velocity", c.floating_mode == 2 ? "rad/s" : "m/s"}};
   s.y = {{"generator torque", "N m"}, {"collective pitch", "rad"}, {"actuator input", "rad"}};
   return s;
@@ -205,7 +203,8 @@ Closed close(const StateSpaceModel& plant, const LinearController& c, const Clos
   if (k.B.col(1).any() || k.D.col(1).any()) iw = indexOf(plant.u, ports.wind_input, "input");
   if (hasFloatingFeedback(c)) iv = indexOf(plant.y, floatingFeedbackOutput(c, ports), "output");
   if (plant.D(ig, it) != 0 || plant.D(ig, ip) != 0)
-    throw InputError(where("", 0, ports.speed_output, "depends directly on the torque or the pitch (an algebraic loop)"));
+    throw InputError(
+        where("", 0, ports.speed_output, "depends directly on the torque or the pitch (an algebraic loop)"));
   if (iv >= 0 && (plant.D(iv, it) != 0 || plant.D(iv, ip) != 0))
     throw InputError(where("", 0, plant.y[static_cast<size_t>(iv)].name,
                            "depends directly on the torque or the pitch (an algebraic loop)"));

@@ -45,9 +45,9 @@ struct SpeedNotch {
 
 /// The controller linearized at one operating point (gains already scheduled there).
 struct LinearController {
-  int lpf_order = 1;        ///< generator-speed low pass: 0 none, 1 first, 2 second order
-  double lpf_freq = 0;      ///< its corner frequency [rad/s]
-  double lpf_damping = 0;   ///< second order [-]
+  int lpf_order = 1;       ///< generator-speed low pass: 0 none, 1 first, 2 second order
+  double lpf_freq = 0;     ///< its corner frequency [rad/s]
+  double lpf_damping = 0;  ///< second order [-]
   std::vector<SpeedNotch> notches;
 
   bool pitch_active = false;  ///< the pitch PI loop acts (region 3); otherwise pitch held
@@ -60,8 +60,8 @@ struct LinearController {
   enum class Torque { Held, Static, PI } torque = Torque::Held;
   /// Torque::Static: δτ = torque_slope δω_f [N m s/rad] (constant power: −P/(η ω_f²); k ω²: 2 k ω_f).
   double torque_slope = 0;
-  double torque_kp = 0;       ///< Torque::PI: VS_KP [N m s/rad]
-  double torque_ki = 0;       ///< VS_KI [N m/rad]
+  double torque_kp = 0;           ///< Torque::PI: VS_KP [N m s/rad]
+  double torque_ki = 0;           ///< VS_KI [N m/rad]
   double reference_per_wind = 0;  ///< Torque::PI: ∂ω_ref/∂U [rad/m] (TSR tracking; 0 when held)
   /// Torque::PI with reference_per_wind ≠ 0: first-order low pass on the reference [rad/s] (ROSCO's
   /// F_VSRefSpdCornerFreq; 0: none). Driven by the wind alone, its root is the corner frequency.
@@ -70,10 +70,10 @@ struct LinearController {
   /// Floating feedback on the pitch (with pitch_active): 0 none, 1 the tower top's fore-aft velocity
   /// [m/s], 2 the nacelle's pitch rate [rad/s]; δθ_c += −floating_kp · F(s) v.
   int floating_mode = 0;
-  double floating_kp = 0;            ///< ROSCO's Fl_Kp scheduled at the point [s] (rad per m/s; per rad/s)
-  double floating_lpf_freq = 0;      ///< second-order low pass [rad/s] (F_FlCornerFreq)
-  double floating_lpf_damping = 0;   ///< its damping [-]
-  double floating_hpf_freq = 0;      ///< first-order high pass [rad/s] (F_FlHighPassFreq; 0: none)
+  double floating_kp = 0;                    ///< ROSCO's Fl_Kp scheduled at the point [s] (rad per m/s; per rad/s)
+  double floating_lpf_freq = 0;              ///< second-order low pass [rad/s] (F_FlCornerFreq)
+  double floating_lpf_damping = 0;           ///< its damping [-]
+  double floating_hpf_freq = 0;              ///< first-order high pass [rad/s] (F_FlHighPassFreq; 0: none)
   std::vector<SpeedNotch> floating_notches;  ///< F_TwrTopNotch_Ind
 };
 
@@ -94,8 +94,8 @@ std::string floatingFeedbackOutput(const LinearController& c, const ClosedLoopPo
 /// filter", "controller: pitch PI integral", …, first-order), the plant's inputs kept as disturbances
 /// added to the controller's commands (generator torque, pitch) or acting directly (wind), the plant's
 /// outputs and then the controller's commands, "controller: generator torque" [N m] and "controller:
-/// collective pitch" [rad] (after the actuator). \throws InputError when the plant lacks an input or output named in `ports`, or when the
-/// generator speed depends directly on the torque or the pitch (D ≠ 0, an algebraic loop).
+/// collective pitch" [rad] (after the actuator). \throws InputError when the plant lacks an input or output named in
+/// `ports`, or when the generator speed depends directly on the torque or the pitch (D ≠ 0, an algebraic loop).
 StateSpaceModel closeLoop(const StateSpaceModel& plant, const LinearController& c, const ClosedLoopPorts& ports = {});
 
 /// The controller alone as a state-space model: u = [δω_g; δU; d_τ; d_θ; δv] (d_τ added to the torque

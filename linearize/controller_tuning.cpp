@@ -70,8 +70,9 @@ std::vector<double> leastSquaresLine(const std::vector<double>& x, const std::ve
 
 std::vector<double> roscoWindSpeeds(const TuningTurbine& t, const TuningGoals& g) {
   if (g.pc_gs_n < 2 || g.ws_gs_n <= g.pc_gs_n + 1)
-    throw InputError(where("", 0, "WS_GS_n", "needs more wind speeds than PC_GS_n + 1 (" + std::to_string(g.ws_gs_n) +
-                                                 " vs " + std::to_string(g.pc_gs_n) + ")"));
+    throw InputError(where("", 0, "WS_GS_n",
+                           "needs more wind speeds than PC_GS_n + 1 (" + std::to_string(g.ws_gs_n) + " vs " +
+                               std::to_string(g.pc_gs_n) + ")"));
   if (!(t.v_min < t.v_rated && t.v_rated < t.v_max))
     throw InputError(where("", 0, "v_rated", "wind speeds must satisfy v_min < v_rated < v_max"));
   std::vector<double> v = linspace(t.v_min, t.v_rated, g.ws_gs_n - g.pc_gs_n);

@@ -21,12 +21,12 @@ namespace whirl {
 
 /// What ROSCO's tuning takes from its YAML (`turbine_params`) and the OpenFAST deck.
 struct TuningTurbine {
-  double inertia = 0;            ///< J: rotor + generator · N², about the low-speed shaft [kg m²]
-  double rotor_radius = 0;       ///< R [m]
-  double air_density = 0;        ///< ρ [kg/m³]
-  double gearbox_ratio = 1;      ///< N [-]
-  double rated_rotor_speed = 0;  ///< Ω_rated [rad/s]
-  double rated_power = 0;        ///< P [W]
+  double inertia = 0;                        ///< J: rotor + generator · N², about the low-speed shaft [kg m²]
+  double rotor_radius = 0;                   ///< R [m]
+  double air_density = 0;                    ///< ρ [kg/m³]
+  double gearbox_ratio = 1;                  ///< N [-]
+  double rated_rotor_speed = 0;              ///< Ω_rated [rad/s]
+  double rated_power = 0;                    ///< P [W]
   double v_min = 0, v_rated = 0, v_max = 0;  ///< cut-in, rated, cut-out wind speeds [m/s]
 };
 

@@ -14,24 +14,24 @@ namespace whirl {
 /// One operating point of an export.
 struct ExportPoint {
   double rpm = 0.0;
-  std::optional<double> wind_speed;  ///< m/s (from a schedule)
-  std::optional<double> pitch_deg;   ///< collective pitch (from a schedule)
-  StateSpaceModel model;             ///< time invariant: the multiblade average, or the only model
+  std::optional<double> wind_speed;       ///< m/s (from a schedule)
+  std::optional<double> pitch_deg;        ///< collective pitch (from a schedule)
+  StateSpaceModel model;                  ///< time invariant: the multiblade average, or the only model
   std::vector<StateSpaceModel> azimuths;  ///< per azimuth, rotating frame (periodic linearization); may be empty
-  OperatingPoint equilibrium;        ///< the solved operating point (first azimuth)
+  OperatingPoint equilibrium;             ///< the solved operating point (first azimuth)
 };
 
 struct StateSpaceExport {
-  std::string source;      ///< case file
+  std::string source;  ///< case file
   std::string model_name;
   std::vector<ExportPoint> points;
 };
 
 struct ExportOptions {
-  int azimuths = 36;                 ///< per revolution (rotating models)
-  std::vector<std::string> inputs;   ///< keep these, in this order (empty = all)
-  std::vector<std::string> outputs;  ///< keep these, in this order (empty = all)
-  bool drop_azimuth = false;         ///< remove the azimuth displacement state (dropAzimuth)
+  int azimuths = 36;                  ///< per revolution (rotating models)
+  std::vector<std::string> inputs;    ///< keep these, in this order (empty = all)
+  std::vector<std::string> outputs;   ///< keep these, in this order (empty = all)
+  bool drop_azimuth = false;          ///< remove the azimuth displacement state (dropAzimuth)
   const VecX* deflections = nullptr;  ///< a trim's equilibrium to start from (PeriodicOptions::deflections)
   /// AeroDyn's frozen wake (the induction held in the perturbation), as OpenFAST linearizes; false: the
   /// induction follows at once (quasi-steady BEM, what a time simulation's BEM does).

@@ -52,7 +52,8 @@ MatX readMatrix(const json& j) {
   const size_t bytes = j.at("v").get_binary().size();
   // Checked before allocating: a corrupt size must not ask for gigabytes.
   if (r < 0 || c < 0 || (r > 0 && static_cast<std::uint64_t>(c) > bytes / 8 / static_cast<std::uint64_t>(r)))
-    throw Corrupt("matrix " + std::to_string(r) + " x " + std::to_string(c) + " in " + std::to_string(bytes) + " bytes");
+    throw Corrupt("matrix " + std::to_string(r) + " x " + std::to_string(c) + " in " + std::to_string(bytes) +
+                  " bytes");
   MatX m(r, c);
   readDoubles(j.at("v"), m.data(), static_cast<size_t>(m.size()));
   return m;
@@ -67,8 +68,11 @@ VecX readVector(const json& j) {
 
 // A list of variables as parallel columns.
 json variables(const std::vector<StateSpaceVariable>& vars) {
-  json j = {{"name", json::array()}, {"unit", json::array()}, {"blade", json::array()},
-            {"rate_of", json::array()}, {"azimuth", json::array()}};
+  json j = {{"name", json::array()},
+            {"unit", json::array()},
+            {"blade", json::array()},
+            {"rate_of", json::array()},
+            {"azimuth", json::array()}};
   std::vector<double> op;
   for (const auto& v : vars) {
     j["name"].push_back(v.name);
@@ -101,9 +105,12 @@ std::vector<StateSpaceVariable> readVariables(const json& j) {
 }
 
 json model(const StateSpaceModel& s) {
-  json j = {{"x", variables(s.x)},  {"u", variables(s.u)},  {"y", variables(s.y)},  {"xdot_op", vec(s.xdot_op)},
-            {"A", matrix(s.A)},     {"B", matrix(s.B)},     {"C", matrix(s.C)},     {"D", matrix(s.D)},
-            {"az", scalar(s.azimuth)}, {"omega", scalar(s.rotor_speed)}, {"mbc", s.multiblade}};
+  json j = {{"x", variables(s.x)},     {"u", variables(s.u)},
+            {"y", variables(s.y)},     {"xdot_op", vec(s.xdot_op)},
+            {"A", matrix(s.A)},        {"B", matrix(s.B)},
+            {"C", matrix(s.C)},        {"D", matrix(s.D)},
+            {"az", scalar(s.azimuth)}, {"omega", scalar(s.rotor_speed)},
+            {"mbc", s.multiblade}};
   if (s.wind_speed) j["ws"] = scalar(*s.wind_speed);
   return j;
 }
@@ -158,7 +165,9 @@ OperatingPoint readOperatingPoint(const json& j) {
 }  // namespace
 
 std::string encodeExportPoint(const ExportPoint& p) {
-  json j = {{"rpm", scalar(p.rpm)}, {"model", model(p.model)}, {"azimuths", json::array()},
+  json j = {{"rpm", scalar(p.rpm)},
+            {"model", model(p.model)},
+            {"azimuths", json::array()},
             {"equilibrium", operatingPoint(p.equilibrium)}};
   if (p.wind_speed) j["ws"] = scalar(*p.wind_speed);
   if (p.pitch_deg) j["pitch"] = scalar(*p.pitch_deg);

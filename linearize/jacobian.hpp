@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "src/dynamics/aero_inflow.hpp"
-#include "src/model/scalar.hpp"
 #include "src/dynamics/workspace.hpp"
+#include "src/model/scalar.hpp"
 
 namespace whirl {
 
@@ -20,7 +20,7 @@ enum class Wrt { Q, Qd, Qdd, U };
 struct JacobianWorkspace {
   explicit JacobianWorkspace(const Model& m);
   Workspace<ADChunk> ws;
-  Workspace<double> kin;  ///< double kinematics at the point (constant frames, load-input columns)
+  Workspace<double> kin;        ///< double kinematics at the point (constant frames, load-input columns)
   VecX kin_q, kin_qd, kin_qdd;  ///< the point kin was computed at (empty: not yet)
   VecXT<ADChunk> q, qd, qdd, u, e, y;
 };

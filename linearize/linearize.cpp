@@ -106,8 +106,9 @@ LinearModel linearize(const Model& m, const OperatingPoint& op, LinearizeWorkspa
   // Without induction (AeroDyn WakeMod = 0) there is nothing to freeze.
   const AeroInflow* frozen = m.aero.active() && m.aero.induction && opt.frozen_wake ? &op.inflow : nullptr;
   if (frozen && static_cast<int>(frozen->axial.size()) != m.aero.nstations())
-    throw ComputeError("frozen-wake linearization: the operating point carries no induction of the blade elements "
-                       "(solve it with solveOperatingPoint)");
+    throw ComputeError(
+        "frozen-wake linearization: the operating point carries no induction of the blade elements "
+        "(solve it with solveOperatingPoint)");
   VecX e;  // e at the point, from a K pass that evaluated every term, or in double below
   lin.K = rows(residualJacobian(m, jw, op.q, op.qd, op.qdd, op.u, Wrt::Q, lin.dofs, &e, frozen), -1.0);
   lin.C = rows(residualJacobian(m, jw, op.q, op.qd, op.qdd, op.u, Wrt::Qd, lin.dofs, nullptr, frozen), -1.0);
@@ -127,8 +128,9 @@ LinearModel linearize(const Model& m, const OperatingPoint& op, LinearizeWorkspa
 
   Eigen::LDLT<MatX> ldlt(lin.M);
   if (ldlt.info() != Eigen::Success || !ldlt.isPositive() || ldlt.vectorD().minCoeff() <= 0)
-    throw ComputeError("the mass matrix is not positive definite: a coordinate without inertia? (check masses, "
-                       "inertias and which DOFs are frozen)");
+    throw ComputeError(
+        "the mass matrix is not positive definite: a coordinate without inertia? (check masses, "
+        "inertias and which DOFs are frozen)");
   MatX G, Bz;  // loads of the first-order states on the coordinates, their drive by the rates
   firstOrderStates(m, lin, G, Bz);
   const int nb = static_cast<int>(G.cols());  // body states, then the unsteady-airfoil states

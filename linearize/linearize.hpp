@@ -20,16 +20,16 @@
 namespace whirl {
 
 struct LinearModel {
-  std::vector<int> dofs;                 ///< model coordinates of the states, in order
-  std::vector<std::string> dof_names;    ///< dim n
-  std::vector<std::string> input_names;  ///< dim nu
-  MatX M, C, K;  ///< n × n
-  MatX Q;        ///< n × nu
-  MatX A;        ///< (2n + nz) × (2n + nz): states [δq; δq̇; z]
-  MatX B;        ///< (2n + nz) × nu
+  std::vector<int> dofs;                        ///< model coordinates of the states, in order
+  std::vector<std::string> dof_names;           ///< dim n
+  std::vector<std::string> input_names;         ///< dim nu
+  MatX M, C, K;                                 ///< n × n
+  MatX Q;                                       ///< n × nu
+  MatX A;                                       ///< (2n + nz) × (2n + nz): states [δq; δq̇; z]
+  MatX B;                                       ///< (2n + nz) × nu
   std::vector<std::string> first_order_names;   ///< states z (dim nz), e.g. "HydroDyn radiation surge 3"
   std::vector<std::string> first_order_groups;  ///< what each z belongs to, e.g. "HydroDyn radiation surge"
-  VecX residual; ///< e at the operating point on the active coordinates (dim n)
+  VecX residual;                                ///< e at the operating point on the active coordinates (dim n)
   VecX first_order_values;  ///< z at the operating point (dim nz: 0 for body states, steady UA states)
 };
 

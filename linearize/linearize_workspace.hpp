@@ -9,8 +9,8 @@ namespace whirl {
 
 struct LinearizeWorkspace {
   explicit LinearizeWorkspace(const Model& m) : ws(m), jw(m) {}
-  Workspace<double> ws;   ///< double kinematics, residual and mass matrix
-  JacobianWorkspace jw;   ///< AD passes
+  Workspace<double> ws;  ///< double kinematics, residual and mass matrix
+  JacobianWorkspace jw;  ///< AD passes
 };
 
 }  // namespace whirl

@@ -104,7 +104,8 @@ class ModalSensitivity {
   }
   /// From right and left eigenvectors: V⁻¹ b has the entries (u_iᴴ b)/(u_iᴴ v_i).
   ModalSensitivity(const LoopSensitivity& s, const ModalBasis& basis, const MarginOptions& opt) : s_(s) {
-    if (basis.values.size() != s.A.rows() || basis.right.rows() != s.A.rows() || basis.left.rows() != s.A.rows()) return;
+    if (basis.values.size() != s.A.rows() || basis.right.rows() != s.A.rows() || basis.left.rows() != s.A.rows())
+      return;
     lambda_ = basis.values;
     right_ = Eigen::VectorXcd(lambda_.size());
     for (Eigen::Index i = 0; i < lambda_.size(); ++i)
@@ -119,14 +120,14 @@ class ModalSensitivity {
     for (int k = 0; k <= 2 && modal_; ++k) {
       const double w = opt.min_frequency * std::pow(opt.max_frequency / opt.min_frequency, k / 2.0);
       const cd exact = sensitivityAt(s, w);
-      modal_ = std::abs((*this)(w) - exact) <= kModalTolerance * std::max(1.0, std::abs(exact));
+      modal_ = std::abs((*this)(w)-exact) <= kModalTolerance * std::max(1.0, std::abs(exact));
     }
     if (!modal_) return;
     for (Eigen::Index i = 0; i < lambda_.size() && modal_; ++i) {
       const double w = lambda_(i).imag();  // next to each resonance (one of a pair), where cancellation is worst
       if (w < opt.min_frequency || w > opt.max_frequency) continue;
       const cd exact = sensitivityAt(s, w);
-      modal_ = std::abs((*this)(w) - exact) <= kModalTolerance * std::max(1.0, std::abs(exact));
+      modal_ = std::abs((*this)(w)-exact) <= kModalTolerance * std::max(1.0, std::abs(exact));
     }
   }
   cd operator()(double w) const {

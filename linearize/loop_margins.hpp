@@ -16,13 +16,13 @@
 namespace whirl {
 
 struct LoopMargins {
-  double gain_margin = 0;            ///< [-] (linear; dB = 20 log10)
-  double gain_crossover = 0;         ///< frequency of the gain margin's phase crossing [rad/s]
-  double phase_margin = 0;           ///< [deg]
-  double phase_crossover = 0;        ///< frequency of the phase margin's gain crossing [rad/s]
-  double delay_margin = 0;           ///< [s]
-  double peak_sensitivity = 0;       ///< Ms [-]
-  double peak_frequency = 0;         ///< where |S| peaks [rad/s]
+  double gain_margin = 0;       ///< [-] (linear; dB = 20 log10)
+  double gain_crossover = 0;    ///< frequency of the gain margin's phase crossing [rad/s]
+  double phase_margin = 0;      ///< [deg]
+  double phase_crossover = 0;   ///< frequency of the phase margin's gain crossing [rad/s]
+  double delay_margin = 0;      ///< [s]
+  double peak_sensitivity = 0;  ///< Ms [-]
+  double peak_frequency = 0;    ///< where |S| peaks [rad/s]
 };
 
 struct MarginOptions {

@@ -182,17 +182,21 @@ struct Prepared {
 
 Prepared prepare(const MbcLayout& L, const MbcSample& s) {
   if (L.num_blades < 3)
-    fail("num_blades", std::to_string(L.num_blades) + " blades: the multiblade transform needs at least 3 (with 2 "
-                       "blades the equations stay periodic; use a Floquet analysis)");
+    fail("num_blades", std::to_string(L.num_blades) +
+                           " blades: the multiblade transform needs at least 3 (with 2 "
+                           "blades the equations stay periodic; use a Floquet analysis)");
   Prepared p;
   p.nx = s.A.rows();
   p.nu = s.B.size() ? s.B.cols() : s.D.cols();
   p.ny = s.C.size() ? s.C.rows() : s.D.rows();
   if (static_cast<Index>(L.state_blade.size()) != p.nx)
-    fail("state_blade", "has " + std::to_string(L.state_blade.size()) + " entries, A has " + std::to_string(p.nx) + " rows");
-  if (!L.input_blade.empty() && (s.B.size() || s.D.size())) p.u = findSets(L.input_blade, {}, L.num_blades, p.nu, "input_blade");
+    fail("state_blade",
+         "has " + std::to_string(L.state_blade.size()) + " entries, A has " + std::to_string(p.nx) + " rows");
+  if (!L.input_blade.empty() && (s.B.size() || s.D.size()))
+    p.u = findSets(L.input_blade, {}, L.num_blades, p.nu, "input_blade");
   else p.u.coords.assign(static_cast<std::size_t>(p.nu), MbcCoordinate{});
-  if (!L.output_blade.empty() && (s.C.size() || s.D.size())) p.y = findSets(L.output_blade, {}, L.num_blades, p.ny, "output_blade");
+  if (!L.output_blade.empty() && (s.C.size() || s.D.size()))
+    p.y = findSets(L.output_blade, {}, L.num_blades, p.ny, "output_blade");
   else p.y.coords.assign(static_cast<std::size_t>(p.ny), MbcCoordinate{});
   p.x = findSets(L.state_blade, L.velocity_of, L.num_blades, p.nx, "state_blade");
   p.tx = transformPattern(p.x, L.num_blades, p.nx, true);

@@ -40,12 +40,12 @@ namespace whirl {
 /// velocity states) forms a set with the j-th rotating entry of every other blade; all blades must
 /// have the same number of rotating entries. Velocity states follow their displacement.
 struct MbcLayout {
-  int num_blades = 3;              ///< N (≥ 3)
-  std::vector<int> state_blade;    ///< (dim nx) blade 0 … N−1 of each state, −1 = fixed frame
-  std::vector<int> velocity_of;    ///< (dim nx, or empty = no second-order DOFs) for a state that
-                                   ///< is q̇ of state i: i; otherwise −1
-  std::vector<int> input_blade;    ///< (dim nu, or empty = all inputs fixed) blade of each input
-  std::vector<int> output_blade;   ///< (dim ny, or empty = all outputs fixed) blade of each output
+  int num_blades = 3;             ///< N (≥ 3)
+  std::vector<int> state_blade;   ///< (dim nx) blade 0 … N−1 of each state, −1 = fixed frame
+  std::vector<int> velocity_of;   ///< (dim nx, or empty = no second-order DOFs) for a state that
+                                  ///< is q̇ of state i: i; otherwise −1
+  std::vector<int> input_blade;   ///< (dim nu, or empty = all inputs fixed) blade of each input
+  std::vector<int> output_blade;  ///< (dim ny, or empty = all outputs fixed) blade of each output
 };
 
 /// Layout for x = [q (dim n); q̇ (dim n); x1 (first-order states)], whirl's own ordering
@@ -77,11 +77,11 @@ std::string toString(MbcCoordinate c);
 
 /// Transformed model of each sample and their azimuth average (the time-invariant approximation).
 struct MbcResult {
-  std::vector<MbcSample> samples;        ///< A_NR, B_NR, C_NR, D_NR at each given azimuth
-  Eigen::MatrixXd A, B, C, D;            ///< averages over the samples (B, C, D empty if absent)
-  std::vector<MbcCoordinate> states;     ///< (dim nx) meaning of each transformed state
-  std::vector<MbcCoordinate> inputs;     ///< (dim nu)
-  std::vector<MbcCoordinate> outputs;    ///< (dim ny)
+  std::vector<MbcSample> samples;      ///< A_NR, B_NR, C_NR, D_NR at each given azimuth
+  Eigen::MatrixXd A, B, C, D;          ///< averages over the samples (B, C, D empty if absent)
+  std::vector<MbcCoordinate> states;   ///< (dim nx) meaning of each transformed state
+  std::vector<MbcCoordinate> inputs;   ///< (dim nu)
+  std::vector<MbcCoordinate> outputs;  ///< (dim ny)
 };
 
 /// Transforms one sample to multiblade coordinates.

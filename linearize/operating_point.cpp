@@ -71,11 +71,12 @@ int weakJoint(const Model& m, const std::vector<int>& solved, const MatX& K, con
 // A load along a coordinate without stiffness: no static equilibrium. `motion`: how far it would
 // move, if known.
 std::string noEquilibrium(const Model& m, int dof, double load, const std::string& motion = "") {
-  return fmt::format("operating point: a load acts along DOF '{}' ({:.4g} {}), which has no stiffness (a free "
-                     "rigid-body motion): {}no equilibrium; {}, or mark it rotating",
-                     m.dofs[dof].name, load, loadUnit(m, dof),
-                     motion.empty() ? "" : "it would move " + motion + " (limit " + fmt::format("{:g}", kMaxHeldDrift) + "), ",
-                     holdAdvice(m, dof));
+  return fmt::format(
+      "operating point: a load acts along DOF '{}' ({:.4g} {}), which has no stiffness (a free "
+      "rigid-body motion): {}no equilibrium; {}, or mark it rotating",
+      m.dofs[dof].name, load, loadUnit(m, dof),
+      motion.empty() ? "" : "it would move " + motion + " (limit " + fmt::format("{:g}", kMaxHeldDrift) + "), ",
+      holdAdvice(m, dof));
 }
 
 }  // namespace
@@ -173,8 +174,8 @@ struct EquilibriumSolve {
   AeroRecord* record = nullptr;  ///< every residual records the blade elements (the last one is the record)
   bool fresh = true;             ///< e and the record are those of op.q
   double scale = 1;
-  VecX load_seen;                ///< the largest loads seen on each solved coordinate (for the message)
-  MatX K_first;                  ///< the first Newton matrix (for the message)
+  VecX load_seen;                       ///< the largest loads seen on each solved coordinate (for the message)
+  MatX K_first;                         ///< the first Newton matrix (for the message)
   VecX q_before, q_before2, es_before;  ///< the two iterates before op.q and the residual at the last one
   LoadJump jump;
 
@@ -197,7 +198,8 @@ void chooseSolved(const Model& m, const EquilibriumOptions& opt, OperatingPoint&
   for (int i : m.activeDofs()) {
     if (m.dofs[i].rotating) continue;
     if (op.qd(i) != 0.0)
-      throw ComputeError("DOF '" + m.dofs[i].name + "': a non-rotating coordinate has a rate; mark it rotating or freeze it");
+      throw ComputeError("DOF '" + m.dofs[i].name +
+                         "': a non-rotating coordinate has a rate; mark it rotating or freeze it");
     if (std::find(op.held.begin(), op.held.end(), i) != op.held.end()) continue;
     op.solved.push_back(i);
   }
@@ -381,9 +383,9 @@ void finish(EquilibriumSolve& s) {
     for (int d : op.held) {
       const double drift = 0.5 * std::abs(s.e(d)) / M(d, d) * kHeldDriftTime * kHeldDriftTime;
       if (!(drift <= kMaxHeldDrift))
-        throw ComputeError(noEquilibrium(m, d, s.e(d), fmt::format("{:.3g} {} in {:g} s", drift,
-                                                                      loadUnit(m, d) == "N m" ? "rad" : "m",
-                                                                      kHeldDriftTime)));
+        throw ComputeError(noEquilibrium(m, d, s.e(d),
+                                         fmt::format("{:.3g} {} in {:g} s", drift,
+                                                     loadUnit(m, d) == "N m" ? "rad" : "m", kHeldDriftTime)));
     }
   }
   op.residual_max_active = 0;

@@ -18,15 +18,15 @@ namespace whirl {
 struct LinearModel;
 
 struct OperatingPoint {
-  VecX q, qd, qdd, u;        ///< all coordinates (ndof) and inputs (ninput)
-  std::vector<int> solved;   ///< coordinates solved for equilibrium
+  VecX q, qd, qdd, u;       ///< all coordinates (ndof) and inputs (ninput)
+  std::vector<int> solved;  ///< coordinates solved for equilibrium
   /// Unrestrained coordinates (no stiffness along them: a free yaw) held at their given value; the
   /// load along them stays in the residual (residual_max_active) and moves them in the linear model.
   std::vector<int> held;
   VecX held_load;  ///< e on each held coordinate at the solution, in the order of `held` [N, N m]
   int iterations = 0;
-  double residual_norm = 0;  ///< ‖e‖ over the solved coordinates at the solution [N, N m]
-  double load_scale = 1;     ///< what the tolerance was relative to [N, N m]
+  double residual_norm = 0;        ///< ‖e‖ over the solved coordinates at the solution [N, N m]
+  double load_scale = 1;           ///< what the tolerance was relative to [N, N m]
   double residual_max_active = 0;  ///< max |e| over all active coordinates (rotating ones included)
   std::string residual_max_dof;    ///< where that maximum sits
   /// Aerodynamics: every blade element at the solution (induction solved on the deflected geometry) and

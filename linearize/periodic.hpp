@@ -13,8 +13,8 @@
 namespace whirl {
 
 struct PeriodicOptions {
-  int azimuths = 36;     ///< number of equally spaced azimuths over 2π
-  int azimuth_dof = -1;  ///< the coordinate stepped; −1 = the first rotating coordinate
+  int azimuths = 36;           ///< number of equally spaced azimuths over 2π
+  int azimuth_dof = -1;        ///< the coordinate stepped; −1 = the first rotating coordinate
   LinearizeOptions linearize;  ///< of each azimuth's linearization
   /// If not null (dim ndof): the first azimuth's equilibrium starts from these values of the
   /// non-rotating coordinates (a trim's equilibrium), its tolerance still that of `start`.
@@ -23,8 +23,8 @@ struct PeriodicOptions {
 
 struct PeriodicLinearization {
   int azimuth_dof = -1;
-  double rotor_speed = 0;           ///< rad/s, the rate of the azimuth coordinate
-  std::vector<double> azimuths;     ///< rad
+  double rotor_speed = 0;        ///< rad/s, the rate of the azimuth coordinate
+  std::vector<double> azimuths;  ///< rad
   std::vector<OperatingPoint> points;
   std::vector<LinearModel> models;
 };

@@ -41,9 +41,10 @@ std::vector<std::string> checkPointValidity(const Model& m, const OperatingPoint
     if (i < 0 || i >= op.q.size() || m.dofs[i].kind != DofKind::Joint || loadUnit(m, i) != "N m") continue;
     const double turn = op.q(i) - m.dofs[i].value;
     if (!(std::abs(turn) <= kPi))
-      problems.push_back(fmt::format("{}: turned {:.4g} rad from its start {:.4g} rad, more than half a turn: too "
-                                     "weakly restrained for the loads on it; {}",
-                                     m.dofs[i].name, turn, m.dofs[i].value, holdAdvice(m, i)));
+      problems.push_back(
+          fmt::format("{}: turned {:.4g} rad from its start {:.4g} rad, more than half a turn: too "
+                      "weakly restrained for the loads on it; {}",
+                      m.dofs[i].name, turn, m.dofs[i].value, holdAdvice(m, i)));
   }
   // A spring law linearized on one piece (a teeter stop, src/model/model.hpp DofSpring): the point
   // must lie on that piece, else the linear model has the wrong stiffness or damping there.
@@ -51,17 +52,19 @@ std::vector<std::string> checkPointValidity(const Model& m, const OperatingPoint
     if (s.dof < 0 || s.dof >= op.q.size() || m.dofs[s.dof].frozen) continue;
     const double q = op.q(s.dof);
     if (!(q >= s.q_min && q <= s.q_max))
-      problems.push_back(fmt::format("{}: {:.6g} lies outside [{:.6g}, {:.6g}], the piece of its spring law the model "
-                                     "was linearized on ({})",
-                                     m.dofs[s.dof].name, q, s.q_min, s.q_max, s.law));
+      problems.push_back(
+          fmt::format("{}: {:.6g} lies outside [{:.6g}, {:.6g}], the piece of its spring law the model "
+                      "was linearized on ({})",
+                      m.dofs[s.dof].name, q, s.q_min, s.q_max, s.law));
   }
   const double scale = std::max(op.load_scale, 1.0);
   // On a jump of the loads (a Filippov equilibrium) the residual is that of one side, within the jump.
   const double allowed = std::max(lim.max_relative_residual * scale, op.load_jump.dof >= 0 ? op.load_jump.size : 0.0);
   if (!op.solved.empty() && !(op.residual_norm <= allowed))
-    problems.push_back(fmt::format("equilibrium residual {:.3g} is not small against the loads {:.3g} (limit {:g} "
-                                   "relative)",
-                                   op.residual_norm, scale, lim.max_relative_residual));
+    problems.push_back(
+        fmt::format("equilibrium residual {:.3g} is not small against the loads {:.3g} (limit {:g} "
+                    "relative)",
+                    op.residual_norm, scale, lim.max_relative_residual));
   return problems;
 }
 

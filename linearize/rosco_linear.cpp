@@ -97,18 +97,20 @@ LinearController linearRosco(const RoscoController& c, const SteadyState& s, con
 std::vector<std::string> linearRoscoNotes(const RoscoController& c) {
   std::vector<std::string> n;
   if (c.VS_ControlMode == 2)
-    n.push_back("VS_ControlMode = 2: below rated the torque loop's speed reference follows the wind (the wind-speed "
-                "estimate taken equal to it) through its low pass F_VSRefSpdCornerFreq; the estimator's own "
-                "dependence on rotor speed, pitch and torque is not in the linear model");
+    n.push_back(
+        "VS_ControlMode = 2: below rated the torque loop's speed reference follows the wind (the wind-speed "
+        "estimate taken equal to it) through its low pass F_VSRefSpdCornerFreq; the estimator's own "
+        "dependence on rotor speed, pitch and torque is not in the linear model");
   if (c.VS_ControlMode == 3 || c.VS_ControlMode == 4)
     n.push_back("VS_ControlMode = " + std::to_string(c.VS_ControlMode) +
                 ": in region 2 the torque loop's speed reference is held at its steady value (its dependence "
-                "on the generator " + (c.VS_ControlMode == 3 ? std::string("power") : std::string("torque")) +
-                " is left out)");
+                "on the generator " +
+                (c.VS_ControlMode == 3 ? std::string("power") : std::string("torque")) + " is left out)");
   if (c.SS_Mode == 1)
-    n.push_back("SS_Mode = 1: the setpoint smoother shifts the reference of the loop that is saturated at every "
-                "steady state (the pitch loop's below rated, the torque loop's above), so it leaves the "
-                "linear model unchanged");
+    n.push_back(
+        "SS_Mode = 1: the setpoint smoother shifts the reference of the loop that is saturated at every "
+        "steady state (the pitch loop's below rated, the torque loop's above), so it leaves the "
+        "linear model unchanged");
   if (c.Fl_Mode > 0)
     n.push_back("Fl_Mode = " + std::to_string(c.Fl_Mode) + ": the floating feedback acts in region 3 (below rated " +
                 "the pitch sits at its minimum, where ROSCO's saturation passes only the positive half of it); " +
@@ -117,8 +119,9 @@ std::vector<std::string> linearRoscoNotes(const RoscoController& c) {
                                 : std::string("nacelle pitch acceleration is the filtered pitch rate NcIMURVys")));
   if (c.PA_Mode == 0)
     n.push_back("PA_Mode = 0: no pitch actuator in the controller; the pitch command is the blades' pitch");
-  n.push_back("discrete-time filters and integrators as their continuous equivalents (phase error ω·DT/2), the "
-              "sample-and-hold delay and rate limits (PC_MaxRat, VS_MaxRat) left out");
+  n.push_back(
+      "discrete-time filters and integrators as their continuous equivalents (phase error ω·DT/2), the "
+      "sample-and-hold delay and rate limits (PC_MaxRat, VS_MaxRat) left out");
   return n;
 }
 

@@ -21,8 +21,9 @@ double lowPass(double y, double x, double corner, double dt) {
 void require(const RoscoController& c, bool ok, const char* key, const std::string& why) {
   if (!ok) {
     const Where w = c.at(key);
-    throw InputError(where(w.file, w.line, key, why + " (simulate --closed-loop runs ROSCO's VS_ControlMode 2 with "
-                                                     "a first-order speed filter, no notches on the speed, no actuator model)"));
+    throw InputError(where(w.file, w.line, key,
+                           why + " (simulate --closed-loop runs ROSCO's VS_ControlMode 2 with "
+                                 "a first-order speed filter, no notches on the speed, no actuator model)"));
   }
 }
 
@@ -32,7 +33,8 @@ void discretizeFloatingFeedback(const RoscoController& c, const SteadyState& ste
   LinearController k;
   k.pitch_active = true;  // zero PI gains: the chain alone reaches the pitch input
   k.floating_mode = c.Fl_Mode;
-  k.floating_kp = c.Fl_Kp.size() == 1 ? c.Fl_Kp.front() : roscoInterp(c.Fl_U, c.Fl_Kp, steady.condition.wind_speed.value_or(0));
+  k.floating_kp = c.Fl_Kp.size() == 1 ? c.Fl_Kp.front()
+                                      : roscoInterp(c.Fl_U, c.Fl_Kp, steady.condition.wind_speed.value_or(0));
   k.floating_lpf_freq = c.F_FlCornerFreq;
   k.floating_lpf_damping = c.F_FlCornerDamp;
   k.floating_hpf_freq = c.F_FlHighPassFreq;
@@ -87,7 +89,7 @@ RoscoState roscoSteadyMemory(const RoscoController& c, const SteadyState& steady
   s.reference = c.VS_TSRopt * wind / c.WE_BladeRadius * c.WE_GearboxRatio;
   s.pitch = steady.condition.collective_pitch.value_or(0);
   s.torque = steady.generator_torque;
-  s.pitch_integral = s.pitch;    // every error zero: the command is the integral term
+  s.pitch_integral = s.pitch;  // every error zero: the command is the integral term
   s.torque_integral = s.torque;
   // At rest the velocity is zero and so is every filter state (the high pass removes any offset).
   if (c.Fl_Mode > 0 && !c.Fl_Kp.empty()) discretizeFloatingFeedback(c, steady, dt, s);
@@ -98,7 +100,8 @@ RoscoCommand roscoStep(const RoscoController& c, RoscoState& s, double gen_speed
                        double floating_velocity) {
   s.speed = lowPass(s.speed, gen_speed, c.F_LPFCornerFreq, dt);
   // Torque: PI on the TSR reference (ComputeVariablesSetpoints, VariableSpeedControl).
-  s.reference = lowPass(s.reference, c.VS_TSRopt * wind / c.WE_BladeRadius * c.WE_GearboxRatio, c.F_VSRefSpdCornerFreq, dt);
+  s.reference = lowPass(s.reference, c.VS_TSRopt * wind / c.WE_BladeRadius * c.WE_GearboxRatio, c.F_VSRefSpdCornerFreq,
+                        dt);
   const double ref = std::max(std::clamp(s.reference, c.VS_MinOMSpd, c.VS_RefSpd), c.VS_MinOMSpd);
   const double t_max = std::min(torqueLimit(c, s.speed), c.VS_MaxTq);
   const double e_t = ref - s.speed;
@@ -132,7 +135,8 @@ DiscreteController roscoInTheLoop(const Model& m, const RoscoController& c, cons
   for (size_t i = 0; i < m.outputs.size(); ++i)
     if (m.outputs[i].name == "GenSpeed") gen = static_cast<int>(i);
   if (gen < 0 || m.roles.wind_speed_input < 0 || m.roles.generator_torque_input < 0)
-    throw InputError("simulate: --closed-loop needs the model's GenSpeed output, wind speed and generator torque inputs");
+    throw InputError(
+        "simulate: --closed-loop needs the model's GenSpeed output, wind speed and generator torque inputs");
   DiscreteController k;
   k.dt = dt;
   k.inputs = {m.roles.generator_torque_input, simulationInput(m, "collective pitch", "controller")};
@@ -156,6 +160,5 @@ DiscreteController roscoInTheLoop(const Model& m, const RoscoController& c, cons
   };
   return k;
 }
-
 
 }  // namespace whirl

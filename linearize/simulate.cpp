@@ -70,12 +70,12 @@ struct Problem {
   Workspace<double> ws;
   JacobianWorkspace jw;
   VecX q, qd, qdd, u, e;
-  VecX q_kinematics;              // the coordinates of the kinematics in ws, when known
+  VecX q_kinematics;  // the coordinates of the kinematics in ws, when known
   bool kinematics_known = false;
   MatX Mfull;
-  VecX held;                     // the controller's commands (SimulationOptions::controller), per controlled input
-  std::string ida_message;       // the last message IDA reported
-  std::exception_ptr error;      // an exception thrown inside a callback, rethrown after IDASolve
+  VecX held;                 // the controller's commands (SimulationOptions::controller), per controlled input
+  std::string ida_message;   // the last message IDA reported
+  std::exception_ptr error;  // an exception thrown inside a callback, rethrown after IDASolve
 
   Problem(const Model& model, const OperatingPoint& s, const SimulationOptions& o)
       : m(model), start(s), opt(o), ws(model), jw(model), e(VecX::Zero(model.ndof())) {
@@ -214,7 +214,8 @@ void consistentRates(Problem& p, double t, const double* y, double* yp) {
   if (ldlt.info() != Eigen::Success || !ldlt.isPositive() || ldlt.vectorD().minCoeff() <= 0)
     throw ComputeError(fmt::format("simulate: t = {:g} s: the mass matrix is not positive definite", t));
   const VecX a = ldlt.solve(F);
-  if (!a.allFinite()) throw ComputeError(fmt::format("simulate: t = {:g} s: the initial accelerations are not finite", t));
+  if (!a.allFinite())
+    throw ComputeError(fmt::format("simulate: t = {:g} s: the initial accelerations are not finite", t));
   for (int k = 0; k < ns; ++k) {
     yp[k] = y[ns + k];
     yp[ns + k] = a(k);
@@ -238,17 +239,17 @@ std::string idaFailure(int flag, double t, const SimulationOptions& opt) {
   std::string why;
   switch (flag) {
     case IDA_TOO_MUCH_WORK:
-      why = fmt::format("more than {} integrator steps between two output instants ({:g} s apart): the motion is too "
-                        "fast for the time step it needs (a rotor spinning up, a diverging model?)",
-                        opt.max_steps, opt.dt_out);
+      why = fmt::format(
+          "more than {} integrator steps between two output instants ({:g} s apart): the motion is too "
+          "fast for the time step it needs (a rotor spinning up, a diverging model?)",
+          opt.max_steps, opt.dt_out);
       break;
-    case IDA_TOO_MUCH_ACC:
-      why = "the tolerances cannot be met (--rtol, --atol too small for double precision?)";
-      break;
+    case IDA_TOO_MUCH_ACC: why = "the tolerances cannot be met (--rtol, --atol too small for double precision?)"; break;
     case IDA_ERR_FAIL:
     case IDA_CONV_FAIL:
-      why = "the integrator's step size fell to its minimum without meeting the tolerances: the motion diverges or "
-            "jumps (an unstable model, an input step too large, an operating point outside the model's range?)";
+      why =
+          "the integrator's step size fell to its minimum without meeting the tolerances: the motion diverges or "
+          "jumps (an unstable model, an input step too large, an operating point outside the model's range?)";
       break;
     case IDA_LSETUP_FAIL:
     case IDA_LSOLVE_FAIL:
@@ -258,8 +259,7 @@ std::string idaFailure(int flag, double t, const SimulationOptions& opt) {
     case IDA_REP_RES_ERR:
       why = "the equations could not be evaluated along the motion (a state outside the model's range?)";
       break;
-    default:
-      why = "the integration failed";
+    default: why = "the integration failed";
   }
   return fmt::format("simulate: t = {:.6g} s: {} (SUNDIALS IDA: {})", t, why, flagName(flag));
 }
@@ -284,10 +284,10 @@ void addStatistics(void* mem, Simulation& sim) {
 void checkSimulationSize(const Model& m, const OperatingPoint& start, const SimulationOptions& opt) {
   const double records = std::floor(opt.t_end / opt.dt_out + 1e-9) + 2;  // + t_end off the grid
   if (records > static_cast<double>(limits::kMaxSimulationRecords))
-    throw InputError(fmt::format(
-        "simulate: tmax: {:g} s recorded every {:g} s (dt-out) are {:.3g} instants, more than {} "
-        "(src/model/limits.hpp): give a larger --dt-out or a shorter --tmax",
-        opt.t_end, opt.dt_out, records, limits::kMaxSimulationRecords));
+    throw InputError(
+        fmt::format("simulate: tmax: {:g} s recorded every {:g} s (dt-out) are {:.3g} instants, more than {} "
+                    "(src/model/limits.hpp): give a larger --dt-out or a shorter --tmax",
+                    opt.t_end, opt.dt_out, records, limits::kMaxSimulationRecords));
   const double columns = 2.0 * m.ndof() + m.ninput() + m.noutput();
   if (records * columns > limits::kMaxSimulationValues)
     throw InputError(fmt::format(
@@ -337,7 +337,8 @@ std::vector<double> stopTimes(const SimulationOptions& opt) {
     for (double b : signalBreakpoints(d.signal))
       if (b > 0 && b < opt.t_end) stops.push_back(b);
   if (opt.controller.step)
-    for (long k = 1; k * opt.controller.dt < opt.t_end; ++k) stops.push_back(static_cast<double>(k) * opt.controller.dt);
+    for (long k = 1; k * opt.controller.dt < opt.t_end; ++k)
+      stops.push_back(static_cast<double>(k) * opt.controller.dt);
   stops.push_back(opt.t_end);
   std::sort(stops.begin(), stops.end());
   stops.erase(std::unique(stops.begin(), stops.end()), stops.end());
@@ -462,7 +463,8 @@ Simulation simulate(const Model& m, const OperatingPoint& start, const Simulatio
   };
   if (controlled) {
     p.held = VecX(static_cast<Eigen::Index>(opt.controller.inputs.size()));
-    for (size_t k = 0; k < opt.controller.inputs.size(); ++k) p.held(static_cast<Eigen::Index>(k)) = start.u(opt.controller.inputs[k]);
+    for (size_t k = 0; k < opt.controller.inputs.size(); ++k)
+      p.held(static_cast<Eigen::Index>(k)) = start.u(opt.controller.inputs[k]);
     control(0.0);
   }
   consistentRates(p, 0.0, y, yp);

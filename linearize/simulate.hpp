@@ -53,16 +53,16 @@ struct DiscreteController {
 };
 
 struct SimulationOptions {
-  double t_end = 10;      ///< [s], > 0
-  double dt_out = 0.01;   ///< interval of the recorded instants [s], > 0
-  double rtol = 1e-6;     ///< IDA relative tolerance
-  double atol = 1e-8;     ///< IDA absolute tolerance [m, rad, m/s, rad/s]
+  double t_end = 10;     ///< [s], > 0
+  double dt_out = 0.01;  ///< interval of the recorded instants [s], > 0
+  double rtol = 1e-6;    ///< IDA relative tolerance
+  double atol = 1e-8;    ///< IDA absolute tolerance [m, rad, m/s, rad/s]
   /// Active coordinates moving at their start rate, q = q0 + q̇0 t (a driven rotor: the rotating
   /// coordinates). Not states.
   std::vector<int> prescribed;
   std::vector<InputSignal> inputs;
   std::vector<DrivenDof> driven;  ///< active coordinates on a prescribed motion; not states
-  long max_steps = 200000;  ///< IDA steps between two recorded instants; more is a ComputeError (never hangs)
+  long max_steps = 200000;        ///< IDA steps between two recorded instants; more is a ComputeError (never hangs)
   /// A controller in the loop (empty `step`: none).
   DiscreteController controller;
   /// Called after each recorded instant with (t, t_end).

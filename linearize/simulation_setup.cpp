@@ -52,8 +52,8 @@ std::optional<std::string> invalidMotion(const Model& m, const Simulation& sim) 
     at.q = sim.q.row(static_cast<Eigen::Index>(k)).transpose();
     const std::vector<std::string> problems = checkPointValidity(m, at);
     if (!problems.empty())
-      return "t = " + fmt::format("{:g}", sim.time[k]) + " s: the motion leaves the model's range of validity: " +
-             problems.front();
+      return "t = " + fmt::format("{:g}", sim.time[k]) +
+             " s: the motion leaves the model's range of validity: " + problems.front();
   }
   return std::nullopt;
 }

@@ -83,7 +83,8 @@ StateSpaceModel stateSpace(const Model& m, const OperatingPoint& op, const Linea
   const AeroInflow* frozen = m.aero.active() && m.aero.induction && !op.inflow.empty() ? &op.inflow : nullptr;
   evaluateOutputs(m, ws, op.q, op.qd, op.qdd, y, &op.u, frozen);
   for (int i = 0; i < ny; ++i) {
-    if (!std::isfinite(y(i))) throw ComputeError("output '" + m.outputs[i].name + "' is not finite at the operating point");
+    if (!std::isfinite(y(i)))
+      throw ComputeError("output '" + m.outputs[i].name + "' is not finite at the operating point");
     StateSpaceVariable v;
     v.name = m.outputs[i].name;
     v.unit = m.outputs[i].unit;
@@ -134,7 +135,8 @@ std::vector<int> indicesOf(const std::vector<StateSpaceVariable>& vars, const st
     if (found < 0) {
       std::string all;
       for (const auto& v : vars) all += (all.empty() ? "" : ", ") + v.name;
-      throw InputError(std::string("unknown ") + what + " '" + n + "' (" + what + "s: " + (all.empty() ? "none" : all) + ")");
+      throw InputError(std::string("unknown ") + what + " '" + n + "' (" + what + "s: " + (all.empty() ? "none" : all) +
+                       ")");
     }
     idx.push_back(found);
   }

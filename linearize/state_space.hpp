@@ -20,22 +20,22 @@ namespace whirl {
 
 /// One entry of x, u or y.
 struct StateSpaceVariable {
-  std::string name;   ///< DOF name (states: its rate is "d(<name>)/dt"), input or output name
-  std::string unit;   ///< SI, e.g. "m", "rad/s", "N m"
-  double op = 0.0;    ///< operating-point value
-  int blade = -1;     ///< rotor blade (0-based) in the rotating frame, −1 = fixed frame
-  int rate_of = -1;   ///< states: index of the displacement state this one is the rate of, else −1
+  std::string name;      ///< DOF name (states: its rate is "d(<name>)/dt"), input or output name
+  std::string unit;      ///< SI, e.g. "m", "rad/s", "N m"
+  double op = 0.0;       ///< operating-point value
+  int blade = -1;        ///< rotor blade (0-based) in the rotating frame, −1 = fixed frame
+  int rate_of = -1;      ///< states: index of the displacement state this one is the rate of, else −1
   bool azimuth = false;  ///< states: the displacement of a rotating coordinate (the rotor azimuth)
 };
 
 struct StateSpaceModel {
   std::vector<StateSpaceVariable> x, u, y;
-  VecX xdot_op;    ///< ẋ at the operating point: [q̇; M⁻¹ e(q, q̇, 0, u); 0]
-  MatX A, B, C, D; ///< nx × nx, nx × nu, ny × nx, ny × nu
-  double azimuth = 0.0;      ///< rad, value of the rotating coordinate (blade 1's azimuth), 0 if none
-  double rotor_speed = 0.0;  ///< rad/s, its rate
+  VecX xdot_op;                      ///< ẋ at the operating point: [q̇; M⁻¹ e(q, q̇, 0, u); 0]
+  MatX A, B, C, D;                   ///< nx × nx, nx × nu, ny × nx, ny × nu
+  double azimuth = 0.0;              ///< rad, value of the rotating coordinate (blade 1's azimuth), 0 if none
+  double rotor_speed = 0.0;          ///< rad/s, its rate
   std::optional<double> wind_speed;  ///< m/s, when the operating point comes from a schedule
-  bool multiblade = false;   ///< rotating entries are in multiblade coordinates (azimuth average)
+  bool multiblade = false;           ///< rotating entries are in multiblade coordinates (azimuth average)
 };
 
 /// Whether each state is a first-order state: neither a displacement with a rate among the states nor

@@ -1,8 +1,8 @@
 // multibladeAverage: the multiblade transform of per-azimuth state-space models (linearize/mbc.hpp).
 #include <cctype>
 
-#include "linearize/state_space.hpp"
 #include "linearize/mbc.hpp"
+#include "linearize/state_space.hpp"
 #include "src/model/error.hpp"
 
 namespace whirl {

@@ -64,7 +64,8 @@ std::string sweepPointLabel(const Model& m, const SweepPoint& point) {
   if (m.roles.wind_speed_input >= 0)
     s += fmt::format(", wind {:.6g} m/s", c.wind_speed.value_or(m.inputs[m.roles.wind_speed_input].value));
   if (!m.roles.blade_pitch.empty())
-    s += fmt::format(", pitch {:.6g} deg", c.collective_pitch.value_or(m.dofs[m.roles.blade_pitch.front()].value) * deg);
+    s += fmt::format(", pitch {:.6g} deg",
+                     c.collective_pitch.value_or(m.dofs[m.roles.blade_pitch.front()].value) * deg);
   if (!m.roles.azimuth.empty()) s += fmt::format(", azimuth {:.6g} deg", m.dofs[m.roles.azimuth.front()].value * deg);
   return s;
 }

@@ -74,8 +74,8 @@ std::vector<T> sweepOperatingPoints(int sets, ModelOf&& model_of, const std::vec
         const SweepPoint& point = points[static_cast<size_t>(k % P)];
         auto run = [&]() -> T { return compute(model, point, initialPoint(model, sweepCondition(model, point))); };
         auto where = [&] {
-          const std::string head =
-              opt.context ? opt.context(k % P) : "operating point " + std::to_string(k % P + 1) + " ";
+          const std::string head = opt.context ? opt.context(k % P)
+                                               : "operating point " + std::to_string(k % P + 1) + " ";
           return head + "(" + sweepPointLabel(model, point) + "): ";
         };
         try {

@@ -33,7 +33,7 @@ double gearRatio(const Model& m, int azimuth) {
 }
 
 struct Balance {
-  double f = 0;       ///< azimuth-averaged generalized force on the rotor azimuth [N m]
+  double f = 0;  ///< azimuth-averaged generalized force on the rotor azimuth [N m]
   double torque = 0, thrust = 0, tip = 0, tower = 0;
 };
 
@@ -293,7 +293,8 @@ SteadyState controllerTrim(const Model& m, double wind, const TrimGuess& guess, 
   // The torque loop: its speed reference and the branch it is on.
   double omega = 0, torque = nan;
   std::string region;
-  const double w_lo = std::max(c.VS_MinOMSpd / gear, c.VS_MinOMSpd > 0 ? 0.0 : opt.min_tsr * wind / m.aero.rotor_radius);
+  const double w_lo = std::max(c.VS_MinOMSpd / gear,
+                               c.VS_MinOMSpd > 0 ? 0.0 : opt.min_tsr * wind / m.aero.rotor_radius);
   const double w_hi = c.VS_RefSpd / gear;
   if (c.VS_ControlMode == 2) {
     const double ref = c.VS_TSRopt * wind / c.WE_BladeRadius * c.WE_GearboxRatio;  // ComputeVariablesSetpoints

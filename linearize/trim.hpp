@@ -23,11 +23,11 @@
 namespace whirl {
 
 struct TrimOptions {
-  int azimuths = 3;             ///< equilibria per torque evaluation, spread over one blade passage
-  double min_tsr = 2.0;         ///< lower end of the rotor-speed bracket, as a tip-speed ratio [-]
-  double min_pitch = 0.0;       ///< fine pitch [rad]
-  double max_pitch = 0.7;       ///< upper end of the pitch bracket [rad] (40°)
-  double tolerance = 1e-9;      ///< on the torque balance, relative to the rated generator torque × gear ratio
+  int azimuths = 3;         ///< equilibria per torque evaluation, spread over one blade passage
+  double min_tsr = 2.0;     ///< lower end of the rotor-speed bracket, as a tip-speed ratio [-]
+  double min_pitch = 0.0;   ///< fine pitch [rad]
+  double max_pitch = 0.7;   ///< upper end of the pitch bracket [rad] (40°)
+  double tolerance = 1e-9;  ///< on the torque balance, relative to the rated generator torque × gear ratio
   /// ROSCO's controller of the deck (Model::deck_controller; io::readDeckController), or null. When set,
   /// the trim settles where that controller does (docs/theory/controller.md), with the generator torque
   /// it commands as the condition's generator torque (the model's torque law, if any, is not used).
@@ -48,18 +48,18 @@ struct SteadyState {
   /// "+ min pitch" suffix when the pitch sits on ROSCO's minimum-pitch schedule above fine pitch
   /// (PS_Mode). Empty without a controller.
   std::string region;
-  double min_pitch = 0;          ///< the controller's minimum pitch at this wind speed [rad] (0 without one)
+  double min_pitch = 0;  ///< the controller's minimum pitch at this wind speed [rad] (0 without one)
   /// Electrical over mechanical power of the generator: the controller's VS_GenEff; 1 otherwise (a torque
   /// law's efficiency is GeneratorTorqueLaw::efficiency).
   double generator_efficiency = 1;
-  double aero_torque = 0;        ///< azimuth average of the rotor aerodynamic torque [N m]
-  double thrust = 0;             ///< azimuth average of the rotor aerodynamic thrust [N]
-  double generator_torque = 0;   ///< of the torque law at the generator speed [N m, high-speed shaft]
-  double generator_speed = 0;    ///< [rad/s]
-  double imbalance = 0;          ///< azimuth-averaged generalized force on the rotor azimuth [N m]
-  double tip_deflection = 0;     ///< blade 1 tip, out of the (coned) rotor plane, downwind positive [m]
-  double tower_top_fa = 0;       ///< tower-top displacement downwind (output TTDspFA) [m], 0 without it
-  int evaluations = 0;           ///< torque evaluations (each: `azimuths` equilibria)
+  double aero_torque = 0;       ///< azimuth average of the rotor aerodynamic torque [N m]
+  double thrust = 0;            ///< azimuth average of the rotor aerodynamic thrust [N]
+  double generator_torque = 0;  ///< of the torque law at the generator speed [N m, high-speed shaft]
+  double generator_speed = 0;   ///< [rad/s]
+  double imbalance = 0;         ///< azimuth-averaged generalized force on the rotor azimuth [N m]
+  double tip_deflection = 0;    ///< blade 1 tip, out of the (coned) rotor plane, downwind positive [m]
+  double tower_top_fa = 0;      ///< tower-top displacement downwind (output TTDspFA) [m], 0 without it
+  int evaluations = 0;          ///< torque evaluations (each: `azimuths` equilibria)
   /// ∂f/∂(pitch) above rated [N m/rad], ∂f/∂Ω below [N m s/rad], f the azimuth-averaged force on the
   /// rotor azimuth, from the first two points of a search started next to a guess (0 otherwise): a
   /// neighbouring wind speed's first step (TrimGuess).
@@ -76,8 +76,9 @@ SteadyState steadyState(const Model& model, const OperatingCondition& condition,
 /// The trimmed point at `wind_speed` [m/s]. Needs aerodynamics, a rotating coordinate and a generator
 /// torque law (ServoDyn VSContrl = 1, or an induction generator: then the speed on its torque-slip curve
 /// at fine pitch) or ROSCO's controller (TrimOptions::controller: the point its laws settle at, with the
-/// generator torque it commands as the condition's generator_torque; docs/theory/controller.md). Throws ComputeError saying what was tried when no balance exists (wind too low to turn
-/// the rotor, rated power not reachable below the maximum pitch, torque beyond the pull-out torque).
+/// generator torque it commands as the condition's generator_torque; docs/theory/controller.md). Throws ComputeError
+/// saying what was tried when no balance exists (wind too low to turn the rotor, rated power not reachable below the
+/// maximum pitch, torque beyond the pull-out torque).
 SteadyState trimAtWindSpeed(const Model& model, double wind_speed, const TrimOptions& opt = {});
 
 /// Where the trim at a wind speed is expected, from its neighbours in a schedule: the search brackets

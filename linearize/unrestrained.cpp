@@ -40,7 +40,8 @@ std::vector<int> unrestrainedCoordinates(const Model& m, const VecX& q, const Ve
   JacobianWorkspace jw(s);
   const MatX J = residualJacobian(s, jw, q0, qd, qdd, u, Wrt::Q, solved);  // ∂e/∂q = −K
   double scale = 0;
-  for (size_t k = 0; k < solved.size(); ++k) scale = std::max(scale, std::abs(J(solved[k], static_cast<Eigen::Index>(k))));
+  for (size_t k = 0; k < solved.size(); ++k)
+    scale = std::max(scale, std::abs(J(solved[k], static_cast<Eigen::Index>(k))));
   std::vector<int> free;
   for (int i : candidates) {
     const auto k = static_cast<Eigen::Index>(std::find(solved.begin(), solved.end(), i) - solved.begin());

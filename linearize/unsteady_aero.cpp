@@ -12,8 +12,9 @@ namespace {
 void requireFrozenInduction(const Model& m, const OperatingPoint& op) {
   if (m.aero.ua_mod <= 0) throw ComputeError("unsteady-airfoil states: the model has no UA_Mod 4 or 6");
   if (static_cast<int>(op.inflow.axial.size()) != m.aero.nstations())
-    throw ComputeError("unsteady-airfoil states: the operating point carries no induction of the blade elements "
-                       "(solve it with solveOperatingPoint)");
+    throw ComputeError(
+        "unsteady-airfoil states: the operating point carries no induction of the blade elements "
+        "(solve it with solveOperatingPoint)");
 }
 
 // One column of the AD evaluation: which argument and which index.
@@ -89,8 +90,7 @@ UnsteadyAeroLinear unsteadyAeroLinear(const Model& m, const OperatingPoint& op, 
     addUnsteadyAeroLoads<ADChunk>(m, ws, q, qd, u, op.inflow, nullptr, e_qs, nullptr);
     for (int k = 0; k < w; ++k) {
       const bool state = all[c0 + k].kind == Column::Z;  // e_QS does not depend on z
-      for (int i = 0; i < n; ++i)
-        Je(i, c0 + k) = e_ua(i).derivatives()(k) - (state ? 0.0 : e_qs(i).derivatives()(k));
+      for (int i = 0; i < n; ++i) Je(i, c0 + k) = e_ua(i).derivatives()(k) - (state ? 0.0 : e_qs(i).derivatives()(k));
       for (int i = 0; i < nz; ++i) Jz(i, c0 + k) = zdot(i).derivatives()(k);
     }
     for (int k = 0; k < w; ++k) seed(all[c0 + k], k, false);

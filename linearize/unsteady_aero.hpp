@@ -16,13 +16,13 @@
 namespace whirl {
 
 struct UnsteadyAeroLinear {
-  VecX z;                 ///< the states at the operating point (steady for its inputs), dim nz
-  MatX dK, dC;            ///< ndof × ncol: ΔK, ΔC on the columns asked for, all residual rows
-  MatX dQ;                ///< ndof × ninput (or × 0 without inputs)
-  MatX G;                 ///< ndof × nz
-  MatX Zq, Zqd;           ///< nz × ncol
-  MatX Zu;                ///< nz × ninput (or × 0)
-  MatX Azz;               ///< nz × nz
+  VecX z;                                  ///< the states at the operating point (steady for its inputs), dim nz
+  MatX dK, dC;                             ///< ndof × ncol: ΔK, ΔC on the columns asked for, all residual rows
+  MatX dQ;                                 ///< ndof × ninput (or × 0 without inputs)
+  MatX G;                                  ///< ndof × nz
+  MatX Zq, Zqd;                            ///< nz × ncol
+  MatX Zu;                                 ///< nz × ninput (or × 0)
+  MatX Azz;                                ///< nz × nz
   std::vector<std::string> names, groups;  ///< uaStateNames
 };
 

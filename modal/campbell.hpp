@@ -17,7 +17,7 @@ struct CampbellPoint {
   std::optional<double> wind_speed;  ///< m/s, when the point comes from a schedule
   std::optional<double> pitch_deg;   ///< collective blade pitch of the schedule
   std::vector<std::string> coordinates;
-  std::vector<Mode> modes;           ///< sorted by frequency
+  std::vector<Mode> modes;  ///< sorted by frequency
   /// Where the operating point leaves the model's range of validity (linearize/point_validity.hpp),
   /// kept when the command was told to go on (--allow-invalid-point); empty for a valid point.
   std::vector<std::string> validity_problems;

@@ -20,7 +20,8 @@ json encodeComplex(const Eigen::MatrixXcd& u) {
 Eigen::MatrixXcd decodeComplex(const json& j) {
   const auto r = j.at("r").get<Eigen::Index>(), c = j.at("c").get<Eigen::Index>();
   const auto v = j.at("v").get<std::vector<double>>();
-  if (v.size() != static_cast<std::size_t>(2 * r * c)) throw ComputeError("campbell point: complex matrix of the wrong size");
+  if (v.size() != static_cast<std::size_t>(2 * r * c))
+    throw ComputeError("campbell point: complex matrix of the wrong size");
   Eigen::MatrixXcd u(r, c);
   std::size_t k = 0;
   for (Eigen::Index jc = 0; jc < c; ++jc)
@@ -35,8 +36,13 @@ json encodeMotion(const ModeMotion& mm) {
   json j;
   j["bodies"] = json::array();
   for (const BodyMotion& b : mm.bodies)
-    j["bodies"].push_back({{"body", b.body}, {"blade", b.blade}, {"nodes", b.nodes}, {"x", encodeReal(b.x)},
-                           {"pos", encodeReal(b.position)}, {"R", encodeReal(b.R)}, {"u", encodeComplex(b.u)}});
+    j["bodies"].push_back({{"body", b.body},
+                           {"blade", b.blade},
+                           {"nodes", b.nodes},
+                           {"x", encodeReal(b.x)},
+                           {"pos", encodeReal(b.position)},
+                           {"R", encodeReal(b.R)},
+                           {"u", encodeComplex(b.u)}});
   j["coll"] = encodeComplex(mm.collective);
   j["bw"] = encodeComplex(mm.backward);
   j["fw"] = encodeComplex(mm.forward);

@@ -44,7 +44,8 @@ std::vector<CampbellPoint> campbellSweep(int sets, const std::function<const Mod
 
 std::vector<CampbellPoint> campbellSweep(const Model& m, const std::vector<SweepPoint>& points,
                                          const SweepOptions& opt) {
-  return campbellSweep(1, [&](int) -> const Model& { return m; }, points, opt);
+  return campbellSweep(
+      1, [&](int) -> const Model& { return m; }, points, opt);
 }
 
 }  // namespace whirl

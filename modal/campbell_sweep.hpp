@@ -4,9 +4,9 @@
 /// pitch) the periodic operating point is solved and linearized at N azimuths, transformed to
 /// multiblade coordinates and analysed (modal/rotor_modes.hpp). The loop over the points is the
 /// shared sweep of linearize/sweep.hpp (SweepPoint, SweepOptions, rpmRange are declared there).
+#include "linearize/operating_point.hpp"
 #include "linearize/sweep.hpp"
 #include "modal/campbell.hpp"
-#include "linearize/operating_point.hpp"
 #include "src/model/model.hpp"
 
 namespace whirl {

@@ -33,7 +33,8 @@ std::string groupOf(const StateSpaceVariable& v, bool pitch_loop, const std::vec
 /// "<pattern> cyclic" as backward or forward whirl from the phase of the mode's sine coordinate against
 /// its cosine one (modal/rotor_modes.hpp: q_s/q_c = −i turns with the rotor, FW); parked, the larger
 /// of the two. Other names are returned as they are.
-std::string whirlName(const std::string& name, const StateSpaceModel& s, const Eigen::VectorXcd& v, double rotor_speed) {
+std::string whirlName(const std::string& name, const StateSpaceModel& s, const Eigen::VectorXcd& v,
+                      double rotor_speed) {
   if (!name.ends_with(" cyclic")) return name;
   const std::string base = name.substr(0, name.size() - 7);
   Eigen::Index ic = -1, is = -1;

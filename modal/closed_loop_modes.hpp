@@ -21,7 +21,7 @@ namespace whirl {
 
 struct ClosedLoopMode {
   std::string name;
-  double freq_hz = 0;        ///< natural frequency [Hz]
+  double freq_hz = 0;  ///< natural frequency [Hz]
   double damped_freq_hz = 0;
   double damping_ratio = 0;  ///< [-]
   std::complex<double> eigenvalue;
@@ -33,8 +33,8 @@ struct ClosedLoopMode {
 
 struct ClosedLoopPoint {
   SteadyState steady;
-  StateSpaceModel plant;   ///< open loop (multiblade average, azimuth dropped)
-  StateSpaceModel closed;  ///< with the controller's states appended
+  StateSpaceModel plant;                                 ///< open loop (multiblade average, azimuth dropped)
+  StateSpaceModel closed;                                ///< with the controller's states appended
   std::vector<ClosedLoopMode> open_modes, closed_modes;  ///< oscillating and real roots, by frequency
   LoopMargins pitch, torque;  ///< margins of each loop broken at its actuator input (NaN where the loop does not act)
   bool stable = true;         ///< every closed-loop eigenvalue with Re λ < 0 (the rigid azimuth dropped)

@@ -49,7 +49,8 @@ std::vector<VecX> linearResponse(const StateSpaceModel& cl, int wind, const std:
     }
     const double u = tk >= t0 ? step : 0;
     VecX y(rows.size());
-    for (size_t i = 0; i < rows.size(); ++i) y(static_cast<Eigen::Index>(i)) = cl.C.row(rows[i]).dot(x) + cl.D(rows[i], wind) * u;
+    for (size_t i = 0; i < rows.size(); ++i)
+      y(static_cast<Eigen::Index>(i)) = cl.C.row(rows[i]).dot(x) + cl.D(rows[i], wind) * u;
     out.push_back(y);
   }
   return out;

@@ -42,7 +42,7 @@ struct ClosedLoopStepSignal {
 };
 
 struct ClosedLoopStep {
-  std::vector<double> time;  ///< [s]
+  std::vector<double> time;                   ///< [s]
   std::vector<ClosedLoopStepSignal> signals;  ///< the outputs asked for, then "collective pitch" [rad]
 };
 

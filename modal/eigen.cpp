@@ -14,8 +14,9 @@ namespace {
 
 void requireSquareFinite(const Eigen::MatrixXd& X, const char* what, const char* name) {
   if (X.rows() != X.cols())
-    throw ComputeError(where("", 0, what, std::string(name) + " is " + std::to_string(X.rows()) +
-                                              " x " + std::to_string(X.cols()) + ", not square"));
+    throw ComputeError(where("", 0, what,
+                             std::string(name) + " is " + std::to_string(X.rows()) + " x " + std::to_string(X.cols()) +
+                                 ", not square"));
   for (Eigen::Index j = 0; j < X.cols(); ++j)
     for (Eigen::Index i = 0; i < X.rows(); ++i)
       if (!std::isfinite(X(i, j)))
@@ -67,16 +68,15 @@ EigenDecomposition eigenStandard(const Eigen::MatrixXd& A, bool with_left) {
   return out;
 }
 
-EigenDecomposition eigenSecondOrder(const Eigen::MatrixXd& M, const Eigen::MatrixXd& C,
-                                    const Eigen::MatrixXd& K) {
+EigenDecomposition eigenSecondOrder(const Eigen::MatrixXd& M, const Eigen::MatrixXd& C, const Eigen::MatrixXd& K) {
   requireSquareFinite(M, "eigenSecondOrder", "M");
   requireSquareFinite(C, "eigenSecondOrder", "C");
   requireSquareFinite(K, "eigenSecondOrder", "K");
   const Eigen::Index n = M.rows();
   if (C.rows() != n || K.rows() != n)
     throw ComputeError(where("", 0, "eigenSecondOrder",
-                             "M, C, K sizes differ (" + std::to_string(n) + ", " + std::to_string(C.rows()) +
-                                 ", " + std::to_string(K.rows()) + ")"));
+                             "M, C, K sizes differ (" + std::to_string(n) + ", " + std::to_string(C.rows()) + ", " +
+                                 std::to_string(K.rows()) + ")"));
   EigenDecomposition out;
   if (n == 0) return out;
   const Eigen::Index n2 = 2 * n;

@@ -36,8 +36,7 @@ EigenDecomposition eigenStandard(const Eigen::MatrixXd& A, bool with_left = fals
 /// \return 2n eigenvalues; vectors are the 2n state vectors x = [q; λq].
 /// \throws ComputeError on mismatched sizes, non-finite entries, non-convergence, or an infinite
 ///         eigenvalue (β ≈ 0), which means M is singular (a DOF without inertia).
-EigenDecomposition eigenSecondOrder(const Eigen::MatrixXd& M, const Eigen::MatrixXd& C,
-                                    const Eigen::MatrixXd& K);
+EigenDecomposition eigenSecondOrder(const Eigen::MatrixXd& M, const Eigen::MatrixXd& C, const Eigen::MatrixXd& K);
 
 /// Frequencies and damping of one eigenvalue.
 struct ModalFrequency {

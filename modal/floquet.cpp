@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
-#include <string>
 #include <numbers>
+#include <string>
 #include <unsupported/Eigen/FFT>
 #include <unsupported/Eigen/MatrixFunctions>
 
@@ -35,15 +35,15 @@ double kernel(double x, int N) {
 /// coordinates (the j-th coordinate of every blade) as collective, cos and sin components.
 struct FixedFrameView {
   int n = 0, nblades = 0;
-  std::vector<int> fixed;                  ///< coordinate index of each fixed row
-  std::vector<int> teeter;                 ///< coordinate of each teeter (two rows each: cos, sin)
-  std::vector<std::vector<int>> sets;      ///< sets[j][b]: coordinate of blade b in set j
-  std::vector<NamingCoordinate> coords;    ///< one per row
+  std::vector<int> fixed;                ///< coordinate index of each fixed row
+  std::vector<int> teeter;               ///< coordinate of each teeter (two rows each: cos, sin)
+  std::vector<std::vector<int>> sets;    ///< sets[j][b]: coordinate of blade b in set j
+  std::vector<NamingCoordinate> coords;  ///< one per row
   std::vector<std::string> names;
-  VecX weights;                            ///< per row
-  VecX cyclic_weights;                     ///< weights of the cyclic rows (blade cos/sin, teeter), 0 elsewhere
-  std::vector<int> rotor;                  ///< the rotor's own coordinates (blades, teeter), as they are
-  VecX rotor_weights;                      ///< their weights
+  VecX weights;            ///< per row
+  VecX cyclic_weights;     ///< weights of the cyclic rows (blade cos/sin, teeter), 0 elsewhere
+  std::vector<int> rotor;  ///< the rotor's own coordinates (blades, teeter), as they are
+  VecX rotor_weights;      ///< their weights
   std::vector<bool> azimuth, held;
 
   /// Selects the rotor's own coordinates: rotor.size() × n.
@@ -157,7 +157,8 @@ std::vector<MbcSample> checkedSamples(const RotorCoordinates& c, const std::vect
   const int N = static_cast<int>(samples_in.size());
   if (N < 2) throw InputError("Floquet analysis: needs at least 2 azimuths");
   std::vector<MbcSample> samples = samples_in;
-  std::sort(samples.begin(), samples.end(), [](const MbcSample& a, const MbcSample& b) { return a.azimuth < b.azimuth; });
+  std::sort(samples.begin(), samples.end(),
+            [](const MbcSample& a, const MbcSample& b) { return a.azimuth < b.azimuth; });
   const double omega = samples.front().rotor_speed;
   if (!(std::abs(omega) > 0) || !std::isfinite(omega))
     throw InputError("Floquet analysis: needs a turning rotor (rotor speed is 0)");
@@ -206,7 +207,8 @@ FloquetGrid floquetGrid(const std::vector<MbcSample>& samples, double omega, con
       fastest_decay = std::min(fastest_decay, l.real());
     }
   const double spread = (slowest - fastest_decay) * g.T;
-  const double wanted = std::max<double>(N * std::max(1, opt.steps_per_sample), std::ceil(4 * fastest / std::abs(omega)) + 8);
+  const double wanted = std::max<double>(N * std::max(1, opt.steps_per_sample),
+                                         std::ceil(4 * fastest / std::abs(omega)) + 8);
   if (!(wanted <= kMaxFloquetSteps))
     throw InputError("Floquet analysis: the rotor turns too slowly for its fastest mode (" +
                      std::to_string(fastest / (2 * pi)) + " Hz at " + std::to_string(std::abs(omega) * 30 / pi) +
@@ -228,8 +230,8 @@ struct Propagation {
 };
 
 /// Monodromy by the fourth-order Magnus scheme on the trigonometric interpolant of A(ψ).
-Propagation propagate(const std::vector<MbcSample>& samples, const FixedFrameView& view, const FloquetGrid& g,
-                      int n, bool standing) {
+Propagation propagate(const std::vector<MbcSample>& samples, const FixedFrameView& view, const FloquetGrid& g, int n,
+                      bool standing) {
   const int N = static_cast<int>(samples.size());
   const Eigen::Index nx = samples.front().A.rows();
   const double psi0 = samples.front().azimuth, omega = samples.front().rotor_speed;
@@ -261,8 +263,9 @@ Propagation propagate(const std::vector<MbcSample>& samples, const FixedFrameVie
 /// Harmonics k = −M/2 … M/2−1 (index k mod M) of the solutions `source` started at the columns `cols`
 /// of each group's basis (lifted.blocks), without e^{ηt}, frequencies k|Ω|: one FFT per entry. With
 /// η = G ln λ / T the solution at t_m in group g is λ^g Y[m] x_g and e^{−η t_m} λ^g = e^{−η (t_m − t_g)}.
-std::vector<MatXc> solutionHarmonics(const cd& eta, const std::vector<Eigen::Index>& cols, const std::vector<MatX>& source,
-                                     const LiftedMultipliers& lifted, const FloquetGrid& g) {
+std::vector<MatXc> solutionHarmonics(const cd& eta, const std::vector<Eigen::Index>& cols,
+                                     const std::vector<MatX>& source, const LiftedMultipliers& lifted,
+                                     const FloquetGrid& g) {
   const Eigen::Index d = static_cast<Eigen::Index>(cols.size());
   const Eigen::Index rows = source.front().rows(), nx = lifted.blocks.front().rows();
   std::vector<MatXc> H(g.M, MatXc::Zero(rows, d));
@@ -309,7 +312,7 @@ void clusterModes(const cd& root, const std::vector<Eigen::Index>& cluster, cons
     // eigenspace has a fixed-frame response; a tiny shift keeps it so otherwise).
     const double shift = 1e-12 * std::max(1e-300, Nm.norm());
     Eigen::GeneralizedSelfAdjointEigenSolver<MatXc> ges(0.5 * (Gk + Gk.adjoint()),
-                                                       0.5 * (Nm + Nm.adjoint()) + shift * MatXc::Identity(d, d));
+                                                        0.5 * (Nm + Nm.adjoint()) + shift * MatXc::Identity(d, d));
     if (ges.info() == Eigen::Success) dirs = ges.eigenvectors();
   }
   for (Eigen::Index a = 0; a < d; ++a) {
@@ -354,7 +357,8 @@ void clusterModes(const cd& root, const std::vector<Eigen::Index>& cluster, cons
 
 }  // namespace
 
-RotorModes floquetModes(const RotorCoordinates& c, const std::vector<MbcSample>& samples_in, const FloquetOptions& opt) {
+RotorModes floquetModes(const RotorCoordinates& c, const std::vector<MbcSample>& samples_in,
+                        const FloquetOptions& opt) {
   const std::vector<MbcSample> samples = checkedSamples(c, samples_in);
   const double omega = samples.front().rotor_speed;
   const Eigen::Index nx = samples.front().A.rows();

@@ -40,8 +40,10 @@ LiftedMultipliers liftedMultipliers(const std::vector<MatX>& factors) {
     if (boundary ? ed.values(i).imag() > 0 : a < half) keep.push_back(i);
   }
   if (static_cast<Eigen::Index>(keep.size()) > nx)
-    throw ComputeError("Floquet multipliers: " + std::to_string(keep.size()) + " principal roots of the cyclic "
-                       "eigenproblem for " + std::to_string(nx) + " multipliers");
+    throw ComputeError("Floquet multipliers: " + std::to_string(keep.size()) +
+                       " principal roots of the cyclic "
+                       "eigenproblem for " +
+                       std::to_string(nx) + " multipliers");
   LiftedMultipliers out;
   out.groups = G;
   out.root = Eigen::VectorXcd::Zero(nx);

@@ -17,7 +17,7 @@
 namespace whirl {
 
 struct LiftedMultipliers {
-  int groups = 1;               ///< G
+  int groups = 1;  ///< G
   /// Per multiplier: λ, the G-th root with arg λ ∈ (−π/G, π/G] (dim nx); 0 for a state that decays by
   /// more than 1e-12 within one factor (G > 1), whose multiplier is below round-off.
   Eigen::VectorXcd root;

@@ -21,7 +21,8 @@ RotorCoordinates linRotorCoordinates(const OpenFastLin& lin, const MbcLayout& la
     if (layout.velocity_of[i] >= 0) continue;
     coordinate[i] = static_cast<int>(c.names.size());
     const std::string& d = lin.x[i].description;
-    const bool first_order = std::find(layout.velocity_of.begin(), layout.velocity_of.end(), i) == layout.velocity_of.end();
+    const bool first_order = std::find(layout.velocity_of.begin(), layout.velocity_of.end(), i) ==
+                             layout.velocity_of.end();
     c.names.push_back(dofNameFromLinDescription(d));
     c.groups.push_back(first_order ? firstOrderGroupFromLinDescription(d) : c.names.back());
     c.blade.push_back(layout.state_blade[i]);
@@ -48,8 +49,7 @@ bool samePoint(const OpenFastLin& a, const OpenFastLin& b, double tolerance) {
     return std::abs(x - y) <= tolerance * std::max({std::abs(x), std::abs(y), floor});
   };
   if (a.wind_speed.has_value() != b.wind_speed.has_value()) return false;
-  return close(a.rotor_speed, b.rotor_speed, 1e-3) &&
-         (!a.wind_speed || close(*a.wind_speed, *b.wind_speed, 1e-2));
+  return close(a.rotor_speed, b.rotor_speed, 1e-3) && (!a.wind_speed || close(*a.wind_speed, *b.wind_speed, 1e-2));
 }
 
 }  // namespace
@@ -100,11 +100,13 @@ CampbellPoint linCampbellPoint(const std::vector<OpenFastLin>& group, std::vecto
     std::string list;
     for (std::size_t k = 0; k < left_out.size(); ++k) {
       const LinVariable& y = group.front().y[left_out[k]];
-      list += (k ? ", " : "") + y.description.substr(0, y.description.find(',')) + " (line " + std::to_string(y.line) + ")";
+      list += (k ? ", " : "") + y.description.substr(0, y.description.find(',')) + " (line " + std::to_string(y.line) +
+              ")";
     }
     notes->push_back(group.front().path + ": " + std::to_string(left_out.size()) +
                      " rotating outputs do not pair across blades and were left out of the multiblade transform "
-                     "(the modes do not use outputs): " + list);
+                     "(the modes do not use outputs): " +
+                     list);
   }
   std::vector<MbcSample> samples;
   for (const auto& lin : group) {

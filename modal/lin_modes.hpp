@@ -31,8 +31,7 @@ std::string linRootName(const std::string& path);
 /// \throws InputError for a file without an A matrix, or one with the operating point and azimuth
 ///         (within 1e-6 rad) of an earlier file of its group: a repeated azimuth would bias the
 ///         multiblade average.
-std::vector<std::vector<OpenFastLin>> groupLinByOperatingPoint(std::vector<OpenFastLin> files,
-                                                               double tolerance = 1e-3);
+std::vector<std::vector<OpenFastLin>> groupLinByOperatingPoint(std::vector<OpenFastLin> files, double tolerance = 1e-3);
 
 /// The warning for a group of a turning rotor with fewer than 3 azimuths (the multiblade transform
 /// needs 3 [Bir2008]); empty when there are enough, or the rotor is parked (one file is exact).

@@ -124,7 +124,8 @@ std::vector<int> bladesOf(const OpenFastLin& lin, const std::vector<LinVariable>
   auto perBlade = [&] {
     std::vector<std::vector<std::pair<std::size_t, std::string>>> per(static_cast<std::size_t>(N));
     for (std::size_t i = 0; i < vars.size(); ++i)
-      if (blade[i] >= 0 && (vel.empty() || vel[i] < 0)) per[static_cast<std::size_t>(blade[i])].emplace_back(i, masked[i]);
+      if (blade[i] >= 0 && (vel.empty() || vel[i] < 0))
+        per[static_cast<std::size_t>(blade[i])].emplace_back(i, masked[i]);
     return per;
   };
   // The first entry at which blade b's sets differ from blade 1's, or none.
@@ -166,8 +167,8 @@ std::vector<int> bladesOf(const OpenFastLin& lin, const std::vector<LinVariable>
   for (int b = 1; b < N; ++b) {
     if (const auto i = mismatch(per, b))
       throw InputError(where(lin.path, vars[*i].line, key,
-                             "rotating entries do not pair across blades: blade 1 has " + std::to_string(per[0].size()) +
-                                 " and blade " + std::to_string(b + 1) + " has " +
+                             "rotating entries do not pair across blades: blade 1 has " +
+                                 std::to_string(per[0].size()) + " and blade " + std::to_string(b + 1) + " has " +
                                  std::to_string(per[static_cast<std::size_t>(b)].size()) + ", mismatch at '" +
                                  vars[*i].description + "'"));
   }
@@ -184,8 +185,8 @@ int highestBlade(const OpenFastLin& lin, const std::vector<LinVariable>& vars, c
     const int b = matchBlade(v.description).blade;
     if (b > kMaxBlades)
       throw InputError(where(lin.path, v.line, key,
-                             "blade number " + (b == std::numeric_limits<int>::max() ? std::string("too large")
-                                                                                      : std::to_string(b)) +
+                             "blade number " +
+                                 (b == std::numeric_limits<int>::max() ? std::string("too large") : std::to_string(b)) +
                                  " in '" + v.description + "' (at most " + std::to_string(kMaxBlades) + " blades)"));
     n = std::max(n, b);
   }

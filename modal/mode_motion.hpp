@@ -19,15 +19,15 @@ namespace whirl {
 
 /// Motion of the nodes of one body in one mode.
 struct BodyMotion {
-  std::string body;          ///< Body::name
-  int blade = -1;            ///< rotor blade (0-based) the body is, −1: fixed frame
+  std::string body;  ///< Body::name
+  int blade = -1;    ///< rotor blade (0-based) the body is, −1: fixed frame
   /// What the body is for the tables of other tools and the report: "blade", "platform" (a free joint),
   /// "tower", "nacelle", "hub" (the name holds the word, any case), or empty.
   std::string role;
   std::vector<std::string> nodes;  ///< "origin", "node 1", … (Body::nodes, else the origin and Body::points)
-  VecX x;                    ///< station of each node along body x, undeformed [m]
-  Mat3X position;            ///< ground position of each node at the operating point [m] (3 × nodes)
-  Mat3 R = Mat3::Identity(); ///< body frame → ground at the operating point
+  VecX x;                          ///< station of each node along body x, undeformed [m]
+  Mat3X position;                  ///< ground position of each node at the operating point [m] (3 × nodes)
+  Mat3 R = Mat3::Identity();       ///< body frame → ground at the operating point
   /// nodes × 6: translations u_x, u_y, u_z [m per unit] and small rotations θ_x, θ_y, θ_z [rad per unit]
   /// about the body axes, body-frame components.
   Eigen::MatrixXcd u;

@@ -123,13 +123,15 @@ Eigen::VectorXcd bladeCoordinates(const Eigen::VectorXcd& phi, const std::vector
   Eigen::VectorXcd out = phi;
   std::vector<std::vector<int>> per_blade(static_cast<std::size_t>(N));
   for (std::size_t i = 0; i < dof_blade.size(); ++i)
-    if (dof_blade[i] >= 0 && dof_blade[i] < N) per_blade[static_cast<std::size_t>(dof_blade[i])].push_back(static_cast<int>(i));
+    if (dof_blade[i] >= 0 && dof_blade[i] < N)
+      per_blade[static_cast<std::size_t>(dof_blade[i])].push_back(static_cast<int>(i));
   const std::size_t sets = per_blade[0].size();
   for (std::size_t j = 0; j < sets; ++j) {
     for (int b = 0; b < N; ++b) {
       const double psi_b = psi + kTwoPi * b / N;
       std::complex<double> v = 0;
-      for (int slot = 0; slot < N; ++slot) v += phi(per_blade[static_cast<std::size_t>(slot)].at(j)) * slotBasis(slot, b, N, psi_b);
+      for (int slot = 0; slot < N; ++slot)
+        v += phi(per_blade[static_cast<std::size_t>(slot)].at(j)) * slotBasis(slot, b, N, psi_b);
       out(per_blade[static_cast<std::size_t>(b)].at(j)) = v;
     }
   }
@@ -187,7 +189,8 @@ void addModeMotions(const Model& m, const OperatingPoint& op, const LinearModel&
   const std::size_t n = lin.dofs.size();
   const std::vector<BodyNodeMap> maps = bodyNodeMaps(m, op.q, op.qd, lin.dofs);
   for (Mode& mode : modes)
-    if (mode.shape.size() >= static_cast<Eigen::Index>(n)) mode.motion = modeMotion(maps, mode.shape.head(static_cast<Eigen::Index>(n)));
+    if (mode.shape.size() >= static_cast<Eigen::Index>(n))
+      mode.motion = modeMotion(maps, mode.shape.head(static_cast<Eigen::Index>(n)));
 }
 
 }  // namespace whirl

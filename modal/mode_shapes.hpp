@@ -27,7 +27,7 @@ namespace whirl {
 /// The linear map from the active coordinates to the motion of one body's nodes.
 struct BodyNodeMap {
   int body = -1;
-  BodyMotion shape;  ///< names, stations, positions and R filled; u empty
+  BodyMotion shape;     ///< names, stations, positions and R filled; u empty
   std::vector<MatX> J;  ///< per node: 6 × n (body-frame translations then rotations per active coordinate)
 };
 
@@ -35,7 +35,8 @@ struct BodyNodeMap {
 /// yaw bearing, are left out); a body's nodes are Body::nodes, or its origin and Body::points.
 /// \param[in] q, qd  all coordinates at the operating point (dim model.ndof())
 /// \param[in] active the model coordinate of each mode-shape entry (LinearModel::dofs)
-std::vector<BodyNodeMap> bodyNodeMaps(const Model& model, const VecX& q, const VecX& qd, const std::vector<int>& active);
+std::vector<BodyNodeMap> bodyNodeMaps(const Model& model, const VecX& q, const VecX& qd,
+                                      const std::vector<int>& active);
 
 /// The motion of mode shape `phi` (blade coordinates, dim active) normalised: largest translational
 /// amplitude 1 with phase 0. An all-zero motion stays zero.

@@ -41,7 +41,8 @@ void setNameEvidence(Mode& mode, std::vector<std::pair<std::string, double>> sha
   mode.name_share = shares.empty() ? 0 : shares[0].second;
   mode.runner_up = shares.size() > 1 ? shares[1].first : "";
   mode.runner_up_share = shares.size() > 1 ? shares[1].second : 0;
-  mode.ambiguous = shares.size() > 1 && mode.name_share > 0 && mode.runner_up_share >= kAmbiguousRunnerUp * mode.name_share;
+  mode.ambiguous = shares.size() > 1 && mode.name_share > 0 &&
+                   mode.runner_up_share >= kAmbiguousRunnerUp * mode.name_share;
 }
 
 std::string nameFromParticipation(const VecX& p, const std::vector<std::string>& names) {
@@ -106,8 +107,8 @@ std::vector<Mode> modesFromEigenImpl(const EigenDecomposition& ed, int n, const 
   return modes;
 }
 
-std::vector<Mode> modesFromEigen(const EigenDecomposition& ed, int n, const MatX& M, const std::vector<std::string>& names,
-                                 const std::vector<double>& residuals) {
+std::vector<Mode> modesFromEigen(const EigenDecomposition& ed, int n, const MatX& M,
+                                 const std::vector<std::string>& names, const std::vector<double>& residuals) {
   return modesFromEigenImpl(ed, n, M, names, residuals);
 }
 

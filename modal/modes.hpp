@@ -26,7 +26,7 @@ struct Mode {
   /// Carried mostly (over half the participation) by first-order states, e.g. HydroDyn's radiation
   /// memory: a root of the fit, not a structural mode (Campbell plots leave it out by default).
   bool first_order = false;
-  std::string name;            ///< from the dominant coordinates
+  std::string name;  ///< from the dominant coordinates
   /// Evidence for the name (issue 45): the participation share of what the name stands for (a
   /// coordinate, or a rotor's coordinate group), the next one and its share; `ambiguous` when that
   /// runner-up carries at least 80 % of the leader's share (within 20 %), see setNameEvidence.
@@ -34,8 +34,8 @@ struct Mode {
   std::string runner_up;
   double runner_up_share = 0;
   bool ambiguous = false;
-  Eigen::VectorXcd shape;      ///< coordinate part of the eigenvector, dim n, largest entry = 1
-  VecX participation;          ///< kinetic-energy share per coordinate |Re(φ_i* (Mφ)_i)| / Σ, sums to 1
+  Eigen::VectorXcd shape;  ///< coordinate part of the eigenvector, dim n, largest entry = 1
+  VecX participation;      ///< kinetic-energy share per coordinate |Re(φ_i* (Mφ)_i)| / Σ, sums to 1
   /// Backward error of the eigenpair, ‖P(λ)x‖ / ((Σ|λ|ʲ‖Aⱼ‖) ‖x‖), when an iterative solver
   /// (SLEPc, modal/sparse_eigen.hpp) computed it; empty for the direct LAPACK path.
   std::optional<double> residual;

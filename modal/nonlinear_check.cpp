@@ -31,8 +31,9 @@ std::vector<IdentifiedPole> realizedPoles(const Simulation& sim, const Operating
 NonlinearCheck checkAgainstLinear(const Model& m, const OperatingPoint& eq, const NonlinearCheckOptions& opt) {
   for (const Dof& d : m.dofs)
     if (!d.frozen && d.blade >= 0)
-      throw InputError("verify: the model has a bladed rotor, whose linear model is periodic; verify takes "
-                       "time-invariant models (no rotor, or an axisymmetric rigid rotor)");
+      throw InputError(
+          "verify: the model has a bladed rotor, whose linear model is periodic; verify takes "
+          "time-invariant models (no rotor, or an axisymmetric rigid rotor)");
   if (opt.levels < 2) throw InputError("verify: levels: at least 2 amplitudes to observe the order");
   LinearizeOptions lo;
   lo.frozen_wake = false;  // the simulation re-solves the induction at every evaluation

@@ -25,11 +25,11 @@
 namespace whirl {
 
 struct NonlinearCheckOptions {
-  std::vector<int> dofs;   ///< coordinates perturbed (each by the amplitude); empty: every non-rotating active one
-  double amplitude = 0.01; ///< ε [m or rad]
-  int levels = 3;          ///< ε, ε/2, ε/4, …
-  double t_end = 10;       ///< [s]
-  double dt_out = 0.01;    ///< [s]
+  std::vector<int> dofs;    ///< coordinates perturbed (each by the amplitude); empty: every non-rotating active one
+  double amplitude = 0.01;  ///< ε [m or rad]
+  int levels = 3;           ///< ε, ε/2, ε/4, …
+  double t_end = 10;        ///< [s]
+  double dt_out = 0.01;     ///< [s]
   double rtol = 1e-10, atol = 1e-13;  ///< IDA, far below the ε² differences
 };
 
@@ -41,7 +41,7 @@ struct NonlinearCheckLevel {
 
 struct NonlinearCheck {
   std::vector<NonlinearCheckLevel> levels;
-  std::vector<Mode> modes;                 ///< of the linear model at the equilibrium
+  std::vector<Mode> modes;  ///< of the linear model at the equilibrium
   std::vector<std::string> identified_dofs;
   std::vector<IdentifiedDecay> identified;  ///< per perturbed coordinate, perturbed alone by the amplitude
   /// Per perturbed coordinate: the poles realized (identifyPoles) from that decay's every state.

@@ -15,8 +15,9 @@ std::vector<Mode> participationModes(const EigenDecomposition& ed, const std::ve
   std::vector<Mode> modes;
   if (N == 0 || n == 0) return modes;
   if (static_cast<Eigen::Index>(coordinate_of.size()) != N)
-    throw ComputeError(where("", 0, "participationModes",
-                             std::to_string(coordinate_of.size()) + " coordinates for " + std::to_string(N) + " states"));
+    throw ComputeError(
+        where("", 0, "participationModes",
+              std::to_string(coordinate_of.size()) + " coordinates for " + std::to_string(N) + " states"));
   // First state of each coordinate: where the shape is read.
   std::vector<int> first(static_cast<size_t>(n), -1);
   for (Eigen::Index i = 0; i < N; ++i) {
@@ -63,7 +64,8 @@ std::vector<Mode> participationModes(const EigenDecomposition& ed, const std::ve
     }
     mode.name = nameFromParticipation(mode.participation, names);
     std::vector<std::pair<std::string, double>> shares;
-    for (Eigen::Index i = 0; i < mode.participation.size(); ++i) shares.emplace_back(names.at(static_cast<std::size_t>(i)), mode.participation(i));
+    for (Eigen::Index i = 0; i < mode.participation.size(); ++i)
+      shares.emplace_back(names.at(static_cast<std::size_t>(i)), mode.participation(i));
     setNameEvidence(mode, std::move(shares));
     modes.push_back(std::move(mode));
   }

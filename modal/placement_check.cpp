@@ -1,7 +1,7 @@
 #include "modal/placement_check.hpp"
 
-#include <cmath>
 #include <Eigen/Eigenvalues>
+#include <cmath>
 #include <limits>
 #include <numbers>
 
@@ -11,8 +11,8 @@ namespace whirl {
 
 namespace {
 
-LinearController placedController(double kp, double ki, double gen_speed, const TuningTurbine& t, const TuningGoals& goals,
-                                  const PlacementCheckOptions& opt) {
+LinearController placedController(double kp, double ki, double gen_speed, const TuningTurbine& t,
+                                  const TuningGoals& goals, const PlacementCheckOptions& opt) {
   LinearController c;
   c.lpf_order = opt.speed_filter > 0 ? 1 : 0;
   c.lpf_freq = opt.speed_filter;
@@ -28,7 +28,8 @@ LinearController placedController(double kp, double ki, double gen_speed, const 
 }
 
 std::complex<double> targetRoot(const TuningGoals& goals) {
-  return {-goals.pc_zeta * goals.pc_omega, goals.pc_omega * std::sqrt(std::max(0.0, 1 - goals.pc_zeta * goals.pc_zeta))};
+  return {-goals.pc_zeta * goals.pc_omega,
+          goals.pc_omega * std::sqrt(std::max(0.0, 1 - goals.pc_zeta * goals.pc_zeta))};
 }
 
 /// The closed loop's eigenvalue nearest `near`.
@@ -85,16 +86,20 @@ std::vector<PlacementCheck> checkPlacement(const Model& model, const std::vector
 }
 
 FullModelPlacement placeOnFullModel(const Model& model, const std::vector<SteadyState>& trimmed, const GainSchedule& g,
-                                    const TuningTurbine& t, const TuningGoals& goals, const PlacementCheckOptions& opt) {
+                                    const TuningTurbine& t, const TuningGoals& goals,
+                                    const PlacementCheckOptions& opt) {
   const ClosedLoopOptions clo = plantOptions(trimmed, g, opt);
   const std::complex<double> target = targetRoot(goals);
   FullModelPlacement out{g, std::vector<bool>(g.kp.size(), false), {}};
   for (size_t k = 0; k < trimmed.size(); ++k) {
     const double w = trimmed[k].generator_speed;
-    const StateSpaceModel plant = closedLoopPoint(model, trimmed[k], placedController(g.kp[k], g.ki[k], w, t, goals, opt), clo).plant;
+    const StateSpaceModel plant =
+        closedLoopPoint(model, trimmed[k], placedController(g.kp[k], g.ki[k], w, t, goals, opt), clo).plant;
     double kp = g.kp[k], ki = g.ki[k];
     std::complex<double> root = nearestRoot(closeLoop(plant, placedController(kp, ki, w, t, goals, opt)), target);
-    auto rootAt = [&](double p, double i) { return nearestRoot(closeLoop(plant, placedController(p, i, w, t, goals, opt)), root); };
+    auto rootAt = [&](double p, double i) {
+      return nearestRoot(closeLoop(plant, placedController(p, i, w, t, goals, opt)), root);
+    };
     for (int it = 0; it < 30 && std::abs(root - target) >= 1e-9 * std::abs(target); ++it) {
       const double hp = 1e-6 * std::abs(kp), hi = 1e-6 * std::abs(ki);
       const std::complex<double> dp = (rootAt(kp + hp, ki) - rootAt(kp - hp, ki)) / (2 * hp);

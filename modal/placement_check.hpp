@@ -14,16 +14,16 @@
 namespace whirl {
 
 struct PlacementCheck {
-  double wind_speed = 0;           ///< [m/s]
-  std::complex<double> target;     ///< the one-state model's closed-loop root [1/s]
-  std::complex<double> pole;       ///< the whole model's closed-loop root nearest it [1/s]
-  double omega = 0, zeta = 0;      ///< its natural frequency [rad/s] and damping ratio [-]
-  bool stable = true;              ///< every closed-loop root of the whole model in the left half-plane
+  double wind_speed = 0;        ///< [m/s]
+  std::complex<double> target;  ///< the one-state model's closed-loop root [1/s]
+  std::complex<double> pole;    ///< the whole model's closed-loop root nearest it [1/s]
+  double omega = 0, zeta = 0;   ///< its natural frequency [rad/s] and damping ratio [-]
+  bool stable = true;           ///< every closed-loop root of the whole model in the left half-plane
 };
 
 struct PlacementCheckOptions {
-  int azimuths = 36;           ///< of the plant's periodic linearization
-  double speed_filter = 0;     ///< first-order generator-speed low pass [rad/s] (ROSCO's F_LPFCornerFreq); 0: none
+  int azimuths = 36;        ///< of the plant's periodic linearization
+  double speed_filter = 0;  ///< first-order generator-speed low pass [rad/s] (ROSCO's F_LPFCornerFreq); 0: none
 };
 
 /// One check per pitch-schedule point of `g`; `trimmed[k]` is the trimmed state at g.wind_speed[k].
@@ -44,6 +44,7 @@ struct FullModelPlacement {
   std::vector<PlacementCheck> checks;  ///< of the returned gains
 };
 FullModelPlacement placeOnFullModel(const Model& model, const std::vector<SteadyState>& trimmed, const GainSchedule& g,
-                                    const TuningTurbine& t, const TuningGoals& goals, const PlacementCheckOptions& opt = {});
+                                    const TuningTurbine& t, const TuningGoals& goals,
+                                    const PlacementCheckOptions& opt = {});
 
 }  // namespace whirl

@@ -71,7 +71,11 @@ void nameRotorMode(Mode& mode, const std::vector<NamingCoordinate>& coords, cons
     if (coords[i].group != group) continue;
     switch (coords[i].kind.kind) {
       case MbcKind::Fixed: break;
-      case MbcKind::Collective: collective = static_cast<int>(i); coll += mode.participation(i); blade = true; break;
+      case MbcKind::Collective:
+        collective = static_cast<int>(i);
+        coll += mode.participation(i);
+        blade = true;
+        break;
       case MbcKind::Cosine:
         if (coords[i].kind.harmonic == 1) cosine = static_cast<int>(i);
         cyclic += mode.participation(i);
@@ -82,7 +86,10 @@ void nameRotorMode(Mode& mode, const std::vector<NamingCoordinate>& coords, cons
         cyclic += mode.participation(i);
         blade = true;
         break;
-      case MbcKind::Differential: cyclic += mode.participation(i); blade = true; break;
+      case MbcKind::Differential:
+        cyclic += mode.participation(i);
+        blade = true;
+        break;
     }
   }
   std::string name = group;
@@ -105,7 +112,8 @@ void nameRotorMode(Mode& mode, const std::vector<NamingCoordinate>& coords, cons
 namespace {
 
 // Share of a mode in the coordinates of `group` that a name suffix stands for.
-double labelShare(const Mode& mode, const std::vector<NamingCoordinate>& coords, const std::string& group, const std::string& label) {
+double labelShare(const Mode& mode, const std::vector<NamingCoordinate>& coords, const std::string& group,
+                  const std::string& label) {
   double share = 0;
   for (size_t i = 0; i < coords.size(); ++i) {
     if (coords[i].group != group) continue;
@@ -254,7 +262,8 @@ RotorModes multibladeModes(const RotorCoordinates& c, const MbcLayout& layout, c
   std::vector<int> state_of(n);
   for (int i = 0; i < n; ++i) state_of[i] = i;
   if (by_participation)
-    for (int s = static_cast<int>(c.coordinate_of_state.size()) - 1; s >= 0; --s) state_of[c.coordinate_of_state[s]] = s;
+    for (int s = static_cast<int>(c.coordinate_of_state.size()) - 1; s >= 0; --s)
+      state_of[c.coordinate_of_state[s]] = s;
   auto groupOf = [&](int i) { return c.groups.empty() ? c.names[i] : c.groups[i]; };
   int nb = 0;
   for (int b : c.blade) nb = std::max(nb, b + 1);
@@ -271,7 +280,8 @@ RotorModes multibladeModes(const RotorCoordinates& c, const MbcLayout& layout, c
     // sample, as below).
     bool even = true;
     for (std::size_t k = 1; k < samples.size(); ++k)
-      even = even && std::abs(samples[k].azimuth - samples[0].azimuth - 2 * std::numbers::pi * double(k) / double(samples.size())) < 1e-6;
+      even = even && std::abs(samples[k].azimuth - samples[0].azimuth -
+                              2 * std::numbers::pi * double(k) / double(samples.size())) < 1e-6;
     if (even) {
       // Floquet's fixed-frame view pairs every coordinate with a rate; a first-order state has none.
       std::vector<int> states_per(n, 0);

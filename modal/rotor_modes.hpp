@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "linearize/periodic.hpp"
 #include "linearize/mbc.hpp"
+#include "linearize/periodic.hpp"
 #include "modal/modes.hpp"
 
 namespace whirl {
@@ -45,7 +45,7 @@ struct RotorCoordinates {
   /// being a blade's coordinate: Floquet analysis sees it in the fixed frame as the differential blade
   /// pattern it is (+ on blade 1, − on blade 2), rows "<name> cos" and "<name> sin".
   std::vector<bool> teeter;
-  MatX weights;                    ///< n × n, weighs participations (a mass matrix or its diagonal)
+  MatX weights;  ///< n × n, weighs participations (a mass matrix or its diagonal)
   /// Empty: the states are [q; q̇; first-order] and `weights` weighs the participations. Otherwise
   /// (a `.lin` file: no mass matrix, states in any order) the coordinate of each state, the
   /// coordinates being the displacements and first-order states in state order, and the modes come

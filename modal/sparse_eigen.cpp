@@ -1,8 +1,8 @@
 #include "modal/sparse_eigen.hpp"
 
 #include <algorithm>
-#include <cstdlib>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 
 #include "src/model/error.hpp"
@@ -162,9 +162,9 @@ void configureShiftInvert(ST st, Mat A, MPI_Comm comm, bool symmetric) {
 
 void requireSquare(const SparseMatrix& A, Eigen::Index n, const char* name) {
   if (A.rows() != n || A.cols() != n)
-    throw ComputeError(where("", 0, "sparse eigen", std::string(name) + " is " + std::to_string(A.rows()) + " x " +
-                                                        std::to_string(A.cols()) + ", expected " +
-                                                        std::to_string(n) + " x " + std::to_string(n)));
+    throw ComputeError(where("", 0, "sparse eigen",
+                             std::string(name) + " is " + std::to_string(A.rows()) + " x " + std::to_string(A.cols()) +
+                                 ", expected " + std::to_string(n) + " x " + std::to_string(n)));
   for (Eigen::Index k = 0; k < A.outerSize(); ++k)
     for (SparseMatrix::InnerIterator it(A, k); it; ++it)
       if (!std::isfinite(it.value()))
@@ -211,8 +211,12 @@ PetscErrorCode eigenpair(EPS e, PetscInt i, PetscScalar* kr, PetscScalar* ki, Ve
 PetscErrorCode eigenpair(PEP p, PetscInt i, PetscScalar* kr, PetscScalar* ki, Vec xr, Vec xi) {
   return PEPGetEigenpair(p, i, kr, ki, xr, xi);
 }
-PetscErrorCode backwardError(EPS e, PetscInt i, PetscReal* err) { return EPSComputeError(e, i, EPS_ERROR_BACKWARD, err); }
-PetscErrorCode backwardError(PEP p, PetscInt i, PetscReal* err) { return PEPComputeError(p, i, PEP_ERROR_BACKWARD, err); }
+PetscErrorCode backwardError(EPS e, PetscInt i, PetscReal* err) {
+  return EPSComputeError(e, i, EPS_ERROR_BACKWARD, err);
+}
+PetscErrorCode backwardError(PEP p, PetscInt i, PetscReal* err) {
+  return PEPComputeError(p, i, PEP_ERROR_BACKWARD, err);
+}
 
 /// Reads the converged pairs of a solved EPS or PEP into `res` (vectors gathered on every rank, unit
 /// length), keeps the nev nearest the target and refuses fewer. `like`: a matrix of the problem's size;

@@ -53,7 +53,8 @@ double modalAssurance(const Eigen::VectorXcd& a, const Eigen::VectorXcd& b) {
 
 double trackingCost(const Mode& a, const Mode& b, const TrackingOptions& opt) {
   const double scale = std::max({a.freq_hz, b.freq_hz, opt.fmin_hz});
-  const double c = 1.0 - modalAssurance(a.shape, b.shape) + opt.frequency_weight * std::abs(a.freq_hz - b.freq_hz) / scale;
+  const double c = 1.0 - modalAssurance(a.shape, b.shape) +
+                   opt.frequency_weight * std::abs(a.freq_hz - b.freq_hz) / scale;
   return std::isfinite(c) ? c : 1e3 + std::abs(opt.max_cost);  // a NaN frequency or shape never links
 }
 

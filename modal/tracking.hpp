@@ -24,11 +24,11 @@ namespace whirl {
 
 /// Options of trackModes.
 struct TrackingOptions {
-  double frequency_weight = 0.5;  ///< w: weight of the relative frequency change in the cost
-  double fmin_hz = 0.05;          ///< fmin: floor of the frequency scale (keeps f ≈ 0 modes finite)
-  double max_cost = 1.0;          ///< pairs costing this or more are not linked (orthogonal shapes cost ≥ 1)
+  double frequency_weight = 0.5;    ///< w: weight of the relative frequency change in the cost
+  double fmin_hz = 0.05;            ///< fmin: floor of the frequency scale (keeps f ≈ 0 modes finite)
+  double max_cost = 1.0;            ///< pairs costing this or more are not linked (orthogonal shapes cost ≥ 1)
   bool include_rigid_body = false;  ///< track rigid-body modes (f = 0, e.g. a free azimuth) too
-  std::string overrides_file;     ///< CSV of renames and pins applied after tracking; empty: none
+  std::string overrides_file;       ///< CSV of renames and pins applied after tracking; empty: none
 };
 
 /// Modal assurance criterion of two complex shapes of equal dimension, in [0, 1]; 0 when one is zero.

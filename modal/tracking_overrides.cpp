@@ -51,14 +51,14 @@ void assignMode(const std::vector<CampbellPoint>& points, std::vector<CampbellLi
     throw RowError("point index " + std::to_string(p) + " out of range (" + std::to_string(points.size()) + " points)");
   if (m >= static_cast<int>(points[p].modes.size()))
     throw RowError("mode index " + std::to_string(m) + " out of range (point " + std::to_string(p) + " has " +
-                      std::to_string(points[p].modes.size()) + " modes)");
+                   std::to_string(points[p].modes.size()) + " modes)");
   const int target = findLine(lines, name);
   int holder = -1;
   for (std::size_t l = 0; l < lines.size(); ++l)
     if (lines[l].mode[p] == m) holder = static_cast<int>(l);
   if (holder < 0)
     throw RowError("mode " + std::to_string(m) + " of point " + std::to_string(p) +
-                      " is on no line (rigid-body modes are not tracked)");
+                   " is on no line (rigid-body modes are not tracked)");
   if (holder == target) return;
   for (std::size_t q = p; q < points.size(); ++q) std::swap(lines[target].mode[q], lines[holder].mode[q]);
   if (std::all_of(lines[holder].mode.begin(), lines[holder].mode.end(), [](int k) { return k < 0; }))
@@ -72,7 +72,8 @@ void applyRow(const std::vector<std::string>& f, const std::vector<CampbellPoint
     if (f[2].empty()) throw RowError("the new name is empty");
     const int l = findLine(lines, f[1]);
     for (std::size_t k = 0; k < lines.size(); ++k)
-      if (static_cast<int>(k) != l && lines[k].name == f[2]) throw RowError("another line is already named '" + f[2] + "'");
+      if (static_cast<int>(k) != l && lines[k].name == f[2])
+        throw RowError("another line is already named '" + f[2] + "'");
     lines[l].name = f[2];
   } else if (f[0] == "assign") {
     if (f.size() != 4) throw RowError("expected 'assign,<point index>,<mode index>,<line name>'");

@@ -49,7 +49,8 @@ int main(int argc, char** argv) {
       for (const auto& p : r.pairs) worst = std::max(worst, p.residual);
       std::printf("sparse eigen benchmark: lattice frame tower %dx%d nodes x %d levels\n", side, side, levels);
       std::printf("  DOFs                 %ld\n", static_cast<long>(s.K.rows()));
-      std::printf("  nonzeros K / M       %ld / %ld\n", static_cast<long>(s.K.nonZeros()), static_cast<long>(s.M.nonZeros()));
+      std::printf("  nonzeros K / M       %ld / %ld\n", static_cast<long>(s.K.nonZeros()),
+                  static_cast<long>(s.M.nonZeros()));
       std::printf("  MPI ranks            %d\n", size);
       std::printf("  method               %s\n", r.method.c_str());
       std::printf("  model build          %.2f s (Eigen triplets, not part of the solve)\n", t_build);

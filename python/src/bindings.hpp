@@ -24,7 +24,7 @@ namespace py = pybind11;
 /// A loaded model: immutable once built, shared by every result that needs it.
 struct PyModel {
   std::shared_ptr<const Model> model;
-  std::string source;  ///< the case path, or "<dict>" for a case built from a Python dict
+  std::string source;              ///< the case path, or "<dict>" for a case built from a Python dict
   std::vector<std::string> notes;  ///< the readers' informational lines (the CLI's `whirl: note:`)
   std::vector<std::string> sets;   ///< the `--set KEY=VALUE` overrides it was loaded with
 };

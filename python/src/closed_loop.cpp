@@ -21,7 +21,8 @@ py::dict closedLoop(const PyModel& p, const std::vector<double>& winds, int azim
   if (azimuths < 1 || azimuths > 3600) throw InputError("azimuths: must be in 1 … 3600");
   const std::optional<RoscoController> controller = deckController(p);
   if (!controller)
-    throw InputError(p.source + ": closed_loop needs ROSCO's controller: ServoDyn with VSContrl = 5 and DLL_InFile "
+    throw InputError(p.source +
+                     ": closed_loop needs ROSCO's controller: ServoDyn with VSContrl = 5 and DLL_InFile "
                      "naming its DISCON.IN (docs/user/controller.md)");
   SweepGuard guard(progress);
   ClosedLoopCampbell c;
@@ -49,7 +50,8 @@ std::string closedLoopStepTable(const PyModel& p, double wind, const ClosedLoopS
   const Model& m = *p.model;
   const std::optional<RoscoController> controller = deckController(p);
   if (!controller)
-    throw InputError(p.source + ": closed_loop_step needs ROSCO's controller: ServoDyn with VSContrl = 5 and "
+    throw InputError(p.source +
+                     ": closed_loop_step needs ROSCO's controller: ServoDyn with VSContrl = 5 and "
                      "DLL_InFile naming its DISCON.IN (docs/user/controller.md)");
   std::string csv;
   {
@@ -80,8 +82,8 @@ void bindClosedLoop(py::module_& m) {
         so.outputs = outputs;
         return closedLoopStepTable(p, wind, so);
       },
-      py::arg("model"), py::arg("wind"), py::arg("wind_step"), py::arg("step_time"), py::arg("tmax"),
-      py::arg("dt_out"), py::arg("controller_dt"), py::arg("azimuths"), py::arg("outputs"));
+      py::arg("model"), py::arg("wind"), py::arg("wind_step"), py::arg("step_time"), py::arg("tmax"), py::arg("dt_out"),
+      py::arg("controller_dt"), py::arg("azimuths"), py::arg("outputs"));
   m.def("closed_loop", &closedLoop, py::arg("model"), py::arg("wind"), py::arg("azimuths") = 36,
         py::arg("without_speed_filter") = false, py::arg("progress") = py::none());
 }

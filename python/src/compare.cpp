@@ -22,8 +22,7 @@ std::vector<NamedFrequency> resultModes(const py::object& result, std::optional<
 std::vector<ReferenceMode> referenceModes(const py::object& reference) {
   if (py::isinstance<py::str>(reference)) return readReferenceModes(reference.cast<std::string>());
   std::vector<ReferenceMode> rows;  // rows (mode, frequency [Hz], whirl mode)
-  for (const auto& [mode, f, whirl_mode] :
-       reference.cast<std::vector<std::tuple<std::string, double, std::string>>>())
+  for (const auto& [mode, f, whirl_mode] : reference.cast<std::vector<std::tuple<std::string, double, std::string>>>())
     rows.push_back({mode, f, whirl_mode});
   return rows;
 }

@@ -34,8 +34,8 @@ struct PyLinear {
 py::list variables(const std::vector<StateSpaceVariable>& v) {
   py::list rows;
   for (const StateSpaceVariable& s : v)
-    rows.append(py::dict(py::arg("name") = s.name, py::arg("unit") = s.unit, py::arg("op") = s.op,
-                         py::arg("blade") = s.blade));
+    rows.append(
+        py::dict(py::arg("name") = s.name, py::arg("unit") = s.unit, py::arg("op") = s.op, py::arg("blade") = s.blade));
   return rows;
 }
 
@@ -47,8 +47,9 @@ void matrixProperty(py::class_<T>& c, const char* name, Get get, const char* doc
 }
 
 // Built on the heap and handed to Python as is: no move of the per-azimuth models into a new object.
-std::unique_ptr<PyLinear> linearizeAt(const PyModel& p, const py::object& op, int azimuths, const std::vector<std::string>& inputs,
-                     const std::vector<std::string>& outputs, bool drop_azimuth) {
+std::unique_ptr<PyLinear> linearizeAt(const PyModel& p, const py::object& op, int azimuths,
+                                      const std::vector<std::string>& inputs, const std::vector<std::string>& outputs,
+                                      bool drop_azimuth) {
   SweepPoint sp;
   if (op.is_none()) {
     sp.condition = modelCondition(*p.model);
@@ -60,7 +61,8 @@ std::unique_ptr<PyLinear> linearizeAt(const PyModel& p, const py::object& op, in
     sp.pitch_deg = o.pitch_deg;
   }
   sp.rpm = sp.condition.rotor_speed * 30 / std::numbers::pi;
-  if (azimuths < 1 || azimuths > 3600) throw InputError("azimuths: must be in 1 … 3600 (is " + std::to_string(azimuths) + ")");
+  if (azimuths < 1 || azimuths > 3600)
+    throw InputError("azimuths: must be in 1 … 3600 (is " + std::to_string(azimuths) + ")");
   ExportOptions eo;
   eo.azimuths = azimuths;
   eo.inputs = inputs;
@@ -89,8 +91,10 @@ std::vector<PyLinear> exportPoints(const PyModel& p, const std::optional<std::ve
                                    const py::object& progress, bool allow_invalid_point,
                                    const std::optional<std::string>& format, const std::optional<std::string>& out) {
   const Model& m = *p.model;
-  if (bool(rpm) + bool(wind) + !schedule.is_none() > 1) throw InputError("export: give at most one of rpm=, wind= and schedule=");
-  if (azimuths < 1 || azimuths > 3600) throw InputError("azimuths: must be in 1 … 3600 (is " + std::to_string(azimuths) + ")");
+  if (bool(rpm) + bool(wind) + !schedule.is_none() > 1)
+    throw InputError("export: give at most one of rpm=, wind= and schedule=");
+  if (azimuths < 1 || azimuths > 3600)
+    throw InputError("azimuths: must be in 1 … 3600 (is " + std::to_string(azimuths) + ")");
   if (format && *format != "mat" && *format != "lin" && *format != "json")
     throw InputError("format: must be mat, lin or json (is '" + *format + "')");
   if (bool(format) != bool(out)) throw InputError("export: give format= and out= together to write files");
@@ -140,7 +144,7 @@ std::vector<PyLinear> exportPoints(const PyModel& p, const std::optional<std::ve
     e.points = exportSweep(m, points, eo, sweep);
   });
   if (out) {
-    OutputSet files(*out);  // every file at once, or none
+    OutputSet files(*out);                                                // every file at once, or none
     std::string title = e.model_name.substr(0, e.model_name.find(". "));  // as `whirl export`
     if (title.empty()) title = e.source;
     writeStateSpaceFiles(e, *format, title, files);
@@ -155,11 +159,16 @@ std::vector<PyLinear> exportPoints(const PyModel& p, const std::optional<std::ve
 
 void bindLinear(py::module_& m) {
   py::class_<StateSpaceModel> ss(m, "StateSpace", "ẋ = A x + B u, y = C x + D u about an operating point.");
-  matrixProperty(ss, "A", [](const StateSpaceModel& s) -> const MatX& { return s.A; }, "state matrix (nx × nx)");
-  matrixProperty(ss, "B", [](const StateSpaceModel& s) -> const MatX& { return s.B; }, "input matrix (nx × nu)");
-  matrixProperty(ss, "C", [](const StateSpaceModel& s) -> const MatX& { return s.C; }, "output matrix (ny × nx)");
-  matrixProperty(ss, "D", [](const StateSpaceModel& s) -> const MatX& { return s.D; }, "feedthrough (ny × nu)");
-  matrixProperty(ss, "xdot_op", [](const StateSpaceModel& s) -> const VecX& { return s.xdot_op; }, "ẋ at the point");
+  matrixProperty(
+      ss, "A", [](const StateSpaceModel& s) -> const MatX& { return s.A; }, "state matrix (nx × nx)");
+  matrixProperty(
+      ss, "B", [](const StateSpaceModel& s) -> const MatX& { return s.B; }, "input matrix (nx × nu)");
+  matrixProperty(
+      ss, "C", [](const StateSpaceModel& s) -> const MatX& { return s.C; }, "output matrix (ny × nx)");
+  matrixProperty(
+      ss, "D", [](const StateSpaceModel& s) -> const MatX& { return s.D; }, "feedthrough (ny × nu)");
+  matrixProperty(
+      ss, "xdot_op", [](const StateSpaceModel& s) -> const VecX& { return s.xdot_op; }, "ẋ at the point");
   ss.def("states", [](const StateSpaceModel& s) { return variables(s.x); })
       .def("inputs", [](const StateSpaceModel& s) { return variables(s.u); })
       .def("outputs", [](const StateSpaceModel& s) { return variables(s.y); })
@@ -182,10 +191,14 @@ void bindLinear(py::module_& m) {
                     "wall time of the library's computation [s], without the Python call around it")
       .def_property_readonly("dof_names", [](const PyLinear& l) { return l.second_order.dof_names; })
       .def_property_readonly("second_order_inputs", [](const PyLinear& l) { return l.second_order.input_names; });
-  matrixProperty(lin, "M", [](const PyLinear& l) -> const MatX& { return l.second_order.M; }, "mass matrix");
-  matrixProperty(lin, "damping", [](const PyLinear& l) -> const MatX& { return l.second_order.C; }, "damping matrix");
-  matrixProperty(lin, "K", [](const PyLinear& l) -> const MatX& { return l.second_order.K; }, "stiffness matrix");
-  matrixProperty(lin, "Q", [](const PyLinear& l) -> const MatX& { return l.second_order.Q; }, "input matrix");
+  matrixProperty(
+      lin, "M", [](const PyLinear& l) -> const MatX& { return l.second_order.M; }, "mass matrix");
+  matrixProperty(
+      lin, "damping", [](const PyLinear& l) -> const MatX& { return l.second_order.C; }, "damping matrix");
+  matrixProperty(
+      lin, "K", [](const PyLinear& l) -> const MatX& { return l.second_order.K; }, "stiffness matrix");
+  matrixProperty(
+      lin, "Q", [](const PyLinear& l) -> const MatX& { return l.second_order.Q; }, "input matrix");
 
   m.def("linearize", &linearizeAt, py::arg("model"), py::arg("op") = py::none(), py::arg("azimuths") = 36,
         py::arg("inputs") = std::vector<std::string>{}, py::arg("outputs") = std::vector<std::string>{},

@@ -53,9 +53,9 @@ py::list dofTable(const Model& m) {
     const Dof& d = m.dofs[static_cast<std::size_t>(i)];
     rows.append(py::dict(py::arg("name") = d.name, py::arg("unit") = dofUnit(m, i),
                          py::arg("body") = m.bodies[static_cast<std::size_t>(d.body)].name,
-                         py::arg("kind") = d.kind == DofKind::Joint ? "joint" : "elastic",
-                         py::arg("frozen") = d.frozen, py::arg("rotating") = d.rotating,
-                         py::arg("blade") = d.blade, py::arg("value") = d.value, py::arg("rate") = d.rate));
+                         py::arg("kind") = d.kind == DofKind::Joint ? "joint" : "elastic", py::arg("frozen") = d.frozen,
+                         py::arg("rotating") = d.rotating, py::arg("blade") = d.blade, py::arg("value") = d.value,
+                         py::arg("rate") = d.rate));
   }
   return rows;
 }
@@ -136,19 +136,24 @@ void bindModel(py::module_& m) {
       .def_readonly("rpm", &PyOperatingPoint::rpm, "rotor speed [rpm]")
       .def_readonly("wind_speed", &PyOperatingPoint::wind_speed, "hub-height wind speed [m/s] as given, or None")
       .def_readonly("pitch_deg", &PyOperatingPoint::pitch_deg, "collective pitch [deg] as given, or None")
-      .def_property_readonly("q", [](const PyOperatingPoint& o) -> const VecX& { return o.point.q; },
-                             py::return_value_policy::reference_internal,
-                             "coordinates at the equilibrium, all DOFs in model order [m or rad] (read-only view)")
-      .def_property_readonly("qd", [](const PyOperatingPoint& o) -> const VecX& { return o.point.qd; },
-                             py::return_value_policy::reference_internal,
-                             "their rates [m/s or rad/s]: the rotor speed on rotating DOFs (read-only view)")
-      .def_property_readonly("u", [](const PyOperatingPoint& o) -> const VecX& { return o.point.u; },
-                             py::return_value_policy::reference_internal,
-                             "inputs at the point, in the units of Model.inputs (read-only view)")
-      .def_property_readonly("iterations", [](const PyOperatingPoint& o) { return o.point.iterations; },
-                             "Newton iterations of the equilibrium")
-      .def_property_readonly("residual_norm", [](const PyOperatingPoint& o) { return o.point.residual_norm; },
-                             "norm of the residual at the equilibrium [N, N m]");
+      .def_property_readonly(
+          "q", [](const PyOperatingPoint& o) -> const VecX& { return o.point.q; },
+          py::return_value_policy::reference_internal,
+          "coordinates at the equilibrium, all DOFs in model order [m or rad] (read-only view)")
+      .def_property_readonly(
+          "qd", [](const PyOperatingPoint& o) -> const VecX& { return o.point.qd; },
+          py::return_value_policy::reference_internal,
+          "their rates [m/s or rad/s]: the rotor speed on rotating DOFs (read-only view)")
+      .def_property_readonly(
+          "u", [](const PyOperatingPoint& o) -> const VecX& { return o.point.u; },
+          py::return_value_policy::reference_internal,
+          "inputs at the point, in the units of Model.inputs (read-only view)")
+      .def_property_readonly(
+          "iterations", [](const PyOperatingPoint& o) { return o.point.iterations; },
+          "Newton iterations of the equilibrium")
+      .def_property_readonly(
+          "residual_norm", [](const PyOperatingPoint& o) { return o.point.residual_norm; },
+          "norm of the residual at the equilibrium [N, N m]");
 
   m.def("load", &load, py::arg("path"), py::arg("sets") = std::vector<std::string>{},
         py::arg("allow_outside_files") = false);

@@ -5,8 +5,9 @@
 #include "python/src/bindings.hpp"
 
 PYBIND11_MODULE(_whirl, m) {
-  m.doc() = "whirl's C++ library: models, operating points, linearization, modes and Campbell sweeps. "
-            "Use the package `whirl`, which wraps this module.";
+  m.doc() =
+      "whirl's C++ library: models, operating points, linearization, modes and Campbell sweeps. "
+      "Use the package `whirl`, which wraps this module.";
 #ifdef WHIRL_VERSION
   m.attr("__version__") = WHIRL_VERSION;
 #endif

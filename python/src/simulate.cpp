@@ -47,8 +47,8 @@ py::tuple simulateModel(const PyModel& p, double tmax, std::optional<double> rpm
                         const std::vector<std::pair<std::string, std::string>>& inputs,
                         const std::vector<std::pair<std::string, std::string>>& drives, bool free_rotor,
                         bool equilibrium, double rtol, double atol, bool allow_invalid_point,
-                        const std::optional<std::string>& out, const std::vector<std::string>& plot_channels,
-                        bool plot, const py::object& progress, std::optional<double> wind, bool closed_loop,
+                        const std::optional<std::string>& out, const std::vector<std::string>& plot_channels, bool plot,
+                        const py::object& progress, std::optional<double> wind, bool closed_loop,
                         double controller_dt) {
   const Model& m = *p.model;
   if (!(tmax > 0)) throw InputError("tmax: simulated time must be positive [s]");
@@ -68,7 +68,8 @@ py::tuple simulateModel(const PyModel& p, double tmax, std::optional<double> rpm
     if (rpm || equilibrium) throw InputError("wind: starts at the trimmed state: not with rpm= or equilibrium=");
     const std::optional<RoscoController> controller = deckController(p);
     if (closed_loop && !controller)
-      throw InputError(p.source + ": closed_loop needs ROSCO's controller: ServoDyn with VSContrl = 5 and DLL_InFile "
+      throw InputError(p.source +
+                       ": closed_loop needs ROSCO's controller: ServoDyn with VSContrl = 5 and DLL_InFile "
                        "naming its DISCON.IN (docs/user/controller.md)");
     if (!(controller_dt > 0)) throw InputError("controller_dt: must be > 0 [s]");
     const WindStart w = windStart(m, *wind, controller ? &*controller : nullptr);
@@ -148,9 +149,8 @@ void bindSimulate(py::module_& m) {
         py::arg("drives") = std::vector<std::pair<std::string, std::string>>{}, py::arg("free_rotor") = false,
         py::arg("equilibrium") = false, py::arg("rtol") = 1e-6, py::arg("atol") = 1e-8,
         py::arg("allow_invalid_point") = false, py::arg("out") = py::none(),
-        py::arg("plot_channels") = std::vector<std::string>{}, py::arg("plot") = true,
-        py::arg("progress") = py::none(), py::arg("wind") = py::none(), py::arg("closed_loop") = false,
-        py::arg("controller_dt") = 0.01);
+        py::arg("plot_channels") = std::vector<std::string>{}, py::arg("plot") = true, py::arg("progress") = py::none(),
+        py::arg("wind") = py::none(), py::arg("closed_loop") = false, py::arg("controller_dt") = 0.01);
 }
 
 }  // namespace whirl::python

@@ -113,8 +113,7 @@ py::dict campbell(const PyModel& p, const std::optional<std::vector<double>>& rp
   std::vector<SweepPoint> points;
   if (rpm)
     for (double r : *rpm) points.push_back(sweepPoint(r));
-  else if (!schedule.is_none())
-    points = schedulePoints(schedule);
+  else if (!schedule.is_none()) points = schedulePoints(schedule);
   const std::optional<RoscoController> controller = wind ? deckController(p) : std::nullopt;
   SweepGuard guard(progress);
   SweepOptions sweep;
@@ -159,7 +158,9 @@ py::dict modeColumns(const std::vector<Mode>& modes, const std::vector<std::stri
     rigid.push_back(modes[k].rigid_body);
     first_order.push_back(modes[k].first_order);
     for (std::size_t c = 0; c < coords.size(); ++c)
-      part[c].push_back(static_cast<Eigen::Index>(c) < modes[k].participation.size() ? modes[k].participation(static_cast<Eigen::Index>(c)) : 0.0);
+      part[c].push_back(static_cast<Eigen::Index>(c) < modes[k].participation.size()
+                            ? modes[k].participation(static_cast<Eigen::Index>(c))
+                            : 0.0);
   }
   py::dict out;
   out["index"] = index;
@@ -220,7 +221,8 @@ py::tuple linCampbell(const std::vector<std::string>& files, bool participations
     py::gil_scoped_release released;
     std::vector<OpenFastLin> lins;
     for (const auto& f : files) lins.push_back(readOpenFastLin(f));
-    for (const auto& group : groupLinByOperatingPoint(std::move(lins))) d.points.push_back(linCampbellPoint(group, &notes));
+    for (const auto& group : groupLinByOperatingPoint(std::move(lins)))
+      d.points.push_back(linCampbellPoint(group, &notes));
     d.lines = trackModes(d.points);
   }
   return py::make_tuple(campbellColumns(d, participations), notes);
@@ -250,7 +252,8 @@ std::vector<SweepPoint> schedulePoints(const py::object& schedule) {
 }
 
 void bindSweeps(py::module_& m) {
-  m.def("steady", &steady, py::arg("model"), py::arg("wind"), py::arg("azimuths") = 3, py::arg("progress") = py::none());
+  m.def("steady", &steady, py::arg("model"), py::arg("wind"), py::arg("azimuths") = 3,
+        py::arg("progress") = py::none());
   m.def("campbell", &campbell, py::arg("model"), py::arg("rpm") = py::none(), py::arg("wind") = py::none(),
         py::arg("schedule") = py::none(), py::arg("azimuths") = 36, py::arg("progress") = py::none(),
         py::arg("participations") = false, py::arg("allow_invalid_point") = false);

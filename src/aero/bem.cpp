@@ -11,9 +11,9 @@
 #include <type_traits>
 
 #include "src/aero/prandtl_expansion.hpp"
-#include "src/model/scalar.hpp"
 #include "src/model/brent.hpp"
 #include "src/model/error.hpp"
+#include "src/model/scalar.hpp"
 
 namespace whirl::aero {
 
@@ -140,8 +140,8 @@ SectionLoads<T> loadsFromFlow(const BemStation& s, const T& x, const T& y, const
   const T alpha = phi - theta;
   const T W2 = x * x + y * y;
   const T W = valueOf(W2) > 0 ? T(sqrt(W2)) : T(0.0);
-  const Coefficients<T> c =
-      s.polar->re_tables.empty() ? evaluate(*s.polar, alpha) : evaluate(*s.polar, alpha, reynolds(s, W));
+  const Coefficients<T> c = s.polar->re_tables.empty() ? evaluate(*s.polar, alpha)
+                                                       : evaluate(*s.polar, alpha, reynolds(s, W));
   return loadsWithCoefficients<T>(s, x, y, phi, alpha, W2, W, c, rho, !still);
 }
 
@@ -233,8 +233,8 @@ struct SineCosine {
 // copy was read back wide from the callee's narrow stores (a stalled store forwarding per evaluation).
 template <class T>
 void inductionsTo(Induction<T>& r, const BemStation& s, const StationConstants& lc, const T& phi, const T& Vx,
-                  const T& Vy, const T& theta, const BemOptions& o, const T* radius,
-                  const SineCosine* near = nullptr, LossParts* losses = nullptr) {
+                  const T& Vy, const T& theta, const BemOptions& o, const T* radius, const SineCosine* near = nullptr,
+                  LossParts* losses = nullptr) {
   using std::cos;
   using std::sin;
   using std::sqrt;
@@ -284,7 +284,7 @@ void inductionsTo(Induction<T>& r, const BemStation& s, const StationConstants& 
       if (equal(kv, -1.0)) a = T(-fsign(kInductionLimit, 1.0 + kv));
       else a = k / (1.0 + k), plain = true;
       if (kv < -1.0) r.valid = false;  // equivalent to a > 1: no momentum-region solution
-    } else {  // Buhl 2005 empirical (Glauert) correction for 0.4 < a < 1, with the loss factor
+    } else {                           // Buhl 2005 empirical (Glauert) correction for 0.4 < a < 1, with the loss factor
       const T temp = 2.0 * F * k;
       const T g1 = temp - (10.0 / 9.0 - F);
       const T g2 = temp - (4.0 / 3.0 - F) * F;
@@ -530,11 +530,10 @@ template <class RFn>
         text += "[" + deg(t.lo) + ", " + deg(t.hi) + "] deg: R = " + num(t.f1) + ", " + num(t.f2);
         if (t.outcome == Tried::Outcome::InvalidRoot)
           text += ": root at " + deg(t.root) + " deg is not a valid BEM solution (k = " + num(t.k) + ")";
-        else if (t.outcome == Tried::Outcome::NoSignChange)
-          text += ": no sign change";
+        else if (t.outcome == Tried::Outcome::NoSignChange) text += ": no sign change";
       }
-      throw ComputeError("no valid BEM inflow angle at r = " + num(s.r) + " m, Vx = " + num(Vx) + " m/s, Vy = " +
-                         num(Vy) + " m/s, theta = " + deg(s.theta) + " deg; brackets tried: " + text +
+      throw ComputeError("no valid BEM inflow angle at r = " + num(s.r) + " m, Vx = " + num(Vx) +
+                         " m/s, Vy = " + num(Vy) + " m/s, theta = " + deg(s.theta) + " deg; brackets tried: " + text +
                          "; geometric phi = " + deg(geo) + " deg");
     }
     phi = geo;
@@ -549,8 +548,8 @@ InflowRoot findInflowRoot(const BemStation& s, double Vx, double Vy, const BemOp
                           std::optional<double> phi_hint, double slope_hint) {
   checkStation(s);
   if (!std::isfinite(Vx) || !std::isfinite(Vy))
-    throw ComputeError("BEM at r = " + num(s.r) + " m: non-finite velocity (Vx = " + num(Vx) + " m/s, Vy = " +
-                       num(Vy) + " m/s)");
+    throw ComputeError("BEM at r = " + num(s.r) + " m: non-finite velocity (Vx = " + num(Vx) + " m/s, Vy = " + num(Vy) +
+                       " m/s)");
   InflowRoot out;
   double phi = 0.0;
   // The root finder's last point is evaluated again for its validity and its inductions: keep it.
@@ -650,8 +649,8 @@ T inflowAngle(const BemStation& s, const T& Vx, const T& Vy, const T& theta, dou
   if (Rphi == 0.0) {
     ADChunk p(phi0);
     p.derivatives()[0] = 1.0;
-    const Induction<ADChunk> d =
-        inductions<ADChunk>(s, p, ADChunk(valueOf(Vx)), ADChunk(valueOf(Vy)), ADChunk(valueOf(theta)), o);
+    const Induction<ADChunk> d = inductions<ADChunk>(s, p, ADChunk(valueOf(Vx)), ADChunk(valueOf(Vy)),
+                                                     ADChunk(valueOf(theta)), o);
     fixed = d.fixed;
     Rphi = d.residual.derivatives()[0];
   }
@@ -660,8 +659,8 @@ T inflowAngle(const BemStation& s, const T& Vx, const T& Vy, const T& theta, dou
     return T(phi0);
   }
   if (!(std::abs(Rphi) > 0) || !std::isfinite(Rphi))
-    throw ComputeError("BEM at r = " + num(s.r) + " m, Vx = " + num(valueOf(Vx)) + " m/s, Vy = " +
-                       num(valueOf(Vy)) + " m/s, theta = " + deg(valueOf(theta)) + " deg: dR/dphi = " + num(Rphi) +
+    throw ComputeError("BEM at r = " + num(s.r) + " m, Vx = " + num(valueOf(Vx)) + " m/s, Vy = " + num(valueOf(Vy)) +
+                       " m/s, theta = " + deg(valueOf(theta)) + " deg: dR/dphi = " + num(Rphi) +
                        " at phi = " + deg(phi0) + " deg, the inflow angle is not differentiable there");
   if (slope) *slope = Rphi;
   const T R = bemResidual<T>(s, T(phi0), Vx, Vy, theta, o, radius);
@@ -679,9 +678,8 @@ SectionLoads<T> frozenLoads(const BemStation& s, const T& Vx, const T& Vy, const
 }
 
 template <class T>
-SectionLoads<T> quasiSteadyLoads(const BemStation& s, const T& Vx, const T& Vy, const T& theta, double phi0,
-                                 double rho, const BemOptions& o, const T* radius, const T* weight,
-                                 double* slope) {
+SectionLoads<T> quasiSteadyLoads(const BemStation& s, const T& Vx, const T& Vy, const T& theta, double phi0, double rho,
+                                 const BemOptions& o, const T* radius, const T* weight, double* slope) {
   const T phi = inflowAngle<T>(s, Vx, Vy, theta, phi0, o, radius, slope);
   const Induction<T> ind = inductions<T>(s, phi, Vx, Vy, theta, o, radius);
   T a = ind.a, ap = ind.ap;
@@ -723,19 +721,18 @@ T inductionWeight(const T& tsr) {
   return 0.5 * (1.0 - cos((tsr - 1.0) * kPi));
 }
 
-#define WHIRL_BEM_INSTANTIATE(T)                                                                                 \
-  template Induction<T> inductions<T>(const BemStation&, const T&, const T&, const T&, const T&,               \
-                                      const BemOptions&, const T*);                                             \
-  template Induction<T> inductions<T>(const BemStation&, const T&, const T&, const T&, const BemOptions&);      \
-  template T bemResidual<T>(const BemStation&, const T&, const T&, const T&, const T&, const BemOptions&,       \
-                            const T*);                                                                          \
-  template T bemResidual<T>(const BemStation&, const T&, const T&, const T&, const BemOptions&);                \
-  template T inflowAngle<T>(const BemStation&, const T&, const T&, const T&, double, const BemOptions&,        \
-                            const T*, double*);                                                                 \
-  template SectionLoads<T> frozenLoads<T>(const BemStation&, const T&, const T&, const T&, double, double,     \
-                                          double, const BemOptions&);                                           \
-  template SectionLoads<T> quasiSteadyLoads<T>(const BemStation&, const T&, const T&, const T&, double, double, \
-                                               const BemOptions&, const T*, const T*, double*);               \
+#define WHIRL_BEM_INSTANTIATE(T)                                                                                     \
+  template Induction<T> inductions<T>(const BemStation&, const T&, const T&, const T&, const T&, const BemOptions&,  \
+                                      const T*);                                                                     \
+  template Induction<T> inductions<T>(const BemStation&, const T&, const T&, const T&, const BemOptions&);           \
+  template T bemResidual<T>(const BemStation&, const T&, const T&, const T&, const T&, const BemOptions&, const T*); \
+  template T bemResidual<T>(const BemStation&, const T&, const T&, const T&, const BemOptions&);                     \
+  template T inflowAngle<T>(const BemStation&, const T&, const T&, const T&, double, const BemOptions&, const T*,    \
+                            double*);                                                                                \
+  template SectionLoads<T> frozenLoads<T>(const BemStation&, const T&, const T&, const T&, double, double, double,   \
+                                          const BemOptions&);                                                        \
+  template SectionLoads<T> quasiSteadyLoads<T>(const BemStation&, const T&, const T&, const T&, double, double,      \
+                                               const BemOptions&, const T*, const T*, double*);                      \
   template T inductionWeight<T>(const T&);
 
 WHIRL_BEM_INSTANTIATE(double)

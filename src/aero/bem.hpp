@@ -43,15 +43,15 @@ inline constexpr double kZeroVelocity = 1e-3;
 
 /// One blade station (AeroDyn blade node).
 struct BemStation {
-  double r = 0;           ///< distance from the rotor axis (AeroDyn rLocal), used in the solidity [m]
-  double z = 0;           ///< distance along the blade from the hub centre (AeroDyn zLocal), used in the loss
-                          ///< constants; 0 → r [m]
-  double hub_radius = 0;  ///< AeroDyn zHub: distance from the hub centre to the blade root along the blade [m];
-                          ///< 0 → no hub loss (F_hub = 1)
-  double tip_radius = 0;  ///< AeroDyn zTip: zLocal of the last blade node [m]
-  int blades = 3;         ///< number of blades B
-  double chord = 0;       ///< [m]
-  double theta = 0;       ///< twist + pitch [rad] (used by the overloads that take no theta)
+  double r = 0;                  ///< distance from the rotor axis (AeroDyn rLocal), used in the solidity [m]
+  double z = 0;                  ///< distance along the blade from the hub centre (AeroDyn zLocal), used in the loss
+                                 ///< constants; 0 → r [m]
+  double hub_radius = 0;         ///< AeroDyn zHub: distance from the hub centre to the blade root along the blade [m];
+                                 ///< 0 → no hub loss (F_hub = 1)
+  double tip_radius = 0;         ///< AeroDyn zTip: zLocal of the last blade node [m]
+  int blades = 3;                ///< number of blades B
+  double chord = 0;              ///< [m]
+  double theta = 0;              ///< twist + pitch [rad] (used by the overloads that take no theta)
   const Polar* polar = nullptr;  ///< airfoil table (not owned)
   /// Kinematic viscosity [m²/s] for the Reynolds number chord·W/ν of a polar with tables on it: the
   /// undisturbed W = √(Vx² + Vy²) in the BEM residual, the one with the induction in the loads (as
@@ -61,12 +61,12 @@ struct BemStation {
 
 /// AeroDyn BEMT options (AeroDyn input keys in parentheses).
 struct BemOptions {
-  bool tip_loss = true;   ///< Prandtl tip loss (TipLoss)
-  bool hub_loss = true;   ///< Prandtl hub loss (HubLoss)
-  bool tan_ind = true;    ///< tangential induction (TanInd)
-  bool ai_drag = false;   ///< drag in the axial-induction equation (AIDrag)
-  bool ti_drag = false;   ///< drag in the tangential-induction equation (TIDrag)
-  int max_iter = 100;     ///< Brent iterations per bracket (MaxIter)
+  bool tip_loss = true;  ///< Prandtl tip loss (TipLoss)
+  bool hub_loss = true;  ///< Prandtl hub loss (HubLoss)
+  bool tan_ind = true;   ///< tangential induction (TanInd)
+  bool ai_drag = false;  ///< drag in the axial-induction equation (AIDrag)
+  bool ti_drag = false;  ///< drag in the tangential-induction equation (TIDrag)
+  int max_iter = 100;    ///< Brent iterations per bracket (MaxIter)
   /// Residual tolerance (IndToler): an end of a bracket with |R| below it is a solution, and the root finder
   /// stops when |R| falls below it. AeroDyn's double-precision default is 5e-10; the default here is tighter
   /// because linearization needs φ to near machine precision. [-]
@@ -98,17 +98,17 @@ struct Induction {
 
 /// Result of solveInflow at double precision.
 struct BemSolution {
-  double phi = 0;     ///< inflow angle solving R(φ) = 0 (AeroDyn's constraint state z%phi) [rad]
-  double a = 0;       ///< axial induction as AeroDyn outputs it: 0 if not valid, else limited to [−1, 1.5]
-  double ap = 0;      ///< tangential induction, 0 if not valid, else limited to [−1, 1]
-  double F = 1;       ///< loss factor at phi
+  double phi = 0;        ///< inflow angle solving R(φ) = 0 (AeroDyn's constraint state z%phi) [rad]
+  double a = 0;          ///< axial induction as AeroDyn outputs it: 0 if not valid, else limited to [−1, 1.5]
+  double ap = 0;         ///< tangential induction, 0 if not valid, else limited to [−1, 1]
+  double F = 1;          ///< loss factor at phi
   double k = 0, kp = 0;  ///< Ning's k, k' at phi
   double residual = 0;   ///< R(phi) (AeroDyn accepts a sign change with a valid solution as a root, so a
                          ///< discontinuity can pass; |residual| shows it)
-  double phi_out = 0;  ///< AeroDyn's output φ = atan2(Vx(1−a), Vy(1+a')) from the limited inductions (= phi
-                       ///< unless a limit is active) [rad]
-  double alpha = 0;    ///< angle of attack phi_out − θ [rad]
-  double W = 0;        ///< relative speed √((Vx(1−a))² + (Vy(1+a'))²) [m/s]
+  double phi_out = 0;    ///< AeroDyn's output φ = atan2(Vx(1−a), Vy(1+a')) from the limited inductions (= phi
+                         ///< unless a limit is active) [rad]
+  double alpha = 0;      ///< angle of attack phi_out − θ [rad]
+  double W = 0;          ///< relative speed √((Vx(1−a))² + (Vy(1+a'))²) [m/s]
   double cl = 0, cd = 0, cm = 0;  ///< polar at alpha
   double ax_ind_vel = 0;   ///< induced velocity along x, −Vx·a (what frozen wake holds, AeroDyn AxInd_op) [m/s]
   double tan_ind_vel = 0;  ///< induced velocity along y, Vy·a' (AeroDyn TnInd_op) [m/s]
@@ -121,31 +121,31 @@ struct BemSolution {
 /// The root of R(φ) as solveInflow finds it, with the inductions evaluated there, before AeroDyn's
 /// outputs (the flow angle and the polar at the limited inductions) are formed from it.
 struct InflowRoot {
-  double phi = 0;           ///< as BemSolution::phi [rad]
-  double a = 0, ap = 0;     ///< as BemSolution::a, ap (0 if not valid, else AeroDyn's limits)
-  Induction<double> at{};   ///< inductions(φ): a, a' before the limits, F, k, k', R, the polar at φ − θ
+  double phi = 0;          ///< as BemSolution::phi [rad]
+  double a = 0, ap = 0;    ///< as BemSolution::a, ap (0 if not valid, else AeroDyn's limits)
+  Induction<double> at{};  ///< inductions(φ): a, a' before the limits, F, k, k', R, the polar at φ − θ
   /// The root's own angle is AeroDyn's output angle: a valid root in the operating rotor's bracket
   /// (Vx, Vy > 0) whose inductions are within AeroDyn's limits. There tan φ = Vx(1−a)/(Vy(1+a')) is
   /// the equation R(φ) = 0 solves, so atan2 of the induced flow returns φ to within the root
   /// tolerance, and at.coef is the polar at the output angle of attack (no Reynolds tables).
   bool flow_at_root = false;
-  bool valid = true;        ///< as BemSolution::valid
-  int iterations = 0;       ///< as BemSolution::iterations
-  double slope = 0;         ///< as BemSolution::slope
-  int bracket = -1;         ///< as BemSolution::bracket
+  bool valid = true;   ///< as BemSolution::valid
+  int iterations = 0;  ///< as BemSolution::iterations
+  double slope = 0;    ///< as BemSolution::slope
+  int bracket = -1;    ///< as BemSolution::bracket
 };
 
 /// Loads per unit length at a station (see the file comment for signs).
 template <class T>
 struct SectionLoads {
-  T phi;        ///< inflow angle [rad]
-  T alpha;      ///< angle of attack [rad]
-  T W;          ///< relative speed [m/s]
+  T phi;         ///< inflow angle [rad]
+  T alpha;       ///< angle of attack [rad]
+  T W;           ///< relative speed [m/s]
   T cl, cd, cm;  ///< polar coefficients at alpha [-]
-  T cx, cy;     ///< Cx = Cl cos φ + Cd sin φ, Cy = Cl sin φ − Cd cos φ [-]
-  T fx;         ///< force along annulus x (normal to the rotor plane, downwind) [N/m]
-  T fy;         ///< force along annulus y (= −Cy q c; negative when driving the rotor) [N/m]
-  T mz;         ///< pitching moment about annulus z (radial) [N m/m]
+  T cx, cy;      ///< Cx = Cl cos φ + Cd sin φ, Cy = Cl sin φ − Cd cos φ [-]
+  T fx;          ///< force along annulus x (normal to the rotor plane, downwind) [N/m]
+  T fy;          ///< force along annulus y (= −Cy q c; negative when driving the rotor) [N/m]
+  T mz;          ///< pitching moment about annulus z (radial) [N m/m]
 };
 
 /// AeroDyn's loss constants B (zTip − z)/(2 z) and B (z − zHub)/(2 zHub) (BEMT_SetParameters).
@@ -221,9 +221,9 @@ SectionLoads<T> frozenLoads(const BemStation& s, const T& Vx, const T& Vy, const
 /// low tip-speed ratios (inductionWeight).
 /// `slope`: as for inflowAngle.
 template <class T>
-SectionLoads<T> quasiSteadyLoads(const BemStation& s, const T& Vx, const T& Vy, const T& theta, double phi0,
-                                 double rho, const BemOptions& o, const T* radius = nullptr,
-                                 const T* weight = nullptr, double* slope = nullptr);
+SectionLoads<T> quasiSteadyLoads(const BemStation& s, const T& Vx, const T& Vy, const T& theta, double phi0, double rho,
+                                 const BemOptions& o, const T* radius = nullptr, const T* weight = nullptr,
+                                 double* slope = nullptr);
 
 /// Loads of a solved element in double at its inductions a, a' (BemSolution::a, ap: AeroDyn's limited values,
 /// times the low-TSR weight where it applies): AeroDyn's output φ = atan2(Vx(1−a), Vy(1+a')), α, W and loads as

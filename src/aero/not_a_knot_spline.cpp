@@ -40,7 +40,8 @@ VecX NotAKnotSpline::weights(double x) const {
   while (i < n - 2 && x >= x_[i + 1]) ++i;
   const double h = x_[i + 1] - x_[i], a = (x_[i + 1] - x) / h, b = (x - x_[i]) / h;
   // s(x) = a y_i + b y_{i+1} + ((a³ − a) M_i + (b³ − b) M_{i+1}) h²/6.
-  VecX w = ((a * a * a - a) * h * h / 6) * G_.row(i).transpose() + ((b * b * b - b) * h * h / 6) * G_.row(i + 1).transpose();
+  VecX w = ((a * a * a - a) * h * h / 6) * G_.row(i).transpose() +
+           ((b * b * b - b) * h * h / 6) * G_.row(i + 1).transpose();
   w(i) += a;
   w(i + 1) += b;
   return w;

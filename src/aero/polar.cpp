@@ -5,8 +5,8 @@
 #include <numbers>
 #include <sstream>
 
-#include "src/model/scalar.hpp"
 #include "src/model/error.hpp"
+#include "src/model/scalar.hpp"
 
 namespace whirl::aero {
 
@@ -123,7 +123,9 @@ Coefficients<T> evaluate(const Polar& p, const T& alpha) {
   if (aw <= p.alpha.front()) return {T(p.cl.front()), T(p.cd.front()), T(p.cm.front())};
   if (aw >= p.alpha.back()) return {T(p.cl.back()), T(p.cd.back()), T(p.cm.back())};
   // LocateBin: alpha[i] <= aw < alpha[i+1].
-  const std::size_t i = static_cast<std::size_t>(std::upper_bound(p.alpha.begin(), p.alpha.end(), aw) - p.alpha.begin()) - 1;
+  const std::size_t i = static_cast<std::size_t>(std::upper_bound(p.alpha.begin(), p.alpha.end(), aw) -
+                                                 p.alpha.begin()) -
+                        1;
   const T x = alpha + ((aw - a0) - p.alpha[i]);  // wrapped alpha minus the knot; the shift is a constant
   return {poly(p.ccl[i], x), poly(p.ccd[i], x), poly(p.ccm[i], x)};
 }

@@ -103,8 +103,7 @@ SlopeScan scanSlopes(const Rows& r, const std::vector<double>& cn, double limit)
 }
 
 /// alphaUpper (walk up from the minimum-drag segment) and alphaLower (walk down) as AeroDyn.
-void linearRegion(const UaGiven& g, const SlopeScan& s, std::size_t i_cd_min, double alpha_cd_min,
-                  UaConstants& c) {
+void linearRegion(const UaGiven& g, const SlopeScan& s, std::size_t i_cd_min, double alpha_cd_min, UaConstants& c) {
   const std::size_t ns = s.mid.size();
   const double slope_at_cd_min = interpStp(alpha_cd_min, s.mid, s.cn_slope);
   constexpr double kThreshold = 0.9;
@@ -150,8 +149,7 @@ void linearRegion(const UaGiven& g, const SlopeScan& s, std::size_t i_cd_min, do
 }
 
 /// C_nalpha, C_lalpha, alpha0 by least squares on the rows inside the linear region less a margin.
-void liftSlopes(const UaGiven& g, const Rows& r, const std::vector<double>& cn, const SlopeScan& s,
-                UaConstants& c) {
+void liftSlopes(const UaGiven& g, const Rows& r, const std::vector<double>& cn, const SlopeScan& s, UaConstants& c) {
   if (g.c_nalpha && g.c_lalpha && g.alpha0) {
     c.c_nalpha = *g.c_nalpha;
     c.c_lalpha = *g.c_lalpha;

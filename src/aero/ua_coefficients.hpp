@@ -57,7 +57,7 @@ struct UaConstants {
   double A1 = 0.3, A2 = 0.7, A5 = 1;                    ///< indicial amplitudes [-]
   double S1 = 0, S2 = 0, S3 = 0, S4 = 0, St_sh = 0.19;  ///< [-]
   double Cd0 = 0, Cm0 = 0;                              ///< drag at minimum, moment at alpha0 [-]
-  double k0 = 0, k1 = 0, k2 = 0, k3 = 0, k1_hat = 0, x_cp_bar = 0.2;  ///< [-]
+  double k0 = 0, k1 = 0, k2 = 0, k3 = 0, k1_hat = 0, x_cp_bar = 0.2;           ///< [-]
   double ua_cutout = 0.785398163397448, ua_cutout_delta = 0.0872664625997165;  ///< 45°, 5° [rad]
   double ua_cutout_blend = 0.698131700797732;  ///< max(0, |UACutout| − |UACutout_delta|) [rad]
   double filt_cutoff = 0.5;                    ///< [-]

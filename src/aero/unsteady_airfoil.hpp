@@ -37,10 +37,10 @@ namespace whirl::aero {
 /// The section inputs of one element (AeroDyn's UA_InputType).
 template <class T>
 struct UaInput {
-  T alpha_34;    ///< angle of attack at 3/4 chord [rad] (AeroDyn Get_Alpha34)
-  T alpha_ac;    ///< angle of attack at the aerodynamic centre [rad] (u%alpha: cut-out blending only)
-  T u;           ///< relative speed at the aerodynamic centre [m/s]
-  T omega;       ///< pitch rate of the section [rad/s] (positive nose up)
+  T alpha_34;  ///< angle of attack at 3/4 chord [rad] (AeroDyn Get_Alpha34)
+  T alpha_ac;  ///< angle of attack at the aerodynamic centre [rad] (u%alpha: cut-out blending only)
+  T u;         ///< relative speed at the aerodynamic centre [m/s]
+  T omega;     ///< pitch rate of the section [rad/s] (positive nose up)
 };
 
 /// The four HGM states [x1, x2, x3, x4].

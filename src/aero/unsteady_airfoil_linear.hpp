@@ -12,10 +12,10 @@
 namespace whirl::aero {
 
 struct UaElementLinear {
-  Eigen::Matrix4d A;                 ///< ∂ẋ/∂x [1/s]
-  Eigen::Matrix<double, 4, 3> B;     ///< ∂ẋ/∂[α34 (rad), U (m/s), ω (rad/s)]
-  Eigen::Matrix<double, 3, 4> C;     ///< ∂[Cl, Cd, Cm]/∂x
-  Eigen::Matrix<double, 3, 3> D;     ///< ∂[Cl, Cd, Cm]/∂[α34, U, ω] at fixed states
+  Eigen::Matrix4d A;              ///< ∂ẋ/∂x [1/s]
+  Eigen::Matrix<double, 4, 3> B;  ///< ∂ẋ/∂[α34 (rad), U (m/s), ω (rad/s)]
+  Eigen::Matrix<double, 3, 4> C;  ///< ∂[Cl, Cd, Cm]/∂x
+  Eigen::Matrix<double, 3, 3> D;  ///< ∂[Cl, Cd, Cm]/∂[α34, U, ω] at fixed states
   /// The static (s → 0) gain D − C A⁻¹ B: the loads' response to slow changes of the inputs, the
   /// quasi-steady derivative of the model's steady loads (UA_Mod 4: A is Hurwitz, all its time constants
   /// positive; UA_Mod 6 leaves x1..x3 out and A singular: use its x4 row and column alone).

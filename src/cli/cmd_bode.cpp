@@ -13,13 +13,13 @@
 #include "linearize/rosco_linear.hpp"
 #include "linearize/trim.hpp"
 #include "modal/closed_loop_modes.hpp"
-#include "src/io/discon_input.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/common.hpp"
+#include "src/io/discon_input.hpp"
+#include "src/model/error.hpp"
 #include "src/writers/bode_table.hpp"
 #include "src/writers/gnuplot.hpp"
 #include "src/writers/output_set.hpp"
-#include "src/model/error.hpp"
 
 namespace whirl::cli {
 namespace {
@@ -48,9 +48,10 @@ void run(const BodeOptions& opt) {
   std::string where;
   // Trimmed with the deck's ROSCO controller when it has one (docs/user/controller.md).
   if (opt.closed_loop && !opt.wind) throw InputError("bode: --closed-loop needs --wind");
-  const std::optional<RoscoController> controller =
-      opt.closed_loop ? closedLoopController(m, opt.model) : m.deck_controller;
-  if (opt.without_speed_filter && !opt.closed_loop) throw InputError("bode: --without-speed-filter goes with --closed-loop");
+  const std::optional<RoscoController> controller = opt.closed_loop ? closedLoopController(m, opt.model)
+                                                                    : m.deck_controller;
+  if (opt.without_speed_filter && !opt.closed_loop)
+    throw InputError("bode: --without-speed-filter goes with --closed-loop");
   std::optional<SteadyState> steady;
   if (opt.wind) {
     if (opt.model.rpm) throw InputError("bode: give --wind (trimmed) or --rpm, not both");
@@ -59,8 +60,8 @@ void run(const BodeOptions& opt) {
     steady = trimAtWindSpeed(m, *opt.wind, trim);
     c = steady->condition;
     char text[96];
-    std::snprintf(text, sizeof text, "%g m/s, %.3f rpm, pitch %.2f deg", *opt.wind, c.rotor_speed * 30 / std::numbers::pi,
-                  c.collective_pitch.value_or(0) * 180 / std::numbers::pi);
+    std::snprintf(text, sizeof text, "%g m/s, %.3f rpm, pitch %.2f deg", *opt.wind,
+                  c.rotor_speed * 30 / std::numbers::pi, c.collective_pitch.value_or(0) * 180 / std::numbers::pi);
     where = text;
   }
   ExportPoint p;
@@ -82,7 +83,8 @@ void run(const BodeOptions& opt) {
   const int pairs = static_cast<int>(p.model.y.size() * p.model.u.size());
   OutputSet files(dir);  // table, script and images together
   files.write("bode.csv", bodeCsv(p.model, f, G));
-  files.write("bode.gp", bodeGnuplotScript("Frequency response" + (where.empty() ? std::string() : ": " + where), pairs));
+  files.write("bode.gp",
+              bodeGnuplotScript("Frequency response" + (where.empty() ? std::string() : ": " + where), pairs));
   if (!opt.no_plot) renderGnuplot(files.stagingFolder(), "gnuplot", "bode", dir);
   files.commit();
   const std::vector<std::string> written = files.paths();

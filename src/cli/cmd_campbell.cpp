@@ -1,23 +1,23 @@
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 
+#include "linearize/sweep.hpp"
 #include "linearize/trim.hpp"
-#include "src/writers/campbell_output.hpp"
 #include "modal/campbell_diagram.hpp"
 #include "modal/closed_loop_campbell.hpp"
-#include "src/writers/closed_loop_tables.hpp"
-#include "linearize/sweep.hpp"
 #include "modal/tracking.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/common.hpp"
-#include "src/writers/output_set.hpp"
 #include "src/io/discon_input.hpp"
 #include "src/io/schedule.hpp"
 #include "src/model/error.hpp"
 #include "src/parallel/session.hpp"
+#include "src/writers/campbell_output.hpp"
+#include "src/writers/closed_loop_tables.hpp"
+#include "src/writers/output_set.hpp"
 
 namespace whirl::cli {
 namespace {
@@ -40,7 +40,8 @@ struct CampbellOptions {
 /// the roots and the loop margins (src/writers/closed_loop_tables.hpp).
 void runClosedLoop(const CampbellOptions& opt) {
   if (opt.wind_range.empty())
-    throw InputError("campbell: --closed-loop needs --wind START:STEP:STOP (the controller's steady states along the wind)");
+    throw InputError(
+        "campbell: --closed-loop needs --wind START:STEP:STOP (the controller's steady states along the wind)");
   if (!opt.formats.empty() || !opt.schedule.empty() || !opt.rpm_range.empty())
     throw InputError("campbell: --closed-loop goes with --wind alone, without --rpm, --schedule or --format");
   const Model m = loadModel(opt.model);
@@ -72,25 +73,27 @@ void runClosedLoop(const CampbellOptions& opt) {
   plot.render = !opt.no_plot;
   plot.first_order_lines = true;
   plot.html = opt.html;
-  plot.summary = {{"case", opt.model.case_path}, {"sweep", "--wind " + opt.wind_range + " --closed-loop"},
-                  {"controller", controller->file}, {"azimuths", std::to_string(opt.azimuths)},
+  plot.summary = {{"case", opt.model.case_path},
+                  {"sweep", "--wind " + opt.wind_range + " --closed-loop"},
+                  {"controller", controller->file},
+                  {"azimuths", std::to_string(opt.azimuths)},
                   {"operating points", std::to_string(c.points.size())}};
   const auto files = writeClosedLoopCampbell(c, dir, plot);
   std::printf("wrote");
   for (const auto& f : files) std::printf(" %s", f.c_str());
   int stable = 0;
   for (const ClosedLoopPoint& p : c.points) stable += p.stable ? 1 : 0;
-  std::printf("\n%zu operating points (%d with a stable closed loop), %zu closed-loop lines, %d azimuths each, %.2f s\n",
-              c.points.size(), stable, c.closed.lines.size(), opt.azimuths,
-              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  std::printf(
+      "\n%zu operating points (%d with a stable closed loop), %zu closed-loop lines, %d azimuths each, %.2f s\n",
+      c.points.size(), stable, c.closed.lines.size(), opt.azimuths,
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
 }
 
 void run(const CampbellOptions& opt) {
   if (opt.closed_loop) return runClosedLoop(opt);
   if (opt.without_speed_filter) throw InputError("campbell: --without-speed-filter goes with --closed-loop");
   if (opt.rpm_range.empty() + opt.schedule.empty() + opt.wind_range.empty() != 2)
-    throw InputError(
-        "campbell: give exactly one of --rpm START:STEP:STOP, --schedule FILE and --wind START:STEP:STOP");
+    throw InputError("campbell: give exactly one of --rpm START:STEP:STOP, --schedule FILE and --wind START:STEP:STOP");
   const Model m = loadModel(opt.model);
   // Along the wind: trimmed with the deck's ROSCO controller when it has one (docs/user/controller.md).
   auto trimmed = [&] {
@@ -121,7 +124,8 @@ void run(const CampbellOptions& opt) {
   for (const LineInstability& u : lineInstabilities(d)) {
     const CampbellPoint& p = d.points[u.at];
     const std::string where = p.wind_speed ? fmt::format("{:g} m/s", *p.wind_speed) : fmt::format("{:g} rpm", p.rpm);
-    std::fprintf(stderr, "whirl: warning: %s is unstable (negative damping) at %d of %zu points; lowest %.3g %% at %s\n",
+    std::fprintf(stderr,
+                 "whirl: warning: %s is unstable (negative damping) at %d of %zu points; lowest %.3g %% at %s\n",
                  u.name.c_str(), u.points, d.points.size(), 100 * u.lowest_damping, where.c_str());
   }
 
@@ -133,9 +137,9 @@ void run(const CampbellOptions& opt) {
   plot.formats = opt.formats;
   plot.html = opt.html;
   plot.summary = {{"case", opt.model.case_path},
-                  {"sweep", !opt.rpm_range.empty()    ? "--rpm " + opt.rpm_range
-                            : !opt.schedule.empty()   ? "--schedule " + opt.schedule
-                                                      : "--wind " + opt.wind_range},
+                  {"sweep", !opt.rpm_range.empty()  ? "--rpm " + opt.rpm_range
+                            : !opt.schedule.empty() ? "--schedule " + opt.schedule
+                                                    : "--wind " + opt.wind_range},
                   {"azimuths", std::to_string(opt.azimuths)},
                   {"operating points", std::to_string(d.points.size())},
                   {"lines", std::to_string(d.lines.size())}};
@@ -166,7 +170,8 @@ void addCampbellCommand(CLI::App& app) {
                   "aerodynamics and a generator torque law)");
   addMultibladeAzimuths(*cmd, opt->azimuths);
   cmd->add_option("--out", opt->out, "output folder (default reports/<case name>)");
-  cmd->add_option("--tracking", opt->tracking, "mode-tracking overrides file (rename, assign; docs/theory/mode-tracking.md)");
+  cmd->add_option("--tracking", opt->tracking,
+                  "mode-tracking overrides file (rename, assign; docs/theory/mode-tracking.md)");
   cmd->add_option("--versus", opt->versus, "x axis: rpm, wind or auto (wind with --schedule or --wind)")
       ->check(CLI::IsMember({"rpm", "wind", "auto"}));
   cmd->add_option("--max-freq", opt->max_freq, "top of the frequency axis [Hz] (default: automatic)");
@@ -184,10 +189,12 @@ void addCampbellCommand(CLI::App& app) {
                 "with --wind: the deck's ROSCO controller in the loop (its states beside the structure's); writes the "
                 "closed loop's Campbell files, open_loop_campbell.csv, closed_loop_modes.csv, margins.csv and "
                 "closed_loop.gp/.png");
-  cmd->add_flag("--without-speed-filter", opt->without_speed_filter,
-                "with --closed-loop: leave the controller's generator-speed low pass out (as ROSCO's own linear tools do)");
-  cmd->add_flag("--html", opt->html,
-                "also write campbell.html: the interactive report (diagram, mode shapes, tables), one file, no network");
+  cmd->add_flag(
+      "--without-speed-filter", opt->without_speed_filter,
+      "with --closed-loop: leave the controller's generator-speed low pass out (as ROSCO's own linear tools do)");
+  cmd->add_flag(
+      "--html", opt->html,
+      "also write campbell.html: the interactive report (diagram, mode shapes, tables), one file, no network");
   cmd->callback([opt]() { runWithCaseSource(opt->model.case_path, [&] { run(*opt); }); });
 }
 

@@ -43,9 +43,10 @@ void run(const CompareOptions& opt) {
 
 void addCompareCommand(CLI::App& app) {
   auto opt = std::make_shared<CompareOptions>();
-  CLI::App* cmd = app.add_subcommand(
-      "compare", "compare modes (CSV of `whirl modes`, or campbell.csv with --rpm) with a reference table; "
-                 "exit code 1 beyond the tolerance");
+  CLI::App* cmd =
+      app.add_subcommand("compare",
+                         "compare modes (CSV of `whirl modes`, or campbell.csv with --rpm) with a reference table; "
+                         "exit code 1 beyond the tolerance");
   cmd->add_option("RESULT", opt->result, "whirl modes CSV (index,name,freq_hz,…) or campbell.csv")->required();
   cmd->add_option("REF", opt->reference,
                   "reference CSV: mode,freq_hz[,whirl_mode] — whirl_mode names the whirl mode, a|b compares the "

@@ -1,5 +1,5 @@
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
 #include <numbers>
@@ -7,18 +7,18 @@
 
 #include "linearize/export_sweep.hpp"
 #include "linearize/rosco_linear.hpp"
-#include "linearize/sweep.hpp"
-#include "modal/closed_loop_modes.hpp"
 #include "linearize/state_space.hpp"
+#include "linearize/sweep.hpp"
 #include "linearize/trim.hpp"
+#include "modal/closed_loop_modes.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/common.hpp"
 #include "src/io/discon_input.hpp"
 #include "src/io/schedule.hpp"
-#include "src/writers/output_set.hpp"
-#include "src/writers/state_space_files.hpp"
 #include "src/model/error.hpp"
 #include "src/parallel/session.hpp"
+#include "src/writers/output_set.hpp"
+#include "src/writers/state_space_files.hpp"
 
 namespace whirl::cli {
 namespace {
@@ -37,9 +37,11 @@ struct CliOptions {
 std::vector<ExportPoint> closedLoopPoints(const Model& base, const CliOptions& opt) {
   if (opt.wind_range.empty()) throw InputError("export: --closed-loop needs --wind START:STEP:STOP");
   if (opt.format == "lin")
-    throw InputError("export: --closed-loop writes --format mat or json (a .lin file holds OpenFAST's open-loop plant)");
+    throw InputError(
+        "export: --closed-loop writes --format mat or json (a .lin file holds OpenFAST's open-loop plant)");
   if (!opt.inputs.empty() || !opt.outputs.empty())
-    throw InputError("export: --closed-loop keeps every input and output (--inputs/--outputs select the open-loop plant's)");
+    throw InputError(
+        "export: --closed-loop keeps every input and output (--inputs/--outputs select the open-loop plant's)");
   const std::optional<RoscoController> controller = closedLoopController(base, opt.model);
   TrimOptions trim;
   trim.controller = &*controller;
@@ -58,9 +60,10 @@ std::vector<ExportPoint> closedLoopPoints(const Model& base, const CliOptions& o
     for (const StateSpaceVariable& v : controllerStateSpace(k).x) states.push_back(v.name);
     if (points.empty()) first_region = s.region, first_states = states;
     if (states != first_states)
-      throw InputError(fmt::format("export: --closed-loop: the controller's states differ between {:g} m/s (region {}) "
-                                   "and {:g} m/s (region {}): export each region's wind speeds separately",
-                                   *points.front().wind_speed, first_region, *s.condition.wind_speed, s.region));
+      throw InputError(
+          fmt::format("export: --closed-loop: the controller's states differ between {:g} m/s (region {}) "
+                      "and {:g} m/s (region {}): export each region's wind speeds separately",
+                      *points.front().wind_speed, first_region, *s.condition.wind_speed, s.region));
     ExportPoint e;
     e.rpm = s.condition.rotor_speed * 30 / std::numbers::pi;
     e.wind_speed = s.condition.wind_speed;
@@ -93,7 +96,8 @@ std::string scheduleContext(const std::string& schedule, int k) {
 }
 
 void run(const CliOptions& opt) {
-  if (opt.without_speed_filter && !opt.closed_loop) throw InputError("export: --without-speed-filter goes with --closed-loop");
+  if (opt.without_speed_filter && !opt.closed_loop)
+    throw InputError("export: --without-speed-filter goes with --closed-loop");
   if (bool(opt.model.rpm) + !opt.schedule.empty() + !opt.wind_range.empty() > 1)
     throw InputError("export: give at most one of --rpm, --schedule and --wind");
   const std::vector<std::string> in = splitList(opt.inputs), out = splitList(opt.outputs);
@@ -134,8 +138,7 @@ void run(const CliOptions& opt) {
   SweepOptions sweep;
   sweep.azimuths = opt.azimuths;
   sweep.progress = sweepProgress("export");
-  if (!opt.schedule.empty())
-    sweep.context = [&](int k) { return scheduleContext(opt.schedule, k); };
+  if (!opt.schedule.empty()) sweep.context = [&](int k) { return scheduleContext(opt.schedule, k); };
   sweep.check_point = [&opt](const Model& m, const std::vector<OperatingPoint>& ops, const SweepPoint& sp) {
     const bool labelled = !opt.schedule.empty() || !opt.wind_range.empty();
     return checkSolvedPoints(opt.model, m, ops, labelled ? fmt::format("{:g} rpm", sp.rpm) : "");
@@ -150,13 +153,14 @@ void run(const CliOptions& opt) {
   files.commit();
   const StateSpaceModel& m = e.points.front().model;
   const std::string mbc =
-      opt.closed_loop ? " (closed loop: the multiblade-averaged plant without its azimuth, then the controller's states)"
-      : m.multiblade ? " (multiblade average over " + std::to_string(e.points.front().azimuths.size()) + " azimuths)" : "";
+      opt.closed_loop
+          ? " (closed loop: the multiblade-averaged plant without its azimuth, then the controller's states)"
+      : m.multiblade ? " (multiblade average over " + std::to_string(e.points.front().azimuths.size()) + " azimuths)"
+                     : "";
   const std::string ranks = parallel::size() > 1 ? ", on " + std::to_string(parallel::size()) + " MPI ranks" : "";
   std::printf("wrote %zu file%s in %s: %zu operating point%s, %zu states, %zu inputs, %zu outputs%s%s\n",
               files.paths().size(), files.paths().size() == 1 ? "" : "s", dir.c_str(), e.points.size(),
-              e.points.size() == 1 ? "" : "s", m.x.size(), m.u.size(), m.y.size(), mbc.c_str(),
-              ranks.c_str());
+              e.points.size() == 1 ? "" : "s", m.x.size(), m.u.size(), m.y.size(), mbc.c_str(), ranks.c_str());
 }
 
 }  // namespace
@@ -164,15 +168,18 @@ void run(const CliOptions& opt) {
 void addExportCommand(CLI::App& app) {
   auto opt = std::make_shared<CliOptions>();
   CLI::App* cmd = app.add_subcommand(
-      "export", "state-space model(s) A, B, C, D with named inputs and outputs for controller design: MATLAB .mat, "
-                "OpenFAST-style .lin (one per azimuth) or JSON");
+      "export",
+      "state-space model(s) A, B, C, D with named inputs and outputs for controller design: MATLAB .mat, "
+      "OpenFAST-style .lin (one per azimuth) or JSON");
   addModelOptions(*cmd, opt->model);
   cmd->add_option("--schedule", opt->schedule, "operating schedule CSV (wind speed, RotSpeed, BldPitch columns)");
   cmd->add_option("--wind", opt->wind_range,
                   "wind speeds START:STEP:STOP [m/s], each trimmed as `whirl steady` (aerodynamic models with a "
                   "generator torque law)");
   addMultibladeAzimuths(*cmd, opt->azimuths);
-  cmd->add_option("--format", opt->format, "mat, lin or json")->required()->check(CLI::IsMember({"mat", "lin", "json"}));
+  cmd->add_option("--format", opt->format, "mat, lin or json")
+      ->required()
+      ->check(CLI::IsMember({"mat", "lin", "json"}));
   cmd->add_option("--out", opt->out, "output folder (default reports/<case name>)");
   cmd->add_option("--inputs", opt->inputs, "keep these inputs, comma-separated, in this order (default: all)");
   cmd->add_option("--outputs", opt->outputs, "keep these outputs, comma-separated, in this order (default: all)");

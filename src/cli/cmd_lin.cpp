@@ -86,8 +86,9 @@ void run(const LinOptions& opt) {
 void addLinCommand(CLI::App& app) {
   auto opt = std::make_shared<LinOptions>();
   CLI::App* cmd = app.add_subcommand(
-      "lin", "modes from OpenFAST .lin files: grouped by operating point, multiblade transform over each group's "
-             "azimuths, named; one operating point prints like `modes`, several write a Campbell diagram");
+      "lin",
+      "modes from OpenFAST .lin files: grouped by operating point, multiblade transform over each group's "
+      "azimuths, named; one operating point prints like `modes`, several write a Campbell diagram");
   // No CLI::ExistingFile: a missing file is the reader's "FILE: cannot open file" (exit 1), as elsewhere.
   cmd->add_option("FILE", opt->files, "OpenFAST .lin files")->required();
   cmd->add_option("--format", opt->format,

@@ -5,8 +5,8 @@
 #include "linearize/linearize.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/common.hpp"
-#include "src/writers/output_set.hpp"
 #include "src/io/csv.hpp"
+#include "src/writers/output_set.hpp"
 
 namespace whirl::cli {
 namespace {
@@ -63,7 +63,8 @@ void run(const LinearizeOptions& opt) {
   for (int i = 0; i < m.ninput(); ++i) j["operating_point"]["u"][m.inputs[i].name] = op.u(i);
   j["operating_point"]["first_order"] = nlohmann::json::object();
   for (size_t k = 0; k < lin.first_order_names.size(); ++k)
-    j["operating_point"]["first_order"][lin.first_order_names[k]] = lin.first_order_values(static_cast<Eigen::Index>(k));
+    j["operating_point"]["first_order"][lin.first_order_names[k]] = lin.first_order_values(
+        static_cast<Eigen::Index>(k));
   j["equilibrium"]["solved_dofs"] = nlohmann::json::array();
   for (int i : op.solved) j["equilibrium"]["solved_dofs"].push_back(m.dofs[i].name);
   j["equilibrium"]["held_dofs"] = nlohmann::json::array();  // unrestrained: held at their value
@@ -78,9 +79,10 @@ void run(const LinearizeOptions& opt) {
   j["files"] = {"M.csv", "C.csv", "K.csv", "Q.csv", "A.csv", "B.csv"};
   files.write("linearization.json", j.dump(2) + "\n");
   files.commit();
-  std::printf("wrote %s/{M,C,K,Q,A,B}.csv and linearization.json (%d DOFs, %d inputs; equilibrium in %d "
-              "iterations, residual %.3g)\n",
-              dir.c_str(), static_cast<int>(lin.dofs.size()), m.ninput(), op.iterations, op.residual_norm);
+  std::printf(
+      "wrote %s/{M,C,K,Q,A,B}.csv and linearization.json (%d DOFs, %d inputs; equilibrium in %d "
+      "iterations, residual %.3g)\n",
+      dir.c_str(), static_cast<int>(lin.dofs.size()), m.ninput(), op.iterations, op.residual_norm);
 }
 
 }  // namespace

@@ -46,8 +46,9 @@ void run(const ModesOptions& opt) {
   const OperatingPoint start = startPoint(m, opt.model);
   if (rotorPath(m, az)) {
     if (opt.solver == "sparse")
-      throw InputError("--solver sparse: a rotor's multiblade model is a small averaged state matrix, solved dense; "
-                       "use --solver dense or auto");
+      throw InputError(
+          "--solver sparse: a rotor's multiblade model is a small averaged state matrix, solved dense; "
+          "use --solver dense or auto");
     // A rotor: periodic operating point over the revolution, multiblade coordinates.
     PeriodicOptions p;
     p.azimuths = opt.azimuths;
@@ -93,7 +94,7 @@ void run(const ModesOptions& opt) {
   so.distributed = true;
   SparseModesInfo info;
   std::vector<Mode> modes = computeModesSparse(lin.M.sparseView(), lin.C.sparseView(), lin.K.sparseView(),
-                                                     lin.dof_names, std::min(opt.nmodes, n), so, &info);
+                                               lin.dof_names, std::min(opt.nmodes, n), so, &info);
   if (parallel::rank() != 0) return;
   addModeMotions(m, op, lin, modes);
   std::fprintf(stderr, "modes: %s, target %.6g, %d iterations, %zu modes of %d coordinates\n", info.method.c_str(),
@@ -107,14 +108,16 @@ void run(const ModesOptions& opt) {
 void addModesCommand(CLI::App& app) {
   auto opt = std::make_shared<ModesOptions>();
   CLI::App* cmd = app.add_subcommand(
-      "modes", "solve the operating point and print the modes (rotors with 3+ blades: multiblade coordinates, "
-               "averaged over the azimuths)");
+      "modes",
+      "solve the operating point and print the modes (rotors with 3+ blades: multiblade coordinates, "
+      "averaged over the azimuths)");
   addModelOptions(*cmd, opt->model);
   cmd->add_option("--format", opt->format, "table, csv or json")->check(CLI::IsMember({"table", "csv", "json"}));
   addMultibladeAzimuths(*cmd, opt->azimuths);
   cmd->add_option("--solver", opt->solver,
                   "eigensolver: dense (LAPACK, all modes), sparse (SLEPc, the lowest --nmodes, each with its "
-                  "residual) or auto (sparse from " + std::to_string(kSparseSolverThreshold) + " coordinates)")
+                  "residual) or auto (sparse from " +
+                      std::to_string(kSparseSolverThreshold) + " coordinates)")
       ->check(CLI::IsMember({"auto", "dense", "sparse"}));
   cmd->add_option("--nmodes", opt->nmodes, "modes computed by the sparse solver (lowest frequencies)")
       ->check(CLI::Range(1, 100000));

@@ -35,11 +35,14 @@ void run(const ReportOptions& opt) {
   bool all_wind = true;
   if (j.is_object() && j.contains("points") && j["points"].is_array()) {
     points = j["points"].size();
-    for (const auto& p : j["points"]) all_wind = all_wind && p.is_object() && p.contains("wind_speed") && p["wind_speed"].is_number();
+    for (const auto& p : j["points"])
+      all_wind = all_wind && p.is_object() && p.contains("wind_speed") && p["wind_speed"].is_number();
   }
   if (j.is_object() && j.contains("lines") && j["lines"].is_array()) lines = j["lines"].size();
   r.versus_wind_speed = opt.versus == "wind" || (opt.versus == "auto" && all_wind && points > 0);
-  r.summary = {{"result folder", opt.dir}, {"operating points", std::to_string(points)}, {"lines", std::to_string(lines)}};
+  r.summary = {{"result folder", opt.dir},
+               {"operating points", std::to_string(points)},
+               {"lines", std::to_string(lines)}};
   r.steady_csv = steadyCsvIn(opt.dir);
   const std::string page = campbellHtml(text.str(), r, path);
   prepareOutputFolder(opt.dir);
@@ -54,8 +57,9 @@ void run(const ReportOptions& opt) {
 void addReportCommand(CLI::App& app) {
   auto opt = std::make_shared<ReportOptions>();
   CLI::App* cmd = app.add_subcommand(
-      "report", "interactive Campbell report of a whirl campbell result folder: writes RESULT_DIR/campbell.html "
-                "(diagram, mode shapes, tables; one file, opens without a network)");
+      "report",
+      "interactive Campbell report of a whirl campbell result folder: writes RESULT_DIR/campbell.html "
+      "(diagram, mode shapes, tables; one file, opens without a network)");
   cmd->add_option("RESULT_DIR", opt->dir, "folder with the campbell_modes.json of whirl campbell")->required();
   cmd->add_option("--versus", opt->versus, "x axis: rpm, wind or auto (wind when every point has a wind speed)")
       ->check(CLI::IsMember({"rpm", "wind", "auto"}));

@@ -10,9 +10,9 @@
 #include "src/cli/common.hpp"
 #include "src/io/case_file.hpp"
 #include "src/io/csv.hpp"
-#include "src/writers/output_set.hpp"
-#include "src/turbine/elastodyn_model.hpp"
 #include "src/model/error.hpp"
+#include "src/turbine/elastodyn_model.hpp"
+#include "src/writers/output_set.hpp"
 
 namespace whirl::cli {
 namespace {
@@ -28,8 +28,9 @@ std::vector<fem::FlexibleBeam> loadBeams(const ModelOptions& opt) {
   if (isYamlCase(opt.case_path)) {
     // A case's rotor speed for the FE modes is the `rotor_speed_rpm` of its `shapes: {from: fem}`.
     if (opt.rpm)
-      throw InputError("--rpm: for a YAML case set the beam's FE rotor speed with "
-                       "--set bodies.<beam>.shapes.rotor_speed_rpm=R");
+      throw InputError(
+          "--rpm: for a YAML case set the beam's FE rotor speed with "
+          "--set bodies.<beam>.shapes.rotor_speed_rpm=R");
     std::vector<CaseOverride> overrides;
     for (const auto& s : opt.sets) overrides.push_back(parseOverride(s));
     readCase(opt.case_path, overrides, &beams, opt.allow_outside_files);
@@ -40,7 +41,8 @@ std::vector<fem::FlexibleBeam> loadBeams(const ModelOptions& opt) {
   return beams;
 }
 
-const char* kCsvHeader = "body,shape,direction,mode,freq_hz,a2,a3,a4,a5,a6,fit_rms,fit_max_deviation,mac,max_deviation\n";
+const char* kCsvHeader =
+    "body,shape,direction,mode,freq_hz,a2,a3,a4,a5,a6,fit_rms,fit_max_deviation,mac,max_deviation\n";
 
 std::string csvRows(const std::vector<fem::ShapeComparison>& rows) {
   std::string s = kCsvHeader;
@@ -76,10 +78,10 @@ std::string table(const std::vector<fem::ShapeComparison>& rows) {
   std::string s = fmt::format("{:<10} {:<12} {:>3} {:>10}  {:>9} {:>9} {:>9} {:>9} {:>9}  {:>8} {:>9} {:>8}\n", "body",
                               "shape", "dir", "FE Hz", "a2", "a3", "a4", "a5", "a6", "fit rms", "MAC", "max dev");
   for (const auto& r : rows) {
-    s += fmt::format("{:<10} {:<12} {:>3} {:>10.5f}  {:>9.4f} {:>9.4f} {:>9.4f} {:>9.4f} {:>9.4f}  {:>8.1e} {:>9.6f} {:>8.4f}\n",
-                     r.body, r.shape, std::string(1, r.direction) + std::to_string(r.index), r.freq_hz, r.fit.coeffs[0],
-                     r.fit.coeffs[1], r.fit.coeffs[2], r.fit.coeffs[3], r.fit.coeffs[4], r.fit.rms, r.mac,
-                     r.max_deviation);
+    s += fmt::format(
+        "{:<10} {:<12} {:>3} {:>10.5f}  {:>9.4f} {:>9.4f} {:>9.4f} {:>9.4f} {:>9.4f}  {:>8.1e} {:>9.6f} {:>8.4f}\n",
+        r.body, r.shape, std::string(1, r.direction) + std::to_string(r.index), r.freq_hz, r.fit.coeffs[0],
+        r.fit.coeffs[1], r.fit.coeffs[2], r.fit.coeffs[3], r.fit.coeffs[4], r.fit.rms, r.mac, r.max_deviation);
   }
   s += "a2..a6: ElastoDyn mode-shape polynomial fitted to the FE mode; MAC, max dev: FE mode vs the model's shape\n";
   return s;
@@ -125,9 +127,10 @@ void run(const ShapesOptions& opt) {
 
 void addShapesCommand(CLI::App& app) {
   auto opt = std::make_shared<ShapesOptions>();
-  CLI::App* cmd = app.add_subcommand(
-      "shapes", "FE mode shapes of each flexible beam from its distributed properties: frequencies, ElastoDyn "
-                "polynomial fits (x^2..x^6), MAC and deviation against the model's current shapes");
+  CLI::App* cmd =
+      app.add_subcommand("shapes",
+                         "FE mode shapes of each flexible beam from its distributed properties: frequencies, ElastoDyn "
+                         "polynomial fits (x^2..x^6), MAC and deviation against the model's current shapes");
   cmd->add_option("CASE", opt->model.case_path, "case: YAML case file, OpenFAST .fst or ElastoDyn .dat")->required();
   cmd->add_option("--set", opt->model.sets,
                   "override KEY=VALUE (repeatable): a dotted path of the YAML case, or an OpenFAST key; "

@@ -3,22 +3,22 @@
 // writes timeseries.csv, timeseries.gp and PNG/SVG.
 #include <unistd.h>
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <optional>
-#include <cstdio>
 
 #include "linearize/rosco_step.hpp"
 #include "linearize/simulate.hpp"
-#include "linearize/trim.hpp"
-#include "src/io/discon_input.hpp"
 #include "linearize/simulation_setup.hpp"
+#include "linearize/trim.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/common.hpp"
+#include "src/io/discon_input.hpp"
 #include "src/io/time_signal_reader.hpp"
 #include "src/model/error.hpp"
 #include "src/writers/output_set.hpp"
@@ -61,10 +61,12 @@ void run(const SimulateOptions& opt) {
   OperatingPoint start = startPoint(m, opt.model);
   std::optional<RoscoController> controller;
   std::optional<SteadyState> steady;
-  if (opt.closed_loop && !opt.wind) throw InputError("simulate: --closed-loop needs --wind U (it starts where ROSCO settles)");
+  if (opt.closed_loop && !opt.wind)
+    throw InputError("simulate: --closed-loop needs --wind U (it starts where ROSCO settles)");
   if (opt.wind) {
     // The trimmed steady state (with the deck's ROSCO controller when it names one), rotor free.
-    if (opt.model.rpm || opt.equilibrium) throw InputError("simulate: --wind starts at the trimmed state: not with --rpm or --equilibrium");
+    if (opt.model.rpm || opt.equilibrium)
+      throw InputError("simulate: --wind starts at the trimmed state: not with --rpm or --equilibrium");
     controller = opt.closed_loop ? closedLoopController(m, opt.model) : m.deck_controller;
     const WindStart w = windStart(m, *opt.wind, controller ? &*controller : nullptr);
     steady = w.steady;
@@ -152,9 +154,10 @@ void addSimulateCommand(CLI::App& app) {
   cmd->add_option("--drive", opt->drives,
                   "prescribed motion of a coordinate from its start value, 'DOF=spinup(T,w)' (Kane's spin-up: "
                   "acceleration (w/T)(1 - cos 2 pi t/T), then rate w) or any --input signal; repeatable");
-  cmd->add_option("--wind", opt->wind,
-                  "start at the steady state trimmed at this wind speed [m/s] (with the deck's ROSCO controller when it "
-                  "names one), the rotor free")
+  cmd->add_option(
+         "--wind", opt->wind,
+         "start at the steady state trimmed at this wind speed [m/s] (with the deck's ROSCO controller when it "
+         "names one), the rotor free")
       ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--closed-loop", opt->closed_loop,
                 "with --wind: ROSCO's controller of the deck in the loop, setting generator torque and pitch every "

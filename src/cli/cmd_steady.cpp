@@ -12,11 +12,11 @@
 #include "src/cli/common.hpp"
 #include "src/io/csv.hpp"
 #include "src/io/discon_input.hpp"
-#include "src/writers/gnuplot.hpp"
 #include "src/io/schedule.hpp"
+#include "src/model/error.hpp"
+#include "src/writers/gnuplot.hpp"
 #include "src/writers/output_set.hpp"
 #include "src/writers/steady_table.hpp"
-#include "src/model/error.hpp"
 
 namespace whirl::cli {
 namespace {
@@ -41,7 +41,9 @@ std::string scriptOf(const std::string& title) {
          "do for [out = 1:2] {\n"
          "  if (out == 1) { set terminal pngcairo size 1200,900 noenhanced; set output png_out }\n"
          "  else { set terminal svg size 1200,900 noenhanced; set output svg_out }\n"
-         "  set multiplot layout 2,2 title " + gnuplotQuoted(title) + "\n"
+         "  set multiplot layout 2,2 title " +
+         gnuplotQuoted(title) +
+         "\n"
          "  set ylabel 'Rotor speed [rpm], pitch [deg]'\n"
          "  plot 'steady.csv' using 1:2 with linespoints, '' using 1:3 with linespoints\n"
          "  set ylabel 'Power [kW]'\n"
@@ -78,8 +80,8 @@ void run(const SteadyOptions& opt) {
       if (!p.wind_speed) throw InputError(opt.schedule + ": the schedule has no wind speed column");
       OperatingCondition c = sweepCondition(m, p);
       // A failing row names itself and its point (issue 41), as the sweeps of campbell and export do.
-      const std::string at =
-          opt.schedule + ": operating point " + std::to_string(k + 1) + " (" + sweepPointLabel(m, p) + "): ";
+      const std::string at = opt.schedule + ": operating point " + std::to_string(k + 1) + " (" +
+                             sweepPointLabel(m, p) + "): ";
       try {
         rows.push_back(steadyState(m, c, trim));
       } catch (const InputError& e) {
@@ -101,8 +103,7 @@ void run(const SteadyOptions& opt) {
     const SteadyRow r = steadyRow(m, s);
     std::printf("%8.2f %9.4f %8.4f %10.1f %10.1f %9.2f %7.4f %7.4f %6.3f\n", *s.condition.wind_speed,
                 s.condition.rotor_speed * 30 / kPi, s.condition.collective_pitch.value_or(0) * 180 / kPi,
-                s.aero_torque * s.condition.rotor_speed / 1e3, r.values[4],
-                s.thrust / 1e3, r.cp, r.ct, r.tsr);
+                s.aero_torque * s.condition.rotor_speed / 1e3, r.values[4], s.thrust / 1e3, r.cp, r.ct, r.tsr);
   }
   std::printf("wrote");
   for (const auto& f : written) std::printf(" %s", f.c_str());

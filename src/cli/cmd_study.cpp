@@ -1,6 +1,6 @@
 // whirl study: parameter sets (a CSV of --set columns) × operating points, one table.
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 #include <chrono>
 #include <cstdio>
 #include <map>
@@ -9,13 +9,13 @@
 #include "modal/tracking.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/common.hpp"
-#include "src/writers/output_set.hpp"
-#include "src/writers/study_table.hpp"
 #include "src/io/csv.hpp"
 #include "src/io/schedule.hpp"
 #include "src/model/error.hpp"
 #include "src/model/limits.hpp"
 #include "src/parallel/session.hpp"
+#include "src/writers/output_set.hpp"
+#include "src/writers/study_table.hpp"
 
 namespace whirl::cli {
 namespace {
@@ -43,14 +43,14 @@ void run(const StudyOptions& opt) {
   const std::vector<SweepPoint> points = opt.schedule.empty() ? rpmRange(opt.rpm_range) : readSchedule(opt.schedule);
   const TextTable sets = readTextCsv(opt.params);
   if (sets.rows.size() > static_cast<std::size_t>(limits::kMaxStudySets))
-    throw InputError(where(opt.params, sets.lines[limits::kMaxStudySets], "",
-                           "more than " + std::to_string(limits::kMaxStudySets) +
-                               " parameter sets (src/model/limits.hpp, kMaxStudySets): split the study into several runs"));
+    throw InputError(
+        where(opt.params, sets.lines[limits::kMaxStudySets], "",
+              "more than " + std::to_string(limits::kMaxStudySets) +
+                  " parameter sets (src/model/limits.hpp, kMaxStudySets): split the study into several runs"));
   if (sets.names.empty() || sets.rows.empty())
     throw InputError(where(opt.params, 1, "", "needs a header of --set keys and at least one row of values"));
   for (const auto& n : sets.names)
-    if (n.empty() || n.find('=') != std::string::npos)
-      throw InputError(where(opt.params, 1, n, "not a --set key"));
+    if (n.empty() || n.find('=') != std::string::npos) throw InputError(where(opt.params, 1, n, "not a --set key"));
   const std::string dir = opt.out.empty() ? defaultOutputFolder(opt.model.case_path) : opt.out;
   prepareOutputFolder(dir);
 
@@ -95,8 +95,7 @@ void addStudyCommand(CLI::App& app) {
       "parameter study: every parameter set of --params (a CSV whose columns are --set keys, one row per set) "
       "at every operating point; writes study.csv (set, its values, then the campbell.csv columns)");
   addModelOptions(*cmd, opt->model, false);
-  cmd->add_option("--params", opt->params, "CSV of parameter sets: header of --set keys, one row per set")
-      ->required();
+  cmd->add_option("--params", opt->params, "CSV of parameter sets: header of --set keys, one row per set")->required();
   cmd->add_option("--rpm", opt->rpm_range, "rotor speeds START:STEP:STOP [rpm]");
   cmd->add_option("--schedule", opt->schedule, "operating schedule CSV (wind speed, RotSpeed, BldPitch columns)");
   addMultibladeAzimuths(*cmd, opt->azimuths);

@@ -13,10 +13,10 @@
 #include "linearize/controller_tuning_whirl.hpp"
 #include "linearize/trim.hpp"
 #include "modal/placement_check.hpp"
-#include "src/io/discon_input.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/common.hpp"
 #include "src/io/csv.hpp"
+#include "src/io/discon_input.hpp"
 #include "src/io/input_file.hpp"
 #include "src/io/rotor_performance_input.hpp"
 #include "src/model/error.hpp"
@@ -36,8 +36,8 @@ struct TuneOptions {
   std::string cp_surface, discon, out;
   bool quasi_steady = false, pointwise = false, full_model = false, full_model_placement = false;
   int azimuths = 3;
-  int fl_mode = 0;                 ///< ROSCO's floating feedback to tune (1) or none (0)
-  std::optional<double> fl_wind;   ///< its U_Fl [m/s]; default 1.05 v_rated (ROSCO's)
+  int fl_mode = 0;                ///< ROSCO's floating feedback to tune (1) or none (0)
+  std::optional<double> fl_wind;  ///< its U_Fl [m/s]; default 1.05 v_rated (ROSCO's)
 };
 
 std::string readText(const std::string& path) {
@@ -88,7 +88,8 @@ std::vector<TuningPoint> whirlSchedule(const TuneOptions& opt, const Model& m, c
 
 std::string csvOf(const std::vector<TuningPoint>& s, const GainSchedule& g) {
   std::string t =
-      "wind_speed_m_s,rotor_speed_rpm,pitch_deg,tsr,dq_dpitch_nm_rad,dq_domega_nms_rad,dq_dwind_nms_m,a_1_s,b_beta_1_s2,"
+      "wind_speed_m_s,rotor_speed_rpm,pitch_deg,tsr,dq_dpitch_nm_rad,dq_domega_nms_rad,dq_dwind_nms_m,a_1_s,b_beta_1_"
+      "s2,"
       "kp_s,ki\n";
   size_t k = 0;
   for (const TuningPoint& p : s) {
@@ -97,7 +98,8 @@ std::string csvOf(const std::vector<TuningPoint>& s, const GainSchedule& g) {
          {p.wind_speed, p.rotor_speed * 30 / kPi, p.pitch * 180 / kPi, p.tsr, p.dq_dpitch, p.dq_domega, p.dq_dwind})
       t += formatNumber(v) + ",";
     if (placed) {
-      t += formatNumber(g.a[k]) + "," + formatNumber(g.b[k]) + "," + formatNumber(g.kp[k]) + "," + formatNumber(g.ki[k]);
+      t += formatNumber(g.a[k]) + "," + formatNumber(g.b[k]) + "," + formatNumber(g.kp[k]) + "," +
+           formatNumber(g.ki[k]);
       ++k;
     } else {
       t += ",,,";
@@ -109,8 +111,9 @@ std::string csvOf(const std::vector<TuningPoint>& s, const GainSchedule& g) {
 
 /// placement_check.csv: per pitch-schedule point the target and the whole model's nearest closed-loop root.
 std::string checkCsv(const std::vector<PlacementCheck>& checks) {
-  std::string t = "wind_speed_m_s,target_real_1_s,target_imag_1_s,pole_real_1_s,pole_imag_1_s,omega_rad_s,zeta,"
-                  "distance_1_s,stable\n";
+  std::string t =
+      "wind_speed_m_s,target_real_1_s,target_imag_1_s,pole_real_1_s,pole_imag_1_s,omega_rad_s,zeta,"
+      "distance_1_s,stable\n";
   for (const PlacementCheck& c : checks) {
     for (double v : {c.wind_speed, c.target.real(), c.target.imag(), c.pole.real(), c.pole.imag(), c.omega, c.zeta,
                      std::abs(c.pole - c.target)})
@@ -129,10 +132,11 @@ void printChecks(const std::vector<PlacementCheck>& checks) {
     z_lo = std::min(z_lo, c.zeta), z_hi = std::max(z_hi, c.zeta);
     unstable += c.stable ? 0 : 1;
   }
-  std::printf("whole model, closed with these gains: rotor-speed root omega %.3g to %.3g rad/s, zeta %.3g to %.3g "
-              "(target %.3g rad/s, %.3g); unstable at %d of %zu points\n",
-              w_lo, w_hi, z_lo, z_hi, std::abs(checks.front().target), -checks.front().target.real() / std::abs(checks.front().target),
-              unstable, checks.size());
+  std::printf(
+      "whole model, closed with these gains: rotor-speed root omega %.3g to %.3g rad/s, zeta %.3g to %.3g "
+      "(target %.3g rad/s, %.3g); unstable at %d of %zu points\n",
+      w_lo, w_hi, z_lo, z_hi, std::abs(checks.front().target),
+      -checks.front().target.real() / std::abs(checks.front().target), unstable, checks.size());
 }
 
 void run(TuneOptions opt) {
@@ -195,8 +199,8 @@ void run(TuneOptions opt) {
   size_t k = 0;
   for (const TuningPoint& p : s) {
     if (!p.above_rated || k >= g.wind_speed.size() || std::abs(g.wind_speed[k] - p.wind_speed) > 1e-9) continue;
-    std::printf("%8.3f %8.3f %12.5g %12.5g %11.4g %11.4g\n", p.wind_speed, p.pitch * 180 / kPi, p.dq_dpitch, p.dq_domega,
-                g.kp[k], g.ki[k]);
+    std::printf("%8.3f %8.3f %12.5g %12.5g %11.4g %11.4g\n", p.wind_speed, p.pitch * 180 / kPi, p.dq_dpitch,
+                p.dq_domega, g.kp[k], g.ki[k]);
     ++k;
   }
   std::printf("VS_KP %.6g, VS_KI %.6g\n", g.vs_kp, g.vs_ki);
@@ -226,24 +230,34 @@ void addTuneCommand(CLI::App& app) {
   cmd->add_option("--v-min", opt->v_min, "cut-in wind speed of ROSCO's schedule [m/s]")->required();
   cmd->add_option("--v-rated", opt->v_rated, "rated wind speed [m/s]")->required();
   cmd->add_option("--v-max", opt->v_max, "cut-out wind speed [m/s]")->required();
-  cmd->add_option("--ws-gs-n", opt->goals.ws_gs_n, "wind speeds of the schedule (ROSCO's WS_GS_n)")->check(CLI::Range(4, 1000));
+  cmd->add_option("--ws-gs-n", opt->goals.ws_gs_n, "wind speeds of the schedule (ROSCO's WS_GS_n)")
+      ->check(CLI::Range(4, 1000));
   cmd->add_option("--pc-gs-n", opt->goals.pc_gs_n, "of them above rated (ROSCO's PC_GS_n)")->check(CLI::Range(2, 999));
-  cmd->add_option("--inertia", opt->inertia, "rotor + generator inertia about the low-speed shaft [kg m^2] (default: the model's)");
-  cmd->add_option("--rotor-radius", opt->rotor_radius, "R of the tip-speed ratio and the Cp surface [m] (default: the swept disk's, coned)");
-  cmd->add_option("--rated-rotor-speed", opt->rated_rotor_speed, "[rad/s] (default: the deck's rated generator speed / gearbox ratio; ROSCO's PC_RefSpd / gearbox ratio)");
-  cmd->add_option("--rated-power", opt->rated_power, "[W] (default: the deck's rated speed x torque x efficiency; ROSCO's VS_RtPwr)");
+  cmd->add_option("--inertia", opt->inertia,
+                  "rotor + generator inertia about the low-speed shaft [kg m^2] (default: the model's)");
+  cmd->add_option("--rotor-radius", opt->rotor_radius,
+                  "R of the tip-speed ratio and the Cp surface [m] (default: the swept disk's, coned)");
+  cmd->add_option(
+      "--rated-rotor-speed", opt->rated_rotor_speed,
+      "[rad/s] (default: the deck's rated generator speed / gearbox ratio; ROSCO's PC_RefSpd / gearbox ratio)");
+  cmd->add_option("--rated-power", opt->rated_power,
+                  "[W] (default: the deck's rated speed x torque x efficiency; ROSCO's VS_RtPwr)");
   cmd->add_option("--cp-surface", opt->cp_surface, "ROSCO rotor performance file (Cp_Ct_Cq.*.txt): ROSCO's own tuning");
   cmd->add_option("--discon", opt->discon, "DISCON.IN to write again with the new gain schedule");
-  cmd->add_flag("--quasi-steady", opt->quasi_steady, "sensitivities with the induction following at once (default: frozen wake)");
-  cmd->add_flag("--pointwise", opt->pointwise, "place each wind speed's own plant (default: ROSCO's line fit in the wind speed)");
+  cmd->add_flag("--quasi-steady", opt->quasi_steady,
+                "sensitivities with the induction following at once (default: frozen wake)");
+  cmd->add_flag("--pointwise", opt->pointwise,
+                "place each wind speed's own plant (default: ROSCO's line fit in the wind speed)");
   cmd->add_flag("--full-model", opt->full_model,
                 "also close the whole linear model with the placed gains at each pitch-schedule point (with --discon: "
                 "its speed filter) and report where the rotor-speed root lands (placement_check.csv)");
-  cmd->add_option("--fl-mode", opt->fl_mode,
-                  "tune ROSCO's floating feedback too (1: tower-top velocity): Fl_Kp = (dQ/dU)/(dQ/dpitch) at --fl-wind, "
-                  "written with --discon as Fl_Mode, Fl_Kp, Fl_U")
+  cmd->add_option(
+         "--fl-mode", opt->fl_mode,
+         "tune ROSCO's floating feedback too (1: tower-top velocity): Fl_Kp = (dQ/dU)/(dQ/dpitch) at --fl-wind, "
+         "written with --discon as Fl_Mode, Fl_Kp, Fl_U")
       ->check(CLI::Range(0, 1));
-  cmd->add_option("--fl-wind", opt->fl_wind, "wind speed of the floating-feedback gain [m/s] (default: 1.05 x --v-rated, as ROSCO)");
+  cmd->add_option("--fl-wind", opt->fl_wind,
+                  "wind speed of the floating-feedback gain [m/s] (default: 1.05 x --v-rated, as ROSCO)");
   cmd->add_flag("--full-model-placement", opt->full_model_placement,
                 "place the pitch loop's root on the whole linear model (Newton on K_p, K_i from the one-state gains; "
                 "with --discon its speed filter in the loop) and write those gains; implies --full-model");

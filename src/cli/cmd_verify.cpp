@@ -4,8 +4,8 @@
 // identified from the decay next to the eigenvalues. With --closed-loop: the ROSCO-controlled turbine's
 // response to a small wind step, nonlinear with ROSCO's discrete laws vs the linear closed loop
 // (modal/closed_loop_step.hpp).
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -47,7 +47,8 @@ void runClosedLoop(const VerifyOptions& opt) {
   // The library's checks again under the options' names, before the trim.
   if (!(so.wind_step != 0) || !std::isfinite(so.wind_step)) throw InputError("verify: --wind-step: must be non-zero");
   if (!(so.step_time < so.t_end))
-    throw InputError("verify: --step-time: the step must come before the end (--tmax " + fmt::format("{:g}", so.t_end) + " s)");
+    throw InputError("verify: --step-time: the step must come before the end (--tmax " + fmt::format("{:g}", so.t_end) +
+                     " s)");
   for (size_t i = 0; i < so.outputs.size(); ++i)
     for (size_t j = 0; j < i; ++j)
       if (so.outputs[i] == so.outputs[j]) throw InputError("verify: --output: " + so.outputs[i] + " given twice");
@@ -65,14 +66,15 @@ void runClosedLoop(const VerifyOptions& opt) {
   files.write("closed_loop_step.gp", closedLoopStepGnuplot(r, *opt.wind, so));
   if (!opt.no_plot) renderGnuplot(files.stagingFolder(), "gnuplot", "closed_loop_step", dir);
   files.commit();
-  std::printf("wind step %g m/s at %g s from %g m/s (region %s): nonlinear with ROSCO's discrete laws (every %g s) "
-              "vs the linear closed loop (%d azimuths, quasi-steady induction)\n",
-              so.wind_step, so.step_time, *opt.wind, st.region.c_str(), so.controller_dt, so.azimuths);
+  std::printf(
+      "wind step %g m/s at %g s from %g m/s (region %s): nonlinear with ROSCO's discrete laws (every %g s) "
+      "vs the linear closed loop (%d azimuths, quasi-steady induction)\n",
+      so.wind_step, so.step_time, *opt.wind, st.region.c_str(), so.controller_dt, so.azimuths);
   std::printf("  %-20s %-8s %-14s %-22s %s\n", "signal", "unit", "peak |linear|", "max |nonlinear - linear|",
               "up to t_step + 4.5 s");
   for (const ClosedLoopStepSignal& s : r.signals)
-    std::printf("  %-20s %-8s %-14.5g %-12.5g (%5.1f %%)   %-12.5g (%5.1f %%)\n", s.name.c_str(), s.unit.c_str(), s.peak,
-                s.max_difference, s.peak > 0 ? 100 * s.max_difference / s.peak : 0.0, s.early_difference,
+    std::printf("  %-20s %-8s %-14.5g %-12.5g (%5.1f %%)   %-12.5g (%5.1f %%)\n", s.name.c_str(), s.unit.c_str(),
+                s.peak, s.max_difference, s.peak > 0 ? 100 * s.max_difference / s.peak : 0.0, s.early_difference,
                 s.peak > 0 ? 100 * s.early_difference / s.peak : 0.0);
   std::printf("wrote");
   for (const auto& f : files.paths()) std::printf(" %s", f.c_str());
@@ -97,8 +99,7 @@ void run(const VerifyOptions& opt) {
   std::printf("  %-12s %-16s %-16s %s\n", "amplitude", "max |q - q_lin|", "max |q_lin|", "order");
   for (size_t k = 0; k < c.levels.size(); ++k) {
     const NonlinearCheckLevel& l = c.levels[k];
-    if (k == 0)
-      std::printf("  %-12.6g %-16.6g %.6g\n", l.amplitude, l.max_difference, l.max_response);
+    if (k == 0) std::printf("  %-12.6g %-16.6g %.6g\n", l.amplitude, l.max_difference, l.max_response);
     else
       std::printf("  %-12.6g %-16.6g %-16.6g %.3f\n", l.amplitude, l.max_difference, l.max_response, c.orders[k - 1]);
   }
@@ -113,8 +114,7 @@ void run(const VerifyOptions& opt) {
         std::find_if(active.begin(), active.end(), [&](int i) { return m.dofs[i].name == c.identified_dofs[k]; }) -
         active.begin());
     for (const Mode& md : c.modes)
-      if (!md.rigid_body && j < md.participation.size() &&
-          (!best || md.participation(j) > best->participation(j)))
+      if (!md.rigid_body && j < md.participation.size() && (!best || md.participation(j) > best->participation(j)))
         best = &md;
     const IdentifiedDecay& d = c.identified[k];
     // The realized pole of this decay nearest the mode's damped frequency.
@@ -146,15 +146,19 @@ void addVerifyCommand(CLI::App& app) {
       ->each([opt](const std::string&) { opt->dt_given = true; });
   cmd->add_flag("--closed-loop", opt->closed_loop,
                 "instead: the deck's ROSCO controller in the loop, a wind step from the steady state at --wind, the "
-                "nonlinear response (ROSCO's discrete laws) against the linear closed loop's; writes closed_loop_step.csv/.gp/.png");
-  cmd->add_option("--wind", opt->wind, "with --closed-loop: the wind speed trimmed at [m/s]")->check(CLI::NonNegativeNumber);
+                "nonlinear response (ROSCO's discrete laws) against the linear closed loop's; writes "
+                "closed_loop_step.csv/.gp/.png");
+  cmd->add_option("--wind", opt->wind, "with --closed-loop: the wind speed trimmed at [m/s]")
+      ->check(CLI::NonNegativeNumber);
   cmd->add_option("--wind-step", opt->step.wind_step, "with --closed-loop: the step [m/s] (default 0.1)");
   cmd->add_option("--step-time", opt->step.step_time, "with --closed-loop: when the step comes [s] (default 1)")
       ->check(CLI::NonNegativeNumber);
-  cmd->add_option("--controller-dt", opt->step.controller_dt, "with --closed-loop: ROSCO's time step [s] (default 0.01)")
+  cmd->add_option("--controller-dt", opt->step.controller_dt,
+                  "with --closed-loop: ROSCO's time step [s] (default 0.01)")
       ->check(CLI::PositiveNumber);
-  cmd->add_option("--azimuths", opt->step.azimuths,
-                  "with --closed-loop: equilibria per blade passage of the trim, and of the linear model's multiblade average")
+  cmd->add_option(
+         "--azimuths", opt->step.azimuths,
+         "with --closed-loop: equilibria per blade passage of the trim, and of the linear model's multiblade average")
       ->check(CLI::Range(1, 360));
   cmd->add_option("--output", opt->step.outputs,
                   "with --closed-loop: plant output compared (repeatable; default GenSpeed and TTDspFA; the pitch "

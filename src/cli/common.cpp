@@ -1,16 +1,16 @@
 #include "src/cli/common.hpp"
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 
+#include <unistd.h>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <sstream>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
-#include <unistd.h>
+#include <sstream>
 
 #include "linearize/load_jump.hpp"
 #include "linearize/point_validity.hpp"
@@ -41,7 +41,8 @@ CLI::Option* addMultibladeAzimuths(CLI::App& cmd, int& azimuths) {
 }
 
 CLI::Option* addTrimAzimuths(CLI::App& cmd, int& azimuths) {
-  return cmd.add_option("--azimuths", azimuths, "equilibria per point, over one blade passage")->check(CLI::Range(1, 360));
+  return cmd.add_option("--azimuths", azimuths, "equilibria per point, over one blade passage")
+      ->check(CLI::Range(1, 360));
 }
 
 OperatingCondition operatingCondition(const Model& m, const ModelOptions& opt) {
@@ -151,8 +152,7 @@ std::function<void(int, int)> sweepProgress(const std::string& command) {
     if (parallel::size() > 1)
       std::fprintf(stderr, "\r%s: %d/%d operating points on rank 0 of %d (%.1f s)", command.c_str(), done, total,
                    parallel::size(), s);
-    else
-      std::fprintf(stderr, "\r%s: %d/%d operating points (%.1f s)", command.c_str(), done, total, s);
+    else std::fprintf(stderr, "\r%s: %d/%d operating points (%.1f s)", command.c_str(), done, total, s);
     *printed = true;
     if (done == total) std::fprintf(stderr, "\n");
   };

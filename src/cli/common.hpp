@@ -9,14 +9,14 @@
 
 #include "linearize/operating_point.hpp"
 #include "src/model/model.hpp"
-#include "src/model/rosco_controller.hpp"
 #include "src/model/operating_condition.hpp"
+#include "src/model/rosco_controller.hpp"
 #include "src/writers/campbell_output.hpp"
 
 namespace CLI {
 class App;
 class Option;
-}
+}  // namespace CLI
 
 namespace whirl::cli {
 

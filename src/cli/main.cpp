@@ -29,8 +29,9 @@ int main(int argc, char** argv) {
       if (args[i].empty() || args[i][0] == '-') continue;
       if (std::find(distributed.begin(), distributed.end(), args[i]) == distributed.end()) {
         if (root)
-          std::fprintf(stderr, "whirl: error: %s: does not run distributed; under mpirun use campbell, study, export or modes\n",
-                       whirl::escapeControlCharacters(args[i]).c_str());
+          std::fprintf(
+              stderr, "whirl: error: %s: does not run distributed; under mpirun use campbell, study, export or modes\n",
+              whirl::escapeControlCharacters(args[i]).c_str());
         return 1;
       }
       break;

@@ -11,13 +11,14 @@
 
 namespace whirl::cli {
 
-std::string modesText(const std::vector<Mode>& modes, const std::vector<std::string>& coords,
-                      const std::string& format, const nlohmann::json& header) {
+std::string modesText(const std::vector<Mode>& modes, const std::vector<std::string>& coords, const std::string& format,
+                      const nlohmann::json& header) {
   // An iterative (sparse) solve reports each pair's backward error; the dense path has none.
   bool residuals = !modes.empty();
   for (const auto& m : modes) residuals = residuals && m.residual.has_value();
   if (format == "csv") {
-    std::string s = std::string("index,name,freq_hz,damped_freq_hz,damping_ratio") + (residuals ? ",residual" : "") + "\n";
+    std::string s = std::string("index,name,freq_hz,damped_freq_hz,damping_ratio") + (residuals ? ",residual" : "") +
+                    "\n";
     for (size_t k = 0; k < modes.size(); ++k)
       s += std::to_string(k + 1) + "," + csvField(modes[k].name) + "," + formatNumber(modes[k].freq_hz) + "," +
            formatNumber(modes[k].damped_freq_hz) + "," + formatNumber(modes[k].damping_ratio) +

@@ -138,8 +138,8 @@ struct RotorInflow {
 /// that does not converge); where no bracket holds a valid root the inflow is geometric (bemSection).
 template <class TK, class T>
 void bladeLoads(const Model& m, int bi, int index0, const BladeMotion<TK>& bm, const RotorInflow<TK, T>& in,
-                std::vector<BemRoot>& bem, std::vector<SectionJet>& jets, AeroRecord* record,
-                RotorTotals<T>* totals, BodyLoadSum<T>& sum) {
+                std::vector<BemRoot>& bem, std::vector<SectionJet>& jets, AeroRecord* record, RotorTotals<T>* totals,
+                BodyLoadSum<T>& sum) {
   const AeroModel& am = m.aero;
   const AeroBlade& blade = am.blades[static_cast<std::size_t>(bi)];
   const Body& body = m.bodies[blade.body];
@@ -165,9 +165,8 @@ void bladeLoads(const Model& m, int bi, int index0, const BladeMotion<TK>& bm, c
                                             in.frozen->tangential(index), jets[static_cast<std::size_t>(index)])
                          : bemSection(am, st, vx, vy, theta, T(r), in.weight, bem[static_cast<std::size_t>(index)]);
       } catch (const ComputeError& err) {
-        throw ComputeError(body.name + " aero element " + std::to_string(si + 1) + " (span " +
-                           std::to_string(st.span) + " m) at hub-height wind speed " +
-                           std::to_string(valueOf(in.speed)) + " m/s: " + err.what());
+        throw ComputeError(body.name + " aero element " + std::to_string(si + 1) + " (span " + std::to_string(st.span) +
+                           " m) at hub-height wind speed " + std::to_string(valueOf(in.speed)) + " m/s: " + err.what());
       }
     }();
     const aero::SectionLoads<T>& L = sec.loads;

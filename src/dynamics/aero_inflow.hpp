@@ -10,11 +10,11 @@ namespace whirl {
 
 /// One element at an operating point (annulus frame of aero_model.hpp; per unit span).
 struct AeroElementState {
-  double vx = 0, vy = 0;     ///< relative velocity without induction, normal / in-plane [m/s]
-  double r = 0;              ///< distance from the rotor axis [m]
-  double phi = 0, alpha = 0; ///< inflow angle, angle of attack [rad]
-  double a = 0, ap = 0;      ///< axial and tangential induction factors [-]
-  double w = 0;              ///< relative speed [m/s]
+  double vx = 0, vy = 0;      ///< relative velocity without induction, normal / in-plane [m/s]
+  double r = 0;               ///< distance from the rotor axis [m]
+  double phi = 0, alpha = 0;  ///< inflow angle, angle of attack [rad]
+  double a = 0, ap = 0;       ///< axial and tangential induction factors [-]
+  double w = 0;               ///< relative speed [m/s]
   double cl = 0, cd = 0, cm = 0;
   double fx = 0, fy = 0, m = 0;  ///< normal and in-plane force [N/m], pitching moment [N m/m]
   bool bem_valid = true;         ///< false: BEM had no valid inflow angle, φ is the geometric one (AeroDyn GeomPhi)

@@ -9,9 +9,8 @@
 namespace whirl {
 
 template <class TK, class T>
-void addAeroLoads(const Model& m, Workspace<TK>& ws, const VecXT<TK>& q, const VecXT<T>& u,
-                  const AeroInflow* frozen, AeroRecord* record, VecXT<T>& e, std::uint64_t skip,
-                  RotorTotals<T>* totals, AeroJets* jets) {
+void addAeroLoads(const Model& m, Workspace<TK>& ws, const VecXT<TK>& q, const VecXT<T>& u, const AeroInflow* frozen,
+                  AeroRecord* record, VecXT<T>& e, std::uint64_t skip, RotorTotals<T>* totals, AeroJets* jets) {
   const AeroModel& am = m.aero;
   if (!am.active()) return;
   const FrameState<TK>& hub = ws.frames[am.hub_body];

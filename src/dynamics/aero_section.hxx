@@ -7,9 +7,9 @@
 #include <type_traits>
 
 #include "src/aero/bem.hpp"
-#include "src/model/scalar.hpp"
 #include "src/dynamics/workspace.hpp"
 #include "src/model/aero_model.hpp"
+#include "src/model/scalar.hpp"
 
 namespace whirl::detail {
 
@@ -30,7 +30,7 @@ inline aero::BemStation bemStation(const AeroModel& am, const AeroStation& st, d
 template <class T>
 struct SectionState {
   aero::SectionLoads<T> loads;
-  double a = 0, ap = 0;  ///< induction factors (values)
+  double a = 0, ap = 0;   ///< induction factors (values)
   bool bem_valid = true;  ///< false: BEM had no valid root, the inflow is geometric (BemRoot::bem_valid)
 };
 
@@ -52,8 +52,8 @@ SectionState<T> frozenSection(const AeroModel& am, const AeroStation& st, const 
 /// reused while the inflow values agree to round-off (the passes of one linearization; their
 /// kinematics rounds differently from pass to pass). Only fx, fy, mz carry derivatives.
 template <class T>
-SectionState<T> frozenSectionJet(const AeroModel& am, const AeroStation& st, const T& vx, const T& vy,
-                                 const T& theta, double r, double ax_ind, double tn_ind, SectionJet& jet) {
+SectionState<T> frozenSectionJet(const AeroModel& am, const AeroStation& st, const T& vx, const T& vy, const T& theta,
+                                 double r, double ax_ind, double tn_ind, SectionJet& jet) {
   if constexpr (!std::is_same_v<T, ADChunk>) {
     return frozenSection(am, st, vx, vy, theta, r, ax_ind, tn_ind);
   } else {
@@ -63,8 +63,8 @@ SectionState<T> frozenSectionJet(const AeroModel& am, const AeroStation& st, con
           std::abs(jet.theta - th) <= tol && std::abs(jet.r - r) <= tol * r && jet.ax == ax_ind && jet.tn == tn_ind)) {
       using Der = ADChunk::DerType;
       const ADChunk X(x, Der::Unit(0)), Y(y, Der::Unit(1)), TH(th, Der::Unit(2));
-      const aero::SectionLoads<ADChunk> L =
-          aero::frozenLoads(bemStation(am, st, r), X, Y, TH, ax_ind, tn_ind, am.air_density, am.bem);
+      const aero::SectionLoads<ADChunk> L = aero::frozenLoads(bemStation(am, st, r), X, Y, TH, ax_ind, tn_ind,
+                                                              am.air_density, am.bem);
       jet = SectionJet{true, x, y, th, r, ax_ind, tn_ind};
       jet.phi = L.phi.value();
       jet.alpha = L.alpha.value();
@@ -155,11 +155,11 @@ SectionState<T> bemSection(const AeroModel& am, const AeroStation& st, const T& 
       }
       hint = root.phi + (std::abs(moved) < 0.05 ? moved : 0.0);
     }
-    const aero::InflowRoot sol =
-        root.tolerance > 0
-            ? aero::findInflowRoot(b, x, y, withTolerance(am.bem, root.tolerance), hint,
-                                   root.valid ? root.search_slope : 0.0)
-            : aero::findInflowRoot(b, x, y, am.bem, hint, root.valid ? root.search_slope : 0.0);
+    const aero::InflowRoot sol = root.tolerance > 0
+                                     ? aero::findInflowRoot(b, x, y, withTolerance(am.bem, root.tolerance), hint,
+                                                            root.valid ? root.search_slope : 0.0)
+                                     : aero::findInflowRoot(b, x, y, am.bem, hint,
+                                                            root.valid ? root.search_slope : 0.0);
     phi = sol.phi;
     ra = sol.a;
     rap = sol.ap;
@@ -199,8 +199,8 @@ SectionState<T> bemSection(const AeroModel& am, const AeroStation& st, const T& 
     // At a root in the operating bracket with its inductions unlimited, the root's own angle and
     // polar are AeroDyn's output ones (to the root tolerance): no atan2, no second table look-up.
     if (flow_at_root && !blended)
-      return SectionState<T>{aero::loadsAtRoot(b, vx, vy, theta, phi, ra, rap, {cl, cd, cm}, am.air_density),
-                             a, ap, true};
+      return SectionState<T>{aero::loadsAtRoot(b, vx, vy, theta, phi, ra, rap, {cl, cd, cm}, am.air_density), a, ap,
+                             true};
     return SectionState<T>{aero::loadsAtInduction(b, vx, vy, theta, a, ap, am.air_density), a, ap, true};
   } else {
     return SectionState<T>{aero::quasiSteadyLoads(b, vx, vy, theta, phi, am.air_density, am.bem, &r,

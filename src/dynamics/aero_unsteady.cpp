@@ -73,9 +73,9 @@ aero::UaSection uaSection(const AeroModel& am, const AeroStation& st) {
 }
 
 template <class T>
-void addUnsteadyAeroLoads(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T>& qd,
-                          const VecXT<T>& u, const AeroInflow& frozen, const VecXT<T>* z, VecXT<T>& e,
-                          VecXT<T>* zdot, std::vector<aero::UaInput<T>>* inputs) {
+void addUnsteadyAeroLoads(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T>& qd, const VecXT<T>& u,
+                          const AeroInflow& frozen, const VecXT<T>* z, VecXT<T>& e, VecXT<T>* zdot,
+                          std::vector<aero::UaInput<T>>* inputs) {
   using std::sqrt;
   const AeroModel& am = m.aero;
   if (!am.active()) return;

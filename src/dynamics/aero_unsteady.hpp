@@ -37,9 +37,9 @@ void uaStateNames(const AeroModel& am, std::vector<std::string>& names, std::vec
 /// and per element its states); zdot (if given, dim uaStateCount) = the states' rates. z null: every element
 /// quasi-steady (zdot untouched). `inputs` (if given) receives the UA inputs of the elements with states.
 template <class T>
-void addUnsteadyAeroLoads(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T>& qd,
-                          const VecXT<T>& u, const AeroInflow& frozen, const VecXT<T>* z, VecXT<T>& e,
-                          VecXT<T>* zdot, std::vector<aero::UaInput<T>>* inputs = nullptr);
+void addUnsteadyAeroLoads(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T>& qd, const VecXT<T>& u,
+                          const AeroInflow& frozen, const VecXT<T>* z, VecXT<T>& e, VecXT<T>* zdot,
+                          std::vector<aero::UaInput<T>>* inputs = nullptr);
 
 /// The airfoil of a station for the UA functions (the polar, its UA table and Cm rule, the chord).
 aero::UaSection uaSection(const AeroModel& am, const AeroStation& st);

@@ -83,10 +83,8 @@ void matvec2(const ShapeIntegralBlock& S, const VecXT<T>& x1, const VecXT<T>& x2
 template <class T>
 void shapeProduct(const BodyInertia& in, int k, const VecXT<T>& x, VecXT<T>& y) {
   const int rows = in.len[k / 3], cols = in.len[k % 3];
-  if (in.Strace.rows() == in.nc())
-    matvec(in.S_block[k], x, rows, y);
-  else
-    matvec(in.S[k], x, rows, cols, y);
+  if (in.Strace.rows() == in.nc()) matvec(in.S_block[k], x, rows, y);
+  else matvec(in.S[k], x, rows, cols, y);
 }
 
 // T_i = −ε_ijk Q(j, k) with Qt = Qᵀ, Qt(k, j) = ∫ s_j (a_P)_k dm: the inertia moment about the origin.
@@ -199,10 +197,8 @@ void basisProducts(const BodyInertia& in, const VecXT<TQ>& c, const VecXT<TR>& c
       for (int k = 0; k < 3; ++k)
         for (int l = 0; l < 3; ++l) {
           const int kl = 3 * k + l;
-          if (k == l)
-            detail::matvec(in.S_block[kl], c, in.len[k], p.y[kl]);
-          else
-            detail::matvec2(in.S_block[kl], c, cd, in.len[k], p.y[kl], p.z[kl]);
+          if (k == l) detail::matvec(in.S_block[kl], c, in.len[k], p.y[kl]);
+          else detail::matvec2(in.S_block[kl], c, cd, in.len[k], p.y[kl], p.z[kl]);
         }
       detail::positionSums(in, c, p);
       detail::rateSums(in, cd, cdd, p);

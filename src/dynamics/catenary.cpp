@@ -2,8 +2,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "src/dynamics/catenary.hxx"
 #include <fmt/format.h>
+#include "src/dynamics/catenary.hxx"
 
 namespace whirl {
 namespace detail {
@@ -17,12 +17,9 @@ constexpr double kMaxStrain = 0.2;
 void initialGuess(const MooringLine& ln, double l, double h, double& H, double& V) {
   const double w = ln.weight, L = ln.length;
   double lambda;
-  if (l == 0.0)
-    lambda = 1e6;
-  else if (std::hypot(l, h) >= L)
-    lambda = 0.2;
-  else
-    lambda = std::sqrt(3.0 * ((L * L - h * h) / (l * l) - 1.0));
+  if (l == 0.0) lambda = 1e6;
+  else if (std::hypot(l, h) >= L) lambda = 0.2;
+  else lambda = std::sqrt(3.0 * ((L * L - h * h) / (l * l) - 1.0));
   H = std::max(std::abs(0.5 * w * l / lambda), 1e-3 * w * L);
   V = 0.5 * w * (h / std::tanh(lambda) + L);
 }
@@ -31,8 +28,10 @@ void initialGuess(const MooringLine& ln, double l, double h, double& H, double& 
 
 CatenaryNewton solveCatenaryNewton(const MooringLine& ln, double l, double h) {
   if (!(l > 1e-9 * ln.length) || !std::isfinite(l) || !std::isfinite(h))
-    throw ComputeError(fmt::format("{}: fairlead straight above its anchor (horizontal distance {:.6g} m): the "
-                                   "catenary equations have no horizontal direction", ln.name, l));
+    throw ComputeError(
+        fmt::format("{}: fairlead straight above its anchor (horizontal distance {:.6g} m): the "
+                    "catenary equations have no horizontal direction",
+                    ln.name, l));
   CatenaryNewton s;
   initialGuess(ln, l, h, s.H, s.V);
   const double tol = 1e-10 * (ln.length + std::abs(l) + std::abs(h));
@@ -48,9 +47,10 @@ CatenaryNewton solveCatenaryNewton(const MooringLine& ln, double l, double h) {
       // A steel or fibre line does not stretch by a fifth: the elastic catenary is not a line any more.
       const double strain = std::hypot(s.H, s.V) / ln.EA;
       if (strain > kMaxStrain)
-        throw ComputeError(fmt::format("{}: the line cannot reach its anchor (horizontal distance {:.6g} m, height "
-                                       "{:.6g} m, unstretched length {:.6g} m): it would stretch by {:.3g} %",
-                                       ln.name, l, h, ln.length, 100 * strain));
+        throw ComputeError(
+            fmt::format("{}: the line cannot reach its anchor (horizontal distance {:.6g} m, height "
+                        "{:.6g} m, unstretched length {:.6g} m): it would stretch by {:.3g} %",
+                        ln.name, l, h, ln.length, 100 * strain));
       return s;
     }
     Eigen::Vector2d step = s.J.partialPivLu().solve(r);
@@ -61,9 +61,10 @@ CatenaryNewton solveCatenaryNewton(const MooringLine& ln, double l, double h) {
     s.H -= a * step(0);
     s.V -= a * step(1);
   }
-  throw ComputeError(fmt::format("{}: the catenary does not converge (horizontal distance {:.6g} m, height {:.6g} m, "
-                                 "unstretched length {:.6g} m; residual {:.3g} m): the line cannot reach its anchor",
-                                 ln.name, l, h, ln.length, best));
+  throw ComputeError(
+      fmt::format("{}: the catenary does not converge (horizontal distance {:.6g} m, height {:.6g} m, "
+                  "unstretched length {:.6g} m; residual {:.3g} m): the line cannot reach its anchor",
+                  ln.name, l, h, ln.length, best));
 }
 
 CatenaryNewton solveTautLineNewton(const MooringLine& ln, double s, double h) {

@@ -13,7 +13,9 @@ namespace whirl::detail {
 
 inline double catValue(double x) { return x; }
 template <class D>
-double catValue(const Eigen::AutoDiffScalar<D>& x) { return x.value(); }
+double catValue(const Eigen::AutoDiffScalar<D>& x) {
+  return x.value();
+}
 
 /// asinh written with log and sqrt (AD types have no asinh), odd by construction.
 template <class S>

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <utility>
 
-#include "src/model/scalar.hpp"
 #include "src/model/aero_model.hpp"
+#include "src/model/scalar.hpp"
 
 namespace whirl {
 

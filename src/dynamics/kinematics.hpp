@@ -12,8 +12,8 @@ namespace whirl {
 /// \param[in] q, qd, qdd  all coordinates, frozen ones included (dim model.ndof())
 /// \param[in] pass  an AD pass that reads only derivatives copies unmoved frames (AdPass)
 template <class T>
-void forwardKinematics(const Model& model, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T>& qd,
-                       const VecXT<T>& qdd, const AdPass& pass = {});
+void forwardKinematics(const Model& model, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T>& qd, const VecXT<T>& qdd,
+                       const AdPass& pass = {});
 
 /// Rotation by angle phi about the unit axis n: R such that R v turns v about n.
 template <class T>

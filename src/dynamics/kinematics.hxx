@@ -24,9 +24,12 @@ Mat3T<T> axisRotation(const Vec3& n, const T& phi) {
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) R(i, j) = oc * n(i) * n(j);
     for (int i = 0; i < 3; ++i) R(i, i) += c;
-    R(0, 1) -= s * n(2); R(1, 0) += s * n(2);
-    R(0, 2) += s * n(1); R(2, 0) -= s * n(1);
-    R(1, 2) -= s * n(0); R(2, 1) += s * n(0);
+    R(0, 1) -= s * n(2);
+    R(1, 0) += s * n(2);
+    R(0, 2) += s * n(1);
+    R(2, 0) -= s * n(1);
+    R(1, 2) -= s * n(0);
+    R(2, 1) += s * n(0);
   }
   return R;
 }
@@ -107,8 +110,8 @@ void rotate(FrameState<T>& f, const Vec3& n, const T& phi, const T& phid, const 
 }  // namespace detail
 
 template <class T>
-void forwardKinematics(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T>& qd,
-                       const VecXT<T>& qdd, const AdPass& pass) {
+void forwardKinematics(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T>& qd, const VecXT<T>& qdd,
+                       const AdPass& pass) {
   assert(q.size() == m.ndof() && qd.size() == m.ndof() && qdd.size() == m.ndof());
   const int nb = static_cast<int>(m.bodies.size());
   if constexpr (std::is_same_v<T, double>) ws.body_products_current = false;
@@ -132,8 +135,12 @@ void forwardKinematics(const Model& m, Workspace<T>& ws, const VecXT<T>& q, cons
       // In a derivatives-only pass, a frame no seeded coordinate moves is the double frame.
       if (pass.derivativesOnly() && !detail::supportSeeded(m, i, q, qd, qdd)) {
         const FrameState<double>& c = pass.kinematics->frames[i];
-        f.R = c.R.template cast<T>(); f.r = c.r.template cast<T>(); f.v = c.v.template cast<T>();
-        f.a = c.a.template cast<T>(); f.w = c.w.template cast<T>(); f.dw = c.dw.template cast<T>();
+        f.R = c.R.template cast<T>();
+        f.r = c.r.template cast<T>();
+        f.v = c.v.template cast<T>();
+        f.a = c.a.template cast<T>();
+        f.w = c.w.template cast<T>();
+        f.dw = c.dw.template cast<T>();
         for (int s : sup) {
           f.Jv.col(s) = c.Jv.col(s).template cast<T>();
           f.Jw.col(s) = c.Jw.col(s).template cast<T>();
@@ -143,13 +150,23 @@ void forwardKinematics(const Model& m, Workspace<T>& ws, const VecXT<T>& q, cons
     }
     if (b.parent >= 0) {
       const FrameState<T>& p = ws.frames[b.parent];
-      f.R = p.R; f.r = p.r; f.v = p.v; f.a = p.a; f.w = p.w; f.dw = p.dw;
+      f.R = p.R;
+      f.r = p.r;
+      f.v = p.v;
+      f.a = p.a;
+      f.w = p.w;
+      f.dw = p.dw;
       for (int s : sup) {
         f.Jv.col(s) = p.Jv.col(s);
         f.Jw.col(s) = p.Jw.col(s);
       }
     } else {
-      f.R.setIdentity(); f.r.setZero(); f.v.setZero(); f.a.setZero(); f.w.setZero(); f.dw.setZero();
+      f.R.setIdentity();
+      f.r.setZero();
+      f.v.setZero();
+      f.a.setZero();
+      f.w.setZero();
+      f.dw.setZero();
       for (int s : sup) {
         f.Jv.col(s).setZero();
         f.Jw.col(s).setZero();

@@ -17,9 +17,8 @@ namespace {
 // m1c = m1 c; body_forces.hxx), used instead of forming them again; null: formed here.
 // Plain loops: the blocks are tiny (nc ≤ ~30), where Eigen's dynamic-size products cost more in
 // dispatch than in arithmetic.
-void bodyMassMatrixInto(const BodyInertia& in, const BasisState<double>& b,
-                        const BasisProducts<double, double>* known, std::array<VecX, 9>& scratch,
-                        Eigen::Ref<MatX> Mb) {
+void bodyMassMatrixInto(const BodyInertia& in, const BasisState<double>& b, const BasisProducts<double, double>* known,
+                        std::array<VecX, 9>& scratch, Eigen::Ref<MatX> Mb) {
   const int ne = in.ne, nc = in.nc();
   const VecX& c = b.c;
   Mb.setZero();
@@ -40,10 +39,8 @@ void bodyMassMatrixInto(const BodyInertia& in, const BasisState<double>& b,
     for (int j = 0; j < 3; ++j)
       for (int l = 0; l < 3; ++l) {
         VecX& yjl = scratch[3 * j + l];
-        if (finalized)
-          detail::shapeProduct(in, 3 * j + l, c, yjl);
-        else
-          detail::matvec(in.S[3 * j + l], c, len[j], len[l], yjl);
+        if (finalized) detail::shapeProduct(in, 3 * j + l, c, yjl);
+        else detail::matvec(in.S[3 * j + l], c, len[j], len[l], yjl);
         double q = 0;
         for (int p = 0; p < len[j]; ++p) q += c(p) * yjl(p);
         Q(j, l) = q;
@@ -122,8 +119,8 @@ void massMatrixAtKinematics(const Model& m, Workspace<double>& ws, MatX& M) {
     // M += Bᵀ M_b B with B = [Jb 0; 0 I] restricted to the columns the body depends on: its
     // support (Jb = [Rᵀ Jv; Rᵀ Jω], 6 × nsup) and its own elastic coordinates.
     auto Mb = s.Mb.topLeftCorner(6 + ne, 6 + ne);
-    const BasisProducts<double, double>* known =
-        ws.body_products_current && b.inertia.ne > 0 ? &ws.body_products[i] : nullptr;
+    const BasisProducts<double, double>* known = ws.body_products_current && b.inertia.ne > 0 ? &ws.body_products[i]
+                                                                                              : nullptr;
     bodyMassMatrixInto(b.inertia, ws.basis[i], known, s.y, Mb);
     const Mat3 Rt = f.R.transpose();
     auto Jb = s.Jb.leftCols(nsup);

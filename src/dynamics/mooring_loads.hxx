@@ -14,7 +14,7 @@ template <class T>
 void addMooringLoads(const Model& m, const Workspace<T>& ws, VecXT<T>& e) {
   for (const MooringLine& ln : m.mooring) {
     const FrameState<T>& f = ws.frames[ln.body];
-    const Vec3T<T> s = f.R * ln.fairlead.cast<T>();  // body origin → fairlead, ground frame
+    const Vec3T<T> s = f.R * ln.fairlead.cast<T>();    // body origin → fairlead, ground frame
     const Vec3T<T> d = f.r + s - ln.anchor.cast<T>();  // anchor → fairlead
     const Vec3T<T> F = mooringFairleadForce<T>(ln, d);
     const Vec3T<T> M = s.cross(F);

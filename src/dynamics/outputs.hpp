@@ -14,8 +14,8 @@ namespace whirl {
 /// \param[in]  frozen      induced velocities held (frozen wake) for the aerodynamic rotor outputs
 /// \param[in]  pass        an AD pass that reads only derivatives copies unmoved frames (AdPass)
 template <class T>
-void evaluateOutputs(const Model& model, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T>& qd,
-                     const VecXT<T>& qdd, VecXT<T>& y, const VecXT<T>* u = nullptr,
-                     const AeroInflow* frozen = nullptr, const AdPass& pass = {});
+void evaluateOutputs(const Model& model, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T>& qd, const VecXT<T>& qdd,
+                     VecXT<T>& y, const VecXT<T>* u = nullptr, const AeroInflow* frozen = nullptr,
+                     const AdPass& pass = {});
 
 }  // namespace whirl

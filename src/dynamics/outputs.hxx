@@ -2,8 +2,8 @@
 #include "src/dynamics/aero_loads.hpp"
 #include "src/dynamics/generator_torque.hpp"
 #include "src/dynamics/kinematics.hpp"
-#include "src/model/error.hpp"
 #include "src/dynamics/outputs.hpp"
+#include "src/model/error.hpp"
 
 namespace whirl {
 namespace detail {

@@ -10,8 +10,8 @@ namespace whirl::detail {
 /// components) at point `point` of body b (its origin when point < 0), at the kinematics in ws.
 /// Scalars: TK of the kinematics, TF of the load (TK or richer), T of the scale and of e.
 template <class TK, class TF, class T>
-void addPointForce(const Model& m, const Workspace<TK>& ws, int b, int point, const Vec3T<TF>& Fb,
-                   const Vec3T<TF>& Mb, const T& scale, VecXT<T>& e) {
+void addPointForce(const Model& m, const Workspace<TK>& ws, int b, int point, const Vec3T<TF>& Fb, const Vec3T<TF>& Mb,
+                   const T& scale, VecXT<T>& e) {
   const Body& body = m.bodies[b];
   const FrameState<TK>& f = ws.frames[b];
   const BasisState<TK>& bs = ws.basis[b];
@@ -47,8 +47,7 @@ void projectBodySums(const Model& m, const Workspace<TK>& ws, int b, const Vec3T
   const FrameState<TK>& f = ws.frames[b];
   const Mat3T<T> R = f.R.template cast<T>();
   const Vec3T<T> F = F0 + R * Fb, M = M0 + R * Mb;
-  for (int sd : m.support[b])
-    e(sd) += f.Jv.col(sd).template cast<T>().dot(F) + f.Jw.col(sd).template cast<T>().dot(M);
+  for (int sd : m.support[b]) e(sd) += f.Jv.col(sd).template cast<T>().dot(F) + f.Jw.col(sd).template cast<T>().dot(M);
   const Body& body = m.bodies[b];
   const MatXT<TK>& D = ws.basis[b].D;
   for (Eigen::Index j = 0; j < D.cols(); ++j) {
@@ -123,8 +122,8 @@ class BodyLoadSum {
   template <class TK>
   void project(const Model& m, const Workspace<TK>& ws, int b, VecXT<T>& e) const {
     projectBodySums(
-        m, ws, b, F_, M_, Fb_, Mb_, [&](Eigen::Index k) { return fk_(k); },
-        [&](Eigen::Index j) { return gtheta_(j); }, e);
+        m, ws, b, F_, M_, Fb_, Mb_, [&](Eigen::Index k) { return fk_(k); }, [&](Eigen::Index j) { return gtheta_(j); },
+        e);
   }
 
  private:

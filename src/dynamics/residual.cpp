@@ -13,10 +13,10 @@ template bool residual<ADChunk>(const Model&, Workspace<ADChunk>&, const VecXT<A
 template void addInputLoads<double, double>(const Model&, const Workspace<double>&, const VecX&, const VecX&, VecX&);
 template void addInputLoads<ADChunk, ADChunk>(const Model&, const Workspace<ADChunk>&, const VecXT<ADChunk>&,
                                               const VecXT<ADChunk>&, VecXT<ADChunk>&);
-template void addInputLoads<double, ADChunk>(const Model&, const Workspace<double>&, const VecX&,
-                                             const VecXT<ADChunk>&, VecXT<ADChunk>&);
-template void addAeroLoads<double, ADChunk>(const Model&, Workspace<double>&, const VecX&,
-                                            const VecXT<ADChunk>&, const AeroInflow*, AeroRecord*, VecXT<ADChunk>&,
-                                            std::uint64_t, RotorTotals<ADChunk>*, AeroJets*);
+template void addInputLoads<double, ADChunk>(const Model&, const Workspace<double>&, const VecX&, const VecXT<ADChunk>&,
+                                             VecXT<ADChunk>&);
+template void addAeroLoads<double, ADChunk>(const Model&, Workspace<double>&, const VecX&, const VecXT<ADChunk>&,
+                                            const AeroInflow*, AeroRecord*, VecXT<ADChunk>&, std::uint64_t,
+                                            RotorTotals<ADChunk>*, AeroJets*);
 
 }  // namespace whirl

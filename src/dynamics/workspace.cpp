@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <type_traits>
 
-#include "src/dynamics/workspace.hpp"
 #include "src/dynamics/kinematics.hxx"
+#include "src/dynamics/workspace.hpp"
 #include "src/model/scalar.hpp"
 
 namespace whirl {

@@ -79,8 +79,8 @@ struct BemRoot {
   bool valid = false;
   double vx = 0, vy = 0, theta = 0, r = 0;  ///< the values it was solved at
   double phi = 0, a = 0, ap = 0;
-  bool bem_valid = true;  ///< a BEM root; false: no bracket held one, φ geometric without induction (as AeroDyn)
-  double slope = 0;  ///< ∂R/∂φ at phi for the AD passes (aero::inflowAngle), 0 until evaluated
+  bool bem_valid = true;    ///< a BEM root; false: no bracket held one, φ geometric without induction (as AeroDyn)
+  double slope = 0;         ///< ∂R/∂φ at phi for the AD passes (aero::inflowAngle), 0 until evaluated
   double search_slope = 0;  ///< the root search's last secant slope (BemSolution::slope): the next search's first step
   /// aero::InflowRoot::flow_at_root: the double loads take φ and the polar (cl, cd, cm at φ − θ) from
   /// the root's own evaluation (aero::loadsAtRoot)
@@ -96,10 +96,10 @@ struct BemRoot {
 /// evaluated once per element instead of once per pass (aero_section.hxx).
 struct SectionJet {
   bool valid = false;
-  double vx = 0, vy = 0, theta = 0, r = 0, ax = 0, tn = 0;  ///< the values it was evaluated at
+  double vx = 0, vy = 0, theta = 0, r = 0, ax = 0, tn = 0;                   ///< the values it was evaluated at
   double phi = 0, alpha = 0, W = 0, cl = 0, cd = 0, cm = 0, cx = 0, cy = 0;  ///< values
-  double f[3] = {0, 0, 0};                                  ///< fx, fy, mz
-  double J[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};        ///< ∂(fx, fy, mz)/∂(vx, vy, θ)
+  double f[3] = {0, 0, 0};                                                   ///< fx, fy, mz
+  double J[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};                        ///< ∂(fx, fy, mz)/∂(vx, vy, θ)
 };
 
 /// One blade's aerodynamic load sums and their first derivatives with respect to the few variables
@@ -148,16 +148,16 @@ struct Workspace {
   // Scratch for the body inertia forces (sized to the largest nc). An AD pass uses the double
   // products for bodies whose own elastic coordinates are not seeded (body_forces.hxx).
   BasisProducts<T, T> prod;
-  BasisProducts<double, T> prod_dt;          ///< c double, ċ and c̈ of type T (C columns)
+  BasisProducts<double, T> prod_dt;  ///< c double, ċ and c̈ of type T (C columns)
   /// Double only (empty for AD types): per body, the stage-1 products of the last double residual.
   /// The mass matrix at that residual's kinematics reuses their position part (y = S c, c·y, m1 c);
   /// `body_products_current` says they belong to the current kinematics (forwardKinematics clears it).
   std::vector<BasisProducts<double, double>> body_products;
   bool body_products_current = false;
-  std::vector<ConstantBasis> constant_basis; ///< per body, for AD passes
-  MassScratch mass;                          ///< mass-matrix assembly (double)
-  VecXT<T> g;                 ///< Σ_k ∫ P_kᵀ (a_P)_k dm
-  VecXT<T> h;                 ///< elastic generalized inertia forces of one body (largest ne)
+  std::vector<ConstantBasis> constant_basis;  ///< per body, for AD passes
+  MassScratch mass;                           ///< mass-matrix assembly (double)
+  VecXT<T> g;                                 ///< Σ_k ∫ P_kᵀ (a_P)_k dm
+  VecXT<T> h;                                 ///< elastic generalized inertia forces of one body (largest ne)
 };
 
 /// What an AD Jacobian pass asks of forwardKinematics(), residual() and evaluateOutputs()

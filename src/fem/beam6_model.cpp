@@ -49,7 +49,8 @@ Modes6 clampedModes6(const Beam6Matrices& mats, int clamped_node, int count) {
   for (int i = 0; i < n; ++i)
     if (i / 6 != clamped_node) free.push_back(i);
   const int nf = static_cast<int>(free.size());
-  if (count < 1 || count > nf) throw ComputeError("6x6 beam modes: " + std::to_string(count) + " modes asked of " + std::to_string(nf) + " DOFs");
+  if (count < 1 || count > nf)
+    throw ComputeError("6x6 beam modes: " + std::to_string(count) + " modes asked of " + std::to_string(nf) + " DOFs");
   const MatX Kd = MatX(mats.K), Md = MatX(mats.M);
   MatX K(nf, nf), M(nf, nf);
   for (int i = 0; i < nf; ++i)

@@ -89,7 +89,8 @@ BeamModel straightBeam(const BeamStations& p, const std::vector<double>& node_x,
     e.n2 = static_cast<int>(i + 1);
     e.s1 = sectionAt(p, node_x[i]);
     e.s2 = sectionAt(p, node_x[i + 1]);
-    e.k1 = Vec3(interpolateStations(p.x, p.soil_x, node_x[i]), interpolateStations(p.x, p.soil_y, node_x[i]), interpolateStations(p.x, p.soil_z, node_x[i]));
+    e.k1 = Vec3(interpolateStations(p.x, p.soil_x, node_x[i]), interpolateStations(p.x, p.soil_y, node_x[i]),
+                interpolateStations(p.x, p.soil_z, node_x[i]));
     e.k2 = Vec3(interpolateStations(p.x, p.soil_x, node_x[i + 1]), interpolateStations(p.x, p.soil_y, node_x[i + 1]),
                 interpolateStations(p.x, p.soil_z, node_x[i + 1]));
     m.elements.push_back(e);

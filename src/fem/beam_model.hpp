@@ -19,8 +19,8 @@ extern const std::array<const char*, 6> kNodeDofNames;
 
 struct Element {
   int n1 = -1, n2 = -1;
-  Section s1, s2;            ///< sections at node 1 and node 2 (element frame), linear between
-  Vec3 y_axis = Vec3::Zero();  ///< element y axis in body axes; zero = body y projected (or body z)
+  Section s1, s2;                             ///< sections at node 1 and node 2 (element frame), linear between
+  Vec3 y_axis = Vec3::Zero();                 ///< element y axis in body axes; zero = body y projected (or body z)
   Vec3 k1 = Vec3::Zero(), k2 = Vec3::Zero();  ///< Winkler springs per length (element x, y, z) [N/m²]
 };
 
@@ -38,7 +38,7 @@ struct NodeSpring {
 };
 
 struct BeamModel {
-  std::vector<Vec3> nodes;                 ///< positions, body frame [m]
+  std::vector<Vec3> nodes;  ///< positions, body frame [m]
   std::vector<Element> elements;
   std::vector<NodeMass> masses;
   std::vector<NodeSpring> springs;

@@ -39,8 +39,6 @@ SpMat restrictTo(const SpMat& A, const DofMap& map) {
   return B;
 }
 
-std::string dofName(int full) {
-  return "n" + std::to_string(full / kNodeDofs) + " " + kNodeDofNames[full % kNodeDofs];
-}
+std::string dofName(int full) { return "n" + std::to_string(full / kNodeDofs) + " " + kNodeDofNames[full % kNodeDofs]; }
 
 }  // namespace whirl::fem

@@ -15,8 +15,8 @@ PlaneFields plane(double L, double phi, double xi) {
   PlaneFields f;
   f.N << a * (2 * x3 - 3 * x2 - phi * xi + 1 + phi), a * L * (x3 - (2 + phi / 2) * x2 + (1 + phi / 2) * xi),
       a * (-2 * x3 + 3 * x2 + phi * xi), a * L * (x3 - (1 - phi / 2) * x2 - (phi / 2) * xi);
-  f.dN << a * (6 * x2 - 6 * xi - phi) / L, a * (3 * x2 - (4 + phi) * xi + 1 + phi / 2), a * (-6 * x2 + 6 * xi + phi) / L,
-      a * (3 * x2 - (2 - phi) * xi - phi / 2);
+  f.dN << a * (6 * x2 - 6 * xi - phi) / L, a * (3 * x2 - (4 + phi) * xi + 1 + phi / 2),
+      a * (-6 * x2 + 6 * xi + phi) / L, a * (3 * x2 - (2 - phi) * xi - phi / 2);
   f.R << 6 * a * (x2 - xi) / L, a * (3 * x2 - (4 + phi) * xi + 1 + phi), -6 * a * (x2 - xi) / L,
       a * (3 * x2 - (2 - phi) * xi);
   return f;
@@ -25,9 +25,9 @@ PlaneFields plane(double L, double phi, double xi) {
 Eigen::Matrix4d planeStiffness(double L, double EI, double phi) {
   const double c = EI / ((1 + phi) * L * L * L), L2 = L * L;
   Eigen::Matrix4d k;
-  k << 12, 6 * L, -12, 6 * L,                          //
-      6 * L, (4 + phi) * L2, -6 * L, (2 - phi) * L2,   //
-      -12, -6 * L, 12, -6 * L,                         //
+  k << 12, 6 * L, -12, 6 * L,                         //
+      6 * L, (4 + phi) * L2, -6 * L, (2 - phi) * L2,  //
+      -12, -6 * L, 12, -6 * L,                        //
       6 * L, (2 - phi) * L2, -6 * L, (4 + phi) * L2;
   return c * k;
 }

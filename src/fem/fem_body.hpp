@@ -16,11 +16,11 @@ namespace whirl::fem {
 enum class ReductionKind { None, Guyan, CraigBampton };
 
 struct FemBodySpec {
-  BeamModel model;                                   ///< with its fixed DOFs
-  std::vector<std::pair<std::string, int>> points;   ///< named nodes (children, loads, interface)
+  BeamModel model;                                  ///< with its fixed DOFs
+  std::vector<std::pair<std::string, int>> points;  ///< named nodes (children, loads, interface)
   ReductionKind reduction = ReductionKind::None;
-  std::vector<int> interface_nodes;                  ///< Guyan / Craig–Bampton master nodes
-  int modes = 0;                                     ///< Craig–Bampton fixed-interface modes
+  std::vector<int> interface_nodes;  ///< Guyan / Craig–Bampton master nodes
+  int modes = 0;                     ///< Craig–Bampton fixed-interface modes
   /// A rigid interface (rigid_interface.hpp): the interface nodes tied to this point, whose six DOFs
   /// (body axes) become the body's first six coordinates, named "<rigid_interface_name> ux" … "rz",
   /// and a body point of that name. With ReductionKind::None the other free DOFs follow as they are;
@@ -34,9 +34,9 @@ struct FemBody {
   std::vector<std::string> dof_names;  ///< one per elastic coordinate (without the body name)
   DofMap map;
   Assembly assembly;
-  SpMat K, M;                          ///< free DOFs (elastic + springs), consistent mass
-  MatX basis;                          ///< free DOFs × ne
-  VecX fixed_interface_hz;             ///< Craig–Bampton: frequencies of the kept modes
+  SpMat K, M;               ///< free DOFs (elastic + springs), consistent mass
+  MatX basis;               ///< free DOFs × ne
+  VecX fixed_interface_hz;  ///< Craig–Bampton: frequencies of the kept modes
 };
 
 /// \throws InputError for an invalid model (validate()), ComputeError when a reduction fails.

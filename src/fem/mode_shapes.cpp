@@ -109,7 +109,8 @@ SpMat inplaneSoftening(const BeamModel& model, const ModeShapeInput& in) {
     for (int i = 0; i < 12; ++i)
       for (int j = 0; j < 12; ++j)
         if (k(i, j) != 0.0)
-          t.emplace_back(kNodeDofs * (i < 6 ? el.n1 : el.n2) + i % 6, kNodeDofs * (j < 6 ? el.n1 : el.n2) + j % 6, k(i, j));
+          t.emplace_back(kNodeDofs * (i < 6 ? el.n1 : el.n2) + i % 6, kNodeDofs * (j < 6 ? el.n1 : el.n2) + j % 6,
+                         k(i, j));
   }
   // The tip body's share of the same field.
   const int tip = kNodeDofs * (model.nnodes() - 1);
@@ -189,7 +190,8 @@ std::vector<BeamMode> beamModes(const ModeShapeInput& in, int count_y, int count
   if (model.elements.size() > static_cast<size_t>(limits::kMaxFemShapeMesh))
     throw InputError("mode shapes: the FE mesh has " + std::to_string(model.elements.size()) +
                      " elements (every property station is a node), more than the " +
-                     std::to_string(limits::kMaxFemShapeMesh) + " the dense eigensolver handles in seconds (src/model/limits.hpp)");
+                     std::to_string(limits::kMaxFemShapeMesh) +
+                     " the dense eigensolver handles in seconds (src/model/limits.hpp)");
   validate(model, "mode shapes");
   const bool torsion = hasTorsion(in.props);
   const Assembly a = assemble(model, false);
@@ -226,14 +228,16 @@ std::vector<BeamMode> beamModes(const ModeShapeInput& in, int count_y, int count
     const double largest = std::max(bm.table.uy.cwiseAbs().maxCoeff(), bm.table.uz.cwiseAbs().maxCoeff());
     // A clamped-free mode moves its tip; only a near-infinite tip body holds it (then no unit-tip scaling).
     if (!(std::abs(tipval) > 1e-9 * largest))
-      throw ComputeError("mode shapes: mode " + std::to_string(bm.index) + " along " + dir + " has no tip displacement");
+      throw ComputeError("mode shapes: mode " + std::to_string(bm.index) + " along " + dir +
+                         " has no tip displacement");
     scale(bm.table, 1.0 / tipval);
     out.push_back(std::move(bm));
   }
   if (found_y < count_y || found_z < count_z)
     throw ComputeError("mode shapes: the FE model has only " + std::to_string(found_y) + " bending modes along y and " +
                        std::to_string(found_z) + " along z");
-  for (BeamMode& bm : out) bm.shape = tableShape(std::string("FE ") + bm.direction + " " + std::to_string(bm.index), bm.table);
+  for (BeamMode& bm : out)
+    bm.shape = tableShape(std::string("FE ") + bm.direction + " " + std::to_string(bm.index), bm.table);
   return out;
 }
 

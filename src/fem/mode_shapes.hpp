@@ -20,34 +20,34 @@ namespace whirl::fem {
 
 /// A rigid body at the tip (a tower-top nacelle and rotor, a blade tip mass).
 struct TipBody {
-  double mass = 0;                  ///< [kg]
-  Vec3 cm = Vec3::Zero();           ///< centre of mass from the tip node, body frame [m]
-  Mat3 inertia = Mat3::Zero();      ///< inertia about the centre of mass, body axes [kg m²]
+  double mass = 0;              ///< [kg]
+  Vec3 cm = Vec3::Zero();       ///< centre of mass from the tip node, body frame [m]
+  Mat3 inertia = Mat3::Zero();  ///< inertia about the centre of mass, body axes [kg m²]
 };
 
 /// Everything the modes depend on besides the mesh.
 struct ModeShapeInput {
-  BeamProperties props;             ///< stations from 0 to L; m, EIy, EIz required; twist, GKt, jG optional
+  BeamProperties props;  ///< stations from 0 to L; m, EIy, EIz required; twist, GKt, jG optional
   TipBody tip;
   /// Rotor speed Ω [rad/s] about `rotation_axis` through the point x = −hub_radius of the body x axis
   /// (a blade on a hub): centrifugal tension N(x) = Ω² ∫ₓᴸ m (r_h + s) ds (+ tip body) stiffens bending
   /// [Branlard2019, eq. 21–27], and the in-plane direction softens by −Ω² m (the centrifugal field grows
   /// with the distance from the axis).
   double rotor_speed = 0;
-  double hub_radius = 0;            ///< [m]
+  double hub_radius = 0;               ///< [m]
   Vec3 rotation_axis = Vec3::UnitY();  ///< body frame (normalized; its x component is ignored)
   /// Gravity along −x [m/s²] (a tower): compression N(x) = −g (∫ₓᴸ m ds + tip mass), softening.
   double axial_gravity = 0;
-  int elements = 60;                ///< every property station is a node; intervals split into elements ≤ L/elements
+  int elements = 60;  ///< every property station is a node; intervals split into elements ≤ L/elements
 };
 
 /// One FE mode as a whirl shape.
 struct BeamMode {
-  char direction = 'y';             ///< dominant bending direction: 'y' or 'z'
-  int index = 1;                    ///< 1-based within its direction
-  double freq_hz = 0;               ///< FE natural frequency [Hz]; 0 when ω² < 0 (buckled by the axial load)
-  ShapeTable table;                 ///< at the FE nodes; scaled to unit tip displacement along `direction`
-  ShapePtr shape;                   ///< tableShape(table)
+  char direction = 'y';  ///< dominant bending direction: 'y' or 'z'
+  int index = 1;         ///< 1-based within its direction
+  double freq_hz = 0;    ///< FE natural frequency [Hz]; 0 when ω² < 0 (buckled by the axial load)
+  ShapeTable table;      ///< at the FE nodes; scaled to unit tip displacement along `direction`
+  ShapePtr shape;        ///< tableShape(table)
 };
 
 /// Lowest `count_y` modes dominated by bending along y and `count_z` along z (torsion-dominated

@@ -24,7 +24,8 @@ Partition partition(int n, const std::vector<int>& interface) {
   p.b = interface;
   std::vector<bool> is_b(n, false);
   for (int k : interface) {
-    if (k < 0 || k >= n || is_b[k]) throw ComputeError("reduction: interface DOF " + std::to_string(k) + " is out of range or repeated");
+    if (k < 0 || k >= n || is_b[k])
+      throw ComputeError("reduction: interface DOF " + std::to_string(k) + " is out of range or repeated");
     is_b[k] = true;
   }
   p.interior_of.assign(n, -1);
@@ -58,7 +59,9 @@ Reduction reduce(const SpMat& K, const SpMat* M, const std::vector<int>& interfa
   for (int k = 0; k < nb; ++k) boundary_of[p.b[k]] = k;
   Reduction r;
   r.interface = interface;
-  if (modes > ni) throw ComputeError("Craig–Bampton: " + std::to_string(modes) + " modes asked, the interior has " + std::to_string(ni) + " DOFs");
+  if (modes > ni)
+    throw ComputeError("Craig–Bampton: " + std::to_string(modes) + " modes asked, the interior has " +
+                       std::to_string(ni) + " DOFs");
   r.basis = MatX::Zero(n, nb + modes);
   for (int k = 0; k < nb; ++k) r.basis(p.b[k], k) = 1.0;
   if (ni == 0) return r;
@@ -66,8 +69,9 @@ Reduction reduce(const SpMat& K, const SpMat* M, const std::vector<int>& interfa
   const SpMat Kib = block(K, p.interior_of, ni, boundary_of, nb);
   Eigen::SimplicialLDLT<SpMat> ldlt(Kii);
   if (ldlt.info() != Eigen::Success || (ldlt.vectorD().array() <= 0).any())
-    throw ComputeError("reduction: the interior stiffness K_ii is singular or indefinite (is the FE body held by its "
-                       "boundary conditions and interface?)");
+    throw ComputeError(
+        "reduction: the interior stiffness K_ii is singular or indefinite (is the FE body held by its "
+        "boundary conditions and interface?)");
   const MatX psi = -ldlt.solve(MatX(Kib));
   for (int k = 0; k < ni; ++k) r.basis.row(p.i[k]).head(nb) = psi.row(k);
   if (modes == 0) return r;
@@ -90,7 +94,8 @@ Reduction reduce(const SpMat& K, const SpMat* M, const std::vector<int>& interfa
 
 GeneralizedModes denseModes(const SpMat& K, const SpMat& M, int count) {
   const int n = static_cast<int>(K.rows());
-  if (K.cols() != n || M.rows() != n || M.cols() != n) throw ComputeError("denseModes: K and M must be square and of one size");
+  if (K.cols() != n || M.rows() != n || M.cols() != n)
+    throw ComputeError("denseModes: K and M must be square and of one size");
   count = std::min(count, n);
   if (count <= 0) return {VecX(), MatX(n, 0)};
   MatX A = MatX(K), B = MatX(M);

@@ -28,9 +28,9 @@ using ModalSolver = std::function<GeneralizedModes(const SpMat& K, const SpMat& 
 GeneralizedModes denseModes(const SpMat& K, const SpMat& M, int count);
 
 struct Reduction {
-  MatX basis;                    ///< n × (interface + modes)
-  std::vector<int> interface;    ///< free indices of the interface DOFs (basis columns 0..)
-  VecX fixed_interface_omega2;   ///< ω² of the kept fixed-interface modes [rad²/s²]
+  MatX basis;                   ///< n × (interface + modes)
+  std::vector<int> interface;   ///< free indices of the interface DOFs (basis columns 0..)
+  VecX fixed_interface_omega2;  ///< ω² of the kept fixed-interface modes [rad²/s²]
 };
 
 /// \param interface free indices of the interface DOFs (distinct).

@@ -37,9 +37,9 @@ Section6 lerp6(const Section6& a, const Section6& b, double t);
 
 /// Mass, mass-centre offset and inertia about the mass centre of a mass matrix 𝓜 = [m 1, −m c̃; m c̃, J].
 struct SectionMass {
-  double m = 0;             ///< [kg/m]
-  Vec3 c = Vec3::Zero();    ///< mass centre from the reference axis [m]
-  Mat3 J_cm = Mat3::Zero(); ///< inertia about the mass centre [kg m]: J − m (|c|² 1 − c cᵀ)
+  double m = 0;              ///< [kg/m]
+  Vec3 c = Vec3::Zero();     ///< mass centre from the reference axis [m]
+  Mat3 J_cm = Mat3::Zero();  ///< inertia about the mass centre [kg m]: J − m (|c|² 1 − c cᵀ)
 };
 SectionMass sectionMass(const Mat6s& M);
 

@@ -18,14 +18,14 @@ struct FlexibleBeam {
 };
 
 struct ShapeComparison {
-  std::string body, shape;      ///< body and current shape names
-  char direction = 'y';         ///< dominant direction of the current shape (its larger tip component)
-  int index = 1;                ///< its order among the body's shapes of that direction (1-based)
-  double freq_hz = 0;           ///< FE frequency of that mode [Hz]
-  PolynomialFit fit;            ///< of the FE mode, in its direction
-  double mac = 0;               ///< MAC of the FE mode and the current shape (both components)
-  double max_deviation = 0;     ///< max |FE − current| over the span, both scaled to +1 tip [m per unit]
-  BeamMode mode;                ///< the FE mode itself
+  std::string body, shape;   ///< body and current shape names
+  char direction = 'y';      ///< dominant direction of the current shape (its larger tip component)
+  int index = 1;             ///< its order among the body's shapes of that direction (1-based)
+  double freq_hz = 0;        ///< FE frequency of that mode [Hz]
+  PolynomialFit fit;         ///< of the FE mode, in its direction
+  double mac = 0;            ///< MAC of the FE mode and the current shape (both components)
+  double max_deviation = 0;  ///< max |FE − current| over the span, both scaled to +1 tip [m per unit]
+  BeamMode mode;             ///< the FE mode itself
 };
 
 /// One row per bending shape of `beam` (shapes with no tip displacement, e.g. torsion, are skipped);

@@ -57,7 +57,8 @@ void keepUserPropZero(const AeroDynInput& ad, std::vector<AirfoilInput>& airfoil
       throw InputError(where(airfoils[i].path.string(), tabs.front().re_line, "UserProp",
                              "AFTabMod = 3 (" + ad.source.path().filename().string() +
                                  ") interpolates the tables at UserProp = 0, and none of this file's " +
-                                 std::to_string(tabs.size()) + " tables has UserProp = 0: interpolating between "
+                                 std::to_string(tabs.size()) +
+                                 " tables has UserProp = 0: interpolating between "
                                  "tables is not modelled; add a table at UserProp = 0 or use AFTabMod = 1"));
     tabs = {*zero};
   }
@@ -97,7 +98,8 @@ AeroDeckInput readAeroDeck(const FstInput& fst, OverrideSet* overrides) {
   const AeroDynInput& ad = deck.aerodyn;
   if (v14) {
     deck.blades.assign(3, bladeFromV14(*v14));  // one element table serves every blade
-    deck.airfoils = readAirfoils(ad, "FoilNm", [&](const std::filesystem::path& p) { return readAirfoil14(p, v14->UseCm); });
+    deck.airfoils = readAirfoils(ad, "FoilNm",
+                                 [&](const std::filesystem::path& p) { return readAirfoil14(p, v14->UseCm); });
     if (std::optional<std::string> note = multipleTables(*v14, deck.airfoils)) deck.notes.push_back(std::move(*note));
     if (v14->MultiTab == "RENUM") deck.reynolds = aero::ReynoldsInterp::Linear;
     return deck;

@@ -22,7 +22,7 @@ struct AeroDeckInput {
   /// How the airfoils' tables are interpolated on the Reynolds number: AFTabMod = 2 (log Re), AeroDyn
   /// v14 MultiTab = RENUM (Re), else the first table only.
   aero::ReynoldsInterp reynolds = aero::ReynoldsInterp::None;
-  InflowWindInput inflow;                 ///< InflowWind file
+  InflowWindInput inflow;  ///< InflowWind file
   /// Time-domain options replaced by their steady counterpart (aero_support.hpp steadySubstitutes),
   /// one "file:line: key: value: what whirl does instead" each.
   std::vector<std::string> notes;

@@ -74,8 +74,14 @@ std::vector<std::string> steadySubstitutes(const AeroDynInput& ad) {
 namespace {
 
 const char* windTypeName(int type) {
-  static const char* names[] = {"", "steady", "uniform wind file", "TurbSim full field", "Bladed-style full field",
-                                "HAWC full field", "user-defined wind", "native Bladed full field"};
+  static const char* names[] = {"",
+                                "steady",
+                                "uniform wind file",
+                                "TurbSim full field",
+                                "Bladed-style full field",
+                                "HAWC full field",
+                                "user-defined wind",
+                                "native Bladed full field"};
   return type >= 1 && type <= 7 ? names[type] : nullptr;
 }
 

@@ -33,7 +33,7 @@ struct AeroDynBladeInput {
   /// its loads being the centre values times the width (midpoint rule). Empty for v15 files, whose nodes
   /// start at the blade root and carry trapezoid weights.
   std::vector<double> element_width;
-  std::vector<int> row_lines;    ///< file line of each station
+  std::vector<int> row_lines;  ///< file line of each station
 };
 
 /// Reads an AeroDyn blade file. Checks: NumBlNds >= 2, exactly NumBlNds rows (fewer = truncated), the

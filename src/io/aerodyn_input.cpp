@@ -29,7 +29,8 @@ std::string oneOf(const OpenFastFile& f, const char* current, const char* legacy
     throw InputError(f.where(current, std::string("cannot have both ") + current + " and its legacy spelling " +
                                           legacy + " (line " + std::to_string(f.find(legacy)->line) + ")"));
   if (!has_current && !has_legacy)
-    throw InputError(f.where(current, std::string("key not found in this file (nor its legacy spelling ") + legacy + ")"));
+    throw InputError(
+        f.where(current, std::string("key not found in this file (nor its legacy spelling ") + legacy + ")"));
   return has_current ? current : legacy;
 }
 
@@ -62,8 +63,9 @@ void readWake(const OpenFastFile& f, AeroDynInput& a) {
   if (f.has("tau1_const")) a.tau1_const = f.getDoubleOrDefault("tau1_const");
   if ((a.DBEMT_Mod == 1 || a.DBEMT_Mod == 3) && a.Wake_Mod == 1) {
     if (!a.tau1_const)
-      throw InputError(f.where(f.has("tau1_const") ? "tau1_const" : a.dbemt_key,
-                               "DBEMT_Mod " + std::to_string(a.DBEMT_Mod) + " needs tau1_const (a time constant in s)"));
+      throw InputError(
+          f.where(f.has("tau1_const") ? "tau1_const" : a.dbemt_key,
+                  "DBEMT_Mod " + std::to_string(a.DBEMT_Mod) + " needs tau1_const (a time constant in s)"));
     if (!(*a.tau1_const > 0.0))
       throw InputError(f.where("tau1_const", "must be > 0 with DBEMT_Mod " + std::to_string(a.DBEMT_Mod) + " (is " +
                                                  numberText(*a.tau1_const) + ")"));
@@ -154,8 +156,9 @@ DistributedTable readTower(const OpenFastFile& f, const OpenFastLines& lines, in
                                                       : std::string("the file ends")) +
                                                 " (truncated table?)"));
     if (row->size() < t.names.size())
-      throw InputError(where(t.file, *next, "", "row has " + std::to_string(row->size()) + " numbers, the tower table has " +
-                                                    std::to_string(t.names.size()) + " columns"));
+      throw InputError(where(t.file, *next, "",
+                             "row has " + std::to_string(row->size()) + " numbers, the tower table has " +
+                                 std::to_string(t.names.size()) + " columns"));
     for (std::size_t c = 0; c < t.names.size(); ++c) {
       const double v = (*row)[c];
       if (!std::isfinite(v))

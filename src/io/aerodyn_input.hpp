@@ -93,23 +93,23 @@ struct AeroDynInput {
   bool AoA34 = true;  ///< angle of attack at 3/4 chord (`AoA34`, OpenFAST v4+; true when absent)
 
   // ---- other physics switches (0 / false = off) ----
-  int TwrPotent = 0;        ///< tower potential flow {0 none, 1 baseline, 2 Bak correction}
-  int TwrShadow = 0;        ///< tower shadow {0 none, 1 Powles, 2 Eames}; a v15.0x True reads as 1
-  bool TwrAero = false;     ///< tower drag loads
-  bool Buoyancy = false;    ///< buoyancy (OpenFAST v3.2–v4.x key)
-  bool CavitCheck = false;  ///< cavitation check
-  bool CompAA = false;      ///< aeroacoustics
-  bool NacelleDrag = false; ///< nacelle drag (v4+)
-  bool SectAvg = false;     ///< sector-averaged inflow (v4+)
-  bool TFinAero = false;    ///< tail-fin aerodynamics (v3.2+)
-  int BEM_Mod = 1;          ///< BEM formulation {1 legacy (no sweep/pitch/twist), 2 polar}; 1 when absent (v15)
+  int TwrPotent = 0;         ///< tower potential flow {0 none, 1 baseline, 2 Bak correction}
+  int TwrShadow = 0;         ///< tower shadow {0 none, 1 Powles, 2 Eames}; a v15.0x True reads as 1
+  bool TwrAero = false;      ///< tower drag loads
+  bool Buoyancy = false;     ///< buoyancy (OpenFAST v3.2–v4.x key)
+  bool CavitCheck = false;   ///< cavitation check
+  bool CompAA = false;       ///< aeroacoustics
+  bool NacelleDrag = false;  ///< nacelle drag (v4+)
+  bool SectAvg = false;      ///< sector-averaged inflow (v4+)
+  bool TFinAero = false;     ///< tail-fin aerodynamics (v3.2+)
+  int BEM_Mod = 1;           ///< BEM formulation {1 legacy (no sweep/pitch/twist), 2 polar}; 1 when absent (v15)
 
   // ---- environment (resolved: "default" → AeroDynEnvironment) ----
-  double AirDens = 1.225;      ///< air density (kg/m³), > 0
-  double KinVisc = 1.464e-5;   ///< kinematic viscosity (m²/s), > 0
-  double SpdSound = 335.0;     ///< speed of sound (m/s)
-  double Patm = 103500.0;      ///< atmospheric pressure (Pa)
-  double Pvap = 1700.0;        ///< vapour pressure (Pa)
+  double AirDens = 1.225;        ///< air density (kg/m³), > 0
+  double KinVisc = 1.464e-5;     ///< kinematic viscosity (m²/s), > 0
+  double SpdSound = 335.0;       ///< speed of sound (m/s)
+  double Patm = 103500.0;        ///< atmospheric pressure (Pa)
+  double Pvap = 1700.0;          ///< vapour pressure (Pa)
   bool AirDens_default = false;  ///< AirDens was "default" (or absent)
   bool KinVisc_default = false;  ///< KinVisc was "default" (or absent)
 
@@ -117,28 +117,32 @@ struct AeroDynInput {
   SkewModel skew = SkewModel::Active;
   std::string skew_key = "SkewMod";  ///< key the skew model was read from ("SkewMod" or "Skew_Mod")
   double SkewModFactor = 15.0 * 3.14159265358979323846 / 32.0;  ///< Pitt/Peters constant (-), "default" = 15π/32
-  int SkewRedistr_Mod = 1;      ///< {0 no redistribution, 1 Glauert/Pitt–Peters}; v15: 1 when SkewMod = 2, else 0
-  bool SkewMomCorr = false;     ///< skew momentum correction (v4+)
-  bool TipLoss = true;          ///< Prandtl tip loss
-  bool HubLoss = true;          ///< Prandtl hub loss
-  bool TanInd = true;           ///< tangential induction
-  bool AIDrag = true;           ///< drag term in the axial induction
-  bool TIDrag = true;           ///< drag term in the tangential induction
-  std::optional<double> IndToler;  ///< BEMT residual tolerance (-), > 0; nullopt = "default" (OpenFAST: 5e-5 single, 5e-10 double)
-  int MaxIter = 100;            ///< BEMT iteration limit, >= 1
+  int SkewRedistr_Mod = 1;   ///< {0 no redistribution, 1 Glauert/Pitt–Peters}; v15: 1 when SkewMod = 2, else 0
+  bool SkewMomCorr = false;  ///< skew momentum correction (v4+)
+  bool TipLoss = true;       ///< Prandtl tip loss
+  bool HubLoss = true;       ///< Prandtl hub loss
+  bool TanInd = true;        ///< tangential induction
+  bool AIDrag = true;        ///< drag term in the axial induction
+  bool TIDrag = true;        ///< drag term in the tangential induction
+  std::optional<double>
+      IndToler;       ///< BEMT residual tolerance (-), > 0; nullopt = "default" (OpenFAST: 5e-5 single, 5e-10 double)
+  int MaxIter = 100;  ///< BEMT iteration limit, >= 1
 
   // ---- airfoils ----
-  int AFTabMod = 1;             ///< {1 first table only, 2 2-D on Re, 3 2-D on UserProp}; 1 when absent
-  AirfoilColumns InCol;         ///< InCol_Alfa, InCol_Cl, InCol_Cd, InCol_Cm (0 = no Cm column)
-  int InCol_Cpmin = 0;          ///< Cpmin column, 0 = none
-  std::vector<std::filesystem::path> AFNames;  ///< airfoil files (resolved against this file's folder), NumAFfiles of them
-  std::vector<int> AFNames_lines;              ///< file line of each name
-  bool UseBlCm = true;          ///< include the pitching moment
+  int AFTabMod = 1;      ///< {1 first table only, 2 2-D on Re, 3 2-D on UserProp}; 1 when absent
+  AirfoilColumns InCol;  ///< InCol_Alfa, InCol_Cl, InCol_Cd, InCol_Cm (0 = no Cm column)
+  int InCol_Cpmin = 0;   ///< Cpmin column, 0 = none
+  std::vector<std::filesystem::path>
+      AFNames;                     ///< airfoil files (resolved against this file's folder), NumAFfiles of them
+  std::vector<int> AFNames_lines;  ///< file line of each name
+  bool UseBlCm = true;             ///< include the pitching moment
 
   // ---- blades and tower ----
-  std::vector<std::filesystem::path> ADBlFile;  ///< blade file of ADBlFile(1), (2), (3) as present (resolved, not checked)
-  int NumTwrNds = 0;            ///< tower nodes
-  DistributedTable tower;       ///< TwrElev, TwrDiam, TwrCd [, TwrTI, TwrCb, TwrCp, TwrCa] as in the file; empty when NumTwrNds = 0
+  std::vector<std::filesystem::path>
+      ADBlFile;       ///< blade file of ADBlFile(1), (2), (3) as present (resolved, not checked)
+  int NumTwrNds = 0;  ///< tower nodes
+  DistributedTable
+      tower;  ///< TwrElev, TwrDiam, TwrCd [, TwrTI, TwrCb, TwrCp, TwrCa] as in the file; empty when NumTwrNds = 0
 };
 
 /// Reads an AeroDyn v15 main file (any layout above); `env` gives what "default" environment values

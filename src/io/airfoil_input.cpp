@@ -47,8 +47,10 @@ const OpenFastEntry* entryAfter(const OpenFastFile& f, std::string_view key, int
 /// in UA_CalcContStateDeriv). The first violation, "file:line: key: reason", or empty. Not an error here:
 /// AeroDyn validates only the airfoils UA runs on (a cylinder's table may hold zeros: certtest Test10).
 std::string uaProblem(const OpenFastFile& t, const AirfoilUAData& ua) {
-  const std::pair<const char*, const std::optional<double>*> positive[] = {
-      {"T_f0", &ua.T_f0}, {"T_V0", &ua.T_V0}, {"T_p", &ua.T_p}, {"T_VL", &ua.T_VL}};
+  const std::pair<const char*, const std::optional<double>*> positive[] = {{"T_f0", &ua.T_f0},
+                                                                           {"T_V0", &ua.T_V0},
+                                                                           {"T_p", &ua.T_p},
+                                                                           {"T_VL", &ua.T_VL}};
   for (const auto& [key, v] : positive)
     if (*v && !(**v > 0.0)) return t.where(key, "must be > 0 (is " + numberText(**v) + ")");
   if (ua.alpha0 && std::abs(*ua.alpha0) > 180.0)
@@ -62,24 +64,42 @@ void readUa(const OpenFastFile& t, AirfoilUAData& ua) {
     std::optional<double> AirfoilUAData::*member;
   };
   static const Field fields[] = {
-      {"alpha0", &AirfoilUAData::alpha0},       {"alpha1", &AirfoilUAData::alpha1},
-      {"alpha2", &AirfoilUAData::alpha2},       {"alphaUpper", &AirfoilUAData::alphaUpper},
-      {"alphaLower", &AirfoilUAData::alphaLower}, {"eta_e", &AirfoilUAData::eta_e},
-      {"C_nalpha", &AirfoilUAData::C_nalpha},   {"C_lalpha", &AirfoilUAData::C_lalpha},
-      {"T_f0", &AirfoilUAData::T_f0},           {"T_V0", &AirfoilUAData::T_V0},
-      {"T_p", &AirfoilUAData::T_p},             {"T_VL", &AirfoilUAData::T_VL},
-      {"b1", &AirfoilUAData::b1},               {"b2", &AirfoilUAData::b2},
-      {"b5", &AirfoilUAData::b5},               {"A1", &AirfoilUAData::A1},
-      {"A2", &AirfoilUAData::A2},               {"A5", &AirfoilUAData::A5},
-      {"S1", &AirfoilUAData::S1},               {"S2", &AirfoilUAData::S2},
-      {"S3", &AirfoilUAData::S3},               {"S4", &AirfoilUAData::S4},
-      {"Cn1", &AirfoilUAData::Cn1},             {"Cn2", &AirfoilUAData::Cn2},
-      {"St_sh", &AirfoilUAData::St_sh},         {"Cd0", &AirfoilUAData::Cd0},
-      {"Cm0", &AirfoilUAData::Cm0},             {"k0", &AirfoilUAData::k0},
-      {"k1", &AirfoilUAData::k1},               {"k2", &AirfoilUAData::k2},
-      {"k3", &AirfoilUAData::k3},               {"k1_hat", &AirfoilUAData::k1_hat},
-      {"x_cp_bar", &AirfoilUAData::x_cp_bar},   {"UACutout", &AirfoilUAData::UACutout},
-      {"UACutout_delta", &AirfoilUAData::UACutout_delta}, {"filtCutOff", &AirfoilUAData::filtCutOff},
+      {"alpha0", &AirfoilUAData::alpha0},
+      {"alpha1", &AirfoilUAData::alpha1},
+      {"alpha2", &AirfoilUAData::alpha2},
+      {"alphaUpper", &AirfoilUAData::alphaUpper},
+      {"alphaLower", &AirfoilUAData::alphaLower},
+      {"eta_e", &AirfoilUAData::eta_e},
+      {"C_nalpha", &AirfoilUAData::C_nalpha},
+      {"C_lalpha", &AirfoilUAData::C_lalpha},
+      {"T_f0", &AirfoilUAData::T_f0},
+      {"T_V0", &AirfoilUAData::T_V0},
+      {"T_p", &AirfoilUAData::T_p},
+      {"T_VL", &AirfoilUAData::T_VL},
+      {"b1", &AirfoilUAData::b1},
+      {"b2", &AirfoilUAData::b2},
+      {"b5", &AirfoilUAData::b5},
+      {"A1", &AirfoilUAData::A1},
+      {"A2", &AirfoilUAData::A2},
+      {"A5", &AirfoilUAData::A5},
+      {"S1", &AirfoilUAData::S1},
+      {"S2", &AirfoilUAData::S2},
+      {"S3", &AirfoilUAData::S3},
+      {"S4", &AirfoilUAData::S4},
+      {"Cn1", &AirfoilUAData::Cn1},
+      {"Cn2", &AirfoilUAData::Cn2},
+      {"St_sh", &AirfoilUAData::St_sh},
+      {"Cd0", &AirfoilUAData::Cd0},
+      {"Cm0", &AirfoilUAData::Cm0},
+      {"k0", &AirfoilUAData::k0},
+      {"k1", &AirfoilUAData::k1},
+      {"k2", &AirfoilUAData::k2},
+      {"k3", &AirfoilUAData::k3},
+      {"k1_hat", &AirfoilUAData::k1_hat},
+      {"x_cp_bar", &AirfoilUAData::x_cp_bar},
+      {"UACutout", &AirfoilUAData::UACutout},
+      {"UACutout_delta", &AirfoilUAData::UACutout_delta},
+      {"filtCutOff", &AirfoilUAData::filtCutOff},
   };
   for (const Field& fd : fields)
     if (t.has(fd.key)) ua.*fd.member = t.getDoubleOrDefault(fd.key);
@@ -96,24 +116,28 @@ void readRows(const OpenFastLines& lines, const OpenFastFile& t, int num_alf, in
     const std::optional<int> next = lines.nextContentLine(at);
     const std::string got = "table has " + std::to_string(r) + " rows, " + std::to_string(num_alf) + " expected: ";
     if (!next)
-      throw InputError(t.where("NumAlf", got + "the file ends at line " + std::to_string(lines.count()) +
-                                             " (truncated table?)"));
+      throw InputError(
+          t.where("NumAlf", got + "the file ends at line " + std::to_string(lines.count()) + " (truncated table?)"));
     const std::optional<std::vector<double>> row = parseNumberRow(lines.line(*next));
     if (!row)
-      throw InputError(t.where("NumAlf", got + "line " + std::to_string(*next) +
-                                             " is not a row of numbers (truncated table?)"));
+      throw InputError(
+          t.where("NumAlf", got + "line " + std::to_string(*next) + " is not a row of numbers (truncated table?)"));
     if (static_cast<int>(row->size()) < needed)
       throw InputError(whirl::where(file, *next, "",
-                                    "row has " + std::to_string(row->size()) + " numbers, the columns asked for "
-                                    "(InCol_Alfa/Cl/Cd/Cm = " + std::to_string(col.alpha) + "/" +
-                                        std::to_string(col.cl) + "/" + std::to_string(col.cd) + "/" +
-                                        std::to_string(col.cm) + ") need " + std::to_string(needed)));
+                                    "row has " + std::to_string(row->size()) +
+                                        " numbers, the columns asked for "
+                                        "(InCol_Alfa/Cl/Cd/Cm = " +
+                                        std::to_string(col.alpha) + "/" + std::to_string(col.cl) + "/" +
+                                        std::to_string(col.cd) + "/" + std::to_string(col.cm) + ") need " +
+                                        std::to_string(needed)));
     struct Pick {
       int column;
       const char* name;
       std::vector<double>* into;
     };
-    const Pick picks[] = {{col.alpha, "Alpha", &tab.alpha_deg}, {col.cl, "Cl", &tab.cl}, {col.cd, "Cd", &tab.cd},
+    const Pick picks[] = {{col.alpha, "Alpha", &tab.alpha_deg},
+                          {col.cl, "Cl", &tab.cl},
+                          {col.cd, "Cd", &tab.cd},
                           {col.cm, "Cm", &tab.cm}};
     for (const Pick& p : picks) {
       if (p.column <= 0) continue;
@@ -164,8 +188,8 @@ AirfoilInput readAirfoil(const std::filesystem::path& file, const AirfoilColumns
   checkColumns(file, columns);
   const OpenFastLines lines = OpenFastLines::read(file);
   if (lines.count() > 0 && !isCommentLine(lines.line(1)) && !isBlankLine(lines.line(1)))
-    throw InputError(whirl::where(file.string(), 1, "",
-                                  "the first line of an airfoil file must be a comment (starting with '!')"));
+    throw InputError(
+        whirl::where(file.string(), 1, "", "the first line of an airfoil file must be a comment (starting with '!')"));
   const OpenFastFile f = OpenFastFile::parse(keepLines(lines, 1, lines.count(), true), file);
   f.checkLayout(airfoilLayout());
 
@@ -200,8 +224,8 @@ AirfoilInput readAirfoil(const std::filesystem::path& file, const AirfoilColumns
     const OpenFastEntry* re = entryAfter(f, "Re", cursor);
     const std::string announced = std::to_string(num_tabs) + " tables announced, ";
     if (!re)
-      throw InputError(f.where("NumTabs", announced + "no 'Re' line for table " + std::to_string(t) +
-                                              " after line " + std::to_string(cursor) + " (truncated file?)"));
+      throw InputError(f.where("NumTabs", announced + "no 'Re' line for table " + std::to_string(t) + " after line " +
+                                              std::to_string(cursor) + " (truncated file?)"));
     const OpenFastEntry* num_alf = entryAfter(f, "NumAlf", re->line);
     if (!num_alf)
       throw InputError(whirl::where(file.string(), re->line, "NumAlf",

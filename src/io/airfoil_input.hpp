@@ -57,9 +57,9 @@ struct AirfoilUAData {
 
 /// One coefficient table of an airfoil file.
 struct AirfoilTable {
-  double re = 0.0;         ///< Reynolds number (millions), `Re`
-  double user_prop = 0.0;  ///< user property (control setting), `UserProp` or `Ctrl`
-  AirfoilUAData ua;        ///< unsteady-aero constants (not used by whirl)
+  double re = 0.0;                ///< Reynolds number (millions), `Re`
+  double user_prop = 0.0;         ///< user property (control setting), `UserProp` or `Ctrl`
+  AirfoilUAData ua;               ///< unsteady-aero constants (not used by whirl)
   std::vector<double> alpha_deg;  ///< angle of attack (deg), strictly increasing
   std::vector<double> cl;         ///< lift coefficient (-)
   std::vector<double> cd;         ///< drag coefficient (-)
@@ -72,16 +72,16 @@ struct AirfoilTable {
 
 /// An airfoil file.
 struct AirfoilInput {
-  std::string name;             ///< file name without folder and extension, e.g. "DU21_A17"
-  std::filesystem::path path;   ///< the file read
-  int interp_order = 1;         ///< `InterpOrd`: 1 linear, 3 cubic spline ("default" = 1, as OpenFAST)
-  bool interp_order_default = false;     ///< true when the file says "default"
-  std::optional<double> rel_thickness;   ///< `RelThickness` (-), OpenFAST v4+; nullopt when absent/default
-  double non_dim_area = 1.0;             ///< `NonDimArea`, area / chord² (unused by AeroDyn)
-  std::optional<int> num_coords;         ///< `NumCoords` when a number (coordinates follow inline, not kept)
+  std::string name;                     ///< file name without folder and extension, e.g. "DU21_A17"
+  std::filesystem::path path;           ///< the file read
+  int interp_order = 1;                 ///< `InterpOrd`: 1 linear, 3 cubic spline ("default" = 1, as OpenFAST)
+  bool interp_order_default = false;    ///< true when the file says "default"
+  std::optional<double> rel_thickness;  ///< `RelThickness` (-), OpenFAST v4+; nullopt when absent/default
+  double non_dim_area = 1.0;            ///< `NonDimArea`, area / chord² (unused by AeroDyn)
+  std::optional<int> num_coords;        ///< `NumCoords` when a number (coordinates follow inline, not kept)
   std::optional<std::filesystem::path> coords_file;  ///< `NumCoords` given as @"file" (resolved, not read)
-  std::optional<std::string> bl_file;    ///< `BL_file` as written (aeroacoustics only), absent in older files
-  std::vector<AirfoilTable> tables;      ///< `NumTabs` tables, in file order
+  std::optional<std::string> bl_file;  ///< `BL_file` as written (aeroacoustics only), absent in older files
+  std::vector<AirfoilTable> tables;    ///< `NumTabs` tables, in file order
 };
 
 /// Reads an airfoil file, taking α, Cl, Cd and Cm from the columns `columns` gives.

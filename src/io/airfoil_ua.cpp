@@ -79,8 +79,7 @@ aero::UaTable airfoilUa(const AirfoilInput& af, std::size_t table, int ua_mod) {
   if (!t.ua.invalid.empty()) throw InputError(t.ua.invalid);  // UA runs on it: AeroDyn's UA_ValidateAFI
   std::vector<double> alpha(t.alpha_deg.size());
   for (std::size_t k = 0; k < alpha.size(); ++k) alpha[k] = t.alpha_deg[k] * std::numbers::pi / 180.0;
-  const aero::PolarInterp interp =
-      af.interp_order == 3 ? aero::PolarInterp::CubicSpline : aero::PolarInterp::Linear;
+  const aero::PolarInterp interp = af.interp_order == 3 ? aero::PolarInterp::CubicSpline : aero::PolarInterp::Linear;
   // InclUAdata false: AeroDyn computes every constant (ReadAFfile sets InclUAdata and all defaults).
   const aero::UaGiven given = t.ua.included ? uaGiven(t.ua) : aero::UaGiven{};
   return aero::uaTable(given, alpha, t.cl, t.cd, t.cm, interp, ua_mod, source);

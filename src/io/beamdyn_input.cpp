@@ -45,17 +45,19 @@ class Rows {
 
   // Exactly `n` numbers on line `ln` (words after them are a comment, as Fortran's list read skips them).
   std::vector<double> numbers(int ln, int n, const std::string& key, const std::string& what) const {
-    if (ln > lines_.count())
-      throw InputError(where(ln, key, "the file ends before " + what + " (truncated file?)"));
+    if (ln > lines_.count()) throw InputError(where(ln, key, "the file ends before " + what + " (truncated file?)"));
     const std::vector<std::string> w = splitWords(lines_.line(ln));
     if (static_cast<int>(w.size()) < n)
-      throw InputError(where(ln, key, "expected " + std::to_string(n) + " numbers (" + what + "), found " +
-                                          std::to_string(w.size()) + " words"));
+      throw InputError(where(ln, key,
+                             "expected " + std::to_string(n) + " numbers (" + what + "), found " +
+                                 std::to_string(w.size()) + " words"));
     std::vector<double> v(static_cast<std::size_t>(n));
     for (int k = 0; k < n; ++k) {
       const std::optional<double> x = parseFortranDouble(w[static_cast<std::size_t>(k)]);
-      if (!x) throw InputError(where(ln, key, "'" + w[static_cast<std::size_t>(k)] + "' is not a number (" + what + ")"));
-      if (!std::isfinite(*x)) throw InputError(where(ln, key, "'" + w[static_cast<std::size_t>(k)] + "' is not finite"));
+      if (!x)
+        throw InputError(where(ln, key, "'" + w[static_cast<std::size_t>(k)] + "' is not a number (" + what + ")"));
+      if (!std::isfinite(*x))
+        throw InputError(where(ln, key, "'" + w[static_cast<std::size_t>(k)] + "' is not finite"));
       v[static_cast<std::size_t>(k)] = *x;
     }
     return v;
@@ -85,8 +87,9 @@ void checkOnce(const OpenFastFile& f, std::initializer_list<const char*> keys) {
 Mat6d matrix6(const Rows& rows, int ln, const std::string& key, int station) {
   Mat6d A;
   for (int i = 0; i < 6; ++i) {
-    const std::vector<double> v = rows.numbers(ln + i, 6, key, "row " + std::to_string(i + 1) + " of station " +
-                                                                   std::to_string(station) + "'s " + key);
+    const std::vector<double> v = rows.numbers(ln + i, 6, key,
+                                               "row " + std::to_string(i + 1) + " of station " +
+                                                   std::to_string(station) + "'s " + key);
     for (int j = 0; j < 6; ++j) A(i, j) = v[static_cast<std::size_t>(j)];
   }
   return A;
@@ -102,9 +105,9 @@ Mat6d checkedSymmetric(const Rows& rows, const Mat6d& A, int ln, const std::stri
       if (std::abs(a - b) > std::max(1e-5 * std::max(std::abs(a), std::abs(b)), 1e-9 * scale))
         throw InputError(rows.where(ln, key,
                                     "station " + std::to_string(station) + ": not symmetric, entry (" +
-                                        std::to_string(i + 1) + "," + std::to_string(j + 1) + ") = " + std::to_string(a) +
-                                        " but (" + std::to_string(j + 1) + "," + std::to_string(i + 1) +
-                                        ") = " + std::to_string(b)));
+                                        std::to_string(i + 1) + "," + std::to_string(j + 1) +
+                                        ") = " + std::to_string(a) + " but (" + std::to_string(j + 1) + "," +
+                                        std::to_string(i + 1) + ") = " + std::to_string(b)));
     }
   return 0.5 * (A + A.transpose());
 }
@@ -122,8 +125,9 @@ BeamDynStation readStation(const Rows& rows, int ln, int index) {
                                     "): not positive definite (every strain must take energy)"));
   if (!(s.M(0, 0) > 0) || s.M(1, 1) != s.M(0, 0) || s.M(2, 2) != s.M(0, 0))
     throw InputError(rows.where(ln + 8, "mass_matrix",
-                                "station " + st + ": the first three diagonal entries must be the same positive mass "
-                                                  "per length"));
+                                "station " + st +
+                                    ": the first three diagonal entries must be the same positive mass "
+                                    "per length"));
   const Eigen::SelfAdjointEigenSolver<Mat6d> eig(s.M, Eigen::EigenvaluesOnly);
   if (eig.eigenvalues().minCoeff() < -1e-9 * s.M.diagonal().maxCoeff())
     throw InputError(rows.where(ln + 8, "mass_matrix",
@@ -197,7 +201,8 @@ BeamDynInput readBeamDyn(const std::filesystem::path& file, OverrideSet* overrid
   checkOnce(f, {"quadrature", "refine", "member_total", "kp_total", "order_elem", "BldFile", "UsePitchAct"});
   const Rows rows(f, lines);
   in.quadrature = f.getInt("quadrature");
-  if (in.quadrature != 1 && in.quadrature != 2) throw InputError(f.where("quadrature", "must be 1 (Gauss) or 2 (trapezoidal)"));
+  if (in.quadrature != 1 && in.quadrature != 2)
+    throw InputError(f.where("quadrature", "must be 1 (Gauss) or 2 (trapezoidal)"));
   in.refine = f.findIntOr("refine", 1).value_or(1);
   if (in.refine < 1) throw InputError(f.where("refine", "must be at least 1"));
   const int members = rows.count("member_total", 1, limits::kMaxFemElements, "BeamDyn");
@@ -209,14 +214,16 @@ BeamDynInput readBeamDyn(const std::filesystem::path& file, OverrideSet* overrid
     if (v[0] != m)
       throw InputError(rows.where(kp_line + m, "kp_member", "members must be numbered 1, 2, … in order (BeamDyn)"));
     if (v[1] != std::floor(v[1]) || v[1] < 3 || v[1] > kp)
-      throw InputError(rows.where(kp_line + m, "kp_member",
-                                  "member " + std::to_string(m) + ": needs 3 to kp_total key points"));
+      throw InputError(
+          rows.where(kp_line + m, "kp_member", "member " + std::to_string(m) + ": needs 3 to kp_total key points"));
     in.member_key_points.push_back(static_cast<int>(v[1]));
     sum += static_cast<int>(v[1]);
   }
-  // Members share their end key points: Σ kp_member = kp_total + member_total − 1 (BeamDyn_IO.f90, BD_ValidateInputData).
+  // Members share their end key points: Σ kp_member = kp_total + member_total − 1 (BeamDyn_IO.f90,
+  // BD_ValidateInputData).
   if (sum != kp + members - 1)
-    throw InputError(f.where("kp_total", std::to_string(kp) + " key points, but the members hold " + std::to_string(sum) +
+    throw InputError(f.where("kp_total", std::to_string(kp) + " key points, but the members hold " +
+                                             std::to_string(sum) +
                                              " (shared ends counted once: " + std::to_string(sum - members + 1) + ")"));
   const int first = kp_line + members + 3;  // after the column-name and unit rows
   for (int k = 0; k < kp; ++k) {

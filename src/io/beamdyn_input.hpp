@@ -55,8 +55,8 @@ struct BeamDynStation {
 /// The blade file.
 struct BeamDynBlade {
   OpenFastFile source;
-  int damp_type = 0;                 ///< 0 none, 1 stiffness-proportional (mu), 2 modal (refused)
-  std::array<double, 6> mu{};        ///< stiffness-proportional damping per strain component [s]
+  int damp_type = 0;           ///< 0 none, 1 stiffness-proportional (mu), 2 modal (refused)
+  std::array<double, 6> mu{};  ///< stiffness-proportional damping per strain component [s]
   std::vector<BeamDynStation> stations;
   int mu_line = 0;
 };
@@ -64,9 +64,9 @@ struct BeamDynBlade {
 /// The primary file with its blade file.
 struct BeamDynInput {
   OpenFastFile source;
-  int quadrature = 2;  ///< 1 Gauss, 2 trapezoidal (BeamDyn's own discretisation: read, not used)
-  int refine = 1;      ///< trapezoidal refinement (read, not used)
-  int order_elem = 0;  ///< BeamDyn's element order (read, not used: whirl meshes the axis itself)
+  int quadrature = 2;                  ///< 1 Gauss, 2 trapezoidal (BeamDyn's own discretisation: read, not used)
+  int refine = 1;                      ///< trapezoidal refinement (read, not used)
+  int order_elem = 0;                  ///< BeamDyn's element order (read, not used: whirl meshes the axis itself)
   std::vector<int> member_key_points;  ///< key points of each member (shared at member ends)
   std::vector<BeamDynKeyPoint> key_points;
   bool UsePitchAct = false;

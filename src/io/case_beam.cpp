@@ -13,7 +13,7 @@
 namespace whirl {
 namespace {
 
-const std::vector<std::string> kPropertyColumns = {"x",     "fraction", "m",  "EIy", "EIz", "GKt", "jG",
+const std::vector<std::string> kPropertyColumns = {"x",     "fraction",  "m",  "EIy", "EIz", "GKt", "jG",
                                                    "twist", "twist_deg", "y0", "z0",  "cgy", "cgz"};
 
 BeamProperties uniformProperties(const CaseNode& u, double L) {
@@ -77,7 +77,8 @@ BeamIntegration readIntegration(const CaseNode& n) {
     else m->fail("unknown method '" + s + "' (allowed: gauss, trapezoid, midpoint, stations)");
   }
   if (const auto k = n.find("n")) {
-    if (q.method == BeamIntegration::Stations) k->fail("n has no meaning with method stations (the property stations are used)");
+    if (q.method == BeamIntegration::Stations)
+      k->fail("n has no meaning with method stations (the property stations are used)");
     q.n = k->integer();
     const int most = q.method == BeamIntegration::Gauss ? limits::kMaxGaussPoints : limits::kMaxIntegrationPoints;
     if (q.n < 1 || q.n > most)

@@ -12,10 +12,10 @@ namespace {
 const std::vector<std::string> kCommonKeys = {"name", "type", "parent", "at", "offset", "rotation", "joint", "points"};
 const std::vector<std::string> kRigidKeys = {"mass", "cog", "inertia"};
 const std::vector<std::string> kBeamKeys = {"length",      "uniform",          "properties", "shapes",
-                                            "integration", "axial_shortening", "damping", "aero"};
-const std::vector<std::string> kFemKeys = {"length",   "elements", "uniform",  "properties", "timoshenko",
-                                           "dofs",     "clamped",  "supports", "soil",       "masses",
-                                           "reduction", "damping", "geometric_stiffness"};
+                                            "integration", "axial_shortening", "damping",    "aero"};
+const std::vector<std::string> kFemKeys = {
+    "length", "elements", "uniform",   "properties", "timoshenko",         "dofs", "clamped", "supports",
+    "soil",   "masses",   "reduction", "damping",    "geometric_stiffness"};
 
 Mat3 elementary(char axis, double angle) {
   const double c = std::cos(angle), s = std::sin(angle);
@@ -55,8 +55,9 @@ void readJoint(const CaseNode& body_node, int index, CaseBuild& build) {
     std::vector<CaseNode> names;
     if (const auto d = j->find("dofs")) {
       names = d->items();
-      if (names.size() != 6) d->fail("a free joint has 6 DOFs (surge, sway, heave, roll, pitch, yaw), got " +
-                                     std::to_string(names.size()) + " names");
+      if (names.size() != 6)
+        d->fail("a free joint has 6 DOFs (surge, sway, heave, roll, pitch, yaw), got " + std::to_string(names.size()) +
+                " names");
     }
     for (int k = 0; k < 6; ++k)
       build.addDof(names.empty() ? b.name + " " + kDefault[k] : names[k].text(), DofKind::Joint, index, k,
@@ -91,7 +92,9 @@ void readBodies(const CaseNode& list, CaseBuild& build) {
   Model& m = build.model();
   const std::vector<CaseNode> items = list.items();
   if (items.empty()) list.fail("a case needs at least one body");
-  struct Link { std::optional<CaseNode> parent, at; };
+  struct Link {
+    std::optional<CaseNode> parent, at;
+  };
   std::vector<Link> links;
   for (const CaseNode& n : items) {
     const std::string type = n.at("type").text();

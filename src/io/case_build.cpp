@@ -14,8 +14,6 @@ void CaseBuild::addDof(const std::string& name, DofKind kind, int body, int loca
   dof_angular.push_back(angular);
 }
 
-void rethrowAt(const Where& w, const std::exception& e) {
-  throw InputError(where(w.file, w.line, "", e.what()));
-}
+void rethrowAt(const Where& w, const std::exception& e) { throw InputError(where(w.file, w.line, "", e.what())); }
 
 }  // namespace whirl

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <fstream>
 
-#include "src/io/input_file.hpp"
 #include "src/io/csv_table.hpp"
+#include "src/io/input_file.hpp"
 
 namespace whirl {
 namespace {
@@ -24,7 +24,8 @@ Columns fromCsv(const CaseNode& file_node, const std::vector<std::string>& allow
   const std::string path = file_node.source().resolve(file_node.text());
   if (const std::string outside = file_node.source().outsideReason(path); !outside.empty()) file_node.fail(outside);
   std::string probe;  // through the readers' preamble: a FIFO is refused, not opened and waited on
-  if (!io::readInputFile(path, probe)) file_node.fail("cannot open '" + path + "' (relative paths start at the case folder)");
+  if (!io::readInputFile(path, probe))
+    file_node.fail("cannot open '" + path + "' (relative paths start at the case folder)");
   const CsvTable t = readCsv(path);
   Columns cols;
   for (size_t j = 0; j < t.names.size(); ++j) {
@@ -55,10 +56,10 @@ Columns readColumns(const CaseNode& node, const std::vector<std::string>& allowe
   std::string first;
   if (const auto file = node.find("file")) {
     for (const MapEntry& e : node.entries())
-      if (contains(allowed, e.key))
-        e.key_where.fail("give the columns either inline or in 'file', not both");
+      if (contains(allowed, e.key)) e.key_where.fail("give the columns either inline or in 'file', not both");
     cols = fromCsv(*file, allowed);
-    if (cols.empty() || cols.begin()->second.values.size() < 2) file->fail("the table needs a header and at least 2 rows");
+    if (cols.empty() || cols.begin()->second.values.size() < 2)
+      file->fail("the table needs a header and at least 2 rows");
     return cols;
   }
   for (const MapEntry& e : node.entries()) {

@@ -133,7 +133,8 @@ std::optional<FemSoil> readFemSoil(const CaseNode& n, double L) {
   FemSoil soil;
   soil.columns = readColumns(*s, {"x", "fraction", "kx", "ky", "kz"}, {});
   soil.x = stations(*s, soil.columns, L, false);
-  if (soil.x(0) < -1e-9 * L || soil.x(soil.x.size() - 1) > L * (1 + 1e-9)) s->fail("soil stations must lie on the beam");
+  if (soil.x(0) < -1e-9 * L || soil.x(soil.x.size() - 1) > L * (1 + 1e-9))
+    s->fail("soil stations must lie on the beam");
   for (const char* k : {"kx", "ky", "kz"})
     if (soil.columns.count(k)) requireNonNegative(soil.columns.at(k));
   return soil;
@@ -240,8 +241,8 @@ void readFemDamping(const CaseNode& n, Body& b) {
 }
 
 /// DOF names "<body> <point or n<k>> <ux…rz>" and "<body> CB j".
-void addFemDofs(const fem::FemBody& fb, const std::map<int, std::string>& point_name, int index,
-                const CaseNode& n, CaseBuild& build) {
+void addFemDofs(const fem::FemBody& fb, const std::map<int, std::string>& point_name, int index, const CaseNode& n,
+                CaseBuild& build) {
   const std::string& body = build.model().bodies[index].name;
   for (size_t k = 0; k < fb.dof_names.size(); ++k) {
     std::string s = fb.dof_names[k];
@@ -291,7 +292,8 @@ void readFemBody(const CaseNode& n, int index, CaseBuild& build) {
   const PointNode pointNode = [&](const CaseNode& v) {
     const std::string s = v.text();
     const auto it = node_of.find(s);
-    if (it == node_of.end()) v.fail("no point named '" + s + "' in body '" + b.name + "' (points of an FE body are its nodes)");
+    if (it == node_of.end())
+      v.fail("no point named '" + s + "' in body '" + b.name + "' (points of an FE body are its nodes)");
     return it->second;
   };
   std::array<bool, 6> active{true, true, true, true, true, true};
@@ -346,7 +348,8 @@ void addFemGeometricStiffness(Model& m, const std::vector<std::shared_ptr<FemPen
       if (child.parent != bi) continue;
       if (child.parent_point < 0)
         throw InputError(where(p->where.file, p->where.line, "",
-                               "body '" + child.name + "' sits on FE body '" + p->body + "' without a point: attach it at a node (`at:`)"));
+                               "body '" + child.name + "' sits on FE body '" + p->body +
+                                   "' without a point: attach it at a node (`at:`)"));
       loads.push_back({p->point_node[child.parent_point], carried[c]});
     }
     const Vec3 g_body = ws.frames[bi].R.transpose() * m.gravity;

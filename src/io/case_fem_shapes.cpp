@@ -10,7 +10,8 @@
 namespace whirl {
 
 fem::ModeShapeInput readFemShapeSettings(const CaseNode& s, const BeamProperties& props) {
-  s.allowKeys({"from", "elements", "tip_mass", "axial_gravity", "rotor_speed_rpm", "hub_radius", "rotation_axis", "modes"});
+  s.allowKeys(
+      {"from", "elements", "tip_mass", "axial_gravity", "rotor_speed_rpm", "hub_radius", "rotation_axis", "modes"});
   fem::ModeShapeInput in;
   in.props = props;
   if (const auto e = s.find("elements")) {
@@ -46,7 +47,12 @@ std::vector<ShapePtr> readFemShapes(const CaseNode& s, const BeamProperties& pro
   const std::string from = s.at("from").text();
   if (from != "fem") s.at("from").fail("unknown shape source '" + from + "' (allowed: fem)");
   const fem::ModeShapeInput in = readFemShapeSettings(s, props);
-  struct Request { std::string name; char dir; int mode; CaseNode node; };
+  struct Request {
+    std::string name;
+    char dir;
+    int mode;
+    CaseNode node;
+  };
   std::vector<Request> req;
   int ny = 0, nz = 0;
   for (const CaseNode& m : s.at("modes").items()) {

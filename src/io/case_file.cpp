@@ -8,8 +8,8 @@
 #include <sstream>
 #include <utility>
 
-#include "src/io/input_file.hpp"
 #include "src/io/case_reader.hpp"
+#include "src/io/input_file.hpp"
 #include "src/model/error.hpp"
 #include "src/model/text.hpp"
 
@@ -97,8 +97,8 @@ Model readCaseDocument(YAML::Node doc, const std::string& path, const std::strin
   const CaseNode top(doc, source);
   if (!top.isMap())
     top.fail("a case file is a map of keys (name, gravity, bodies, ...), this one is empty, a list or a single value");
-  top.allowKeys({"name", "description", "gravity", "inputs", "bodies", "dofs", "loads", "outputs",
-                 "wind", "aero", "generator"});
+  top.allowKeys(
+      {"name", "description", "gravity", "inputs", "bodies", "dofs", "loads", "outputs", "wind", "aero", "generator"});
 
   CaseBuild build;
   Model& m = build.model();

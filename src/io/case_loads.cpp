@@ -70,7 +70,8 @@ void bodyMatrices(const CaseNode& n, CaseBuild& build) {
   if (const auto a = n.find("A")) bm.A = a->matrix(6, 6);
   if (const auto x = n.find("x0")) {
     const std::vector<double> v = x->numbers();
-    if (v.size() != 6) x->fail("expected 6 numbers (surge, sway, heave, roll, pitch, yaw), got " + std::to_string(v.size()));
+    if (v.size() != 6)
+      x->fail("expected 6 numbers (surge, sway, heave, roll, pitch, yaw), got " + std::to_string(v.size()));
     for (int i = 0; i < 6; ++i) bm.x0(i) = v[i];
   }
   build.model().body_matrices.push_back(bm);

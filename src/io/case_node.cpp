@@ -30,7 +30,7 @@ std::string shown(const YAML::Node& n) {
 }
 
 bool isYamlNonFinite(const std::string& s) {
-  static const std::set<std::string> special = {".nan", ".NaN", ".NAN", ".inf", ".Inf", ".INF",
+  static const std::set<std::string> special = {".nan",  ".NaN",  ".NAN",  ".inf",  ".Inf",  ".INF",
                                                 "+.inf", "+.Inf", "+.INF", "-.inf", "-.Inf", "-.INF"};
   return special.count(s) > 0;
 }
@@ -215,7 +215,8 @@ MatX CaseNode::matrix(int rows, int cols) const {
   for (int i = 0; i < rows; ++i) {
     const std::vector<double> v = r[i].numbers();
     if (static_cast<int>(v.size()) != cols)
-      r[i].fail("row " + std::to_string(i + 1) + " of a " + dims + " matrix has " + std::to_string(v.size()) + " numbers");
+      r[i].fail("row " + std::to_string(i + 1) + " of a " + dims + " matrix has " + std::to_string(v.size()) +
+                " numbers");
     for (int j = 0; j < cols; ++j) m(i, j) = v[j];
   }
   return m;

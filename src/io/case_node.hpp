@@ -77,7 +77,7 @@ class CaseNode {
 
   double number() const;  ///< a finite number
   int integer() const;
-  bool boolean() const;   ///< true or false
+  bool boolean() const;  ///< true or false
   /// Text on one printable line (names, units, file names): fails on a control character.
   std::string text() const;
   /// Text that may span lines (a description, never written into generated files).

@@ -33,7 +33,8 @@ YAML::Node parseValue(const CaseOverride& o, const std::string& file) {
   try {
     return YAML::Load(o.value);
   } catch (const YAML::Exception& e) {
-    throw InputError(where(file, 0, o.key, "--set " + o.key + "=" + o.value + ": the value is not valid YAML: " + e.msg));
+    throw InputError(
+        where(file, 0, o.key, "--set " + o.key + "=" + o.value + ": the value is not valid YAML: " + e.msg));
   }
 }
 
@@ -99,7 +100,8 @@ void applyOverrides(YAML::Node& root, const std::vector<CaseOverride>& overrides
         if (used == 0) {
           std::string names;
           for (size_t e = 0; e < cnode.size(); ++e) names += (e ? ", " : "") + listChildPath("", cnode[e], e);
-          fail("no entry named '" + seg[i] + "' in " + (path.empty() ? "the case" : path) + " (entries: " + names + ")");
+          fail("no entry named '" + seg[i] + "' in " + (path.empty() ? "the case" : path) + " (entries: " + names +
+               ")");
         }
         YAML::Node next = node[k];
         path = listChildPath(path, next, k);

@@ -26,12 +26,12 @@ struct CaseBuild {
     int body = -1;
     BeamProperties props;
     std::vector<ShapePtr> shapes;
-    fem::ModeShapeInput fem;  ///< FE input for `whirl shapes`: the `{from: fem}` settings, else properties only
+    fem::ModeShapeInput fem;       ///< FE input for `whirl shapes`: the `{from: fem}` settings, else properties only
     bool axial_shortening = true;  ///< as built (the points of the blade elements follow it)
   };
   ModelBuilder builder;  ///< the model, where its bodies and DOFs were written, the lookups by name
   std::vector<Beam> beams;
-  std::vector<bool> dof_angular;   ///< an angle [rad]: `value_deg` and `rate_rpm` allowed
+  std::vector<bool> dof_angular;                 ///< an angle [rad]: `value_deg` and `rate_rpm` allowed
   std::vector<std::shared_ptr<FemPending>> fem;  ///< FE bodies awaiting their geometric stiffness
 
   Model& model() { return builder.model(); }

@@ -1,5 +1,6 @@
 // Shape functions of a beam in a case (`shapes:`): polynomial, one_minus_cos, clamped_topmass,
-// torsion_sine and table; or a map {from: fem} (case_fem_shapes.cpp). Each shape is one elastic DOF named after the shape.
+// torsion_sine and table; or a map {from: fem} (case_fem_shapes.cpp). Each shape is one elastic DOF named after the
+// shape.
 #include <charconv>
 #include <cmath>
 
@@ -59,9 +60,14 @@ ShapePtr tableFromColumns(const CaseNode& s, const std::string& name, double L, 
   ShapeTable t;
   t.x = stations(s, c, L, true);
   auto col = [&](const char* key) { return c.count(key) ? c.at(key).values : VecX(); };
-  t.uy = col("uy"); t.uz = col("uz"); t.tx = col("tx");
-  t.uy1 = col("uy1"); t.uz1 = col("uz1"); t.tx1 = col("tx1");
-  t.uy2 = col("uy2"); t.uz2 = col("uz2");
+  t.uy = col("uy");
+  t.uz = col("uz");
+  t.tx = col("tx");
+  t.uy1 = col("uy1");
+  t.uz1 = col("uz1");
+  t.tx1 = col("tx1");
+  t.uy2 = col("uy2");
+  t.uz2 = col("uz2");
   if (!t.uy.size() && !t.uz.size() && !t.tx.size()) s.fail("a table shape needs a column uy, uz or tx");
   angular = !t.uy.size() && !t.uz.size();
   return located(s, [&] { return tableShape(name, t); });

@@ -92,8 +92,9 @@ TextTable readTextCsv(const std::string& path) {
       continue;
     }
     if (f.size() != t.names.size())
-      throw InputError(where(path, n, "", "expected " + std::to_string(t.names.size()) + " fields, found " +
-                                              std::to_string(f.size())));
+      throw InputError(
+          where(path, n, "",
+                "expected " + std::to_string(t.names.size()) + " fields, found " + std::to_string(f.size())));
     if (t.rows.size() >= static_cast<std::size_t>(limits::kMaxTableRows)) throw InputError(io::tooManyRows(path, n));
     t.rows.push_back(std::move(f));
     t.lines.push_back(n);

@@ -6,8 +6,8 @@
 #include <fstream>
 #include <set>
 
-#include "src/io/input_file.hpp"
 #include "src/io/csv.hpp"
+#include "src/io/input_file.hpp"
 #include "src/model/error.hpp"
 #include "src/model/limits.hpp"
 #include "src/model/text.hpp"
@@ -52,18 +52,21 @@ CsvTable readCsv(const std::string& path) {
       continue;
     }
     if (fields.size() != t.names.size())
-      throw InputError(where(path, line, "", std::to_string(fields.size()) + " fields, the header has " +
-                                                 std::to_string(t.names.size())));
+      throw InputError(
+          where(path, line, "",
+                std::to_string(fields.size()) + " fields, the header has " + std::to_string(t.names.size())));
     for (size_t j = 0; j < fields.size(); ++j) {
       std::string f = fields[j];
       if (!f.empty() && f[0] == '+') f.erase(0, 1);
       double v = 0;
       const auto [end, ec] = std::from_chars(f.data(), f.data() + f.size(), v);
       if (f.empty() || ec != std::errc() || end != f.data() + f.size() || !std::isfinite(v))
-        throw InputError(where(path, line, excerpt(t.names[j]), "expected a finite number, got '" + excerpt(fields[j]) + "'"));
+        throw InputError(
+            where(path, line, excerpt(t.names[j]), "expected a finite number, got '" + excerpt(fields[j]) + "'"));
       t.columns[j].push_back(v);
     }
-    if (t.row_lines.size() >= static_cast<std::size_t>(limits::kMaxTableRows)) throw InputError(io::tooManyRows(path, line));
+    if (t.row_lines.size() >= static_cast<std::size_t>(limits::kMaxTableRows))
+      throw InputError(io::tooManyRows(path, line));
     t.row_lines.push_back(line);
   }
   if (t.names.empty()) throw InputError(where(path, 0, "", "no header row (the file is empty)"));

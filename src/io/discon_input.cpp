@@ -14,9 +14,9 @@
 #include "src/io/elastodyn_common.hpp"
 #include "src/io/fst_input.hpp"
 #include "src/io/input_file.hpp"
+#include "src/io/openfast_input.hpp"
 #include "src/io/openfast_overrides.hpp"
 #include "src/io/openfast_turbine.hpp"
-#include "src/io/openfast_input.hpp"
 #include "src/model/error.hpp"
 
 namespace whirl::io {
@@ -29,37 +29,36 @@ const std::set<std::string>& knownKeys() {
     const char* names[] = {
         "Echo", "LoggingLevel", "DT_Out", "Ext_Interface", "F_LPFType", "IPC_ControlMode", "VS_ControlMode",
         "VS_ConstPower", "VS_FBP", "PC_ControlMode", "Y_ControlMode", "SS_Mode", "PRC_Mode", "WE_Mode", "PS_Mode",
-        "SU_Mode", "SD_Mode", "Fl_Mode", "TD_Mode", "TRA_Mode", "Flp_Mode", "OL_Mode", "PA_Mode", "PF_Mode",
-        "AWC_Mode", "Ext_Mode", "ZMQ_Mode", "CC_Mode", "StC_Mode", "F_LPFCornerFreq", "F_LPFDamping",
-        "F_NumNotchFilts", "F_NotchFreqs", "F_NotchBetaNum", "F_NotchBetaDen", "F_GenSpdNotch_N", "F_TwrTopNotch_N",
-        "F_SSCornerFreq", "F_WECornerFreq", "F_YawErr", "F_FlCornerFreq", "F_FlHighPassFreq", "F_FlpCornerFreq",
-        "F_VSRefSpdCornerFreq", "F_GenSpdNotch_Ind", "F_TwrTopNotch_Ind", "PC_GS_n", "PC_GS_angles", "PC_GS_KP",
-        "PC_GS_KI", "PC_GS_KD", "PC_GS_TF", "PC_MaxPit", "PC_MinPit", "PC_MaxRat", "PC_MinRat", "PC_RefSpd",
-        "PC_FinePit", "PC_Switch", "IPC_Vramp", "IPC_SatMode", "IPC_IntSat", "IPC_KP", "IPC_KI", "IPC_aziOffset",
-        "IPC_CornerFreqAct", "VS_GenEff", "VS_ArSatTq", "VS_MaxRat", "VS_MaxTq", "VS_MinTq", "VS_MinOMSpd",
-        "VS_Rgn2K", "VS_RtPwr", "VS_RtTq", "VS_RefSpd", "VS_n", "VS_KP", "VS_KI", "VS_TSRopt", "VS_FBP_n",
-        "VS_FBP_U", "VS_FBP_Omega", "VS_FBP_Tau", "SS_VSGain", "SS_PCGain", "PRC_Comm", "PRC_R_Torque",
-        "PRC_R_Speed", "PRC_R_Pitch", "PRC_Table_n", "PRC_R_Table", "PRC_Pitch_Table", "PRC_n", "PRC_LPF_Freq",
-        "PRC_WindSpeeds", "PRC_GenSpeeds", "WE_BladeRadius", "WE_Gamma", "WE_GearboxRatio", "WE_Jtot", "WE_RhoAir",
-        "PerfFileName", "PerfTableSize", "WE_FOPoles_N", "WE_FOPoles_v", "WE_FOPoles", "WE_CP_n", "WE_CP",
-        "Y_uSwitch", "Y_ErrThresh", "Y_Rate", "Y_MErrSet", "Y_IPC_IntSat", "Y_IPC_KP", "Y_IPC_KI", "TRA_ExclSpeed",
-        "TRA_ExclBand", "TRA_RateLimit", "FA_KI", "FA_HPFCornerFreq", "FA_IntSat", "PS_BldPitchMin_N",
-        "PS_WindSpeeds", "PS_BldPitchMin", "SU_StartTime", "SU_FW_MinDuration", "SU_RotorSpeedThresh",
-        "SU_RotorSpeedCornerFreq", "SU_LoadStages_N", "SU_LoadStages", "SU_LoadRampDuration", "SU_LoadHoldDuration",
-        "SD_TimeActivate", "SD_EnablePitch", "SD_EnableYawError", "SD_EnableGenSpeed", "SD_EnableTime", "SD_MaxPit",
-        "SD_PitchCornerFreq", "SD_MaxYawError", "SD_YawErrorCornerFreq", "SD_MaxGenSpd", "SD_GenSpdCornerFreq",
-        "SD_Time", "SD_Method", "SD_Stage_N", "SD_StageTime", "SD_StagePitch", "SD_MaxTorqueRate", "SD_MaxPitchRate",
-        "Fl_n", "Fl_Kp", "Fl_U", "Flp_Angle", "Flp_Kp", "Flp_Ki", "Flp_MaxPit", "OL_Filename", "OL_BP_Mode",
-        "OL_BP_FiltFreq", "Ind_Breakpoint", "Ind_BldPitch", "Ind_GenTq", "Ind_YawRate", "Ind_Azimuth",
-        "Ind_R_Speed", "Ind_R_Torque", "Ind_R_Pitch", "RP_Gains", "Ind_CableControl", "Ind_StructControl",
-        "PA_CornerFreq", "PA_Damping", "PF_Offsets", "PF_TimeStuck", "AWC_NumModes", "AWC_n", "AWC_harmonic",
-        "AWC_freq", "AWC_amp", "AWC_clockangle", "AWC_phaseoffset", "AWC_CntrGains", "DLL_FileName", "DLL_InFile",
-        "DLL_ProcName", "ZMQ_ID", "ZMQ_CommAddress", "ZMQ_UpdatePeriod", "CC_Group_N", "CC_GroupIndex", "CC_ActTau",
-        "StC_Group_N", "StC_GroupIndex",
+        "SU_Mode", "SD_Mode", "Fl_Mode", "TD_Mode", "TRA_Mode", "Flp_Mode", "OL_Mode", "PA_Mode", "PF_Mode", "AWC_Mode",
+        "Ext_Mode", "ZMQ_Mode", "CC_Mode", "StC_Mode", "F_LPFCornerFreq", "F_LPFDamping", "F_NumNotchFilts",
+        "F_NotchFreqs", "F_NotchBetaNum", "F_NotchBetaDen", "F_GenSpdNotch_N", "F_TwrTopNotch_N", "F_SSCornerFreq",
+        "F_WECornerFreq", "F_YawErr", "F_FlCornerFreq", "F_FlHighPassFreq", "F_FlpCornerFreq", "F_VSRefSpdCornerFreq",
+        "F_GenSpdNotch_Ind", "F_TwrTopNotch_Ind", "PC_GS_n", "PC_GS_angles", "PC_GS_KP", "PC_GS_KI", "PC_GS_KD",
+        "PC_GS_TF", "PC_MaxPit", "PC_MinPit", "PC_MaxRat", "PC_MinRat", "PC_RefSpd", "PC_FinePit", "PC_Switch",
+        "IPC_Vramp", "IPC_SatMode", "IPC_IntSat", "IPC_KP", "IPC_KI", "IPC_aziOffset", "IPC_CornerFreqAct", "VS_GenEff",
+        "VS_ArSatTq", "VS_MaxRat", "VS_MaxTq", "VS_MinTq", "VS_MinOMSpd", "VS_Rgn2K", "VS_RtPwr", "VS_RtTq",
+        "VS_RefSpd", "VS_n", "VS_KP", "VS_KI", "VS_TSRopt", "VS_FBP_n", "VS_FBP_U", "VS_FBP_Omega", "VS_FBP_Tau",
+        "SS_VSGain", "SS_PCGain", "PRC_Comm", "PRC_R_Torque", "PRC_R_Speed", "PRC_R_Pitch", "PRC_Table_n",
+        "PRC_R_Table", "PRC_Pitch_Table", "PRC_n", "PRC_LPF_Freq", "PRC_WindSpeeds", "PRC_GenSpeeds", "WE_BladeRadius",
+        "WE_Gamma", "WE_GearboxRatio", "WE_Jtot", "WE_RhoAir", "PerfFileName", "PerfTableSize", "WE_FOPoles_N",
+        "WE_FOPoles_v", "WE_FOPoles", "WE_CP_n", "WE_CP", "Y_uSwitch", "Y_ErrThresh", "Y_Rate", "Y_MErrSet",
+        "Y_IPC_IntSat", "Y_IPC_KP", "Y_IPC_KI", "TRA_ExclSpeed", "TRA_ExclBand", "TRA_RateLimit", "FA_KI",
+        "FA_HPFCornerFreq", "FA_IntSat", "PS_BldPitchMin_N", "PS_WindSpeeds", "PS_BldPitchMin", "SU_StartTime",
+        "SU_FW_MinDuration", "SU_RotorSpeedThresh", "SU_RotorSpeedCornerFreq", "SU_LoadStages_N", "SU_LoadStages",
+        "SU_LoadRampDuration", "SU_LoadHoldDuration", "SD_TimeActivate", "SD_EnablePitch", "SD_EnableYawError",
+        "SD_EnableGenSpeed", "SD_EnableTime", "SD_MaxPit", "SD_PitchCornerFreq", "SD_MaxYawError",
+        "SD_YawErrorCornerFreq", "SD_MaxGenSpd", "SD_GenSpdCornerFreq", "SD_Time", "SD_Method", "SD_Stage_N",
+        "SD_StageTime", "SD_StagePitch", "SD_MaxTorqueRate", "SD_MaxPitchRate", "Fl_n", "Fl_Kp", "Fl_U", "Flp_Angle",
+        "Flp_Kp", "Flp_Ki", "Flp_MaxPit", "OL_Filename", "OL_BP_Mode", "OL_BP_FiltFreq", "Ind_Breakpoint",
+        "Ind_BldPitch", "Ind_GenTq", "Ind_YawRate", "Ind_Azimuth", "Ind_R_Speed", "Ind_R_Torque", "Ind_R_Pitch",
+        "RP_Gains", "Ind_CableControl", "Ind_StructControl", "PA_CornerFreq", "PA_Damping", "PF_Offsets",
+        "PF_TimeStuck", "AWC_NumModes", "AWC_n", "AWC_harmonic", "AWC_freq", "AWC_amp", "AWC_clockangle",
+        "AWC_phaseoffset", "AWC_CntrGains", "DLL_FileName", "DLL_InFile", "DLL_ProcName", "ZMQ_ID", "ZMQ_CommAddress",
+        "ZMQ_UpdatePeriod", "CC_Group_N", "CC_GroupIndex", "CC_ActTau", "StC_Group_N", "StC_GroupIndex",
         // Earlier versions (ROSCO 2.0–2.9 Examples): notch and yaw filters, power control, shutdown.
         "F_NotchCornerFreq", "F_NotchBetaNumDen", "F_NotchType", "IPC_omegaLP", "IPC_zetaLP", "IPC_omegaNotch",
-        "IPC_zetaNotch", "Y_IPC_omegaLP", "Y_IPC_zetaLP", "Y_IPC_n", "Y_omegaLPFast", "Y_omegaLPSlow",
-        "SD_CornerFreq", "PwC_Mode", "PwC_ConstPwr", "PwC_OpenLoop_Inp", "PwC_BldPitchMin_N", "Ind_Breakpoints"};
+        "IPC_zetaNotch", "Y_IPC_omegaLP", "Y_IPC_zetaLP", "Y_IPC_n", "Y_omegaLPFast", "Y_omegaLPSlow", "SD_CornerFreq",
+        "PwC_Mode", "PwC_ConstPwr", "PwC_OpenLoop_Inp", "PwC_BldPitchMin_N", "Ind_Breakpoints"};
     std::set<std::string> s;
     for (const char* n : names) s.insert(toLower(n));
     return s;
@@ -154,7 +153,8 @@ class DisconFile {
         throw InputError(where(file_, lineno, "", "no key after the values (write 'value ! Key - description')"));
       const std::string lower = toLower(e.key);
       if (!knownKeys().count(lower))
-        throw InputError(where(file_, lineno, e.key, "not a key of ROSCO's DISCON.IN (ROSCO 2.10 or earlier): check the spelling"));
+        throw InputError(
+            where(file_, lineno, e.key, "not a key of ROSCO's DISCON.IN (ROSCO 2.10 or earlier): check the spelling"));
       if (e.values.empty()) throw InputError(where(file_, lineno, e.key, "no value before the key"));
       if (overrides)  // --set KEY=VALUE: the value as if written here (its line stays the key's)
         if (const std::optional<std::string> v = overrides->take(e.key, file_)) e.values = valueWords(*v);
@@ -267,11 +267,15 @@ void readDisconParameters(const DisconFile& f, RoscoController& c) {
   c.F_LPFDamping = f.real(c, "F_LPFDamping", c.F_LPFType == 1 ? std::optional<double>(0.0) : std::nullopt,
                           "F_LPFType = 2 needs the filter's damping");
   const int notches = f.integer(c, "F_NumNotchFilts", 0);
-  if (notches < 0) throw InputError(where(f.file(), f.lineOf("F_NumNotchFilts"), "F_NumNotchFilts", "must not be negative"));
+  if (notches < 0)
+    throw InputError(where(f.file(), f.lineOf("F_NumNotchFilts"), "F_NumNotchFilts", "must not be negative"));
   const bool no_notch = notches == 0;
-  const std::vector<double> freqs = f.array(c, "F_NotchFreqs", notches, "F_NumNotchFilts", no_notch, "F_NumNotchFilts > 0");
-  const std::vector<double> num = f.array(c, "F_NotchBetaNum", notches, "F_NumNotchFilts", no_notch, "F_NumNotchFilts > 0");
-  const std::vector<double> den = f.array(c, "F_NotchBetaDen", notches, "F_NumNotchFilts", no_notch, "F_NumNotchFilts > 0");
+  const std::vector<double> freqs = f.array(c, "F_NotchFreqs", notches, "F_NumNotchFilts", no_notch,
+                                            "F_NumNotchFilts > 0");
+  const std::vector<double> num = f.array(c, "F_NotchBetaNum", notches, "F_NumNotchFilts", no_notch,
+                                          "F_NumNotchFilts > 0");
+  const std::vector<double> den = f.array(c, "F_NotchBetaDen", notches, "F_NumNotchFilts", no_notch,
+                                          "F_NumNotchFilts > 0");
   auto notchList = [&](const char* count_key, const char* index_key, std::vector<RoscoNotch>& out) {
     const int n = f.integer(c, count_key, 0);
     if (n < 0 || n > notches)
@@ -347,8 +351,10 @@ void readDisconParameters(const DisconFile& f, RoscoController& c) {
   c.VS_TSRopt = f.real(c, "VS_TSRopt", c.VS_ControlMode < 2 ? std::optional<double>(0.0) : std::nullopt,
                        "TSR tracking (VS_ControlMode >= 2) needs the optimal tip-speed ratio");
 
-  c.SS_VSGain = f.real(c, "SS_VSGain", c.SS_Mode == 0 ? std::optional<double>(0.0) : std::nullopt, "SS_Mode = 1 needs it");
-  c.SS_PCGain = f.real(c, "SS_PCGain", c.SS_Mode == 0 ? std::optional<double>(0.0) : std::nullopt, "SS_Mode = 1 needs it");
+  c.SS_VSGain = f.real(c, "SS_VSGain", c.SS_Mode == 0 ? std::optional<double>(0.0) : std::nullopt,
+                       "SS_Mode = 1 needs it");
+  c.SS_PCGain = f.real(c, "SS_PCGain", c.SS_Mode == 0 ? std::optional<double>(0.0) : std::nullopt,
+                       "SS_Mode = 1 needs it");
 
   c.WE_BladeRadius = f.real(c, "WE_BladeRadius", std::nullopt, "the tip-speed ratio needs the rotor radius");
   c.WE_GearboxRatio = f.real(c, "WE_GearboxRatio", std::nullopt, "whirl needs the gearbox ratio");
@@ -444,7 +450,8 @@ void noteDisconModes(const DisconFile& f, RoscoController& c) {
     const char* what;
   };
   static const Mode modes[] = {
-      {"IPC_ControlMode", "individual pitch control not modelled: collective pitch only (IPC adds no mean pitch in a steady state)"},
+      {"IPC_ControlMode",
+       "individual pitch control not modelled: collective pitch only (IPC adds no mean pitch in a steady state)"},
       {"Y_ControlMode", "yaw control not modelled: the nacelle yaw is held where the deck puts it"},
       {"VS_FBP", "fixed-pitch region-3 torque control not modelled: whirl's region 3 pitches to feather"},
       {"PRC_Mode", "power reference tracking not modelled: rated power and speed as written"},
@@ -463,8 +470,7 @@ void noteDisconModes(const DisconFile& f, RoscoController& c) {
   };
   for (const Mode& m : modes) {
     const int v = f.integer(c, m.key, 0);
-    if (v != 0)
-      c.notes.push_back(where(f.file(), f.lineOf(m.key), m.key, std::to_string(v) + ": " + m.what));
+    if (v != 0) c.notes.push_back(where(f.file(), f.lineOf(m.key), m.key, std::to_string(v) + ": " + m.what));
   }
   // Modelled with an assumption, said once.
   if (c.WE_Mode > 0)
@@ -504,7 +510,8 @@ std::optional<RoscoController> readServoDynController(const ServoDynInput& servo
   return c;
 }
 
-std::optional<RoscoController> readDeckController(const std::filesystem::path& deck, const std::vector<std::string>& sets) {
+std::optional<RoscoController> readDeckController(const std::filesystem::path& deck,
+                                                  const std::vector<std::string>& sets) {
   if (toLower(deck.extension().string()) != ".fst") return std::nullopt;
   std::vector<KeyOverride> overrides;
   for (const std::string& s : sets) overrides.push_back(parseOverride(s));

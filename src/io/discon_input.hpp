@@ -43,7 +43,8 @@ std::optional<RoscoController> readServoDynController(const ServoDynInput& servo
 /// overrides `sets` applied to the .fst, ServoDyn and DISCON.IN files (keys of other files are ignored here):
 /// readServoDynController of its ServoDyn file; nullopt for anything else (an ElastoDyn `.dat`, a YAML
 /// case, a deck without ServoDyn or without a ROSCO DISCON.IN).
-std::optional<RoscoController> readDeckController(const std::filesystem::path& deck, const std::vector<std::string>& sets);
+std::optional<RoscoController> readDeckController(const std::filesystem::path& deck,
+                                                  const std::vector<std::string>& sets);
 
 /// As readDiscon, from text (`file` names it in messages).
 RoscoController parseDiscon(const std::string& text, const std::filesystem::path& file,

@@ -47,20 +47,19 @@ DistributedTable readDistributedTable(const OpenFastFile& f, std::string_view co
   if (count < 1) throw InputError(f.where(count_key, "must be at least 1, is " + std::to_string(count)));
   const OpenFastTable* tab = f.findTable(first_column);
   if (!tab)
-    throw InputError(f.where(count_key, "no table with a '" + std::string(first_column) +
-                                            "' column found (truncated file?)"));
+    throw InputError(
+        f.where(count_key, "no table with a '" + std::string(first_column) + "' column found (truncated file?)"));
   const int rows = static_cast<int>(tab->rows.size());
   if (rows < count) {
-    const std::string at = tab->ends_at_eof ? "the file ends" : "line " + std::to_string(tab->end_line) +
-                                                                    " is not a row of numbers";
+    const std::string at = tab->ends_at_eof ? "the file ends"
+                                            : "line " + std::to_string(tab->end_line) + " is not a row of numbers";
     throw InputError(where(file, tab->end_line, key,
                            "table has " + std::to_string(rows) + " rows, " + std::to_string(count) +
                                " expected: " + at + " (truncated table?)"));
   }
   if (rows > count)
     throw InputError(where(file, tab->row_lines[static_cast<std::size_t>(count)], key,
-                           "table has " + std::to_string(rows) + " rows, only " + std::to_string(count) +
-                               " expected"));
+                           "table has " + std::to_string(rows) + " rows, only " + std::to_string(count) + " expected"));
 
   DistributedTable t;
   t.file = file;
@@ -76,8 +75,8 @@ DistributedTable readDistributedTable(const OpenFastFile& f, std::string_view co
                                  std::to_string(t.names.size()) + " columns (" + joined(t.names) + ")"));
     for (std::size_t c = 0; c < row.size(); ++c) {
       if (!std::isfinite(row[c]))
-        throw InputError(where(file, tab->row_lines[r], t.names[c],
-                               std::isnan(row[c]) ? "value is NaN" : "value is infinite"));
+        throw InputError(
+            where(file, tab->row_lines[r], t.names[c], std::isnan(row[c]) ? "value is NaN" : "value is infinite"));
       t.values[c][r] = row[c];
     }
   }

@@ -5,14 +5,13 @@
 namespace whirl::io {
 namespace {
 
-/// Keys of ElastoDyn blade files, all versions whirl reads (FAST 8 ElastoDyn v1.00 to OpenFAST v5), arrays written Name(k).
+/// Keys of ElastoDyn blade files, all versions whirl reads (FAST 8 ElastoDyn v1.00 to OpenFAST v5), arrays written
+/// Name(k).
 const OpenFastLayout& layout() {
-  static const OpenFastLayout l{
-      "ElastoDyn blade",
-      {
-      "NBlInpSt", "CalcBMode", "BldFlDmp(k)", "BldEdDmp(k)", "FlStTunr(k)", "AdjBlMs", "AdjFlSt", "AdjEdSt", "BldFl1Sh(k)",
-      "BldFl2Sh(k)", "BldEdgSh(k)"},
-      {}};
+  static const OpenFastLayout l{"ElastoDyn blade",
+                                {"NBlInpSt", "CalcBMode", "BldFlDmp(k)", "BldEdDmp(k)", "FlStTunr(k)", "AdjBlMs",
+                                 "AdjFlSt", "AdjEdSt", "BldFl1Sh(k)", "BldFl2Sh(k)", "BldEdgSh(k)"},
+                                {}};
   return l;
 }
 

@@ -17,21 +17,27 @@ namespace {
 const OpenFastLayout& layout() {
   static const OpenFastLayout l{
       "ElastoDyn",
-      {
-      "Echo", "Method", "DT", "Gravity", "FlapDOF1", "FlapDOF2", "EdgeDOF", "PitchDOF", "TeetDOF", "DrTrDOF",
-      "GenDOF", "YawDOF", "TwFADOF1", "TwFADOF2", "TwSSDOF1", "TwSSDOF2", "PtfmSgDOF", "PtfmSwDOF", "PtfmHvDOF",
-      "PtfmRDOF", "PtfmPDOF", "PtfmYDOF", "OoPDefl", "IPDefl", "BlPitch(k)", "TeetDefl", "Azimuth", "RotSpeed",
-      "NacYaw", "TTDspFA", "TTDspSS", "PtfmSurge", "PtfmSway", "PtfmHeave", "PtfmRoll", "PtfmPitch", "PtfmYaw",
-      "NumBl", "TipRad", "HubRad", "PreCone(k)", "HubCM", "UndSling", "Delta3", "AzimB1Up", "OverHang", "ShftGagL",
-      "ShftTilt", "NacCMxn", "NacCMyn", "NacCMzn", "NcIMUxn", "NcIMUyn", "NcIMUzn", "Twr2Shft", "TowerHt",
-      "TowerBsHt", "TwrRBHt", "TwrDraft", "PtfmCMxt", "PtfmCMyt", "PtfmCMzt", "PtfmRefxt", "PtfmRefyt",
-      "PtfmRefzt", "PtfmRef", "TipMass(k)", "PBrIner(k)", "BlPIner(k)", "HubMass", "HubIner", "HubIner_Teeter", "GenIner",
-      "NacMass", "NacYIner", "YawBrMass", "PtfmMass", "PtfmRIner", "PtfmPIner", "PtfmYIner", "PtfmXYIner",
-      "PtfmYZIner", "PtfmXZIner", "BldNodes", "BldFile(k)", "TeetMod", "TeetDmpP", "TeetDmp", "TeetCDmp", "TeetSStP",
-      "TeetHStP", "TeetSSSp", "TeetHSSp", "YawFrctMod", "M_CSmax", "M_CD", "sig_v", "sig_v2", "OmgCut", "M_FCSmax",
-      "M_MCSmax", "M_FCD", "M_MCD", "GBoxEff", "GBRatio", "DTTorSpr", "DTTorDmp", "Furling", "FurlFile",
-      "TwrNodes", "TwrFile", "SumPrint", "OutFile", "TabDelim", "OutFmt", "TStart", "DecFact", "NTwGages",
-      "TwrGagNd", "NBlGages", "BldGagNd", "BldNd_BladesOut", "BldNd_BlOutNd"},
+      {"Echo",       "Method",          "DT",           "Gravity",    "FlapDOF1",   "FlapDOF2",
+       "EdgeDOF",    "PitchDOF",        "TeetDOF",      "DrTrDOF",    "GenDOF",     "YawDOF",
+       "TwFADOF1",   "TwFADOF2",        "TwSSDOF1",     "TwSSDOF2",   "PtfmSgDOF",  "PtfmSwDOF",
+       "PtfmHvDOF",  "PtfmRDOF",        "PtfmPDOF",     "PtfmYDOF",   "OoPDefl",    "IPDefl",
+       "BlPitch(k)", "TeetDefl",        "Azimuth",      "RotSpeed",   "NacYaw",     "TTDspFA",
+       "TTDspSS",    "PtfmSurge",       "PtfmSway",     "PtfmHeave",  "PtfmRoll",   "PtfmPitch",
+       "PtfmYaw",    "NumBl",           "TipRad",       "HubRad",     "PreCone(k)", "HubCM",
+       "UndSling",   "Delta3",          "AzimB1Up",     "OverHang",   "ShftGagL",   "ShftTilt",
+       "NacCMxn",    "NacCMyn",         "NacCMzn",      "NcIMUxn",    "NcIMUyn",    "NcIMUzn",
+       "Twr2Shft",   "TowerHt",         "TowerBsHt",    "TwrRBHt",    "TwrDraft",   "PtfmCMxt",
+       "PtfmCMyt",   "PtfmCMzt",        "PtfmRefxt",    "PtfmRefyt",  "PtfmRefzt",  "PtfmRef",
+       "TipMass(k)", "PBrIner(k)",      "BlPIner(k)",   "HubMass",    "HubIner",    "HubIner_Teeter",
+       "GenIner",    "NacMass",         "NacYIner",     "YawBrMass",  "PtfmMass",   "PtfmRIner",
+       "PtfmPIner",  "PtfmYIner",       "PtfmXYIner",   "PtfmYZIner", "PtfmXZIner", "BldNodes",
+       "BldFile(k)", "TeetMod",         "TeetDmpP",     "TeetDmp",    "TeetCDmp",   "TeetSStP",
+       "TeetHStP",   "TeetSSSp",        "TeetHSSp",     "YawFrctMod", "M_CSmax",    "M_CD",
+       "sig_v",      "sig_v2",          "OmgCut",       "M_FCSmax",   "M_MCSmax",   "M_FCD",
+       "M_MCD",      "GBoxEff",         "GBRatio",      "DTTorSpr",   "DTTorDmp",   "Furling",
+       "FurlFile",   "TwrNodes",        "TwrFile",      "SumPrint",   "OutFile",    "TabDelim",
+       "OutFmt",     "TStart",          "DecFact",      "NTwGages",   "TwrGagNd",   "NBlGages",
+       "BldGagNd",   "BldNd_BladesOut", "BldNd_BlOutNd"},
       {}};
   return l;
 }
@@ -97,8 +103,8 @@ ElastoDynConfiguration readConfiguration(const OpenFastFile& f) {
   // ElastoDyn_IO.f90, ValidatePrimaryData: PreCone(K) "must be in the range (-pi/2, pi/2)".
   for (int k = 1; k <= c.NumBl; ++k)
     if (!(std::abs(c.PreCone[k - 1]) < 90.0))
-      throw InputError(f.where(indexedKey("PreCone", k),
-                               "must be in (-90, 90) deg (is " + numberText(c.PreCone[k - 1]) + ")"));
+      throw InputError(
+          f.where(indexedKey("PreCone", k), "must be in (-90, 90) deg (is " + numberText(c.PreCone[k - 1]) + ")"));
   c.HubCM = f.getDouble("HubCM");
   c.UndSling = f.getDouble("UndSling");
   c.Delta3 = f.getDouble("Delta3");
@@ -143,9 +149,9 @@ ElastoDynMassInertia readMass(const OpenFastFile& f) {
     const char* key;
     double* value;
   };
-  const Scalar required[] = {{"HubMass", &m.HubMass},     {"HubIner", &m.HubIner},     {"GenIner", &m.GenIner},
-                             {"NacMass", &m.NacMass},     {"NacYIner", &m.NacYIner},   {"YawBrMass", &m.YawBrMass},
-                             {"PtfmMass", &m.PtfmMass},   {"PtfmRIner", &m.PtfmRIner}, {"PtfmPIner", &m.PtfmPIner},
+  const Scalar required[] = {{"HubMass", &m.HubMass},    {"HubIner", &m.HubIner},     {"GenIner", &m.GenIner},
+                             {"NacMass", &m.NacMass},    {"NacYIner", &m.NacYIner},   {"YawBrMass", &m.YawBrMass},
+                             {"PtfmMass", &m.PtfmMass},  {"PtfmRIner", &m.PtfmRIner}, {"PtfmPIner", &m.PtfmPIner},
                              {"PtfmYIner", &m.PtfmYIner}};
   for (const Scalar& s : required) {
     *s.value = f.getDouble(s.key);
@@ -166,8 +172,9 @@ ElastoDynTeeter readTeeter(const OpenFastFile& f, int num_blades) {
   const bool two = num_blades == 2;
   auto need = [&](const char* key) {
     if (two && !f.has(key))
-      throw InputError(f.where(key, "key not found: a 2-bladed rotor (NumBl = 2) needs the ROTOR-TEETER section "
-                                    "(TeetMod, TeetDmpP, TeetDmp, TeetCDmp, TeetSStP, TeetHStP, TeetSSSp, TeetHSSp)"));
+      throw InputError(f.where(key,
+                               "key not found: a 2-bladed rotor (NumBl = 2) needs the ROTOR-TEETER section "
+                               "(TeetMod, TeetDmpP, TeetDmp, TeetCDmp, TeetSStP, TeetHStP, TeetSSSp, TeetHSSp)"));
   };
   for (const char* key : {"TeetMod", "TeetDmpP", "TeetDmp", "TeetCDmp", "TeetSStP", "TeetHStP", "TeetSSSp", "TeetHSSp"})
     need(key);

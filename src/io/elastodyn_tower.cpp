@@ -5,14 +5,14 @@
 namespace whirl::io {
 namespace {
 
-/// Keys of ElastoDyn tower files, all versions whirl reads (FAST 8 ElastoDyn v1.00 to OpenFAST v5), arrays written Name(k).
+/// Keys of ElastoDyn tower files, all versions whirl reads (FAST 8 ElastoDyn v1.00 to OpenFAST v5), arrays written
+/// Name(k).
 const OpenFastLayout& layout() {
-  static const OpenFastLayout l{
-      "ElastoDyn tower",
-      {
-      "NTwInpSt", "CalcTMode", "TwrFADmp(k)", "TwrSSDmp(k)", "FAStTunr(k)", "SSStTunr(k)", "AdjTwMa", "AdjFASt", "AdjSSSt",
-      "TwFAM1Sh(k)", "TwFAM2Sh(k)", "TwSSM1Sh(k)", "TwSSM2Sh(k)"},
-      {}};
+  static const OpenFastLayout l{"ElastoDyn tower",
+                                {"NTwInpSt", "CalcTMode", "TwrFADmp(k)", "TwrSSDmp(k)", "FAStTunr(k)", "SSStTunr(k)",
+                                 "AdjTwMa", "AdjFASt", "AdjSSSt", "TwFAM1Sh(k)", "TwFAM2Sh(k)", "TwSSM1Sh(k)",
+                                 "TwSSM2Sh(k)"},
+                                {}};
   return l;
 }
 

@@ -17,14 +17,14 @@ class OverrideSet;
 struct ElastoDynTower {
   OpenFastFile source;  ///< the parsed file (path, line of every key: use source.where(key, reason))
 
-  int NTwInpSt = 0;                    ///< number of tower input stations (-)
-  std::array<double, 2> TwrFADmp{};    ///< fore-aft modes 1, 2: structural damping ratio (% of critical)
-  std::array<double, 2> TwrSSDmp{};    ///< side-to-side modes 1, 2: structural damping ratio (% of critical)
-  std::array<double, 2> FAStTunr{};    ///< fore-aft modes 1, 2: modal stiffness tuner (-)
-  std::array<double, 2> SSStTunr{};    ///< side-to-side modes 1, 2: modal stiffness tuner (-)
-  double AdjTwMa = 1.0;                ///< factor on the tower mass density (-)
-  double AdjFASt = 1.0;                ///< factor on the fore-aft stiffness (-)
-  double AdjSSSt = 1.0;                ///< factor on the side-to-side stiffness (-)
+  int NTwInpSt = 0;                  ///< number of tower input stations (-)
+  std::array<double, 2> TwrFADmp{};  ///< fore-aft modes 1, 2: structural damping ratio (% of critical)
+  std::array<double, 2> TwrSSDmp{};  ///< side-to-side modes 1, 2: structural damping ratio (% of critical)
+  std::array<double, 2> FAStTunr{};  ///< fore-aft modes 1, 2: modal stiffness tuner (-)
+  std::array<double, 2> SSStTunr{};  ///< side-to-side modes 1, 2: modal stiffness tuner (-)
+  double AdjTwMa = 1.0;              ///< factor on the tower mass density (-)
+  double AdjFASt = 1.0;              ///< factor on the fore-aft stiffness (-)
+  double AdjSSSt = 1.0;              ///< factor on the side-to-side stiffness (-)
 
   /// Distributed properties, NTwInpSt stations. Always present and checked: HtFract (-), fraction of the
   /// flexible tower height, 0 → 1 increasing; TMassDen (kg/m) >= 0; TwFAStif, TwSSStif (N·m²) > 0.

@@ -30,10 +30,11 @@ void requireNotFast7(const OpenFastFile& f) {
   if (f.has("EDFile")) return;
   for (const char* key : {"ADAMSPrep", "AnalMode", "TwrFile"}) {
     if (!f.has(key)) continue;
-    throw InputError(f.where(key, "this is a FAST v7 primary input file (the turbine is inline, there is no "
-                                  "EDFile): whirl reads FAST v8 and OpenFAST decks, whose .fst names an "
-                                  "ElastoDyn file; convert it with ConvertFAST7to8.m (OpenFAST "
-                                  "matlab-toolbox, ConvertFASTversions) or use the FAST v8 deck of the same turbine"));
+    throw InputError(f.where(key,
+                             "this is a FAST v7 primary input file (the turbine is inline, there is no "
+                             "EDFile): whirl reads FAST v8 and OpenFAST decks, whose .fst names an "
+                             "ElastoDyn file; convert it with ConvertFAST7to8.m (OpenFAST "
+                             "matlab-toolbox, ConvertFASTversions) or use the FAST v8 deck of the same turbine"));
   }
 }
 

@@ -76,11 +76,11 @@ struct HydroDynMembers {
   std::vector<HydroDynPropSet> props;
   std::vector<HydroDynMember> members;
   std::vector<HydroDynFillGroup> fills;
-  std::vector<HydroDynAxialCoef> axial;          ///< AXIAL COEFFICIENTS
-  std::optional<double> SimplCa;                 ///< the simple table's transverse added-mass coefficient
-  std::optional<double> SimplAxCa;               ///< … and its axial one (on tapers)
-  std::optional<double> SimplCaMG;               ///< … and the transverse one under marine growth
-  std::vector<HydroDynMarineGrowth> growth;      ///< MARINE GROWTH, by increasing z
+  std::vector<HydroDynAxialCoef> axial;      ///< AXIAL COEFFICIENTS
+  std::optional<double> SimplCa;             ///< the simple table's transverse added-mass coefficient
+  std::optional<double> SimplAxCa;           ///< … and its axial one (on tapers)
+  std::optional<double> SimplCaMG;           ///< … and the transverse one under marine growth
+  std::vector<HydroDynMarineGrowth> growth;  ///< MARINE GROWTH, by increasing z
   /// Marine-growth thickness [m] and density [kg/m³] at height z (0, 0 outside the table's depths).
   std::pair<double, double> growthAt(double z) const;
   std::vector<HydroDynMemberCoef> member_coefs;  ///< MEMBER-BASED HYDRODYNAMIC COEFFICIENTS

@@ -5,8 +5,8 @@
 /// aero_support.hpp; this reader only reads.
 ///
 /// Layouts read: InflowWind v3.01 (FAST 8 certification tests: no VFlowAng, `PLexp`) through OpenFAST v3,
-/// v4 and v5 (VFlowAng, VelInterpCubic, LIDAR section; the steady-wind keys unchanged). Keys are matched case-insensitively,
-/// so `PLexp` and `PLExp` are the same key.
+/// v4 and v5 (VFlowAng, VelInterpCubic, LIDAR section; the steady-wind keys unchanged). Keys are matched
+/// case-insensitively, so `PLexp` and `PLExp` are the same key.
 #include <filesystem>
 
 #include "src/io/openfast_input.hpp"

@@ -5,8 +5,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include <cerrno>
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
 #include <cstring>
 
@@ -60,7 +60,8 @@ bool readInputFile(const std::string& path, std::string& text) {
     return false;
   }
   if (!S_ISREG(st.st_mode))
-    throw InputError(where(path, 0, "", "is " + fileKind(st.st_mode) + ", not a regular file: whirl reads input only from files"));
+    throw InputError(
+        where(path, 0, "", "is " + fileKind(st.st_mode) + ", not a regular file: whirl reads input only from files"));
   if (st.st_size > limits::kMaxInputFileBytes) tooLarge(path, static_cast<double>(st.st_size));
   text.assign(static_cast<std::size_t>(st.st_size), '\0');
   std::size_t done = 0;

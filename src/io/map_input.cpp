@@ -6,8 +6,8 @@
 #include <sstream>
 #include <unordered_map>
 
-#include "src/io/input_file.hpp"
 #include "src/io/elastodyn_common.hpp"
+#include "src/io/input_file.hpp"
 #include "src/io/mooring_table.hpp"
 #include "src/io/openfast_input.hpp"
 #include "src/model/error.hpp"
@@ -33,11 +33,11 @@ MapInput readMap(const std::filesystem::path& file) {
     if (t.empty()) continue;
     if (s.rfind("---", 0) == 0 || t[0].rfind("---", 0) == 0) {
       const std::string u = toLower(s);
-      sec = u.find("dictionary") != std::string::npos ? Section::Dictionary
-            : u.find("node") != std::string::npos     ? Section::Nodes
+      sec = u.find("dictionary") != std::string::npos  ? Section::Dictionary
+            : u.find("node") != std::string::npos      ? Section::Nodes
             : u.find("line prop") != std::string::npos ? Section::Lines
-            : u.find("option") != std::string::npos   ? Section::Options
-                                                      : Section::None;
+            : u.find("option") != std::string::npos    ? Section::Options
+                                                       : Section::None;
       header = 2;
       continue;
     }
@@ -48,8 +48,9 @@ MapInput readMap(const std::filesystem::path& file) {
     switch (sec) {
       case Section::Dictionary: {
         if (t.size() < 5) throw r.fail("LineType", "expected LineType Diam MassDenInAir EA CB …");
-        MapLineType lt{t[0], r.number(t[1], "Diam"), r.number(t[2], "MassDenInAir"), r.number(t[3], "EA"),
-                       r.number(t[4], "CB"), r.line};
+        MapLineType lt{
+            t[0],  r.number(t[1], "Diam"), r.number(t[2], "MassDenInAir"), r.number(t[3], "EA"), r.number(t[4], "CB"),
+            r.line};
         if (!(lt.Diam >= 0)) throw r.fail("Diam", "must not be negative");
         if (!(lt.MassDenInAir > 0)) throw r.fail("MassDenInAir", "must be positive");
         if (!(lt.EA > 0)) throw r.fail("EA", "must be positive");
@@ -63,17 +64,15 @@ MapInput readMap(const std::filesystem::path& file) {
         n.id = r.integer(t[0], "Node");
         n.line = r.line;
         const std::string type = toLower(t[1]);
-        if (type == "fix" || type == "fixed")
-          n.fixed = true;
+        if (type == "fix" || type == "fixed") n.fixed = true;
         else if (type == "connect")
-          throw r.fail("Type", "connect nodes (multi-segment lines) are not supported by whirl: only anchor-to-fairlead lines");
-        else if (type != "vessel")
-          throw r.fail("Type", "'" + t[1] + "' is not fix, vessel or connect");
+          throw r.fail("Type",
+                       "connect nodes (multi-segment lines) are not supported by whirl: only anchor-to-fairlead lines");
+        else if (type != "vessel") throw r.fail("Type", "'" + t[1] + "' is not fix, vessel or connect");
         n.position(0) = r.number(t[2], "X");
         n.position(1) = r.number(t[3], "Y");
         if (toLower(t[4]) == "depth") n.at_depth = true;
-        else
-          n.position(2) = r.number(t[4], "Z");
+        else n.position(2) = r.number(t[4], "Z");
         if (r.number(t[5], "M") != 0.0 || r.number(t[6], "B") != 0.0)
           throw r.fail("M", "clump weights and buoys (M, B ≠ 0) are not supported by whirl");
         m.nodes.push_back(n);
@@ -81,7 +80,7 @@ MapInput readMap(const std::filesystem::path& file) {
       }
       case Section::Lines: {
         if (t.size() < 5) throw r.fail("Line", "expected Line LineType UnstrLen NodeAnch NodeFair …");
-        MapLine l{r.integer(t[0], "Line"), t[1], r.number(t[2], "UnstrLen"), r.integer(t[3], "NodeAnch"),
+        MapLine l{r.integer(t[0], "Line"),     t[1],  r.number(t[2], "UnstrLen"), r.integer(t[3], "NodeAnch"),
                   r.integer(t[4], "NodeFair"), r.line};
         if (!(l.UnstrLen > 0)) throw r.fail("UnstrLen", "must be positive");
         m.lines.push_back(l);
@@ -92,7 +91,8 @@ MapInput readMap(const std::filesystem::path& file) {
           for (std::size_t k = 1; k < t.size(); ++k) m.repeat_deg.push_back(r.number(t[k], "repeat"));
         break;  // the other options tune MAP++'s solver
       }
-      case Section::None: throw r.fail("", "data outside a LINE DICTIONARY, NODE PROPERTIES, LINE PROPERTIES or SOLVER OPTIONS section");
+      case Section::None:
+        throw r.fail("", "data outside a LINE DICTIONARY, NODE PROPERTIES, LINE PROPERTIES or SOLVER OPTIONS section");
     }
   }
   if (m.lines.empty()) throw InputError(whirl::where(m.path.string(), 0, "Line", "no mooring line"));
@@ -106,8 +106,9 @@ void requireUniqueMooringIds(const MapInput& m) {
   auto check = [&](const char* key, const std::string& id, int line, std::unordered_map<std::string, int>& seen) {
     const auto [it, inserted] = seen.emplace(id, line);
     if (!inserted)
-      throw InputError(whirl::where(file, line, key, "'" + id.substr(0, 40) + "' given twice (first on line " +
-                                                         std::to_string(it->second) + "): ids must be unique"));
+      throw InputError(whirl::where(file, line, key,
+                                    "'" + id.substr(0, 40) + "' given twice (first on line " +
+                                        std::to_string(it->second) + "): ids must be unique"));
   };
   std::unordered_map<std::string, int> types, nodes, lines;
   for (const MapLineType& t : m.types) check("LineType", toLower(t.name), t.line, types);
@@ -127,11 +128,15 @@ std::vector<MooringLine> mapMooringLines(const MapInput& map, int body, double d
     const MapLineType* type = nullptr;
     for (const MapLineType& t : map.types)
       if (toLower(t.name) == toLower(l.type)) type = &t;
-    if (!type) throw InputError(whirl::where(file, l.line, "LineType", "no line type '" + l.type + "' in the dictionary"));
+    if (!type)
+      throw InputError(whirl::where(file, l.line, "LineType", "no line type '" + l.type + "' in the dictionary"));
     const MapNode& a = node(l.anchor, l, "NodeAnch");
     const MapNode& f = node(l.fairlead, l, "NodeFair");
-    if (!a.fixed) throw InputError(whirl::where(file, l.line, "NodeAnch", "node " + std::to_string(a.id) + " is not a fix node"));
-    if (f.fixed) throw InputError(whirl::where(file, l.line, "NodeFair", "node " + std::to_string(f.id) + " is not a vessel node"));
+    if (!a.fixed)
+      throw InputError(whirl::where(file, l.line, "NodeAnch", "node " + std::to_string(a.id) + " is not a fix node"));
+    if (f.fixed)
+      throw InputError(
+          whirl::where(file, l.line, "NodeFair", "node " + std::to_string(f.id) + " is not a vessel node"));
     MooringLine ml;
     ml.body = body;
     ml.fairlead = f.position;

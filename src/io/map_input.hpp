@@ -21,9 +21,9 @@ struct MapLineType {
 
 struct MapNode {
   int id = 0;
-  bool fixed = false;        ///< `fix` (anchor); otherwise `vessel` (fairlead)
+  bool fixed = false;  ///< `fix` (anchor); otherwise `vessel` (fairlead)
   Vec3 position = Vec3::Zero();
-  bool at_depth = false;     ///< Z written `depth`: on the seabed
+  bool at_depth = false;  ///< Z written `depth`: on the seabed
   int line = 0;
 };
 

@@ -74,8 +74,8 @@ MapInput readMoorDyn(const std::filesystem::path& file) {
       // bounds the count, which MoorDyn would allocate.
       const double n = r.number(t[0], t[1]);
       if (n != std::floor(n) || n < 0 || n > limits::kMaxMooringCount)
-        throw r.fail(t[1], "must be in [0, " + std::to_string(limits::kMaxMooringCount) + "] (is " + t[0].substr(0, 40) +
-                               "; src/model/limits.hpp)");
+        throw r.fail(t[1], "must be in [0, " + std::to_string(limits::kMaxMooringCount) + "] (is " +
+                               t[0].substr(0, 40) + "; src/model/limits.hpp)");
       continue;
     }
     if (header > 0) {

@@ -146,7 +146,8 @@ std::optional<double> parseFortranDouble(std::string_view text) {
   if (s.empty()) return std::nullopt;
   const char c0 = s.front();
   if ((c0 >= '0' && c0 <= '9') || c0 == '.' || c0 == '-')
-    std::replace_if(s.begin(), s.end(), [](char c) { return c == 'd' || c == 'D'; }, 'e');
+    std::replace_if(
+        s.begin(), s.end(), [](char c) { return c == 'd' || c == 'D'; }, 'e');
   double v = 0.0;
   const auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
   if (ec != std::errc() || ptr != s.data() + s.size()) return std::nullopt;
@@ -272,8 +273,7 @@ std::string OpenFastFile::where(const OpenFastEntry& e, const std::string& reaso
 
 std::string OpenFastFile::singleToken(const OpenFastEntry& e, const char* what) const {
   if (e.tokens.empty()) throw InputError(where(e, std::string("no value, expected ") + what));
-  if (e.tokens.size() > 1)
-    throw InputError(where(e, "expected one " + std::string(what) + ", found '" + e.raw + "'"));
+  if (e.tokens.size() > 1) throw InputError(where(e, "expected one " + std::string(what) + ", found '" + e.raw + "'"));
   return e.tokens.front();
 }
 

@@ -56,7 +56,7 @@ struct OpenFastTable {
 
 /// The keys of one OpenFAST file type, over the versions whirl reads (for OpenFastFile::checkLayout).
 struct OpenFastLayout {
-  const char* name = "";                     ///< file type for messages, e.g. "ElastoDyn"
+  const char* name = "";  ///< file type for messages, e.g. "ElastoDyn"
   /// Every key in file order (versions merged); an array written `Name(k)` (its entries `Name(1)`,
   /// `Name1`, …); empty: any key accepted.
   std::vector<std::string_view> keys;

@@ -71,8 +71,7 @@ class LinParser {
       // Fortran drops the 'E' of a 3-digit exponent: "1.234567-100".
       const std::size_t e = t.find_last_of("+-");
       double mant = 0.0, expo = 0.0;
-      if (e == 0 || e == std::string_view::npos || !fullParse(t.substr(0, e), mant) ||
-          !fullParse(t.substr(e), expo))
+      if (e == 0 || e == std::string_view::npos || !fullParse(t.substr(0, e), mant) || !fullParse(t.substr(e), expo))
         fail(i, key, "'" + excerpt(t) + "' is not a number");
       v = mant * std::pow(10.0, expo);
     }
@@ -101,8 +100,9 @@ class LinParser {
     const int v = integer(t, i, key);
     if (v < 0) fail(i, key, "negative count");
     if (v > limits::kMaxLinDimension)
-      fail(i, key, std::to_string(v) + " is above the limit of " + std::to_string(limits::kMaxLinDimension) +
-                       " (src/model/limits.hpp)");
+      fail(i, key,
+           std::to_string(v) + " is above the limit of " + std::to_string(limits::kMaxLinDimension) +
+               " (src/model/limits.hpp)");
     return v;
   }
 
@@ -126,8 +126,7 @@ class LinParser {
 void LinParser::header(OpenFastLin& f, std::size_t& i) {
   bool have_time = false, have_speed = false, have_azimuth = false, have_counts[5] = {};
   static const char* const count_keys[5] = {"Number of continuous states:", "Number of discrete states:",
-                                            "Number of constraint states:", "Number of inputs:",
-                                            "Number of outputs:"};
+                                            "Number of constraint states:", "Number of inputs:", "Number of outputs:"};
   int* const counts[5] = {&f.n_x, &f.n_xd, &f.n_z, &f.n_u, &f.n_y};
   auto value = [&](std::string_view line, std::string_view key) {
     std::size_t pos = key.size();
@@ -219,11 +218,12 @@ Eigen::MatrixXd LinParser::matrix(std::size_t& i, int rows, int cols, const std:
       values.push_back(number(t, i, key));
     }
     if (c != cols)
-      fail(i, key, std::to_string(c) + " values in row " + std::to_string(r + 1) + ", expected " + std::to_string(cols));
+      fail(i, key,
+           std::to_string(c) + " values in row " + std::to_string(r + 1) + ", expected " + std::to_string(cols));
   }
   if (values.empty()) return Eigen::MatrixXd(rows, cols);  // a 0 x n or n x 0 block
   return Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(values.data(), rows,
-                                                                                                   cols);
+                                                                                                  cols);
 }
 
 OpenFastLin LinParser::parse() {
@@ -242,16 +242,17 @@ OpenFastLin LinParser::parse() {
     else if (startsWith(l, "Order of constraint states:")) f.z = table(i, f.n_z, "constraint states"), have_z = true;
     else if (startsWith(l, "Order of inputs:")) f.u = table(i, f.n_u, "inputs"), have_u = true;
     else if (startsWith(l, "Order of outputs:")) f.y = table(i, f.n_y, "outputs"), have_y = true;
-    else if (std::smatch m; l.find(" x ") != std::string_view::npos &&
-                            std::regex_match(lines_[i], m, mat_title)) {
+    else if (std::smatch m; l.find(" x ") != std::string_view::npos && std::regex_match(lines_[i], m, mat_title)) {
       const std::string name = m[1];
-      const int rows = dimension(m[2].str(), i, m[1].str() + " rows"), cols = dimension(m[3].str(), i, m[1].str() + " columns");
+      const int rows = dimension(m[2].str(), i, m[1].str() + " rows"),
+                cols = dimension(m[3].str(), i, m[1].str() + " columns");
       const std::size_t title = i;
       Eigen::MatrixXd mat = matrix(i, rows, cols, name);
       auto expect = [&](int r, int c) {
         if (rows != r || cols != c)
-          fail(title, name, "is " + std::to_string(rows) + " x " + std::to_string(cols) + ", the header implies " +
-                                std::to_string(r) + " x " + std::to_string(c));
+          fail(title, name,
+               "is " + std::to_string(rows) + " x " + std::to_string(cols) + ", the header implies " +
+                   std::to_string(r) + " x " + std::to_string(c));
       };
       if (name == "A") expect(f.n_x, f.n_x), f.A = std::move(mat);
       else if (name == "B") expect(f.n_x, f.n_u), f.B = std::move(mat);

@@ -28,36 +28,37 @@ namespace whirl {
 
 /// One row of a table (one state, state derivative, input or output).
 struct LinVariable {
-  double op = 0.0;                 ///< operating-point value (NaN if printed as ****)
-  std::vector<double> op_values;   ///< all values of the row when it prints more than one, else empty
-  bool rotating = false;           ///< "Rotating Frame?" column: T = in the rotating (blade) frame
-  int derivative_order = -1;       ///< "Derivative Order" column (0, 1 or 2); -1 if the file has none
-  std::string description;         ///< e.g. "ED 1st flapwise bending-mode DOF of blade 1 (...), m"
-  int line = 0;                    ///< 1-based line in the file, for messages
+  double op = 0.0;                ///< operating-point value (NaN if printed as ****)
+  std::vector<double> op_values;  ///< all values of the row when it prints more than one, else empty
+  bool rotating = false;          ///< "Rotating Frame?" column: T = in the rotating (blade) frame
+  int derivative_order = -1;      ///< "Derivative Order" column (0, 1 or 2); -1 if the file has none
+  std::string description;        ///< e.g. "ED 1st flapwise bending-mode DOF of blade 1 (...), m"
+  int line = 0;                   ///< 1-based line in the file, for messages
 };
 
 /// Contents of one `.lin` file. Vectors and matrices are in the order of the file.
 struct OpenFastLin {
-  std::string path;                 ///< file as given to the reader
-  std::string generator;            ///< "Predictions were generated on ... using OpenFAST ..." line
-  double time = 0.0;                ///< simulation time of the linearization (s)
-  double rotor_speed = 0.0;         ///< Ω (rad/s)
-  double azimuth = 0.0;             ///< rotor azimuth ψ (rad), blade 1
-  std::optional<double> wind_speed; ///< hub-height wind speed (m/s), absent in older files
+  std::string path;                                  ///< file as given to the reader
+  std::string generator;                             ///< "Predictions were generated on ... using OpenFAST ..." line
+  double time = 0.0;                                 ///< simulation time of the linearization (s)
+  double rotor_speed = 0.0;                          ///< Ω (rad/s)
+  double azimuth = 0.0;                              ///< rotor azimuth ψ (rad), blade 1
+  std::optional<double> wind_speed;                  ///< hub-height wind speed (m/s), absent in older files
   int n_x = 0, n_xd = 0, n_z = 0, n_u = 0, n_y = 0;  ///< numbers of states, inputs, outputs
-  bool has_jacobians = false;       ///< "Jacobians included in this file?"
-  std::vector<LinVariable> x;       ///< continuous states (dim n_x)
-  std::vector<LinVariable> xdot;    ///< their time derivatives (dim n_x)
-  std::vector<LinVariable> xd;      ///< discrete states (dim n_xd)
-  std::vector<LinVariable> z;       ///< constraint states (dim n_z)
-  std::vector<LinVariable> u;       ///< inputs (dim n_u)
-  std::vector<LinVariable> y;       ///< outputs (dim n_y)
-  Eigen::MatrixXd A;                ///< ∂ẋ/∂x (n_x × n_x), empty if n_x = 0
-  Eigen::MatrixXd B;                ///< ∂ẋ/∂u (n_x × n_u), empty if absent
-  Eigen::MatrixXd C;                ///< ∂y/∂x (n_y × n_x), empty if absent
-  Eigen::MatrixXd D;                ///< ∂y/∂u (n_y × n_u), empty if absent
-  int non_finite_values = 0;        ///< values printed as ****, NaN or Infinity anywhere in the file
-  std::map<std::string, int> first_non_finite;  ///< matrix ("A") or table key → 1-based line of its first non-finite value
+  bool has_jacobians = false;                        ///< "Jacobians included in this file?"
+  std::vector<LinVariable> x;                        ///< continuous states (dim n_x)
+  std::vector<LinVariable> xdot;                     ///< their time derivatives (dim n_x)
+  std::vector<LinVariable> xd;                       ///< discrete states (dim n_xd)
+  std::vector<LinVariable> z;                        ///< constraint states (dim n_z)
+  std::vector<LinVariable> u;                        ///< inputs (dim n_u)
+  std::vector<LinVariable> y;                        ///< outputs (dim n_y)
+  Eigen::MatrixXd A;                                 ///< ∂ẋ/∂x (n_x × n_x), empty if n_x = 0
+  Eigen::MatrixXd B;                                 ///< ∂ẋ/∂u (n_x × n_u), empty if absent
+  Eigen::MatrixXd C;                                 ///< ∂y/∂x (n_y × n_x), empty if absent
+  Eigen::MatrixXd D;                                 ///< ∂y/∂u (n_y × n_u), empty if absent
+  int non_finite_values = 0;                         ///< values printed as ****, NaN or Infinity anywhere in the file
+  std::map<std::string, int>
+      first_non_finite;  ///< matrix ("A") or table key → 1-based line of its first non-finite value
 };
 
 /// Reads one `.lin` file.

@@ -38,8 +38,8 @@ std::string dofNameFromLinDescription(const std::string& d) {
       R"(^BD_(\d+) (?:First time derivative of )?finite element node (\d+).*(translational|rotational) displacement in ([XYZ]))");
   std::smatch m;
   if (std::regex_search(d, m, beamdyn))
-    return "blade " + m[1].str() + " BD node " + m[2].str() + (m[3] == "translational" ? " translation " : " rotation ") +
-           m[4].str();
+    return "blade " + m[1].str() + " BD node " + m[2].str() +
+           (m[3] == "translational" ? " translation " : " rotation ") + m[4].str();
   if (const std::string hd = hydroDynName(d); !hd.empty()) return hd;
   if (std::regex_search(d, m, tower))
     return std::string("tower ") + (m[2].str()[0] == 'f' || m[2].str()[0] == 'F' ? "FA " : "SS ") + ordinal(m[1]);

@@ -9,9 +9,7 @@ namespace whirl::io {
 
 KeyOverride parseOverride(std::string_view text) {
   const std::size_t eq = text.find('=');
-  auto bad = [&](const char* reason) {
-    return InputError("--set '" + std::string(text) + "': " + reason);
-  };
+  auto bad = [&](const char* reason) { return InputError("--set '" + std::string(text) + "': " + reason); };
   if (eq == std::string_view::npos) throw bad("expected KEY=VALUE");
   auto strip = [](std::string_view s) {
     while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);

@@ -33,10 +33,8 @@ void refusePlatformWithoutSupport(const ElastoDynInput& ed, Refusals& r) {
   std::string first, others;
   for (const auto& [on, key] : platform) {
     if (!on) continue;
-    if (first.empty())
-      first = key;
-    else
-      others += (others.empty() ? "" : ", ") + std::string(key);
+    if (first.empty()) first = key;
+    else others += (others.empty() ? "" : ", ") + std::string(key);
   }
   r.addIf(!first.empty(), first,
           "platform DOFs are not modelled" + (others.empty() ? std::string() : ", and " + others + " are on too") +

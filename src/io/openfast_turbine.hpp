@@ -31,10 +31,10 @@ struct OpenFastTurbine {
   std::vector<BeamDynInput> beamdyn;
 };
 
-/// Reads `fst` and the ElastoDyn files it names, the BeamDyn files with CompElast = 2, its SubDyn file (CompSub = 1), and otherwise, with a
-/// platform DOF on, its HydroDyn (CompHydro = 1) and MAP++ (CompMooring = 1) or MoorDyn (3) files. `overrides` (may be
-/// null) apply to every file read; call overrides->requireAllUsed() once all the files the run needs are read. Throws
-/// InputError naming file, line and key, e.g. "a.fst:33: EDFile: file not found: …".
+/// Reads `fst` and the ElastoDyn files it names, the BeamDyn files with CompElast = 2, its SubDyn file (CompSub = 1),
+/// and otherwise, with a platform DOF on, its HydroDyn (CompHydro = 1) and MAP++ (CompMooring = 1) or MoorDyn (3)
+/// files. `overrides` (may be null) apply to every file read; call overrides->requireAllUsed() once all the files the
+/// run needs are read. Throws InputError naming file, line and key, e.g. "a.fst:33: EDFile: file not found: …".
 OpenFastTurbine readOpenFastTurbine(const std::filesystem::path& fst, OverrideSet* overrides = nullptr);
 
 /// The ServoDyn file when CompServo = 1, nullopt when ServoDyn is off (no yaw spring). Throws

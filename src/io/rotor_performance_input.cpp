@@ -1,8 +1,8 @@
 #include "src/io/rotor_performance_input.hpp"
 
 #include <cmath>
-#include <sstream>
 #include <numbers>
+#include <sstream>
 
 #include "src/io/input_file.hpp"
 #include "src/io/openfast_lines.hpp"
@@ -18,8 +18,7 @@ struct Lines {
   std::vector<double> numbers(size_t i, const std::string& key) const {
     if (i >= text.size()) throw InputError(where(file, static_cast<int>(i), key, "file ends before the values"));
     auto row = parseNumberRow(text[i]);
-    if (!row || row->empty())
-      throw InputError(where(file, static_cast<int>(i + 1), key, "expected a row of numbers"));
+    if (!row || row->empty()) throw InputError(where(file, static_cast<int>(i + 1), key, "expected a row of numbers"));
     for (double v : *row)
       if (!std::isfinite(v)) throw InputError(where(file, static_cast<int>(i + 1), key, "value is not finite"));
     return *row;
@@ -40,8 +39,7 @@ void checkGrid(const Lines& f, size_t line, const std::string& key, const std::v
     throw InputError(where(f.file, static_cast<int>(line + 1), key, "more than 1000 values"));
   if (g.size() < 4) throw InputError(where(f.file, static_cast<int>(line + 1), key, "needs at least 4 values"));
   for (size_t i = 1; i < g.size(); ++i)
-    if (!(g[i] > g[i - 1]))
-      throw InputError(where(f.file, static_cast<int>(line + 1), key, "values must increase"));
+    if (!(g[i] > g[i - 1])) throw InputError(where(f.file, static_cast<int>(line + 1), key, "values must increase"));
 }
 
 MatX table(const Lines& f, const std::string& word, const std::string& key, size_t rows, size_t cols) {
@@ -51,9 +49,9 @@ MatX table(const Lines& f, const std::string& word, const std::string& key, size
     const size_t i = head + 2 + r;
     const std::vector<double> row = f.numbers(i, key);
     if (row.size() != cols)
-      throw InputError(where(f.file, static_cast<int>(i + 1), key,
-                             std::to_string(row.size()) + " values, expected one per pitch angle (" +
-                                 std::to_string(cols) + ")"));
+      throw InputError(
+          where(f.file, static_cast<int>(i + 1), key,
+                std::to_string(row.size()) + " values, expected one per pitch angle (" + std::to_string(cols) + ")"));
     for (size_t c = 0; c < cols; ++c) t(r, c) = row[c];
   }
   return t;

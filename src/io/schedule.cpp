@@ -31,8 +31,9 @@ std::vector<SweepPoint> readSchedule(const std::string& path) {
   if (rpm < 0)
     throw InputError(where(path, t.header_line, "", "no rotor-speed column (a column named RotSpeed… or rpm)"));
   const int ws = findColumn(t, [](const std::string& n) { return n.rfind("ws", 0) == 0 || n.rfind("wind", 0) == 0; });
-  const int pitch =
-      findColumn(t, [](const std::string& n) { return n.rfind("bldpitch", 0) == 0 || n.rfind("pitch", 0) == 0; });
+  const int pitch = findColumn(t, [](const std::string& n) {
+    return n.rfind("bldpitch", 0) == 0 || n.rfind("pitch", 0) == 0;
+  });
   std::vector<SweepPoint> pts;
   for (size_t r = 0; r < t.columns[rpm].size(); ++r) {
     const double speed = t.columns[rpm][r];

@@ -53,7 +53,8 @@ GeneratorTorqueLaw generatorTorqueLaw(const ServoDynInput& servo) {
   if (vs == 3) throw refusal(f, "VSContrl", "torque from the user routine UserVSCont", supported);
   if (vs == 4) throw refusal(f, "VSContrl", "torque from Simulink/LabVIEW", supported);
   if (vs == 5) throw refusal(f, "VSContrl", "torque from a Bladed-style controller DLL", supported);
-  if (vs != 0 && vs != 1) throw InputError(f.where("VSContrl", "must be 0, 1, 3, 4 or 5 (is " + std::to_string(vs) + ")"));
+  if (vs != 0 && vs != 1)
+    throw InputError(f.where("VSContrl", "must be 0, 1, 3, 4 or 5 (is " + std::to_string(vs) + ")"));
   law.GenEff = f.getDouble("GenEff");
   if (!(law.GenEff > 0.0 && law.GenEff <= 100.0))
     throw InputError(f.where("GenEff", "must be in (0, 100] % (is " + numberText(law.GenEff) + ")"));

@@ -24,18 +24,19 @@ struct ServoDynInput {
   double YawSpr = 0.0;   ///< nacelle-yaw spring constant (N·m/rad)
   double YawDamp = 0.0;  ///< nacelle-yaw damping constant (N·m/(rad/s))
 
-  std::optional<int> PCMode;       ///< pitch control {0 none, 3 user routine, 4 Simulink, 5 Bladed DLL}
-  std::optional<int> VSContrl;     ///< variable-speed control {0 none: GenModel, 1 simple VS, 3 routine, 4 Simulink, 5 DLL}
-  std::optional<int> GenModel;     ///< generator model when VSContrl = 0 {1 simple induction, 2 Thevenin, 3 user}
-  std::optional<double> GenEff;    ///< generator efficiency (%)
-  std::optional<double> VS_RtGnSp; ///< rated generator speed of the simple VS law (rpm, HSS)
-  std::optional<double> VS_RtTq;   ///< rated (region 3) generator torque of the simple VS law (N·m, HSS)
-  std::optional<double> VS_Rgn2K;  ///< region-2 torque constant, torque = VS_Rgn2K·speed² (N·m/rpm², HSS)
-  std::optional<double> VS_SlPc;   ///< rated slip of the region 2½ line of the simple VS law (%)
-  std::optional<double> SIG_SlPc;  ///< rated slip of the simple induction generator (%)
-  std::optional<double> SIG_SySp;  ///< synchronous (zero-torque) speed of the simple induction generator (rpm, HSS)
-  std::optional<double> SIG_RtTq;  ///< rated torque of the simple induction generator (N·m, HSS)
-  std::optional<double> SIG_PORt;  ///< pull-out ratio of the simple induction generator, Tpullout/Trated (-)
+  std::optional<int> PCMode;  ///< pitch control {0 none, 3 user routine, 4 Simulink, 5 Bladed DLL}
+  std::optional<int>
+      VSContrl;  ///< variable-speed control {0 none: GenModel, 1 simple VS, 3 routine, 4 Simulink, 5 DLL}
+  std::optional<int> GenModel;      ///< generator model when VSContrl = 0 {1 simple induction, 2 Thevenin, 3 user}
+  std::optional<double> GenEff;     ///< generator efficiency (%)
+  std::optional<double> VS_RtGnSp;  ///< rated generator speed of the simple VS law (rpm, HSS)
+  std::optional<double> VS_RtTq;    ///< rated (region 3) generator torque of the simple VS law (N·m, HSS)
+  std::optional<double> VS_Rgn2K;   ///< region-2 torque constant, torque = VS_Rgn2K·speed² (N·m/rpm², HSS)
+  std::optional<double> VS_SlPc;    ///< rated slip of the region 2½ line of the simple VS law (%)
+  std::optional<double> SIG_SlPc;   ///< rated slip of the simple induction generator (%)
+  std::optional<double> SIG_SySp;   ///< synchronous (zero-torque) speed of the simple induction generator (rpm, HSS)
+  std::optional<double> SIG_RtTq;   ///< rated torque of the simple induction generator (N·m, HSS)
+  std::optional<double> SIG_PORt;   ///< pull-out ratio of the simple induction generator, Tpullout/Trated (-)
 };
 
 /// Reads the yaw keys of a ServoDyn file (YawSpr and YawDamp must not be negative) and, when present,

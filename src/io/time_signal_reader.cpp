@@ -37,8 +37,9 @@ bool parseCall(const std::string& text, const std::string& name, size_t count, c
     out.push_back(v);
   }
   if (out.size() != count)
-    throw InputError(where("", 0, key, "'" + text + "': " + name + " takes " + std::to_string(count) + " numbers, got " +
-                                           std::to_string(out.size())));
+    throw InputError(where("", 0, key,
+                           "'" + text + "': " + name + " takes " + std::to_string(count) + " numbers, got " +
+                               std::to_string(out.size())));
   return true;
 }
 
@@ -53,7 +54,9 @@ std::pair<std::string, std::string> splitAssignment(const std::string& text, con
 
 TimeSignal parseTimeSignal(const std::string& raw, const std::string& key) {
   const std::string text = trim(raw);
-  if (text.empty()) throw InputError(where("", 0, key, "empty signal: expected step(t0,a), ramp(t0,t1,a), sin(A,f), spinup(T,w) or a CSV file"));
+  if (text.empty())
+    throw InputError(
+        where("", 0, key, "empty signal: expected step(t0,a), ramp(t0,t1,a), sin(A,f), spinup(T,w) or a CSV file"));
   TimeSignal s;
   s.source = text;
   if (parseCall(text, "step", 2, key, s.parameters)) {
@@ -77,9 +80,13 @@ TimeSignal parseTimeSignal(const std::string& raw, const std::string& key) {
     return s;
   }
   if (text.find('(') != std::string::npos)
-    throw InputError(where("", 0, key, "'" + text + "': unknown signal; expected step(t0,a), ramp(t0,t1,a), sin(A,f), spinup(T,w) or a CSV file"));
+    throw InputError(
+        where("", 0, key,
+              "'" + text +
+                  "': unknown signal; expected step(t0,a), ramp(t0,t1,a), sin(A,f), spinup(T,w) or a CSV file"));
   const CsvTable table = readCsv(text);
-  if (table.names.size() < 2) throw InputError(where(text, table.header_line, "", "expected the columns time and value"));
+  if (table.names.size() < 2)
+    throw InputError(where(text, table.header_line, "", "expected the columns time and value"));
   s.kind = TimeSignal::Kind::Table;
   s.time = table.columns[0];
   s.values = table.columns[1];

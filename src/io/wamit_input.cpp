@@ -4,8 +4,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "src/io/input_file.hpp"
 #include "src/io/elastodyn_common.hpp"
+#include "src/io/input_file.hpp"
 #include "src/model/error.hpp"
 
 namespace whirl::io {
@@ -49,12 +49,14 @@ std::vector<Row> numericRows(const std::filesystem::path& file, std::size_t min_
     r.line = n;
     for (std::string tok; ss >> tok;) {
       const std::optional<double> x = parseFortranDouble(tok);
-      if (!x || !std::isfinite(*x)) throw InputError(whirl::where(file.string(), n, "", "'" + tok + "' is not a finite number"));
+      if (!x || !std::isfinite(*x))
+        throw InputError(whirl::where(file.string(), n, "", "'" + tok + "' is not a finite number"));
       r.v.push_back(*x);
     }
     if (r.v.empty()) continue;
     if (r.v.size() < min_cols)
-      throw InputError(whirl::where(file.string(), n, "", "expected at least " + std::to_string(min_cols) + " numbers"));
+      throw InputError(
+          whirl::where(file.string(), n, "", "expected at least " + std::to_string(min_cols) + " numbers"));
     rows.push_back(std::move(r));
   }
   return rows;

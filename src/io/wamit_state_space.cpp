@@ -4,8 +4,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "src/io/input_file.hpp"
 #include "src/io/elastodyn_common.hpp"
+#include "src/io/input_file.hpp"
 #include "src/io/wamit_input.hpp"
 #include "src/model/error.hpp"
 #include "src/model/limits.hpp"

@@ -53,7 +53,8 @@ void finalizeAero(Model& m, const std::vector<int>& new_body, const std::vector<
   }
   for (const Output& o : m.outputs) {
     if (o.kind != OutputKind::Rotor) continue;
-    const bool gen = o.rotor_quantity == RotorQuantity::GeneratorTorque || o.rotor_quantity == RotorQuantity::GeneratorPower;
+    const bool gen = o.rotor_quantity == RotorQuantity::GeneratorTorque ||
+                     o.rotor_quantity == RotorQuantity::GeneratorPower;
     if (gen ? !m.generator.active() : !a.active())
       throw InputError("output '" + o.name + "': the model has no " + (gen ? "generator torque law" : "aerodynamics"));
   }

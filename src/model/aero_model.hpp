@@ -23,13 +23,13 @@ namespace whirl {
 
 /// One blade element: a node of AeroDyn's blade mesh.
 struct AeroStation {
-  int point = -1;      ///< body point at the aerodynamic centre (shape values at the station's span)
-  double span = 0;     ///< distance from the blade root along the undeflected span axis [m]
-  double z = 0;        ///< distance from the rotor apex along the blade (AeroDyn zLocal, loss constants) [m]
-  double chord = 0;    ///< [m]
-  double twist = 0;    ///< aerodynamic twist, positive towards feather [rad]
-  int polar = -1;      ///< index into AeroModel::polars
-  double weight = 0;   ///< length the element's load per unit length acts over (trapezoid rule) [m]
+  int point = -1;     ///< body point at the aerodynamic centre (shape values at the station's span)
+  double span = 0;    ///< distance from the blade root along the undeflected span axis [m]
+  double z = 0;       ///< distance from the rotor apex along the blade (AeroDyn zLocal, loss constants) [m]
+  double chord = 0;   ///< [m]
+  double twist = 0;   ///< aerodynamic twist, positive towards feather [rad]
+  int polar = -1;     ///< index into AeroModel::polars
+  double weight = 0;  ///< length the element's load per unit length acts over (trapezoid rule) [m]
   /// Carries unsteady-airfoil states (AeroModel::ua_mod > 0, inside UAStartRad … UAEndRad and a table that
   /// allows them: src/aero/ua_span.hpp).
   bool ua = false;
@@ -55,13 +55,13 @@ struct SteadyWind {
 struct AeroModel {
   std::vector<aero::Polar> polars;
   std::vector<AeroBlade> blades;
-  int hub_body = -1;            ///< its frame: origin at the rotor apex, x along the rotor axis (disk normal)
-  double air_density = 1.225;   ///< [kg/m³]
+  int hub_body = -1;                      ///< its frame: origin at the rotor apex, x along the rotor axis (disk normal)
+  double air_density = 1.225;             ///< [kg/m³]
   double kinematic_viscosity = 1.464e-5;  ///< [m²/s], for polars with tables on the Reynolds number
-  double hub_radius = 0;        ///< AeroDyn zHub: apex to blade root along the blade (hub loss) [m]
-  double tip_radius = 0;        ///< AeroDyn zTip: apex to the last element along the blade (tip loss) [m]
-  double rotor_radius = 0;      ///< radius of the swept disk (AeroDyn rTipFix: coned tip) for Cp, Ct, TSR [m]
-  bool induction = true;        ///< BEM induction (AeroDyn WakeMod = 1); false: geometric inflow (WakeMod = 0)
+  double hub_radius = 0;                  ///< AeroDyn zHub: apex to blade root along the blade (hub loss) [m]
+  double tip_radius = 0;                  ///< AeroDyn zTip: apex to the last element along the blade (tip loss) [m]
+  double rotor_radius = 0;                ///< radius of the swept disk (AeroDyn rTipFix: coned tip) for Cp, Ct, TSR [m]
+  bool induction = true;  ///< BEM induction (AeroDyn WakeMod = 1); false: geometric inflow (WakeMod = 0)
   aero::BemOptions bem;
   SteadyWind wind;
   /// Unsteady airfoil aerodynamics (AeroDyn UA_Mod): 0 none, 4 (HGM) or 6 (Øye); other values leave it 0.
@@ -84,12 +84,12 @@ struct AeroModel {
 /// `speed_output`; the torque is added to the value of the generator-torque input
 /// (ModelRoles::generator_torque_input: the trim or controller offset), whose loads apply it.
 struct GeneratorTorqueLaw {
-  int speed_output = -1;   ///< the "GenSpeed" output [rad/s], a combination of coordinate rates
-  double rated_speed = 0;  ///< VS_RtGnSp [rad/s]
-  double rated_torque = 0; ///< VS_RtTq [N m]
-  double k2 = 0;           ///< VS_Rgn2K [N m s²/rad²]
-  double slip = 0;         ///< VS_SlPc / 100 [-]
-  double efficiency = 1;   ///< GenEff / 100: electrical over mechanical power [-]
+  int speed_output = -1;    ///< the "GenSpeed" output [rad/s], a combination of coordinate rates
+  double rated_speed = 0;   ///< VS_RtGnSp [rad/s]
+  double rated_torque = 0;  ///< VS_RtTq [N m]
+  double k2 = 0;            ///< VS_Rgn2K [N m s²/rad²]
+  double slip = 0;          ///< VS_SlPc / 100 [-]
+  double efficiency = 1;    ///< GenEff / 100: electrical over mechanical power [-]
   /// Which law: ServoDyn's simple variable-speed law (VSContrl = 1: rated_speed, rated_torque, k2,
   /// slip), its simple induction generator (VSContrl = 0, GenModel = 1: torque rated_torque (ω − ω_sync)
   /// / (rated_speed − ω_sync) within ± pullout_ratio · rated_torque, rated_speed = ω_sync (1 +

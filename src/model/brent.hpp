@@ -73,5 +73,4 @@ BrentResult brent(F&& f, double a, double b, double fa, double fb, double ftol, 
   return {b, fb, evals, false};
 }
 
-
 }  // namespace whirl

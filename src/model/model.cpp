@@ -46,7 +46,8 @@ void setActiveLengths(BodyInertia& in) {
     int len = 1;
     for (int i = 0; i < nc; ++i) {
       bool used = in.m1(j, i) != 0.0;
-      for (int l = 0; l < 3 && !used; ++l) used = !in.S[3 * j + l].row(i).isZero(0) || !in.S[3 * l + j].col(i).isZero(0);
+      for (int l = 0; l < 3 && !used; ++l)
+        used = !in.S[3 * j + l].row(i).isZero(0) || !in.S[3 * l + j].col(i).isZero(0);
       if (used) len = i + 1;
     }
     in.len[j] = len;
@@ -76,7 +77,8 @@ void checkInertia(const Body& b) {
   if (in.m1.cols() != in.nc()) throw InputError(bodyWhere(b, "shape integrals have the wrong size"));
   if (!allFinite(in.m1)) throw InputError(bodyWhere(b, "shape integrals are not finite (NaN in a property?)"));
   for (const auto& s : in.S) {
-    if (s.rows() != in.nc() || s.cols() != in.nc()) throw InputError(bodyWhere(b, "shape integrals have the wrong size"));
+    if (s.rows() != in.nc() || s.cols() != in.nc())
+      throw InputError(bodyWhere(b, "shape integrals have the wrong size"));
     if (!allFinite(s)) throw InputError(bodyWhere(b, "shape integrals are not finite (NaN in a property?)"));
   }
   // The rigid-body mass matrix [[m 1, −m ρ̃], [m ρ̃, J_O]] is positive semi-definite iff the inertia
@@ -103,8 +105,9 @@ void checkInertia(const Body& b) {
       definite = Eigen::SelfAdjointEigenSolver<MatX>(unit, Eigen::EigenvaluesOnly).eigenvalues().minCoeff() > 1e-10;
     }
     if (!definite)
-      throw InputError(bodyWhere(b, "elastic mass matrix is not positive definite (a shape function with no "
-                                    "mass, or two identical shapes)"));
+      throw InputError(bodyWhere(b,
+                                 "elastic mass matrix is not positive definite (a shape function with no "
+                                 "mass, or two identical shapes)"));
     if (b.elastic.K.rows() != in.ne || b.elastic.K.cols() != in.ne || b.elastic.D.rows() != in.ne ||
         b.elastic.D.cols() != in.ne)
       throw InputError(bodyWhere(b, "elastic stiffness/damping size differs from the number of shapes"));
@@ -202,8 +205,9 @@ std::optional<int> Model::findOutput(const std::string& n) const { return findBy
 void requireActiveDof(const Model& model, const std::string& what) {
   for (const Dof& d : model.dofs)
     if (!d.frozen) return;
-  throw InputError(where("", 0, what,
-                         "the model has no active degree of freedom (all frozen or none defined): nothing to linearize"));
+  throw InputError(
+      where("", 0, what,
+            "the model has no active degree of freedom (all frozen or none defined): nothing to linearize"));
 }
 
 std::vector<int> Model::activeDofs() const {
@@ -369,7 +373,8 @@ void checkBody(const Model& m, Body& b) {
   setActiveLengths(b.inertia);
   if (b.parent >= 0 && b.parent_point >= static_cast<int>(m.bodies[b.parent].points.size()))
     throw InputError(bodyWhere(b, "parent point index out of range"));
-  if (b.parent < 0 && b.parent_point >= 0) throw InputError(bodyWhere(b, "a point on the ground is not allowed; use offset"));
+  if (b.parent < 0 && b.parent_point >= 0)
+    throw InputError(bodyWhere(b, "a point on the ground is not allowed; use offset"));
   if (b.joint == JointType::Revolute || b.joint == JointType::Prismatic) {
     if (!b.axis.allFinite() || b.axis.norm() < 1e-12) throw InputError(bodyWhere(b, "joint axis is zero"));
     b.axis.normalize();
@@ -465,7 +470,8 @@ void bindGearedJoints(Model& m) {
     if (b.joint_follows < 0) continue;
     const Body& f = m.bodies[b.joint_follows];
     if (b.joint != JointType::Revolute || f.joint != JointType::Revolute || f.joint_follows >= 0)
-      throw InputError(bodyWhere(b, "a geared joint must be revolute and follow a revolute joint with its own coordinate"));
+      throw InputError(
+          bodyWhere(b, "a geared joint must be revolute and follow a revolute joint with its own coordinate"));
     if (!std::isfinite(b.joint_ratio)) throw InputError(bodyWhere(b, "gear ratio is not finite"));
     b.joint_dof = f.joint_dof;
   }

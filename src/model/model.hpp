@@ -31,11 +31,11 @@ enum class DofKind { Joint, Elastic };
 struct Dof {
   std::string name;
   DofKind kind = DofKind::Joint;
-  int body = -1;        ///< body the coordinate belongs to
-  int local = 0;        ///< index within the joint (0..5) or the body's elastic coordinates
-  bool frozen = false;  ///< held at `value` (moving at `rate`): not a state of the linear model
-  double value = 0.0;   ///< initial guess, or the frozen value [m or rad]
-  double rate = 0.0;    ///< prescribed rate [m/s or rad/s]; e.g. the rotor speed of an azimuth
+  int body = -1;          ///< body the coordinate belongs to
+  int local = 0;          ///< index within the joint (0..5) or the body's elastic coordinates
+  bool frozen = false;    ///< held at `value` (moving at `rate`): not a state of the linear model
+  double value = 0.0;     ///< initial guess, or the frozen value [m or rad]
+  double rate = 0.0;      ///< prescribed rate [m/s or rad/s]; e.g. the rotor speed of an azimuth
   bool rotating = false;  ///< an azimuth: its position is given, not solved for equilibrium
   int blade = -1;         ///< rotor blade (0-based) the coordinate belongs to, −1 = fixed frame (MBC)
 };
@@ -43,18 +43,18 @@ struct Dof {
 /// One body and the joint that connects it to its parent.
 struct Body {
   std::string name;
-  int parent = -1;        ///< index of the parent body, -1 = ground
-  int parent_point = -1;  ///< point of the parent the joint sits at, -1 = parent origin
-  Vec3 offset = Vec3::Zero();         ///< from the point to the joint, attachment frame [m]
-  Mat3 rotation = Mat3::Identity();   ///< attachment frame → joint frame (columns: joint axes)
+  int parent = -1;                   ///< index of the parent body, -1 = ground
+  int parent_point = -1;             ///< point of the parent the joint sits at, -1 = parent origin
+  Vec3 offset = Vec3::Zero();        ///< from the point to the joint, attachment frame [m]
+  Mat3 rotation = Mat3::Identity();  ///< attachment frame → joint frame (columns: joint axes)
   JointType joint = JointType::Fixed;
-  Vec3 axis = Vec3::UnitX();          ///< revolute/prismatic axis, joint frame (unit)
+  Vec3 axis = Vec3::UnitX();  ///< revolute/prismatic axis, joint frame (unit)
   /// Gear: a revolute joint driven by the revolute coordinate of body `joint_follows` (no coordinate
   /// of its own): angle = joint_ratio × q, e.g. a high-speed-shaft generator at the gearbox ratio.
   int joint_follows = -1;
   double joint_ratio = 1.0;
-  int joint_dof = -1;     ///< index of the first joint coordinate (finalize)
-  int elastic_dof = -1;   ///< index of the first elastic coordinate (finalize)
+  int joint_dof = -1;    ///< index of the first joint coordinate (finalize)
+  int elastic_dof = -1;  ///< index of the first elastic coordinate (finalize)
   BodyInertia inertia;
   ElasticProperties elastic;
   std::vector<BodyPoint> points;
@@ -74,16 +74,16 @@ struct InputDofTarget {
 /// reaches the equations through the kinematics and ∂/∂u comes from AD like any other input.
 struct Input {
   std::string name;
-  double value = 0.0;  ///< operating-point value
+  double value = 0.0;                ///< operating-point value
   std::vector<InputDofTarget> dofs;  ///< frozen coordinates set by this input (may be empty)
-  int blade = -1;      ///< rotor blade (0-based) of an input in the rotating frame, −1 = fixed (MBC)
-  std::string unit;    ///< for exports, e.g. "N m", "rad" (may be empty)
+  int blade = -1;                    ///< rotor blade (0-based) of an input in the rotating frame, −1 = fixed (MBC)
+  std::string unit;                  ///< for exports, e.g. "N m", "rad" (may be empty)
 };
 
 /// Force and moment at a body point; if input >= 0 they are multiplied by u[input].
 struct PointLoad {
   int body = -1;
-  int point = -1;           ///< -1 = body origin
+  int point = -1;              ///< -1 = body origin
   Vec3 force = Vec3::Zero();   ///< [N]
   Vec3 moment = Vec3::Zero();  ///< [N m]
   bool body_frame = true;      ///< components in the body frame (follower) or ground frame
@@ -123,12 +123,12 @@ struct BodyMatrices {
 struct ChainStep {
   enum Kind { PointTranslate, ElasticRotate, ConstTranslate, ConstRotate, AxisRotate, AxisTranslate };
   Kind kind = ConstTranslate;
-  int body = -1;   ///< PointTranslate/ElasticRotate: the parent body
-  int point = -1;  ///< PointTranslate/ElasticRotate: the parent point
-  int axis_index = 0;  ///< ElasticRotate: 0, 1, 2 for body x, y, z
+  int body = -1;            ///< PointTranslate/ElasticRotate: the parent body
+  int point = -1;           ///< PointTranslate/ElasticRotate: the parent point
+  int axis_index = 0;       ///< ElasticRotate: 0, 1, 2 for body x, y, z
   Vec3 vec = Vec3::Zero();  ///< ConstTranslate: offset; Axis*: unit axis
   Mat3 rot = Mat3::Identity();
-  int dof = -1;    ///< Axis*: the joint coordinate
+  int dof = -1;        ///< Axis*: the joint coordinate
   double ratio = 1.0;  ///< AxisRotate: angle = ratio × q (gears)
 };
 
@@ -138,13 +138,13 @@ struct ChainStep {
 /// the model they build; finalize() renumbers the DOF indices, fills `azimuth` and checks them all.
 /// −1 / empty = the model has no such coordinate or input.
 struct ModelRoles {
-  std::vector<int> azimuth;      ///< the rotating coordinates (Dof::rotating; set by finalize)
-  std::vector<int> blade_pitch;  ///< pitch coordinate of each blade (frozen joint, [rad]), index = blade
-  int collective_pitch_input = -1;       ///< input adding to every blade's pitch [rad]
-  std::vector<int> blade_pitch_inputs;   ///< per blade: the input adding to that blade's pitch [rad] (−1: none)
-  int wind_speed_input = -1;             ///< hub-height wind speed [m/s] (none before the aerodynamics)
-  int generator_torque_input = -1;       ///< generator torque [N m, high-speed shaft]
-  int yaw_dof = -1;                      ///< nacelle yaw coordinate [rad]
+  std::vector<int> azimuth;             ///< the rotating coordinates (Dof::rotating; set by finalize)
+  std::vector<int> blade_pitch;         ///< pitch coordinate of each blade (frozen joint, [rad]), index = blade
+  int collective_pitch_input = -1;      ///< input adding to every blade's pitch [rad]
+  std::vector<int> blade_pitch_inputs;  ///< per blade: the input adding to that blade's pitch [rad] (−1: none)
+  int wind_speed_input = -1;            ///< hub-height wind speed [m/s] (none before the aerodynamics)
+  int generator_torque_input = -1;      ///< generator torque [N m, high-speed shaft]
+  int yaw_dof = -1;                     ///< nacelle yaw coordinate [rad]
   /// Teeter of a 2-bladed rotor [rad]: tilts the rotor about an axis across the shaft and blade 1,
   /// blade 1 downwind for a positive angle; seen from the fixed frame like a differential blade
   /// coordinate (+ on blade 1, − on blade 2; modal/floquet.hpp).
@@ -154,7 +154,7 @@ struct ModelRoles {
 struct Model {
   std::string name;
   Vec3 gravity = Vec3(0, 0, -9.80665);  ///< ground frame [m/s²]
-  std::vector<Body> bodies;              ///< parents before children (finalize sorts)
+  std::vector<Body> bodies;             ///< parents before children (finalize sorts)
   std::vector<Dof> dofs;
   std::vector<Input> inputs;
   std::vector<PointLoad> point_loads;
@@ -165,11 +165,11 @@ struct Model {
   /// The deck's ROSCO controller (ServoDyn VSContrl = 5 naming a DISCON.IN), read with the deck and its
   /// --set overrides; the commands trim and close the loop with it. Absent otherwise (a YAML case).
   std::optional<RoscoController> deck_controller;
-  std::vector<MooringLine> mooring;      ///< quasi-static catenary lines (mooring.hpp)
-  AeroModel aero;                        ///< blade elements, polars, wind (empty: no aerodynamics)
-  GeneratorTorqueLaw generator;          ///< generator torque against speed (inactive: torque = its input)
-  std::vector<Output> outputs;           ///< measured quantities y = h(q, q̇, q̈) (output.hpp)
-  ModelRoles roles;                      ///< what plays rotor azimuth, pitch, wind speed, … (above)
+  std::vector<MooringLine> mooring;  ///< quasi-static catenary lines (mooring.hpp)
+  AeroModel aero;                    ///< blade elements, polars, wind (empty: no aerodynamics)
+  GeneratorTorqueLaw generator;      ///< generator torque against speed (inactive: torque = its input)
+  std::vector<Output> outputs;       ///< measured quantities y = h(q, q̇, q̈) (output.hpp)
+  ModelRoles roles;                  ///< what plays rotor azimuth, pitch, wind speed, … (above)
 
   // Derived by finalize().
   std::vector<std::vector<ChainStep>> chains;  ///< per body

@@ -43,9 +43,9 @@ struct Output {
   int order = 0;                              ///< 0 = value, 1 = rate, 2 = acceleration (Angular: 1 or 2)
   std::vector<std::pair<int, double>> terms;  ///< DofCombination: (DOF, gain)
   int body = -1;                              ///< Point, Angular: the body carrying the point, or whose frame turns
-  int point = -1;       ///< Point: point index of `body`, −1 = body origin
-  int frame_body = -1;  ///< Point, Angular: axes of `direction`, −1 = ground
-  Vec3 direction = Vec3::UnitX();                            ///< Point, Angular: unit vector in those axes
+  int point = -1;                             ///< Point: point index of `body`, −1 = body origin
+  int frame_body = -1;                        ///< Point, Angular: axes of `direction`, −1 = ground
+  Vec3 direction = Vec3::UnitX();             ///< Point, Angular: unit vector in those axes
   RotorQuantity rotor_quantity = RotorQuantity::AeroThrust;  ///< Rotor: which
   /// Rotor blade (0-based) of an output in the rotating frame, −1 = fixed frame (MBC, `.lin` flag).
   /// finalize() sets it for a DofCombination whose DOFs all belong to one blade, when left at −1.

@@ -30,22 +30,24 @@ struct RoscoController {
   std::map<std::string, Where> where;
 
   // Control modes (ReadSetParameters.f90, CheckInputs for their ranges).
-  int F_LPFType = 1;        ///< generator-speed low-pass filter: 1 first order, 2 second order
-  int VS_ControlMode = 0;   ///< 0 no torque control, 1 k·Ω² with PI transitions, 2 TSR tracking on the wind-speed estimate, 3 power-based and 4 torque-based TSR tracking
-  int VS_ConstPower = 0;    ///< above rated: 0 constant torque VS_RtTq, 1 constant power VS_RtPwr
-  int PC_ControlMode = 0;   ///< 0 pitch fixed at fine pitch, 1 gain-scheduled PI on generator speed
-  int SS_Mode = 0;          ///< setpoint smoother: 0 off, 1 on
-  int PS_Mode = 0;          ///< minimum-pitch saturation from PS_WindSpeeds/PS_BldPitchMin: 0 off, 1 on
-  int Fl_Mode = 0;          ///< floating feedback: 0 off, 1 nacelle translational velocity, 2 rotational velocity
-  int PA_Mode = 0;          ///< ROSCO's pitch actuator model: 0 none, 1 first order, 2 second order
-  int WE_Mode = 0;          ///< wind-speed estimator (0 filtered hub wind, 1 I&I, 2 EKF): in a steady state each equals the wind
+  int F_LPFType = 1;       ///< generator-speed low-pass filter: 1 first order, 2 second order
+  int VS_ControlMode = 0;  ///< 0 no torque control, 1 k·Ω² with PI transitions, 2 TSR tracking on the wind-speed
+                           ///< estimate, 3 power-based and 4 torque-based TSR tracking
+  int VS_ConstPower = 0;   ///< above rated: 0 constant torque VS_RtTq, 1 constant power VS_RtPwr
+  int PC_ControlMode = 0;  ///< 0 pitch fixed at fine pitch, 1 gain-scheduled PI on generator speed
+  int SS_Mode = 0;         ///< setpoint smoother: 0 off, 1 on
+  int PS_Mode = 0;         ///< minimum-pitch saturation from PS_WindSpeeds/PS_BldPitchMin: 0 off, 1 on
+  int Fl_Mode = 0;         ///< floating feedback: 0 off, 1 nacelle translational velocity, 2 rotational velocity
+  int PA_Mode = 0;         ///< ROSCO's pitch actuator model: 0 none, 1 first order, 2 second order
+  int WE_Mode =
+      0;  ///< wind-speed estimator (0 filtered hub wind, 1 I&I, 2 EKF): in a steady state each equals the wind
 
   // Filters (ReadSetParameters.f90, "FILTERS").
-  double F_LPFCornerFreq = 0;       ///< generator-speed low-pass corner frequency [rad/s], > 0
-  double F_LPFDamping = 0;          ///< its damping ratio when F_LPFType = 2 [-]
+  double F_LPFCornerFreq = 0;                 ///< generator-speed low-pass corner frequency [rad/s], > 0
+  double F_LPFDamping = 0;                    ///< its damping ratio when F_LPFType = 2 [-]
   std::vector<RoscoNotch> gen_speed_notches;  ///< the notches of F_GenSpdNotch_Ind, on generator speed
   std::vector<RoscoNotch> twr_top_notches;    ///< the notches of F_TwrTopNotch_Ind, on tower-top motion (Fl_Mode)
-  double F_SSCornerFreq = 0;        ///< setpoint-smoother low-pass corner frequency [rad/s] (SS_Mode = 1)
+  double F_SSCornerFreq = 0;                  ///< setpoint-smoother low-pass corner frequency [rad/s] (SS_Mode = 1)
   double F_VSRefSpdCornerFreq = 0;  ///< low pass on the TSR-tracking speed reference [rad/s] (VS_ControlMode ≥ 2)
   double F_WECornerFreq = 0;        ///< low pass on the wind-speed estimate [rad/s]
   double F_FlCornerFreq = 0;        ///< floating feedback: second-order low-pass frequency [rad/s] (Fl_Mode > 0)
@@ -54,30 +56,31 @@ struct RoscoController {
 
   // Pitch control (PC_ControlMode = 1).
   std::vector<double> PC_GS_angles;  ///< gain-schedule pitch angles [rad], non-decreasing
-  std::vector<double> PC_GS_KP;      ///< proportional gains on the generator-speed error [s] (rad per rad/s·s⁻¹: rad/(rad/s))
-  std::vector<double> PC_GS_KI;      ///< integral gains [-] (rad/(rad/s)/s)
-  double PC_MaxPit = 0;   ///< maximum pitch [rad]
-  double PC_MinPit = 0;   ///< minimum pitch [rad]
-  double PC_MaxRat = 0;   ///< maximum pitch rate [rad/s], > 0
-  double PC_MinRat = 0;   ///< minimum pitch rate [rad/s], < 0
-  double PC_RefSpd = 0;   ///< generator-speed reference of the pitch loop [rad/s]
-  double PC_FinePit = 0;  ///< below-rated pitch [rad]
-  double PC_Switch = 0;   ///< pitch above the minimum at which the torque loop counts as region 3 [rad]
+  std::vector<double>
+      PC_GS_KP;  ///< proportional gains on the generator-speed error [s] (rad per rad/s·s⁻¹: rad/(rad/s))
+  std::vector<double> PC_GS_KI;  ///< integral gains [-] (rad/(rad/s)/s)
+  double PC_MaxPit = 0;          ///< maximum pitch [rad]
+  double PC_MinPit = 0;          ///< minimum pitch [rad]
+  double PC_MaxRat = 0;          ///< maximum pitch rate [rad/s], > 0
+  double PC_MinRat = 0;          ///< minimum pitch rate [rad/s], < 0
+  double PC_RefSpd = 0;          ///< generator-speed reference of the pitch loop [rad/s]
+  double PC_FinePit = 0;         ///< below-rated pitch [rad]
+  double PC_Switch = 0;          ///< pitch above the minimum at which the torque loop counts as region 3 [rad]
 
   // Torque control.
-  double VS_GenEff = 1;      ///< generator efficiency, electrical over mechanical power [-] (DISCON.IN: %)
-  double VS_ArSatTq = 0;     ///< above-rated saturation of the region-2½ PI torque [N m]
-  double VS_MaxRat = 0;      ///< torque rate limit [N m/s]
-  double VS_MaxTq = 0;       ///< maximum torque [N m]
-  double VS_MinTq = 0;       ///< minimum torque [N m]
-  double VS_MinOMSpd = 0;    ///< minimum generator speed [rad/s]
-  double VS_Rgn2K = 0;       ///< region-2 torque constant [N m/(rad/s)²]
-  double VS_RtPwr = 0;       ///< rated electrical power [W]
-  double VS_RtTq = 0;        ///< rated torque [N m]
-  double VS_RefSpd = 0;      ///< rated generator speed, top of the torque loop's speed reference [rad/s]
-  std::vector<double> VS_KP; ///< torque PI proportional gain [N m/(rad/s)] (first used, as ROSCO)
-  std::vector<double> VS_KI; ///< torque PI integral gain [N m/rad]
-  double VS_TSRopt = 0;      ///< optimal tip-speed ratio of TSR tracking [-]
+  double VS_GenEff = 1;       ///< generator efficiency, electrical over mechanical power [-] (DISCON.IN: %)
+  double VS_ArSatTq = 0;      ///< above-rated saturation of the region-2½ PI torque [N m]
+  double VS_MaxRat = 0;       ///< torque rate limit [N m/s]
+  double VS_MaxTq = 0;        ///< maximum torque [N m]
+  double VS_MinTq = 0;        ///< minimum torque [N m]
+  double VS_MinOMSpd = 0;     ///< minimum generator speed [rad/s]
+  double VS_Rgn2K = 0;        ///< region-2 torque constant [N m/(rad/s)²]
+  double VS_RtPwr = 0;        ///< rated electrical power [W]
+  double VS_RtTq = 0;         ///< rated torque [N m]
+  double VS_RefSpd = 0;       ///< rated generator speed, top of the torque loop's speed reference [rad/s]
+  std::vector<double> VS_KP;  ///< torque PI proportional gain [N m/(rad/s)] (first used, as ROSCO)
+  std::vector<double> VS_KI;  ///< torque PI integral gain [N m/rad]
+  double VS_TSRopt = 0;       ///< optimal tip-speed ratio of TSR tracking [-]
 
   // Setpoint smoother (SS_Mode = 1, ControllerBlocks.f90 SetpointSmoother).
   double SS_VSGain = 0;  ///< torque-loop reference shift per pitch above minimum, per 0.524 rad [-]

@@ -9,8 +9,7 @@ namespace whirl {
 SignalValue evaluateSignal(const TimeSignal& s, double base, double t) {
   const std::vector<double>& p = s.parameters;
   switch (s.kind) {
-    case TimeSignal::Kind::Step:
-      return {base + (t >= p[0] ? p[1] : 0.0), 0.0, 0.0};
+    case TimeSignal::Kind::Step: return {base + (t >= p[0] ? p[1] : 0.0), 0.0, 0.0};
     case TimeSignal::Kind::Ramp: {
       if (t < p[0]) return {base, 0, 0};
       if (t >= p[1]) return {base + p[2], 0, 0};
@@ -42,16 +41,11 @@ SignalValue evaluateSignal(const TimeSignal& s, double base, double t) {
 
 std::vector<double> signalBreakpoints(const TimeSignal& s) {
   switch (s.kind) {
-    case TimeSignal::Kind::Step:
-      return {s.parameters[0]};
-    case TimeSignal::Kind::Ramp:
-      return {s.parameters[0], s.parameters[1]};
-    case TimeSignal::Kind::Sine:
-      return {};
-    case TimeSignal::Kind::Spinup:
-      return {s.parameters[0]};  // the jerk jumps at the end of the spin-up
-    case TimeSignal::Kind::Table:
-      return s.time;
+    case TimeSignal::Kind::Step: return {s.parameters[0]};
+    case TimeSignal::Kind::Ramp: return {s.parameters[0], s.parameters[1]};
+    case TimeSignal::Kind::Sine: return {};
+    case TimeSignal::Kind::Spinup: return {s.parameters[0]};  // the jerk jumps at the end of the spin-up
+    case TimeSignal::Kind::Table: return s.time;
   }
   return {};
 }

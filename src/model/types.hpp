@@ -11,10 +11,15 @@ using VecX = Eigen::VectorXd;
 using MatX = Eigen::MatrixXd;
 using Mat3X = Eigen::Matrix<double, 3, Eigen::Dynamic>;
 
-template <class T> using Vec3T = Eigen::Matrix<T, 3, 1>;
-template <class T> using Mat3T = Eigen::Matrix<T, 3, 3>;
-template <class T> using VecXT = Eigen::Matrix<T, Eigen::Dynamic, 1>;
-template <class T> using MatXT = Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic>;
-template <class T> using Mat3XT = Eigen::Matrix<T, 3, Eigen::Dynamic>;
+template <class T>
+using Vec3T = Eigen::Matrix<T, 3, 1>;
+template <class T>
+using Mat3T = Eigen::Matrix<T, 3, 3>;
+template <class T>
+using VecXT = Eigen::Matrix<T, Eigen::Dynamic, 1>;
+template <class T>
+using MatXT = Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic>;
+template <class T>
+using Mat3XT = Eigen::Matrix<T, 3, Eigen::Dynamic>;
 
 }  // namespace whirl

@@ -30,7 +30,8 @@ std::vector<std::string> parallelMapBytes(int n, const std::function<std::string
 /// Typed form: `task(k)` returns a T; `encode(const T&)` → bytes, `decode(bytes)` → T.
 template <class T, class Task, class Encode, class Decode>
 std::vector<T> parallelMap(int n, Task&& task, Encode&& encode, Decode&& decode, const MapOptions& opt = {}) {
-  const std::vector<std::string> bytes = parallelMapBytes(n, [&](int k) { return encode(task(k)); }, opt);
+  const std::vector<std::string> bytes = parallelMapBytes(
+      n, [&](int k) { return encode(task(k)); }, opt);
   std::vector<T> out;
   out.reserve(bytes.size());
   for (const auto& b : bytes) out.push_back(decode(b));

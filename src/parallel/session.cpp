@@ -24,9 +24,9 @@ struct Runtime {
   std::vector<char*> argv;
   int argc = 0;
   char** argv_ptr = nullptr;
-  bool started = false;   ///< by us
+  bool started = false;  ///< by us
   bool finalized = false;
-  bool session = false;   ///< a Session guard exists and will finalize
+  bool session = false;  ///< a Session guard exists and will finalize
 };
 
 Runtime& runtime() {
@@ -155,7 +155,8 @@ void splitCommandLine(int argc, const char* const* argv, std::vector<std::string
       break;
     }
     if (i > 0 && a == "--petsc") {
-      if (i + 1 >= argc) throw InputError("--petsc: expects the PETSc options as one argument, e.g. --petsc \"-eps_nev 30\"");
+      if (i + 1 >= argc)
+        throw InputError("--petsc: expects the PETSc options as one argument, e.g. --petsc \"-eps_nev 30\"");
       addWords(argv[++i]);
     } else if (i > 0 && a.rfind("--petsc=", 0) == 0) {
       addWords(a.substr(8));

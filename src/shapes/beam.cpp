@@ -94,22 +94,30 @@ void validateBeam(const BeamProperties& p, const std::string& body) {
   if (!(p.length > 0) || !std::isfinite(p.length)) throw InputError(where("length", "must be positive"));
   const auto n = p.x.size();
   if (n < 2) throw InputError(where("stations", "need at least 2"));
-  struct Col { const char* name; const VecX* v; bool required; };
-  const Col cols[] = {{"m", &p.m, true},         {"EIy", &p.EIy, true},     {"EIz", &p.EIz, true},
-                      {"GKt", &p.GKt, false},    {"jG", &p.jG, false},      {"twist", &p.twist, false},
-                      {"y0", &p.y0, false},      {"z0", &p.z0, false},      {"cgy", &p.cgy, false},
-                      {"cgz", &p.cgz, false},    {"x", &p.x, true}};
+  struct Col {
+    const char* name;
+    const VecX* v;
+    bool required;
+  };
+  const Col cols[] = {{"m", &p.m, true},      {"EIy", &p.EIy, true},      {"EIz", &p.EIz, true}, {"GKt", &p.GKt, false},
+                      {"jG", &p.jG, false},   {"twist", &p.twist, false}, {"y0", &p.y0, false},  {"z0", &p.z0, false},
+                      {"cgy", &p.cgy, false}, {"cgz", &p.cgz, false},     {"x", &p.x, true}};
   for (const Col& c : cols) {
     if (c.v->size() == 0 && !c.required) continue;
-    if (c.v->size() != n) throw InputError(where(c.name, "has " + std::to_string(c.v->size()) + " values, stations have " + std::to_string(n)));
+    if (c.v->size() != n)
+      throw InputError(
+          where(c.name, "has " + std::to_string(c.v->size()) + " values, stations have " + std::to_string(n)));
     for (Eigen::Index i = 0; i < n; ++i)
-      if (!std::isfinite((*c.v)(i))) throw InputError(where(c.name, "value " + std::to_string(i + 1) + " is not a finite number"));
+      if (!std::isfinite((*c.v)(i)))
+        throw InputError(where(c.name, "value " + std::to_string(i + 1) + " is not a finite number"));
   }
   for (Eigen::Index i = 0; i < n; ++i) {
     if (i > 0 && !(p.x(i) > p.x(i - 1))) throw InputError(where("x", "stations must increase"));
     if (p.m(i) < 0) throw InputError(where("m", "negative mass per length at station " + std::to_string(i + 1)));
-    if (p.jG.size() && p.jG(i) < 0) throw InputError(where("jG", "negative inertia at station " + std::to_string(i + 1)));
-    if (!(p.EIy(i) > 0) || !(p.EIz(i) > 0)) throw InputError(where("EI", "bending stiffness must be positive at station " + std::to_string(i + 1)));
+    if (p.jG.size() && p.jG(i) < 0)
+      throw InputError(where("jG", "negative inertia at station " + std::to_string(i + 1)));
+    if (!(p.EIy(i) > 0) || !(p.EIz(i) > 0))
+      throw InputError(where("EI", "bending stiffness must be positive at station " + std::to_string(i + 1)));
     if (p.GKt.size() && p.GKt(i) < 0) throw InputError(where("GKt", "negative torsional stiffness"));
   }
   if (std::abs(p.x(0)) > 1e-9 * p.length || std::abs(p.x(n - 1) - p.length) > 1e-9 * p.length)
@@ -224,7 +232,8 @@ BeamBody buildBeamBody(const BeamProperties& p, const std::vector<ShapePtr>& sha
     }
     // Elastic stiffness (eq. 20): curvatures in the principal axes, rotated by the structural twist.
     const double th = interpolateStations(p.x, p.twist, x), ct = std::cos(th), st = std::sin(th);
-    const double EIy = interpolateStations(p.x, p.EIy, x), EIz = interpolateStations(p.x, p.EIz, x), GK = interpolateStations(p.x, p.GKt, x);
+    const double EIy = interpolateStations(p.x, p.EIy, x), EIz = interpolateStations(p.x, p.EIz, x),
+                 GK = interpolateStations(p.x, p.GKt, x);
     for (int i = 0; i < ne; ++i) {
       const double kyi = ct * v[i].uy2 + st * v[i].uz2, kzi = -st * v[i].uy2 + ct * v[i].uz2;
       for (int j = 0; j < ne; ++j) {
@@ -279,7 +288,8 @@ std::vector<BodyPoint> beamNodes(const BeamProperties& p, const std::vector<Shap
                                  double length, int count) {
   std::vector<BodyPoint> nodes;
   for (int k = 0; k < count; ++k)
-    nodes.push_back(beamPoint(p, shapes, axial_shortening, length * k / std::max(count - 1, 1), "node " + std::to_string(k + 1)));
+    nodes.push_back(
+        beamPoint(p, shapes, axial_shortening, length * k / std::max(count - 1, 1), "node " + std::to_string(k + 1)));
   return nodes;
 }
 

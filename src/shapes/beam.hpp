@@ -77,8 +77,8 @@ BodyPoint beamPoint(const BeamProperties& props, const std::vector<ShapePtr>& sh
 
 /// Evenly spaced mean-line points for showing mode shapes (Body::nodes): `count` ≥ 2 stations from
 /// the root (x = 0) to the tip (x = length [m]), named "node 1" … "node <count>".
-std::vector<BodyPoint> beamNodes(const BeamProperties& props, const std::vector<ShapePtr>& shapes, bool axial_shortening,
-                                 double length, int count = 11);
+std::vector<BodyPoint> beamNodes(const BeamProperties& props, const std::vector<ShapePtr>& shapes,
+                                 bool axial_shortening, double length, int count = 11);
 
 /// G_ij(x) = ∫₀ˣ (u_y,i' u_y,j' + u_z,i' u_z,j') dx' (ne × ne).
 MatX slopeProductIntegral(const std::vector<ShapePtr>& shapes, double x);

@@ -18,8 +18,12 @@ class DirectedShape : public Shape {
     double f, f1, f2;
     profile(x, f, f1, f2);
     ShapeValue v;
-    v.uy = dy_ * f; v.uy1 = dy_ * f1; v.uy2 = dy_ * f2;
-    v.uz = dz_ * f; v.uz1 = dz_ * f1; v.uz2 = dz_ * f2;
+    v.uy = dy_ * f;
+    v.uy1 = dy_ * f1;
+    v.uy2 = dy_ * f2;
+    v.uz = dz_ * f;
+    v.uz1 = dz_ * f1;
+    v.uz2 = dz_ * f2;
     return v;
   }
 
@@ -85,7 +89,9 @@ class ClampedTopMass : public DirectedShape {
     f = S_ * (std::cosh(t) - std::cos(t)) - C_ * (std::sinh(t) - std::sin(t));
     f1 = k * (S_ * (std::sinh(t) + std::sin(t)) - C_ * (std::cosh(t) - std::cos(t)));
     f2 = k * k * (S_ * (std::cosh(t) + std::cos(t)) - C_ * (std::sinh(t) + std::sin(t)));
-    f *= scale_; f1 *= scale_; f2 *= scale_;
+    f *= scale_;
+    f1 *= scale_;
+    f2 *= scale_;
   }
 
  private:
@@ -110,8 +116,12 @@ class Table : public Shape {
  public:
   explicit Table(ShapeTable t) : t_(std::move(t)) {
     const int n = static_cast<int>(t_.x.size());
-    auto fill = [&](VecX& v) { if (v.size() == 0) v = VecX::Zero(n); };
-    fill(t_.uy); fill(t_.uz); fill(t_.tx);
+    auto fill = [&](VecX& v) {
+      if (v.size() == 0) v = VecX::Zero(n);
+    };
+    fill(t_.uy);
+    fill(t_.uz);
+    fill(t_.tx);
     auto deriv = [&](const VecX& f) {
       VecX d(n);
       for (int i = 0; i < n; ++i) {
@@ -134,9 +144,14 @@ class Table : public Shape {
     const double w = std::clamp((x - X(i)) / (X(i + 1) - X(i)), 0.0, 1.0);
     auto lerp = [&](const VecX& v) { return (1 - w) * v(i) + w * v(i + 1); };
     ShapeValue v;
-    v.uy = lerp(t_.uy); v.uz = lerp(t_.uz); v.tx = lerp(t_.tx);
-    v.uy1 = lerp(t_.uy1); v.uz1 = lerp(t_.uz1); v.tx1 = lerp(t_.tx1);
-    v.uy2 = lerp(t_.uy2); v.uz2 = lerp(t_.uz2);
+    v.uy = lerp(t_.uy);
+    v.uz = lerp(t_.uz);
+    v.tx = lerp(t_.tx);
+    v.uy1 = lerp(t_.uy1);
+    v.uz1 = lerp(t_.uz1);
+    v.tx1 = lerp(t_.tx1);
+    v.uy2 = lerp(t_.uy2);
+    v.uz2 = lerp(t_.uz2);
     return v;
   }
 
@@ -185,12 +200,21 @@ double clampedTopMassBeta(int j, double r) {
       double lo = a, hi = b, flo = fa;
       for (int it = 0; it < 200; ++it) {
         const double mid = 0.5 * (lo + hi), fm = f(mid);
-        if ((fm <= 0) == (flo <= 0)) { lo = mid; flo = fm; } else { hi = mid; }
+        if ((fm <= 0) == (flo <= 0)) {
+          lo = mid;
+          flo = fm;
+        } else {
+          hi = mid;
+        }
       }
       const double root = 0.5 * (lo + hi);
-      if (std::abs(root - guess) < bestd) { bestd = std::abs(root - guess); best = root; }
+      if (std::abs(root - guess) < bestd) {
+        bestd = std::abs(root - guess);
+        best = root;
+      }
     }
-    a = b; fa = fb;
+    a = b;
+    fa = fb;
   }
   if (bestd > pi) throw InputError("clamped_topmass shape: no root found for mode " + std::to_string(j));
   return best;

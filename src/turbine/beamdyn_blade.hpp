@@ -32,11 +32,11 @@ struct BeamDynBladeOptions {
 };
 
 struct BeamDynBladeBody {
-  fem::Beam6Model model;       ///< body frame, node 0 at the root
-  ElastoDynBladeBeam beam;     ///< props (mass line, offsets, EI for outputs) and the modes as shapes
-  MatX K, D;                   ///< stiffness and damping of the modal coordinates (modes × modes)
-  std::vector<double> freq_hz; ///< the FE modes' frequencies, clamped root, not rotating [Hz]
-  double length = 0;           ///< along z_r [m]
+  fem::Beam6Model model;        ///< body frame, node 0 at the root
+  ElastoDynBladeBeam beam;      ///< props (mass line, offsets, EI for outputs) and the modes as shapes
+  MatX K, D;                    ///< stiffness and damping of the modal coordinates (modes × modes)
+  std::vector<double> freq_hz;  ///< the FE modes' frequencies, clamped root, not rotating [Hz]
+  double length = 0;            ///< along z_r [m]
 };
 
 /// The mode names: "flap k", "edge k", "torsion k" or "axial k" after the family that holds most of

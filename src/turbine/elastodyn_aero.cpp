@@ -107,14 +107,15 @@ void addAerodynamics(Builder& b, const DrivetrainParts& dt, const RotorParts& ro
   if (deck.blades.size() < rotor.blades.size())
     throw InputError(deck.aerodyn.source.where("ADBlFile(" + std::to_string(deck.blades.size() + 1) + ")",
                                                "key not found in this file (ElastoDyn NumBl = " +
-                                                   std::to_string(rotor.blades.size()) + " needs a blade file per blade)"));
+                                                   std::to_string(rotor.blades.size()) +
+                                                   " needs a blade file per blade)"));
   for (std::size_t k = 0; k < rotor.blades.size(); ++k) {
     const io::AeroDynBladeInput& file = deck.blades[k];
     for (int j = 0; j < file.NumBlNds; ++j)
       if (file.BlAFID[j] < 1 || file.BlAFID[j] > static_cast<int>(am.polars.size()))
-        throw InputError(file.source.path().string() + ":" + std::to_string(file.row_lines[j]) + ": BlAFID: " +
-                         std::to_string(file.BlAFID[j]) + " is not an airfoil of the AeroDyn file (1 to " +
-                         std::to_string(am.polars.size()) + ")");
+        throw InputError(file.source.path().string() + ":" + std::to_string(file.row_lines[j]) +
+                         ": BlAFID: " + std::to_string(file.BlAFID[j]) +
+                         " is not an airfoil of the AeroDyn file (1 to " + std::to_string(am.polars.size()) + ")");
     am.blades.push_back(bladeElements(b, rotor.blades[k], file, c.HubRad, length));
   }
   am.hub_body = dt.hub;

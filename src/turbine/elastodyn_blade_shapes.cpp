@@ -71,7 +71,8 @@ ShapePtr twistedShape(const std::string& name, const io::ModeShapeCoeffs& c, boo
 ElastoDynBladeBeam elastoDynBladeBeam(const io::ElastoDynBlade& f, double L, int nodes, double tip_mass) {
   const std::string file = f.source.path().string();
   if (nodes < 1) throw InputError(where(file, 0, "BldNodes", "must be at least 1 (is " + std::to_string(nodes) + ")"));
-  if (!(L > 0) || !std::isfinite(L)) throw InputError(where(file, 0, "TipRad", "blade length TipRad − HubRad must be positive"));
+  if (!(L > 0) || !std::isfinite(L))
+    throw InputError(where(file, 0, "TipRad", "blade length TipRad − HubRad must be positive"));
   const io::DistributedTable& d = f.distributed;
   ElastoDynBladeBeam b;
   b.nodes = nodes;
@@ -99,7 +100,8 @@ ElastoDynBladeBeam elastoDynBladeBeam(const io::ElastoDynBlade& f, double L, int
   b.generalized_mass.setConstant(tip_mass);
   for (int j = 1; j <= nodes; ++j) {
     const double r = (j - 0.5) * dr, m = interpolateStations(p.x, p.m, r) * dr;
-    const double EI[3] = {interpolateStations(p.x, p.EIy, r) * dr, interpolateStations(p.x, p.EIz, r) * dr, interpolateStations(p.x, p.EIy, r) * dr};
+    const double EI[3] = {interpolateStations(p.x, p.EIy, r) * dr, interpolateStations(p.x, p.EIz, r) * dr,
+                          interpolateStations(p.x, p.EIy, r) * dr};
     double k2[3];
     for (int a = 0; a < 3; ++a) {
       b.generalized_mass(a) += m * std::pow(shp(r, L, *coeffs[a], 0), 2);

@@ -34,10 +34,12 @@ enum ElastoDynBladeShape { kFlap1 = 0, kEdge1 = 1, kFlap2 = 2 };
 
 /// An ElastoDyn blade ready for buildBeamBody.
 struct ElastoDynBladeBeam {
-  BeamProperties props;          ///< SI: m = BMassDen·AdjBlMs [kg/m], EIy = FlpStff·AdjFlSt, EIz = EdgStff·AdjEdSt [N m²], twist = −StrcTwst [rad]
-  std::vector<ShapePtr> shapes;  ///< flap 1, edge 1, flap 2: table shapes in body y (j1) and z (j2) [m per unit tip deflection]
-  int nodes = 0;                 ///< BldNodes: equal elements, one node at each centre
-  double tip_mass = 0;           ///< TipMass [kg], a point mass at r = L
+  BeamProperties props;  ///< SI: m = BMassDen·AdjBlMs [kg/m], EIy = FlpStff·AdjFlSt, EIz = EdgStff·AdjEdSt [N m²],
+                         ///< twist = −StrcTwst [rad]
+  std::vector<ShapePtr>
+      shapes;           ///< flap 1, edge 1, flap 2: table shapes in body y (j1) and z (j2) [m per unit tip deflection]
+  int nodes = 0;        ///< BldNodes: equal elements, one node at each centre
+  double tip_mass = 0;  ///< TipMass [kg], a point mass at r = L
   /// ElastoDyn's generalized masses, shape order: TipMass + Σ m ΔR φ² with the UNTWISTED polynomial φ
   /// (MBF, MBE of `Coeff`: r from the blade root, hub radius not included) [kg]. ElastoDyn prints these
   /// and uses them (less TipMass) for the damping; its equations of motion, and whirl's body, use the
@@ -47,7 +49,7 @@ struct ElastoDynBladeBeam {
   /// flap 1–flap 2 coupled, edge uncoupled [N/m].
   Eigen::Matrix3d generalized_stiffness = Eigen::Matrix3d::Zero();
   Eigen::Vector3d stiffness_tuner = Eigen::Vector3d::Ones();  ///< FlStTunr(1), 1, FlStTunr(2) [-]
-  Eigen::Vector3d damping_ratio = Eigen::Vector3d::Zero();    ///< BldFlDmp(1), BldEdDmp(1), BldFlDmp(2) as fractions [-]
+  Eigen::Vector3d damping_ratio = Eigen::Vector3d::Zero();  ///< BldFlDmp(1), BldEdDmp(1), BldFlDmp(2) as fractions [-]
 };
 
 /// Builds the blade of `file` with length L = TipRad − HubRad [m] and `nodes` equal elements.

@@ -87,8 +87,10 @@ fem::ModeShapeInput elastoDynTowerModeInput(const io::ElastoDynInput& ed, const 
     const double R = c.TipRad;
     const double mass = bladeIntegral(p, [](double) { return 1.0; }) + tip;
     const double along = bladeIntegral(p, [&](double r) { return (c.HubRad + r) * sb; }) + tip * R * sb;
-    const double polar = bladeIntegral(p, [&](double r) { return std::pow((c.HubRad + r) * cb, 2); }) + tip * R * R * cb * cb;
-    const double axial2 = bladeIntegral(p, [&](double r) { return std::pow((c.HubRad + r) * sb, 2); }) + tip * R * R * sb * sb;
+    const double polar = bladeIntegral(p, [&](double r) { return std::pow((c.HubRad + r) * cb, 2); }) +
+                         tip * R * R * cb * cb;
+    const double axial2 = bladeIntegral(p, [&](double r) { return std::pow((c.HubRad + r) * sb, 2); }) +
+                          tip * R * R * sb * sb;
     rotor.m += mass;
     rotor.s(0) += along;
     rotor.J(0, 0) += polar;

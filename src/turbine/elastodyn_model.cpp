@@ -10,11 +10,11 @@
 #include "src/io/discon_input.hpp"
 #include "src/io/openfast_overrides.hpp"
 #include "src/io/openfast_support.hpp"
+#include "src/model/error.hpp"
+#include "src/model/text.hpp"
 #include "src/turbine/elastodyn_fem_shapes.hpp"
 #include "src/turbine/elastodyn_parts.hpp"
 #include "src/turbine/elastodyn_tower_beam.hpp"
-#include "src/model/error.hpp"
-#include "src/model/text.hpp"
 
 namespace whirl {
 namespace elastodyn {
@@ -46,7 +46,7 @@ double gravityOf(const io::OpenFastTurbine& t, const ElastoDynModelOptions& opt)
   if (t.fst.Gravity) return *t.fst.Gravity;
   if (t.elastodyn.Gravity) return *t.elastodyn.Gravity;
   if (t.fst.source.path().empty()) return 9.80665;  // an ElastoDyn file alone (OpenFAST's default)
-  return io::gravity(t);                             // throws, naming the .fst
+  return io::gravity(t);                            // throws, naming the .fst
 }
 
 // ServoDyn's yaw spring when the yaw is free and ServoDyn is on.
@@ -71,8 +71,8 @@ Model buildElastoDynModel(const io::OpenFastTurbine& t, const ElastoDynModelOpti
                                                      : elastodyn::addPlatform(b);
   const elastodyn::TowerParts tower = elastodyn::addTower(b, platform);
   const elastodyn::DrivetrainParts dt = elastodyn::addNacelleAndDrivetrain(b, tower);
-  const elastodyn::RotorHub hub =
-      ed.config.NumBl == 2 ? elastodyn::addTeeteringHub(b, dt) : elastodyn::RotorHub{dt.hub, Vec3::Zero(), 0.0, -1};
+  const elastodyn::RotorHub hub = ed.config.NumBl == 2 ? elastodyn::addTeeteringHub(b, dt)
+                                                       : elastodyn::RotorHub{dt.hub, Vec3::Zero(), 0.0, -1};
   const elastodyn::RotorParts rotor = elastodyn::addBlades(b, hub);
   elastodyn::addInputsAndOutputs(b, tower, dt, rotor);
   elastodyn::addPlatformOutputs(b, platform);
@@ -104,7 +104,8 @@ io::OpenFastTurbine readElastoDynTurbine(const std::string& path, const std::vec
     if (io::toLower(o.key) == "shapes") {  // a whirl option: the tower and blade shape functions
       const std::string v = io::toLower(o.value);
       if (v != "fem" && v != "polynomial")
-        throw InputError("--set '" + text + "': shapes: expected polynomial (the files' mode-shape polynomials) or fem");
+        throw InputError("--set '" + text +
+                         "': shapes: expected polynomial (the files' mode-shape polynomials) or fem");
       opt.fem_shapes = v == "fem";
       continue;
     }
@@ -172,13 +173,14 @@ std::vector<fem::FlexibleBeam> readElastoDynFlexibleBeams(const std::string& pat
   const int nodes = ed.BldNodes.value_or(opt.blade_nodes > 0 ? opt.blade_nodes : 17);
   const double speed = rpm.value_or(ed.init.RotSpeed) * std::numbers::pi / 30.0;
   for (std::size_t k = 0; k < ed.blades.size(); ++k) {
-    const ElastoDynBladeBeam blade =
-        elastoDynBladeBeam(ed.blades[k], ed.config.TipRad - ed.config.HubRad, nodes, ed.mass.TipMass[k]);
+    const ElastoDynBladeBeam blade = elastoDynBladeBeam(ed.blades[k], ed.config.TipRad - ed.config.HubRad, nodes,
+                                                        ed.mass.TipMass[k]);
     fem::FlexibleBeam b{"blade " + std::to_string(k + 1), elastoDynBladeModeInput(blade, ed.config.HubRad, speed),
                         blade.shapes};
     // shapes=fem builds the model's blades at RotSpeed; --rpm only changes the FE modes compared.
     if (opt.fem_shapes)
-      b.shapes = elastoDynBladeFemShapes(elastoDynBladeModeInput(blade, ed.config.HubRad, ed.init.RotSpeed * std::numbers::pi / 30.0));
+      b.shapes = elastoDynBladeFemShapes(
+          elastoDynBladeModeInput(blade, ed.config.HubRad, ed.init.RotSpeed * std::numbers::pi / 30.0));
     out.push_back(std::move(b));
   }
   return out;

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "src/turbine/elastodyn_parts.hpp"
 #include "src/model/error.hpp"
+#include "src/turbine/elastodyn_parts.hpp"
 
 namespace whirl::elastodyn {
 namespace {
@@ -88,8 +88,9 @@ DrivetrainParts addNacelleAndDrivetrain(Builder& b, const TowerParts& tower) {
   hub.offset = Vec3(c.OverHang, 0, 0);
   hub.joint = JointType::Revolute;
   hub.axis = Vec3::UnitX();
-  hub.inertia = c.NumBl == 2 ? rigidBodyInertia(0.0, Vec3::Zero(), Mat3::Zero())
-                             : rigidBodyInertia(m.HubMass, Vec3(c.HubCM, 0, 0), Mat3(Vec3(m.HubIner, 0, 0).asDiagonal()));
+  hub.inertia = c.NumBl == 2
+                    ? rigidBodyInertia(0.0, Vec3::Zero(), Mat3::Zero())
+                    : rigidBodyInertia(m.HubMass, Vec3(c.HubCM, 0, 0), Mat3(Vec3(m.HubIner, 0, 0).asDiagonal()));
   out.hub = b.addBody(std::move(hub));
   out.drivetrain = b.addDof("drivetrain", out.hub, DofKind::Joint, 0, ed.dof.DrTrDOF);
   return out;

@@ -41,7 +41,7 @@ struct Builder {
 
 struct TowerParts {
   int body = -1;
-  int top = -1;  ///< index of the tower-top point
+  int top = -1;               ///< index of the tower-top point
   std::array<int, 4> dofs{};  ///< FA 1, SS 1, FA 2, SS 2
   MatX base_moment_gains;     ///< 2 × 4: (m_y, m_z) at the base from the curvature (beam_moment.hpp)
 };
@@ -95,7 +95,8 @@ void addOffshoreLoads(Builder& b, const PlatformParts& platform, const io::OpenF
 TowerParts addTower(Builder& b, const PlatformParts& platform);
 
 struct DrivetrainParts {
-  int bearing = -1, nacelle = -1, shaft = -1, generator = -1, hub = -1;  ///< bodies (shaft: low-speed side; generator: HSS)
+  int bearing = -1, nacelle = -1, shaft = -1, generator = -1,
+      hub = -1;                                           ///< bodies (shaft: low-speed side; generator: HSS)
   int yaw = -1, generator_azimuth = -1, drivetrain = -1;  ///< DOFs
 };
 
@@ -107,7 +108,7 @@ DrivetrainParts addNacelleAndDrivetrain(Builder& b, const TowerParts& tower);
 /// `apex` from it (−UndSling along the shaft) and the blades turned by δ3 about the shaft.
 struct RotorHub {
   int body = -1;
-  Vec3 apex = Vec3::Zero();  ///< rotor apex in the body frame [m]
+  Vec3 apex = Vec3::Zero();   ///< rotor apex in the body frame [m]
   double azimuth_offset = 0;  ///< blade 1's angle about the body x from the body z [rad] (δ3)
   int teeter = -1;            ///< teeter DOF, −1 without one
 };
@@ -127,11 +128,11 @@ struct BladeParts {
 
 struct RotorParts {
   std::vector<BladeParts> blades;
-  std::vector<int> pitch;                     ///< pitch DOF of each blade
+  std::vector<int> pitch;  ///< pitch DOF of each blade
   /// Elastic DOFs of each blade: flap 1, edge 1, flap 2 (ElastoDyn) or the kept FE modes (BeamDyn).
   std::vector<std::vector<int>> shape_dofs;
-  std::vector<MatX> root_moment_gains;        ///< per blade, 2 × shapes: (m_y flap, m_z edge) at the root
-  int teeter = -1;                            ///< teeter DOF (2 blades), −1 without one
+  std::vector<MatX> root_moment_gains;  ///< per blade, 2 × shapes: (m_y flap, m_z edge) at the root
+  int teeter = -1;                      ///< teeter DOF (2 blades), −1 without one
 };
 
 /// The NumBl blades on the hub (pitch joints frozen at BlPitch, twisted ElastoDyn shapes, tip masses).

@@ -6,8 +6,8 @@
 #include <string>
 
 #include "src/io/openfast_support.hpp"
-#include "src/turbine/elastodyn_parts.hpp"
 #include "src/model/error.hpp"
+#include "src/turbine/elastodyn_parts.hpp"
 
 namespace whirl::elastodyn {
 
@@ -24,7 +24,7 @@ PlatformDescription describePlatform(const Builder& b) {
   // ElastoDyn's products of inertia are −∫xy dm etc., the off-diagonal entries of the tensor.
   Mat3 J;
   J << m.PtfmRIner, m.PtfmXYIner.value_or(0.0), m.PtfmXZIner.value_or(0.0),  //
-      m.PtfmXYIner.value_or(0.0), m.PtfmPIner, m.PtfmYZIner.value_or(0.0),    //
+      m.PtfmXYIner.value_or(0.0), m.PtfmPIner, m.PtfmYZIner.value_or(0.0),   //
       m.PtfmXZIner.value_or(0.0), m.PtfmYZIner.value_or(0.0), m.PtfmYIner;
   p.inertia = rigidBodyInertia(m.PtfmMass, cm - p.reference, J);
   const io::ElastoDynDofs& d = ed.dof;

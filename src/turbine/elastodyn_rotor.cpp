@@ -2,12 +2,12 @@
 #include <cmath>
 #include <numbers>
 
+#include "src/model/error.hpp"
+#include "src/shapes/beam_moment.hpp"
 #include "src/turbine/beamdyn_blade.hpp"
 #include "src/turbine/elastodyn_blade_shapes.hpp"
 #include "src/turbine/elastodyn_fem_shapes.hpp"
 #include "src/turbine/elastodyn_parts.hpp"
-#include "src/model/error.hpp"
-#include "src/shapes/beam_moment.hpp"
 
 namespace whirl::elastodyn {
 namespace {
@@ -26,8 +26,9 @@ RotorParts addBlades(Builder& b, const RotorHub& hub) {
   const io::ElastoDynConfiguration& c = ed.config;
   const int nodes = ed.BldNodes.value_or(b.opt.blade_nodes);
   if (!ed.BldNodes && nodes < 1)
-    throw InputError(b.where("BldNodes", "not in this file (ElastoDyn v1.00–v1.01 took the blade nodes from "
-                                         "AeroDyn): set ElastoDynModelOptions::blade_nodes"));
+    throw InputError(b.where("BldNodes",
+                             "not in this file (ElastoDyn v1.00–v1.01 took the blade nodes from "
+                             "AeroDyn): set ElastoDynModelOptions::blade_nodes"));
   if (nodes < 1) throw InputError(b.where("BldNodes", "must be at least 1"));
   const double L = c.TipRad - c.HubRad;
   // Blade body axes in the pitched frame j: x = j3 (span), y = j1 (out of plane), z = j2 (in plane).
@@ -46,7 +47,8 @@ RotorParts addBlades(Builder& b, const RotorHub& hub) {
     if (b.beamdyn)
       fe = beamDynBladeBody(b.beamdyn->at(static_cast<std::size_t>(k)), {b.opt.blade_elements, b.opt.blade_modes});
     const double tip_mass = fe ? 0.0 : ed.mass.TipMass[static_cast<std::size_t>(k)];
-    ElastoDynBladeBeam beam = fe ? fe->beam : elastoDynBladeBeam(ed.blades.at(static_cast<std::size_t>(k)), L, nodes, tip_mass);
+    ElastoDynBladeBeam beam = fe ? fe->beam
+                                 : elastoDynBladeBeam(ed.blades.at(static_cast<std::size_t>(k)), L, nodes, tip_mass);
     // shapes=fem: the FE modes of the blade's properties at the initial rotor speed RotSpeed.
     if (b.opt.fem_shapes && !fe)
       beam.shapes = elastoDynBladeFemShapes(elastoDynBladeModeInput(beam, c.HubRad, ed.init.RotSpeed * pi / 30));

@@ -1,13 +1,13 @@
 // The ElastoDyn tower as a whirl beam body (ElastoDyn `Coeff`, tower part).
 #include <cmath>
 
+#include "src/model/error.hpp"
+#include "src/shapes/beam.hpp"
+#include "src/shapes/beam_moment.hpp"
 #include "src/turbine/elastodyn_blade_shapes.hpp"
 #include "src/turbine/elastodyn_fem_shapes.hpp"
 #include "src/turbine/elastodyn_parts.hpp"
 #include "src/turbine/elastodyn_tower_beam.hpp"
-#include "src/model/error.hpp"
-#include "src/shapes/beam.hpp"
-#include "src/shapes/beam_moment.hpp"
 
 namespace whirl {
 namespace {

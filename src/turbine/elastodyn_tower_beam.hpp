@@ -10,7 +10,7 @@
 namespace whirl {
 
 struct ElastoDynTowerBeam {
-  BeamProperties props;          ///< L = TowerHt − base; m = TMassDen·AdjTwMa, EIy = TwSSStif·AdjSSSt, EIz = TwFAStif·AdjFASt
+  BeamProperties props;  ///< L = TowerHt − base; m = TMassDen·AdjTwMa, EIy = TwSSStif·AdjSSSt, EIz = TwFAStif·AdjFASt
   std::vector<ShapePtr> shapes;  ///< tower FA 1, SS 1, FA 2, SS 2: Σ c_k (x/L)^k, k = 2..6 [m per unit]
   double base = 0;               ///< height of the tower base [m]
 };

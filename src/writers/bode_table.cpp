@@ -55,11 +55,17 @@ std::string bodeGnuplotScript(const std::string& title, int pairs) {
          "do for [out = 1:2] {\n"
          "  if (out == 1) { set terminal pngcairo size 1200,800 noenhanced; set output png_out }\n"
          "  else { set terminal svg size 1200,800 noenhanced; set output svg_out }\n"
-         "  set multiplot layout 2,1 title " + gnuplotQuoted(title) + "\n"
+         "  set multiplot layout 2,1 title " +
+         gnuplotQuoted(title) +
+         "\n"
          "  set ylabel 'Magnitude [dB of SI units]'\n  set format x ''\n  unset xlabel\n"
-         "  plot for [k = 0:" + std::to_string(pairs - 1) + "] 'bode.csv' using 1:(column(2 + 2*k)) with lines lw 2 title columnhead(2 + 2*k)\n"
+         "  plot for [k = 0:" +
+         std::to_string(pairs - 1) +
+         "] 'bode.csv' using 1:(column(2 + 2*k)) with lines lw 2 title columnhead(2 + 2*k)\n"
          "  set ylabel 'Phase [deg]'\n  set format x '%g'\n  set xlabel 'Frequency [Hz]'\n"
-         "  plot for [k = 0:" + std::to_string(pairs - 1) + "] 'bode.csv' using 1:(column(3 + 2*k)) with lines lw 2 notitle\n"
+         "  plot for [k = 0:" +
+         std::to_string(pairs - 1) +
+         "] 'bode.csv' using 1:(column(3 + 2*k)) with lines lw 2 notitle\n"
          "  unset multiplot\n"
          "}\n";
 }

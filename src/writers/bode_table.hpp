@@ -18,7 +18,8 @@ std::vector<std::string> bodeColumns(const StateSpaceModel& s);
 MatX bodeValues(const std::vector<Eigen::MatrixXcd>& G);
 
 /// Text of bode.csv: `freq_hz` and the columns of bodeColumns, numbers at full precision.
-std::string bodeCsv(const StateSpaceModel& s, const std::vector<double>& freq_hz, const std::vector<Eigen::MatrixXcd>& G);
+std::string bodeCsv(const StateSpaceModel& s, const std::vector<double>& freq_hz,
+                    const std::vector<Eigen::MatrixXcd>& G);
 
 /// Text of bode.gp: reads bode.csv beside it, writes bode.png and bode.svg (magnitude above, phase
 /// below, `pairs` curves each, log frequency axis).

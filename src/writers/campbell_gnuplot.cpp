@@ -3,10 +3,10 @@
 #include <cmath>
 #include <optional>
 
-#include "src/writers/campbell_output.hpp"
 #include "src/io/csv.hpp"
-#include "src/writers/gnuplot.hpp"
 #include "src/model/text.hpp"
+#include "src/writers/campbell_output.hpp"
+#include "src/writers/gnuplot.hpp"
 
 namespace whirl {
 
@@ -83,7 +83,8 @@ Ranges ranges(const CampbellDiagram& d, const CampbellPlotOptions& opt) {
 
 /// (x, rpm) along the x axis: the axis ends versus rpm (nP lines are straight lines through 0),
 /// the operating points sorted by wind speed versus wind speed.
-std::vector<std::pair<double, double>> sweep(const CampbellDiagram& d, const CampbellPlotOptions& opt, const Ranges& r) {
+std::vector<std::pair<double, double>> sweep(const CampbellDiagram& d, const CampbellPlotOptions& opt,
+                                             const Ranges& r) {
   if (!opt.versus_wind_speed) return {{r.x0, r.x0}, {r.x1, r.x1}};
   std::vector<std::pair<double, double>> s;
   for (const auto& p : d.points) s.emplace_back(xOf(p, opt), p.rpm);
@@ -133,8 +134,9 @@ std::string harmonicLabels(std::vector<HarmonicLabel> labels, const Ranges& r) {
 }  // namespace
 
 std::string campbellGnuplotData(const CampbellDiagram& d) {
-  std::string s = "# Campbell diagram written by whirl, read by campbell.gp: one block per line (index 0, 1, ...)\n"
-                  "# columns: rpm, wind speed [m/s] (nan: none), frequency [Hz], damping ratio [-]\n";
+  std::string s =
+      "# Campbell diagram written by whirl, read by campbell.gp: one block per line (index 0, 1, ...)\n"
+      "# columns: rpm, wind speed [m/s] (nan: none), frequency [Hz], damping ratio [-]\n";
   for (std::size_t l = 0; l < d.lines.size(); ++l) {
     const auto& line = d.lines[l];
     s += (l ? "\n\n" : "") + std::string("# index ") + std::to_string(l) + ": " + gnuplotComment(line.name) + "\n";
@@ -149,8 +151,8 @@ std::string campbellGnuplotData(const CampbellDiagram& d) {
       if (gap) s += "\n";  // one blank line: Gnuplot does not join across it
       gap = false;
       any = true;
-      s += formatNumber(pt.rpm) + " " + formatNumber(pt.wind_speed.value_or(NAN)) + " " + formatNumber(m.freq_hz) + " " +
-           formatNumber(m.damping_ratio) + "\n";
+      s += formatNumber(pt.rpm) + " " + formatNumber(pt.wind_speed.value_or(NAN)) + " " + formatNumber(m.freq_hz) +
+           " " + formatNumber(m.damping_ratio) + "\n";
     }
   }
   return s;
@@ -173,7 +175,8 @@ std::string campbellGnuplotScript(const CampbellDiagram& d, const CampbellPlotOp
        "if (!exists('svg_out')) { svg_out = here.'campbell.svg' }\n\n"
        "# Layout: page size [px], font, axes; the plots end at 'right' (screen fraction), the key follows.\n"
        "width = 1280; height = 900; font = 'Sans,12'\n";
-  g += "xcol = " + std::string(opt.versus_wind_speed ? "2" : "1") + "   # campbell.dat column on x: 1 rotor speed, 2 wind speed\n";
+  g += "xcol = " + std::string(opt.versus_wind_speed ? "2" : "1") +
+       "   # campbell.dat column on x: 1 rotor speed, 2 wind speed\n";
   g += "xtitle = " + gnuplotQuoted(opt.versus_wind_speed ? "Wind speed [m/s]" : "Rotor speed [rpm]") + "\n";
   g += "title = " + gnuplotQuoted(d.title.empty() ? "Campbell diagram" : d.title) + "\n";
   g += "# The nP labels below are placed for these ranges: move them when you change xmax or fmax.\n";

@@ -34,7 +34,9 @@ void roundNumbers(json& j) {
 std::string readLibrary(const std::string& rel) {
   const std::string path = javascriptDir() + "/" + rel;
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(where(path, 0, "", "not found: the HTML report inlines it (Debian: apt-get install libjs-d3 libjs-three)"));
+  if (!in)
+    throw InputError(
+        where(path, 0, "", "not found: the HTML report inlines it (Debian: apt-get install libjs-d3 libjs-three)"));
   std::ostringstream s;
   s << in.rdbuf();
   return s.str();
@@ -97,11 +99,13 @@ std::string javascriptDir() {
 
 std::string campbellHtml(const std::string& modes_json, const CampbellReportOptions& opt, const std::string& source) {
   json data = json::parse(modes_json, nullptr, false);
-  if (data.is_discarded() || !data.is_object()) throw InputError(where(source, 0, "", "not a JSON object (campbell_modes.json)"));
+  if (data.is_discarded() || !data.is_object())
+    throw InputError(where(source, 0, "", "not a JSON object (campbell_modes.json)"));
   for (const char* key : {"title", "lines", "points"})
     if (!data.contains(key)) throw InputError(where(source, 0, key, "missing: not a campbell_modes.json of whirl"));
   if (!data["title"].is_string() || !data["lines"].is_array() || !data["points"].is_array())
-    throw InputError(where(source, 0, "", "title, lines or points of the wrong type: not a campbell_modes.json of whirl"));
+    throw InputError(
+        where(source, 0, "", "title, lines or points of the wrong type: not a campbell_modes.json of whirl"));
   roundNumbers(data);
   json o;
   o["harmonics"] = opt.harmonics;

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include "src/model/error.hpp"
 #include "src/writers/campbell_html.hpp"
 #include "src/writers/gnuplot.hpp"
 #include "src/writers/hawcstab2_files.hpp"
@@ -10,7 +11,6 @@
 #include "src/writers/mode_shape_vtk.hpp"
 #include "src/writers/openfast_campbell_files.hpp"
 #include "src/writers/output_set.hpp"
-#include "src/model/error.hpp"
 
 namespace whirl {
 
@@ -25,14 +25,16 @@ void writeCampbellVtk(const CampbellDiagram& d, const CampbellPlotOptions& opt, 
       if (line.mode[p] < 0) continue;
       const Mode& m = d.points[p].modes[static_cast<std::size_t>(line.mode[p])];
       const std::string stem = "mode_" + vtkFileStem(line.name) + "_p" + std::to_string(p);
-      for (const auto& [name, text] : modeShapeVtk(m.motion, stem, m.freq_hz, m.damped_freq_hz)) files.write(name, text);
+      for (const auto& [name, text] : modeShapeVtk(m.motion, stem, m.freq_hz, m.damped_freq_hz))
+        files.write(name, text);
     }
   }
 }
 
 }  // namespace
 
-std::vector<std::string> writeCampbell(const CampbellDiagram& d, const std::string& dir, const CampbellPlotOptions& opt) {
+std::vector<std::string> writeCampbell(const CampbellDiagram& d, const std::string& dir,
+                                       const CampbellPlotOptions& opt) {
   checkCampbell(d, opt);
   const std::string folder = dir.empty() ? "." : dir;
   prepareOutputFolder(folder);

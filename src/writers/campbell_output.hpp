@@ -45,8 +45,8 @@ struct CampbellPlotOptions {
   /// summary (what, value).
   bool html = false;
   std::vector<std::pair<std::string, std::string>> summary;
-  bool render = true;                         ///< run Gnuplot on the script when it is on PATH
-  std::string gnuplot = "gnuplot";            ///< the Gnuplot program (looked up on PATH)
+  bool render = true;               ///< run Gnuplot on the script when it is on PATH
+  std::string gnuplot = "gnuplot";  ///< the Gnuplot program (looked up on PATH)
 };
 
 /// Whether `line` is drawn: not when it lies entirely above opt.max_freq_hz, nor when every one of its

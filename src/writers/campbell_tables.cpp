@@ -3,10 +3,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "src/writers/campbell_output.hpp"
-#include "src/writers/mode_shape_tables.hpp"
 #include "src/io/csv.hpp"
 #include "src/model/error.hpp"
+#include "src/writers/campbell_output.hpp"
+#include "src/writers/mode_shape_tables.hpp"
 
 namespace whirl {
 
@@ -15,21 +15,25 @@ void checkCampbell(const CampbellDiagram& d, const CampbellPlotOptions& opt) {
   for (const auto& line : d.lines) {
     const std::string key = "Campbell line '" + line.name + "'";
     if (line.mode.size() != P)
-      throw InputError(where("", 0, key, std::to_string(line.mode.size()) + " entries for " + std::to_string(P) + " points"));
+      throw InputError(
+          where("", 0, key, std::to_string(line.mode.size()) + " entries for " + std::to_string(P) + " points"));
     for (std::size_t p = 0; p < P; ++p)
       if (line.mode[p] < -1 || line.mode[p] >= static_cast<int>(d.points[p].modes.size()))
-        throw InputError(where("", 0, key, "mode " + std::to_string(line.mode[p]) + " at point " + std::to_string(p) +
-                                               " is not one of its " + std::to_string(d.points[p].modes.size()) + " modes"));
+        throw InputError(where("", 0, key,
+                               "mode " + std::to_string(line.mode[p]) + " at point " + std::to_string(p) +
+                                   " is not one of its " + std::to_string(d.points[p].modes.size()) + " modes"));
   }
   for (const std::string& f : opt.formats)
     if (f != "hawcstab2" && f != "openfast" && f != "vtk")
-      throw InputError(where("", 0, "Campbell formats", "unknown format '" + f + "' (allowed: hawcstab2, openfast, vtk)"));
+      throw InputError(
+          where("", 0, "Campbell formats", "unknown format '" + f + "' (allowed: hawcstab2, openfast, vtk)"));
   for (int n : opt.harmonics)
     if (n < 1) throw InputError(where("", 0, "Campbell plot harmonics", std::to_string(n) + "P: must be 1 or more"));
   if (opt.versus_wind_speed)
     for (std::size_t p = 0; p < P; ++p)
       if (!d.points[p].wind_speed)
-        throw InputError(where("", 0, "Campbell point " + std::to_string(p), "no wind speed for a plot versus wind speed"));
+        throw InputError(
+            where("", 0, "Campbell point " + std::to_string(p), "no wind speed for a plot versus wind speed"));
 }
 
 std::string campbellCsv(const CampbellDiagram& d) {
@@ -83,7 +87,8 @@ std::string campbellModesJson(const CampbellDiagram& d) {
         if (line.mode[p] == static_cast<int>(k)) jm["line"] = line.name;
       json part = json::object();
       for (Eigen::Index c = 0; c < m.participation.size(); ++c) {
-        const std::string coord = c < static_cast<Eigen::Index>(pt.coordinates.size()) ? pt.coordinates[c] : "q" + std::to_string(c);
+        const std::string coord = c < static_cast<Eigen::Index>(pt.coordinates.size()) ? pt.coordinates[c]
+                                                                                       : "q" + std::to_string(c);
         part[coord] = number(m.participation[c]);
       }
       jm["participation"] = std::move(part);

@@ -18,11 +18,13 @@ std::string column(const std::string& name) {
 
 std::string closedLoopStepCsv(const ClosedLoopStep& r, double wind_speed, const ClosedLoopStepOptions& opt) {
   std::string t = "time_s,wind_speed_m_s";
-  for (const ClosedLoopStepSignal& s : r.signals) t += "," + column(s.name) + "_nonlinear," + column(s.name) + "_linear";
+  for (const ClosedLoopStepSignal& s : r.signals)
+    t += "," + column(s.name) + "_nonlinear," + column(s.name) + "_linear";
   t += "\n";
   for (size_t k = 0; k < r.time.size(); ++k) {
     t += formatNumber(r.time[k]) + "," + formatNumber(wind_speed + (r.time[k] >= opt.step_time ? opt.wind_step : 0));
-    for (const ClosedLoopStepSignal& s : r.signals) t += "," + formatNumber(s.nonlinear[k]) + "," + formatNumber(s.linear[k]);
+    for (const ClosedLoopStepSignal& s : r.signals)
+      t += "," + formatNumber(s.nonlinear[k]) + "," + formatNumber(s.linear[k]);
     t += "\n";
   }
   return t;
@@ -35,18 +37,21 @@ std::string closedLoopStepGnuplot(const ClosedLoopStep& r, double wind_speed, co
   g += "if (!exists('svg_out')) svg_out = 'closed_loop_step.svg'\n";
   g += "set datafile separator ','\nset key top right noenhanced\nset grid\n";
   for (const char* term : {"png", "svg"}) {
-    g += std::string(term == std::string("png") ? "set terminal pngcairo noenhanced size 900," : "set terminal svg noenhanced size 900,") +
+    g += std::string(term == std::string("png") ? "set terminal pngcairo noenhanced size 900,"
+                                                : "set terminal svg noenhanced size 900,") +
          std::to_string(250 * n) + "\n";
     g += std::string("set output ") + (term == std::string("png") ? "png_out" : "svg_out") + "\n";
     g += "set multiplot layout " + std::to_string(n) + ",1 title " +
          gnuplotQuoted("wind step " + formatNumber(opt.wind_step) + " m/s at " + formatNumber(opt.step_time) +
-                       " s from " + formatNumber(wind_speed) + " m/s") + "\n";
+                       " s from " + formatNumber(wind_speed) + " m/s") +
+         "\n";
     for (int j = 0; j < n; ++j) {
       const ClosedLoopStepSignal& s = r.signals[static_cast<size_t>(j)];
       g += "set ylabel " + gnuplotQuoted("d" + s.name + " [" + s.unit + "]") + "\n";
       g += j + 1 == n ? "set xlabel 'time [s]'\n" : "unset xlabel\n";
-      g += "plot 'closed_loop_step.csv' using 1:" + std::to_string(3 + 2 * j) + " with lines lw 2 title 'nonlinear', '' using 1:" +
-           std::to_string(4 + 2 * j) + " with lines dt 2 lw 2 title 'linear'\n";
+      g += "plot 'closed_loop_step.csv' using 1:" + std::to_string(3 + 2 * j) +
+           " with lines lw 2 title 'nonlinear', '' using 1:" + std::to_string(4 + 2 * j) +
+           " with lines dt 2 lw 2 title 'linear'\n";
     }
     g += "unset multiplot\n";
   }

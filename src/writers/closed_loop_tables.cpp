@@ -70,15 +70,17 @@ std::string lineEntries(const CampbellDiagram& d, const std::string& dat, const 
     if (!campbellLineShown(d, d.lines[i], opt)) continue;
     s += s.empty() ? "" : ", \\\n       ";
     s += gnuplotQuoted(dat) + " index " + std::to_string(i) + " using 2:" + column;
-    s += open ? " with lines dt 2 lc rgb 'gray' notitle" : " with linespoints pt 7 ps 0.5 title " + gnuplotQuoted(d.lines[i].name);
+    s += open ? " with lines dt 2 lc rgb 'gray' notitle"
+              : " with linespoints pt 7 ps 0.5 title " + gnuplotQuoted(d.lines[i].name);
   }
   return s;
 }
 
-/// `plot` entries of the margin columns (Gnuplot `using` expressions on margins.csv) that have a finite value somewhere: a
-/// loop that never acts (inf everywhere) would only make Gnuplot warn.
-std::string marginEntries(const std::vector<ClosedLoopPoint>& points,
-                          const std::vector<std::tuple<std::string, std::string, std::function<double(const ClosedLoopPoint&)>>>& cols) {
+/// `plot` entries of the margin columns (Gnuplot `using` expressions on margins.csv) that have a finite value
+/// somewhere: a loop that never acts (inf everywhere) would only make Gnuplot warn.
+std::string marginEntries(
+    const std::vector<ClosedLoopPoint>& points,
+    const std::vector<std::tuple<std::string, std::string, std::function<double(const ClosedLoopPoint&)>>>& cols) {
   std::string s;
   for (const auto& [expr, title, value] : cols) {
     bool any = false;
@@ -115,14 +117,14 @@ std::string closedLoopGnuplotScript(const ClosedLoopCampbell& c, const CampbellP
     return "  plot " + (entries.empty() ? std::string("NaN notitle") : entries) + "\n";
   };
   using Col = std::tuple<std::string, std::string, std::function<double(const ClosedLoopPoint&)>>;
-  const std::vector<Col> gain = {
-      {"5", "pitch loop", [](const ClosedLoopPoint& p) { return p.pitch.gain_margin; }},
-      {"12", "torque loop", [](const ClosedLoopPoint& p) { return p.torque.gain_margin; }}};
-  const std::vector<Col> phase = {
-      {"7", "pitch PM", [](const ClosedLoopPoint& p) { return p.pitch.phase_margin; }},
-      {"($10*10)", "pitch Ms x 10", [](const ClosedLoopPoint& p) { return p.pitch.peak_sensitivity; }},
-      {"14", "torque PM", [](const ClosedLoopPoint& p) { return p.torque.phase_margin; }},
-      {"($17*10)", "torque Ms x 10", [](const ClosedLoopPoint& p) { return p.torque.peak_sensitivity; }}};
+  const std::vector<Col> gain = {{"5", "pitch loop", [](const ClosedLoopPoint& p) { return p.pitch.gain_margin; }},
+                                 {"12", "torque loop", [](const ClosedLoopPoint& p) { return p.torque.gain_margin; }}};
+  const std::vector<Col> phase = {{"7", "pitch PM", [](const ClosedLoopPoint& p) { return p.pitch.phase_margin; }},
+                                  {"($10*10)", "pitch Ms x 10",
+                                   [](const ClosedLoopPoint& p) { return p.pitch.peak_sensitivity; }},
+                                  {"14", "torque PM", [](const ClosedLoopPoint& p) { return p.torque.phase_margin; }},
+                                  {"($17*10)", "torque Ms x 10",
+                                   [](const ClosedLoopPoint& p) { return p.torque.peak_sensitivity; }}};
   const std::string top = opt.max_freq_hz > 0 ? formatNumber(opt.max_freq_hz) : "*";
   return "# Closed-loop Campbell diagram and loop margins written by whirl: gnuplot closed_loop.gp (from this folder)\n"
          "# Open loop grey dashed, closed loop in colour (lines tracked along the wind), unstable roots red.\n"
@@ -136,11 +138,13 @@ std::string closedLoopGnuplotScript(const ClosedLoopCampbell& c, const CampbellP
          "do for [out = 1:2] {\n"
          "  if (out == 1) { set terminal pngcairo size 1600,1200 noenhanced; set output png_out }\n"
          "  else { set terminal svg size 1600,1200 noenhanced; set output svg_out }\n"
-         "  set multiplot layout 2,2 title " + gnuplotQuoted(c.closed.title) + "\n"
+         "  set multiplot layout 2,2 title " +
+         gnuplotQuoted(c.closed.title) +
+         "\n"
          "  set datafile separator whitespace\n"
          "  set ylabel 'Frequency [Hz]'\n"
-         "  set yrange [0:" + top + "]\n" +
-         panel("3", unstable_f) +
+         "  set yrange [0:" +
+         top + "]\n" + panel("3", unstable_f) +
          "  set ylabel 'Damping ratio [%]'\n"
          "  set yrange [-5:*]\n"
          "  set key off\n" +
@@ -149,9 +153,13 @@ std::string closedLoopGnuplotScript(const ClosedLoopCampbell& c, const CampbellP
          "  set datafile separator ','\n"
          "  set autoscale y\n"
          "  set ylabel 'Gain margin [dB]'\n"
-         "  plot " + marginEntries(c.points, gain) + "\n"
+         "  plot " +
+         marginEntries(c.points, gain) +
+         "\n"
          "  set ylabel 'Phase margin [deg]; peak sensitivity Ms x 10'\n"
-         "  plot " + marginEntries(c.points, phase) + "\n"
+         "  plot " +
+         marginEntries(c.points, phase) +
+         "\n"
          "  unset multiplot\n"
          "}\n";
 }

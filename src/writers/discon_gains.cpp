@@ -69,8 +69,8 @@ std::string disconWithGains(const std::string& text, const std::string& file, co
     b = e + 1;
   }
   std::map<std::string, size_t> at;
-  std::vector<std::string> keys = {"PC_GS_n", "PC_GS_angles", "PC_GS_KP", "PC_GS_KI", "PC_GS_KD",
-                                   "PC_GS_TF", "VS_KP",   "VS_KI"};
+  std::vector<std::string> keys = {"PC_GS_n",  "PC_GS_angles", "PC_GS_KP", "PC_GS_KI",
+                                   "PC_GS_KD", "PC_GS_TF",     "VS_KP",    "VS_KI"};
   if (g.fl_mode > 0) keys.insert(keys.end(), {"Fl_Mode", "Fl_Kp", "Fl_U"});
   for (size_t i = 0; i < lines.size(); ++i) {
     const Line l = splitLine(lines[i]);
@@ -97,9 +97,9 @@ std::string disconWithGains(const std::string& text, const std::string& file, co
     replace("PC_GS_n", buf);
     for (const char* k : {"PC_GS_KD", "PC_GS_TF"}) {
       if (!allZero(splitLine(lines[at[k]]).values))
-        throw InputError(where(file, static_cast<int>(at[k] + 1), k,
-                               "non-zero gains cannot follow a schedule of another length (" + std::to_string(n) +
-                                   " angles)"));
+        throw InputError(
+            where(file, static_cast<int>(at[k] + 1), k,
+                  "non-zero gains cannot follow a schedule of another length (" + std::to_string(n) + " angles)"));
       replace(k, row(std::vector<double>(n, 0.0), "%.3e", 12));
     }
   }

@@ -82,14 +82,13 @@ std::vector<std::string> renderGnuplot(const std::string& folder, const std::str
   }
   if (rc != 0 || written.size() != 2) {
     std::cerr << "whirl: warning: " << (shown / script).string() << ": " << program
-              << (rc == 0 ? " did not write both images" : " failed (exit status " + std::to_string(rc) + ")")
-              << "; " << png_name << " and " << svg_name << " are not up to date. The tables are complete." << std::endl;
+              << (rc == 0 ? " did not write both images" : " failed (exit status " + std::to_string(rc) + ")") << "; "
+              << png_name << " and " << svg_name << " are not up to date. The tables are complete." << std::endl;
   }
   fs::remove(dir / png, ec);
   fs::remove(dir / svg, ec);
   return written;
 }
-
 
 std::string gnuplotQuoted(const std::string& s) {
   std::string q = "'";

@@ -21,7 +21,9 @@ bool byWind(const CampbellDiagram& d) {
 
 double operatingValue(const CampbellDiagram& d, const CampbellPoint& p) { return byWind(d) ? *p.wind_speed : p.rpm; }
 
-std::string right(const std::string& s, std::size_t width) { return s.size() >= width ? s : std::string(width - s.size(), ' ') + s; }
+std::string right(const std::string& s, std::size_t width) {
+  return s.size() >= width ? s : std::string(width - s.size(), ' ') + s;
+}
 
 const BodyMotion* findRole(const ModeMotion& m, const std::string& role, int blade = -1) {
   for (const BodyMotion& b : m.bodies)
@@ -98,11 +100,13 @@ Eigen::Matrix<std::complex<double>, 15, 1> hawcstab2Dofs(const ModeMotion& m) {
 }
 
 std::string hawcstab2Amp(const CampbellDiagram& d) {
-  static const char* const kNames[15] = {"TWR x [m]",     "TWR y [m]",     "TWR yaw [rad]", "SFT x [m]",    "SFT y [m]",
-                                         "SFT tor [rad]", "Sym edge [m]",  "BW edge [m]",   "FW edge [m]",  "Sym flap [m]",
-                                         "BW flap [m]",   "FW flap [m]",   "Sym tors [rad]", "BW tors [rad]", "FW tors [rad]"};
+  static const char* const kNames[15] = {"TWR x [m]",      "TWR y [m]",     "TWR yaw [rad]", "SFT x [m]",
+                                         "SFT y [m]",      "SFT tor [rad]", "Sym edge [m]",  "BW edge [m]",
+                                         "FW edge [m]",    "Sym flap [m]",  "BW flap [m]",   "FW flap [m]",
+                                         "Sym tors [rad]", "BW tors [rad]", "FW tors [rad]"};
   const std::size_t N = d.lines.size();
-  std::string mode_nr = "# Mode number:", col_nr = "# Column num.:", names = byWind(d) ? "# Wind speed" : "# Rotor speed";
+  std::string mode_nr = "# Mode number:", col_nr = "# Column num.:",
+              names = byWind(d) ? "# Wind speed" : "# Rotor speed";
   for (std::size_t k = 0; k < N; ++k)
     for (int j = 0; j < 30; ++j) {
       mode_nr += right(std::to_string(k + 1), 14);
@@ -131,8 +135,9 @@ std::string hawcstab2Amp(const CampbellDiagram& d) {
 }
 
 std::string hawcstab2Opt(const CampbellDiagram& d) {
-  std::string s = right(std::to_string(d.points.size()), 4) +
-                  " wind speed [m/s]          pitch [deg]     rot. speed [rpm]      aero power [kw]     aero thrust [kn]\n";
+  std::string s =
+      right(std::to_string(d.points.size()), 4) +
+      " wind speed [m/s]          pitch [deg]     rot. speed [rpm]      aero power [kw]     aero thrust [kn]\n";
   for (const CampbellPoint& p : d.points)
     s += fortranE(p.wind_speed.value_or(0)) + fortranE(p.pitch_deg.value_or(0)) + fortranE(p.rpm) + fortranE(kNan) +
          fortranE(kNan) + "\n";

@@ -21,26 +21,26 @@ struct Known {
 // channels ("RootMFlp1") are looked up without their blade number.
 const std::map<std::string, Known>& knownOutputs() {
   static const std::map<std::string, Known> k = {
-      {"GenSpeed", {"ED", "rpm", kRpm}},        {"RotSpeed", {"ED", "rpm", kRpm}},
-      {"NacYaw", {"ED", "deg", kDeg}},          {"TTDspFA", {"ED", "m", 1}},
-      {"TTDspSS", {"ED", "m", 1}},              {"YawBrTAxp", {"ED", "m/s^2", 1}},
-      {"YawBrTAyp", {"ED", "m/s^2", 1}},        {"TwrBsMyt", {"ED", "kN-m", 1e-3}},
-      {"TwrBsMxt", {"ED", "kN-m", 1e-3}},       {"RootMFlp", {"ED", "kN-m", 1e-3}},
-      {"RootMEdg", {"ED", "kN-m", 1e-3}},       {"BldPitch", {"ED", "deg", kDeg}},
-      {"TeetDefl", {"ED", "deg", kDeg}},        {"NcIMURAys", {"ED", "deg/s^2", kDeg}},
-      {"YawBrTVxp", {"ED", "m/s", 1}},          {"NcIMURVys", {"ED", "deg/s", kDeg}},
-      {"PtfmSurge", {"ED", "m", 1}},            {"PtfmSway", {"ED", "m", 1}},
-      {"PtfmHeave", {"ED", "m", 1}},            {"PtfmRoll", {"ED", "deg", kDeg}},
-      {"PtfmPitch", {"ED", "deg", kDeg}},       {"PtfmYaw", {"ED", "deg", kDeg}},
-      {"PtfmTVxi", {"ED", "m/s", 1}},           {"PtfmTVyi", {"ED", "m/s", 1}},
-      {"PtfmTVzi", {"ED", "m/s", 1}},           {"PtfmTAxi", {"ED", "m/s^2", 1}},
-      {"PtfmTAyi", {"ED", "m/s^2", 1}},         {"PtfmTAzi", {"ED", "m/s^2", 1}},
-      {"PtfmRVxi", {"ED", "deg/s", kDeg}},      {"PtfmRVyi", {"ED", "deg/s", kDeg}},
-      {"PtfmRVzi", {"ED", "deg/s", kDeg}},      {"PtfmRAxi", {"ED", "deg/s^2", kDeg}},
-      {"PtfmRAyi", {"ED", "deg/s^2", kDeg}},    {"PtfmRAzi", {"ED", "deg/s^2", kDeg}},
-      {"RtSpeed", {"AD", "rpm", kRpm}},         {"RtAeroFxh", {"AD", "N", 1}},
-      {"RtAeroMxh", {"AD", "N-m", 1}},          {"RtAeroPwr", {"AD", "W", 1}},
-      {"GenTq", {"SrvD", "kN-m", 1e-3}},        {"GenPwr", {"SrvD", "kW", 1e-3}},
+      {"GenSpeed", {"ED", "rpm", kRpm}},     {"RotSpeed", {"ED", "rpm", kRpm}},
+      {"NacYaw", {"ED", "deg", kDeg}},       {"TTDspFA", {"ED", "m", 1}},
+      {"TTDspSS", {"ED", "m", 1}},           {"YawBrTAxp", {"ED", "m/s^2", 1}},
+      {"YawBrTAyp", {"ED", "m/s^2", 1}},     {"TwrBsMyt", {"ED", "kN-m", 1e-3}},
+      {"TwrBsMxt", {"ED", "kN-m", 1e-3}},    {"RootMFlp", {"ED", "kN-m", 1e-3}},
+      {"RootMEdg", {"ED", "kN-m", 1e-3}},    {"BldPitch", {"ED", "deg", kDeg}},
+      {"TeetDefl", {"ED", "deg", kDeg}},     {"NcIMURAys", {"ED", "deg/s^2", kDeg}},
+      {"YawBrTVxp", {"ED", "m/s", 1}},       {"NcIMURVys", {"ED", "deg/s", kDeg}},
+      {"PtfmSurge", {"ED", "m", 1}},         {"PtfmSway", {"ED", "m", 1}},
+      {"PtfmHeave", {"ED", "m", 1}},         {"PtfmRoll", {"ED", "deg", kDeg}},
+      {"PtfmPitch", {"ED", "deg", kDeg}},    {"PtfmYaw", {"ED", "deg", kDeg}},
+      {"PtfmTVxi", {"ED", "m/s", 1}},        {"PtfmTVyi", {"ED", "m/s", 1}},
+      {"PtfmTVzi", {"ED", "m/s", 1}},        {"PtfmTAxi", {"ED", "m/s^2", 1}},
+      {"PtfmTAyi", {"ED", "m/s^2", 1}},      {"PtfmTAzi", {"ED", "m/s^2", 1}},
+      {"PtfmRVxi", {"ED", "deg/s", kDeg}},   {"PtfmRVyi", {"ED", "deg/s", kDeg}},
+      {"PtfmRVzi", {"ED", "deg/s", kDeg}},   {"PtfmRAxi", {"ED", "deg/s^2", kDeg}},
+      {"PtfmRAyi", {"ED", "deg/s^2", kDeg}}, {"PtfmRAzi", {"ED", "deg/s^2", kDeg}},
+      {"RtSpeed", {"AD", "rpm", kRpm}},      {"RtAeroFxh", {"AD", "N", 1}},
+      {"RtAeroMxh", {"AD", "N-m", 1}},       {"RtAeroPwr", {"AD", "W", 1}},
+      {"GenTq", {"SrvD", "kN-m", 1e-3}},     {"GenPwr", {"SrvD", "kW", 1e-3}},
   };
   return k;
 }
@@ -50,8 +50,7 @@ const std::map<std::string, Known>& knownOutputs() {
 LinChannel linInputChannel(const StateSpaceVariable& u) {
   static const std::regex blade(R"(blade (\d+) pitch)");
   std::smatch m;
-  if (u.name == "wind speed")
-    return {"IfW Extended input: horizontal wind speed (steady/uniform wind)", "m/s", 1, 0};
+  if (u.name == "wind speed") return {"IfW Extended input: horizontal wind speed (steady/uniform wind)", "m/s", 1, 0};
   if (std::regex_match(u.name, m, blade)) return {"ED Blade " + m[1].str() + " pitch command", "rad", 1, 1};
   if (u.name == "yaw moment") return {"ED Yaw moment", "Nm", 1, 2};
   if (u.name == "generator torque") return {"ED Generator torque", "Nm", 1, 3};

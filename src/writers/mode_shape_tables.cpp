@@ -88,7 +88,8 @@ std::string modeShapesCsv(const CampbellDiagram& d, std::size_t p) {
       for (Eigen::Index r = 0; r < b.u.rows(); ++r) {
         s += head + csvField(b.body) + "," + (b.blade >= 0 ? std::to_string(b.blade + 1) : "") + "," +
              csvField(b.nodes[static_cast<std::size_t>(r)]) + "," + formatNumber(b.x(r));
-        for (Eigen::Index c = 0; c < 6; ++c) s += "," + formatNumber(std::abs(b.u(r, c))) + "," + formatNumber(phaseDeg(b.u(r, c)));
+        for (Eigen::Index c = 0; c < 6; ++c)
+          s += "," + formatNumber(std::abs(b.u(r, c))) + "," + formatNumber(phaseDeg(b.u(r, c)));
         s += "\n";
       }
   }

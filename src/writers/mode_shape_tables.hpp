@@ -5,10 +5,10 @@
 ///
 /// JSON `motion` (numbers at full precision): `normalisation` (text), `frame` (text), `components`
 /// ["ux","uy","uz","rx","ry","rz"], `bodies`: per body `body`, `blade` (1-based, null in the fixed
-/// frame), `role` (BodyMotion::role), `nodes` (names), `x_m` (stations), `position_m` (per node [x, y, z], ground), `R` (body →
-/// ground, rows), `amplitude` and `phase_deg` (per node the 6 components: m, rad; deg in (−180, 180]);
-/// with a rotor of 3 or more blades `multiblade`: `nodes`, `x_m` and per kind (`collective`,
-/// `backward`, `forward`) `amplitude`, `phase_deg` as above.
+/// frame), `role` (BodyMotion::role), `nodes` (names), `x_m` (stations), `position_m` (per node [x, y, z], ground), `R`
+/// (body → ground, rows), `amplitude` and `phase_deg` (per node the 6 components: m, rad; deg in (−180, 180]); with a
+/// rotor of 3 or more blades `multiblade`: `nodes`, `x_m` and per kind (`collective`, `backward`, `forward`)
+/// `amplitude`, `phase_deg` as above.
 ///
 /// CSV, one row per mode and node: `mode,line,name,freq_hz,damping_ratio,body,blade,node,x_m,` then
 /// `<c>_amp,<c>_phase_deg` for c = ux, uy, uz, rx, ry, rz (blade 1-based, empty in the fixed frame;

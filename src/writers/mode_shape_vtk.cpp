@@ -89,11 +89,13 @@ std::string vtpFrame(const ModeMotion& m, const std::vector<std::vector<NodeRef>
     offsets.push_back(static_cast<long>(connectivity.size()));
     body.push_back(static_cast<long>(line.back().body));
   }
-  std::string s = "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-                  "  <PolyData>\n";
-  s += fmt::format("    <Piece NumberOfPoints=\"{}\" NumberOfVerts=\"0\" NumberOfLines=\"{}\" NumberOfStrips=\"0\" "
-                   "NumberOfPolys=\"0\">\n",
-                   connectivity.size(), lines.size());
+  std::string s =
+      "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+      "  <PolyData>\n";
+  s += fmt::format(
+      "    <Piece NumberOfPoints=\"{}\" NumberOfVerts=\"0\" NumberOfLines=\"{}\" NumberOfStrips=\"0\" "
+      "NumberOfPolys=\"0\">\n",
+      connectivity.size(), lines.size());
   s += "      <PointData Vectors=\"displacement\" Scalars=\"amplitude\">\n";
   s += dataArray("type=\"Float64\" Name=\"displacement\" NumberOfComponents=\"3\"", numbers(displacement));
   s += dataArray("type=\"Float64\" Name=\"amplitude\"", numbers(amplitude));
@@ -140,8 +142,9 @@ std::vector<std::pair<std::string, std::string>> modeShapeVtk(const ModeMotion& 
   const double size = modelSize(motion);
   const double scale = opt.scale_fraction * (size > 0 ? size : 1.0);
   const double f = damped_freq_hz > 0 ? damped_freq_hz : freq_hz;
-  std::string pvd = "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-                    "  <Collection>\n";
+  std::string pvd =
+      "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+      "  <Collection>\n";
   files.emplace_back(stem + ".pvd", "");
   for (int k = 0; k < opt.frames; ++k) {
     const double cycle = static_cast<double>(k) / opt.frames;

@@ -40,10 +40,10 @@ std::string valueRow(const std::string& title, const std::vector<double>& v) {
 std::string ordinal(int k) {
   const int mod100 = k % 100;
   const char* suffix = (mod100 >= 11 && mod100 <= 13) ? "th"
-                       : k % 10 == 1                   ? "st"
-                       : k % 10 == 2                   ? "nd"
-                       : k % 10 == 3                   ? "rd"
-                                                       : "th";
+                       : k % 10 == 1                  ? "st"
+                       : k % 10 == 2                  ? "nd"
+                       : k % 10 == 3                  ? "rd"
+                                                      : "th";
   return std::to_string(k) + suffix;
 }
 
@@ -176,12 +176,13 @@ std::string openfastCampbellPoint(const CampbellDiagram& d, std::size_t p) {
   };
   std::string s;
   s += row([&](std::size_t m) { return fmt::format("Mode Number:,{},,", m + 1); });
-  s += row([&](std::size_t m) { return "Natural (undamped) frequency (Hz):," + formatNumber(pt.modes[m].freq_hz) + ",,"; });
+  s += row(
+      [&](std::size_t m) { return "Natural (undamped) frequency (Hz):," + formatNumber(pt.modes[m].freq_hz) + ",,"; });
   s += row([&](std::size_t m) { return "Damped frequency (Hz):," + formatNumber(pt.modes[m].damped_freq_hz) + ",,"; });
   s += row([&](std::size_t m) { return "Damping Ratio (-):," + formatNumber(pt.modes[m].damping_ratio) + ",,"; });
   s += row([&](std::size_t m) {
-    return fmt::format("Mode {0} state description,State has max at mode {0},Mode {0} signed magnitude,Mode {0} phase (deg)",
-                       m + 1);
+    return fmt::format(
+        "Mode {0} state description,State has max at mode {0},Mode {0} signed magnitude,Mode {0} phase (deg)", m + 1);
   });
   for (std::size_t i = 0; i < pt.coordinates.size(); ++i)
     s += row([&](std::size_t m) {
@@ -199,7 +200,8 @@ std::string openfastCampbellSummary(const CampbellDiagram& d) {
     const CampbellPoint& pt = d.points[p];
     const std::vector<int> with_max = modeWithMax(pt);
     s += rule;
-    s += fmt::format("# --- OP {} - WS {:.1f} - RPM {:.2f} \n", p + 1, pt.wind_speed ? *pt.wind_speed : std::nan(""), pt.rpm);
+    s += fmt::format("# --- OP {} - WS {:.1f} - RPM {:.2f} \n", p + 1, pt.wind_speed ? *pt.wind_speed : std::nan(""),
+                     pt.rpm);
     s += rule;
     s += "# --- \"Selected\" modes\n# ID; Freq [Hz]; Zeta [-]; Mode content\n";
     std::vector<std::size_t> rigid, skipped;

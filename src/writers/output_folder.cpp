@@ -5,21 +5,21 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <cctype>
 #include <cerrno>
 #include <csignal>
-#include <cstdlib>
 #include <cstdio>
-#include <cctype>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
-#include <iterator>
 #include <iostream>
+#include <iterator>
 #include <vector>
 
+#include "src/model/error.hpp"
 #include "src/writers/atomic_file.hpp"
 #include "src/writers/output_set.hpp"
 #include "src/writers/output_set_internal.hpp"
-#include "src/model/error.hpp"
 
 namespace whirl {
 namespace output {

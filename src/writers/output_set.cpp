@@ -14,8 +14,8 @@
 #include <set>
 #include <stdexcept>
 
-#include "src/writers/output_set_internal.hpp"
 #include "src/model/error.hpp"
+#include "src/writers/output_set_internal.hpp"
 
 namespace whirl {
 namespace {
@@ -27,7 +27,8 @@ using output::withErrno;
 constexpr int kMaxMirrored = 20000;
 
 bool sameDevice(const fs::path& a, const fs::path& b) {
-  struct stat sa {}, sb {};
+  struct stat sa {
+  }, sb{};
   return ::stat(a.c_str(), &sa) == 0 && ::stat(b.c_str(), &sb) == 0 && sa.st_dev == sb.st_dev;
 }
 

@@ -36,7 +36,8 @@ bool elastoDynStates(const std::vector<StateSpaceVariable>& states);
 /// DOF (internal DOF index = DOF_TFA1), m") when `elastodyn`, so OpenFAST tools (ROSCO, MBC3) recognize
 /// them; "whirl <name>, <unit>" otherwise (the azimuth marked "DOF_GeAz" as OpenFAST does). One prefix
 /// for all states keeps them one module, which is how readers pair displacements with rates.
-std::string linStateDescription(const StateSpaceVariable& x, const std::vector<StateSpaceVariable>& all, bool elastodyn);
+std::string linStateDescription(const StateSpaceVariable& x, const std::vector<StateSpaceVariable>& all,
+                                bool elastodyn);
 
 /// The files of `whirl export` into `files`: `statespace.mat` (format "mat"), `statespace.json`
 /// ("json"), or one OpenFAST-style `.lin` file per azimuth ("lin"; `statespace.<k>.lin` for one

@@ -55,8 +55,9 @@ std::string stateSpaceJson(const StateSpaceExport& e) {
   j["format"] = "whirl state-space export 1";
   j["source"] = e.source;
   j["model"] = e.model_name;
-  j["conventions"] = "x' = A x + B u, y = C x + D u for deviations from the operating point (op); SI units; "
-                     "matrices as arrays of rows";
+  j["conventions"] =
+      "x' = A x + B u, y = C x + D u for deviations from the operating point (op); SI units; "
+      "matrices as arrays of rows";
   j["operating_points"] = json::array();
   for (const ExportPoint& p : e.points) {
     json o;

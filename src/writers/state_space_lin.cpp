@@ -1,14 +1,14 @@
 // `.lin` writer (FAST_Lin layout) for whirl's state-space models.
-#include <cstdio>
 #include <algorithm>
+#include <cstdio>
 #include <map>
 #include <optional>
 #include <regex>
 #include <sstream>
 
+#include "src/model/text.hpp"
 #include "src/writers/lin_channels.hpp"
 #include "src/writers/state_space_files.hpp"
-#include "src/model/text.hpp"
 
 namespace whirl {
 namespace {
@@ -66,8 +66,8 @@ void table(std::ostringstream& o, const char* title, const char* head, const std
   o << "   ---------- ---------------          --------------- ---------------- -----------\n";
   for (size_t i = 0; i < desc.size(); ++i) {
     char row[96];
-    std::snprintf(row, sizeof row, "%13zu %s %16s %16d         ", i + 1, number(op[i]).c_str(),
-                  flag(blade[i]).c_str(), order[i]);
+    std::snprintf(row, sizeof row, "%13zu %s %16s %16d         ", i + 1, number(op[i]).c_str(), flag(blade[i]).c_str(),
+                  order[i]);
     o << row << withoutControlCharacters(desc[i]) << "\n";  // a newline would start a fake row
   }
   o << "\n";
@@ -151,7 +151,8 @@ bool elastoDynStates(const std::vector<StateSpaceVariable>& all) {
   return true;
 }
 
-std::string linStateDescription(const StateSpaceVariable& x, const std::vector<StateSpaceVariable>& all, bool elastodyn) {
+std::string linStateDescription(const StateSpaceVariable& x, const std::vector<StateSpaceVariable>& all,
+                                bool elastodyn) {
   // HydroDyn's radiation states as OpenFAST describes them ("HD RdtnPtfmSg3"), so that the file reads
   // back into the same names (src/io/openfast_lin_names.hpp).
   static const std::regex radiation(R"(^HydroDyn radiation (surge|sway|heave|roll|pitch|yaw) (\d+)$)");
@@ -183,8 +184,7 @@ std::string linFileText(const StateSpaceModel& model, const std::string& title) 
   std::ostringstream o;
   // No time stamp: two runs write the same bytes (issue 48, item 6).
   o << "\nLinearized model: Predictions were generated using whirl " << WHIRL_VERSION
-    << ", double precision (exact Jacobians by automatic differentiation)\n linked with  " << moduleList(m)
-    << "\n\n";
+    << ", double precision (exact Jacobians by automatic differentiation)\n linked with  " << moduleList(m) << "\n\n";
   // A newline in the title could fake a header line ("Rotor Speed: …") for the readers.
   o << "Description from the FAST input file: " << withoutControlCharacters(title) << "\n\n";
   char line[128];

@@ -5,9 +5,9 @@
 #include <limits>
 #include <memory>
 
+#include "src/model/error.hpp"
 #include "src/writers/lin_channels.hpp"
 #include "src/writers/state_space_files.hpp"
-#include "src/model/error.hpp"
 
 namespace whirl {
 namespace {

@@ -11,10 +11,20 @@ constexpr double kPi = std::numbers::pi;
 }  // namespace
 
 const std::vector<std::string>& steadyColumns() {
-  static const std::vector<std::string> columns = {
-      "wind_speed_m_s", "rotor_speed_rpm", "pitch_deg", "aero_power_kw", "generator_power_kw",
-      "aero_torque_knm", "thrust_kn", "cp", "ct", "tsr", "tip_deflection_m", "tower_top_fa_m",
-      "generator_torque_knm", "region"};
+  static const std::vector<std::string> columns = {"wind_speed_m_s",
+                                                   "rotor_speed_rpm",
+                                                   "pitch_deg",
+                                                   "aero_power_kw",
+                                                   "generator_power_kw",
+                                                   "aero_torque_knm",
+                                                   "thrust_kn",
+                                                   "cp",
+                                                   "ct",
+                                                   "tsr",
+                                                   "tip_deflection_m",
+                                                   "tower_top_fa_m",
+                                                   "generator_torque_knm",
+                                                   "region"};
   return columns;
 }
 
@@ -26,12 +36,21 @@ SteadyRow steadyRow(const Model& m, const SteadyState& s) {
   r.ct = s.thrust / (0.5 * rho * area * U * U);
   r.tsr = omega * R / U;
   const double eff = m.generator.active() ? m.generator.efficiency : s.generator_efficiency;
-  r.values = {U, omega * 30 / kPi, s.condition.collective_pitch.value_or(0) * 180 / kPi,
-              s.aero_torque * omega / 1e3, s.generator_torque * s.generator_speed * eff / 1e3,
-              s.aero_torque / 1e3, s.thrust / 1e3, r.cp, r.ct, r.tsr, s.tip_deflection, s.tower_top_fa,
+  r.values = {U,
+              omega * 30 / kPi,
+              s.condition.collective_pitch.value_or(0) * 180 / kPi,
+              s.aero_torque * omega / 1e3,
+              s.generator_torque * s.generator_speed * eff / 1e3,
+              s.aero_torque / 1e3,
+              s.thrust / 1e3,
+              r.cp,
+              r.ct,
+              r.tsr,
+              s.tip_deflection,
+              s.tower_top_fa,
               s.generator_torque / 1e3};
   // A controller's branch (SteadyState::region: "ROSCO 2", "ROSCO 3", …), else the torque law's side of rated.
-  r.region = !s.region.empty()        ? "ROSCO " + s.region
+  r.region = !s.region.empty()       ? "ROSCO " + s.region
              : !m.generator.active() ? "given"
              : s.above_rated         ? "above rated"
                                      : "below rated";

@@ -14,7 +14,8 @@ namespace whirl {
 /// region.
 struct SteadyRow {
   std::vector<double> values;  ///< in the units of the column names (m/s, rpm, deg, kW, kN m, kN, -, m)
-  std::string region;          ///< "below rated", "above rated", "given" (no generator torque law), or "ROSCO <branch>" (SteadyState::region)
+  std::string region;          ///< "below rated", "above rated", "given" (no generator torque law), or "ROSCO <branch>"
+                               ///< (SteadyState::region)
   double cp = 0, ct = 0, tsr = 0;  ///< power and thrust coefficients, tip-speed ratio [-]
 };
 

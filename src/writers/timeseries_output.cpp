@@ -58,7 +58,8 @@ std::string timeseriesGnuplotScript(const Model& m, const Simulation& sim, const
     for (const std::string& c : opt.channels) {
       const auto it = std::find(names.begin(), names.end(), c);
       if (it == names.end() || it == names.begin())
-        throw InputError("--plot: '" + c + "': no such column of timeseries.csv (a coordinate, 'NAME rate', "
+        throw InputError("--plot: '" + c +
+                         "': no such column of timeseries.csv (a coordinate, 'NAME rate', "
                          "'input: NAME' or an output with its unit)");
       cols.push_back(static_cast<int>(it - names.begin()) + 1);
     }
@@ -66,16 +67,21 @@ std::string timeseriesGnuplotScript(const Model& m, const Simulation& sim, const
   const int n = std::max<int>(1, static_cast<int>(cols.size()));
   std::string g =
       "# Time series written by whirl: gnuplot timeseries.gp (from this folder)\n"
-      "# " + gnuplotComment(opt.title) + "\n"
+      "# " +
+      gnuplotComment(opt.title) +
+      "\n"
       "if (!exists('png_out')) png_out = 'timeseries.png'\n"
       "if (!exists('svg_out')) svg_out = 'timeseries.svg'\n"
       "set datafile separator ','\n"
       "set key noenhanced top right\nset grid\n"
-      "height = " + std::to_string(200 + 220 * n) + "\n"
+      "height = " +
+      std::to_string(200 + 220 * n) +
+      "\n"
       "do for [out = 1:2] {\n"
       "  if (out == 1) { set terminal pngcairo size 1000,height noenhanced; set output png_out }\n"
       "  else { set terminal svg size 1000,height noenhanced; set output svg_out }\n"
-      "  set multiplot layout " + std::to_string(n) + ",1 title " + gnuplotQuoted(opt.title) + "\n";
+      "  set multiplot layout " +
+      std::to_string(n) + ",1 title " + gnuplotQuoted(opt.title) + "\n";
   for (size_t k = 0; k < cols.size(); ++k) {
     const bool last = k + 1 == cols.size();
     g += std::string("  set format x ") + (last ? "'%g'" : "''") + "\n";

@@ -16,7 +16,8 @@
 namespace whirl {
 
 struct TimeseriesPlotOptions {
-  /// Column names of timeseries.csv to plot, one panel each; empty: every integrated coordinate (up to 6; the rate of a rotating one).
+  /// Column names of timeseries.csv to plot, one panel each; empty: every integrated coordinate (up to 6; the rate of a
+  /// rotating one).
   std::vector<std::string> channels;
   std::string title;
   bool render = true;               ///< run Gnuplot on the script when it is on PATH

@@ -2,6 +2,7 @@
 // Runs the whirl executable and captures exit code, stdout and stderr.
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
 #include <array>
 #include <cstdio>
 #include <cstdlib>
@@ -9,7 +10,6 @@
 #include <fstream>
 #include <sstream>
 #include <string>
-#include <sys/wait.h>
 
 namespace whirl::test {
 
@@ -30,7 +30,8 @@ inline std::string slurp(const std::filesystem::path& p) {
 /// checks its messages (issue 48, item 5), so the bad-input suites check all of theirs.
 inline void expectNoLibraryText(const std::string& err, const std::string& args) {
   for (const char* text : {"json.exception", "std::", "what()", "yaml-cpp", "YAML::"})
-    if (err.find(text) != std::string::npos) ADD_FAILURE() << "'" << text << "' in the messages of whirl " << args << ":\n" << err;
+    if (err.find(text) != std::string::npos)
+      ADD_FAILURE() << "'" << text << "' in the messages of whirl " << args << ":\n" << err;
 }
 
 /// Runs `whirl <args>` from `cwd` (default: the source tree), arguments already shell-quoted.

@@ -63,7 +63,8 @@ TEST(CliAero, ParkedAndFeatheredRotorsInWind) {
   const auto parked = whirl("modes " + kAero + " --rpm 0 --format csv");
   ASSERT_EQ(parked.code, 0) << parked.err;
   EXPECT_NE(parked.out.find("tower FA 1"), std::string::npos);
-  const auto feathered = whirl("modes " + kAero + " --rpm 0 --set 'BlPitch(1)=90' --set 'BlPitch(2)=90' --set 'BlPitch(3)=90'");
+  const auto feathered = whirl("modes " + kAero +
+                               " --rpm 0 --set 'BlPitch(1)=90' --set 'BlPitch(2)=90' --set 'BlPitch(3)=90'");
   EXPECT_EQ(feathered.code, 0) << feathered.err;
 }
 

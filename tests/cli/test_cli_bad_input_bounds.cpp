@@ -59,8 +59,9 @@ const std::string kTooLarge = "is 200 MB, more than the 128 MB an input file may
 
 TEST(CliInputFileSize, OpenFastFilesAreRefusedFromTheirSize) {
   const fs::path dir = copyCase("nrel5mw", "size_openfast");
-  for (const std::string file : {"NRELOffshrBsline5MW_Onshore_ElastoDyn.dat", "NRELOffshrBsline5MW_Onshore_ElastoDyn_Tower.dat",
-                                 "NRELOffshrBsline5MW_Blade.dat", "Main_Onshore.fst"}) {
+  for (const std::string file :
+       {"NRELOffshrBsline5MW_Onshore_ElastoDyn.dat", "NRELOffshrBsline5MW_Onshore_ElastoDyn_Tower.dat",
+        "NRELOffshrBsline5MW_Blade.dat", "Main_Onshore.fst"}) {
     const fs::path f = dir / file;
     const std::string keep = slurp(f);
     inflate(f);
@@ -94,7 +95,8 @@ TEST(CliInputFileSize, CaseTablesLinAndTrackingFilesAreRefusedFromTheirSize) {
                      "sets.csv: " + kTooLarge, "study --params");
   std::ofstream(dir / "t.csv") << "rename,tower FA 1,tower\n";
   inflate(dir / "t.csv");
-  expectOneLineError(whirlTimed("campbell " + yaml + " --rpm 0:5:10 --azimuths 4 --no-plot --tracking t.csv --out out", dir),
+  expectOneLineError(whirlTimed("campbell " + yaml + " --rpm 0:5:10 --azimuths 4 --no-plot --tracking t.csv --out out",
+                                dir),
                      "t.csv: " + kTooLarge, "campbell --tracking");
 }
 
@@ -103,31 +105,35 @@ TEST(CliInputFileSize, AerodynamicControllerAndOffshoreFilesAreRefusedFromTheirS
   // InflowWind, ServoDyn and ROSCO's DISCON.IN (the ROSCO deck), HydroDyn, MAP++ and WAMIT (the OC3
   // spar), and a Cp surface (tune --cp-surface) — each refused from its size before it is read.
   const fs::path dir = copyCase("nrel5mw", "size_aero");
-  for (const std::string file : {"aero/AeroDyn.dat", "aero/InflowWind.dat", "5MW_Baseline/NRELOffshrBsline5MW_AeroDyn_blade.dat",
-                                 "5MW_Baseline/Airfoils/Cylinder1.dat", "rosco/ServoDyn.dat", "rosco/DISCON.IN"}) {
+  for (const std::string file :
+       {"aero/AeroDyn.dat", "aero/InflowWind.dat", "5MW_Baseline/NRELOffshrBsline5MW_AeroDyn_blade.dat",
+        "5MW_Baseline/Airfoils/Cylinder1.dat", "rosco/ServoDyn.dat", "rosco/DISCON.IN"}) {
     const fs::path f = dir / file;
     const std::string keep = slurp(f);
     inflate(f);
     const std::string args = "steady Main_ROSCO.fst --wind 10 --out out";
-    expectOneLineError(whirlTimed(args, dir), fs::path(file).filename().string() + ": " + kTooLarge, args + " (" + file + ")");
+    expectOneLineError(whirlTimed(args, dir), fs::path(file).filename().string() + ": " + kTooLarge,
+                       args + " (" + file + ")");
     std::ofstream(f, std::ios::binary | std::ios::trunc) << keep;
   }
   EXPECT_FALSE(fs::exists(dir / "out"));
   const std::string cp = "rosco/Cp_Ct_Cq.NREL5MW.txt";
   inflate(dir / cp);
-  const std::string tune = "tune Main_Aero.fst --cp-surface " + cp +
-                           " --inertia 4e7 --rotor-radius 63 --rated-rotor-speed 1.267 --rated-power 5e6 --pc-omega 0.6 "
-                           "--pc-zeta 0.7 --vs-omega 0.2 --vs-zeta 0.7 --v-min 3 --v-rated 11.4 --v-max 25 --out out";
+  const std::string tune =
+      "tune Main_Aero.fst --cp-surface " + cp +
+      " --inertia 4e7 --rotor-radius 63 --rated-rotor-speed 1.267 --rated-power 5e6 --pc-omega 0.6 "
+      "--pc-zeta 0.7 --vs-omega 0.2 --vs-zeta 0.7 --v-min 3 --v-rated 11.4 --v-max 25 --out out";
   expectOneLineError(whirlTimed(tune, dir), "Cp_Ct_Cq.NREL5MW.txt: " + kTooLarge, "tune --cp-surface");
   const fs::path spar = copyCase("oc3_hywind", "size_offshore");
-  for (const std::string file : {"5MW_Baseline/NRELOffshrBsline5MW_OC3Hywind_HydroDyn.dat",
-                                 "5MW_Baseline/NRELOffshrBsline5MW_OC3Hywind_MAP.dat", "5MW_Baseline/HydroData/spar.1",
-                                 "5MW_Baseline/HydroData/spar.hst"}) {
+  for (const std::string file :
+       {"5MW_Baseline/NRELOffshrBsline5MW_OC3Hywind_HydroDyn.dat", "5MW_Baseline/NRELOffshrBsline5MW_OC3Hywind_MAP.dat",
+        "5MW_Baseline/HydroData/spar.1", "5MW_Baseline/HydroData/spar.hst"}) {
     const fs::path f = spar / file;
     const std::string keep = slurp(f);
     inflate(f);
     const std::string args = "modes Test24.fst --set CompAero=0 --set RdtnMod=0";
-    expectOneLineError(whirlTimed(args, spar), fs::path(file).filename().string() + ": " + kTooLarge, args + " (" + file + ")");
+    expectOneLineError(whirlTimed(args, spar), fs::path(file).filename().string() + ": " + kTooLarge,
+                       args + " (" + file + ")");
     std::ofstream(f, std::ios::binary | std::ios::trunc) << keep;
   }
 }
@@ -144,7 +150,8 @@ TEST(CliInputFileKind, AFifoOrADeviceIsRefusedNotWaitedOn) {
   fs::remove(dir / "NRELOffshrBsline5MW_Onshore_ElastoDyn.dat");
   ASSERT_EQ(::mkfifo((dir / "NRELOffshrBsline5MW_Onshore_ElastoDyn.dat").c_str(), 0600), 0);
   expectOneLineError(whirlTimed("modes Main_Onshore.fst", dir),
-                     "Main_Onshore.fst:33: EDFile: not a regular file (a folder, FIFO or device)", "FIFO ElastoDyn file");
+                     "Main_Onshore.fst:33: EDFile: not a regular file (a folder, FIFO or device)",
+                     "FIFO ElastoDyn file");
   expectOneLineError(whirlTimed("modes /dev/zero", dir), "/dev/zero: is a character device", "/dev/zero as a case");
 }
 

@@ -34,8 +34,10 @@ std::vector<std::vector<std::string>> csvRows(const std::string& text) {
 // (with --max-freq 0.8 only the lines with a point at or below 0.8 Hz are drawn: fewer files, a fast test).
 TEST(CliCampbellFormats, Nrel5mwToolboxTablesAndVtkAgreeWithCampbellCsv) {
   const fs::path out = test::freshDir("campbell_formats");
-  const auto r = test::whirl("campbell cases/nrel5mw/Main_Onshore.fst --rpm 6:6:12 --azimuths 4 --no-plot --max-freq 0.8 "
-                             "--format openfast,vtk --format hawcstab2 --out '" + out.string() + "'");
+  const auto r = test::whirl(
+      "campbell cases/nrel5mw/Main_Onshore.fst --rpm 6:6:12 --azimuths 4 --no-plot --max-freq 0.8 "
+      "--format openfast,vtk --format hawcstab2 --out '" +
+      out.string() + "'");
   ASSERT_EQ(r.code, 0) << r.err;
   // campbell.csv: rpm,wind_speed,mode,freq_hz,damping_ratio; lines in order of first appearance.
   std::vector<std::string> lines;
@@ -49,7 +51,8 @@ TEST(CliCampbellFormats, Nrel5mwToolboxTablesAndVtkAgreeWithCampbellCsv) {
   ASSERT_EQ(id.size(), 2 + lines.size());
   ASSERT_EQ(id[1], (std::vector<std::string>{"Rotor Speed (rpm)", "6", "12"}));
   std::vector<std::vector<std::vector<std::string>>> points;
-  for (const char* p : {"Campbell_Point01.csv", "Campbell_Point02.csv"}) points.push_back(csvRows(test::slurp(out / p)));
+  for (const char* p : {"Campbell_Point01.csv", "Campbell_Point02.csv"})
+    points.push_back(csvRows(test::slurp(out / p)));
   for (std::size_t l = 0; l < lines.size(); ++l)
     for (std::size_t p = 0; p < 2; ++p) {
       const int k = std::stoi(id[2 + l][1 + p]);

@@ -23,8 +23,8 @@ TEST(CliClosedLoop, CampbellWritesClosedAndOpenLoopAndMargins) {
   EXPECT_NE(r.out.find("3 operating points (3 with a stable closed loop)"), std::string::npos) << r.out;
   // What the linear model leaves out is said, naming the file.
   EXPECT_NE(r.err.find("DISCON.IN: linear model: SS_Mode = 1"), std::string::npos) << r.err;
-  for (const char* f : {"campbell.csv", "campbell.dat", "campbell.gp", "open_loop_campbell.csv", "closed_loop_modes.csv",
-                        "margins.csv", "closed_loop.gp"})
+  for (const char* f : {"campbell.csv", "campbell.dat", "campbell.gp", "open_loop_campbell.csv",
+                        "closed_loop_modes.csv", "margins.csv", "closed_loop.gp"})
     EXPECT_TRUE(std::filesystem::exists(dir / f)) << f;
   const std::string modes = slurp(dir / "closed_loop_modes.csv");
   EXPECT_NE(modes.find(",closed,speed filter,"), std::string::npos);
@@ -35,7 +35,8 @@ TEST(CliClosedLoop, CampbellWritesClosedAndOpenLoopAndMargins) {
 
 TEST(CliClosedLoop, ExportNamesTheControllerStatesAndRefusesMixedRegions) {
   const auto dir = freshDir("cl_export");
-  auto r = whirl("export " + kDeck + " --wind 14 --azimuths 6 --closed-loop --format json --out '" + dir.string() + "'");
+  auto r = whirl("export " + kDeck + " --wind 14 --azimuths 6 --closed-loop --format json --out '" + dir.string() +
+                 "'");
   ASSERT_EQ(r.code, 0) << r.err;
   const std::string json = slurp(dir / "statespace.json");
   EXPECT_NE(json.find("controller: pitch PI integral"), std::string::npos);
@@ -43,7 +44,8 @@ TEST(CliClosedLoop, ExportNamesTheControllerStatesAndRefusesMixedRegions) {
   const auto bad = freshDir("cl_export_mixed");
   r = whirl("export " + kDeck + " --wind 8:6:14 --azimuths 6 --closed-loop --format mat --out '" + bad.string() + "'");
   EXPECT_NE(r.code, 0);
-  EXPECT_NE(r.err.find("the controller's states differ between 8 m/s (region 2) and 14 m/s (region 3)"), std::string::npos)
+  EXPECT_NE(r.err.find("the controller's states differ between 8 m/s (region 2) and 14 m/s (region 3)"),
+            std::string::npos)
       << r.err;
   EXPECT_TRUE(std::filesystem::is_empty(bad));
   r = whirl("export " + kDeck + " --wind 14 --closed-loop --format lin --out '" + bad.string() + "'");
@@ -52,8 +54,10 @@ TEST(CliClosedLoop, ExportNamesTheControllerStatesAndRefusesMixedRegions) {
 
 TEST(CliClosedLoop, BodeWindToGeneratorSpeedHasNoStaticGain) {
   const auto dir = freshDir("cl_bode");
-  const auto r = whirl("bode " + kDeck + " --wind 14 --azimuths 6 --closed-loop --inputs 'wind speed' --outputs "
-                       "'GenSpeed,controller: collective pitch' --no-plot --out '" + dir.string() + "'");
+  const auto r = whirl("bode " + kDeck +
+                       " --wind 14 --azimuths 6 --closed-loop --inputs 'wind speed' --outputs "
+                       "'GenSpeed,controller: collective pitch' --no-plot --out '" +
+                       dir.string() + "'");
   ASSERT_EQ(r.code, 0) << r.err;
   // The pitch PI's integrator removes every steady speed error: |G(0)| of wind → GenSpeed is round-off
   // against the open loop's 16.8 (rad/s)/(m/s) at 8 m/s (docs/user/commands/bode.md).
@@ -66,13 +70,16 @@ TEST(CliClosedLoop, BodeWindToGeneratorSpeedHasNoStaticGain) {
 }
 
 TEST(CliClosedLoop, NeedsTheWindAndRoscosController) {
-  auto r = whirl("campbell " + kDeck + " --rpm 5:1:6 --closed-loop --no-plot --out '" + freshDir("cl_e1").string() + "'");
+  auto r = whirl("campbell " + kDeck + " --rpm 5:1:6 --closed-loop --no-plot --out '" + freshDir("cl_e1").string() +
+                 "'");
   EXPECT_NE(r.code, 0);
   EXPECT_NE(r.err.find("--closed-loop needs --wind"), std::string::npos) << r.err;
-  r = whirl("campbell cases/nrel5mw/Main_Aero.fst --wind 12 --closed-loop --no-plot --out '" + freshDir("cl_e2").string() + "'");
+  r = whirl("campbell cases/nrel5mw/Main_Aero.fst --wind 12 --closed-loop --no-plot --out '" +
+            freshDir("cl_e2").string() + "'");
   EXPECT_NE(r.code, 0);
   EXPECT_NE(r.err.find("--closed-loop needs ROSCO's controller"), std::string::npos) << r.err;
-  r = whirl("campbell " + kDeck + " --wind 12 --without-speed-filter --no-plot --out '" + freshDir("cl_e3").string() + "'");
+  r = whirl("campbell " + kDeck + " --wind 12 --without-speed-filter --no-plot --out '" + freshDir("cl_e3").string() +
+            "'");
   EXPECT_NE(r.err.find("--without-speed-filter goes with --closed-loop"), std::string::npos) << r.err;
 }
 
@@ -84,8 +91,10 @@ namespace {
 
 TEST(CliClosedLoop, SimulateWithRoscoReturnsToRatedSpeedAfterAWindStep) {
   const auto dir = freshDir("cl_simulate");
-  const auto r = whirl("simulate " + kDeck + " --wind 14 --closed-loop --tmax 15 --input 'wind speed=step(1,0.2)' "
-                       "--no-plot --out '" + dir.string() + "'");
+  const auto r = whirl("simulate " + kDeck +
+                       " --wind 14 --closed-loop --tmax 15 --input 'wind speed=step(1,0.2)' "
+                       "--no-plot --out '" +
+                       dir.string() + "'");
   ASSERT_EQ(r.code, 0) << r.err;
   // The last recorded generator speed within 0.1 rad/s of PC_RefSpd (122.90967 rad/s): the pitch PI's
   // integrator has removed the error the step made (peak +0.58 rad/s at 3 s).
@@ -135,14 +144,16 @@ TEST(CliVerifyClosedLoopSlow, WindStepTableAndFiles) {
   const auto no_wind = whirl("verify " + kDeck + " --closed-loop --out '" + (dir / "x").string() + "'");
   EXPECT_NE(no_wind.code, 0);
   EXPECT_NE(no_wind.err.find("--closed-loop needs --wind"), std::string::npos) << no_wind.err;
-  const auto bad_output = whirl("verify " + kDeck + " --closed-loop --wind 14 --output Nope --out '" + (dir / "y").string() + "'");
+  const auto bad_output = whirl("verify " + kDeck + " --closed-loop --wind 14 --output Nope --out '" +
+                                (dir / "y").string() + "'");
   EXPECT_NE(bad_output.code, 0);
   EXPECT_NE(bad_output.err.find("Nope: the model has no output of this name"), std::string::npos) << bad_output.err;
   for (const auto& [args, message] : std::vector<std::pair<std::string, std::string>>{
            {"--wind-step 0", "--wind-step: must be non-zero"},
            {"--step-time 20", "--step-time: the step must come before the end (--tmax 12 s)"},
            {"--output GenSpeed --output GenSpeed", "--output: GenSpeed given twice"}}) {
-    const auto bad = whirl("verify " + kDeck + " --closed-loop --wind 14 " + args + " --out '" + (dir / "z").string() + "'");
+    const auto bad = whirl("verify " + kDeck + " --closed-loop --wind 14 " + args + " --out '" + (dir / "z").string() +
+                           "'");
     EXPECT_NE(bad.code, 0) << args;
     EXPECT_NE(bad.err.find(message), std::string::npos) << bad.err;
   }
@@ -162,8 +173,10 @@ TEST(CliClosedLoopSlow, FloatingDeckMarksItsUnstableRootInThePlot) {
   // docs/user/closed-loop.md). The red marker reads an inline data block: the CSV it read before could not
   // be parsed with the .dat files' separator, and Gnuplot warned "no valid points" and drew no marker.
   const auto dir = freshDir("cl_oc3");
-  const auto r = whirl("campbell cases/oc3_hywind/Main_ROSCO.fst --set RdtnMod=0 --wind 13:1:14 --azimuths 12 "
-                       "--closed-loop --out '" + dir.string() + "'");
+  const auto r = whirl(
+      "campbell cases/oc3_hywind/Main_ROSCO.fst --set RdtnMod=0 --wind 13:1:14 --azimuths 12 "
+      "--closed-loop --out '" +
+      dir.string() + "'");
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("2 operating points (1 with a stable closed loop)"), std::string::npos) << r.out;
   EXPECT_NE(r.err.find("unstable at 13 m/s"), std::string::npos) << r.err;
@@ -173,12 +186,16 @@ TEST(CliClosedLoopSlow, FloatingDeckMarksItsUnstableRootInThePlot) {
   // The floating feedback's filter states are named.
   EXPECT_NE(slurp(dir / "closed_loop_modes.csv").find("floating feedback"), std::string::npos);
   // --set reaches DISCON.IN's keys: without the feedback 14 m/s is unstable too (ζ −4.6 %).
-  const auto off = whirl("campbell cases/oc3_hywind/Main_ROSCO.fst --set RdtnMod=0 --set Fl_Mode=0 --wind 13:1:14 "
-                         "--azimuths 12 --closed-loop --no-plot --out '" + (dir / "off").string() + "'");
+  const auto off = whirl(
+      "campbell cases/oc3_hywind/Main_ROSCO.fst --set RdtnMod=0 --set Fl_Mode=0 --wind 13:1:14 "
+      "--azimuths 12 --closed-loop --no-plot --out '" +
+      (dir / "off").string() + "'");
   ASSERT_EQ(off.code, 0) << off.err;
   EXPECT_NE(off.out.find("2 operating points (0 with a stable closed loop)"), std::string::npos) << off.out;
-  const auto bad = whirl("campbell cases/oc3_hywind/Main_ROSCO.fst --set RdtnMod=0 --set Fl_Mode=7 --wind 13:1:14 "
-                         "--closed-loop --no-plot --out '" + (dir / "bad").string() + "'");
+  const auto bad = whirl(
+      "campbell cases/oc3_hywind/Main_ROSCO.fst --set RdtnMod=0 --set Fl_Mode=7 --wind 13:1:14 "
+      "--closed-loop --no-plot --out '" +
+      (dir / "bad").string() + "'");
   EXPECT_NE(bad.code, 0);
   EXPECT_NE(bad.err.find("rosco/DISCON.IN:24: Fl_Mode: must be 0 to 2 (is 7)"), std::string::npos) << bad.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "bad"));
@@ -186,4 +203,3 @@ TEST(CliClosedLoopSlow, FloatingDeckMarksItsUnstableRootInThePlot) {
 
 }  // namespace
 }  // namespace whirl::test
-

@@ -69,7 +69,7 @@ const Deck kDecks[] = {
     {"certtest/Test23.fst", 12.1, kConvolution, kConvolution},  // MIT/NREL TLP
     {"certtest/Test24.fst", 12.1, kConvolution, kConvolution},  // OC3 Hywind
     {"certtest/Test25.fst", 12.1, kConvolution, kConvolution},  // OC4 DeepCwind semi
-    {"certtest/Test26.fst", 12.1, nullptr, nullptr},  // BeamDyn blades
+    {"certtest/Test26.fst", 12.1, nullptr, nullptr},            // BeamDyn blades
     {"toolbox-nrel5mw/5MW_Land_Lin_BladeOnly/Main.fst", 12.1, nullptr, nullptr},
     {"toolbox-nrel5mw/5MW_Land_Lin_Rotating/Main.fst", 12.1, nullptr, nullptr},
     {"toolbox-nrel5mw/5MW_Land_Lin_Templates/Main.fst", 12.1, nullptr, nullptr},
@@ -98,7 +98,8 @@ void check(const Deck& d, const std::string& extra, const char* refusal) {
   std::ostringstream rpm;
   rpm << (turning_only ? d.rated_rpm / 2 : 0.0) << ":" << d.rated_rpm / 2 << ":" << d.rated_rpm;
   const auto dir = test::freshDir("every_deck");
-  const auto campbell = test::whirl("campbell " + fst + " --rpm " + rpm.str() + " --no-plot --out " + dir.string() + extra);
+  const auto campbell = test::whirl("campbell " + fst + " --rpm " + rpm.str() + " --no-plot --out " + dir.string() +
+                                    extra);
   // A listed refusal may also come from a turning rotor only.
   if (campbell.code != 0 && refusal && campbell.err.find(refusal) != std::string::npos) {
     EXPECT_EQ(campbell.code, 1) << "crash? " << campbell.err;

@@ -87,8 +87,10 @@ TEST(CliExport, LinFilesReadBackIntoTheSameModes) {
 
 TEST(CliExport, JsonWithSelectedInputsOutputsAndNoAzimuth) {
   const auto dir = test::freshDir("export_json");
-  const auto r = test::whirl("export " + kFst + " --format json --azimuths 3 --drop-azimuth --inputs "
-                             "'generator torque,collective pitch' --outputs GenSpeed,YawBrTAxp --out " + dir.string());
+  const auto r = test::whirl("export " + kFst +
+                             " --format json --azimuths 3 --drop-azimuth --inputs "
+                             "'generator torque,collective pitch' --outputs GenSpeed,YawBrTAxp --out " +
+                             dir.string());
   ASSERT_EQ(r.code, 0) << r.err;
   const auto j = nlohmann::json::parse(test::slurp(dir / "statespace.json"));
   const auto& m = j["operating_points"][0]["model"];
@@ -100,8 +102,10 @@ TEST(CliExport, JsonWithSelectedInputsOutputsAndNoAzimuth) {
 
 TEST(CliExport, ScheduleGivesOneModelPerOperatingPoint) {
   const auto dir = test::freshDir("export_schedule");
-  const auto r = test::whirl("export " + kFst + " --schedule cases/nrel5mw/NREL5MW_Oper.csv --azimuths 3 --format lin "
-                             "--out " + dir.string());
+  const auto r = test::whirl("export " + kFst +
+                             " --schedule cases/nrel5mw/NREL5MW_Oper.csv --azimuths 3 --format lin "
+                             "--out " +
+                             dir.string());
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_THAT(r.out, HasSubstr("26 operating points"));
   EXPECT_TRUE(fs::exists(dir / "statespace_26.3.lin"));
@@ -128,8 +132,10 @@ TEST(CliExport, BadInputFailsWithOneLineAndWritesNothing) {
                      "defines no outputs", dir);
   expectOneLineError(test::whirl("export " + kFst + " --format lin --inputs 'blade 1 pitch' --out " + dir.string()),
                      "select the rotating-frame inputs/outputs of every blade", dir);
-  expectOneLineError(test::whirl("export " + kFst + " --format mat --rpm 9 --schedule cases/nrel5mw/NREL5MW_Oper.csv "
-                                 "--out " + dir.string()),
+  expectOneLineError(test::whirl("export " + kFst +
+                                 " --format mat --rpm 9 --schedule cases/nrel5mw/NREL5MW_Oper.csv "
+                                 "--out " +
+                                 dir.string()),
                      "at most one of --rpm, --schedule and --wind", dir);
   const auto file = dir / "a_file";
   std::ofstream(file) << "x";

@@ -51,7 +51,8 @@ TEST(CliInputBounds, RpmRangeWithTooManyPointsIsRefusedBeforeAnyAllocation) {
 TEST(CliInputBounds, LinHeaderClaimingHugeCountsIsRefusedWithFileAndLine) {
   const auto dir = test::freshDir("lin_huge");
   const std::string text = test::slurp(fs::path(WHIRL_SOURCE_DIR) / kLin);
-  write(dir / "states.lin", replaced(text, "Number of continuous states: ", "Number of continuous states: 2000000000 "));
+  write(dir / "states.lin",
+        replaced(text, "Number of continuous states: ", "Number of continuous states: 2000000000 "));
   expectError("lin states.lin", "states.lin:", dir.string());
   expectError("lin states.lin", "Number of continuous states: 2000000000 is above the limit of 100000", dir.string());
 }

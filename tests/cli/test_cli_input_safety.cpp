@@ -63,10 +63,10 @@ TEST(CliHostileNames, ErrorMessagesStayOneLineWhateverTheyQuote) {
 void expectEveryCommandRefuses(const fs::path& dir, const std::string& case_args, const std::string& what) {
   write(dir / "sets.csv", "gravity\n9.81\n");
   const std::string out = " --out out";
-  for (const std::string& cmd :
-       {"modes " + case_args, "linearize " + case_args + out, "campbell " + case_args + " --rpm 0:5:10 --azimuths 4" + out,
-        "export " + case_args + " --format json --azimuths 4" + out,
-        "study " + case_args + " --params sets.csv --rpm 0:5:10 --azimuths 4" + out}) {
+  for (const std::string& cmd : {"modes " + case_args, "linearize " + case_args + out,
+                                 "campbell " + case_args + " --rpm 0:5:10 --azimuths 4" + out,
+                                 "export " + case_args + " --format json --azimuths 4" + out,
+                                 "study " + case_args + " --params sets.csv --rpm 0:5:10 --azimuths 4" + out}) {
     const auto r = test::whirl(cmd, dir.string());
     expectOneLineError(r, what, cmd);
     EXPECT_TRUE(!fs::exists(dir / "out") || fs::is_empty(dir / "out")) << cmd << ": wrote output";
@@ -74,12 +74,13 @@ void expectEveryCommandRefuses(const fs::path& dir, const std::string& case_args
   }
 }
 
-const std::string kNoDof = "the model has no active degree of freedom (all frozen or none defined): nothing to linearize";
+const std::string kNoDof =
+    "the model has no active degree of freedom (all frozen or none defined): nothing to linearize";
 
 TEST(CliNoActiveDof, YamlCaseWithEveryDofFrozen) {
   const auto dir = test::freshDir("all_frozen");
-  write(dir / "frozen.yaml",
-        landbasedWith("  azimuth: {rotating: true}", "  azimuth: {rotating: true, frozen: true}\n  tower FA 1: {frozen: true}"));
+  write(dir / "frozen.yaml", landbasedWith("  azimuth: {rotating: true}",
+                                           "  azimuth: {rotating: true, frozen: true}\n  tower FA 1: {frozen: true}"));
   expectEveryCommandRefuses(dir, "frozen.yaml", "frozen.yaml: " + kNoDof);
 }
 

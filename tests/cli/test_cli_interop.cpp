@@ -39,7 +39,7 @@ TEST(CliInterop, ErrorsNameTheOperatingPoint) {
   const auto dir = test::freshDir("interop_errors");
   const std::string bad = "tests/mpi/export_schedule_bad.csv";
   for (const std::string& cmd : {"export " + kFst + " --format mat --azimuths 4 --schedule " + bad,
-                                "campbell " + kFst + " --azimuths 4 --no-plot --schedule " + bad}) {
+                                 "campbell " + kFst + " --azimuths 4 --no-plot --schedule " + bad}) {
     const auto r = test::whirl(cmd + " --out " + dir.string());
     EXPECT_NE(r.code, 0) << cmd;
     EXPECT_THAT(r.err, HasSubstr("operating point 2 (1e+200 rpm, pitch 0 deg, azimuth 0 deg): ")) << cmd;
@@ -52,8 +52,10 @@ TEST(CliInterop, ErrorsNameTheOperatingPoint) {
 // fewer than 3 azimuths of a turning rotor warned about.
 TEST(CliInterop, LinGroupsByRootNameAndHonoursOutAndFormat) {
   const auto dir = test::freshDir("interop_lin");
-  const auto ex = test::whirl("export " + kFst + " --schedule tests/mpi/export_schedule.csv --azimuths 3 --format lin "
-                              "--out " + (dir / "lin").string());
+  const auto ex = test::whirl("export " + kFst +
+                              " --schedule tests/mpi/export_schedule.csv --azimuths 3 --format lin "
+                              "--out " +
+                              (dir / "lin").string());
   ASSERT_EQ(ex.code, 0) << ex.err;
   std::string files;
   int n = 0;

@@ -35,11 +35,11 @@ std::map<std::string, int> nameCounts(const nlohmann::json& j) {
 // The 14 ElastoDyn DOFs of these standstill turbines (tower 2 FA + 2 SS, drivetrain, 3 blades × flap
 // 1, edge 1, flap 2), one mode each: each name once. Before issue 16, 9 of these 14 modes were misnamed
 // (tower FA 1 called flap 1 collective, drivetrain flap 1 collective, flap 1 BW twice, …).
-const std::map<std::string, int> kStandstillNames = {
-    {"tower FA 1", 1},        {"tower SS 1", 1},   {"tower FA 2", 1},        {"tower SS 2", 1},
-    {"drivetrain", 1},        {"flap 1 collective", 1}, {"flap 1 cos", 1},   {"flap 1 sin", 1},
-    {"edge 1 collective", 1}, {"edge 1 cos", 1},   {"edge 1 sin", 1},        {"flap 2 collective", 1},
-    {"flap 2 cos", 1},        {"flap 2 sin", 1}};
+const std::map<std::string, int> kStandstillNames = {{"tower FA 1", 1}, {"tower SS 1", 1}, {"tower FA 2", 1},
+                                                     {"tower SS 2", 1}, {"drivetrain", 1}, {"flap 1 collective", 1},
+                                                     {"flap 1 cos", 1}, {"flap 1 sin", 1}, {"edge 1 collective", 1},
+                                                     {"edge 1 cos", 1}, {"edge 1 sin", 1}, {"flap 2 collective", 1},
+                                                     {"flap 2 cos", 1}, {"flap 2 sin", 1}};
 
 TEST(CliLinDecks, StandstillElastoDynOneNamePerDof) {
   // Linearized at Ω = 2e-4 rad/s: named as parked (cos / sin, not a whirl direction).
@@ -127,8 +127,9 @@ TEST(CliLinDecks, OwnLinFilesNamedAsWhirlModesAt9Rpm) { expectSameNames("9", 12)
 TEST(CliLinDecks, OpenFastLinFilesNamedAsWhirlModesOnTheirDeck) {
   const std::string d = "tests/data/openfast-lin/rotating-9rpm/";
   const auto lin = linJson(d + "Main.1.lin " + d + "Main.12.lin " + d + "Main.24.lin");
-  const auto own = test::whirl("modes tests/data/openfast/decks/toolbox-nrel5mw/5MW_Land_Lin_Rotating/Main.fst --rpm 9 "
-                               "--format json");
+  const auto own = test::whirl(
+      "modes tests/data/openfast/decks/toolbox-nrel5mw/5MW_Land_Lin_Rotating/Main.fst --rpm 9 "
+      "--format json");
   ASSERT_EQ(own.code, 0) << own.err;
   const auto jo = nlohmann::json::parse(own.out);
   EXPECT_EQ(nameCounts(lin), nameCounts(jo));

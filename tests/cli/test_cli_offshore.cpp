@@ -24,10 +24,11 @@ const std::string kDeck = "cases/oc3_hywind/Test24.fst";
 int lines(const std::string& s) { return static_cast<int>(std::count(s.begin(), s.end(), '\n')); }
 
 TEST(CliOffshore, Oc3HywindPlatformModes) {
-  const auto r = test::whirl("modes " + kDeck + " --set CompAero=0 --set RdtnMod=0 --set RotSpeed=0 --set GenDOF=False");
+  const auto r = test::whirl("modes " + kDeck +
+                             " --set CompAero=0 --set RdtnMod=0 --set RotSpeed=0 --set GenDOF=False");
   ASSERT_EQ(r.code, 0) << r.err;
-  for (const char* name : {"platform surge", "platform sway", "platform heave", "platform roll", "platform pitch",
-                           "platform yaw"})
+  for (const char* name :
+       {"platform surge", "platform sway", "platform heave", "platform roll", "platform pitch", "platform yaw"})
     EXPECT_THAT(r.out, HasSubstr(name));
   EXPECT_THAT(r.err, HasSubstr("HydroDyn.dat:9: WaveMod: incident waves ignored"));
   EXPECT_EQ(lines(r.err), 1) << r.err;

@@ -2,9 +2,9 @@
 // cannot be written half-way through leaves the previous results untouched, and SIGKILL at any
 // instant of a long `whirl export` leaves the folder with the complete previous set or the complete
 // new one, never a mixture; the next run removes what the killed ones left behind.
+#include <fcntl.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
-#include <fcntl.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -129,8 +129,8 @@ TEST(CliOutputSets, StaleStagingFoldersOfDeadRunsAreRemovedAndNothingElse) {
   std::ofstream(dir / "data.tmp") << "not whirl's naming";
   const auto r = test::whirl("linearize cases/landbased_2dof/landbased_2dof.yaml --out " + dir.string());
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_THAT(whirlTemporaries(dir), ::testing::UnorderedElementsAre("campbell_modes.json.tmp" + dead,
-                                                                     "data.tmp" + dead, "data.tmp"));
+  EXPECT_THAT(whirlTemporaries(dir),
+              ::testing::UnorderedElementsAre("campbell_modes.json.tmp" + dead, "data.tmp" + dead, "data.tmp"));
   EXPECT_THAT(whirlTemporaries(dir.parent_path()), ::testing::IsEmpty());
 }
 
@@ -228,9 +228,11 @@ TEST(CliOutputSetsSlow, KilledExportLeavesTheOldSetOrTheNewOne) {
   const auto base = test::freshDir("sets_kill");
   const fs::path dir = base / "out";
   auto args = [&](int azimuths) {
-    return std::vector<std::string>{"export",      kFst,  "--schedule", "cases/nrel5mw/NREL5MW_Oper.csv",
-                                    "--azimuths",  std::to_string(azimuths), "--format", "lin",
-                                    "--out",       dir.string()};
+    return std::vector<std::string>{"export",     kFst,
+                                    "--schedule", "cases/nrel5mw/NREL5MW_Oper.csv",
+                                    "--azimuths", std::to_string(azimuths),
+                                    "--format",   "lin",
+                                    "--out",      dir.string()};
   };
   fs::create_directories(dir / "other" / "deep");
   std::ofstream(dir / "steady.csv") << "wind,rpm\n";

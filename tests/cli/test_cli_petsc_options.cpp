@@ -54,8 +54,8 @@ TEST(CliPetscOptions, PetscOptionsVariableIsIgnored) {
   const fs::path dir = freshDir("petsc_env");
   const fs::path prog = plantDebugger(dir);
   const whirl::test::Run r = whirlWithEnv("PETSC_OPTIONS='-eps_type arnoldi -start_in_debugger " + prog.string() +
-                                 "' PETSC_OPTIONS_YAML='-eps_type: arnoldi'",
-                             "modes '" + kCase + "' --solver sparse --nmodes 2", dir);
+                                              "' PETSC_OPTIONS_YAML='-eps_type: arnoldi'",
+                                          "modes '" + kCase + "' --solver sparse --nmodes 2", dir);
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_FALSE(fs::exists(dir / "pwned")) << "PETSc ran the program named in PETSC_OPTIONS";
   EXPECT_NE(r.err.find("EPS krylovschur"), std::string::npos) << "PETSC_OPTIONS was read:\n" << r.err;
@@ -64,11 +64,14 @@ TEST(CliPetscOptions, PetscOptionsVariableIsIgnored) {
 TEST(CliPetscOptions, WhirlPetscOptionsVariableIsRead) {
   // The documented way to give PETSc options through the environment; the command line wins.
   const fs::path dir = freshDir("whirl_petsc_env");
-  const whirl::test::Run a = whirlWithEnv("WHIRL_PETSC_OPTIONS='-eps_type arnoldi'", "modes '" + kCase + "' --solver sparse --nmodes 2", dir);
+  const whirl::test::Run a = whirlWithEnv("WHIRL_PETSC_OPTIONS='-eps_type arnoldi'",
+                                          "modes '" + kCase + "' --solver sparse --nmodes 2", dir);
   ASSERT_EQ(a.code, 0) << a.err;
   EXPECT_NE(a.err.find("EPS arnoldi"), std::string::npos) << a.err;
   const whirl::test::Run b = whirlWithEnv("WHIRL_PETSC_OPTIONS='-eps_type arnoldi'",
-                             "modes '" + kCase + "' --solver sparse --nmodes 2 --petsc '-eps_type subspace'", dir);
+                                          "modes '" + kCase +
+                                              "' --solver sparse --nmodes 2 --petsc '-eps_type subspace'",
+                                          dir);
   ASSERT_EQ(b.code, 0) << b.err;
   EXPECT_NE(b.err.find("EPS subspace"), std::string::npos) << b.err;
 }

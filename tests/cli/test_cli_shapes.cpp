@@ -27,7 +27,8 @@ TEST(CliShapes, TowerTopMassCaseAsJson) {
     const auto& s = doc["shapes"][j - 1];
     EXPECT_EQ(s["shape"], "tower FA " + std::to_string(j));
     EXPECT_EQ(s["direction"], "z");
-    const double b = clampedTopMassBeta(j, 0.5), f = (b / 100) * (b / 100) * std::sqrt(2e12 / 9000) / (2 * std::numbers::pi);
+    const double b = clampedTopMassBeta(j, 0.5),
+                 f = (b / 100) * (b / 100) * std::sqrt(2e12 / 9000) / (2 * std::numbers::pi);
     EXPECT_NEAR(s["freq_hz"].get<double>(), f, 1e-6 * f) << j;  // 100 cubic elements: ~1e-9
     EXPECT_NEAR(s["mac"].get<double>(), 1.0, 1e-12);
     double sum = 0;
@@ -40,7 +41,8 @@ TEST(CliShapes, NrelFiveMegawattTableAndFiles) {
   const fs::path out = test::freshDir("shapes_nrel");
   const auto r = test::whirl("shapes cases/nrel5mw/Main_Onshore.fst --set RotSpeed=0 --out '" + out.string() + "'");
   ASSERT_EQ(r.code, 0) << r.err;
-  for (const char* s : {"tower FA 1", "tower SS 2", "blade 1", "flap 1", "edge 1", "flap 2"}) EXPECT_THAT(r.out, HasSubstr(s));
+  for (const char* s : {"tower FA 1", "tower SS 2", "blade 1", "flap 1", "edge 1", "flap 2"})
+    EXPECT_THAT(r.out, HasSubstr(s));
   EXPECT_TRUE(fs::exists(out / "shapes.csv"));
   EXPECT_TRUE(fs::exists(out / "shapes.json"));
   EXPECT_TRUE(fs::exists(out / "shape_tower_tower_FA_1.csv"));

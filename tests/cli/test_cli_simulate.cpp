@@ -19,7 +19,8 @@ TEST(CliSimulate, WritesTimeseriesAndScript) {
   const auto dir = test::freshDir("simulate");
   const auto r = test::whirl(std::string("simulate ") + kCase +
                              " --tmax 0.5 --dt-out 0.1 --rpm 5 --init 'tower FA 1=0.5' --init 'tower SS 1 rate=0.1' "
-                             "--input 'thrust=step(0.25,1e5)' --no-plot --out '" + dir.string() + "'");
+                             "--input 'thrust=step(0.25,1e5)' --no-plot --out '" +
+                             dir.string() + "'");
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_THAT(r.out, HasSubstr("simulated 0.5 s in"));
   const std::string csv = test::slurp(dir / "timeseries.csv");
@@ -34,8 +35,10 @@ TEST(CliSimulate, WritesTimeseriesAndScript) {
 
 TEST(CliSimulate, FreeRotorIntegratesTheAzimuth) {
   const auto dir = test::freshDir("simulate_free");
-  const auto r = test::whirl(std::string("simulate ") + kCase + " --tmax 0.2 --dt-out 0.1 --rpm 5 --free-rotor "
-                             "--input 'aero torque=ramp(0,0.1,1e6)' --no-plot --out '" + dir.string() + "'");
+  const auto r = test::whirl(std::string("simulate ") + kCase +
+                             " --tmax 0.2 --dt-out 0.1 --rpm 5 --free-rotor "
+                             "--input 'aero torque=ramp(0,0.1,1e6)' --no-plot --out '" +
+                             dir.string() + "'");
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_THAT(r.out, HasSubstr("6 states"));
 }
@@ -78,10 +81,12 @@ TEST(CliSimulate, FailingIntegrationNamesTheTime) {
 
 TEST(CliSimulate, DrivenSpinUp) {
   const auto dir = test::freshDir("simulate_kane");
-  const auto r = test::whirl("simulate cases/kane_beam/kane_beam.yaml --tmax 15 --dt-out 5 --drive 'theta=spinup(15,6)' "
-                             "--no-plot --out '" + dir.string() + "'");
+  const auto r = test::whirl(
+      "simulate cases/kane_beam/kane_beam.yaml --tmax 15 --dt-out 5 --drive 'theta=spinup(15,6)' "
+      "--no-plot --out '" +
+      dir.string() + "'");
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_THAT(r.out, HasSubstr("6 states"));  // 3 shapes; the hub is driven
+  EXPECT_THAT(r.out, HasSubstr("6 states"));                                  // 3 shapes; the hub is driven
   EXPECT_THAT(test::slurp(dir / "timeseries.csv"), HasSubstr("\n15,45,6,"));  // θ(15) = 45 rad, θ̇ = 6 rad/s
 }
 
@@ -90,8 +95,10 @@ TEST(CliSimulate, DivergingMotionIsAnErrorUnlessAllowed) {
   // by default an error naming the first instant outside the range of validity, nothing written
   // (issue 48, item 6); with --allow-invalid-point written, with that line as a warning.
   const auto dir = test::freshDir("simulate_diverge");
-  const std::string args = "simulate cases/kane_beam/kane_beam.yaml --set bodies.beam.axial_shortening=false "
-                           "--tmax 20 --dt-out 0.5 --drive 'theta=spinup(15,6)' --no-plot --out '" + dir.string() + "'";
+  const std::string args =
+      "simulate cases/kane_beam/kane_beam.yaml --set bodies.beam.axial_shortening=false "
+      "--tmax 20 --dt-out 0.5 --drive 'theta=spinup(15,6)' --no-plot --out '" +
+      dir.string() + "'";
   const auto refused = test::whirl(args);
   EXPECT_EQ(refused.code, 1) << refused.err;
   EXPECT_THAT(refused.err, HasSubstr("whirl: error: cases/kane_beam/kane_beam.yaml: t = "));

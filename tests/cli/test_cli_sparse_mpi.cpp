@@ -78,17 +78,17 @@ TEST(CliStudy, SetsTimesPointsInOneTable) {
     f << "gravity,TwrFADmp(1)\n0,1\n9.80665,2\n";
   }
   const std::string common = " --rpm 6:3:12 --azimuths 8 ";
-  const test::Run st = whirl("study cases/nrel5mw/Main_Onshore.fst --params '" + (dir / "sets.csv").string() + "'" + common +
-                       "--out '" + (dir / "study").string() + "'");
+  const test::Run st = whirl("study cases/nrel5mw/Main_Onshore.fst --params '" + (dir / "sets.csv").string() + "'" +
+                             common + "--out '" + (dir / "study").string() + "'");
   ASSERT_EQ(st.code, 0) << st.err;
-  const test::Run c2 = whirl("campbell cases/nrel5mw/Main_Onshore.fst --set gravity=9.80665 --set 'TwrFADmp(1)=2'" + common +
-                       "--no-plot --out '" + (dir / "two").string() + "'");
+  const test::Run c2 = whirl("campbell cases/nrel5mw/Main_Onshore.fst --set gravity=9.80665 --set 'TwrFADmp(1)=2'" +
+                             common + "--no-plot --out '" + (dir / "two").string() + "'");
   ASSERT_EQ(c2.code, 0) << c2.err;
   const auto study = csvRows(slurp(dir / "study" / "study.csv"));
   const auto camp = csvRows(slurp(dir / "two" / "campbell.csv"));
   ASSERT_FALSE(study.empty());
-  EXPECT_EQ(study[0], (std::vector<std::string>{"set", "gravity", "TwrFADmp(1)", "rpm", "wind_speed", "mode",
-                                                "freq_hz", "damping_ratio"}));
+  EXPECT_EQ(study[0], (std::vector<std::string>{"set", "gravity", "TwrFADmp(1)", "rpm", "wind_speed", "mode", "freq_hz",
+                                                "damping_ratio"}));
   std::vector<std::vector<std::string>> set2;
   size_t set1 = 0;
   for (size_t k = 1; k < study.size(); ++k) {
@@ -109,7 +109,7 @@ TEST(CliStudy, BadParameterKeyNamesTheRow) {
     f << "gravity,NoSuchKey\n9.8,1\n";
   }
   const test::Run r = whirl("study cases/nrel5mw/Main_Onshore.fst --params '" + (dir / "sets.csv").string() +
-                      "' --rpm 6:3:9 --azimuths 4 --out '" + (dir / "o").string() + "'");
+                            "' --rpm 6:3:9 --azimuths 4 --out '" + (dir / "o").string() + "'");
   EXPECT_EQ(r.code, 1);
   EXPECT_NE(r.err.find("sets.csv:2"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("NoSuchKey"), std::string::npos) << r.err;

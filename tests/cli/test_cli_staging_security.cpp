@@ -80,9 +80,10 @@ TEST(CliStagingSecurity, StagingFoldersAreUnguessableAndPrivate) {
   std::ofstream(gp) << "#!/bin/sh\nstat -c '%a %u %n' \"$PWD\" > '" << (dir / "seen.txt").string() << "'\nexit 1\n";
   ::chmod(gp.c_str(), 0755);
   const std::string cmd = "cd '" + std::string(WHIRL_SOURCE_DIR) + "' && PATH='" + (dir / "bin").string() +
-                          ":'\"$PATH\" '" + WHIRL_BINARY + "' campbell cases/landbased_2dof/landbased_2dof.yaml "
-                          "--rpm 0:5:10 --azimuths 4 --out '" + (dir / "out").string() + "' 2> '" +
-                          (dir / "err.txt").string() + "'";
+                          ":'\"$PATH\" '" + WHIRL_BINARY +
+                          "' campbell cases/landbased_2dof/landbased_2dof.yaml "
+                          "--rpm 0:5:10 --azimuths 4 --out '" +
+                          (dir / "out").string() + "' 2> '" + (dir / "err.txt").string() + "'";
   whirl::test::Run r;
   const int status = std::system(cmd.c_str());
   r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

@@ -46,9 +46,10 @@ TEST(CliTune, RoscoDeckWithItsOwnRatedPointAndTheFloatingFeedbackGain) {
   // the inertia is the model's: ROSCO's WE_Jtot for this turbine is 43702538.057 kg m² (ElastoDyn's
   // rotor inertia + GenIner·97², tests/data/rosco/DISCON.IN), whirl's mass matrix gives it to 1e-8.
   const auto dir = freshDir("tune_fl");
-  const auto r = whirl("tune cases/nrel5mw/Main_ROSCO.fst --pc-omega 0.6 --pc-zeta 0.7 --vs-omega 0.15 --vs-zeta 0.7 "
-                       "--v-min 3 --v-rated 11.4 --v-max 25 --fl-mode 1 --discon " + kRosco + "DISCON.IN --out '" +
-                       dir.string() + "'");
+  const auto r = whirl(
+      "tune cases/nrel5mw/Main_ROSCO.fst --pc-omega 0.6 --pc-zeta 0.7 --vs-omega 0.15 --vs-zeta 0.7 "
+      "--v-min 3 --v-rated 11.4 --v-max 25 --fl-mode 1 --discon " +
+      kRosco + "DISCON.IN --out '" + dir.string() + "'");
   ASSERT_EQ(r.code, 0) << r.err;
   const size_t j = r.out.find("J = ");
   ASSERT_NE(j, std::string::npos) << r.out;

@@ -42,15 +42,15 @@ TEST(CliCampbell, Nrel5mwWritesTablesScriptAndPictures) {
   }
   ASSERT_TRUE(at15.count("flap 1 BW") && at15.count("flap 1 FW") && at15.count("flap 1 collective")) << csv;
   EXPECT_NEAR(at15["flap 1 FW"] - at15["flap 1 BW"], 2 * 15.0 / 60, 0.1);  // ±1P, coupling shifts it a little
-  EXPECT_GT(at15["flap 1 collective"], 0.6991);                           // centrifugal stiffening
+  EXPECT_GT(at15["flap 1 collective"], 0.6991);                            // centrifugal stiffening
 }
 
 TEST(CliCampbell, ScheduleGivesWindSpeedColumn) {
   const auto dir = test::freshDir("schedule");
   const auto sched = dir / "sched.csv";
   std::ofstream(sched) << "WS_[m/s],RotSpeed_[rpm],BldPitch_[deg]\n8,9.13,0\n12,12.1,3.8\n";
-  const auto r = test::whirl("campbell " + kFst + " --schedule '" + sched.string() + "' --azimuths 6 --no-plot --out '" +
-                             (dir / "out").string() + "'");
+  const auto r = test::whirl("campbell " + kFst + " --schedule '" + sched.string() +
+                             "' --azimuths 6 --no-plot --out '" + (dir / "out").string() + "'");
   ASSERT_EQ(r.code, 0) << r.err;
   const std::string csv = test::slurp(dir / "out" / "campbell.csv");
   EXPECT_THAT(csv, HasSubstr("\n9.13,8,tower FA 1,"));
@@ -63,10 +63,12 @@ TEST(CliCompare, ParkedNrel5mwWithinOnePointFivePercentOfTable91) {
   ASSERT_EQ(modes.code, 0) << modes.err;
   std::ofstream(dir / "parked.csv") << modes.out;
   // [Jonkman2009, Table 9-1], FAST column (cases/nrel5mw/table9_1.csv); tolerance of the issue: 1.5 %.
-  const auto ok = test::whirl("compare '" + (dir / "parked.csv").string() + "' cases/nrel5mw/table9_1.csv --tol-rel 0.015");
+  const auto ok = test::whirl("compare '" + (dir / "parked.csv").string() +
+                              "' cases/nrel5mw/table9_1.csv --tol-rel 0.015");
   EXPECT_EQ(ok.code, 0) << ok.out << ok.err;
   EXPECT_THAT(ok.out, HasSubstr("13 modes compared, 0 beyond"));
-  const auto tight = test::whirl("compare '" + (dir / "parked.csv").string() + "' cases/nrel5mw/table9_1.csv --tol-rel 0.001");
+  const auto tight = test::whirl("compare '" + (dir / "parked.csv").string() +
+                                 "' cases/nrel5mw/table9_1.csv --tol-rel 0.001");
   EXPECT_NE(tight.code, 0);  // the comparison can fail
   EXPECT_THAT(tight.out, HasSubstr("FAIL"));
 }
@@ -77,9 +79,10 @@ TEST(CliLin, OpenFast9rpmMatchesMbc3Names) {
   ASSERT_EQ(r.code, 0) << r.err;
   // MBC3 [Bir2010] of these three files, averaged over their azimuths (as OpenFAST's python toolbox
   // stores it for them; the same values as tests/unit/test_mbc_openfast.cpp), 4 printed digits.
-  const std::vector<std::pair<std::string, double>> ref = {
-      {"flap 1 BW", 0.5878}, {"flap 1 collective", 0.7225}, {"flap 1 FW", 0.8416}, {"edge 1 BW", 0.9371},
-      {"edge 1 FW", 1.2371}, {"flap 2 BW", 1.8373},         {"flap 2 collective", 1.9870}, {"flap 2 FW", 2.1337}};
+  const std::vector<std::pair<std::string, double>> ref = {{"flap 1 BW", 0.5878},         {"flap 1 collective", 0.7225},
+                                                           {"flap 1 FW", 0.8416},         {"edge 1 BW", 0.9371},
+                                                           {"edge 1 FW", 1.2371},         {"flap 2 BW", 1.8373},
+                                                           {"flap 2 collective", 1.9870}, {"flap 2 FW", 2.1337}};
   for (const auto& [name, f] : ref) {
     const auto pos = r.out.find("," + name + ",");
     ASSERT_NE(pos, std::string::npos) << name << "\n" << r.out;
@@ -102,14 +105,16 @@ TEST(CliTurbineErrors, BadOpenFastInputsOneLineNoOutput) {
     EXPECT_FALSE(fs::exists(out)) << "partial output for " << args;
   };
   std::ofstream(tower) << text.substr(0, text.find("8.0000000E-01"));  // truncated table
-  expectError("campbell '" + fst + "' --rpm 0:5:10 --out '" + out + "'", "NRELOffshrBsline5MW_Onshore_ElastoDyn_Tower.dat");
+  expectError("campbell '" + fst + "' --rpm 0:5:10 --out '" + out + "'",
+              "NRELOffshrBsline5MW_Onshore_ElastoDyn_Tower.dat");
   std::string nan = text;
   nan.replace(nan.find("5.2324300E+03"), 13, "NaN");
   std::ofstream(tower) << nan;
   expectError("campbell '" + fst + "' --rpm 0:5:10 --out '" + out + "'", "TMassDen");
   std::ofstream(tower) << text;
   expectError("campbell '" + fst + "' --rpm 0:5:10 --set NoSuchKey=1 --out '" + out + "'", "NoSuchKey");
-  expectError("campbell '" + (dir / "m" / "missing.fst").string() + "' --rpm 0:5:10 --out '" + out + "'", "missing.fst");
+  expectError("campbell '" + (dir / "m" / "missing.fst").string() + "' --rpm 0:5:10 --out '" + out + "'",
+              "missing.fst");
   expectError("campbell '" + fst + "' --rpm 5:1:0 --out '" + out + "'", "--rpm");
 }
 

@@ -5,8 +5,8 @@
 #include <iostream>
 #include <string>
 
-#include "src/writers/campbell_output.hpp"
 #include "src/model/error.hpp"
+#include "src/writers/campbell_output.hpp"
 #include "tests/support/synthetic_campbell.hpp"
 
 int main(int argc, char** argv) {
@@ -20,7 +20,8 @@ int main(int argc, char** argv) {
   try {
     whirl::CampbellPlotOptions opt;
     opt.versus_wind_speed = wind;
-    for (const auto& f : whirl::writeCampbell(whirl::test::syntheticTurbineCampbell(wind), dir, opt)) std::cout << f << "\n";
+    for (const auto& f : whirl::writeCampbell(whirl::test::syntheticTurbineCampbell(wind), dir, opt))
+      std::cout << f << "\n";
   } catch (const std::exception& e) {
     std::cerr << "campbell_example: " << e.what() << "\n";
     return 1;

@@ -14,7 +14,7 @@ namespace whirl::test {
 
 struct AeroRotorOptions {
   double rpm = 12;
-  double wind = 8;          ///< [m/s]
+  double wind = 8;  ///< [m/s]
   double pitch_deg = 2;
   double precone_deg = 2.5;
   double cd = 0.01;

@@ -28,8 +28,8 @@ struct RulesRow {
 };
 
 struct RulesLin {
-  std::vector<std::string> lines;             ///< the file, line by line
-  std::map<std::string, double> header;       ///< "Rotor Speed" → value …
+  std::vector<std::string> lines;        ///< the file, line by line
+  std::map<std::string, double> header;  ///< "Rotor Speed" → value …
   std::vector<RulesRow> x, xdot, u, y;
   std::map<std::string, Eigen::MatrixXd> matrices;
 };
@@ -74,7 +74,8 @@ inline RulesLin readLinByOpenFastRules(const std::string& text) {
   const int nx = static_cast<int>(rulesHeader(L, "Number of continuous states"));
   const int nu = static_cast<int>(rulesHeader(L, "Number of inputs"));
   const int ny = static_cast<int>(rulesHeader(L, "Number of outputs"));
-  for (const char* key : {"Simulation time", "Rotor Speed", "Azimuth", "Wind Speed"}) f.header[key] = rulesHeader(L, key);
+  for (const char* key : {"Simulation time", "Rotor Speed", "Azimuth", "Wind Speed"})
+    f.header[key] = rulesHeader(L, key);
   f.x = rulesTable(L, "Order of continuous states:", nx);
   f.xdot = rulesTable(L, "Order of continuous state derivatives:", nx);
   f.u = rulesTable(L, "Order of inputs:", nu);

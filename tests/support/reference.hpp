@@ -78,7 +78,9 @@ inline LinearModel linearizeAt(const Model& m, const VecX& q) {
   return linearize(m, op);
 }
 
-inline LinearModel linearizeAtEquilibrium(const Model& m) { return linearize(m, solveOperatingPoint(m, initialPoint(m))); }
+inline LinearModel linearizeAtEquilibrium(const Model& m) {
+  return linearize(m, solveOperatingPoint(m, initialPoint(m)));
+}
 
 inline int dofIndex(const LinearModel& l, const std::string& name) {
   for (size_t i = 0; i < l.dof_names.size(); ++i)

@@ -25,7 +25,8 @@ inline Model richModel(bool axial_shortening = true) {
   Body plat;
   plat.name = "platform";
   plat.joint = JointType::Free;
-  plat.inertia = rigidBodyInertia(5e6, Vec3(0.1, -0.2, -10), (Mat3() << 4e9, 1e7, 2e7, 1e7, 5e9, 3e7, 2e7, 3e7, 6e9).finished());
+  plat.inertia = rigidBodyInertia(5e6, Vec3(0.1, -0.2, -10),
+                                  (Mat3() << 4e9, 1e7, 2e7, 1e7, 5e9, 3e7, 2e7, 3e7, 6e9).finished());
   BodyPoint base;
   base.name = "tower base";
   base.P = Vec3(0.5, 0.2, 10);
@@ -68,7 +69,8 @@ inline Model richModel(bool axial_shortening = true) {
   nac.rotation = Eigen::AngleAxisd(pi / 2, Vec3::UnitY()).toRotationMatrix();  // back to ground axes
   nac.joint = JointType::Revolute;
   nac.axis = Vec3::UnitZ();  // yaw
-  nac.inertia = rigidBodyInertia(2.4e5, Vec3(1.9, 0.1, 1.75), (Mat3() << 1e6, 2e4, 3e4, 2e4, 2.6e6, 1e4, 3e4, 1e4, 2.6e6).finished());
+  nac.inertia = rigidBodyInertia(2.4e5, Vec3(1.9, 0.1, 1.75),
+                                 (Mat3() << 1e6, 2e4, 3e4, 2e4, 2.6e6, 1e4, 3e4, 1e4, 2.6e6).finished());
   BodyPoint shaft;
   shaft.name = "shaft";
   shaft.P = Vec3(-5.0, 0.0, 2.4);

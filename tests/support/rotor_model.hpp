@@ -30,7 +30,8 @@ inline Model rotorModel(double rpm, int nblades = 3) {
   p.m = VecX::Constant(2, 300);
   p.EIy = VecX::Constant(2, 4e9);
   p.EIz = VecX::Constant(2, 1e9);
-  std::vector<ShapePtr> shapes{clampedTopMassShape("flap 1", 40, 1, 0, 0, 1), clampedTopMassShape("edge 1", 40, 1, 0, 1, 0)};
+  std::vector<ShapePtr> shapes{clampedTopMassShape("flap 1", 40, 1, 0, 0, 1),
+                               clampedTopMassShape("edge 1", 40, 1, 0, 1, 0)};
   BeamOptions opt;
   opt.integration = {BeamIntegration::Gauss, 40};
   const BeamBody bb = buildBeamBody(p, shapes, opt, "blade");

@@ -65,11 +65,11 @@ inline SparseModel springGrid(int nx, int ny, double k, double m) {
 inline SparseModel cantilever(int ne, double L, double EI, double rhoA) {
   const double h = L / ne;
   Eigen::Matrix4d ke, me;
-  ke << 12, 6 * h, -12, 6 * h, 6 * h, 4 * h * h, -6 * h, 2 * h * h, -12, -6 * h, 12, -6 * h, 6 * h, 2 * h * h,
-      -6 * h, 4 * h * h;
+  ke << 12, 6 * h, -12, 6 * h, 6 * h, 4 * h * h, -6 * h, 2 * h * h, -12, -6 * h, 12, -6 * h, 6 * h, 2 * h * h, -6 * h,
+      4 * h * h;
   ke *= EI / (h * h * h);
-  me << 156, 22 * h, 54, -13 * h, 22 * h, 4 * h * h, 13 * h, -3 * h * h, 54, 13 * h, 156, -22 * h, -13 * h,
-      -3 * h * h, -22 * h, 4 * h * h;
+  me << 156, 22 * h, 54, -13 * h, 22 * h, 4 * h * h, 13 * h, -3 * h * h, 54, 13 * h, 156, -22 * h, -13 * h, -3 * h * h,
+      -22 * h, 4 * h * h;
   me *= rhoA * h / 420;
   Triplets kt, mt;
   for (int e = 0; e < ne; ++e)
@@ -154,8 +154,8 @@ inline SparseModel latticeTower(int side, int levels, double dx = 2.0, double dz
         if (y + 1 < side) member(p, p + side);
         if (l < levels) {
           member(p, p + per_level);
-          if (x + 1 < side) member(p, p + per_level + 1);        // brace in the x-z panel
-          if (y + 1 < side) member(p, p + per_level + side);     // brace in the y-z panel
+          if (x + 1 < side) member(p, p + per_level + 1);     // brace in the x-z panel
+          if (y + 1 < side) member(p, p + per_level + side);  // brace in the y-z panel
         }
       }
   for (int nd = per_level; nd < n_nodes; ++nd)

@@ -18,9 +18,8 @@ namespace whirl::test {
 
 inline CampbellPoint syntheticTurbinePoint(double rpm, std::optional<double> wind, std::optional<double> pitch) {
   using cd = std::complex<double>;
-  const std::vector<std::string> coords{"tower FA 1",   "tower SS 1",         "drivetrain",   "flap 1 collective",
-                                        "flap 1 cos",   "flap 1 sin",         "edge 1 cos",   "edge 1 sin",
-                                        "edge 1 collective"};
+  const std::vector<std::string> coords{"tower FA 1", "tower SS 1", "drivetrain", "flap 1 collective", "flap 1 cos",
+                                        "flap 1 sin", "edge 1 cos", "edge 1 sin", "edge 1 collective"};
   const double W = rpm / 60;                  // 1P [Hz]
   const double load = wind ? rpm / 12.1 : 0;  // 0 without aerodynamics
   const double feather = pitch ? 1 - 0.3 * *pitch / 25 : 1;
@@ -68,14 +67,15 @@ inline CampbellDiagram syntheticTurbineCampbell(bool with_wind) {
   CampbellDiagram d;
   if (with_wind) {
     d.title = "Campbell diagram: synthetic 5 MW turbine, operating schedule";
-    const std::vector<std::pair<double, double>> pitch{{11.4, 0},   {12, 3.83},  {13, 6.6},   {14, 8.7},  {15, 10.45},
+    const std::vector<std::pair<double, double>> pitch{{11.4, 0},   {12, 3.83},  {13, 6.6},   {14, 8.7},   {15, 10.45},
                                                        {16, 12.06}, {18, 14.92}, {20, 17.47}, {22, 19.94}, {25, 23.47}};
     for (double ws = 3; ws <= 25; ws += 1) {
       const double rpm = std::clamp(1.144 * ws, 6.97, 12.1);
       double pd = 0;
       for (std::size_t k = 0; k + 1 < pitch.size(); ++k)
         if (ws > pitch[k].first && ws <= pitch[k + 1].first)
-          pd = pitch[k].second + (ws - pitch[k].first) / (pitch[k + 1].first - pitch[k].first) * (pitch[k + 1].second - pitch[k].second);
+          pd = pitch[k].second +
+               (ws - pitch[k].first) / (pitch[k + 1].first - pitch[k].first) * (pitch[k + 1].second - pitch[k].second);
       d.points.push_back(syntheticTurbinePoint(rpm, ws, pd));
     }
   } else {

@@ -14,7 +14,9 @@ namespace whirl::testing {
 
 inline const std::string kNrel5mwFst = std::string(WHIRL_SOURCE_DIR) + "/cases/nrel5mw/Main_Onshore.fst";
 
-inline Model nrel5mw(const std::vector<std::string>& overrides = {}) { return readElastoDynModel(kNrel5mwFst, overrides); }
+inline Model nrel5mw(const std::vector<std::string>& overrides = {}) {
+  return readElastoDynModel(kNrel5mwFst, overrides);
+}
 
 /// q̈ of the active coordinates from M(q) q̈ = e(q, q̇, 0, u) (frozen coordinates: q̈ = 0).
 inline VecX accelerations(const Model& m, const VecX& q, const VecX& qd, const VecX& u) {
@@ -40,7 +42,8 @@ inline VecX accelerations(const Model& m, const VecX& q, const VecX& qd, const V
 inline Eigen::MatrixXcd frequencyResponse(const StateSpaceModel& s, double omega) {
   const Eigen::Index n = s.A.rows();
   const Eigen::MatrixXcd sI = std::complex<double>(0, omega) * Eigen::MatrixXcd::Identity(n, n);
-  const Eigen::MatrixXcd X = (sI - s.A.cast<std::complex<double>>()).partialPivLu().solve(s.B.cast<std::complex<double>>());
+  const Eigen::MatrixXcd X =
+      (sI - s.A.cast<std::complex<double>>()).partialPivLu().solve(s.B.cast<std::complex<double>>());
   return s.C.cast<std::complex<double>>() * X + s.D.cast<std::complex<double>>();
 }
 

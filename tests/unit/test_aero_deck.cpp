@@ -26,7 +26,8 @@ void expectNrel5mwDeck(const AeroDeckInput& d) {
     EXPECT_DOUBLE_EQ(b.BlSpn.back(), 61.4999);
   }
   ASSERT_EQ(d.airfoils.size(), 8u);
-  const char* names[] = {"Cylinder1", "Cylinder2", "DU40_A17", "DU35_A17", "DU30_A17", "DU25_A17", "DU21_A17", "NACA64_A17"};
+  const char* names[] = {"Cylinder1", "Cylinder2", "DU40_A17", "DU35_A17",
+                         "DU30_A17",  "DU25_A17",  "DU21_A17", "NACA64_A17"};
   for (std::size_t i = 0; i < 8; ++i) EXPECT_EQ(d.airfoils[i].name, names[i]);
   EXPECT_EQ(d.airfoils[6].tables[0].alpha_deg.size(), 142u);
   EXPECT_EQ(d.airfoils[7].tables[0].cm.size(), 127u);  // InCol_Cm = 4

@@ -17,8 +17,8 @@
 namespace whirl {
 namespace {
 
-using test::AeroRotorOptions;
 using test::aeroRotorModel;
+using test::AeroRotorOptions;
 
 // A deflected, moving point near equilibrium: every coordinate and rate non-zero.
 OperatingPoint perturbedPoint(const Model& m) {
@@ -69,8 +69,8 @@ void expectJacobiansMatch(const Model& m, const OperatingPoint& op, const AeroIn
     Eigen::Index wr = 0, wc = 0;
     (ad - fd).cwiseAbs().maxCoeff(&wr, &wc);
     EXPECT_LT((ad - fd).cwiseAbs().maxCoeff(), 2e-6 * scale)
-        << "wrt " << static_cast<int>(w) << ": row " << m.dofs[wr].name << ", column " << cols[wc] << ": AD " << ad(wr, wc)
-        << ", central differences " << fd(wr, wc);
+        << "wrt " << static_cast<int>(w) << ": row " << m.dofs[wr].name << ", column " << cols[wc] << ": AD "
+        << ad(wr, wc) << ", central differences " << fd(wr, wc);
     EXPECT_GT(ad.cwiseAbs().maxCoeff(), 0.0);
   }
 }

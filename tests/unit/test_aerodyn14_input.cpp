@@ -170,8 +170,8 @@ TEST(AeroDyn14, DeckBecomesV15Elements) {
                           "AOC/Test06_InflowWind.dat", "AOC/Test06_ServoDyn.dat", "AOC/AeroData/S814_1.dat"})
       s.copy(certtest() / f, f);
     EXPECT_EQ(inputErrorMessage([&] { whirl::io::readAeroDeck(whirl::io::readFst(fst)); }),
-              (s.path() / "AOC/Test06_AD.ipt").string() + ":18: FoilNm(2): file not found: " +
-                  (s.path() / "AOC/AeroData/S814_15.dat").string());
+              (s.path() / "AOC/Test06_AD.ipt").string() +
+                  ":18: FoilNm(2): file not found: " + (s.path() / "AOC/AeroData/S814_15.dat").string());
   }
   // Notes: the BEMT, dynamic inflow, dynamic stall, tower shadow, then the wind file.
   ASSERT_GE(deck.notes.size(), 4u);

@@ -115,9 +115,26 @@ TEST(AeroDynInput, AeroDyn1503LayoutOfTheCertificationTests) {
   // CavitCheck, Buoyancy, CompAA, Patm/Pvap, DBEMT, OLAF, AFTabMod, hub/nacelle/tail-fin sections.
   AeroScratch s;
   std::string text = whirl::test::readText(s.path(kV3));
-  for (const char* key : {"FrozenWake", "CavitCheck", "Buoyancy", "CompAA", "AA_InputFile", "Patm", "Pvap",
-                          "SkewModFactor", "DBEMT_Mod", "tau1_const", "OLAFInputFileName", "UAStartRad", "UAEndRad",
-                          "AFTabMod", "VolHub", "HubCenBx", "VolNac", "NacCenB", "TFinAero", "TFinFile"})
+  for (const char* key : {"FrozenWake",
+                          "CavitCheck",
+                          "Buoyancy",
+                          "CompAA",
+                          "AA_InputFile",
+                          "Patm",
+                          "Pvap",
+                          "SkewModFactor",
+                          "DBEMT_Mod",
+                          "tau1_const",
+                          "OLAFInputFileName",
+                          "UAStartRad",
+                          "UAEndRad",
+                          "AFTabMod",
+                          "VolHub",
+                          "HubCenBx",
+                          "VolNac",
+                          "NacCenB",
+                          "TFinAero",
+                          "TFinFile"})
     text = whirl::test::removeLine(text, key);
   text = whirl::test::replaceOnce(text, "          0   TwrShadow", "False         TwrShadow");
   const AeroDynInput a = readAeroDyn(s.write(kV3, text));

@@ -73,8 +73,8 @@ TEST(AirfoilInput, DU21ReadsHeaderTableAndUnsteadyConstants) {
 }
 
 TEST(AirfoilInput, AllEightNrel5mwAirfoilsRead) {
-  const std::pair<const char*, std::size_t> files[] = {{"Cylinder1", 3},  {"Cylinder2", 3},  {"DU40_A17", 136},
-                                                       {"DU35_A17", 135}, {"DU30_A17", 143}, {"DU25_A17", 140},
+  const std::pair<const char*, std::size_t> files[] = {{"Cylinder1", 3},  {"Cylinder2", 3},   {"DU40_A17", 136},
+                                                       {"DU35_A17", 135}, {"DU30_A17", 143},  {"DU25_A17", 140},
                                                        {"DU21_A17", 142}, {"NACA64_A17", 127}};
   for (const auto& [name, num_alf] : files) {
     SCOPED_TRACE(name);
@@ -116,13 +116,14 @@ TEST(AirfoilInput, SeveralTablesCtrlSpellingAndCommentedOutKeys) {
   AeroScratch s;
   s.edit(kCyl1, "          1   NumTabs ", "!         3   NumTabs\n          2   NumTabs ");
   std::string text = whirl::test::readText(s.path(kCyl1));
-  text += "        1.5   Re                ! Reynolds number in millions\n"
-          "        0.5   Ctrl              ! Control setting\n"
-          "False         InclUAdata        ! no UA constants\n"
-          "          2   NumAlf            ! Number of data lines in the following table\n"
-          "!    Alpha      Cl      Cd\n"
-          "   -180.00      0.000   0.4000   0.1\n"
-          "   180.00       0.000   0.4000   0.1\n";
+  text +=
+      "        1.5   Re                ! Reynolds number in millions\n"
+      "        0.5   Ctrl              ! Control setting\n"
+      "False         InclUAdata        ! no UA constants\n"
+      "          2   NumAlf            ! Number of data lines in the following table\n"
+      "!    Alpha      Cl      Cd\n"
+      "   -180.00      0.000   0.4000   0.1\n"
+      "   180.00       0.000   0.4000   0.1\n";
   const AirfoilInput a = readAirfoil(s.write(kCyl1, text));
   ASSERT_EQ(a.tables.size(), 2u);
   EXPECT_DOUBLE_EQ(a.tables[0].re, 0.75);

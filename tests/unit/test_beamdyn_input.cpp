@@ -16,8 +16,8 @@
 namespace whirl {
 namespace {
 
-using ::testing::HasSubstr;
 using test::errorOf;
+using ::testing::HasSubstr;
 
 const std::filesystem::path kDir = test::sourceDir() / "cases" / "nrel5mw_beamdyn" / "5MW_Baseline";
 
@@ -57,8 +57,8 @@ std::string primary(int kp_total, int kp_member, bool pitch_actuator = false) {
 // m 10 kg/m), and one edit hook per station.
 struct BladeText {
   std::vector<double> eta = {0.0, 0.5, 1.0};
-  double K12 = 0, K21 = 0;  ///< entries (1,2) and (2,1) of the middle station's stiffness
-  double K44 = 1e7;         ///< the middle station's first bending stiffness
+  double K12 = 0, K21 = 0;   ///< entries (1,2) and (2,1) of the middle station's stiffness
+  double K44 = 1e7;          ///< the middle station's first bending stiffness
   int stop_after_rows = -1;  ///< truncate: lines of the station block kept (−1: all)
   bool modal_block = true;
   std::string text() const {
@@ -186,7 +186,7 @@ TEST(BeamDynInput, KeyPointCountMismatch) {
   EXPECT_THAT(readError(primary(6, 5), BladeText{}.text()),
               HasSubstr("primary.dat:11: kp_total: 6 key points, but the members hold 5"));
   // Rows beyond kp_total: the next line must be the mesh section.
-  EXPECT_THAT(readError(primary(4, 4) , BladeText{}.text()), ::testing::Not(HasSubstr("kp_total")));
+  EXPECT_THAT(readError(primary(4, 4), BladeText{}.text()), ::testing::Not(HasSubstr("kp_total")));
   std::string p = primary(5, 5);
   p.insert(p.find("-------------------- MESH"), "  0.0 0.0 11.0 0.0\n");
   EXPECT_THAT(readError(p, BladeText{}.text()), HasSubstr(": kp_total: is 5 but line 20 is another row"));

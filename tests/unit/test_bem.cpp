@@ -9,8 +9,8 @@
 
 #include "src/aero/bem.hpp"
 #include "src/aero/prandtl_expansion.hpp"
-#include "src/model/scalar.hpp"
 #include "src/model/error.hpp"
+#include "src/model/scalar.hpp"
 #include "tests/unit/aero_data_util.hpp"
 
 using namespace whirl;
@@ -259,10 +259,10 @@ TEST(Bem, InflowAngleDerivativesMatchCentralDifferences) {
   const auto& P = nrelPolars();
   const auto& C = nrelPolarsCubic();
   const Case cases[] = {
-      {&P[7], 50.0, 2.5, 0.03, 7.5, 48.0, true},    // NACA64, operating rotor
-      {&C[5], 30.0, 3.7, 0.12, 9.0, 25.0, true},    // DU25 cubic spline
+      {&P[7], 50.0, 2.5, 0.03, 7.5, 48.0, true},            // NACA64, operating rotor
+      {&C[5], 30.0, 3.7, 0.12, 9.0, 25.0, true},            // DU25 cubic spline
       {&thinAirfoil(), 5.0, 4.0, 0.05, 10.0, 9.79, false},  // Buhl region
-      {&P[6], 35.0, 3.4, 0.10, -4.0, 30.0, true},   // Vx < 0
+      {&P[6], 35.0, 3.4, 0.10, -4.0, 30.0, true},           // Vx < 0
   };
   const double h = 1e-6;
   for (const Case& k : cases) {
@@ -329,7 +329,8 @@ TEST(Bem, InflowAngleWithKeptSlopeEqualsFreshEvaluation) {
   const BemSolution sol = solveInflow(s, Vx, Vy, o);
   const ADChunk fresh = inflowAngle<ADChunk>(s, seed(Vx, 0), seed(Vy, 1), seed(s.theta, 2), sol.phi, o);
   double slope = 0;
-  const ADChunk first = inflowAngle<ADChunk>(s, seed(Vx, 0), seed(Vy, 1), seed(s.theta, 2), sol.phi, o, nullptr, &slope);
+  const ADChunk first = inflowAngle<ADChunk>(s, seed(Vx, 0), seed(Vy, 1), seed(s.theta, 2), sol.phi, o, nullptr,
+                                             &slope);
   EXPECT_NE(slope, 0.0);
   const ADChunk kept = inflowAngle<ADChunk>(s, seed(Vx, 0), seed(Vy, 1), seed(s.theta, 2), sol.phi, o, nullptr, &slope);
   EXPECT_EQ(first.value(), fresh.value());
@@ -587,7 +588,8 @@ TEST(Bem, LoadsAtTheRootEqualTheOutputLoads) {
         EXPECT_TRUE(root.a == root.at.a && root.ap == root.at.ap);  // no limit active
         // AeroDyn's output angle is the root: |R| < 1e-13 and |dR/dφ| ≥ 0.1 here.
         EXPECT_NEAR(sol.phi_out, root.phi, 1e-11) << af << " " << Vx << " " << Vy;
-        const SectionLoads<double> fast = loadsAtRoot(s, Vx, Vy, s.theta, root.phi, root.a, root.ap, root.at.coef, 1.225);
+        const SectionLoads<double> fast = loadsAtRoot(s, Vx, Vy, s.theta, root.phi, root.a, root.ap, root.at.coef,
+                                                      1.225);
         const SectionLoads<double> ref = loadsAtInduction(s, Vx, Vy, s.theta, root.a, root.ap, 1.225);
         const double scale = 0.5 * 1.225 * ref.W * ref.W * s.chord;  // q c [N/m]
         EXPECT_NEAR(fast.fx, ref.fx, 1e-9 * scale) << af << " " << Vx << " " << Vy;

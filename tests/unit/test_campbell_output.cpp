@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
-#include "src/writers/campbell_output.hpp"
 #include "src/model/error.hpp"
+#include "src/writers/campbell_output.hpp"
 #include "test_util.hpp"
 #include "tests/support/synthetic_campbell.hpp"
 

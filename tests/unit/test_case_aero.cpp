@@ -74,7 +74,8 @@ TEST(CaseAero, AerodynamicCentreOffsetsAndFractions) {
   std::string text = test::aeroRotorCase(o);
   text = testing::replaced(text, "        airfoil: [1, 1, 1]\n",
                            "        airfoil: [1, 1, 1]\n        ac_y: [0, 0.3, 0.6]\n        ac_z: [0, 0, -0.4]\n");
-  text = testing::replaced(text, "        x: [0, 20, 40]\n        chord", "        fraction: [0, 0.5, 1]\n        chord");
+  text = testing::replaced(text, "        x: [0, 20, 40]\n        chord",
+                           "        fraction: [0, 0.5, 1]\n        chord");
   tmp.write("thin.dat", test::thinAirfoilFile(o.cd));
   text = testing::replaced(text, "      pitch: blade 1 pitch\n", "");  // the default: the body's joint about −x
   const Model m = readCase(tmp.write("rotor.yaml", text));

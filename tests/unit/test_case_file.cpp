@@ -129,8 +129,9 @@ bodies:
 
 TEST(CaseFile, CsvPropertiesEqualInlineAndUniform) {
   TempCaseDir tmp;
-  tmp.write("props.csv", "# tower\nfraction, m, EIy, EIz, twist_deg\n0, 9000, 2e12, 2e12, 0\n0.5, 9000, 2e12, 2e12, 0\n"
-                         "1, 9000, 2e12, 2e12, 0\n");
+  tmp.write("props.csv",
+            "# tower\nfraction, m, EIy, EIz, twist_deg\n0, 9000, 2e12, 2e12, 0\n0.5, 9000, 2e12, 2e12, 0\n"
+            "1, 9000, 2e12, 2e12, 0\n");
   const std::string beam = R"(
 bodies:
   - name: tower
@@ -139,10 +140,14 @@ bodies:
     PROPS
     shapes: [{name: s1, type: one_minus_cos, direction: y}, {name: s2, type: polynomial, direction: [0, 1], coefficients: {2: 1}}]
 )";
-  const Model u = readCase(tmp.write("u.yaml", testing::replaced(beam, "PROPS", "uniform: {m: 9000, EIy: 2e12, EIz: 2e12}")));
+  const Model u = readCase(
+      tmp.write("u.yaml", testing::replaced(beam, "PROPS", "uniform: {m: 9000, EIy: 2e12, EIz: 2e12}")));
   const Model c = readCase(tmp.write("c.yaml", testing::replaced(beam, "PROPS", "properties: {file: props.csv}")));
-  const Model i = readCase(tmp.write("i.yaml", testing::replaced(beam, "PROPS",
-      "properties: {x: [0, 40, 100], m: [9000, 9000, 9000], EIy: [2e12, 2e12, 2e12], EIz: [2e12, 2e12, 2e12]}")));
+  const Model i = readCase(tmp.write(
+      "i.yaml",
+      testing::replaced(
+          beam, "PROPS",
+          "properties: {x: [0, 40, 100], m: [9000, 9000, 9000], EIy: [2e12, 2e12, 2e12], EIz: [2e12, 2e12, 2e12]}")));
   for (const Model* m : {&c, &i}) {
     EXPECT_TRUE(m->bodies[0].elastic.K.isApprox(u.bodies[0].elastic.K, 1e-12));
     EXPECT_NEAR(m->bodies[0].inertia.mass, 9e5, 1e-6);
@@ -183,7 +188,8 @@ bodies:
   const double csv_k = stiffness("csv.yaml", "{name: flap csv, type: table, file: shape.csv}");
   const double inline_k = stiffness("inline.yaml", "{name: flap inline, type: table, x: [" + xs + "], uz: [" + uz +
                                                        "], uz1: [" + uz1 + "], uz2: [" + uz2 + "]}");
-  const double poly_k = stiffness("poly.yaml", "{name: flap poly, type: polynomial, direction: z, coefficients: {2: 1}}");
+  const double poly_k = stiffness("poly.yaml",
+                                  "{name: flap poly, type: polynomial, direction: z, coefficients: {2: 1}}");
   EXPECT_NEAR(csv_k, 4e9 / 1e6, 1e-9);
   EXPECT_NEAR(inline_k, poly_k, 1e-9);
   EXPECT_NEAR(csv_k, poly_k, 1e-9);

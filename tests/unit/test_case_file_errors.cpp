@@ -55,20 +55,27 @@ TEST_F(CaseErrors, YamlSyntax) {
 TEST_F(CaseErrors, UnknownKeysInEveryMap) {
   expect("gravity: 9.81", "gravty: 9.81", "gravty: unknown key 'gravty' (allowed: name, description, gravity, inputs");
   expect("  - {name: thrust, value: 1.0e5}", "  - {name: thrust, valeu: 1.0e5}", "inputs.thrust.valeu: unknown key");
-  expect("    mass: 2.4e5", "    mas: 2.4e5", "bodies.nacelle.mas: unknown key 'mas' (allowed: name, type, parent, at,"
+  expect("    mass: 2.4e5", "    mas: 2.4e5",
+         "bodies.nacelle.mas: unknown key 'mas' (allowed: name, type, parent, at,"
          " offset, rotation, joint, points, mass, cog, inertia)");
   expect("    length: 80", "    length: 80\n    mass: 3", "bodies.tower.mass: unknown key 'mass'",
          lineOf(smallTurbineCase(), "    length: 80") + 1);
   expect("{m: 5000, EIy: 1.0e11, EIz: 1.0e11}", "{m: 5000, EIy: 1.0e11, EIz: 1.0e11, Gkt: 1}",
          "bodies.tower.uniform.Gkt: unknown key 'Gkt' (allowed: m, EIy, EIz, GKt, jG)");
   expect("direction: z}", "directon: z}", "bodies.tower.shapes.tower FA 1.directon: unknown key");
-  expect("{name: top, x: 80}", "{name: top, x: 80, y: 0}", "bodies.tower.points.top.y: unknown key 'y' (allowed: name, x, fraction)");
-  expect("{name: hub, position: [-5, 0, 2]}", "{name: hub, pos: [-5, 0, 2]}", "unknown key 'pos' (allowed: name, position)");
-  expect("axis: [1, 0, 0]", "axes: [1, 0, 0]", "bodies.rotor.joint.axes: unknown key 'axes' (allowed: type, axis, dof)");
+  expect("{name: top, x: 80}", "{name: top, x: 80, y: 0}",
+         "bodies.tower.points.top.y: unknown key 'y' (allowed: name, x, fraction)");
+  expect("{name: hub, position: [-5, 0, 2]}", "{name: hub, pos: [-5, 0, 2]}",
+         "unknown key 'pos' (allowed: name, position)");
+  expect("axis: [1, 0, 0]", "axes: [1, 0, 0]",
+         "bodies.rotor.joint.axes: unknown key 'axes' (allowed: type, axis, dof)");
   expect("{y_deg: 90}", "{y_degs: 90}", "unknown key 'y_degs' (allowed: x, y, z, x_deg, y_deg, z_deg)");
-  expect("rate_rpm: 12.1}", "rate_rmp: 12.1}", "dofs.azimuth.rate_rmp: unknown key 'rate_rmp' (allowed: value, value_deg,");
-  expect("force: [1, 0, 0]", "forse: [1, 0, 0]", "unknown key 'forse' (allowed: type, body, point, force, moment, frame, input)");
-  expect("inertia: [1.0e6, 2.0e6, 2.0e6]", "inertia: {xx: 1, yx: 2}", "unknown key 'yx' (allowed: xx, yy, zz, xy, xz, yz)");
+  expect("rate_rpm: 12.1}", "rate_rmp: 12.1}",
+         "dofs.azimuth.rate_rmp: unknown key 'rate_rmp' (allowed: value, value_deg,");
+  expect("force: [1, 0, 0]", "forse: [1, 0, 0]",
+         "unknown key 'forse' (allowed: type, body, point, force, moment, frame, input)");
+  expect("inertia: [1.0e6, 2.0e6, 2.0e6]", "inertia: {xx: 1, yx: 2}",
+         "unknown key 'yx' (allowed: xx, yy, zz, xy, xz, yz)");
   expect("    mass: 2.4e5", "    mass: 2.4e5\n    mass: 2.5e5", "bodies.nacelle.mass: key 'mass' given twice",
          lineOf(smallTurbineCase(), "    mass: 2.4e5") + 1);
 }
@@ -96,7 +103,8 @@ TEST_F(CaseErrors, NegativeMassAndBadInertia) {
   expect("inertia: [1.0e6, 2.0e6, 2.0e6]", "inertia: [1.0e6, -1.0e6, 5.0e6]",
          "bodies.nacelle.inertia: the inertia tensor is not positive semi-definite");
   expect("inertia: [1.0e6, 2.0e6, 2.0e6]", "inertia: [[1, 0, 0], [0.5, 1, 0], [0, 0, 1]]", "not symmetric");
-  expect("rotation: {y_deg: 90}", "rotation: [[1, 0, 0], [0, 1, 0], [0, 0.1, 1]]", "bodies.nacelle.rotation: the rotation matrix is not orthonormal");
+  expect("rotation: {y_deg: 90}", "rotation: [[1, 0, 0], [0, 1, 0], [0, 0.1, 1]]",
+         "bodies.nacelle.rotation: the rotation matrix is not orthonormal");
 }
 
 TEST_F(CaseErrors, BeamColumnsOfDifferentLengths) {
@@ -119,22 +127,26 @@ TEST_F(CaseErrors, CsvProblemsNameTheCsvFileAndLine) {
   const std::string path = tmp.write("bad.yaml", text);
   EXPECT_THAT(inputErrorOf([&] { readCase(path); }), HasSubstr(csv + ":3: m: expected a finite number, got 'heavy'"));
   tmp.write("props.csv", "x, m, EIy, EIz, mass\n0, 5000, 1e11, 1e11, 1\n80, 5000, 1e11, 1e11, 1\n");
-  EXPECT_THAT(inputErrorOf([&] { readCase(path); }), HasSubstr(csv + ":1: mass: unknown column (allowed: x, fraction, m,"));
+  EXPECT_THAT(inputErrorOf([&] { readCase(path); }),
+              HasSubstr(csv + ":1: mass: unknown column (allowed: x, fraction, m,"));
   tmp.write("props.csv", "x, m, EIy, EIz\n0, 5000, 1e11, 1e11\n80, -1, 1e11, 1e11\n");
   EXPECT_THAT(inputErrorOf([&] { readCase(path); }), HasSubstr(csv + ":3: m: must not be negative"));
   std::filesystem::remove(tmp.dir / "props.csv");
   EXPECT_THAT(inputErrorOf([&] { readCase(path); }),
-              HasSubstr(path + ":" + std::to_string(lineOf(text, "properties:")) + ": bodies.tower.properties.file: cannot open"));
+              HasSubstr(path + ":" + std::to_string(lineOf(text, "properties:")) +
+                        ": bodies.tower.properties.file: cannot open"));
 }
 
 TEST_F(CaseErrors, UnknownNames) {
-  expect("parent: tower", "parent: towr", "bodies.nacelle.parent: no body named 'towr' (bodies: tower, nacelle, rotor)");
+  expect("parent: tower", "parent: towr",
+         "bodies.nacelle.parent: no body named 'towr' (bodies: tower, nacelle, rotor)");
   expect("at: top", "at: tip", "bodies.nacelle.at: body 'tower' has no point named 'tip' (points: top)");
   expect("  azimuth: {", "  azimut: {", "dofs.azimut: no DOF named 'azimut' (DOFs: tower FA 1, azimuth)");
   expect("input: thrust}", "input: thrst}", "loads[0].input: no input named 'thrst' (inputs: thrust)");
   expect("{type: point, body: nacelle,", "{type: point, body: hub,", "loads[0].body: no body named 'hub'");
   expect("point: hub, force", "point: top, force", "loads[0].point: body 'nacelle' has no point named 'top'");
-  expect("  - {type: point,", "  - {type: dof, dof: azimut, value: 1}\n  - {type: point,", "loads[0].dof: no DOF named 'azimut'");
+  expect("  - {type: point,", "  - {type: dof, dof: azimut, value: 1}\n  - {type: point,",
+         "loads[0].dof: no DOF named 'azimut'");
   expect("  - name: rotor\n", "  - name: nacelle\n", "bodies.nacelle.name: body name 'nacelle' is already used at line",
          lineOf(smallTurbineCase(), "  - name: rotor"));
   expect("dof: azimuth}", "dof: tower FA 1}", "DOF name 'tower FA 1' is already used at line");
@@ -176,11 +188,13 @@ TEST_F(CaseErrors, CoreErrorsAreRethrownWithTheCaseFile) {
   const std::string path = tmp.write("loop.yaml", loop);
   EXPECT_THAT(inputErrorOf([&] { readCase(path); }), HasSubstr(path + ": body '"));
   EXPECT_THAT(inputErrorOf([&] { readCase(path); }), HasSubstr("the parent chain forms a loop"));
-  const std::string twin = replaced(smallTurbineCase(), "      - {name: tower FA 1, type: one_minus_cos, direction: z}\n",
+  const std::string twin = replaced(smallTurbineCase(),
+                                    "      - {name: tower FA 1, type: one_minus_cos, direction: z}\n",
                                     "      - {name: tower FA 1, type: one_minus_cos, direction: z}\n"
                                     "      - {name: tower FA 2, type: one_minus_cos, direction: z}\n");
   const std::string p2 = tmp.write("twin.yaml", twin);
-  EXPECT_THAT(inputErrorOf([&] { readCase(p2); }), HasSubstr(p2 + ": body 'tower': elastic mass matrix is not positive definite"));
+  EXPECT_THAT(inputErrorOf([&] { readCase(p2); }),
+              HasSubstr(p2 + ": body 'tower': elastic mass matrix is not positive definite"));
 }
 
 TEST_F(CaseErrors, ShapesThatOverflowAreRefusedAtTheirLine) {
@@ -210,7 +224,8 @@ TEST_F(CaseErrors, FemShapes) {
   expect(fa, "      from: beamdyn\n      modes: []", "unknown shape source 'beamdyn' (allowed: fem)", 12);
   expect(fa, "      from: fem\n      modes: []", "list at least one mode", 13);
   // 2 elements hold 4 bending modes per direction: mode 5 fails in the FE, re-thrown at the shapes.
-  const std::string text = replaced(smallTurbineCase(), fa, fem("      elements: 2\n", "{name: tower FA 1, direction: z, mode: 5}"));
+  const std::string text = replaced(smallTurbineCase(), fa,
+                                    fem("      elements: 2\n", "{name: tower FA 1, direction: z, mode: 5}"));
   expectText(text, lineOf(text, "      from: fem"), "only");
 }
 

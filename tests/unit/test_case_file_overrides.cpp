@@ -38,8 +38,9 @@ TEST(CaseOverrides, BodyMassNestedUniformDofAndInput) {
   TempCaseDir tmp;
   const std::string path = tmp.write("t.yaml", smallTurbineCase());
   const Model base = readCase(path);
-  const Model m = readCase(path, {parseOverride("bodies.nacelle.mass=2.5e5"), parseOverride("bodies.tower.uniform.EIy=3e11"),
-                                  parseOverride("dofs.azimuth.frozen=true"), parseOverride("inputs.thrust.value=8e5")});
+  const Model m = readCase(path,
+                           {parseOverride("bodies.nacelle.mass=2.5e5"), parseOverride("bodies.tower.uniform.EIy=3e11"),
+                            parseOverride("dofs.azimuth.frozen=true"), parseOverride("inputs.thrust.value=8e5")});
   EXPECT_DOUBLE_EQ(m.bodies[*m.findBody("nacelle")].inertia.mass, 2.5e5);
   // EIy is the stiffness of deflection along y (BeamProperties): tower FA 1 bends along z, so it
   // keeps its stiffness; turned to y by a second override, it takes the new EIy.
@@ -56,7 +57,8 @@ TEST(CaseOverrides, BodyMassNestedUniformDofAndInput) {
 TEST(CaseOverrides, DofWithoutSettingsAndListIndex) {
   TempCaseDir tmp;
   const std::string path = tmp.write("t.yaml", smallTurbineCase());
-  const Model m = readCase(path, {parseOverride("dofs.tower FA 1.value=0.2"), parseOverride("loads.0.force=[2, 0, 0]")});
+  const Model m = readCase(path,
+                           {parseOverride("dofs.tower FA 1.value=0.2"), parseOverride("loads.0.force=[2, 0, 0]")});
   EXPECT_DOUBLE_EQ(m.dofs[*m.findDof("tower FA 1")].value, 0.2);
   EXPECT_TRUE(m.point_loads[0].force.isApprox(Vec3(2, 0, 0)));
   const std::string nodofs = tmp.write("n.yaml", smallTurbineCase().substr(0, smallTurbineCase().find("dofs:")));
@@ -70,7 +72,8 @@ TEST(CaseOverrides, PathThatDoesNotExistIsAnError) {
   const std::string path = tmp.write("t.yaml", text);
   // A list entry that does not exist: reported at the list, with the names there are.
   std::string msg = inputErrorOf([&] { readCase(path, {parseOverride("bodies.towr.mass=1")}); });
-  EXPECT_THAT(msg, HasSubstr("t.yaml:" + std::to_string(lineOf(text, "  - name: tower")) + ": bodies: no entry named 'towr'"));
+  EXPECT_THAT(msg, HasSubstr("t.yaml:" + std::to_string(lineOf(text, "  - name: tower")) +
+                             ": bodies: no entry named 'towr'"));
   EXPECT_THAT(msg, HasSubstr("tower, nacelle, rotor"));
   EXPECT_THAT(msg, HasSubstr("--set bodies.towr.mass=1"));
   // A misspelt key is added, then refused by the reader like a misspelt key in the file.
@@ -90,14 +93,17 @@ TEST(CaseOverrides, ValueThatDoesNotParseIsAnError) {
   const std::string& text = smallTurbineCase();
   const std::string path = tmp.write("t.yaml", text);
   std::string msg = inputErrorOf([&] { readCase(path, {parseOverride("bodies.nacelle.mass=heavy")}); });
-  EXPECT_THAT(msg, HasSubstr("t.yaml:" + std::to_string(lineOf(text, "mass: 2.4e5")) +
-                             ": bodies.nacelle.mass: expected a number, got 'heavy' (value from --set bodies.nacelle.mass=heavy)"));
+  EXPECT_THAT(
+      msg,
+      HasSubstr("t.yaml:" + std::to_string(lineOf(text, "mass: 2.4e5")) +
+                ": bodies.nacelle.mass: expected a number, got 'heavy' (value from --set bodies.nacelle.mass=heavy)"));
   msg = inputErrorOf([&] { readCase(path, {parseOverride("dofs.azimuth.frozen=yes please")}); });
   EXPECT_THAT(msg, HasSubstr("dofs.azimuth.frozen: expected true or false"));
   msg = inputErrorOf([&] { readCase(path, {parseOverride("gravity=[0, 0")}); });
   EXPECT_THAT(msg, HasSubstr("t.yaml: gravity: --set gravity=[0, 0: the value is not valid YAML"));
   msg = inputErrorOf([&] { readCase(path, {parseOverride("bodies.tower.uniform={m: 1}")}); });
-  EXPECT_THAT(msg, HasSubstr("t.yaml:" + std::to_string(lineOf(text, "uniform:")) + ": bodies.tower.uniform: missing key 'EIy'"));
+  EXPECT_THAT(msg, HasSubstr("t.yaml:" + std::to_string(lineOf(text, "uniform:")) +
+                             ": bodies.tower.uniform: missing key 'EIy'"));
 }
 
 }  // namespace

@@ -67,7 +67,7 @@ StateSpaceModel plant() {
   p.B(3, 0) = -97 * 2.3e-8;  // generator torque [N m] on the rotor speed
   p.B(3, 1) = -0.9;          // pitch
   p.B(4, 1) = 0.3;
-  p.B(3, 2) = 0.05;          // wind
+  p.B(3, 2) = 0.05;  // wind
   p.B(4, 2) = 0.02;
   p.C = MatX::Zero(2, 2 * n);
   p.C(0, 3) = 97;  // GenSpeed
@@ -83,7 +83,8 @@ StateSpaceModel plant() {
 std::vector<std::complex<double>> sortedEigenvalues(const MatX& A) {
   Eigen::EigenSolver<MatX> es(A, false);
   std::vector<std::complex<double>> v(es.eigenvalues().data(), es.eigenvalues().data() + es.eigenvalues().size());
-  std::sort(v.begin(), v.end(), [](auto a, auto b) { return a.real() != b.real() ? a.real() < b.real() : a.imag() < b.imag(); });
+  std::sort(v.begin(), v.end(),
+            [](auto a, auto b) { return a.real() != b.real() ? a.real() < b.real() : a.imag() < b.imag(); });
   return v;
 }
 
@@ -142,7 +143,8 @@ TEST(ClosedLoop, PitchLoopWithFilterAndActuatorEqualsTransferFunctions) {
   const double wa = c.actuator_freq;
   const Poly act_n = {wa * wa}, act_d = {1, 2 * c.actuator_damping * wa, wa * wa};
   const Poly pi_n = {-c.pitch_kp, -c.pitch_ki}, pi_d = {1, 0};
-  const Realization kp = realize(mul(mul(mul(pi_n, lpf_n), notch_n), act_n), mul(mul(mul(pi_d, lpf_d), notch_d), act_d));
+  const Realization kp = realize(mul(mul(mul(pi_n, lpf_n), notch_n), act_n),
+                                 mul(mul(mul(pi_d, lpf_d), notch_d), act_d));
   const Realization kt = realize(mul(Poly{c.torque_slope}, mul(lpf_n, notch_n)), mul(lpf_d, notch_d));
   const std::complex<double> notch_pole(-nt.beta_den * nt.freq, nt.freq * std::sqrt(1 - nt.beta_den * nt.beta_den));
   expectSameEigenvalues(cl.A, independentClosedLoop(p, kt, kp), {-c.lpf_freq, notch_pole, std::conj(notch_pole)});
@@ -174,10 +176,12 @@ TEST(ClosedLoop, FloatingFeedbackEqualsTransferFunctions) {
   EXPECT_EQ(cl.x.size(), p.x.size() + 1 + 1 + 2 + 1 + 2);
   // Independent: K_θ = −(K_p s + K_i)/s · ω_c/(s + ω_c) on ω_g; K_fl = −K_fl ω_l²/(s² + 2ζω_l s + ω_l²) ·
   // s/(s + ω_h) · notch on v; both added at the pitch input.
-  const Realization kp = realize(mul(Poly{-c.pitch_kp, -c.pitch_ki}, Poly{c.lpf_freq}), mul(Poly{1, 0}, Poly{1, c.lpf_freq}));
+  const Realization kp = realize(mul(Poly{-c.pitch_kp, -c.pitch_ki}, Poly{c.lpf_freq}),
+                                 mul(Poly{1, 0}, Poly{1, c.lpf_freq}));
   const double wl = c.floating_lpf_freq, wh = c.floating_hpf_freq;
   const SpeedNotch& nt = c.floating_notches[0];
-  const Poly fl_n = mul(mul(Poly{-c.floating_kp * wl * wl}, Poly{1, 0}), Poly{1, 2 * nt.beta_num * nt.freq, nt.freq * nt.freq});
+  const Poly fl_n = mul(mul(Poly{-c.floating_kp * wl * wl}, Poly{1, 0}),
+                        Poly{1, 2 * nt.beta_num * nt.freq, nt.freq * nt.freq});
   const Poly fl_d = mul(mul(Poly{1, 2 * c.floating_lpf_damping * wl, wl * wl}, Poly{1, wh}),
                         Poly{1, 2 * nt.beta_den * nt.freq, nt.freq * nt.freq});
   const Realization kf = realize(fl_n, fl_d);

@@ -51,9 +51,9 @@ TuningTurbine nrel5mwTurbine() {
   // NREL5MW.yaml turbine_params.rotor_inertia plus GenIner (534.116 kg m², NRELOffshrBsline5MW_Onshore_ElastoDyn.dat)
   // · GBRatio² (97²), as ROSCO's turbine.py forms J; the sum is DISCON.IN's WE_Jtot 43702538.057.
   t.inertia = 38677040.613 + 534.116 * 97 * 97;
-  t.rotor_radius = 63;     // TipRad
-  t.air_density = 1.225;   // AirDens, cases/nrel5mw/Main_Onshore.fst
-  t.gearbox_ratio = 97;    // GBRatio
+  t.rotor_radius = 63;            // TipRad
+  t.air_density = 1.225;          // AirDens, cases/nrel5mw/Main_Onshore.fst
+  t.gearbox_ratio = 97;           // GBRatio
   t.rated_rotor_speed = 1.26711;  // NREL5MW.yaml
   t.rated_power = 5e6;
   t.v_min = 3;
@@ -99,7 +99,8 @@ TEST(ControllerTuning, ScheduleAtRatedFollowsTheSurface) {
   EXPECT_DOUBLE_EQ(s[0].tsr, 7.5);
   EXPECT_DOUBLE_EQ(s[0].pitch, 0.0);
   // ∂Q/∂β < 0 above rated (pitching to feather unloads the rotor). Issue 43 quotes ROSCO's ∂Q/∂β at
-  // 14 m/s as −30.5 MN m/rad (at whirl's trimmed 12.1 rpm, 8.668°; here on ROSCO's schedule), interpolated between the schedule's 13.67 and 14.12 m/s.
+  // 14 m/s as −30.5 MN m/rad (at whirl's trimmed 12.1 rpm, 8.668°; here on ROSCO's schedule), interpolated between the
+  // schedule's 13.67 and 14.12 m/s.
   for (const TuningPoint& p : s) {
     if (p.above_rated && p.wind_speed > 12) {
       EXPECT_LT(p.dq_dpitch, 0) << p.wind_speed;

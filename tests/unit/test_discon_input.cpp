@@ -79,9 +79,10 @@ TEST(DisconInput, Nrel5mwShippedFile) {
   EXPECT_EQ(c.at("F_LPFCornerFreq").line, 38);
   // The wind-speed estimator (WE_Mode = 2) is the one active mode whirl replaces by an assumption.
   ASSERT_EQ(c.notes.size(), 1u);
-  EXPECT_EQ(c.notes[0], disconFile().string() + ":20: WE_Mode: 2: the wind-speed estimator's dynamics are not "
-                                                "modelled: its estimate is taken equal to the hub-height wind (its "
-                                                "steady state)");
+  EXPECT_EQ(c.notes[0], disconFile().string() +
+                            ":20: WE_Mode: 2: the wind-speed estimator's dynamics are not "
+                            "modelled: its estimate is taken equal to the hub-height wind (its "
+                            "steady state)");
 }
 
 TEST(DisconInput, RoscoLookups) {
@@ -177,8 +178,8 @@ TEST(DisconInputErrors, MalformedLines) {
 
 TEST(DisconInput, RoscoDeckNamesTheController) {
   // cases/nrel5mw/Main_ROSCO.fst: ServoDyn PCMode = VSContrl = 5, DLL_InFile = DISCON.IN.
-  const std::optional<RoscoController> c =
-      whirl::io::readDeckController(nrel5mwDir() / "Main_ROSCO.fst", {"HWindSpeed=9"});
+  const std::optional<RoscoController> c = whirl::io::readDeckController(nrel5mwDir() / "Main_ROSCO.fst",
+                                                                         {"HWindSpeed=9"});
   ASSERT_TRUE(c.has_value());
   EXPECT_EQ(c->VS_ControlMode, 2);
   EXPECT_EQ(c->file, (nrel5mwDir() / "rosco" / "DISCON.IN").string());
@@ -186,8 +187,8 @@ TEST(DisconInput, RoscoDeckNamesTheController) {
   EXPECT_FALSE(whirl::io::readDeckController(nrel5mwDir() / "Main_ROSCO.fst", {"VSContrl=1"}));
   EXPECT_FALSE(whirl::io::readDeckController(nrel5mwDir() / "Main_Aero.fst", {}));
   // PCMode = 0: the pitch is not the library's.
-  const std::optional<RoscoController> torque_only =
-      whirl::io::readDeckController(nrel5mwDir() / "Main_ROSCO.fst", {"PCMode=0"});
+  const std::optional<RoscoController> torque_only = whirl::io::readDeckController(nrel5mwDir() / "Main_ROSCO.fst",
+                                                                                   {"PCMode=0"});
   ASSERT_TRUE(torque_only.has_value());
   EXPECT_EQ(torque_only->PC_ControlMode, 0);
   EXPECT_THAT(torque_only->notes.back(), HasSubstr(":7: PCMode: 0: the pitch is not the controller's"));

@@ -16,7 +16,8 @@ using cd = std::complex<double>;
 
 std::vector<cd> sorted(const Eigen::VectorXcd& v) {
   std::vector<cd> s(v.data(), v.data() + v.size());
-  std::sort(s.begin(), s.end(), [](cd a, cd b) { return a.imag() != b.imag() ? a.imag() < b.imag() : a.real() < b.real(); });
+  std::sort(s.begin(), s.end(),
+            [](cd a, cd b) { return a.imag() != b.imag() ? a.imag() < b.imag() : a.real() < b.real(); });
   return s;
 }
 

@@ -79,7 +79,8 @@ TEST(ElastoDynBladeShapes, CurvaturesAreThePolynomialRotatedByTheTwist) {
 TEST(ElastoDynBladeShapes, WithoutTwistTheNodeRuleRecoversThePolynomial) {
   io::ElastoDynBlade f = nrel5mw().blades[0];
   for (std::size_t c = 0; c < f.distributed.names.size(); ++c)
-    if (f.distributed.names[c] == "StrcTwst") std::fill(f.distributed.values[c].begin(), f.distributed.values[c].end(), 0.0);
+    if (f.distributed.names[c] == "StrcTwst")
+      std::fill(f.distributed.values[c].begin(), f.distributed.values[c].end(), 0.0);
   const ElastoDynBladeBeam b = elastoDynBladeBeam(f, 61.5, 200, 0.0);
   for (int k = 0; k < 3; ++k) {
     const ShapeValue v = b.shapes[k]->eval(61.5);
@@ -95,14 +96,17 @@ TEST(ElastoDynBladeShapes, TunersAndModalDampingAsElastoDyn) {
   f.FlStTunr = {1.1, 0.9};
   const ElastoDynBladeBeam tuned = elastoDynBladeBeam(f, 61.5, 17, 0.0), plain = blade();
   EXPECT_NEAR(tuned.generalized_stiffness(kFlap1, kFlap1), 1.1 * plain.generalized_stiffness(kFlap1, kFlap1), 1e-9);
-  EXPECT_NEAR(tuned.generalized_stiffness(kFlap1, kFlap2), std::sqrt(0.99) * plain.generalized_stiffness(kFlap1, kFlap2), 1e-9);
+  EXPECT_NEAR(tuned.generalized_stiffness(kFlap1, kFlap2),
+              std::sqrt(0.99) * plain.generalized_stiffness(kFlap1, kFlap2), 1e-9);
   EXPECT_NEAR(tuned.generalized_stiffness(kEdge1, kEdge1), plain.generalized_stiffness(kEdge1, kEdge1), 1e-9);
   // D(i, l) = 2 ζ_l K(i, l) √(M_l/K_ll): on the diagonal 2 ζ √(K M).
   const MatX K = plain.generalized_stiffness;
   const MatX D = elastoDynModalDamping(K, plain.generalized_mass, plain.damping_ratio);
   for (int k = 0; k < 3; ++k)
     EXPECT_NEAR(D(k, k), 2 * 0.00477465 * std::sqrt(K(k, k) * plain.generalized_mass(k)), 1e-9 * D(k, k));
-  EXPECT_NEAR(D(kFlap2, kFlap1), 2 * 0.00477465 * K(kFlap2, kFlap1) * std::sqrt(plain.generalized_mass(kFlap1) / K(kFlap1, kFlap1)), 1e-12);
+  EXPECT_NEAR(D(kFlap2, kFlap1),
+              2 * 0.00477465 * K(kFlap2, kFlap1) * std::sqrt(plain.generalized_mass(kFlap1) / K(kFlap1, kFlap1)),
+              1e-12);
 }
 
 }  // namespace

@@ -24,10 +24,11 @@ TEST(ElastoDynModel, DofNamesAndSwitchesOfTheNrel5mwFile) {
   const Model m = readElastoDynModel(fst(), {});
   std::vector<std::string> names;
   for (const Dof& d : m.dofs) names.push_back(d.name);
-  std::vector<std::string> expected{"tower FA 1", "tower SS 1", "tower FA 2", "tower SS 2", "yaw",
-                                    "generator azimuth", "drivetrain"};
+  std::vector<std::string> expected{"tower FA 1", "tower SS 1",        "tower FA 2", "tower SS 2",
+                                    "yaw",        "generator azimuth", "drivetrain"};
   for (int b = 1; b <= 3; ++b)
-    for (const char* s : {"pitch", "flap 1", "edge 1", "flap 2"}) expected.push_back("blade " + std::to_string(b) + " " + s);
+    for (const char* s : {"pitch", "flap 1", "edge 1", "flap 2"})
+      expected.push_back("blade " + std::to_string(b) + " " + s);
   EXPECT_EQ(names, expected);
   for (const Dof& d : m.dofs) EXPECT_EQ(d.frozen, d.name.find("pitch") != std::string::npos) << d.name;
   const Dof& az = m.dofs[*m.findDof("generator azimuth")];
@@ -39,7 +40,8 @@ TEST(ElastoDynModel, DofNamesAndSwitchesOfTheNrel5mwFile) {
     EXPECT_TRUE(m.findInput(in).has_value()) << in;
   EXPECT_EQ(m.inputs[*m.findInput("collective pitch")].dofs.size(), 3u);
   EXPECT_EQ(m.inputs[*m.findInput("blade 2 pitch")].blade, 1);
-  EXPECT_EQ(m.outputs.size(), 22u);  // 15 + BldPitch1..3, TwrBsMyt, NcIMURAys (issue 41), YawBrTVxp, NcIMURVys (issue 43)
+  EXPECT_EQ(m.outputs.size(),
+            22u);  // 15 + BldPitch1..3, TwrBsMyt, NcIMURAys (issue 41), YawBrTVxp, NcIMURVys (issue 43)
   ASSERT_EQ(m.springs.size(), 2u);  // drivetrain, yaw (ServoDyn)
   EXPECT_DOUBLE_EQ(m.springs[0].k, 8.67637e8);
   EXPECT_DOUBLE_EQ(m.springs[0].c, 6.215e6);
@@ -50,9 +52,9 @@ TEST(ElastoDynModel, DofNamesAndSwitchesOfTheNrel5mwFile) {
 }
 
 TEST(ElastoDynModel, SwitchedOffDofsAreFrozenAtTheirInitialValues) {
-  const Model m = readElastoDynModel(
-      fst(), {"GenDOF=False", "DrTrDOF=False", "FlapDOF2=False", "TwSSDOF2=False", "YawDOF=False", "EdgeDOF=False",
-              "NacYaw=10", "Azimuth=120", "AzimB1Up=90", "BlPitch(2)=5", "RotSpeed=12.1"});
+  const Model m = readElastoDynModel(fst(), {"GenDOF=False", "DrTrDOF=False", "FlapDOF2=False", "TwSSDOF2=False",
+                                             "YawDOF=False", "EdgeDOF=False", "NacYaw=10", "Azimuth=120", "AzimB1Up=90",
+                                             "BlPitch(2)=5", "RotSpeed=12.1"});
   const std::vector<std::string> frozen{"tower SS 2", "yaw", "generator azimuth", "drivetrain"};
   for (const Dof& d : m.dofs) {
     const bool off = std::find(frozen.begin(), frozen.end(), d.name) != frozen.end() ||
@@ -115,7 +117,8 @@ TEST(ElastoDynModel, GeometryFollowsElastoDynsFrames) {
   // hub height TowerHt + Twr2Shft + OverHang sin(ShftTilt) = 90.0 m (design report).
   const Vec3 c1(std::cos(tilt), 0, std::sin(tilt)), c2(-std::sin(tilt), 0, std::cos(tilt)), Y = Vec3::UnitY();
   const Pose hub = poseOf(m, ws, "hub");
-  EXPECT_NEAR((hub.r - Vec3(overhang * std::cos(tilt), 0, tower_ht + twr2shft + overhang * std::sin(tilt))).norm(), 0, 1e-12);
+  EXPECT_NEAR((hub.r - Vec3(overhang * std::cos(tilt), 0, tower_ht + twr2shft + overhang * std::sin(tilt))).norm(), 0,
+              1e-12);
   EXPECT_NEAR(hub.r.z(), 90.0, 1e-5);
   EXPECT_NEAR((hub.R.col(0) - c1).norm(), 0, 1e-12);
   // Blade k (ElastoDyn, blade 1 up): g3' = −sin γ g2 + cos γ g3 with g2 = Y, g3 = c2, γ = 2π(k−1)/3;
@@ -130,7 +133,8 @@ TEST(ElastoDynModel, GeometryFollowsElastoDynsFrames) {
     EXPECT_NEAR((tip - (hub.r + 63.0 * i3)).norm(), 0, 1e-12) << "tip of blade " << k + 1;
     // Pitch: j1 = cos θ i1 − sin θ i2 (body y), i2 = g2'.
     const double th = k == 0 ? 10 * deg : 0.0;
-    EXPECT_NEAR((blade.R.col(1) - (std::cos(th) * i1 - std::sin(th) * g2p)).norm(), 0, 1e-12) << "j1 of blade " << k + 1;
+    EXPECT_NEAR((blade.R.col(1) - (std::cos(th) * i1 - std::sin(th) * g2p)).norm(), 0, 1e-12)
+        << "j1 of blade " << k + 1;
   }
   EXPECT_LT(poseOf(m, ws, "blade 1").R.col(0).dot(c1), 0);  // coned upwind of the rotor plane: PreCone < 0
 }

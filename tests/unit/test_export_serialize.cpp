@@ -18,8 +18,14 @@ double tricky(int i) {
   std::uint64_t nan_bits = 0xfff8'0000'dead'beefULL;
   double nan;
   std::memcpy(&nan, &nan_bits, sizeof nan);
-  const double v[] = {0.1 * i - 1, -0.0, std::numeric_limits<double>::denorm_min() * (i + 1), nan,
-                      std::numeric_limits<double>::infinity(), 1.0 / 3 + i, 0.5f, -1e300 * i};
+  const double v[] = {0.1 * i - 1,
+                      -0.0,
+                      std::numeric_limits<double>::denorm_min() * (i + 1),
+                      nan,
+                      std::numeric_limits<double>::infinity(),
+                      1.0 / 3 + i,
+                      0.5f,
+                      -1e300 * i};
   return v[i % 8];
 }
 
@@ -33,8 +39,11 @@ StateSpaceModel model(int nx, int nu, int ny, int seed, bool with_wind) {
   for (int i = 0; i < nu; ++i) s.u.push_back(variable(seed + 10 + i));
   for (int i = 0; i < ny; ++i) s.y.push_back(variable(seed + 20 + i));
   s.xdot_op = VecX::NullaryExpr(nx, [&](Eigen::Index i) { return tricky(seed + static_cast<int>(i)); });
-  auto fill = [&](int r, int c) { return MatX::NullaryExpr(r, c, [&](Eigen::Index i, Eigen::Index j) {
-                                    return tricky(seed + static_cast<int>(3 * i + 5 * j)); }); };
+  auto fill = [&](int r, int c) {
+    return MatX::NullaryExpr(r, c, [&](Eigen::Index i, Eigen::Index j) {
+      return tricky(seed + static_cast<int>(3 * i + 5 * j));
+    });
+  };
   s.A = fill(nx, nx);
   s.B = fill(nx, nu);
   s.C = fill(ny, nx);

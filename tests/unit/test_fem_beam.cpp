@@ -54,7 +54,10 @@ TEST(FemBeam, CantileverFrequenciesMatchClosedForms) {
   int found = 0;
   for (double e : expected)
     for (Eigen::Index k = 0; k < f.size(); ++k)
-      if (near(f(k), e, 2e-3)) { ++found; break; }
+      if (near(f(k), e, 2e-3)) {
+        ++found;
+        break;
+      }
   EXPECT_EQ(found, 4);
   bool axial = false, torsion = false;
   for (Eigen::Index k = 0; k < f.size(); ++k) {
@@ -129,14 +132,15 @@ TEST(FemBeam, CraigBamptonConvergesToTheFullModel) {
   };
   const VecX few = reduced(6), all = reduced(d.nfree() - 6);
   for (int k = 0; k < 8; ++k) {
-    EXPECT_GE(few(k), full(k) * (1 - 1e-9));              // Rayleigh–Ritz: upper bounds
-    EXPECT_NEAR(all(k), full(k), 1e-8 * full(k));        // all interior modes: exact
+    EXPECT_GE(few(k), full(k) * (1 - 1e-9));       // Rayleigh–Ritz: upper bounds
+    EXPECT_NEAR(all(k), full(k), 1e-8 * full(k));  // all interior modes: exact
   }
 }
 
 TEST(FemBeam, TimoshenkoLowersShortBeamFrequencies) {
   const double L = 2.0;
-  const VecX eb = hz(cantilever(20, L)), stiff = hz(cantilever(20, L, true, 1e15)), soft = hz(cantilever(20, L, true, 5e7));
+  const VecX eb = hz(cantilever(20, L)), stiff = hz(cantilever(20, L, true, 1e15)),
+             soft = hz(cantilever(20, L, true, 5e7));
   EXPECT_NEAR(stiff(0), eb(0), 1e-6 * eb(0));
   EXPECT_LT(soft(0), 0.99 * eb(0));
 }

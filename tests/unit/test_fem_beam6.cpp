@@ -80,7 +80,7 @@ TEST(FemBeam6, UniformCantileverClosedForms) {
   EXPECT_NEAR(c.of(3, 2) / bend(b2, 2e7), 1, 1e-3);
   EXPECT_NEAR(c.of(1, 1) / wave(1, 5e6, 0.7), 1, 1e-4);  // torsion
   EXPECT_NEAR(c.of(1, 2) / wave(2, 5e6, 0.7), 1, 5e-4);
-  EXPECT_NEAR(c.of(0, 1) / wave(1, 1e9, m), 1, 1e-4);    // extension
+  EXPECT_NEAR(c.of(0, 1) / wave(1, 1e9, m), 1, 1e-4);  // extension
 }
 
 TEST(FemBeam6, ConvergesAsElementLengthSquared) {
@@ -191,7 +191,7 @@ TEST(FemBeam6, BendTwistStiffnessCouplingStatic) {
   const Eigen::Vector2d kappa = Ck.ldlt().solve(Eigen::Vector2d(0, 1e4));
   EXPECT_NEAR(u(n - 6 - 3), L * kappa(0), 1e-12);  // tip twist θ_x
   EXPECT_NEAR(u(n - 6 - 1), L * kappa(1), 1e-12);  // tip θ_z
-  EXPECT_GT(std::abs(u(n - 6 - 3)), 1e-4);          // the coupling does twist it
+  EXPECT_GT(std::abs(u(n - 6 - 3)), 1e-4);         // the coupling does twist it
 }
 
 }  // namespace

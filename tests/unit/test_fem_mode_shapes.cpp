@@ -200,7 +200,8 @@ TEST(FemModeShapes, RefusesAMeshTooLargeForTheDenseSolver) {
     beamModes(in, 1, 0);
     ADD_FAILURE() << "a mesh of " << stations - 1 << " elements was accepted";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("the FE mesh has " + std::to_string(stations - 1) + " elements"), std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("the FE mesh has " + std::to_string(stations - 1) + " elements"),
+              std::string::npos)
         << e.what();
   }
 }

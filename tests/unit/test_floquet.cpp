@@ -4,11 +4,11 @@
 
 #include "linearize/mbc.hpp"
 #include "linearize/periodic.hpp"
-#include "modal/modes.hpp"
-#include "tests/support/rotor_model.hpp"
 #include "modal/eigen.hpp"
 #include "modal/floquet.hpp"
+#include "modal/modes.hpp"
 #include "src/model/error.hpp"
+#include "tests/support/rotor_model.hpp"
 
 namespace {
 

@@ -15,7 +15,9 @@ namespace whirl {
 namespace {
 
 std::vector<std::complex<double>> sorted(std::vector<std::complex<double>> v) {
-  std::sort(v.begin(), v.end(), [](auto a, auto b) { return std::abs(a) != std::abs(b) ? std::abs(a) < std::abs(b) : std::arg(a) < std::arg(b); });
+  std::sort(v.begin(), v.end(), [](auto a, auto b) {
+    return std::abs(a) != std::abs(b) ? std::abs(a) < std::abs(b) : std::arg(a) < std::arg(b);
+  });
   return v;
 }
 

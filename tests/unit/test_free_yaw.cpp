@@ -12,8 +12,8 @@
 #include "linearize/periodic.hpp"
 #include "linearize/unrestrained.hpp"
 #include "modal/rotor_modes.hpp"
-#include "src/turbine/elastodyn_model.hpp"
 #include "src/model/error.hpp"
+#include "src/turbine/elastodyn_model.hpp"
 
 namespace whirl {
 namespace {

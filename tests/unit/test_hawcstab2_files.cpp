@@ -51,8 +51,8 @@ Mode mode(double f, double zeta, std::complex<double> tower_fa, std::complex<dou
   tower.position = Mat3X::Zero(3, 2);
   tower.R << 0, 0, 1, 0, -1, 0, 1, 0, 0;  // ElastoDyn's tower: x up, y = −ground Y, z = ground X
   tower.u = Eigen::MatrixXcd::Zero(2, 6);
-  tower.u(1, 2) = tower_fa;   // fore-aft: body z
-  tower.u(1, 1) = 0.1;        // side-side: body y = −ground Y
+  tower.u(1, 2) = tower_fa;  // fore-aft: body z
+  tower.u(1, 1) = 0.1;       // side-side: body y = −ground Y
   m.motion.bodies.push_back(tower);
   m.motion.collective = Eigen::MatrixXcd::Zero(2, 6);
   m.motion.forward = Eigen::MatrixXcd::Zero(2, 6);
@@ -133,8 +133,8 @@ TEST(Hawcstab2Files, AmpReadsBackByCampbellViewersRules) {
   EXPECT_NEAR(std::abs(ph0(0, 0)), 180.0, 5e-4);
   EXPECT_NEAR(amp0(0, 1), 1.0, 5e-7);
   EXPECT_NEAR(ph0(0, 1), 0.3 * 180 / std::numbers::pi, 5e-5);  // 0.171887E+02: ±5e-5
-  EXPECT_NEAR(amp0(0, 10), 0.25, 5e-8);  // BW flap
-  EXPECT_NEAR(amp0(0, 9), 0.0, 1e-12);   // Sym flap
+  EXPECT_NEAR(amp0(0, 10), 0.25, 5e-8);                        // BW flap
+  EXPECT_NEAR(amp0(0, 9), 0.0, 1e-12);                         // Sym flap
   // Mode 2: BW flap 1 is the largest, at −2 rad.
   EXPECT_NEAR(amp0(1, 10), 1.0, 5e-7);
   EXPECT_NEAR(ph0(1, 10), -2 * 180 / std::numbers::pi, 5e-4);  // -0.114592E+03: ±5e-4

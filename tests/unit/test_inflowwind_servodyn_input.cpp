@@ -111,10 +111,9 @@ TEST(ServoDynInput, ToolboxSimpleVariableSpeedLaw) {
 }
 
 TEST(ServoDynInput, ControllersInUserCodeRefusedOnlyForTheTorqueLaw) {
-  const std::pair<const char*, std::string> cases[] = {
-      {"3", "torque from the user routine UserVSCont"},
-      {"4", "torque from Simulink/LabVIEW"},
-      {"5", "torque from a Bladed-style controller DLL"}};
+  const std::pair<const char*, std::string> cases[] = {{"3", "torque from the user routine UserVSCont"},
+                                                       {"4", "torque from Simulink/LabVIEW"},
+                                                       {"5", "torque from a Bladed-style controller DLL"}};
   for (const auto& [value, what] : cases) {
     SCOPED_TRACE(value);
     AeroScratch s;

@@ -46,18 +46,20 @@ class YamlControlCharacters : public ::testing::Test {
 
 TEST_F(YamlControlCharacters, EveryKindOfNameIsRefused) {
   expect("name: small turbine", "name: \"a\\n!touch whirl_pwned\\n#\"", "name: ");  // the case (plot title)
-  expect("  - name: nacelle", "  - name: \"nac\\nelle\"", ".name: ");                  // a body
-  expect("dof: azimuth}", "dof: \"azi\\tmuth\"}", "joint.dof: ");                      // a DOF (tab too)
-  expect("{name: tower FA 1,", "{name: \"tower\\rFA 1\",", ".name: ");                 // a shape = DOF
-  expect("{name: thrust, value", "{name: \"thr\\eust\", value", ".name: ");            // an input (escape)
-  expect("{name: top, x: 80}", "{name: \"t\\x7fop\", x: 80}", ".name: ");              // a point (delete)
+  expect("  - name: nacelle", "  - name: \"nac\\nelle\"", ".name: ");               // a body
+  expect("dof: azimuth}", "dof: \"azi\\tmuth\"}", "joint.dof: ");                   // a DOF (tab too)
+  expect("{name: tower FA 1,", "{name: \"tower\\rFA 1\",", ".name: ");              // a shape = DOF
+  expect("{name: thrust, value", "{name: \"thr\\eust\", value", ".name: ");         // an input (escape)
+  expect("{name: top, x: 80}", "{name: \"t\\x7fop\", x: 80}", ".name: ");           // a point (delete)
 }
 
 TEST_F(YamlControlCharacters, OutputNamesAndUnitsAreRefused) {
-  const std::string base = smallTurbineCase() + "outputs:\n  - {name: azimuth angle, type: dof, dof: azimuth, unit: rad}\n";
-  for (const auto& [from, to, key] : {std::tuple<std::string, std::string, std::string>{
-                                          "name: azimuth angle", "name: \"azimuth\\nangle\"", ".name: "},
-                                      {"unit: rad", "unit: \"rad\\n\"", ".unit: "}}) {
+  const std::string base = smallTurbineCase() +
+                           "outputs:\n  - {name: azimuth angle, type: dof, dof: azimuth, unit: rad}\n";
+  for (const auto& [from, to, key] :
+       {std::tuple<std::string, std::string, std::string>{"name: azimuth angle", "name: \"azimuth\\nangle\"",
+                                                          ".name: "},
+        {"unit: rad", "unit: \"rad\\n\"", ".unit: "}}) {
     const std::string text = replaced(base, from, to);
     const std::string path = tmp.write("bad.yaml", text);
     expectRefused(inputErrorOf([&] { readCase(path); }), path, lineOf(text, to), key);
@@ -79,7 +81,8 @@ TEST_F(YamlControlCharacters, FileNameFallbackIsRefused) {
 
 TEST_F(YamlControlCharacters, MultiLineDescriptionStaysAllowed) {
   // `description:` is free text, never written anywhere: a block scalar keeps working.
-  const std::string text = replaced(smallTurbineCase(), "gravity: 9.81", "description: |\n  two\n  lines\ngravity: 9.81");
+  const std::string text = replaced(smallTurbineCase(), "gravity: 9.81",
+                                    "description: |\n  two\n  lines\ngravity: 9.81");
   EXPECT_EQ(readCase(tmp.write("ok.yaml", text)).ndof(), 2);
 }
 
@@ -146,8 +149,8 @@ TEST(TrackingControlCharacters, RenameWithControlCharacterIsRefused) {
   std::vector<CampbellPoint> pts{p, p};
   auto lines = trackModes(pts);
   ASSERT_EQ(lines.size(), 1u);
-  const std::string msg =
-      inputErrorOf([&] { applyTrackingOverridesText("# fixes\nrename,a,b\x1b[31m\n", "fix.csv", pts, lines); });
+  const std::string msg = inputErrorOf(
+      [&] { applyTrackingOverridesText("# fixes\nrename,a,b\x1b[31m\n", "fix.csv", pts, lines); });
   expectRefused(msg, "fix.csv", 2, "");
 }
 

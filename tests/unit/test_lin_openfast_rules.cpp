@@ -53,10 +53,10 @@ const Expected kInputs[] = {
     {"collective pitch", "ED Extended input: collective blade-pitch command, rad", 1},
 };
 const Expected kOutputs[] = {
-    {"GenSpeed", "ED GenSpeed, (rpm)", kRpm},   {"RotSpeed", "ED RotSpeed, (rpm)", kRpm},
-    {"NacYaw", "ED NacYaw, (deg)", kDeg},       {"TTDspFA", "ED TTDspFA, (m)", 1},
-    {"YawBrTAxp", "ED YawBrTAxp, (m/s^2)", 1},  {"BldPitch1", "ED BldPitch1, (deg)", kDeg},
-    {"BldPitch3", "ED BldPitch3, (deg)", kDeg}, {"TwrBsMyt", "ED TwrBsMyt, (kN-m)", 1e-3},
+    {"GenSpeed", "ED GenSpeed, (rpm)", kRpm},       {"RotSpeed", "ED RotSpeed, (rpm)", kRpm},
+    {"NacYaw", "ED NacYaw, (deg)", kDeg},           {"TTDspFA", "ED TTDspFA, (m)", 1},
+    {"YawBrTAxp", "ED YawBrTAxp, (m/s^2)", 1},      {"BldPitch1", "ED BldPitch1, (deg)", kDeg},
+    {"BldPitch3", "ED BldPitch3, (deg)", kDeg},     {"TwrBsMyt", "ED TwrBsMyt, (kN-m)", 1e-3},
     {"NcIMURAys", "ED NcIMURAys, (deg/s^2)", kDeg},
 };
 

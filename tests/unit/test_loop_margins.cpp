@@ -78,7 +78,8 @@ TEST(LoopMargins, BrokenPitchLoopIsControllerTimesPlant) {
     Eigen::MatrixXcd M = -p.A.cast<cd>();
     M.diagonal().array() += jw;
     const cd G = (p.C.cast<cd>() * M.partialPivLu().solve(p.B.col(1).cast<cd>()))(0, 0);
-    const cd K = (-c.pitch_kp - c.pitch_ki / jw) * (c.lpf_freq / (jw + c.lpf_freq)) * (c.actuator_freq / (jw + c.actuator_freq));
+    const cd K = (-c.pitch_kp - c.pitch_ki / jw) * (c.lpf_freq / (jw + c.lpf_freq)) *
+                 (c.actuator_freq / (jw + c.actuator_freq));
     const cd L = -K * G;
     const cd ours = 1.0 / sensitivityAt(s, w) - 1.0;
     EXPECT_LE(std::abs(ours - L), 1e-10 * std::abs(L)) << w;
@@ -101,8 +102,10 @@ TEST(LoopMargins, ModalEvaluationEqualsTheLuPath) {
     const LoopSensitivity s = loopSensitivity(p, c, loop);
     const LoopMargins modal = loopMargins(s);
     const LoopMargins lu = loopMargins([&](double w) { return sensitivityAt(s, w); });
-    for (auto [a, b] : {std::pair{modal.gain_margin, lu.gain_margin}, {modal.phase_margin, lu.phase_margin},
-                        {modal.delay_margin, lu.delay_margin}, {modal.peak_sensitivity, lu.peak_sensitivity}}) {
+    for (auto [a, b] : {std::pair{modal.gain_margin, lu.gain_margin},
+                        {modal.phase_margin, lu.phase_margin},
+                        {modal.delay_margin, lu.delay_margin},
+                        {modal.peak_sensitivity, lu.peak_sensitivity}}) {
       if (std::isinf(b)) {
         EXPECT_EQ(a, b);
       } else {

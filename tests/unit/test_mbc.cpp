@@ -10,8 +10,8 @@
 #include <numbers>
 #include <vector>
 
-#include "modal/eigen.hpp"
 #include "linearize/mbc.hpp"
+#include "modal/eigen.hpp"
 #include "src/model/error.hpp"
 
 namespace {
@@ -121,10 +121,9 @@ TEST_P(IsotropicRotorTest, WhirlSplitAndTimeInvariance) {
 
   std::vector<std::string> names;
   for (int b = 1; b <= N; ++b) names.push_back(whirl::toString(r.states[b]));
-  const std::vector<std::vector<std::string>> expected_names = {
-      {"collective", "cos", "sin"},
-      {"collective", "cos", "sin", "differential"},
-      {"collective", "cos", "sin", "cos 2", "sin 2"}};
+  const std::vector<std::vector<std::string>> expected_names = {{"collective", "cos", "sin"},
+                                                                {"collective", "cos", "sin", "differential"},
+                                                                {"collective", "cos", "sin", "cos 2", "sin 2"}};
   EXPECT_EQ(names, expected_names[N - 3]);
   EXPECT_EQ(whirl::toString(r.states[nd + 1]), "collective");  // rate of the collective DOF
   EXPECT_EQ(whirl::toString(r.inputs[0]), "fixed");

@@ -52,10 +52,14 @@ TEST(MbcOpenFast, Rotating9rpmMatchesMbc3) {
     const char* mode;
     double freq_hz, damping_ratio;
   };
-  const Row ref[] = {{"1st flap BW", 0.5878, 0.6311},        {"1st flap collective", 0.7225, 0.5253},
-                     {"1st flap FW", 0.8416, 0.4401},        {"1st edge BW", 0.9371, 0.0163},
-                     {"1st edge FW", 1.2371, 0.0124},        {"2nd flap BW", 1.8373, 0.1555},
-                     {"2nd flap collective", 1.9870, 0.1429}, {"2nd flap FW", 2.1337, 0.1338},
+  const Row ref[] = {{"1st flap BW", 0.5878, 0.6311},
+                     {"1st flap collective", 0.7225, 0.5253},
+                     {"1st flap FW", 0.8416, 0.4401},
+                     {"1st edge BW", 0.9371, 0.0163},
+                     {"1st edge FW", 1.2371, 0.0124},
+                     {"2nd flap BW", 1.8373, 0.1555},
+                     {"2nd flap collective", 1.9870, 0.1429},
+                     {"2nd flap FW", 2.1337, 0.1338},
                      {"1st edge collective (with generator)", 2.2561, 0.0226}};
   const double tol = 0.5e-4 + 1e-12;
   const auto p = campbellPoint({"rotating-9rpm/Main.1.lin", "rotating-9rpm/Main.12.lin", "rotating-9rpm/Main.24.lin"});
@@ -115,7 +119,9 @@ TEST(MbcOpenFast, Ws03AzimuthDependenceMostlyRemoved) {
 
 TEST(MbcOpenFast, BladeNumbersInDescriptions) {
   using whirl::bladeNumberInDescription;
-  EXPECT_EQ(bladeNumberInDescription("ED 1st flapwise bending-mode DOF of blade 2 (internal DOF index = DOF_BF(2,1)), m"), 2);
+  EXPECT_EQ(bladeNumberInDescription(
+                "ED 1st flapwise bending-mode DOF of blade 2 (internal DOF index = DOF_BF(2,1)), m"),
+            2);
   EXPECT_EQ(bladeNumberInDescription("ED Blade 3 pitch command, rad"), 3);
   EXPECT_EQ(bladeNumberInDescription("AD B1N3Alpha, deg"), 1);
   EXPECT_EQ(bladeNumberInDescription("BD_2 FE node 3 translational displacement in X, m"), 2);

@@ -22,15 +22,15 @@ TEST(ModeCompare, NameTakesTheNearestModeOfThatName) {
 TEST(ModeCompare, RowsSharingANameSetMatchSortedAgainstSorted) {
   // The reference lists the side-side mode first and the higher frequency first: the set is matched
   // by sorted frequency, whatever the names within it.
-  const auto rows =
-      compareModes(kModes, {{"FA", 0.33, "tower FA 1|tower SS 1"}, {"SS", 0.30, "tower FA 1|tower SS 1"}}, 0.05);
+  const auto rows = compareModes(kModes, {{"FA", 0.33, "tower FA 1|tower SS 1"}, {"SS", 0.30, "tower FA 1|tower SS 1"}},
+                                 0.05);
   EXPECT_EQ(rows[0].match->name, "tower FA 1");  // 0.33 ↔ the higher, 0.34
   EXPECT_EQ(rows[1].match->name, "tower SS 1");  // 0.30 ↔ the lower, 0.31
 }
 
 TEST(ModeCompare, StarNearestUsedOnceMissingAndTolerance) {
-  const auto rows = compareModes(kModes,
-                                 {{"drive", 1.60, "drivetrain"}, {"any", 1.69, "*"}, {"edge", 1.0, "edge 1"}}, 0.05);
+  const auto rows = compareModes(kModes, {{"drive", 1.60, "drivetrain"}, {"any", 1.69, "*"}, {"edge", 1.0, "edge 1"}},
+                                 0.05);
   EXPECT_NEAR(rows[0].rel_error, 0.0625, 1e-12);  // (1.70 − 1.60)/1.60, beyond 5 %
   EXPECT_FALSE(rows[0].ok);
   EXPECT_NE(rows[1].match->name, "drivetrain");  // already used by the first row

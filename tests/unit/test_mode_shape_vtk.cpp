@@ -19,8 +19,8 @@
 #include "src/turbine/elastodyn_model.hpp"
 #include "src/writers/campbell_output.hpp"
 #include "src/writers/mode_shape_vtk.hpp"
-#include "tests/unit/openfast_test_util.hpp"
 #include "test_util.hpp"
+#include "tests/unit/openfast_test_util.hpp"
 
 namespace whirl {
 namespace {
@@ -300,7 +300,8 @@ TEST(ModeShapeVtk, Nrel5mwFlapWhirlIsDrawnAsTowerShaftAndThreeBlades) {
   {
     Vec3 lo = Vec3::Constant(1e300), hi = -lo;
     for (const BodyMotion& b : flap->motion.bodies)
-      for (Eigen::Index k = 0; k < b.position.cols(); ++k) lo = lo.cwiseMin(b.position.col(k)), hi = hi.cwiseMax(b.position.col(k));
+      for (Eigen::Index k = 0; k < b.position.cols(); ++k)
+        lo = lo.cwiseMin(b.position.col(k)), hi = hi.cwiseMax(b.position.col(k));
     size = (hi - lo).norm();
   }
   EXPECT_GT(size, 120);  // 87.6 m hub height + 63 m rotor radius
@@ -312,8 +313,8 @@ TEST(ModeShapeVtk, Nrel5mwFlapWhirlIsDrawnAsTowerShaftAndThreeBlades) {
   for (std::size_t f = 1; f < files.size(); ++f) {
     const PolyData pd = checkPolyData(files[f].second);
     ASSERT_EQ(pd.cells.size(), 5u);
-    EXPECT_EQ(pd.cells[0].size(), 11u);  // tower nodes
-    EXPECT_EQ(pd.cells[1].size(), 4u);   // tower top, nacelle, generator, hub
+    EXPECT_EQ(pd.cells[0].size(), 11u);                                      // tower nodes
+    EXPECT_EQ(pd.cells[1].size(), 4u);                                       // tower top, nacelle, generator, hub
     for (std::size_t b = 2; b < 5; ++b) EXPECT_EQ(pd.cells[b].size(), 12u);  // hub centre + 11 blade nodes
     for (std::size_t i = 0; i + 2 < pd.displacement.size(); i += 3)
       largest = std::max(largest, Vec3(pd.displacement[i], pd.displacement[i + 1], pd.displacement[i + 2]).norm());

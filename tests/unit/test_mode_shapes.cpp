@@ -92,7 +92,8 @@ struct RotorCase {
 RotorCase nrel5mw(double rpm) {
   RotorCase c{readElastoDynModel((test::nrel5mwDir() / "Main_Onshore.fst").string(),
                                  {"RotSpeed=" + std::to_string(rpm)}),
-              {}, {}};
+              {},
+              {}};
   PeriodicOptions opt;
   opt.azimuths = rpm > 0 ? 12 : 1;
   c.lin = linearizePeriodic(c.model, initialPoint(c.model), opt);
@@ -136,9 +137,9 @@ TEST(ModeShapes, Nrel5mwParkedFirstTowerForeAftMovesForeAft) {
 TEST(ModeShapes, WhirlModesStepBladePhasesBy120Degrees) {
   const RotorCase c = nrel5mw(12);
   for (const auto& [name, step, component] : {std::tuple<std::string, double, int>{"flap 1 BW", 120, 1},
-                                             {"flap 1 FW", -120, 1},
-                                             {"edge 1 BW", 120, 2},
-                                             {"edge 1 FW", -120, 2}}) {
+                                              {"flap 1 FW", -120, 1},
+                                              {"edge 1 BW", 120, 2},
+                                              {"edge 1 FW", -120, 2}}) {
     const ModeMotion& mm = named(c, name).motion;
     std::complex<double> tip[3];
     for (int b = 0; b < 3; ++b) {

@@ -54,7 +54,7 @@ TEST(HydroDynInput, Oc3HywindValues) {
 TEST(HydroDynInput, RadiationConvolutionIsRefusedAsInOpenFast) {
   const std::string msg = errorOf([] { io::readHydroDyn(kHydro); });
   EXPECT_THAT(msg, StartsWith(kHydro + ":53: RdtnMod: 1 not supported by whirl (the radiation convolution has no "
-                                      "linearization (OpenFAST refuses it too)"));
+                                       "linearization (OpenFAST refuses it too)"));
   EXPECT_EQ(msg.find('\n'), std::string::npos);
 }
 

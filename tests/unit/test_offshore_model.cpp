@@ -26,21 +26,21 @@ TEST(OffshoreModel, Oc3HywindPlatform) {
   const Model m = readElastoDynModel((kCase / "Test24.fst").string(), kSets);
   const int p = *m.findBody("platform");
   EXPECT_EQ(m.bodies[p].joint, JointType::Free);
-  EXPECT_EQ(m.bodies[p].inertia.mass, 7.46633e6);  // PtfmMass
+  EXPECT_EQ(m.bodies[p].inertia.mass, 7.46633e6);                         // PtfmMass
   EXPECT_NEAR(m.bodies[p].inertia.m1(2, 0), 7.46633e6 * -89.9155, 1e-3);  // PtfmCMzt below PtfmRefzt = 0
   EXPECT_EQ(m.bodies[*m.findBody("tower")].parent, p);
   EXPECT_EQ(m.bodies[*m.findBody("tower")].offset, Vec3(0, 0, 10));  // TowerBsHt above the reference point
-  for (const char* n : {"platform surge", "platform sway", "platform heave", "platform roll", "platform pitch",
-                        "platform yaw"}) {
+  for (const char* n :
+       {"platform surge", "platform sway", "platform heave", "platform roll", "platform pitch", "platform yaw"}) {
     ASSERT_TRUE(m.findDof(n)) << n;
     EXPECT_FALSE(m.dofs[*m.findDof(n)].frozen) << n;
   }
   ASSERT_EQ(m.body_matrices.size(), 1u);
   const double rho = 1025, g = 9.80665;
-  EXPECT_DOUBLE_EQ(m.body_matrices[0].K(5, 5), 98340000);                 // AddCLin
-  EXPECT_DOUBLE_EQ(m.body_matrices[0].K(2, 2), 3.312247e1 * rho * g);     // spar.hst
-  EXPECT_DOUBLE_EQ(m.body_matrices[0].C(2, 2), 130000);                   // AddBLin
-  EXPECT_DOUBLE_EQ(m.body_matrices[0].A(0, 0), 7.569865e3 * rho);         // spar.1, PER = 0
+  EXPECT_DOUBLE_EQ(m.body_matrices[0].K(5, 5), 98340000);              // AddCLin
+  EXPECT_DOUBLE_EQ(m.body_matrices[0].K(2, 2), 3.312247e1 * rho * g);  // spar.hst
+  EXPECT_DOUBLE_EQ(m.body_matrices[0].C(2, 2), 130000);                // AddBLin
+  EXPECT_DOUBLE_EQ(m.body_matrices[0].A(0, 0), 7.569865e3 * rho);      // spar.1, PER = 0
   // Buoyancy ρ g PtfmVol0 along heave.
   ASSERT_EQ(m.dof_loads.size(), 1u);
   EXPECT_EQ(m.dof_loads[0].dof, *m.findDof("platform heave"));

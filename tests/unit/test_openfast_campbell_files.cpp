@@ -166,8 +166,9 @@ TEST(OpenfastCampbellFiles, StateRowsFollowTheToolboxsSignAndPhaseRules) {
   // Mode 2, shape (1, −0.5, 0.3 at 120°): tower FA 1 (1, 0°), flap 1 cos (0.5 at 180° → −0.5, 0°),
   // flap 1 sin (0.3 at 120° → −0.3, −60°).
   const std::size_t c = 5;
-  const std::vector<std::tuple<std::string, int, double, double>> expected = {
-      {"tower FA 1", 1, 1.0, 0.0}, {"flap 1 cos", 0, -0.5, 0.0}, {"flap 1 sin", 0, -0.3, -60.0}};
+  const std::vector<std::tuple<std::string, int, double, double>> expected = {{"tower FA 1", 1, 1.0, 0.0},
+                                                                              {"flap 1 cos", 0, -0.5, 0.0},
+                                                                              {"flap 1 sin", 0, -0.3, -60.0}};
   for (std::size_t r = 0; r < expected.size(); ++r) {
     const auto& [name, has_max, mag, phase] = expected[r];
     EXPECT_EQ(pt[5 + r][c], name);
@@ -183,8 +184,8 @@ TEST(OpenfastCampbellFiles, StateRowsFollowTheToolboxsSignAndPhaseRules) {
   EXPECT_EQ(pt[5][1], "1");
 }
 
-// Campbell_Summary.txt (campbellData2TXT): '#' comment lines, then `ID ; freq ; zeta ; content` with 4 ';' fields, every
-// mode of a point once; the rigid-body root (ζ = 0) under the skipped section.
+// Campbell_Summary.txt (campbellData2TXT): '#' comment lines, then `ID ; freq ; zeta ; content` with 4 ';' fields,
+// every mode of a point once; the rigid-body root (ζ = 0) under the skipped section.
 TEST(OpenfastCampbellFiles, SummaryListsEveryModeOnceWithFourFields) {
   const CampbellDiagram d = diagram(true);
   std::istringstream in(openfastCampbellSummary(d));

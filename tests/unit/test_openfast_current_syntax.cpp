@@ -101,8 +101,9 @@ TEST(OpenFastCurrentSyntax, HydroDynAddF0OnOneLineOrAsAColumn) {
   const std::string hd = readText(kV4 / "HydroDyn.dat");
   const std::string column = "             0   AddF0";
   const std::string rows = "             0\n             0\n             0\n             0\n             0\n";
-  const auto col = dir.write("c.dat", replaceOnce(replaceOnce(hd, column, "           1e5   AddF0"),
-                                                   rows, "             2\n             3\n             4\n             5\n             6\n"));
+  const auto col = dir.write(
+      "c.dat", replaceOnce(replaceOnce(hd, column, "           1e5   AddF0"), rows,
+                           "             2\n             3\n             4\n             5\n             6\n"));
   const io::Vec6 f0 = io::readHydroDyn(col).AddF0;
   EXPECT_EQ(f0(0), 1e5);
   EXPECT_EQ(f0(1), 2.0);
@@ -112,7 +113,8 @@ TEST(OpenFastCurrentSyntax, HydroDynAddF0OnOneLineOrAsAColumn) {
   EXPECT_EQ(io::readHydroDyn(line).AddF0(5), 6.0);
   // A row of the column that is not a number is refused with its line.
   const auto bad = dir.write("b.dat", replaceOnce(hd, rows, "             0\n             0\n             x\n"));
-  EXPECT_THAT(inputErrorMessage([&] { io::readHydroDyn(bad); }), HasSubstr("b.dat:33: AddF0: row 4 of the 6 preloads (line 36)"));
+  EXPECT_THAT(inputErrorMessage([&] { io::readHydroDyn(bad); }),
+              HasSubstr("b.dat:33: AddF0: row 4 of the 6 preloads (line 36)"));
   const auto three = dir.write("t.dat", replaceOnce(hd, column, "  1 2 3   AddF0"));
   EXPECT_THAT(inputErrorMessage([&] { io::readHydroDyn(three); }), HasSubstr("t.dat:33: AddF0: expected 6 numbers"));
 }

@@ -109,7 +109,8 @@ TEST_F(BadInput, FractionsNotEndingAtOne) {
 }
 
 TEST_F(BadInput, RowWithAMissingNumber) {
-  edit(kTower, "2.0000000E-01  4.8857600E+03  4.6326700E+11  4.6326700E+11", "2.0000000E-01  4.8857600E+03  4.6326700E+11");
+  edit(kTower, "2.0000000E-01  4.8857600E+03  4.6326700E+11  4.6326700E+11",
+       "2.0000000E-01  4.8857600E+03  4.6326700E+11");
   EXPECT_EQ(readError(),
             path(kTower) + ":22: row has 3 numbers, the table has 4 columns (HtFract TMassDen TwFAStif TwSSStif)");
 }

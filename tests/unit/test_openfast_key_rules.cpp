@@ -47,7 +47,8 @@ TEST(OpenFastKeyRules, AeroDynKeyGivenTwiceAndUnknownKey) {
   ScratchDir dir;
   const std::string tip = "True          TipLoss";
   const auto twice = edited(dir, kAero / "AeroDyn.dat", "a.dat", tip, "False  TipLoss - again\n" + tip);
-  EXPECT_THAT(inputErrorMessage([&] { io::readAeroDyn(twice); }), HasSubstr("a.dat:26: TipLoss: given twice (first on line 25)"));
+  EXPECT_THAT(inputErrorMessage([&] { io::readAeroDyn(twice); }),
+              HasSubstr("a.dat:26: TipLoss: given twice (first on line 25)"));
   const auto unknown = edited(dir, kAero / "AeroDyn.dat", "b.dat", tip, "True  TipLos - typo\n" + tip);
   EXPECT_THAT(inputErrorMessage([&] { io::readAeroDyn(unknown); }),
               HasSubstr("b.dat:25: TipLos: not a key of an OpenFAST AeroDyn v15 file"));
@@ -76,7 +77,8 @@ TEST(OpenFastKeyRules, AirfoilKeyGivenTwiceAndUnknownKey) {
   // Re repeats from table to table, but not within one table.
   const std::string re = "       0.75   Re ";
   const auto table = edited(dir, af, "f3.dat", re, "       0.5    Re  ! again\n" + re);
-  EXPECT_THAT(inputErrorMessage([&] { io::readAirfoil(table); }), HasSubstr("f3.dat:15: Re: given twice (first on line 14)"));
+  EXPECT_THAT(inputErrorMessage([&] { io::readAirfoil(table); }),
+              HasSubstr("f3.dat:15: Re: given twice (first on line 14)"));
 }
 
 // --- InflowWind, ServoDyn, .fst -------------------------------------------------------------------
@@ -101,7 +103,8 @@ TEST(OpenFastKeyRules, ServoDynAndFstUnknownKeyIsRefused) {
               HasSubstr("s.dat:7: PCMod: not a key of an OpenFAST ServoDyn file"));
   const std::string comp = "          0   CompHydro";
   const auto fst = edited(dir, nrel5mwDir() / "Main_Aero.fst", "m.fst", comp, "          0   CompHydr - typo\n" + comp);
-  EXPECT_THAT(inputErrorMessage([&] { io::readFst(fst); }), HasSubstr("m.fst:17: CompHydr: not a key of an OpenFAST .fst file"));
+  EXPECT_THAT(inputErrorMessage([&] { io::readFst(fst); }),
+              HasSubstr("m.fst:17: CompHydr: not a key of an OpenFAST .fst file"));
 }
 
 TEST(OpenFastKeyRules, CommentLinesAndTableRowsAreNotKeys) {
@@ -160,7 +163,8 @@ TEST(OpenFastKeyRules, MapTwoNodesWithOneIdAreRefused) {
   ScratchDir dir;
   const auto map = edited(dir, kHywind / "NRELOffshrBsline5MW_OC3Hywind_MAP.dat", "map.dat", "2    Vessel",
                           "1    Vessel");
-  EXPECT_THAT(inputErrorMessage([&] { io::readMap(map); }), HasSubstr("map.dat:9: Node: '1' given twice (first on line 8)"));
+  EXPECT_THAT(inputErrorMessage([&] { io::readMap(map); }),
+              HasSubstr("map.dat:9: Node: '1' given twice (first on line 8)"));
 }
 
 TEST(OpenFastKeyRules, MoorDynCountsAreBoundedAndIdsUnique) {
@@ -169,7 +173,8 @@ TEST(OpenFastKeyRules, MoorDynCountsAreBoundedAndIdsUnique) {
   const auto huge = edited(dir, md, "m1.dat", "3        NLines", "2e9      NLines");
   EXPECT_THAT(inputErrorMessage([&] { io::readMoorDyn(huge); }), HasSubstr("m1.dat:20: NLines: must be in [0, 10000]"));
   const auto twice = edited(dir, md, "m2.dat", "2         main", "1         main");
-  EXPECT_THAT(inputErrorMessage([&] { io::readMoorDyn(twice); }), HasSubstr("m2.dat:24: Line: '1' given twice (first on line 23)"));
+  EXPECT_THAT(inputErrorMessage([&] { io::readMoorDyn(twice); }),
+              HasSubstr("m2.dat:24: Line: '1' given twice (first on line 23)"));
 }
 
 // --- ElastoDyn ranges -----------------------------------------------------------------------------

@@ -211,7 +211,9 @@ TEST(OpenFastLayouts, Fast8FstWithFlagSwitchesAndServoDyn) {
       "True          CompServo       - Compute servodynamics (flag)\n"
       "False         CompHydro       - Compute hydrodynamics forces (flag)\n"
       "--- INPUT FILES ---\n"
-      "\"" + std::string(kEd) + "\"    EDFile      - ElastoDyn\n"
+      "\"" +
+      std::string(kEd) +
+      "\"    EDFile      - ElastoDyn\n"
       "\"ad.ipt\"    ADFile          - AeroDyn\n"
       "\"srvd/ServoDyn.dat\"    SrvDFile        - ServoDyn\n";
   const std::string servo =

@@ -67,8 +67,9 @@ TEST_P(LinExample, HeaderTablesAndMatrix) {
   const int n = e.n_x / 2;
   EXPECT_EQ(f.x[n].description.rfind("ED First time derivative of ", 0), 0u) << f.x[n].description;
   EXPECT_EQ(f.xdot[0].description.rfind("First time derivative of ED ", 0), 0u);
-  EXPECT_EQ(f.x.back().description,
-            "ED First time derivative of 2nd flapwise bending-mode DOF of blade 3 (internal DOF index = DOF_BF(3,2)), m/s");
+  EXPECT_EQ(
+      f.x.back().description,
+      "ED First time derivative of 2nd flapwise bending-mode DOF of blade 3 (internal DOF index = DOF_BF(3,2)), m/s");
   EXPECT_EQ(f.x[0].line, 22);
 
   ASSERT_EQ(f.A.rows(), e.n_x);
@@ -83,14 +84,14 @@ TEST_P(LinExample, HeaderTablesAndMatrix) {
 
 INSTANTIATE_TEST_SUITE_P(
     Files, LinExample,
-    ::testing::Values(
-        Expected{"rotating-9rpm/Main.1.lin", 20, 119.92, 0.9425, 0.0092, 8.0, 8.885e-04, -3.715},
-        Expected{"rotating-9rpm/Main.12.lin", 20, 121.95, 0.9425, 1.9224, 8.0, 7.697e-04, -3.905},
-        Expected{"rotating-9rpm/Main.24.lin", 20, 124.17, 0.9425, 4.0147, 8.0, 7.676e-04, -3.916},
-        // ws03: A(15,0) is the first value of row 16; printed with 13 digits (E-003 exponents).
-        Expected{"ws03/ws03.0.1.lin", 30, 413.09, 0.7301, 0.0067, 3.0, -4.571735886246, -3.253592101136},
-        Expected{"ws03/ws03.0.13.lin", 30, 415.95, 0.7301, 2.0948, 3.0, -4.571735724989, -3.180672661438},
-        Expected{"ws03/ws03.0.34.lin", 30, 420.97, 0.7301, 5.7600, 3.0, -4.571769457696, -3.150582214435}),
+    ::testing::Values(Expected{"rotating-9rpm/Main.1.lin", 20, 119.92, 0.9425, 0.0092, 8.0, 8.885e-04, -3.715},
+                      Expected{"rotating-9rpm/Main.12.lin", 20, 121.95, 0.9425, 1.9224, 8.0, 7.697e-04, -3.905},
+                      Expected{"rotating-9rpm/Main.24.lin", 20, 124.17, 0.9425, 4.0147, 8.0, 7.676e-04, -3.916},
+                      // ws03: A(15,0) is the first value of row 16; printed with 13 digits (E-003 exponents).
+                      Expected{"ws03/ws03.0.1.lin", 30, 413.09, 0.7301, 0.0067, 3.0, -4.571735886246, -3.253592101136},
+                      Expected{"ws03/ws03.0.13.lin", 30, 415.95, 0.7301, 2.0948, 3.0, -4.571735724989, -3.180672661438},
+                      Expected{"ws03/ws03.0.34.lin", 30, 420.97, 0.7301, 5.7600, 3.0, -4.571769457696,
+                               -3.150582214435}),
     [](const auto& p) {
       std::string s = p.param.file;
       for (char& c : s)

@@ -192,7 +192,7 @@ TEST(OpenFastNrel5mw, Blades) {
   EXPECT_DOUBLE_EQ(d.column("BlFract")[48], 1.0);
   ASSERT_NE(b.pitchAxis(), nullptr);
   EXPECT_DOUBLE_EQ((*b.pitchAxis())[0], 0.25);
-  EXPECT_DOUBLE_EQ(d.column("StrcTwst")[0], 13.308);  // deg
+  EXPECT_DOUBLE_EQ(d.column("StrcTwst")[0], 13.308);   // deg
   EXPECT_DOUBLE_EQ(d.column("BMassDen")[0], 678.935);  // as in the file: AdjBlMs not applied
   EXPECT_DOUBLE_EQ(d.column("FlpStff")[0], 1.811e10);
   EXPECT_DOUBLE_EQ(d.column("EdgStff")[48], 5.01e6);
@@ -214,9 +214,11 @@ TEST(OpenFastNrel5mw, SupportedAndServoDynYawSpring) {
 }
 
 TEST(OpenFastNrel5mw, OverridesReachEveryFile) {
-  whirl::io::OverrideSet set(std::vector<whirl::io::KeyOverride>{
-      {"NacMass", "250000"}, {"TwFAM1Sh(2)", "0.7104"}, {"TwFAM1Sh(3)", "2.1863"}, {"AdjBlMs", "1.0"},
-      {"Gravity", "9.81"}});
+  whirl::io::OverrideSet set(std::vector<whirl::io::KeyOverride>{{"NacMass", "250000"},
+                                                                 {"TwFAM1Sh(2)", "0.7104"},
+                                                                 {"TwFAM1Sh(3)", "2.1863"},
+                                                                 {"AdjBlMs", "1.0"},
+                                                                 {"Gravity", "9.81"}});
   const OpenFastTurbine t = whirl::io::readOpenFastTurbine(nrel5mwDir() / "Main_Onshore.fst", &set);
   EXPECT_NO_THROW(set.requireAllUsed());
   EXPECT_DOUBLE_EQ(t.elastodyn.mass.NacMass, 250000.0);

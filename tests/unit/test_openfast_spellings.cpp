@@ -61,8 +61,8 @@ TEST(OpenFastSpellings, CanonicalKeyIsTheOneRule) {
 }
 
 TEST(OpenFastSpellings, IndexWithBlanksIsOneKey) {
-  const OpenFastFile f = OpenFastFile::parse(
-      "title\n\"blade.dat\"  BldFile( 1 )  - blade 1\n  2.5  BlPitch(2 ) - pitch\n", "x.dat");
+  const OpenFastFile f =
+      OpenFastFile::parse("title\n\"blade.dat\"  BldFile( 1 )  - blade 1\n  2.5  BlPitch(2 ) - pitch\n", "x.dat");
   ASSERT_EQ(f.entries().size(), 2u);
   EXPECT_EQ(f.getString("BldFile(1)"), "blade.dat");
   EXPECT_EQ(f.getString("BldFile1"), "blade.dat");
@@ -100,12 +100,12 @@ TEST(OpenFastSpellings, Iea34DeckReads) {
   const auto fst = openfastDataDir() / "decks" / "IEA-3.4-130-RWT" / "IEA-3.4-130-RWT.fst";
   const OpenFastTurbine t = readOpenFastTurbine(fst);
   const auto& e = t.elastodyn;
-  EXPECT_DOUBLE_EQ(e.config.TipRad, 64.90852112228899);                   // ElastoDyn.dat line 45
-  ASSERT_EQ(e.blades.size(), 3u);                                         // BldFile1..3, lines 86–88
+  EXPECT_DOUBLE_EQ(e.config.TipRad, 64.90852112228899);  // ElastoDyn.dat line 45
+  ASSERT_EQ(e.blades.size(), 3u);                        // BldFile1..3, lines 86–88
   EXPECT_EQ(e.BldFile[1].filename(), "IEA-3.4-130-RWT_ElastoDyn_blade.dat");
-  EXPECT_EQ(e.blades[0].BldFlDmp, (std::array<double, 2>{3.0, 3.0}));    // BldFlDmp1, BldFlDmp2
-  EXPECT_DOUBLE_EQ(e.blades[0].BldEdDmp, 3.0);                            // BldEdDmp1
-  EXPECT_DOUBLE_EQ(e.blades[0].BldFl1Sh[0], 0.2979932369894798);          // BldFl1Sh(2), blade line 48
+  EXPECT_EQ(e.blades[0].BldFlDmp, (std::array<double, 2>{3.0, 3.0}));  // BldFlDmp1, BldFlDmp2
+  EXPECT_DOUBLE_EQ(e.blades[0].BldEdDmp, 3.0);                         // BldEdDmp1
+  EXPECT_DOUBLE_EQ(e.blades[0].BldFl1Sh[0], 0.2979932369894798);       // BldFl1Sh(2), blade line 48
   EXPECT_EQ(e.tower.NTwInpSt, 10);
   EXPECT_NO_THROW(whirl::io::requireSupported(t));
 }

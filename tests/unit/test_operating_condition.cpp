@@ -97,8 +97,8 @@ TEST(OperatingCondition, FieldsTheModelCannotHonourAreNamed) {
   EXPECT_NE(inputErrorOf([&] { initialPoint(tower, torque); }).find("generator_torque"), std::string::npos);
 
   const Model fixed = readCase(dir.write("fixed.yaml", testing::replaced(testing::smallTurbineCase(),
-                                                                          "azimuth: {rotating: true, rate_rpm: 12.1}",
-                                                                          "azimuth: {frozen: true}")));
+                                                                         "azimuth: {rotating: true, rate_rpm: 12.1}",
+                                                                         "azimuth: {frozen: true}")));
   OperatingCondition spin;
   spin.rotor_speed = 1.0;
   EXPECT_NE(inputErrorOf([&] { initialPoint(fixed, spin); }).find("rotor_speed"), std::string::npos);
@@ -124,7 +124,8 @@ TEST(OperatingCondition, CaseFilePitchRolesComeFromTheInputs) {
   - {name: pitch input 2, unit: rad, dofs: pitch 2, blade: 2}
   - {name: pitch input 3, unit: rad, dofs: pitch 3, blade: 3}
 )");
-  text = testing::replaced(text, "dofs:\n", R"(  - {name: blade 1, type: rigid, parent: rotor, mass: 1.0e4, inertia: [1.0e5, 1.0e5, 1.0e3],
+  text = testing::replaced(
+      text, "dofs:\n", R"(  - {name: blade 1, type: rigid, parent: rotor, mass: 1.0e4, inertia: [1.0e5, 1.0e5, 1.0e3],
      joint: {type: revolute, axis: [0, 0, 1], dof: pitch 1}}
   - {name: blade 2, type: rigid, parent: rotor, mass: 1.0e4, inertia: [1.0e5, 1.0e5, 1.0e3],
      joint: {type: revolute, axis: [0, 0, 1], dof: pitch 2}}

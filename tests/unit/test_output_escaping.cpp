@@ -10,9 +10,9 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "src/writers/campbell_output.hpp"
 #include "src/io/csv.hpp"
 #include "src/io/openfast_lin.hpp"
+#include "src/writers/campbell_output.hpp"
 #include "src/writers/state_space_files.hpp"
 #include "test_util.hpp"
 
@@ -24,9 +24,13 @@ namespace fs = std::filesystem;
 // Each would run `touch` if it escaped its string: a newline ending the string and a `!` line, a
 // carriage return, backquotes (command substitution in double-quoted Gnuplot strings), quotes of
 // both kinds, a trailing backslash (continues a Gnuplot line, comments included).
-const std::vector<std::string> kHostile = {
-    "a\n!touch pwned_newline\n#", "b\r!touch pwned_cr\r#", "x`touch pwned_backquote`y",
-    "it's \"quoted\" 'twice'", "ends with backslash\\", "c'\n!touch pwned_quote\n#'", "d, e; f # g @h"};
+const std::vector<std::string> kHostile = {"a\n!touch pwned_newline\n#",
+                                           "b\r!touch pwned_cr\r#",
+                                           "x`touch pwned_backquote`y",
+                                           "it's \"quoted\" 'twice'",
+                                           "ends with backslash\\",
+                                           "c'\n!touch pwned_quote\n#'",
+                                           "d, e; f # g @h"};
 
 bool hasControlCharacter(const std::string& s) {
   for (char c : s)

@@ -46,16 +46,27 @@ TEST(ParallelMap, LowestFailingTaskWinsWithItsType) {
     EXPECT_STREQ(e.what(), "cases/x.yaml:3: rpm: bad");
   }
   EXPECT_EQ(ran, 4);  // one process stops at its first failure, as the serial sweep did
-  EXPECT_THROW(parallel::parallelMapBytes(9, [](int k) -> std::string {
-                 if (k == 2) throw ComputeError("x");
-                 return "";
-               }),
+  EXPECT_THROW(parallel::parallelMapBytes(9,
+                                          [](int k) -> std::string {
+                                            if (k == 2) throw ComputeError("x");
+                                            return "";
+                                          }),
                ComputeError);
 }
 
 TEST(ParallelMap, CommandLineSplitsPetscOptions) {
-  const char* argv[] = {"whirl", "modes", "c.yaml", "--petsc", "-eps_nev 3  -st_type sinvert", "--solver",
-                        "sparse", "--petsc=-eps_tol 1e-9", "--", "-pep_type", "toar", "--rpm"};
+  const char* argv[] = {"whirl",
+                        "modes",
+                        "c.yaml",
+                        "--petsc",
+                        "-eps_nev 3  -st_type sinvert",
+                        "--solver",
+                        "sparse",
+                        "--petsc=-eps_tol 1e-9",
+                        "--",
+                        "-pep_type",
+                        "toar",
+                        "--rpm"};
   std::vector<std::string> w, p;
   parallel::splitCommandLine(12, argv, w, p);
   EXPECT_EQ(w, (std::vector<std::string>{"whirl", "modes", "c.yaml", "--solver", "sparse"}));

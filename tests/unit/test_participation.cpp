@@ -59,7 +59,7 @@ TEST(Participation, StateScalingLeavesSharesUnchanged) {
 TEST(Participation, RealRootsAreModesOfTheirOwnAndFirstOrderStatesCount) {
   // An overdamped oscillator (roots −1 and −9) and a first-order lag (−3) that dominates its root.
   MatX A(3, 3);
-  A << 0, 1, 0,  //
+  A << 0, 1, 0,    //
       -9, -10, 0,  //
       0, 0, -3;
   const auto modes = whirl::participationModes(whirl::eigenStandard(A, true), {0, 0, 1}, {"mass", "lag"});

@@ -40,7 +40,8 @@ TEST(PointValidity, HugeGravityGivesADeflectionBeyondTheBodyLength) {
   EXPECT_THAT(problems.front(), HasSubstr("its length 61.5 m (limit 0.3)"));
   // The same turbine at Earth's gravity is valid.
   const whirl::Model nominal = whirl::readElastoDynModel((whirl::test::nrel5mwDir() / "Main_Onshore.fst").string());
-  EXPECT_TRUE(whirl::checkPointValidity(nominal, whirl::solveOperatingPoint(nominal, whirl::initialPoint(nominal))).empty());
+  EXPECT_TRUE(
+      whirl::checkPointValidity(nominal, whirl::solveOperatingPoint(nominal, whirl::initialPoint(nominal))).empty());
 }
 
 TEST(PointValidity, SlopeAndResidualAreChecked) {
@@ -49,7 +50,8 @@ TEST(PointValidity, SlopeAndResidualAreChecked) {
   // A tip deflection of 10 m on 87.6 m is within 0.3 L; its slope (about 0.2 rad) is beyond a 0.01 rad limit.
   whirl::ValidityLimits lim;
   lim.max_slope = 0.01;
-  const auto tower = std::find_if(m.bodies.begin(), m.bodies.end(), [](const whirl::Body& b) { return b.name == "tower"; });
+  const auto tower = std::find_if(m.bodies.begin(), m.bodies.end(),
+                                  [](const whirl::Body& b) { return b.name == "tower"; });
   ASSERT_NE(tower, m.bodies.end());
   op.q(tower->elastic_dof) = 10.0;
   const auto problems = whirl::checkPointValidity(m, op, lim);

@@ -5,8 +5,8 @@
 #include <numbers>
 
 #include "src/aero/polar.hpp"
-#include "src/model/scalar.hpp"
 #include "src/model/error.hpp"
+#include "src/model/scalar.hpp"
 #include "tests/unit/aero_data_util.hpp"
 
 using namespace whirl;
@@ -43,7 +43,7 @@ const Ref kCubic[] = {
     {5.3, 1.1251599476238627, 0.0097937457327508352, -0.13729662201396325},
     {-3.7, 0.05425725145144384, 0.0061953585710337565, -0.12241888450321714},
     {170.2, -0.7784115497055869, 0.093675815900524567, -0.39228579786086615},
-    {-178.0, 0.15120044847030267, 0.017878015749200692, 0.075267701032155535},  // first segment (row-1 condition)
+    {-178.0, 0.15120044847030267, 0.017878015749200692, 0.075267701032155535},    // first segment (row-1 condition)
     {179.5, -0.037060143149307855, 0.018862583548744198, -0.018372244469111638},  // last segment (M_N = 0)
     {365.3, 1.1251599476238656, 0.0097937457327509064, -0.13729662201396323},
     {-12.25, -0.96731194664302489, 0.027262566482255626, -0.035993807520838819},
@@ -86,7 +86,7 @@ TEST(Polar, CubicIsTheNwtcSpline) {
     EXPECT_NEAR(c[i][0] + h * (c[i][1] + h * (c[i][2] + h * c[i][3])), y[i + 1], 1e-9);
     if (i + 2 < n) {
       EXPECT_NEAR(c[i][1] + h * (2 * c[i][2] + 3 * h * c[i][3]), c[i + 1][1], 1e-8) << i;  // y'
-      EXPECT_NEAR(2 * c[i][2] + 6 * h * c[i][3], 2 * c[i + 1][2], 1e-6) << i;               // y''
+      EXPECT_NEAR(2 * c[i][2] + 6 * h * c[i][3], 2 * c[i + 1][2], 1e-6) << i;              // y''
     }
   }
   const double hl = x[n - 1] - x[n - 2];
@@ -101,12 +101,13 @@ TEST(Polar, CubicIsTheNwtcSpline) {
 
 TEST(Polar, WrapsLikeMPi2PiAndClampsAtTheEnds) {
   const Polar& p = du21(PolarInterp::Linear);
-  EXPECT_DOUBLE_EQ(wrapMPi2Pi(std::numbers::pi), std::numbers::pi);    // pi stays pi: (-pi, pi]
-  EXPECT_DOUBLE_EQ(wrapMPi2Pi(-std::numbers::pi), std::numbers::pi);   // modulo(-pi, 2pi) = pi
+  EXPECT_DOUBLE_EQ(wrapMPi2Pi(std::numbers::pi), std::numbers::pi);   // pi stays pi: (-pi, pi]
+  EXPECT_DOUBLE_EQ(wrapMPi2Pi(-std::numbers::pi), std::numbers::pi);  // modulo(-pi, 2pi) = pi
   EXPECT_NEAR(wrapMPi2Pi(3 * std::numbers::pi / 2), -std::numbers::pi / 2, 1e-15);
-  EXPECT_NEAR(evaluate(p, std::numbers::pi).cd, 0.0185, 1e-15);        // last row
+  EXPECT_NEAR(evaluate(p, std::numbers::pi).cd, 0.0185, 1e-15);  // last row
   EXPECT_NEAR(evaluate(p, -std::numbers::pi).cd, 0.0185, 1e-15);
-  const auto a = evaluate(p, 0.3), b = evaluate(p, 0.3 + 4 * std::numbers::pi), d = evaluate(p, 0.3 - 2 * std::numbers::pi);
+  const auto a = evaluate(p, 0.3), b = evaluate(p, 0.3 + 4 * std::numbers::pi),
+             d = evaluate(p, 0.3 - 2 * std::numbers::pi);
   EXPECT_NEAR(a.cl, b.cl, 1e-12);
   EXPECT_NEAR(a.cl, d.cl, 1e-12);
 }
@@ -155,16 +156,29 @@ TEST(Polar, BadTablesThrowInputErrorNamingTheSource) {
     }
   };
   const std::string src = "af.dat:12";
-  expectError([&] { makePolar("x", {-pi, 0.0, 0.0, pi}, {0, 1, 1, 0}, {0, 0, 0, 0}, {0, 0, 0, 0}, PolarInterp::Linear, src); },
-              "strictly increasing");
-  expectError([&] { makePolar("x", {-pi, 0.0, pi}, {0, 1}, {0, 0, 0}, {0, 0, 0}, PolarInterp::Linear, src); },
-              "different lengths");
-  expectError([&] { makePolar("x", {-pi, 0.0, pi}, {0, NAN, 0}, {0, 0, 0}, {0, 0, 0}, PolarInterp::Linear, src); },
-              "non-finite");
-  expectError([&] { makePolar("x", {-pi + 0.01, 0.0, pi}, {0, 1, 0}, {0, 0, 0}, {0, 0, 0}, PolarInterp::Linear, src); },
-              "cover -180..180");
+  expectError(
+      [&] {
+        makePolar("x", {-pi, 0.0, 0.0, pi}, {0, 1, 1, 0}, {0, 0, 0, 0}, {0, 0, 0, 0}, PolarInterp::Linear, src);
+      },
+      "strictly increasing");
+  expectError(
+      [&] {
+        makePolar("x", {-pi, 0.0, pi}, {0, 1}, {0, 0, 0}, {0, 0, 0}, PolarInterp::Linear, src);
+      },
+      "different lengths");
+  expectError(
+      [&] {
+        makePolar("x", {-pi, 0.0, pi}, {0, NAN, 0}, {0, 0, 0}, {0, 0, 0}, PolarInterp::Linear, src);
+      },
+      "non-finite");
+  expectError(
+      [&] {
+        makePolar("x", {-pi + 0.01, 0.0, pi}, {0, 1, 0}, {0, 0, 0}, {0, 0, 0}, PolarInterp::Linear, src);
+      },
+      "cover -180..180");
   expectError([&] { makePolar("x", {}, {}, {}, {}, PolarInterp::Linear, src); }, "empty");
-  EXPECT_NO_THROW(makePolar("x", {-pi + 5e-4, 0.0, pi - 5e-4}, {0, 1, 0}, {0, 0, 0}, {0, 0, 0}, PolarInterp::CubicSpline, src));
+  EXPECT_NO_THROW(
+      makePolar("x", {-pi + 5e-4, 0.0, pi - 5e-4}, {0, 1, 0}, {0, 0, 0}, {0, 0, 0}, PolarInterp::CubicSpline, src));
 }
 
 // Tables on the Reynolds number (AeroDyn AFI_ComputeAirfoilCoefs2D: linear in log Re between the

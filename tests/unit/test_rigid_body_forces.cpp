@@ -87,8 +87,10 @@ TEST(RigidBodyForces, DerivativesEqualTheGeneralPaths) {
     EXPECT_NEAR(F(k).value(), Fg(k).value(), 1e-12 * std::abs(Fg(k).value()) + 1e-9) << k;
     EXPECT_NEAR(T(k).value(), Tg(k).value(), 1e-12 * std::abs(Tg(k).value()) + 1e-9) << k;
     for (int d = 0; d < kChunk; ++d) {
-      EXPECT_NEAR(F(k).derivatives()(d), Fg(k).derivatives()(d), 1e-9 * (1 + std::abs(Fg(k).derivatives()(d)))) << k << d;
-      EXPECT_NEAR(T(k).derivatives()(d), Tg(k).derivatives()(d), 1e-9 * (1 + std::abs(Tg(k).derivatives()(d)))) << k << d;
+      EXPECT_NEAR(F(k).derivatives()(d), Fg(k).derivatives()(d), 1e-9 * (1 + std::abs(Fg(k).derivatives()(d))))
+          << k << d;
+      EXPECT_NEAR(T(k).derivatives()(d), Tg(k).derivatives()(d), 1e-9 * (1 + std::abs(Tg(k).derivatives()(d))))
+          << k << d;
     }
   }
 }

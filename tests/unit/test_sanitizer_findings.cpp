@@ -108,7 +108,8 @@ TEST(SanitizerFindings, DropAzimuthOfAModelWithoutInputs) {
 
 // The NREL 5MW .lin at 9 rpm of tests/data with one line replaced.
 std::string linWith(const test::TempDir& tmp, const std::string& from, const std::string& to) {
-  const std::string text = test::slurp(std::string(WHIRL_SOURCE_DIR) + "/tests/data/openfast-lin/rotating-9rpm/Main.1.lin");
+  const std::string text = test::slurp(std::string(WHIRL_SOURCE_DIR) +
+                                       "/tests/data/openfast-lin/rotating-9rpm/Main.1.lin");
   const std::string changed = std::regex_replace(text, std::regex(from), to, std::regex_constants::format_first_only);
   EXPECT_NE(changed, text) << from;
   return tmp.write("f.lin", changed);
@@ -129,7 +130,8 @@ void expectInputError(F&& f, const std::string& prefix) {
 // std::bad_alloc or an ASan out-of-memory report instead of "truncated").
 TEST(SanitizerFindings, LinHugeStateCountIsATruncatedTable) {
   test::TempDir tmp;
-  const std::string f = linWith(tmp, "Number of continuous states: +20", "Number of continuous states:        2000000000");
+  const std::string f = linWith(tmp, "Number of continuous states: +20",
+                                "Number of continuous states:        2000000000");
   // (The bounds of src/model/limits.hpp, added alongside, now refuse the count at its header line.)
   expectInputError([&] { readOpenFastLin(f); },
                    f + ":12: Number of continuous states: 2000000000 is above the limit of 100000");
@@ -151,9 +153,8 @@ TEST(SanitizerFindings, LinMatrixDimensionsOutOfRange) {
 TEST(SanitizerFindings, LinBladeNumberOutOfRange) {
   test::TempDir tmp;
   for (const std::string number : {"99999999999", "2000000000"}) {
-    const std::string f =
-        linWith(tmp, "bending-mode DOF of blade 3 \\(internal DOF index = DOF_BF\\(3,1\\)\\), m\\n",
-                "bending-mode DOF of blade " + number + " (internal DOF index = DOF_BF(3,1)), m\n");
+    const std::string f = linWith(tmp, "bending-mode DOF of blade 3 \\(internal DOF index = DOF_BF\\(3,1\\)\\), m\\n",
+                                  "bending-mode DOF of blade " + number + " (internal DOF index = DOF_BF(3,1)), m\n");
     const OpenFastLin lin = readOpenFastLin(f);
     expectInputError([&] { mbcLayoutFromLin(lin); }, f + ":25: continuous states: blade number");
   }

@@ -50,7 +50,8 @@ TEST(SparseEigen, SpringChainMatchesAnalytic) {
     // the backward error recomputed here, independently of SLEPc (1-norms of the matrices)
     const Eigen::VectorXd x = p.vector.real();
     const double knorm = 4 * k, mnorm = m;  // largest column sums of K and M
-    const double backward = (s.K * x - p.value.real() * (s.M * x)).norm() / ((knorm + p.value.real() * mnorm) * x.norm());
+    const double backward = (s.K * x - p.value.real() * (s.M * x)).norm() /
+                            ((knorm + p.value.real() * mnorm) * x.norm());
     EXPECT_LT(backward, 1e-13);
   }
 }
@@ -88,8 +89,8 @@ TEST(SparseEigen, CantileverEqualsDenseLapack) {
   const SparseEigenResult r = sparseGeneralizedEigen(s.K, s.M, opt);
   const std::vector<double> w2 = sortedValues(r);
 
-  const EigenDecomposition d =
-      eigenSecondOrder(Eigen::MatrixXd(s.M), Eigen::MatrixXd::Zero(n, n), Eigen::MatrixXd(s.K));
+  const EigenDecomposition d = eigenSecondOrder(Eigen::MatrixXd(s.M), Eigen::MatrixXd::Zero(n, n),
+                                                Eigen::MatrixXd(s.K));
   std::vector<double> dense;
   for (int j = 0; j < d.values.size(); ++j)
     if (d.values(j).imag() > 0) dense.push_back(std::norm(d.values(j)));
@@ -123,9 +124,9 @@ TEST(SparseEigen, DampedGyroscopicPepEqualsDenseStateSpace) {
   addBlock(mt, b.M, nb, nb, 1);
   addBlock(kt, b.K, 0, 0, 1);
   addBlock(kt, b.K, nb, nb, 1.15);
-  addBlock(ct, b.M, 0, 0, 0.02);     // Rayleigh α M
+  addBlock(ct, b.M, 0, 0, 0.02);  // Rayleigh α M
   addBlock(ct, b.M, nb, nb, 0.02);
-  addBlock(ct, b.K, 0, 0, 1e-4);     // Rayleigh β K
+  addBlock(ct, b.K, 0, 0, 1e-4);  // Rayleigh β K
   addBlock(ct, b.K, nb, nb, 1.15e-4);
   addBlock(ct, b.M, 0, nb, -0.3 * omega);  // gyroscopic: skew
   addBlock(ct, b.M, nb, 0, 0.3 * omega);
@@ -139,7 +140,8 @@ TEST(SparseEigen, DampedGyroscopicPepEqualsDenseStateSpace) {
 
   const EigenDecomposition d = eigenSecondOrder(Eigen::MatrixXd(M), Eigen::MatrixXd(C), Eigen::MatrixXd(K));
   std::vector<std::complex<double>> dense(d.values.data(), d.values.data() + d.values.size());
-  std::sort(dense.begin(), dense.end(), [&](auto a, auto c) { return std::abs(a - r.target) < std::abs(c - r.target); });
+  std::sort(dense.begin(), dense.end(),
+            [&](auto a, auto c) { return std::abs(a - r.target) < std::abs(c - r.target); });
   int complex_pairs = 0;
   for (const auto& p : r.pairs) {
     const auto nearest = *std::min_element(dense.begin(), dense.end(), [&](auto a, auto c) {

@@ -91,7 +91,8 @@ TEST(StateSpace, OutputMatricesMatchDifferencesThroughTheEquationsOfMotion) {
     D.col(i) = (outputs(qp, op.qd, up) - outputs(qm, op.qd, um)) / (2 * h);
   }
   for (int r = 0; r < m.noutput(); ++r) {
-    const double sc = std::max(1e-12, s.C.row(r).cwiseAbs().maxCoeff()), sd = std::max(1e-12, s.D.row(r).cwiseAbs().maxCoeff());
+    const double sc = std::max(1e-12, s.C.row(r).cwiseAbs().maxCoeff()),
+                 sd = std::max(1e-12, s.D.row(r).cwiseAbs().maxCoeff());
     EXPECT_LE((s.C.row(r) - C.row(r)).cwiseAbs().maxCoeff(), 1e-5 * sc) << s.y[r].name;
     EXPECT_LE((s.D.row(r) - D.row(r)).cwiseAbs().maxCoeff(), 1e-5 * sd) << s.y[r].name;
   }
@@ -211,7 +212,9 @@ TEST(StateSpace, SelectionAndDroppingTheAzimuth) {
   EXPECT_EQ(r.u[0].name, "collective pitch");
   EXPECT_EQ(r.B.col(1), s.B.col(indexOf(s.u, "generator torque")));
   EXPECT_EQ(r.D(0, 0), s.D(indexOf(s.y, "GenSpeed"), indexOf(s.u, "collective pitch")));
-  EXPECT_NE(testing::inputErrorOf([&] { selectInputsOutputs(s, {"blade pitch"}, {}); }).find("unknown input 'blade pitch'"),
+  EXPECT_NE(testing::inputErrorOf([&] {
+              selectInputsOutputs(s, {"blade pitch"}, {});
+            }).find("unknown input 'blade pitch'"),
             std::string::npos);
   const StateSpaceModel d = dropAzimuth(s);
   ASSERT_EQ(d.x.size(), s.x.size() - 1);

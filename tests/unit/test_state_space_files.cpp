@@ -135,7 +135,7 @@ TEST(StateSpaceFiles, MatWithSeveralOperatingPointsHasRoscosLayout) {
   Mat_VarFree(u);
   matvar_t* ind = r.read("indInps");
   ASSERT_EQ(ind->dims[1], e.points[0].model.u.size());
-  ASSERT_EQ(ind->class_type, MAT_C_INT32);  // integers: numpy indexes with them as loaded
+  ASSERT_EQ(ind->class_type, MAT_C_INT32);                  // integers: numpy indexes with them as loaded
   EXPECT_EQ(static_cast<const int32_t*>(ind->data)[0], 2);  // 1-based, after the wind speed
   Mat_VarFree(ind);
 }
@@ -243,28 +243,27 @@ TEST(StateSpaceFiles, ScipyLoadsOneAndSeveralPointsWithTheSameKeys) {
   // The reading of ROSCO's LinearTurbineModel(fromMat=True) (rosco/toolbox/linear/linear_models.py):
   // the cells of u_ops side by side, the wind speed their first row, indInps/indOuts 1-based.
   const std::string script = (dir.path() / "check.py").string();
-  std::ofstream(script)
-      << "import sys, numpy as np, scipy.io as sio\n"
-         "one, two = sio.loadmat(sys.argv[1]), sio.loadmat(sys.argv[2])\n"
-         "keys = lambda d: sorted(k for k in d if not k.startswith('__'))\n"
-         "assert keys(one) == keys(two), (keys(one), keys(two))\n"
-         "A = np.loadtxt(sys.argv[3])\n"
-         "assert np.array_equal(one['A'][0][0], A), 'A differs'\n"
-         "for d, n in ((one, 1), (two, 2)):\n"
-         "    u_ops = np.concatenate([u for u in d['u_ops'][0]], axis=1)\n"
-         "    assert u_ops.shape[1] == n and d['A'].shape == (1, n)\n"
-         "    B = d['B'][0][0]; C = d['C'][0][0]\n"
-         "    assert B.shape[1] == len(d['indInps'][0]) and C.shape[0] == len(d['indOuts'][0])\n"
-         "    assert u_ops[d['indInps'][0] - 1].shape[0] == B.shape[1]\n"
-         "assert list(np.concatenate([u for u in two['u_ops'][0]], axis=1)[0]) == [8.0, 10.0]\n"
-         "assert one['B'][0][0].shape == (32, 9) and one['C'][0][0].shape[1] == 32\n"
-         "assert [str(n[0]) for n in one['y_names'].ravel()][:2] == ['GenSpeed', 'RotSpeed']\n"
-         "assert [str(n[0]) for n in one['y_desc'].ravel()][:2] == ['ED GenSpeed', 'ED RotSpeed']\n"
-         "assert one['x_ops'][0][0].shape == (32, 1) and one['A_az'][0][0].shape == (32, 32, 3)\n"
-         "print('ok')\n";
+  std::ofstream(script) << "import sys, numpy as np, scipy.io as sio\n"
+                           "one, two = sio.loadmat(sys.argv[1]), sio.loadmat(sys.argv[2])\n"
+                           "keys = lambda d: sorted(k for k in d if not k.startswith('__'))\n"
+                           "assert keys(one) == keys(two), (keys(one), keys(two))\n"
+                           "A = np.loadtxt(sys.argv[3])\n"
+                           "assert np.array_equal(one['A'][0][0], A), 'A differs'\n"
+                           "for d, n in ((one, 1), (two, 2)):\n"
+                           "    u_ops = np.concatenate([u for u in d['u_ops'][0]], axis=1)\n"
+                           "    assert u_ops.shape[1] == n and d['A'].shape == (1, n)\n"
+                           "    B = d['B'][0][0]; C = d['C'][0][0]\n"
+                           "    assert B.shape[1] == len(d['indInps'][0]) and C.shape[0] == len(d['indOuts'][0])\n"
+                           "    assert u_ops[d['indInps'][0] - 1].shape[0] == B.shape[1]\n"
+                           "assert list(np.concatenate([u for u in two['u_ops'][0]], axis=1)[0]) == [8.0, 10.0]\n"
+                           "assert one['B'][0][0].shape == (32, 9) and one['C'][0][0].shape[1] == 32\n"
+                           "assert [str(n[0]) for n in one['y_names'].ravel()][:2] == ['GenSpeed', 'RotSpeed']\n"
+                           "assert [str(n[0]) for n in one['y_desc'].ravel()][:2] == ['ED GenSpeed', 'ED RotSpeed']\n"
+                           "assert one['x_ops'][0][0].shape == (32, 1) and one['A_az'][0][0].shape == (32, 32, 3)\n"
+                           "print('ok')\n";
   const std::string out = (dir.path() / "out.txt").string();
-  const int rc =
-      std::system((python + " " + script + " " + mat + " " + mat2 + " " + ref + " > " + out + " 2>&1").c_str());
+  const int rc = std::system(
+      (python + " " + script + " " + mat + " " + mat2 + " " + ref + " > " + out + " 2>&1").c_str());
   EXPECT_EQ(rc, 0) << test::readText(out);
 }
 

@@ -48,10 +48,20 @@ class RigidTeeter : public testing::Test {
   }
   // Rigid everything but the teeter, no gravity, a teeter spring k from 0 deg and no damper, Ω = 53.333 rpm.
   std::vector<std::string> overrides(const std::vector<std::string>& extra) const {
-    std::vector<std::string> o = {"FlapDOF1=False", "FlapDOF2=False", "EdgeDOF=False", "DrTrDOF=False",
-                                  "GenDOF=False", "TwFADOF1=False", "TwFADOF2=False", "TwSSDOF1=False",
-                                  "TwSSDOF2=False", "gravity=0", "BldFile(1)=uniform_blade.dat",
-                                  "BldFile(2)=uniform_blade.dat", "TeetDmp=0", "TeetSSSp=" + std::to_string(kSpring)};
+    std::vector<std::string> o = {"FlapDOF1=False",
+                                  "FlapDOF2=False",
+                                  "EdgeDOF=False",
+                                  "DrTrDOF=False",
+                                  "GenDOF=False",
+                                  "TwFADOF1=False",
+                                  "TwFADOF2=False",
+                                  "TwSSDOF1=False",
+                                  "TwSSDOF2=False",
+                                  "gravity=0",
+                                  "BldFile(1)=uniform_blade.dat",
+                                  "BldFile(2)=uniform_blade.dat",
+                                  "TeetDmp=0",
+                                  "TeetSSSp=" + std::to_string(kSpring)};
     o.insert(o.end(), extra.begin(), extra.end());
     return o;
   }
@@ -63,7 +73,9 @@ class RigidTeeter : public testing::Test {
     const int nodes = 10;
     const double d3 = delta3_deg * pi / 180, c = cone_deg * pi / 180, dr = (R - r0) / nodes;
     Eigen::Matrix3d J = Eigen::Matrix3d::Zero();
-    auto point = [&](double m, const Eigen::Vector3d& p) { J += m * (p.squaredNorm() * Eigen::Matrix3d::Identity() - p * p.transpose()); };
+    auto point = [&](double m, const Eigen::Vector3d& p) {
+      J += m * (p.squaredNorm() * Eigen::Matrix3d::Identity() - p * p.transpose());
+    };
     for (int k = 0; k < 2; ++k) {
       const double a = d3 + pi * k;  // blade k's angle about the shaft from the teeter frame's z
       const Eigen::Vector3d i3(std::sin(c), -std::sin(a) * std::cos(c), std::cos(a) * std::cos(c));
@@ -98,8 +110,8 @@ class RigidTeeter : public testing::Test {
 };
 
 TEST_F(RigidTeeter, FlatRotorIsSpringPlusCentrifugalStiffening) {
-  const Model m = readElastoDynModel(
-      ed_.string(), overrides({"UndSling=0", "Delta3=0", "PreCone(1)=0", "PreCone(2)=0", "HubCM=0"}));
+  const Model m = readElastoDynModel(ed_.string(),
+                                     overrides({"UndSling=0", "Delta3=0", "PreCone(1)=0", "PreCone(2)=0", "HubCM=0"}));
   // I = HubIner + Σ blades (node masses r² + tip mass R²): ElastoDyn's node rule, 10 elements.
   double I = 335.34;
   const double dr = (13.757 - 1.184) / 10;
@@ -112,8 +124,8 @@ TEST_F(RigidTeeter, FlatRotorIsSpringPlusCentrifugalStiffening) {
 }
 
 TEST_F(RigidTeeter, Delta3UnderslingConeAndHubOffset) {
-  const Model m = readElastoDynModel(
-      ed_.string(), overrides({"UndSling=0.3", "Delta3=30", "PreCone(1)=5", "PreCone(2)=5", "HubCM=0.1"}));
+  const Model m = readElastoDynModel(ed_.string(), overrides({"UndSling=0.3", "Delta3=30", "PreCone(1)=5",
+                                                              "PreCone(2)=5", "HubCM=0.1"}));
   const double expected = closedForm(0.1, 0.3, 30, 5, false);
   EXPECT_NEAR(teeterFrequency2(m), expected, 1e-10 * expected);
   // The flat formula would be off by the undersling's and δ3's share: the check can fail.
@@ -126,8 +138,8 @@ TEST_F(RigidTeeter, HubInertiaAboutTheTeeterAxisWhenTheFileGivesIt) {
              test::replaceOnce(
                  test::readText(ed_), "      59.26   GenIner",
                  "        900   HubIner_Teeter - Hub inertia about teeter axis (kg m^2)\n      59.26   GenIner"));
-  const Model m = readElastoDynModel(
-      ed_.string(), overrides({"UndSling=0.3", "Delta3=30", "PreCone(1)=5", "PreCone(2)=5", "HubCM=0.1"}));
+  const Model m = readElastoDynModel(ed_.string(), overrides({"UndSling=0.3", "Delta3=30", "PreCone(1)=5",
+                                                              "PreCone(2)=5", "HubCM=0.1"}));
   const double expected = closedForm(0.1, 0.3, 30, 5, true, 900);
   EXPECT_NEAR(teeterFrequency2(m), expected, 1e-10 * expected);
 }
@@ -135,8 +147,8 @@ TEST_F(RigidTeeter, HubInertiaAboutTheTeeterAxisWhenTheFileGivesIt) {
 // In the fixed frame the rotating-frame teeter ω shows as the tilt of the rotor plane turning at
 // ω − Ω (and ω + Ω, equally: a standing pattern of 2 blades); Floquet names the slower one, backward.
 TEST_F(RigidTeeter, FloquetSeesTheTeeterInTheFixedFrame) {
-  const Model m = readElastoDynModel(
-      ed_.string(), overrides({"UndSling=0", "Delta3=0", "PreCone(1)=0", "PreCone(2)=0", "HubCM=0"}));
+  const Model m = readElastoDynModel(ed_.string(),
+                                     overrides({"UndSling=0", "Delta3=0", "PreCone(1)=0", "PreCone(2)=0", "HubCM=0"}));
   const double w = std::sqrt(teeterFrequency2(m)), W = 53.333 * pi / 30;
   PeriodicOptions opt;
   opt.azimuths = 8;

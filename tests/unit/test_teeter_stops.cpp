@@ -24,8 +24,8 @@ const std::string kEd = (test::openfastDataDir() / "decks" / "certtest" / "AWT27
 // AWT-27 (Test01: TeetMod = 1, soft stop from 0 deg at 1 N m/rad, hard stop at 180 deg, damper from
 // 0 deg) with the rotor alone flexible: the teeter and the blades.
 Model awt27(const std::vector<std::string>& extra) {
-  std::vector<std::string> o = {"DrTrDOF=False", "GenDOF=False", "TwFADOF1=False", "TwFADOF2=False",
-                                "TwSSDOF1=False", "TwSSDOF2=False"};
+  std::vector<std::string> o = {"DrTrDOF=False",  "GenDOF=False",   "TwFADOF1=False",
+                                "TwFADOF2=False", "TwSSDOF1=False", "TwSSDOF2=False"};
   o.insert(o.end(), extra.begin(), extra.end());
   return readElastoDynModel(kEd, o);
 }
@@ -72,7 +72,7 @@ TEST(TeeterStops, BeyondAStopItIsASpringAboutTheStopAngle) {
   EXPECT_DOUBLE_EQ(laws[0].q0, -5 * deg);
   EXPECT_DOUBLE_EQ(laws[0].q_max, -5 * deg);
   EXPECT_EQ(laws[0].q_min, -std::numeric_limits<double>::infinity());
-  EXPECT_EQ(laws[1].k, 0.0);  // the hard stop at 20 deg not reached
+  EXPECT_EQ(laws[1].k, 0.0);      // the hard stop at 20 deg not reached
   EXPECT_EQ(laws[2].c, 40000.0);  // beyond TeetDmpP = 2 deg: damped
   EXPECT_DOUBLE_EQ(laws[2].q_max, -2 * deg);
 }
@@ -80,8 +80,8 @@ TEST(TeeterStops, BeyondAStopItIsASpringAboutTheStopAngle) {
 // Turning, the centrifugal moment pulls the teeter back inside the soft stop the model was linearized
 // beyond: that point is not valid, and the check says which law and why.
 TEST(TeeterStops, APointThatLeavesThePieceIsInvalid) {
-  const Model m = awt27({"TeetSStP=5", "TeetSSSp=1e6", "TeetDefl=8", "FlapDOF1=False", "FlapDOF2=False",
-                         "EdgeDOF=False"});
+  const Model m = awt27(
+      {"TeetSStP=5", "TeetSSSp=1e6", "TeetDefl=8", "FlapDOF1=False", "FlapDOF2=False", "EdgeDOF=False"});
   const OperatingPoint op = solveOperatingPoint(m, initialPoint(m));
   EXPECT_LT(op.q(m.roles.teeter_dof), 5 * deg);
   const std::vector<std::string> problems = checkPointValidity(m, op);

@@ -87,7 +87,8 @@ TEST(TimeSignal, BadFormsNameTheOptionAndTheReason) {
 }
 
 TEST(TimeSignal, AssignmentSplitsAtTheFirstEquals) {
-  EXPECT_EQ(splitAssignment(" tower FA 1 = 0.5 ", "--init"), (std::pair<std::string, std::string>{"tower FA 1", "0.5"}));
+  EXPECT_EQ(splitAssignment(" tower FA 1 = 0.5 ", "--init"),
+            (std::pair<std::string, std::string>{"tower FA 1", "0.5"}));
   EXPECT_THROW(splitAssignment("=1", "--init"), InputError);
   EXPECT_THROW(splitAssignment("abc", "--init"), InputError);
 }

@@ -30,7 +30,8 @@ CampbellPoint point(double rpm, std::vector<Mode> modes) {
   std::stable_sort(modes.begin(), modes.end(), [](const Mode& a, const Mode& b) { return a.freq_hz < b.freq_hz; });
   CampbellPoint p;
   p.rpm = rpm;
-  for (Eigen::Index k = 0; k < (modes.empty() ? 0 : modes[0].shape.size()); ++k) p.coordinates.push_back("q" + std::to_string(k));
+  for (Eigen::Index k = 0; k < (modes.empty() ? 0 : modes[0].shape.size()); ++k)
+    p.coordinates.push_back("q" + std::to_string(k));
   p.modes = std::move(modes);
   return p;
 }

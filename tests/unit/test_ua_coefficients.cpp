@@ -21,10 +21,10 @@ using whirl::aero::separationAt;
 using whirl::aero::UaTable;
 using whirl::io::airfoilUa;
 using whirl::io::readAirfoil;
-using whirl::test::ScratchDir;
-using whirl::test::replaceOnce;
 using whirl::test::airfoilDir;
 using whirl::test::inputErrorMessage;
+using whirl::test::replaceOnce;
+using whirl::test::ScratchDir;
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 
@@ -32,9 +32,7 @@ std::filesystem::path uaDeckDir() {
   return std::filesystem::path(WHIRL_SOURCE_DIR) / "tests/data/openfast-lin/ua4-dbemt3";
 }
 
-UaTable naca64Table1() {
-  return airfoilUa(readAirfoil(uaDeckDir() / "case/NACA64_A17_2Prop.dat"), 0, 4);
-}
+UaTable naca64Table1() { return airfoilUa(readAirfoil(uaDeckDir() / "case/NACA64_A17_2Prop.dat"), 0, 4); }
 
 TEST(UaCoefficients, GivenConstantsInSiAndDocumentedDefaults) {
   // NACA64_A17_2Prop.dat table 1 gives alpha0 -4.432 deg, C_lalpha 7.67763, Cd0 0.0065, Cm0 -0.088 and
@@ -147,10 +145,10 @@ TEST(UaCoefficients, TriweightSmoothingKeepsALineAndAverages) {
   const std::vector<double> x{0, 1, 2, 3, 4};
   const std::vector<double> line{1, 3, 5, 7, 9};
   const auto s = whirl::aero::triweightSmoothing(x, line, 1.5);
-  EXPECT_NEAR(s[2], 5.0, 1e-14);                  // symmetric window: the line's value
-  EXPECT_GT(s[0], 1.0);                           // one-sided at the ends: pulled inwards
+  EXPECT_NEAR(s[2], 5.0, 1e-14);  // symmetric window: the line's value
+  EXPECT_GT(s[0], 1.0);           // one-sided at the ends: pulled inwards
   const auto wide = whirl::aero::triweightSmoothing(x, {0, 0, 10, 0, 0}, 1e-9);
-  EXPECT_DOUBLE_EQ(wide[2], 10.0);                // radius below the spacing: unchanged
+  EXPECT_DOUBLE_EQ(wide[2], 10.0);  // radius below the spacing: unchanged
 }
 
 TEST(UaCoefficients, BadConstantsNameFileLineAndKey) {
@@ -164,7 +162,8 @@ TEST(UaCoefficients, BadConstantsNameFileLineAndKey) {
   // A time constant of zero is an error where UA runs on the table, not when the file is read (AeroDyn's
   // UA_ValidateAFI checks only the airfoils of elements with UA: certtest Test10's cylinder has zeros).
   EXPECT_NO_THROW(readAirfoil(bad_tf0));
-  EXPECT_THAT(inputErrorMessage([&] { airfoilUa(readAirfoil(bad_tf0), 0, 4); }), HasSubstr(":28: T_f0: must be > 0 (is 0)"));
+  EXPECT_THAT(inputErrorMessage([&] { airfoilUa(readAirfoil(bad_tf0), 0, 4); }),
+              HasSubstr(":28: T_f0: must be > 0 (is 0)"));
   EXPECT_THAT(inputErrorMessage([&] { airfoilUa(readAirfoil(uaDeckDir() / "case/NACA64_A17_2Prop.dat"), 2, 4); }),
               HasSubstr("NumTabs: table 3 asked for, the file has 2"));
   EXPECT_THAT(inputErrorMessage([&] { airfoilUa(readAirfoil(uaDeckDir() / "case/NACA64_A17_2Prop.dat"), 0, 5); }),
@@ -201,7 +200,8 @@ TEST(UaCoefficients, SmallAndOddTablesDoNotBreak) {
   // Three rows (-180, 0, 180 deg) and a coarse table: every constant finite, f_st within [0, 1].
   using whirl::aero::uaTable;
   const double pi = std::numbers::pi;
-  for (const std::vector<double>& a : {std::vector<double>{-pi, 0.0, pi}, std::vector<double>{-pi, -0.5, 0.1, 0.5, pi}}) {
+  for (const std::vector<double>& a :
+       {std::vector<double>{-pi, 0.0, pi}, std::vector<double>{-pi, -0.5, 0.1, 0.5, pi}}) {
     std::vector<double> cl, cd, cm;
     for (double x : a) {
       cl.push_back(std::sin(2 * x) + 0.3 * std::sin(x));

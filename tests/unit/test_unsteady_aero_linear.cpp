@@ -75,10 +75,14 @@ TEST(UnsteadyAeroLinear, AdJacobianEqualsCentralDifferences) {
       return states ? evaluate(m, op, q, qd, op.u, &ua.z) : evaluate(m, op, q, qd, op.u, nullptr);
     };
     const double hq = 1e-5 * std::max(1.0, std::abs(op.q(cols[c])));
-    check("dK", -ua.dK, [&](double h) { return VecX(dq(h, false, true).e - dq(h, false, false).e); }, hq, c);
-    check("dC", -ua.dC, [&](double h) { return VecX(dq(h, true, true).e - dq(h, true, false).e); }, 1e-5, c);
-    check("Zq", ua.Zq, [&](double h) { return dq(h, false, true).zdot; }, hq, c);
-    check("Zqd", ua.Zqd, [&](double h) { return dq(h, true, true).zdot; }, 1e-5, c);
+    check(
+        "dK", -ua.dK, [&](double h) { return VecX(dq(h, false, true).e - dq(h, false, false).e); }, hq, c);
+    check(
+        "dC", -ua.dC, [&](double h) { return VecX(dq(h, true, true).e - dq(h, true, false).e); }, 1e-5, c);
+    check(
+        "Zq", ua.Zq, [&](double h) { return dq(h, false, true).zdot; }, hq, c);
+    check(
+        "Zqd", ua.Zqd, [&](double h) { return dq(h, true, true).zdot; }, 1e-5, c);
   }
   for (int k = 0; k < nz; ++k) {
     auto dz = [&](double h) {
@@ -86,8 +90,10 @@ TEST(UnsteadyAeroLinear, AdJacobianEqualsCentralDifferences) {
       z(k) += h;
       return evaluate(m, op, op.q, op.qd, op.u, &z);
     };
-    check("G", ua.G, [&](double h) { return dz(h).e; }, 1e-6, k);
-    check("Azz", ua.Azz, [&](double h) { return dz(h).zdot; }, 1e-6, k);
+    check(
+        "G", ua.G, [&](double h) { return dz(h).e; }, 1e-6, k);
+    check(
+        "Azz", ua.Azz, [&](double h) { return dz(h).zdot; }, 1e-6, k);
   }
   const int wind = m.roles.wind_speed_input;
   auto du = [&](double h) {
@@ -95,8 +101,15 @@ TEST(UnsteadyAeroLinear, AdJacobianEqualsCentralDifferences) {
     u(wind) += h;
     return std::pair{evaluate(m, op, op.q, op.qd, u, &ua.z), evaluate(m, op, op.q, op.qd, u, nullptr)};
   };
-  check("dQ", ua.dQ, [&](double h) { auto [a, b] = du(h); return VecX(a.e - b.e); }, 1e-4, wind);
-  check("Zu", ua.Zu, [&](double h) { return du(h).first.zdot; }, 1e-4, wind);
+  check(
+      "dQ", ua.dQ,
+      [&](double h) {
+        auto [a, b] = du(h);
+        return VecX(a.e - b.e);
+      },
+      1e-4, wind);
+  check(
+      "Zu", ua.Zu, [&](double h) { return du(h).first.zdot; }, 1e-4, wind);
 }
 
 TEST(UnsteadyAeroLinear, LinearModelCarriesTheStatesAfterTheStructure) {

@@ -6,12 +6,12 @@
 
 #include <Eigen/Eigenvalues>
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <fstream>
+#include <numbers>
 #include <sstream>
 #include <type_traits>
-#include <numbers>
 #include <vector>
 
 #include "src/aero/dynamic_inflow.hpp"
@@ -83,7 +83,8 @@ TEST(UnsteadyAirfoil, StepInAngleOfAttackFollowsJonesIndicialResponse) {
     const auto k3 = hgmDerivative(s, add(x, k2, h / 2), in);
     const auto k4 = hgmDerivative(s, add(x, k3, h), in);
     x = {x.x1 + h / 6 * (k1.x1 + 2 * k2.x1 + 2 * k3.x1 + k4.x1), x.x2 + h / 6 * (k1.x2 + 2 * k2.x2 + 2 * k3.x2 + k4.x2),
-         x.x3 + h / 6 * (k1.x3 + 2 * k2.x3 + 2 * k3.x3 + k4.x3), x.x4 + h / 6 * (k1.x4 + 2 * k2.x4 + 2 * k3.x4 + k4.x4)};
+         x.x3 + h / 6 * (k1.x3 + 2 * k2.x3 + 2 * k3.x3 + k4.x3),
+         x.x4 + h / 6 * (k1.x4 + 2 * k2.x4 + 2 * k3.x4 + k4.x4)};
     t += h;
     if (step % 500 == 0) {
       const double sdim = t / tu;
@@ -315,8 +316,8 @@ namespace {
 TEST(UnsteadyAirfoilOye, SeparationLagOnlyAndStaticSteadyState) {
   // UA_Mod 6 (AeroDyn's UA_OYE): x4 alone relaxes towards f_st(α34) with the time constant T_f0 c/(2U);
   // from the steady state at 12 deg, after a step to 16 deg, x4(t) = f16 + (f12 − f16) e^{−t/(T_f0 Tu)}
-  // (one linear ODE: RK4 with h = 0.01 T_f0 Tu, global error ~1e-11 per 100 steps). The steady loads are the static polar's
-  // at the knots; Cd and Cm are static at every state.
+  // (one linear ODE: RK4 with h = 0.01 T_f0 Tu, global error ~1e-11 per 100 steps). The steady loads are the static
+  // polar's at the knots; Cd and Cm are static at every state.
   const ThinAirfoil af;
   UaSection s = af.section(1.5);
   s.ua_mod = 6;

@@ -20,13 +20,13 @@ TEST(Utf8Names, ValidTextPasses) {
 
 TEST(Utf8Names, EveryKindOfInvalidByteIsFoundWithItsPosition) {
   EXPECT_NE(invalidUtf8Reason("bad\xFFname").find("(0xFF) at byte 4"), std::string::npos);
-  EXPECT_NE(invalidUtf8Reason("\x80").find("(0x80) at byte 1"), std::string::npos);           // lone continuation
-  EXPECT_NE(invalidUtf8Reason("a\xC3").find("(0xC3) at byte 2"), std::string::npos);          // truncated
-  EXPECT_NE(invalidUtf8Reason("\xC0\xAF").find("(0xC0) at byte 1"), std::string::npos);       // overlong '/'
-  EXPECT_NE(invalidUtf8Reason("\xE0\x80\xAF").find("(0xE0)"), std::string::npos);             // overlong, 3 bytes
-  EXPECT_NE(invalidUtf8Reason("\xED\xA0\x80").find("(0xED)"), std::string::npos);             // surrogate U+D800
-  EXPECT_NE(invalidUtf8Reason("\xF4\x90\x80\x80").find("(0xF4)"), std::string::npos);         // above U+10FFFF
-  EXPECT_NE(invalidUtf8Reason("\xE2\x82 x").find("(0xE2)"), std::string::npos);               // bad third byte
+  EXPECT_NE(invalidUtf8Reason("\x80").find("(0x80) at byte 1"), std::string::npos);      // lone continuation
+  EXPECT_NE(invalidUtf8Reason("a\xC3").find("(0xC3) at byte 2"), std::string::npos);     // truncated
+  EXPECT_NE(invalidUtf8Reason("\xC0\xAF").find("(0xC0) at byte 1"), std::string::npos);  // overlong '/'
+  EXPECT_NE(invalidUtf8Reason("\xE0\x80\xAF").find("(0xE0)"), std::string::npos);        // overlong, 3 bytes
+  EXPECT_NE(invalidUtf8Reason("\xED\xA0\x80").find("(0xED)"), std::string::npos);        // surrogate U+D800
+  EXPECT_NE(invalidUtf8Reason("\xF4\x90\x80\x80").find("(0xF4)"), std::string::npos);    // above U+10FFFF
+  EXPECT_NE(invalidUtf8Reason("\xE2\x82 x").find("(0xE2)"), std::string::npos);          // bad third byte
 }
 
 TEST(Utf8Names, RequirePrintableNamesFileLineAndKey) {

@@ -32,10 +32,10 @@ inline std::string dofGroup(const std::string& name) {
 }
 
 struct ModeClass {
-  std::string group;       ///< dominant DOF group by energy share
-  double share = 0;        ///< its share
-  bool collective = false; ///< blade group: 3 q0² > half of Σ q_b²
-  std::string asymmetry;   ///< blade group, not collective: "pitch" or "yaw"
+  std::string group;        ///< dominant DOF group by energy share
+  double share = 0;         ///< its share
+  bool collective = false;  ///< blade group: 3 q0² > half of Σ q_b²
+  std::string asymmetry;    ///< blade group, not collective: "pitch" or "yaw"
   std::string label() const {
     if (group != "flap 1" && group != "edge 1" && group != "flap 2") return group;
     return group + (collective ? " collective" : " asymmetric " + asymmetry);
@@ -45,7 +45,8 @@ struct ModeClass {
 /// Classifies `mode` of a linear model with coordinate `names`; `psi` = azimuth of blade 1 [rad].
 inline ModeClass classify(const Mode& mode, const std::vector<std::string>& names, double psi) {
   std::map<std::string, double> share;
-  for (std::size_t i = 0; i < names.size(); ++i) share[dofGroup(names[i])] += mode.participation(static_cast<Eigen::Index>(i));
+  for (std::size_t i = 0; i < names.size(); ++i)
+    share[dofGroup(names[i])] += mode.participation(static_cast<Eigen::Index>(i));
   ModeClass c;
   for (const auto& [g, s] : share)
     if (s > c.share) c = ModeClass{g, s, false, ""};
@@ -69,10 +70,8 @@ inline ModeClass classify(const Mode& mode, const std::vector<std::string>& name
   }
   c.collective = 3 * q0 * q0 > 0.5 * sum2;
   const bool cos_dominant = std::abs(qc) > std::abs(qs);
-  if (c.group == "edge 1")
-    c.asymmetry = cos_dominant ? "yaw" : "pitch";
-  else
-    c.asymmetry = cos_dominant ? "pitch" : "yaw";
+  if (c.group == "edge 1") c.asymmetry = cos_dominant ? "yaw" : "pitch";
+  else c.asymmetry = cos_dominant ? "pitch" : "yaw";
   return c;
 }
 

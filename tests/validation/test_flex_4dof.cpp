@@ -32,16 +32,16 @@ TEST(Flex4Dof, MassAndStiffnessAtUnitCoordinates) {
   JacobianWorkspace jw(m);
   const VecX z = VecX::Zero(4);
   const MatX K = -residualJacobian(m, jw, q, z, z, VecX(), Wrt::Q, {0, 1, 2, 3});
-  std::map<std::string, double> c = {{"Mq_11", M(0, 0)}, {"Mq_13", M(0, 2)}, {"Mq_14", M(0, 3)}, {"Mq_22", M(1, 1)},
-                                     {"Mq_33", M(2, 2)}, {"Mq_44", M(3, 3)}, {"Kq_11", K(0, 0)}, {"Kq_33", K(2, 2)},
-                                     {"Kq_44", K(3, 3)}};
+  std::map<std::string, double> c = {{"Mq_11", M(0, 0)}, {"Mq_13", M(0, 2)}, {"Mq_14", M(0, 3)},
+                                     {"Mq_22", M(1, 1)}, {"Mq_33", M(2, 2)}, {"Mq_44", M(3, 3)},
+                                     {"Kq_11", K(0, 0)}, {"Kq_33", K(2, 2)}, {"Kq_44", K(3, 3)}};
   // Body matrices, 1-based (i, j) as printed in the paper: rows/columns x, y, z, θx, θy, θz, shape.
   const MatX Mt = bodyMatrixAt(m, "tower", q), Mb = bodyMatrixAt(m, "blade 1", q);
-  for (auto [i, j] : std::vector<std::pair<int, int>>{{1, 1}, {1, 5}, {2, 4}, {2, 6}, {3, 5}, {3, 7},
-                                                      {4, 4}, {4, 6}, {5, 5}, {5, 7}, {6, 6}})
+  for (auto [i, j] : std::vector<std::pair<int, int>>{
+           {1, 1}, {1, 5}, {2, 4}, {2, 6}, {3, 5}, {3, 7}, {4, 4}, {4, 6}, {5, 5}, {5, 7}, {6, 6}})
     c["Mt_" + std::to_string(i) + std::to_string(j)] = Mt(i - 1, j - 1);
-  for (auto [i, j] : std::vector<std::pair<int, int>>{{1, 1}, {1, 5}, {2, 4}, {2, 6}, {3, 5}, {3, 7},
-                                                      {4, 4}, {5, 5}, {5, 7}})
+  for (auto [i, j] :
+       std::vector<std::pair<int, int>>{{1, 1}, {1, 5}, {2, 4}, {2, 6}, {3, 5}, {3, 7}, {4, 4}, {5, 5}, {5, 7}})
     c["Mb_" + std::to_string(i) + std::to_string(j)] = Mb(i - 1, j - 1);
   test::expectMatchesReference(kCase, c);
   EXPECT_NEAR(M(0, 1), 0.0, 1e-9 * M(0, 0));  // eq. 36: the printed zeros

@@ -50,17 +50,19 @@ E3 parameters(const Model& m) {
   E3 p;
   const Body& t = m.bodies[*m.findBody("tower")];
   p.MT = t.inertia.mass;
-  p.S1 = t.inertia.m1(0, 0);                            // ∫ m z
-  p.JT = t.inertia.S[0](0, 0) + t.inertia.S[8](0, 0);   // ∫ m z² about the base
-  p.Ct = t.inertia.m1(2, 1);                            // ∫ m Φ
-  p.Cr = t.inertia.S[2](0, 1);                          // ∫ m z Φ
-  p.Me = t.inertia.S[8](1, 1);                          // ∫ m Φ²
+  p.S1 = t.inertia.m1(0, 0);                           // ∫ m z
+  p.JT = t.inertia.S[0](0, 0) + t.inertia.S[8](0, 0);  // ∫ m z² about the base
+  p.Ct = t.inertia.m1(2, 1);                           // ∫ m Φ
+  p.Cr = t.inertia.S[2](0, 1);                         // ∫ m z Φ
+  p.Me = t.inertia.S[8](1, 1);                         // ∫ m Φ²
   p.Ke = t.elastic.K(0, 0);
-  p.nu = -t.points.at(0).theta(1, 0);                   // tower-top slope Φ'(L)
-  const ShapePtr phi = polynomialShape("FA", p.LT, {0, 0, 0.8689, 0.2205, -0.0908, 0.1167, -0.1154}, 0, 1.0 / 0.9999);  // normalized: Σ a_k = 0.9999
+  p.nu = -t.points.at(0).theta(1, 0);  // tower-top slope Φ'(L)
+  const ShapePtr phi = polynomialShape("FA", p.LT, {0, 0, 0.8689, 0.2205, -0.0908, 0.1167, -0.1154}, 0,
+                                       1.0 / 0.9999);  // normalized: Σ a_k = 0.9999
   const VecX frac = VecX::LinSpaced(11, 0, 1);
   const VecX mass = (VecX(11) << 4667.0, 4345.28, 4034.76, 3735.44, 3447.32, 3170.40, 2904.69, 2650.18, 2406.88,
-                     2174.77, 1953.87).finished();
+                     2174.77, 1953.87)
+                        .finished();
   p.Kg = towerGeometricStiffness(p, *phi, frac, mass);
   return p;
 }
@@ -137,10 +139,13 @@ TEST(Floating3Dof, NonlinearMassTermsAtSeveralStates) {
     // E27, E29, E30 (first order in φ, second in ν) and E32; dropped terms: φ², (ν q_T)², ν³.
     const double nq = p.nu * qT;
     const double M11 = p.MF + p.MT + p.MN;
-    const double M13 = p.Ct + p.MN * (1 + p.nu * p.zN - p.nu * p.nu * p.xN * qT - phi * (p.nu * p.nu * p.zN * qT + p.nu * p.xN));
+    const double M13 = p.Ct + p.MN * (1 + p.nu * p.zN - p.nu * p.nu * p.xN * qT -
+                                      phi * (p.nu * p.nu * p.zN * qT + p.nu * p.xN));
     const double M22 = p.JF + p.MF * p.zFG * p.zFG + p.JT + p.JN +
-                       p.MN * ((p.LT + p.zN) * (p.LT + p.zN) + (qT + p.xN) * (qT + p.xN) + 2 * p.nu * qT * (p.zN * qT - p.LT * p.xN));
-    const double M33 = p.Me + p.MN + (p.JN + p.MN * (p.xN * p.xN - 2 * p.xN * qT + p.zN * p.zN)) * p.nu * p.nu + 2 * p.MN * p.nu * p.zN;
+                       p.MN * ((p.LT + p.zN) * (p.LT + p.zN) + (qT + p.xN) * (qT + p.xN) +
+                               2 * p.nu * qT * (p.zN * qT - p.LT * p.xN));
+    const double M33 = p.Me + p.MN + (p.JN + p.MN * (p.xN * p.xN - 2 * p.xN * qT + p.zN * p.zN)) * p.nu * p.nu +
+                       2 * p.MN * p.nu * p.zN;
     EXPECT_NEAR(M(ix, ix), M11, 1e-9 * M11);
     EXPECT_NEAR(M(ix, iq), M13, p.MN * (phi * phi + nq * nq));
     EXPECT_NEAR(M(ip, ip), M22, p.MN * (p.LT * p.LT) * (nq * nq + phi * phi) + p.JN * nq * nq);

@@ -32,7 +32,8 @@ Eigen::Matrix3d closedFormMass(const Params& p, const State& s) {
   Eigen::Matrix3d M = Eigen::Matrix3d::Zero();
   M(0, 0) = p.Me1 + p.MN + p.MR +
             (p.JyN + p.JoR + p.MN * (p.xN * p.xN - 2 * p.xN * s.q1 + p.zN * p.zN) +
-             p.MR * (p.xR * p.xR - 2 * p.xR * s.q1 + p.zR * p.zR)) * p.nuy * p.nuy +
+             p.MR * (p.xR * p.xR - 2 * p.xR * s.q1 + p.zR * p.zR)) *
+                p.nuy * p.nuy +
             2 * (p.MN * p.zN + p.MR * p.zR) * p.nuy;
   M(0, 2) = M(2, 0) = p.JxR * p.tilt * p.nux * p.nuy * s.q2;
   M(1, 1) = p.Me2 + p.MN + p.MR + (p.JxN + p.JxR + p.MN * p.zN * p.zN + p.MR * p.zR * p.zR) * p.nux * p.nux -
@@ -77,8 +78,10 @@ TEST(Landbased3Dof, MassAndForcingMatchAppendixE2) {
   ASSERT_LT(p.nux, 0);  // YAMS sign: side-side deflection along +y rolls the nacelle about −x
   const int i1 = *m.findDof("tower FA 1"), i2 = *m.findDof("tower SS 1"), i3 = *m.findDof("azimuth");
   Workspace<double> ws(m);
-  const std::vector<State> states = {{0, 0, 0, 0, 0, 1.2, 0, 0},          {0.3, 0, 0.7, 0.2, 0, 1.2, 7e5, 3e6},
-                                     {0, -0.3, 2.0, 0, 0.25, 1.2, 5e5, 0}, {0.1, 0.1, 4.0, -0.3, 0.2, 1.0, 6e5, 2e6},
+  const std::vector<State> states = {{0, 0, 0, 0, 0, 1.2, 0, 0},
+                                     {0.3, 0, 0.7, 0.2, 0, 1.2, 7e5, 3e6},
+                                     {0, -0.3, 2.0, 0, 0.25, 1.2, 5e5, 0},
+                                     {0.1, 0.1, 4.0, -0.3, 0.2, 1.0, 6e5, 2e6},
                                      {-0.2, 0.05, 5.5, 0.1, -0.2, 0.8, 0, 1e6}};
   // Dropped terms of the closed form (θ_t first order, ν second order), bounded per state:
   //  mass: θ_t² J_xR (|ν_x| + ν_x²) (cos θ_t of the shaft axis) + 4 ν² (ν(|q1|+|q2|))² I_RNA,
@@ -88,8 +91,12 @@ TEST(Landbased3Dof, MassAndForcingMatchAppendixE2) {
   const double Mr = p.MN * std::hypot(p.xN, p.zN) + p.MR * std::hypot(p.xR, p.zR);
   for (const State& s : states) {
     VecX q = VecX::Zero(m.ndof()), qd = q, qdd = q, u(2), e(m.ndof()), e_torque(m.ndof());
-    q(i1) = s.q1; q(i2) = s.q2; q(i3) = s.psi;
-    qd(i1) = s.qd1; qd(i2) = s.qd2; qd(i3) = s.psid;
+    q(i1) = s.q1;
+    q(i2) = s.q2;
+    q(i3) = s.psi;
+    qd(i1) = s.qd1;
+    qd(i2) = s.qd2;
+    qd(i3) = s.psid;
     MatX M;
     massMatrix(m, ws, q, M);
     u << s.fa, s.ta;
@@ -104,7 +111,8 @@ TEST(Landbased3Dof, MassAndForcingMatchAppendixE2) {
                          1e-9 * p.g * (p.MN + p.MR);  // round-off floor
     const int idx[3] = {i1, i2, i3};
     for (int r = 0; r < 3; ++r) {
-      for (int c = 0; c < 3; ++c) EXPECT_NEAR(M(idx[r], idx[c]), Mc(r, c), tol_m) << "M" << r + 1 << c + 1 << " q1 " << s.q1;
+      for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(M(idx[r], idx[c]), Mc(r, c), tol_m) << "M" << r + 1 << c + 1 << " q1 " << s.q1;
       // E25 has no aerodynamic-torque term: the torque on the rotor about its tilted shaft projects
       // on the side-side roll ν_x (Kane's generalized force), which the closed form leaves out
       // (it holds for a torque acting between rotor and nacelle). Compare without it here and

@@ -141,9 +141,13 @@ std::vector<double> globalRitzHz(double a, int nel, int nrr) {
 
 TEST(MixedFemRR, CouplingEqualsGlobalRitzModel) {
   const std::vector<std::string> gauss = {"bodies.upper.integration.method=gauss", "bodies.upper.integration.n=100"};
-  struct Check { std::string file; double a; int nel, nrr; };
-  for (const Check& c : {Check{"gy2_rr4.yaml", 50, 1, 4}, Check{"gy2_rr4c.yaml", 40, 1, 4},
-                         Check{"fem50_rr2.yaml", 50, 50, 2}}) {
+  struct Check {
+    std::string file;
+    double a;
+    int nel, nrr;
+  };
+  for (const Check& c :
+       {Check{"gy2_rr4.yaml", 50, 1, 4}, Check{"gy2_rr4c.yaml", 40, 1, 4}, Check{"fem50_rr2.yaml", 50, 50, 2}}) {
     const std::vector<double> whirl_hz = frequencies(c.file, gauss), ref = globalRitzHz(c.a, c.nel, c.nrr);
     ASSERT_EQ(whirl_hz.size(), ref.size()) << c.file;
     for (size_t k = 0; k < std::min<size_t>(6, ref.size()); ++k)

@@ -30,12 +30,14 @@ const std::string kDir = std::string(WHIRL_SOURCE_DIR) + "/cases/nrel5mw/";
 TEST(Nrel5mwAeroSteady, ThrustAndTorqueMatchOpenFastOperatingData) {
   const Model m = readElastoDynModel(kDir + "Main_Aero.fst");
   const std::vector<SweepPoint> points = readSchedule(kDir + "NREL5MW_Oper.csv");
-  struct Ref { double wind, thrust_kn, torque_knm; };
+  struct Ref {
+    double wind, thrust_kn, torque_knm;
+  };
   // RtAeroFxh [kN] and RtAeroMxh [kN m] of NREL5MW_Oper.csv.
-  const Ref ref[] = {{3, 5.7920946, 24.3312234}, {5, 171.7068163, 534.3241612}, {6, 232.1685662, 927.1605643}, {7, 300.9974324, 1408.0558167},
-                     {8, 379.5112723, 1946.9009021}, {9, 477.8789172, 2455.6832707}, {10, 586.311431, 3022.4045482},
-                     {11, 682.5526581, 3814.5119603}, {12, 596.2327444, 4180.8431208}, {15, 414.8642352, 4181.0607615},
-                     {20, 313.5326896, 4176.9003673}, {25, 273.4863367, 4176.0276416}};
+  const Ref ref[] = {{3, 5.7920946, 24.3312234},      {5, 171.7068163, 534.3241612},   {6, 232.1685662, 927.1605643},
+                     {7, 300.9974324, 1408.0558167},  {8, 379.5112723, 1946.9009021},  {9, 477.8789172, 2455.6832707},
+                     {10, 586.311431, 3022.4045482},  {11, 682.5526581, 3814.5119603}, {12, 596.2327444, 4180.8431208},
+                     {15, 414.8642352, 4181.0607615}, {20, 313.5326896, 4176.9003673}, {25, 273.4863367, 4176.0276416}};
   int checked = 0;
   for (const Ref& r : ref)
     for (const SweepPoint& p : points) {
@@ -74,11 +76,11 @@ TEST(Nrel5mwAeroSteady, ReferenceRowsAtThreeAndFourMetresPerSecondAreSpinUps) {
 }
 
 // During a spin-up a dynamic induction (AeroDyn's DBEMT: the OpenFAST toolbox's onshore NREL 5MW
-// simulation deck has WakeMod = 2; the table does not say which deck made it) lags the steady value, so the thrust of the 4 m/s row must lie between whirl's steady
-// BEM (induction in equilibrium) and no induction at all (AeroDyn WakeMod = 0). It does: 43.74 ≤ 44.91 ≤
-// 44.97 kN. (The torque, 406.55 kN m, is 0.3 % below whirl's steady 407.8 kN m rather than between it and
-// the 428 kN m without induction: that deck also has tower potential flow and unsteady airfoils, which
-// whirl's steady model leaves out; not separated.)
+// simulation deck has WakeMod = 2; the table does not say which deck made it) lags the steady value, so the thrust of
+// the 4 m/s row must lie between whirl's steady BEM (induction in equilibrium) and no induction at all (AeroDyn WakeMod
+// = 0). It does: 43.74 ≤ 44.91 ≤ 44.97 kN. (The torque, 406.55 kN m, is 0.3 % below whirl's steady 407.8 kN m rather
+// than between it and the 428 kN m without induction: that deck also has tower potential flow and unsteady airfoils,
+// which whirl's steady model leaves out; not separated.)
 TEST(Nrel5mwAeroSteady, SpinUpRowLiesBetweenSteadyAndAbsentInduction) {
   const Model m = readElastoDynModel(kDir + "Main_Aero.fst");
   Model frozen_out = m;
@@ -111,7 +113,7 @@ TEST(Nrel5mwAeroSteady, TrimBalancesTheTorqueLaw) {
   const SteadyState above = trimAtWindSpeed(m, 18.0);
   EXPECT_TRUE(above.above_rated);
   EXPECT_NEAR(above.generator_speed, 1162.0 * std::numbers::pi / 30, 1e-9);  // VS_RtGnSp
-  EXPECT_NEAR(above.aero_torque, gear * 47403.0, 1e-7 * above.aero_torque);      // VS_RtTq
+  EXPECT_NEAR(above.aero_torque, gear * 47403.0, 1e-7 * above.aero_torque);  // VS_RtTq
   EXPECT_GT(*above.condition.collective_pitch, 10 * std::numbers::pi / 180);
 }
 
@@ -179,8 +181,7 @@ TEST(Nrel5mwAeroSteady, TrimFailuresSayWhy) {
     FAIL() << "no error";
   } catch (const ComputeError& e) {
     EXPECT_NE(std::string(e.what()).find("trim at 6"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("does not overcome the generator torque law"), std::string::npos)
-        << e.what();
+    EXPECT_NE(std::string(e.what()).find("does not overcome the generator torque law"), std::string::npos) << e.what();
   }
   TrimOptions narrow;
   narrow.max_pitch = 5 * std::numbers::pi / 180;  // 20 m/s needs about 17 deg

@@ -36,13 +36,13 @@ struct Ref {
   const char* mode;
   double freq_hz, damping;
 };
-constexpr Ref kRef[] = {{"tower SS 1", 0.3140, 0.0044},        {"tower FA 1", 0.3314, 0.0603},
-                        {"drivetrain", 0.6263, 0.0248},        {"1st flap BW", 0.6880, 0.4143},
+constexpr Ref kRef[] = {{"tower SS 1", 0.3140, 0.0044},          {"tower FA 1", 0.3314, 0.0603},
+                        {"drivetrain", 0.6263, 0.0248},          {"1st flap BW", 0.6880, 0.4143},
                         {"1st flap collective", 0.7063, 0.4053}, {"1st edge BW", 0.9650, 0.0340},
-                        {"1st flap FW", 1.0225, 0.2033},       {"1st edge FW", 1.2163, 0.0167},
-                        {"2nd flap BW", 1.9160, 0.1123},       {"2nd flap collective", 2.0153, 0.1130},
-                        {"2nd flap FW", 2.5479, 0.0659},       {"tower FA 2", 2.9157, 0.0165},
-                        {"tower SS 2", 2.9555, 0.0104},        {"1st edge collective / drivetrain", 3.6938, 0.0404}};
+                        {"1st flap FW", 1.0225, 0.2033},         {"1st edge FW", 1.2163, 0.0167},
+                        {"2nd flap BW", 1.9160, 0.1123},         {"2nd flap collective", 2.0153, 0.1130},
+                        {"2nd flap FW", 2.5479, 0.0659},         {"tower FA 2", 2.9157, 0.0165},
+                        {"tower SS 2", 2.9555, 0.0104},          {"1st edge collective / drivetrain", 3.6938, 0.0404}};
 // Same source: the yaw's real pair (no yaw spring), |λ1 λ2|^½ / 2π and −(λ1 + λ2) / (2 |λ1 λ2|^½).
 constexpr double kYawHz = 0.0075, kYawDamping = 20.01;
 

@@ -142,23 +142,28 @@ TEST(Nrel5mwFemShapes, UntwistedBladeMatchesTheFemModesFile) {
 TEST(Nrel5mwFemShapes, FittedPolynomialsAgainstTheElastoDynFiles) {
   const io::ElastoDynTower tw = io::readElastoDynTower(kDir + "NRELOffshrBsline5MW_Onshore_ElastoDyn_Tower.dat");
   const io::ElastoDynBlade bl = io::readElastoDynBlade(kDir + "NRELOffshrBsline5MW_Blade.dat");
-  const std::map<std::string, std::pair<io::ModeShapeCoeffs, double>> file = {
-      {"tower FA 1", {tw.TwFAM1Sh, 0.9998}}, {"tower SS 1", {tw.TwSSM1Sh, 0.9998}},
-      {"tower FA 2", {tw.TwFAM2Sh, 0.9989}}, {"tower SS 2", {tw.TwSSM2Sh, 0.9985}},
-      {"flap 1", {bl.BldFl1Sh, 0.9995}},     {"edge 1", {bl.BldEdgSh, 0.9999}},
-      {"flap 2", {bl.BldFl2Sh, 0.997}}};
+  const std::map<std::string, std::pair<io::ModeShapeCoeffs, double>> file = {{"tower FA 1", {tw.TwFAM1Sh, 0.9998}},
+                                                                              {"tower SS 1", {tw.TwSSM1Sh, 0.9998}},
+                                                                              {"tower FA 2", {tw.TwFAM2Sh, 0.9989}},
+                                                                              {"tower SS 2", {tw.TwSSM2Sh, 0.9985}},
+                                                                              {"flap 1", {bl.BldFl1Sh, 0.9995}},
+                                                                              {"edge 1", {bl.BldEdgSh, 0.9999}},
+                                                                              {"flap 2", {bl.BldFl2Sh, 0.997}}};
   int compared = 0;
   for (const std::string body : {"tower", "blade 1"}) {
     const fem::FlexibleBeam& b = beam(parked(), body);
     const double L = b.input.props.length;
     for (const auto& r : fem::compareShapes(b)) {
       const auto& [c, tol] = file.at(r.shape);
-      const ShapePtr fit = polynomialShape("fit", L, {0, 0, r.fit.coeffs[0], r.fit.coeffs[1], r.fit.coeffs[2], r.fit.coeffs[3], r.fit.coeffs[4]}, 1, 0);
+      const ShapePtr fit = polynomialShape(
+          "fit", L, {0, 0, r.fit.coeffs[0], r.fit.coeffs[1], r.fit.coeffs[2], r.fit.coeffs[3], r.fit.coeffs[4]}, 1, 0);
       const ShapePtr ed = polynomialShape("file", L, {0, 0, c[0], c[1], c[2], c[3], c[4]}, 1, 0);
       const double mac = fem::shapeMac(*fit, *ed, L);
-      std::printf("%s %s: FE %.4f Hz, fit a2..a6 = [%.4f %.4f %.4f %.4f %.4f] (rms %.1e), file [%.4f %.4f %.4f %.4f %.4f], MAC %.5f\n",
-                  body.c_str(), r.shape.c_str(), r.freq_hz, r.fit.coeffs[0], r.fit.coeffs[1], r.fit.coeffs[2],
-                  r.fit.coeffs[3], r.fit.coeffs[4], r.fit.rms, c[0], c[1], c[2], c[3], c[4], mac);
+      std::printf(
+          "%s %s: FE %.4f Hz, fit a2..a6 = [%.4f %.4f %.4f %.4f %.4f] (rms %.1e), file [%.4f %.4f %.4f %.4f %.4f], MAC "
+          "%.5f\n",
+          body.c_str(), r.shape.c_str(), r.freq_hz, r.fit.coeffs[0], r.fit.coeffs[1], r.fit.coeffs[2], r.fit.coeffs[3],
+          r.fit.coeffs[4], r.fit.rms, c[0], c[1], c[2], c[3], c[4], mac);
       EXPECT_GT(mac, tol) << body << " " << r.shape;
       ++compared;
     }

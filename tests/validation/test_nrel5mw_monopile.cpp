@@ -21,7 +21,8 @@ TEST(Nrel5mwMonopileSlow, CraigBamptonWithinHalfPercentOfFullFem) {
   ASSERT_GE(cb.size(), 6u);
   ASSERT_GT(full.size(), 400u);  // the full FE DOFs are coordinates of the coupled model
   for (int k = 0; k < 6; ++k) {
-    std::printf("mode %d  CB %.6f Hz  full %.6f Hz  (%s)\n", k + 1, cb[k].freq_hz, full[k].freq_hz, full[k].name.c_str());
+    std::printf("mode %d  CB %.6f Hz  full %.6f Hz  (%s)\n", k + 1, cb[k].freq_hz, full[k].freq_hz,
+                full[k].name.c_str());
     EXPECT_NEAR(cb[k].freq_hz, full[k].freq_hz, 0.005 * full[k].freq_hz) << "mode " << k + 1;
   }
 }

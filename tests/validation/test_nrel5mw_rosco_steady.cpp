@@ -31,14 +31,14 @@ constexpr double kDeg = std::numbers::pi / 180;
 // 6.85° against ROSCO's 7.105° at 13.2 m/s (6.97° rigid: the blades' deflection and twist-free bending
 // unload them), 0.07° apart at 16.4 m/s, the same within 0.03° from 20 m/s.
 struct RoscoPoint {
-  double wind;            // PS_WindSpeeds [m/s]
-  double gen_speed;       // VS_FBP_Omega [rad/s]
-  double pitch;           // [rad]
-  const char* region;     // whirl's branch (SteadyState::region)
+  double wind;         // PS_WindSpeeds [m/s]
+  double gen_speed;    // VS_FBP_Omega [rad/s]
+  double pitch;        // [rad]
+  const char* region;  // whirl's branch (SteadyState::region)
 };
 
 const RoscoPoint kPoints[] = {
-    {5.0276, 58.057, 0.0, "2"},                  // TSR tracking, fine pitch
+    {5.0276, 58.057, 0.0, "2"},  // TSR tracking, fine pitch
     {9.0828, 104.88, 0.0, "2"},
     {10.5310, 121.61, 0.0272, "2 + min pitch"},  // PS_BldPitchMin entry 27 raises the pitch
     {13.2133, 122.91, 0.124, "3"},               // PC_GS_angles entry 4

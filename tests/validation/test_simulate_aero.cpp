@@ -88,8 +88,8 @@ double order(const StepComparison& s, size_t k) { return std::log2(s.errors[k - 
 // precision, 5e-10, as OpenFAST's simulation), tighter for a tight integration, never below the
 // model's (the linearization's 1e-13).
 TEST(SimulateAero, BemToleranceIsAeroDynsUnlessTheIntegrationIsTighter) {
-  EXPECT_EQ(simulationBemTolerance(1e-13, 1e-6), 5e-10);   // the default rtol
-  EXPECT_EQ(simulationBemTolerance(1e-13, 1e-4), 5e-10);   // looser integration: AeroDyn's still
+  EXPECT_EQ(simulationBemTolerance(1e-13, 1e-6), 5e-10);  // the default rtol
+  EXPECT_EQ(simulationBemTolerance(1e-13, 1e-4), 5e-10);  // looser integration: AeroDyn's still
   EXPECT_DOUBLE_EQ(simulationBemTolerance(1e-13, 1e-8), 1e-11);
   EXPECT_EQ(simulationBemTolerance(1e-13, 1e-10), 1e-13);  // the tight runs of the tests: the model's
   EXPECT_EQ(simulationBemTolerance(1e-9, 1e-6), 1e-9);     // a looser model tolerance is kept

@@ -37,7 +37,8 @@ TEST(SimulateKaneBeam, BoundedWithGeometricStiffnessDivergentWithout) {
   const Simulation three = spinUp({}, m);
   const auto [min3, end3] = tip(m, three);
   const Simulation one = spinUp({"bodies.beam.shapes=[{name: edge 1, type: clamped_topmass, mode: 1, "
-                                 "tip_mass_ratio: 0, direction: y}]"}, m);
+                                 "tip_mass_ratio: 0, direction: y}]"},
+                                m);
   const auto [min1, end1] = tip(m, one);
   std::printf("deepest tip deflection: 3 shapes %.4f m, 1 shape %.4f m; at 20 s %.4f / %.4f m\n", min3, min1, end3,
               end1);

@@ -34,7 +34,8 @@ std::string chainYaml(int n) {
   y << "name: kane_chain\ngravity: 0\nbodies:\n"
     << "  - {name: hub, type: rigid, mass: 0, joint: {type: revolute, axis: [0, 0, 1], dof: theta}}\n";
   for (int i = 1; i <= n; ++i) {
-    y << "  - {name: bar" << i << ", type: rigid, parent: " << (i == 1 ? std::string("hub") : "bar" + std::to_string(i - 1));
+    y << "  - {name: bar" << i
+      << ", type: rigid, parent: " << (i == 1 ? std::string("hub") : "bar" + std::to_string(i - 1));
     if (i > 1) y << ", at: end";
     y << ", joint: {type: revolute, axis: [0, 0, 1], dof: a" << i << "}, mass: " << mass << ", cog: [" << d / 2
       << ", 0, 0], inertia: [0, " << j << ", " << j << "], points: [{name: end, position: [" << d << ", 0, 0]}]}\n";
@@ -91,9 +92,10 @@ TEST(SimulateKaneChainSlow, RayleighRitzBeamFollowsTheChain) {
   const VecX ref = ref40 + (ref40 - ref20) / 3;
   const VecX beam = spinUpTip(readCase(std::string(WHIRL_SOURCE_DIR) + "/cases/kane_beam/kane_beam.yaml"));
   const double chainError = relativeRms(ref40, ref), beamError = relativeRms(beam, ref);
-  std::printf("tip deflection, relative RMS against the extrapolated chain: chain N = 40 %.5f, N = 20 %.5f, "
-              "3-shape beam %.5f; deepest: chain %.4f m, beam %.4f m\n",
-              chainError, relativeRms(ref20, ref), beamError, ref.minCoeff(), beam.minCoeff());
+  std::printf(
+      "tip deflection, relative RMS against the extrapolated chain: chain N = 40 %.5f, N = 20 %.5f, "
+      "3-shape beam %.5f; deepest: chain %.4f m, beam %.4f m\n",
+      chainError, relativeRms(ref20, ref), beamError, ref.minCoeff(), beam.minCoeff());
   EXPECT_LT(chainError, 0.001);  // the reference's own error, well below the comparison's tolerance
   EXPECT_LT(beamError, 0.003);   // [Branlard2019, §5.2]: 0.3–0.5 %
 }

@@ -115,7 +115,8 @@ TEST(SimulateLandbased3Dof, StepLimitIsAComputeErrorNamingTheTime) {
     EXPECT_THAT(std::string(e.what()), ::testing::HasSubstr("simulate: t = "));
     EXPECT_THAT(std::string(e.what()), ::testing::HasSubstr("IDA_TOO_MUCH_WORK"));
     // In words, with the limit and the interval; none of SUNDIALS' internal option names (issue 48).
-    EXPECT_THAT(std::string(e.what()), ::testing::HasSubstr("more than 3 integrator steps between two output instants"));
+    EXPECT_THAT(std::string(e.what()),
+                ::testing::HasSubstr("more than 3 integrator steps between two output instants"));
     EXPECT_THAT(std::string(e.what()), ::testing::Not(::testing::HasSubstr("mxstep")));
   }
 }

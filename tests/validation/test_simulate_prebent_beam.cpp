@@ -42,7 +42,8 @@ std::string flapChainYaml(int n) {
     const double angle = std::atan2(dz, d), mass = kMassPerLength * d, j = mass * len * len / 12;
     rest[i] = -(angle - before);  // about +y, a positive angle turns x towards −z
     before = angle;
-    y << "  - {name: bar" << i << ", type: rigid, parent: " << (i == 1 ? std::string("hub") : "bar" + std::to_string(i - 1));
+    y << "  - {name: bar" << i
+      << ", type: rigid, parent: " << (i == 1 ? std::string("hub") : "bar" + std::to_string(i - 1));
     if (i > 1) y << ", at: end";
     y << ", joint: {type: revolute, axis: [0, 1, 0], dof: a" << i << "}, mass: " << mass << ", cog: [" << len / 2
       << ", 0, 0], inertia: [0, " << j << ", " << j << "], points: [{name: end, position: [" << len << ", 0, 0]}]}\n";
@@ -89,9 +90,9 @@ TEST(SimulatePrebentBeam, CentrifugalStraighteningMatchesTheChain) {
   const double beam = steadyTip(beamAtRest(), kSpeed);
   std::printf("tip flapwise at 6 rad/s: chain N = 40 %.5f, 80 %.5f, extrapolated %.5f m; beam %.5f m\n", c40, c80,
               chain, beam);
-  EXPECT_NEAR(c80, chain, 5e-4);            // the reference is converged
-  EXPECT_NEAR(beam, chain, 0.002 * 0.37);   // 0.2 % of the tip's travel (0.37 m); measured 0.09 %
-  EXPECT_NEAR(beam, -0.13, 0.005);          // [Branlard2019, §5.4]: "to about −0.13 m" (two decimals)
+  EXPECT_NEAR(c80, chain, 5e-4);           // the reference is converged
+  EXPECT_NEAR(beam, chain, 0.002 * 0.37);  // 0.2 % of the tip's travel (0.37 m); measured 0.09 %
+  EXPECT_NEAR(beam, -0.13, 0.005);         // [Branlard2019, §5.4]: "to about −0.13 m" (two decimals)
 }
 
 // The spin-up itself: starts at the pre-bend and ends, at constant speed, at the steady deflection.

@@ -1,8 +1,8 @@
 // `simulate` at its default tolerances (1e-6 / 1e-8) against the same motion at 1e-10 / 1e-12: the
 // figure of the speed benchmark (bench/bench_simulate.cpp) is that of a result this close to the
-// converged one — the structural free decay and the aeroelastic start-up. It guards the reuse of IDA's iteration matrix (linearize/ida_block_solver.hpp): a
-// Newton iteration that accepts iterates of a stale matrix integrates something else (measured when
-// the convergence test did not reset its rate estimate: blades drifting to hundreds of metres).
+// converged one — the structural free decay and the aeroelastic start-up. It guards the reuse of IDA's iteration matrix
+// (linearize/ida_block_solver.hpp): a Newton iteration that accepts iterates of a stale matrix integrates something
+// else (measured when the convergence test did not reset its rate estimate: blades drifting to hundreds of metres).
 #include <gtest/gtest.h>
 
 #include <numbers>

@@ -17,8 +17,8 @@
 namespace whirl {
 namespace {
 
-constexpr double kM0 = 5e10;              // [N m], [Branlard2019, §5.3]
-constexpr double kRatio = 1.0002;         // Ω/ω_1
+constexpr double kM0 = 5e10;       // [N m], [Branlard2019, §5.3]
+constexpr double kRatio = 1.0002;  // Ω/ω_1
 const double kZeta = 1 / (10 * std::numbers::pi);
 
 // q(t) of q̈ + 2ζω q̇ + ω² q = (F/m) sin(Ω t), q(0) = q̇(0) = 0.
