@@ -10,7 +10,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libsundials-dev  # IDA, the time integrator of whirl simulate
   ccache  # compiler cache: rebuilds on the same machine (CI, sessions) reuse objects
-  clang-format git  # the style check of changed lines (scripts/check-format.sh)
+  clang-format git  # the style check of the tree (scripts/check-format.sh)
   python3-scipy  # the .mat export test loads the file with scipy.io.loadmat (skipped without it)
   python3-sphinx python3-myst-parser python3-breathe doxygen  # the documentation site: scripts/docs.sh
   # the Python module (python/, docs/user/python.md): pybind11, and what its package and tests use
