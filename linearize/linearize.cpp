@@ -73,6 +73,10 @@ void addUnsteadyAero(const Model& m, const OperatingPoint& op, bool inputs, Line
   Zu = ua.Zu;
   lin.first_order_names.insert(lin.first_order_names.end(), ua.names.begin(), ua.names.end());
   lin.first_order_groups.insert(lin.first_order_groups.end(), ua.groups.begin(), ua.groups.end());
+  for (std::size_t b = 0; b < m.aero.blades.size(); ++b)
+    for (const AeroStation& st : m.aero.blades[b].stations)
+      if (st.ua)
+        lin.first_order_blades.insert(lin.first_order_blades.end(), uaStatesPerElement(m.aero), static_cast<int>(b));
   lin.first_order_values.conservativeResize(nb + nz);
   lin.first_order_values.tail(nz) = ua.z;
 }
@@ -135,6 +139,7 @@ LinearModel linearize(const Model& m, const OperatingPoint& op, LinearizeWorkspa
   firstOrderStates(m, lin, G, Bz);
   const int nb = static_cast<int>(G.cols());  // body states, then the unsteady-airfoil states
   lin.first_order_values = VecX::Zero(nb);
+  lin.first_order_blades.assign(static_cast<std::size_t>(nb), -1);
   MatX Zq, Za, Zu;  // the UA rows: [Z_q, Z_q̇] on the active coordinates, A_zz, Z_u
   if (opt.unsteady_aero && frozen && m.aero.ua_mod > 0 && uaStateCount(m.aero) > 0)
     addUnsteadyAero(m, op, nu > 0, lin, G, Zq, Za, Zu);

@@ -30,7 +30,8 @@ struct LinearModel {
   std::vector<std::string> first_order_names;   ///< states z (dim nz), e.g. "HydroDyn radiation surge 3"
   std::vector<std::string> first_order_groups;  ///< what each z belongs to, e.g. "HydroDyn radiation surge"
   VecX residual;                                ///< e at the operating point on the active coordinates (dim n)
-  VecX first_order_values;  ///< z at the operating point (dim nz: 0 for body states, steady UA states)
+  VecX first_order_values;              ///< z at the operating point (dim nz: 0 for body states, steady UA states)
+  std::vector<int> first_order_blades;  ///< blade (0-based) of each z, −1 in the fixed frame (body states)
 };
 
 struct LinearizeOptions {

@@ -12,6 +12,7 @@ CampbellPoint campbellPoint(const Model& m, const SweepPoint& point, const Opera
   PeriodicOptions popt;
   popt.azimuths = opt.azimuths;
   popt.linearize.inputs = false;  // modes only
+  popt.linearize.unsteady_aero = opt.unsteady_aero;
   if (point.deflections.size() > 0) popt.deflections = &point.deflections;
   const PeriodicLinearization p = linearizePeriodic(m, start, popt);
   std::vector<std::string> problems;

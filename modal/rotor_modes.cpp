@@ -180,6 +180,20 @@ std::string bladeBaseName(const std::string& n) {
 
 namespace {
 
+// The name of a rotating coordinate's multiblade set: bladeBaseName, and an inner " blade <k>" dropped, as
+// the blade elements' aerodynamic states carry it ("UA x1 blade 1 element 10" → "UA x1 element 10", their
+// group "UA x1 blade 1" → "UA x1").
+std::string multibladeBaseName(const std::string& n) {
+  const std::string s = bladeBaseName(n);
+  const std::string tag = " blade ";
+  const std::size_t at = s.find(tag);
+  if (at == std::string::npos) return s;
+  std::size_t k = at + tag.size();
+  while (k < s.size() && std::isdigit(static_cast<unsigned char>(s[k]))) ++k;
+  if (k == at + tag.size() || (k < s.size() && s[k] != ' ')) return s;
+  return s.substr(0, at) + s.substr(k);
+}
+
 // Coordinates of a linear model for naming; with first-order states (HydroDyn radiation) the modes come
 // from participation factors, which weigh states of any kind alike: one coordinate per DOF (its
 // displacement and rate) and one per first-order state, grouped by what it belongs to.
@@ -215,7 +229,8 @@ RotorCoordinates linearCoordinates(const Model& m, const LinearModel& first, con
     c.coordinate_of_state.push_back(n + k);
     c.names.push_back(first.first_order_names[k]);
     c.groups.push_back(first.first_order_groups[k]);
-    c.blade.push_back(-1);
+    // Rotating first-order states (a blade's unsteady-airfoil states) go through the multiblade transform.
+    c.blade.push_back(k < static_cast<int>(first.first_order_blades.size()) ? first.first_order_blades[k] : -1);
     c.azimuth.push_back(false);
     c.held.push_back(false);
     c.teeter.push_back(false);
@@ -228,7 +243,10 @@ MbcLayout linearLayout(const RotorCoordinates& c, const LinearModel& first) {
   int nb = 0;
   for (int b : c.blade) nb = std::max(nb, b + 1);
   const std::vector<int> dof_blade(c.blade.begin(), c.blade.begin() + static_cast<std::ptrdiff_t>(n));
-  return secondOrderLayout(std::max(nb, 3), dof_blade, std::vector<int>(first.first_order_names.size(), -1));
+  std::vector<int> fo_blade(first.first_order_names.size(), -1);
+  for (std::size_t k = 0; k < fo_blade.size() && k < first.first_order_blades.size(); ++k)
+    fo_blade[k] = first.first_order_blades[k];
+  return secondOrderLayout(std::max(nb, 3), dof_blade, fo_blade);
 }
 
 }  // namespace
@@ -289,7 +307,8 @@ RotorModes multibladeModes(const RotorCoordinates& c, const MbcLayout& layout, c
       if (std::find(states_per.begin(), states_per.end(), 1) != states_per.end())
         throw InputError(
             "Floquet analysis (fewer than 3 blades, turning) of a model with first-order states "
-            "(HydroDyn radiation) is not supported: --set RdtnMod=0 leaves them out");
+            "(HydroDyn radiation, unsteady-airfoil states) is not supported: --set RdtnMod=0 leaves the "
+            "radiation out, no --unsteady-aero the airfoil states");
       return floquetModes(c, samples);
     }
   }
@@ -323,8 +342,8 @@ RotorModes multibladeModes(const RotorCoordinates& c, const MbcLayout& layout, c
       }
       const auto& list = per_blade[c.blade[i]];
       const size_t j = std::find(list.begin(), list.end(), i) - list.begin();
-      coords[i].group = bladeBaseName(groupOf(per_blade[0].at(j)));
-      out.coordinates[i] = bladeBaseName(c.names[per_blade[0].at(j)]) + " " + toString(coords[i].kind);
+      coords[i].group = multibladeBaseName(groupOf(per_blade[0].at(j)));
+      out.coordinates[i] = multibladeBaseName(c.names[per_blade[0].at(j)]) + " " + toString(coords[i].kind);
     }
   }
   out.modes = by_participation ? participationModes(eigenStandard(out.A, true), c.coordinate_of_state, out.coordinates)

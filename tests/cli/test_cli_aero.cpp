@@ -32,6 +32,26 @@ TEST(CliAero, CampbellAlongTheWind) {
   EXPECT_NE(csv.find(",8,"), std::string::npos);  // the wind-speed column is filled
 }
 
+// With the blade elements' unsteady-airfoil states (the deck's airfoil files carry UA data; AeroDyn's
+// older AFAeroMod switch turned to the HGM model): their multiblade coordinates are in the mode shapes.
+TEST(CliAero, CampbellWithUnsteadyAirfoilStates) {
+  const auto dir = freshDir("aero_campbell_ua");
+  const auto r = whirl("campbell " + kAero + " --set AFAeroMod=2 --set UAMod=4 --unsteady-aero --wind 8:4:12 " +
+                       "--azimuths 4 --no-plot --out '" + dir.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(slurp(dir / "campbell.csv").find("edge 1 BW"), std::string::npos);
+  EXPECT_NE(slurp(dir / "campbell_modes.json").find("\"UA x4 element 10 sin\""), std::string::npos);
+}
+
+TEST(CliAero, CampbellUnsteadyAeroNeedsTheDecksStates) {
+  const auto r = whirl("campbell " + kAero + " --unsteady-aero --wind 8 --no-plot --out '" +
+                       freshDir("aero_campbell_no_ua").string() + "'");
+  EXPECT_NE(r.code, 0);
+  EXPECT_NE(r.err.find(kAero + ": --unsteady-aero: the deck's AeroDyn has no unsteady-airfoil states to add"),
+            std::string::npos)
+      << r.err;
+}
+
 // A state-space model per trimmed wind speed for controller design: below rated at fine pitch, above
 // rated pitched at rated rotor speed; the wind speed is an input, its operating value the point's.
 TEST(CliAero, ExportAlongTheWindIsTrimmed) {
