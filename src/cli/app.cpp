@@ -20,6 +20,7 @@ void addCommands(CLI::App& app) {
   addVerifyCommand(app);
   addReportCommand(app);
   addTuneCommand(app);
+  addFlutterCommand(app);
 }
 
 }  // namespace whirl::cli

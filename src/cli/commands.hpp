@@ -20,6 +20,7 @@ void addSimulateCommand(CLI::App& app);
 void addVerifyCommand(CLI::App& app);
 void addReportCommand(CLI::App& app);
 void addTuneCommand(CLI::App& app);
+void addFlutterCommand(CLI::App& app);
 /// Every command above, in the order `whirl --help` lists them (main() and fuzz/fuzz_cli.cpp).
 void addCommands(CLI::App& app);
 }  // namespace whirl::cli

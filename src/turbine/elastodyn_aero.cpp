@@ -22,6 +22,18 @@ int outputIndex(const Model& m, const std::string& name) {
   return -1;
 }
 
+// The point pt of an FE blade's reference axis moved to AeroDyn's aerodynamic centre (x_r, y_r) =
+// (BlCrvAC, BlSwpAC) [m] of the blade-root frame, body (y, z): AeroDyn places its nodes there and
+// OpenFAST maps their loads to BeamDyn's axis through rigid arms (ModMesh_Mapping, line2-to-line2), so
+// the offset d from the axis turns with the section: the shapes' columns gain θ_k × d. A lift ahead of
+// the axis then loads the torsion modes and the section's twist moves the centre (the aerodynamic
+// stiffness of torsion). The shortening columns stay those of the axis (second order in q and d).
+void atAerodynamicCentre(BodyPoint& pt, double crv_ac, double swp_ac) {
+  const Vec3 d(0.0, crv_ac - pt.P(1, 0), swp_ac - pt.P(2, 0));
+  pt.P.col(0) += d;
+  for (Eigen::Index k = 0; k < pt.theta.cols(); ++k) pt.P.col(1 + k) += Vec3(pt.theta.col(k)).cross(d);
+}
+
 // One blade's elements at the AeroDyn nodes: points on the blade body at the aerodynamic centre,
 // trapezoid weights along the span, AeroDyn's curvilinear distance from the apex (loss constants).
 AeroBlade bladeElements(Builder& b, const BladeParts& blade, const io::AeroDynBladeInput& file, double hub_radius,
@@ -46,8 +58,11 @@ AeroBlade bladeElements(Builder& b, const BladeParts& blade, const io::AeroDynBl
     BodyPoint pt = beamPoint(blade.beam.props, blade.beam.shapes, b.opt.axial_shortening, std::min(span, length),
                              "aero " + std::to_string(j + 1));
     // AeroDyn's (x, y) offsets of the aerodynamic centre are body (y, z): aero_model.hpp.
-    pt.P(1, 0) += file.BlCrvAC[j];
-    pt.P(2, 0) += file.BlSwpAC[j];
+    if (blade.finite_element) atAerodynamicCentre(pt, file.BlCrvAC[j], file.BlSwpAC[j]);
+    else {
+      pt.P(1, 0) += file.BlCrvAC[j];
+      pt.P(2, 0) += file.BlSwpAC[j];
+    }
     const Vec3 node(span, file.BlCrvAC[j], file.BlSwpAC[j]);
     z += (node - previous).norm();
     previous = node;

@@ -124,6 +124,9 @@ struct BladeParts {
   int body = -1;
   int pitch = -1;
   ElastoDynBladeBeam beam;
+  /// A BeamDyn blade (CompElast = 2): its shapes twist the sections, so points off the reference axis
+  /// (AeroDyn's aerodynamic centres) move with the section's rotation.
+  bool finite_element = false;
 };
 
 struct RotorParts {

@@ -86,7 +86,7 @@ RotorParts addBlades(Builder& b, const RotorHub& hub) {
     const int body = b.addBody(std::move(bl));
     out.pitch.push_back(
         b.addDof(name + " pitch", body, DofKind::Joint, 0, false, ed.init.BlPitch[static_cast<std::size_t>(k)] * deg));
-    out.blades.push_back({body, out.pitch.back(), beam});
+    out.blades.push_back({body, out.pitch.back(), beam, fe.has_value()});
     std::vector<int> dofs(beam.shapes.size());
     for (std::size_t s = 0; s < beam.shapes.size(); ++s) {
       const int d = b.addDof(name + " " + beam.shapes[s]->name, body, DofKind::Elastic, static_cast<int>(s),
