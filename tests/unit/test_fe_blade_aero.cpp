@@ -32,7 +32,7 @@ OperatingPoint deflected(const Model& m) {
       op.q(i) = 0.01 + 0.002 * (i % 7);
       op.qd(i) = 0.02 - 0.003 * (i % 5);
     }
-  op.q(*m.findDof("azimuth")) = 0.4;
+  for (int a : m.roles.azimuth) op.q(a) += 0.4;  // off the blade-up azimuth
   return op;
 }
 
@@ -115,13 +115,13 @@ TEST(FeBladeAero, AerodynamicCentresTurnWithTheSection) {
 TEST(FeBladeAero, NoseDownPitchingMomentTwistsTheSectionTowardsLowerAngleOfAttack) {
   const Model with_cm = deck();
   Model without_cm = with_cm;
-  for (Polar& p : without_cm.aero.polars) {
-    auto zero = [](Polar& q) {
+  for (aero::Polar& p : without_cm.aero.polars) {
+    auto zero = [](aero::Polar& q) {
       std::fill(q.cm.begin(), q.cm.end(), 0.0);
       for (auto& c : q.ccm) c = {0, 0, 0, 0};
     };
     zero(p);
-    for (Polar& r : p.re_tables) zero(r);
+    for (aero::Polar& r : p.re_tables) zero(r);
   }
   const OperatingPoint op = initialPoint(with_cm);
   const int dof = *with_cm.findDof("blade 1 torsion 1");
