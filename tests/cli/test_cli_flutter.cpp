@@ -65,5 +65,15 @@ TEST(CliFlutter, OnsetIsAZeroCrossingOfTheNamedModesDamping) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(CliFlutter, BadRangesAndModelsWithoutARotorAreInputErrors) {
+  auto r = test::whirl("flutter " + kDeck + " --rpm-min 20 --rpm-max 10");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("flutter: the rotor speeds 20 to 10 rpm are not an increasing range above 0"), std::string::npos)
+      << r.err;
+  r = test::whirl("flutter cases/tower_topmass/tower_topmass.yaml");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("flutter: the model has no rotor (no rotating coordinate)"), std::string::npos) << r.err;
+}
+
 }  // namespace
 }  // namespace whirl
