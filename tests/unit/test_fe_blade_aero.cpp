@@ -10,6 +10,9 @@
 
 #include "linearize/jacobian.hpp"
 #include "linearize/operating_point.hpp"
+#include "linearize/periodic.hpp"
+#include "modal/floquet.hpp"
+#include "modal/rotor_modes.hpp"
 #include "src/dynamics/residual.hpp"
 #include "src/turbine/elastodyn_model.hpp"
 
@@ -145,6 +148,58 @@ TEST(FeBladeAero, NoseDownPitchingMomentTwistsTheSectionTowardsLowerAngleOfAttac
   ASSERT_GT(std::abs(dalpha), 1e-6);  // the elastic twist enters the angle of attack
   EXPECT_LT(force * dalpha, 0.0);
   EXPECT_GT(std::abs(force), 1.0);  // [N m per unit coordinate]: a real load, not round-off
+}
+
+// The multiblade average equals Floquet analysis for a symmetric rotor: Test26's structure with BeamDyn
+// blades, no gravity and no shaft tilt (the only periodic terms of an isotropic rotor), at 12.1 rpm.
+// Every Floquet mode is a multiblade mode: frequencies to 1e-6 relative and damping ratios to 1e-6
+// (Magnus steps, 32 per sample; measured below 1e-8).
+TEST(FeBladeRotor, MultibladeAverageEqualsFloquetForTheSymmetricRotor) {
+  const Model m = readElastoDynModel(std::string(WHIRL_SOURCE_DIR) + "/cases/nrel5mw_beamdyn/Test26.fst",
+                                     {"CompAero=0", "CompInflow=0", "Gravity=0", "ShftTilt=0", "blade_elements=20",
+                                      "blade_modes=4"});
+  OperatingCondition c = modelCondition(m);
+  c.rotor_speed = rpmToRadPerSec(12.1);
+  PeriodicOptions po;
+  po.azimuths = 12;
+  const PeriodicLinearization p = linearizePeriodic(m, c, po);
+  const RotorModes mbc = rotorModes(m, p);
+  const LinearModel& first = p.models.front();
+  RotorCoordinates rc;
+  rc.names = first.dof_names;
+  for (int d : first.dofs) {
+    rc.blade.push_back(m.dofs[d].blade);
+    rc.azimuth.push_back(m.dofs[d].rotating);
+    rc.held.push_back(false);
+    rc.teeter.push_back(false);
+  }
+  rc.weights = first.M;
+  std::vector<MbcSample> samples;
+  for (std::size_t k = 0; k < p.models.size(); ++k) {
+    MbcSample s;
+    s.azimuth = p.azimuths[k];
+    s.rotor_speed = p.rotor_speed;
+    s.A = p.models[k].A;
+    samples.push_back(s);
+  }
+  FloquetOptions fo;
+  fo.steps_per_sample = 32;
+  const RotorModes fl = floquetModes(rc, samples, fo);
+  int compared = 0;
+  for (const Mode& f : fl.modes) {
+    if (f.rigid_body || f.freq_hz < 0.1) continue;
+    double best = 1e300;
+    const Mode* near = nullptr;
+    for (const Mode& g : mbc.modes) {
+      const double d = std::abs(g.damped_freq_hz - f.damped_freq_hz);
+      if (d < best) best = d, near = &g;
+    }
+    ASSERT_NE(near, nullptr);
+    EXPECT_LT(best, 1e-6 * f.damped_freq_hz) << f.name << " " << f.damped_freq_hz << " Hz";
+    EXPECT_NEAR(near->damping_ratio, f.damping_ratio, 1e-6) << f.name;
+    ++compared;
+  }
+  EXPECT_GT(compared, 15);
 }
 
 }  // namespace
