@@ -8,6 +8,7 @@
 #include <set>
 
 #include "linearize/mbc.hpp"
+#include "modal/aero_roots.hpp"
 #include "modal/eigen.hpp"
 #include "modal/floquet.hpp"
 #include "modal/participation.hpp"
@@ -348,7 +349,28 @@ RotorModes multibladeModes(const RotorCoordinates& c, const MbcLayout& layout, c
   }
   out.modes = by_participation ? participationModes(eigenStandard(out.A, true), c.coordinate_of_state, out.coordinates)
                                : modesFromEigen(eigenStandard(out.A), n, c.weights, out.coordinates);
-  for (auto& mode : out.modes) nameRotorMode(mode, coords, c.azimuth, c.held, rotor_speed);
+  // The blade elements' aerodynamic states (rotating first-order states, modal/aero_roots.hpp): their own
+  // roots are named apart below, every other mode from its structural coordinates alone.
+  std::vector<bool> aero(static_cast<std::size_t>(n), false);
+  if (by_participation) {
+    std::vector<int> per(n, 0);
+    for (int k : c.coordinate_of_state) ++per[k];
+    for (int i = 0; i < n; ++i) aero[i] = per[i] == 1 && c.blade[i] >= 0;
+  }
+  const bool any_aero = std::find(aero.begin(), aero.end(), true) != aero.end();
+  if (any_aero) nameAeroRoots(out.modes, aero);
+  for (auto& mode : out.modes) {
+    if (!any_aero) {
+      nameRotorMode(mode, coords, c.azimuth, c.held, rotor_speed);
+      continue;
+    }
+    if (isAeroRoot(mode)) continue;
+    const VecX full = mode.participation;
+    for (int i = 0; i < n; ++i)
+      if (aero[i]) mode.participation(i) = 0;
+    nameRotorMode(mode, coords, c.azimuth, c.held, rotor_speed);
+    mode.participation = full;
+  }
   if (nb >= 3) distinctBladeNames(out.modes, coords, rotor_speed);
   if (by_participation) {
     // Real roots listed one by one (participationModes) but one rigid-body motion: the two roots of a
@@ -362,7 +384,7 @@ RotorModes multibladeModes(const RotorCoordinates& c, const MbcLayout& layout, c
       double first_order = 0;
       for (int i = 0; i < n; ++i)
         if (states_per[i] == 1) first_order += mode.participation(i);
-      mode.first_order = first_order > 0.5;
+      if (!isAeroRoot(mode)) mode.first_order = first_order > 0.5;  // an aerodynamic root stays one
       const std::string tag = " (rigid body)";
       if (mode.rigid_body && first_order > 0.5 && mode.name.size() > tag.size() &&
           mode.name.compare(mode.name.size() - tag.size(), tag.size(), tag) == 0) {

@@ -6,6 +6,7 @@
 #include <set>
 #include <tuple>
 
+#include "modal/aero_roots.hpp"
 #include "modal/hungarian.hpp"
 #include "modal/tracking_overrides.hpp"
 #include "src/model/error.hpp"
@@ -14,10 +15,11 @@ namespace whirl {
 
 namespace {
 
+// Aerodynamic roots (modal/aero_roots.hpp) are never tracked: listed apart, they take no structural line.
 std::vector<int> trackedModes(const CampbellPoint& p, const TrackingOptions& opt) {
   std::vector<int> idx;
   for (int k = 0; k < static_cast<int>(p.modes.size()); ++k)
-    if (opt.include_rigid_body || !p.modes[k].rigid_body) idx.push_back(k);
+    if ((opt.include_rigid_body || !p.modes[k].rigid_body) && !isAeroRoot(p.modes[k])) idx.push_back(k);
   return idx;
 }
 

@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "src/model/error.hpp"
+#include "src/writers/campbell_aero.hpp"
 #include "src/writers/campbell_html.hpp"
 #include "src/writers/gnuplot.hpp"
 #include "src/writers/hawcstab2_files.hpp"
@@ -40,6 +41,7 @@ std::vector<std::string> writeCampbell(const CampbellDiagram& d, const std::stri
   prepareOutputFolder(folder);
   OutputSet files(folder);
   files.write("campbell.csv", campbellCsv(d));
+  if (hasAeroRoots(d)) files.write("campbell_aero.csv", campbellAeroCsv(d));
   const std::string modes_json = campbellModesJson(d);
   files.write("campbell_modes.json", modes_json);
   if (opt.html) {

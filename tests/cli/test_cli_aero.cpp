@@ -41,6 +41,12 @@ TEST(CliAero, CampbellWithUnsteadyAirfoilStates) {
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(slurp(dir / "campbell.csv").find("edge 1 BW"), std::string::npos);
   EXPECT_NE(slurp(dir / "campbell_modes.json").find("\"UA x4 element 10 sin\""), std::string::npos);
+  // The aerodynamic roots apart, on no line (modal/aero_roots.hpp).
+  const std::string aero = slurp(dir / "campbell_aero.csv");
+  EXPECT_EQ(aero.substr(0, aero.find('\n')),
+            "rpm,wind_speed,mode,freq_hz,damped_freq_hz,damping_ratio,aero_share,dominant_state");
+  EXPECT_NE(aero.find(",aero 1,"), std::string::npos);
+  EXPECT_EQ(slurp(dir / "campbell.csv").find("aero "), std::string::npos);
 }
 
 TEST(CliAero, CampbellUnsteadyAeroNeedsTheDecksStates) {
