@@ -1,6 +1,7 @@
 #include "modal/campbell_sweep.hpp"
 
 #include "linearize/periodic.hpp"
+#include "modal/aero_roots.hpp"
 #include "modal/campbell_serialize.hpp"
 #include "modal/mode_shapes.hpp"
 #include "modal/rotor_modes.hpp"
@@ -18,7 +19,15 @@ CampbellPoint campbellPoint(const Model& m, const SweepPoint& point, const Opera
   std::vector<std::string> problems;
   if (opt.check_point) problems = opt.check_point(m, p.points, point);
   RotorModes r = rotorModes(m, p);
-  addModeMotions(m, p, r.num_blades, r.coordinates, r.modes);
+  // The node motions of the structural modes; an aerodynamic root (modal/aero_roots.hpp) moves the
+  // structure little, and the motions of its hundreds of roots (180 UA states on the NREL 5MW) made
+  // campbell_modes.json 160 MB and the sweep 10× slower.
+  std::vector<Mode> structural;
+  std::vector<std::size_t> at;
+  for (std::size_t k = 0; k < r.modes.size(); ++k)
+    if (!isAeroRoot(r.modes[k])) structural.push_back(std::move(r.modes[k])), at.push_back(k);
+  addModeMotions(m, p, r.num_blades, r.coordinates, structural);
+  for (std::size_t k = 0; k < at.size(); ++k) r.modes[at[k]] = std::move(structural[k]);
   CampbellPoint cp;
   cp.validity_problems = std::move(problems);
   cp.rpm = point.rpm;

@@ -5,6 +5,8 @@
 # - reports/nrel5mw_aero/: aeroelastic (AeroDyn BEMT, frozen wake) along the wind, 3–25 m/s, each
 #   point trimmed (rotor speed below rated, pitch above), with the steady performance table, the
 #   interactive report campbell.html (mode shapes, docs/user/mode-shapes.md) and HAWCStab2's .cmb/.amp/.opt;
+# - reports/nrel5mw_aero_ua/: the same with the blade elements' unsteady-airfoil states (the airfoil files'
+#   UA data, HGM model), the aerodynamic roots apart in campbell_aero.csv (docs/theory/unsteady-aero.md);
 # - reports/nrel5mw_rosco/: with ROSCO's controller, open and closed loop (below);
 # - reports/oc3_hywind_rosco/: the floating NREL 5MW with its ROSCO controller, closed loop (below).
 set -euo pipefail
@@ -15,6 +17,8 @@ build/whirl campbell cases/nrel5mw/Main_Onshore.fst --rpm 0:0.5:15 --azimuths 36
 build/whirl steady cases/nrel5mw/Main_Aero.fst --wind 3:1:25 --out reports/nrel5mw_aero
 build/whirl campbell cases/nrel5mw/Main_Aero.fst --wind 3:1:25 --azimuths 36 --max-freq 3.2 --out reports/nrel5mw_aero \
   --html --format hawcstab2
+build/whirl campbell cases/nrel5mw/Main_Aero.fst --set AFAeroMod=2 --set UAMod=4 --unsteady-aero --wind 3:1:25 \
+  --azimuths 36 --max-freq 3.2 --out reports/nrel5mw_aero_ua
 # The NREL 5MW with ROSCO's controller (cases/nrel5mw/Main_ROSCO.fst): the schedule it settles at along
 # the wind, the open-loop Campbell diagram along that schedule, and the closed loop with the controller
 # (reports/nrel5mw_rosco/closed_loop/: closed-loop Campbell, open vs closed side by side in
