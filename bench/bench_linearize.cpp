@@ -23,6 +23,12 @@ Model load(const std::string& name) {
   if (name == "rich_29dof") return test::richModel();
   if (name == "nrel5mw") return readElastoDynModel(std::string(WHIRL_SOURCE_DIR) + "/cases/nrel5mw/Main_Onshore.fst");
   if (name == "nrel5mw_aero") return readElastoDynModel(std::string(WHIRL_SOURCE_DIR) + "/cases/nrel5mw/Main_Aero.fst");
+  // BeamDyn blades (issue 46): Test26's structure with 8 fixed-root modes per blade (60 elements), and
+  // the aeroelastic deck with them (Main_Aero_BD.fst: 10 rpm, 8 m/s).
+  const std::string test26 = std::string(WHIRL_SOURCE_DIR) + "/cases/nrel5mw_beamdyn/Test26.fst";
+  if (name == "nrel5mw_beamdyn") return readElastoDynModel(test26, {"CompAero=0", "CompInflow=0"});
+  if (name == "nrel5mw_beamdyn_aero")
+    return readElastoDynModel(std::string(WHIRL_SOURCE_DIR) + "/cases/nrel5mw_beamdyn/Main_Aero_BD.fst");
   return readCase(std::string(WHIRL_SOURCE_DIR) + "/cases/" + name + "/" + name + ".yaml");
 }
 
@@ -64,6 +70,8 @@ WHIRL_CASE_BENCH(nrel5mw)
 // The 5MW with AeroDyn (19 elements × 3 blades, frozen wake), 10 rpm, 8 m/s; the residual is the
 // quasi-steady one (BEM solved at each of the 57 elements).
 WHIRL_CASE_BENCH(nrel5mw_aero)
+WHIRL_CASE_BENCH(nrel5mw_beamdyn)
+WHIRL_CASE_BENCH(nrel5mw_beamdyn_aero)
 
 // The parts of one aeroelastic 5MW linearization: the AD passes of K (∂e/∂q), C (∂e/∂q̇) and Q (∂e/∂u),
 // and the double mass-matrix assembly, each timed alone at the operating point.
