@@ -2,8 +2,8 @@
 // flutter of the blades: torsion coalescing with flap), searched beyond rated in still air or at a
 // given wind speed with the pitch held. Each rotor speed is a periodic linearization averaged in
 // multiblade coordinates (the path of `whirl modes`); the search steps the rotor speed up until the
-// least-damped mode is unstable, then bisects on the rotor speed [Hansen 2007, sec. 4: the flutter
-// limit of a rotor as the rotor speed of zero damping, found by raising the speed in still air].
+// least-damped mode is unstable, then bisects on the rotor speed (the flutter limit as the rotor speed
+// of zero damping, as in Hansen 2007, "Aeroelastic instability problems for wind turbines").
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
