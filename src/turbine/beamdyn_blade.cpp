@@ -139,7 +139,9 @@ BeamDynBladeBody beamDynBladeBody(const io::BeamDynInput& bd, const BeamDynBlade
   out.model = beamDynBladeModel(bd, opt.elements);
   const fem::Beam6Model& m = out.model;
   const fem::Beam6Matrices mats = fem::assemble6(m);
-  const fem::Modes6 modes = fem::clampedModes6(mats, 0, opt.modes);
+  // Axial modes are skipped: the blade body's shapes carry u_y, u_z and θ_x only (the span motion
+  // comes from the axial shortening), so an axial mode would be a stiffness without inertia.
+  const fem::Modes6 modes = fem::clampedModes6(mats, 0, std::min(opt.modes + 12, 6 * opt.elements));
   const int nn = static_cast<int>(m.nodes.size());
   out.length = m.nodes.back().x();
 
@@ -169,7 +171,8 @@ BeamDynBladeBody beamDynBladeBody(const io::BeamDynInput& bd, const BeamDynBlade
   const int ne = opt.modes;
   MatX Phi(m.ndof(), ne);
   int count[4] = {0, 0, 0, 0};
-  for (int k = 0; k < ne; ++k) {
+  int kept = 0;
+  for (int k = 0; k < modes.omega2.size() && kept < ne; ++k) {
     VecX v = modes.vectors.col(k);
     const VecX Mv = mats.M * v;
     double fam[4] = {0, 0, 0, 0};
@@ -180,12 +183,13 @@ BeamDynBladeBody beamDynBladeBody(const io::BeamDynInput& bd, const BeamDynBlade
     int f = 0;
     for (int j = 1; j < 4; ++j)
       if (fam[j] > fam[f]) f = j;
+    if (f == 0) continue;  // axial
     double big = 0;
     for (int i = 0; i < nn; ++i)
       for (int c : {1, 2, 3})
         if (std::abs(v(6 * i + c)) > std::abs(big)) big = v(6 * i + c);
     v /= big;
-    Phi.col(k) = v;
+    Phi.col(kept++) = v;
     ShapeTable t;
     t.x = p.x;
     t.uy = t.uz = t.tx = VecX::Zero(nn);
@@ -197,6 +201,10 @@ BeamDynBladeBody beamDynBladeBody(const io::BeamDynInput& bd, const BeamDynBlade
     out.beam.shapes.push_back(tableShape(std::string(familyName(f)) + " " + std::to_string(++count[f]), t));
     out.freq_hz.push_back(std::sqrt(std::max(0.0, modes.omega2(k))) / (2 * std::numbers::pi));
   }
+  if (kept < ne)
+    throw InputError("blade_modes: " + std::to_string(ne) + " bending and torsion modes asked, the blade's " +
+                     std::to_string(opt.elements) + " elements give " + std::to_string(kept) +
+                     " among their lowest modes; use more blade_elements or fewer blade_modes");
   const MatX K = Phi.transpose() * (mats.K * Phi), D = Phi.transpose() * (mats.D * Phi);
   out.K = 0.5 * (K + K.transpose());
   out.D = 0.5 * (D + D.transpose());

@@ -39,7 +39,8 @@ struct BeamDynBladeBody {
   double length = 0;            ///< along z_r [m]
 };
 
-/// The mode names: "flap k", "edge k", "torsion k" or "axial k" after the family that holds most of
+/// The lowest opt.modes fixed-root modes that are not axial (the body has no axial shapes), named
+/// "flap k", "edge k" or "torsion k" after the family that holds most of
 /// the mode's kinetic energy (flap: u_y and θ_z; edge: u_z and θ_y; torsion: θ_x; axial: u_x).
 /// \throws InputError for fewer than 2 elements or 1 mode, ComputeError when the modes fail.
 BeamDynBladeBody beamDynBladeBody(const io::BeamDynInput& bd, const BeamDynBladeOptions& opt);

@@ -82,6 +82,22 @@ TEST(BeamDynBlades, BladeModesAndElementsAreOptions) {
   EXPECT_THAT(r.err, ::testing::HasSubstr("blade_modes=0': blade_modes: expected a positive integer"));
 }
 
+// Axial modes are not kept (the blade body has no axial shapes): 16 and 24 modes per blade, which reach
+// past the first axial mode, run and converge (flap 1 collective 0.704894 / 0.7048928 / 0.7048927 Hz with
+// 8 / 16 / 24 modes, edge 1 sin 1.0822313 / 1.0822313 / 1.0822313 Hz); before, an axial mode scaled
+// by its tiny transverse motion stopped the equilibrium ("no stiffness" along tower SS 2).
+TEST(BeamDynBlades, MoreModesSkipTheAxialOnes) {
+  const auto eight = modes(" --rpm 0"), sixteen = modes(" --rpm 0 --set blade_modes=16");
+  ASSERT_TRUE(sixteen.count("flap 1 collective") && sixteen.count("edge 1 sin"));
+  EXPECT_NEAR(rel(sixteen.at("flap 1 collective"), eight.at("flap 1 collective")), 0, 1e-5);
+  EXPECT_NEAR(rel(sixteen.at("edge 1 sin"), eight.at("edge 1 sin")), 0, 1e-5);
+  EXPECT_EQ(sixteen.count("axial 1 collective"), 0u);
+  const auto r = test::whirl("modes " + kDeck + kStructure + " --set blade_elements=2 --set blade_modes=12");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_THAT(r.err, ::testing::HasSubstr("blade_modes: 12 bending and torsion modes asked, the blade's 2 elements "
+                                          "give 10 among their lowest modes"));
+}
+
 // IEA-3.4 (cases/iea34_beamdyn, structure): the deck's BeamDyn blade against its ElastoDyn blade. The two
 // files do not carry the same properties: an FE blade built from the ElastoDyn file's EI, mass and
 // stations (IEA-3.4-130-RWT_BeamDyn_ElastoDynProperties.fst, stiff in shear, extension and torsion)
