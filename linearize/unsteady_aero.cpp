@@ -81,15 +81,20 @@ UnsteadyAeroLinear unsteadyAeroLinear(const Model& m, const OperatingPoint& op, 
   };
   const int ntot = static_cast<int>(all.size());
   MatX Je(n, ntot), Jz(nz, ntot);
+  bool unseeded_kinematics = false;  // ws holds the kinematics at the point with zero derivatives
   for (int c0 = 0; c0 < ntot; c0 += kChunk) {
     const int w = std::min(kChunk, ntot - c0);
     for (int k = 0; k < w; ++k) seed(all[c0 + k], k, true);
-    forwardKinematics(m, ws, q, qd, qdd);
+    // The state columns come last; z enters neither the kinematics nor e_QS: chunks of state columns alone
+    // form the (unseeded) kinematics once and skip e_QS.
+    const bool states_only = all[c0].kind == Column::Z;
+    if (!states_only || !unseeded_kinematics) forwardKinematics(m, ws, q, qd, qdd);
+    unseeded_kinematics = states_only;
     for (int i = 0; i < n; ++i) e_ua(i) = e_qs(i) = ADChunk(0.0);
     addUnsteadyAeroLoads<ADChunk>(m, ws, q, qd, u, op.inflow, &z, e_ua, &zdot);
-    addUnsteadyAeroLoads<ADChunk>(m, ws, q, qd, u, op.inflow, nullptr, e_qs, nullptr);
+    if (!states_only) addUnsteadyAeroLoads<ADChunk>(m, ws, q, qd, u, op.inflow, nullptr, e_qs, nullptr);
     for (int k = 0; k < w; ++k) {
-      const bool state = all[c0 + k].kind == Column::Z;  // e_QS does not depend on z
+      const bool state = all[c0 + k].kind == Column::Z;
       for (int i = 0; i < n; ++i) Je(i, c0 + k) = e_ua(i).derivatives()(k) - (state ? 0.0 : e_qs(i).derivatives()(k));
       for (int i = 0; i < nz; ++i) Jz(i, c0 + k) = zdot(i).derivatives()(k);
     }
