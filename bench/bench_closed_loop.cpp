@@ -8,8 +8,8 @@
 #include "linearize/sweep.hpp"
 #include "linearize/trim.hpp"
 #include "modal/closed_loop_campbell.hpp"
-#include "src/io/discon_input.hpp"
-#include "src/io/rotor_performance_input.hpp"
+#include "src/io/openfast/servodyn/discon_input.hpp"
+#include "src/io/openfast/servodyn/rotor_performance_input.hpp"
 #include "src/turbine/elastodyn_model.hpp"
 
 namespace whirl {

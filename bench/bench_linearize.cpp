@@ -12,7 +12,7 @@
 #include "modal/campbell_sweep.hpp"
 #include "src/dynamics/mass_matrix.hpp"
 #include "src/dynamics/residual.hpp"
-#include "src/io/case_file.hpp"
+#include "src/io/case/case_file.hpp"
 #include "src/turbine/elastodyn_model.hpp"
 #include "tests/support/rich_model.hpp"
 

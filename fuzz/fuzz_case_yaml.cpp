@@ -1,7 +1,7 @@
 // libFuzzer harness: the bytes are a YAML case file (`whirl modes CASE.yaml`): readCase builds and
 // finalizes the model, then one equilibrium and one linearization for small models.
 #include "fuzz/fuzz_support.hpp"
-#include "src/io/case_file.hpp"
+#include "src/io/case/case_file.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string path = whirl::fuzz::writeInput("case.yaml", data, size);

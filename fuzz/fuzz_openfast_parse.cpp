@@ -4,7 +4,7 @@
 // lookup. Hundreds of times faster than the whole-model harnesses (fuzz_fst, fuzz_elastodyn, ...),
 // so it reaches the parser's corners those cannot in the same time.
 #include "fuzz/fuzz_support.hpp"
-#include "src/io/openfast_input.hpp"
+#include "src/io/openfast/openfast_input.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);

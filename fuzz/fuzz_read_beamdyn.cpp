@@ -3,7 +3,7 @@
 // turbine builder reads a deck's BDBldFile (io::readBeamDyn) and turned into the FE blade and its
 // modes (beamDynBladeBody, 6 elements and 4 modes to keep each run short).
 #include "fuzz/fuzz_support.hpp"
-#include "src/io/beamdyn_input.hpp"
+#include "src/io/openfast/beamdyn/beamdyn_input.hpp"
 #include "src/turbine/beamdyn_blade.hpp"
 
 namespace {

@@ -1,7 +1,7 @@
 // libFuzzer harness: the bytes are a ROSCO rotor performance file (`Cp_Ct_Cq.*.txt`, `whirl tune
 // --cp-surface`): readRotorPerformance, then the Cp surface built and evaluated at its grid's middle.
 #include "fuzz/fuzz_support.hpp"
-#include "src/io/rotor_performance_input.hpp"
+#include "src/io/openfast/servodyn/rotor_performance_input.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string path = whirl::fuzz::writeInput("Cp_Ct_Cq.txt", data, size);

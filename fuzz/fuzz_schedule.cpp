@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "fuzz/fuzz_support.hpp"
-#include "src/io/schedule.hpp"
+#include "src/io/text/schedule.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string path = whirl::fuzz::writeInput("schedule.csv", data, size);

@@ -3,7 +3,7 @@
 // discretization, the transition-piece tie, the Guyan or Craig–Bampton reduction) as the turbine
 // builder does, with the transition piece at the OC3 monopile's platform reference point.
 #include "fuzz/fuzz_support.hpp"
-#include "src/io/subdyn_input.hpp"
+#include "src/io/openfast/offshore/subdyn_input.hpp"
 #include "src/turbine/subdyn_fem.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

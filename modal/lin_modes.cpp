@@ -6,7 +6,7 @@
 #include <regex>
 #include <utility>
 
-#include "src/io/openfast_lin_names.hpp"
+#include "src/io/lin/openfast_lin_names.hpp"
 #include "src/model/error.hpp"
 
 namespace whirl {

@@ -10,13 +10,13 @@
 #include "modal/campbell.hpp"
 #include "modal/mbc_lin.hpp"
 #include "modal/rotor_modes.hpp"
-#include "src/io/openfast_lin.hpp"
+#include "src/io/lin/openfast_lin.hpp"
 
 namespace whirl {
 
 /// The coordinates of a `.lin` file: its displacement states (a rate state, wherever it sits, joins
 /// its displacement: MbcLayout::velocity_of) and its first-order states, in state order, named from
-/// their descriptions (src/io/openfast_lin_names.hpp). A `.lin` file has no mass matrix: the modes
+/// their descriptions (src/io/lin/openfast_lin_names.hpp). A `.lin` file has no mass matrix: the modes
 /// are named from participation factors (modal/participation.hpp).
 RotorCoordinates linRotorCoordinates(const OpenFastLin& lin, const MbcLayout& layout);
 

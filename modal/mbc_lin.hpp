@@ -21,7 +21,7 @@
 #include <vector>
 
 #include "linearize/mbc.hpp"
-#include "src/io/openfast_lin.hpp"
+#include "src/io/lin/openfast_lin.hpp"
 
 namespace whirl {
 

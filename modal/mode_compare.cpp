@@ -5,7 +5,7 @@
 #include <map>
 #include <sstream>
 
-#include "src/io/csv.hpp"
+#include "src/io/text/csv.hpp"
 #include "src/model/error.hpp"
 
 namespace whirl {

@@ -6,8 +6,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "src/io/csv.hpp"
-#include "src/io/input_file.hpp"
+#include "src/io/text/csv.hpp"
+#include "src/io/text/input_file.hpp"
 #include "src/model/error.hpp"
 #include "src/model/text.hpp"
 

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The include rule of docs/dev/architecture.md (*Layers*): a file includes only files of its own layer
-# or of a lower one, and the two layer-1 folders (FE, equations) do not include each other.
+# or of a lower one, and folders of one rank (FE and equations; OpenFAST and .lin readers) do not include
+# each other.
 # Prints every `#include "…"` that breaks the rule as file:line: includes X (layer a -> b) and exits
 # 1 if there is one; a source folder with no layer is an error too (give a new folder its layer here
 # and in CMakeLists.txt). Run by CTest (test `layers_include_rule`, label unit).
@@ -8,26 +9,31 @@
 set -euo pipefail
 cd "${1:-$(dirname "$0")/..}"
 
-# folder -> layer rank (docs/dev/architecture.md, table *Layers*)
+# folder -> layer rank × 10 (docs/dev/architecture.md, table *Layers*; the input readers of layer 2 are
+# ranked by family: text < OpenFAST, .lin < YAML cases)
 layer_of() {
   case "$1" in
     src/model/*|src/shapes/*|src/aero/*|src/parallel/*) echo 0 ;;
-    src/fem/*|src/dynamics/*) echo 1 ;;
-    src/io/*) echo 2 ;;
-    src/turbine/*) echo 3 ;;
-    linearize/*) echo 4 ;;
-    modal/*) echo 5 ;;
-    src/writers/*) echo 6 ;;
-    src/cli/*) echo 7 ;;
-    python/src/*) echo 8 ;;
+    src/fem/*|src/dynamics/*) echo 10 ;;
+    src/io/text/*) echo 20 ;;
+    src/io/openfast/*|src/io/lin/*) echo 21 ;;
+    src/io/case/*) echo 22 ;;
+    src/turbine/*) echo 30 ;;
+    linearize/*) echo 40 ;;
+    modal/*) echo 50 ;;
+    src/writers/*) echo 60 ;;
+    src/cli/*) echo 70 ;;
+    python/src/*) echo 80 ;;
     *) echo "" ;;
   esac
 }
-# folders of one layer that must not include each other
+# folders of one rank that must not include each other
 peers() {
   case "$1" in
     src/fem/*) echo fem ;;
     src/dynamics/*) echo dynamics ;;
+    src/io/openfast/*) echo "OpenFAST readers" ;;
+    src/io/lin/*) echo ".lin readers" ;;
     *) echo "" ;;
   esac
 }
@@ -45,10 +51,10 @@ while IFS= read -r -d '' file; do
     to=$(layer_of "$target")
     [[ -z "$to" ]] && continue  # a header outside the layers (none today) or a relative include
     if (( to > from )); then
-      echo "$file:$line: includes $target (layer $from -> $to, upward)"
+      echo "$file:$line: includes $target (rank $from -> $to, upward)"
       status=1
     elif [[ -n "$(peers "$file")" && -n "$(peers "$target")" && "$(peers "$file")" != "$(peers "$target")" ]]; then
-      echo "$file:$line: includes $target (layer 1 folders $(peers "$file") -> $(peers "$target"))"
+      echo "$file:$line: includes $target (folders of one layer: $(peers "$file") -> $(peers "$target"))"
       status=1
     fi
   done < <(awk 'match($0, /^[ \t]*#[ \t]*include[ \t]*"[^"]*"/) {

@@ -6,7 +6,7 @@
 #include <whirl/linearize/linearize.hpp>
 #include <whirl/linearize/operating_point.hpp>
 #include <whirl/modal/modes.hpp>
-#include <whirl/src/io/case_file.hpp>
+#include <whirl/src/io/case/case_file.hpp>
 
 int main(int argc, char** argv) {
   if (argc != 2) {

@@ -13,8 +13,8 @@
 #include "linearize/state_space.hpp"
 #include "python/src/bindings.hpp"
 #include "python/src/operating_point.hpp"
-#include "src/io/case_file.hpp"
-#include "src/io/discon_input.hpp"
+#include "src/io/case/case_file.hpp"
+#include "src/io/openfast/servodyn/discon_input.hpp"
 #include "src/model/error.hpp"
 #include "src/turbine/load_model.hpp"
 

@@ -16,8 +16,8 @@
 #include "modal/tracking.hpp"
 #include "python/src/bindings.hpp"
 #include "python/src/operating_point.hpp"
-#include "src/io/openfast_lin.hpp"
-#include "src/io/schedule.hpp"
+#include "src/io/lin/openfast_lin.hpp"
+#include "src/io/text/schedule.hpp"
 #include "src/model/error.hpp"
 #include "src/writers/steady_table.hpp"
 

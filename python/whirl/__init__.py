@@ -165,7 +165,7 @@ def _folder(out) -> Optional[str]:
 
 def _schedule_rows(table: pd.DataFrame) -> list:
     """(rpm, wind speed or None, pitch [deg] or None) per row of a schedule DataFrame, its columns found
-    as ``readSchedule`` finds them in a CSV file (src/io/schedule.cpp)."""
+    as ``readSchedule`` finds them in a CSV file (src/io/text/schedule.cpp)."""
     def find(match):
         return next((c for c in table.columns if match(str(c).lower())), None)
     rpm = find(lambda n: n.startswith("rotspeed")) or find(lambda n: n == "rpm" or n.startswith("rpm_"))

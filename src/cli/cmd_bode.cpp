@@ -15,7 +15,7 @@
 #include "modal/closed_loop_modes.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/common.hpp"
-#include "src/io/discon_input.hpp"
+#include "src/io/openfast/servodyn/discon_input.hpp"
 #include "src/model/error.hpp"
 #include "src/writers/bode_table.hpp"
 #include "src/writers/gnuplot.hpp"

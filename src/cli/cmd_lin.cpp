@@ -7,7 +7,7 @@
 #include "src/cli/commands.hpp"
 #include "src/cli/common.hpp"
 #include "src/cli/mode_output.hpp"
-#include "src/io/openfast_lin.hpp"
+#include "src/io/lin/openfast_lin.hpp"
 #include "src/model/error.hpp"
 #include "src/model/text.hpp"
 #include "src/writers/campbell_output.hpp"

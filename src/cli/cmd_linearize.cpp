@@ -5,7 +5,7 @@
 #include "linearize/linearize.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/common.hpp"
-#include "src/io/csv.hpp"
+#include "src/io/text/csv.hpp"
 #include "src/writers/output_set.hpp"
 
 namespace whirl::cli {

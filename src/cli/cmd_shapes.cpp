@@ -8,8 +8,8 @@
 
 #include "src/cli/commands.hpp"
 #include "src/cli/common.hpp"
-#include "src/io/case_file.hpp"
-#include "src/io/csv.hpp"
+#include "src/io/case/case_file.hpp"
+#include "src/io/text/csv.hpp"
 #include "src/model/error.hpp"
 #include "src/turbine/elastodyn_model.hpp"
 #include "src/writers/output_set.hpp"

@@ -14,7 +14,7 @@
 
 #include "linearize/load_jump.hpp"
 #include "linearize/point_validity.hpp"
-#include "src/io/discon_input.hpp"
+#include "src/io/openfast/servodyn/discon_input.hpp"
 #include "src/model/error.hpp"
 #include "src/model/text.hpp"
 #include "src/parallel/session.hpp"

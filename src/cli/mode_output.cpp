@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <iostream>
 
-#include "src/io/csv.hpp"
+#include "src/io/text/csv.hpp"
 #include "src/writers/mode_shape_tables.hpp"
 
 namespace whirl::cli {

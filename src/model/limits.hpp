@@ -31,7 +31,7 @@
 /// | kMaxSubDynMembers | 2000 | SubDyn `NMembers`; with `NDiv` at most kMaxFemElements elements in all |
 /// | kMaxSubDynNDiv | 100 | SubDyn `NDiv` |
 /// | kMaxSubDynPropSets | 2000 | SubDyn property-set counts (`NPropSets`, `NXPropSets`) |
-/// | kMaxInputFileBytes | 128 MB | every input file, from its size before reading (src/io/input_file.hpp) |
+/// | kMaxInputFileBytes | 128 MB | every input file, from its size before reading (src/io/text/input_file.hpp) |
 /// | kMaxTableRows | 1000000 | rows of a CSV table (readCsv, readTextCsv) and of an OpenFAST table |
 /// | kMaxStudySets | 10000 | rows of `study --params` |
 /// | kMaxSimulationRecords | 1000000 | `simulate` recorded instants, tmax / dt-out + 1 |

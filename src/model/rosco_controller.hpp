@@ -3,8 +3,8 @@
 /// ROSCO's controller (NREL's Reference OpenSource Controller, the `DISCON.IN` a ServoDyn deck names with
 /// `PCMode = 5`, `VSContrl = 5`, `DLL_InFile`) as plain data: the parameters a linearization and a trim
 /// need, in SI units (rad, rad/s, N m, W; the generator side is the high-speed shaft as ROSCO has it),
-/// read by io::readDiscon (src/io/discon_input.hpp). Members spell ROSCO's keys; their meaning is that of
-/// ROSCO's `rosco/controller/src/ReadSetParameters.f90`, `Controllers.f90` and `ControllerBlocks.f90`
+/// read by io::readDiscon (src/io/openfast/servodyn/discon_input.hpp). Members spell ROSCO's keys; their meaning is
+/// that of ROSCO's `rosco/controller/src/ReadSetParameters.f90`, `Controllers.f90` and `ControllerBlocks.f90`
 /// (NREL/ROSCO v2.10). The functions below are ROSCO's table look-ups and limits, evaluated as ROSCO does
 /// (`interp1d` of `Functions.f90`: linear, held constant beyond the ends).
 #include <map>

@@ -21,7 +21,7 @@
 #include <vector>
 
 #include "src/fem/beam6_model.hpp"
-#include "src/io/beamdyn_input.hpp"
+#include "src/io/openfast/beamdyn/beamdyn_input.hpp"
 #include "src/turbine/elastodyn_blade_shapes.hpp"
 
 namespace whirl {

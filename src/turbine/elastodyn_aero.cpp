@@ -6,7 +6,7 @@
 
 #include "src/aero/ua_span.hpp"
 #include "src/dynamics/generator_torque.hpp"
-#include "src/io/airfoil_ua.hpp"
+#include "src/io/openfast/aerodyn/airfoil_ua.hpp"
 #include "src/model/error.hpp"
 #include "src/shapes/beam.hpp"
 #include "src/turbine/elastodyn_parts.hpp"

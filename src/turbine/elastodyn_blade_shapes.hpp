@@ -24,7 +24,7 @@
 /// axes with the same twist, ElastoDyn's stiffness ∫ EI φ''² dr.
 #include <vector>
 
-#include "src/io/elastodyn_blade.hpp"
+#include "src/io/openfast/elastodyn/elastodyn_blade.hpp"
 #include "src/shapes/beam.hpp"
 
 namespace whirl {

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "src/fem/mode_shapes.hpp"
-#include "src/io/elastodyn_input.hpp"
+#include "src/io/openfast/elastodyn/elastodyn_input.hpp"
 #include "src/turbine/elastodyn_blade_shapes.hpp"
 
 namespace whirl {

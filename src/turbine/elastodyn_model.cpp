@@ -6,10 +6,10 @@
 #include <filesystem>
 #include <numbers>
 
-#include "src/io/aero_support.hpp"
-#include "src/io/discon_input.hpp"
-#include "src/io/openfast_overrides.hpp"
-#include "src/io/openfast_support.hpp"
+#include "src/io/openfast/aerodyn/aero_support.hpp"
+#include "src/io/openfast/openfast_overrides.hpp"
+#include "src/io/openfast/openfast_support.hpp"
+#include "src/io/openfast/servodyn/discon_input.hpp"
 #include "src/model/error.hpp"
 #include "src/model/text.hpp"
 #include "src/turbine/elastodyn_fem_shapes.hpp"

@@ -67,8 +67,8 @@
 #include <vector>
 
 #include "src/fem/shape_comparison.hpp"
-#include "src/io/aero_deck.hpp"
-#include "src/io/openfast_turbine.hpp"
+#include "src/io/openfast/aerodyn/aero_deck.hpp"
+#include "src/io/openfast/openfast_turbine.hpp"
 #include "src/model/model.hpp"
 
 namespace whirl {

@@ -8,11 +8,11 @@
 #include <utility>
 #include <vector>
 
-#include "src/io/aero_deck.hpp"
-#include "src/io/elastodyn_input.hpp"
-#include "src/io/openfast_turbine.hpp"
-#include "src/io/servodyn_input.hpp"
-#include "src/io/subdyn_input.hpp"
+#include "src/io/openfast/aerodyn/aero_deck.hpp"
+#include "src/io/openfast/elastodyn/elastodyn_input.hpp"
+#include "src/io/openfast/offshore/subdyn_input.hpp"
+#include "src/io/openfast/openfast_turbine.hpp"
+#include "src/io/openfast/servodyn/servodyn_input.hpp"
 #include "src/model/model_builder.hpp"
 #include "src/turbine/elastodyn_blade_shapes.hpp"
 #include "src/turbine/elastodyn_model.hpp"

@@ -5,7 +5,7 @@
 #include <numbers>
 #include <string>
 
-#include "src/io/openfast_support.hpp"
+#include "src/io/openfast/openfast_support.hpp"
 #include "src/model/error.hpp"
 #include "src/turbine/elastodyn_parts.hpp"
 

@@ -4,7 +4,7 @@
 /// mode shapes, in the tower body frame (x up from the base, y side-to-side = −Y, z fore-aft = X).
 #include <vector>
 
-#include "src/io/elastodyn_input.hpp"
+#include "src/io/openfast/elastodyn/elastodyn_input.hpp"
 #include "src/shapes/beam.hpp"
 
 namespace whirl {

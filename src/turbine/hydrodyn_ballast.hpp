@@ -10,7 +10,7 @@
 /// must not add it a second time.
 #include <Eigen/Core>
 
-#include "src/io/hydrodyn_members.hpp"
+#include "src/io/openfast/offshore/hydrodyn_members.hpp"
 #include "src/model/types.hpp"
 
 namespace whirl::elastodyn {

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "src/io/elastodyn_common.hpp"
+#include "src/io/openfast/elastodyn_common.hpp"
 #include "src/model/error.hpp"
 
 namespace whirl::elastodyn {

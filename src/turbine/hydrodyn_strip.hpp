@@ -18,7 +18,7 @@
 /// each element's share goes to its two nodes with the linear weights of OpenFAST's line-to-point
 /// load mapping, the joints' to the node at the joint.
 #include "src/fem/beam_model.hpp"
-#include "src/io/hydrodyn_input.hpp"
+#include "src/io/openfast/offshore/hydrodyn_input.hpp"
 
 namespace whirl::elastodyn {
 

@@ -3,7 +3,7 @@
 
 #include <filesystem>
 
-#include "src/io/case_file.hpp"
+#include "src/io/case/case_file.hpp"
 #include "src/turbine/elastodyn_model.hpp"
 
 namespace whirl {

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// A SubDyn substructure as a whirl FE body (src/fem/): SubDyn's discretization and element properties,
-/// its boundary conditions and its reduction, built from the input file (src/io/subdyn_input.hpp).
+/// its boundary conditions and its reduction, built from the input file (src/io/openfast/offshore/subdyn_input.hpp).
 ///
 /// As SubDyn [SubDyn] (SD_FEM.f90, SD_Discrt and SetElementProperties, OpenFAST v4):
 /// - nodes: the joints, then NDiv − 1 equally spaced nodes inside each member (member order), whose
@@ -30,7 +30,7 @@
 #include <vector>
 
 #include "src/fem/fem_body.hpp"
-#include "src/io/subdyn_input.hpp"
+#include "src/io/openfast/offshore/subdyn_input.hpp"
 
 namespace whirl {
 

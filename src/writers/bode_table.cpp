@@ -3,7 +3,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "src/io/csv.hpp"
+#include "src/io/text/csv.hpp"
 #include "src/writers/gnuplot.hpp"
 
 namespace whirl {

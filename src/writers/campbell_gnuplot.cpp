@@ -3,7 +3,7 @@
 #include <cmath>
 #include <optional>
 
-#include "src/io/csv.hpp"
+#include "src/io/text/csv.hpp"
 #include "src/model/text.hpp"
 #include "src/writers/campbell_output.hpp"
 #include "src/writers/gnuplot.hpp"

@@ -3,7 +3,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "src/io/csv.hpp"
+#include "src/io/text/csv.hpp"
 #include "src/model/error.hpp"
 #include "src/writers/campbell_output.hpp"
 #include "src/writers/mode_shape_tables.hpp"

@@ -1,6 +1,6 @@
 #include "src/writers/closed_loop_step_table.hpp"
 
-#include "src/io/csv.hpp"
+#include "src/io/text/csv.hpp"
 #include "src/writers/gnuplot.hpp"
 
 namespace whirl {

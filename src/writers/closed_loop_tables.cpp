@@ -5,7 +5,7 @@
 #include <numbers>
 #include <tuple>
 
-#include "src/io/csv.hpp"
+#include "src/io/text/csv.hpp"
 #include "src/writers/campbell_html.hpp"
 #include "src/writers/gnuplot.hpp"
 #include "src/writers/output_set.hpp"

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "src/io/csv.hpp"
+#include "src/io/text/csv.hpp"
 
 namespace whirl {
 namespace {

@@ -9,7 +9,7 @@
 
 #include <fmt/format.h>
 
-#include "src/io/csv.hpp"
+#include "src/io/text/csv.hpp"
 
 namespace whirl {
 namespace {

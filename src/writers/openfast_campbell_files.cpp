@@ -9,7 +9,7 @@
 
 #include <fmt/format.h>
 
-#include "src/io/csv.hpp"
+#include "src/io/text/csv.hpp"
 #include "src/writers/mode_shape_tables.hpp"
 
 namespace whirl {

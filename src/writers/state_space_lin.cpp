@@ -154,7 +154,7 @@ bool elastoDynStates(const std::vector<StateSpaceVariable>& all) {
 std::string linStateDescription(const StateSpaceVariable& x, const std::vector<StateSpaceVariable>& all,
                                 bool elastodyn) {
   // HydroDyn's radiation states as OpenFAST describes them ("HD RdtnPtfmSg3"), so that the file reads
-  // back into the same names (src/io/openfast_lin_names.hpp).
+  // back into the same names (src/io/lin/openfast_lin_names.hpp).
   static const std::regex radiation(R"(^HydroDyn radiation (surge|sway|heave|roll|pitch|yaw) (\d+)$)");
   std::smatch rm;
   if (x.rate_of < 0 && std::regex_match(x.name, rm, radiation)) {

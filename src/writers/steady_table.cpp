@@ -2,7 +2,7 @@
 
 #include <numbers>
 
-#include "src/io/csv.hpp"
+#include "src/io/text/csv.hpp"
 
 namespace whirl {
 

@@ -1,6 +1,6 @@
 #include "src/writers/study_table.hpp"
 
-#include "src/io/csv.hpp"
+#include "src/io/text/csv.hpp"
 #include "src/writers/campbell_output.hpp"
 
 namespace whirl {

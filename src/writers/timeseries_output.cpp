@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "src/io/csv.hpp"
+#include "src/io/text/csv.hpp"
 #include "src/model/error.hpp"
 #include "src/writers/gnuplot.hpp"
 #include "src/writers/output_set.hpp"

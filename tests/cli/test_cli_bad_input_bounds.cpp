@@ -1,4 +1,4 @@
-// Issue 48, items 3 and 5: every input file goes through one preamble (src/io/input_file.hpp) that
+// Issue 48, items 3 and 5: every input file goes through one preamble (src/io/text/input_file.hpp) that
 // refuses a file larger than limits::kMaxInputFileBytes before reading it and anything but a regular
 // file (a FIFO blocked forever); `study` sets, `simulate` records and rotor revolutions are bounded
 // before anything is allocated; names that are not UTF-8 are refused where they are read with

@@ -4,7 +4,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "src/io/csv.hpp"
+#include "src/io/text/csv.hpp"
 #include "tests/cli/cli_support.hpp"
 
 namespace whirl::test {

@@ -1,6 +1,6 @@
 #pragma once
 // A `.lin` reader written to the reading rules of the tools that read OpenFAST's files, independent of
-// whirl's own reader (src/io/openfast_lin.cpp), so that a whirl file these rules cannot read fails a
+// whirl's own reader (src/io/lin/openfast_lin.cpp), so that a whirl file these rules cannot read fails a
 // test. The rules, from ROSCO's `getMats.readFASTMatrix` / `ReadFASTLinear` and openfast_toolbox's
 // `fast_linearization_file.py` (read for their behaviour, nothing copied):
 // - header values are found by their label ("Rotor Speed:", "Azimuth:", "Wind Speed:", "Number of

@@ -12,8 +12,8 @@
 
 #include "linearize/linearize.hpp"
 #include "modal/modes.hpp"
-#include "src/io/case_file.hpp"
-#include "src/io/csv.hpp"
+#include "src/io/case/case_file.hpp"
+#include "src/io/text/csv.hpp"
 
 namespace whirl::test {
 

@@ -8,7 +8,7 @@
 #include <fstream>
 #include <string>
 
-#include "src/io/case_file.hpp"
+#include "src/io/case/case_file.hpp"
 #include "src/model/error.hpp"
 
 namespace whirl::testing {

@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <string>
 
-#include "src/io/openfast_turbine.hpp"
+#include "src/io/openfast/openfast_turbine.hpp"
 #include "tests/unit/openfast_test_util.hpp"
 
 namespace whirl::test {

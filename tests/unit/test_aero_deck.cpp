@@ -5,8 +5,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "src/io/aero_deck.hpp"
-#include "src/io/openfast_overrides.hpp"
+#include "src/io/openfast/aerodyn/aero_deck.hpp"
+#include "src/io/openfast/openfast_overrides.hpp"
 #include "tests/unit/aero_test_util.hpp"
 
 namespace {

@@ -3,11 +3,11 @@
 // copied AWT-27 (Test01) and SWRT files in tests/data/openfast/decks/certtest.
 #include <gtest/gtest.h>
 
-#include "src/io/aero_deck.hpp"
-#include "src/io/aero_deck14.hpp"
-#include "src/io/aerodyn14_input.hpp"
-#include "src/io/airfoil14_input.hpp"
-#include "src/io/fst_input.hpp"
+#include "src/io/openfast/aerodyn/aero_deck.hpp"
+#include "src/io/openfast/aerodyn/aero_deck14.hpp"
+#include "src/io/openfast/aerodyn/aerodyn14_input.hpp"
+#include "src/io/openfast/aerodyn/airfoil14_input.hpp"
+#include "src/io/openfast/fst_input.hpp"
 #include "tests/unit/openfast_test_util.hpp"
 
 namespace {

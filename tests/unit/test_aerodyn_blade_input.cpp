@@ -3,7 +3,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "src/io/aerodyn_blade_input.hpp"
+#include "src/io/openfast/aerodyn/aerodyn_blade_input.hpp"
 #include "tests/unit/aero_test_util.hpp"
 
 namespace {

@@ -8,8 +8,8 @@
 
 #include <cmath>
 
-#include "src/io/aero_support.hpp"
-#include "src/io/aerodyn_input.hpp"
+#include "src/io/openfast/aerodyn/aero_support.hpp"
+#include "src/io/openfast/aerodyn/aerodyn_input.hpp"
 #include "tests/unit/aero_test_util.hpp"
 
 namespace {

@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-#include "src/io/airfoil_input.hpp"
+#include "src/io/openfast/aerodyn/airfoil_input.hpp"
 #include "tests/unit/aero_test_util.hpp"
 
 namespace {

@@ -1,4 +1,4 @@
-// The BeamDyn reader (src/io/beamdyn_input.hpp): the NREL 5MW blade of certification Test26
+// The BeamDyn reader (src/io/openfast/beamdyn/beamdyn_input.hpp): the NREL 5MW blade of certification Test26
 // (cases/nrel5mw_beamdyn, BeamDyn v1.01 layout), a small generated blade in the OpenFAST v4 layout
 // (with the modal-damping block), and one error per bad input, each "file:line: key: reason".
 #include <gmock/gmock.h>
@@ -8,7 +8,7 @@
 #include <numbers>
 #include <sstream>
 
-#include "src/io/beamdyn_input.hpp"
+#include "src/io/openfast/beamdyn/beamdyn_input.hpp"
 #include "src/model/error.hpp"
 #include "tests/unit/openfast_test_util.hpp"
 #include "tests/unit/test_util.hpp"

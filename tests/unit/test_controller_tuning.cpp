@@ -14,7 +14,7 @@
 
 #include "linearize/controller_tuning.hpp"
 #include "src/aero/not_a_knot_spline.hpp"
-#include "src/io/rotor_performance_input.hpp"
+#include "src/io/openfast/servodyn/rotor_performance_input.hpp"
 #include "src/model/error.hpp"
 
 namespace whirl {

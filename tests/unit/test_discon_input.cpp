@@ -1,4 +1,4 @@
-// ROSCO's DISCON.IN reader (src/io/discon_input.hpp) on the NREL 5MW file ROSCO ships
+// ROSCO's DISCON.IN reader (src/io/openfast/servodyn/discon_input.hpp) on the NREL 5MW file ROSCO ships
 // (cases/nrel5mw/rosco/DISCON.IN, ROSCO v2.10.3), its bad-input messages, ROSCO's table look-ups
 // (src/model/rosco_controller.hpp) and the ROSCO deck cases/nrel5mw/Main_ROSCO.fst.
 #include <gmock/gmock.h>
@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-#include "src/io/discon_input.hpp"
+#include "src/io/openfast/servodyn/discon_input.hpp"
 #include "tests/unit/openfast_test_util.hpp"
 
 namespace {

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "src/io/openfast_turbine.hpp"
+#include "src/io/openfast/openfast_turbine.hpp"
 #include "src/turbine/elastodyn_blade_shapes.hpp"
 #include "tests/unit/openfast_test_util.hpp"
 

@@ -7,8 +7,8 @@
 
 #include <cmath>
 
-#include "src/io/hydrodyn_input.hpp"
-#include "src/io/openfast_overrides.hpp"
+#include "src/io/openfast/offshore/hydrodyn_input.hpp"
+#include "src/io/openfast/openfast_overrides.hpp"
 #include "src/turbine/hydrodyn_ballast.hpp"
 #include "tests/unit/test_util.hpp"
 

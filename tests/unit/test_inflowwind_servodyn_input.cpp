@@ -4,11 +4,11 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "src/io/aero_support.hpp"
-#include "src/io/aerodyn_input.hpp"
-#include "src/io/fst_input.hpp"
-#include "src/io/inflowwind_input.hpp"
-#include "src/io/servodyn_input.hpp"
+#include "src/io/openfast/aerodyn/aero_support.hpp"
+#include "src/io/openfast/aerodyn/aerodyn_input.hpp"
+#include "src/io/openfast/aerodyn/inflowwind_input.hpp"
+#include "src/io/openfast/fst_input.hpp"
+#include "src/io/openfast/servodyn/servodyn_input.hpp"
 #include "tests/unit/aero_test_util.hpp"
 
 namespace {

@@ -8,8 +8,8 @@
 #include "case_file_test_util.hpp"
 #include "modal/tracking.hpp"
 #include "modal/tracking_overrides.hpp"
-#include "src/io/csv.hpp"
-#include "src/io/openfast_lin.hpp"
+#include "src/io/lin/openfast_lin.hpp"
+#include "src/io/text/csv.hpp"
 #include "src/turbine/elastodyn_model.hpp"
 #include "tests/unit/openfast_test_util.hpp"
 

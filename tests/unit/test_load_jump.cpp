@@ -7,7 +7,7 @@
 #include "linearize/operating_point.hpp"
 #include "linearize/point_validity.hpp"
 #include "src/dynamics/aero_inflow.hpp"
-#include "src/io/case_file.hpp"
+#include "src/io/case/case_file.hpp"
 #include "tests/unit/openfast_test_util.hpp"
 
 namespace whirl {

@@ -9,7 +9,7 @@
 
 #include "modal/eigen.hpp"
 #include "modal/mbc_lin.hpp"
-#include "src/io/openfast_lin.hpp"
+#include "src/io/lin/openfast_lin.hpp"
 #include "src/model/error.hpp"
 #include "tests/unit/test_util.hpp"
 

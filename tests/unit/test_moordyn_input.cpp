@@ -8,8 +8,8 @@
 #include <functional>
 #include <regex>
 
-#include "src/io/map_input.hpp"
-#include "src/io/moordyn_input.hpp"
+#include "src/io/openfast/offshore/map_input.hpp"
+#include "src/io/openfast/offshore/moordyn_input.hpp"
 #include "src/model/error.hpp"
 #include "tests/unit/test_util.hpp"
 

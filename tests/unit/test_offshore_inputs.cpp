@@ -11,10 +11,10 @@
 #include <numbers>
 
 #include "src/dynamics/catenary.hpp"
-#include "src/io/hydrodyn_input.hpp"
-#include "src/io/map_input.hpp"
-#include "src/io/openfast_overrides.hpp"
-#include "src/io/wamit_input.hpp"
+#include "src/io/openfast/offshore/hydrodyn_input.hpp"
+#include "src/io/openfast/offshore/map_input.hpp"
+#include "src/io/openfast/offshore/wamit_input.hpp"
+#include "src/io/openfast/openfast_overrides.hpp"
 #include "src/model/error.hpp"
 #include "tests/unit/test_util.hpp"
 

@@ -6,15 +6,15 @@
 
 #include <regex>
 
-#include "src/io/aerodyn_input.hpp"
-#include "src/io/airfoil_input.hpp"
-#include "src/io/elastodyn_input.hpp"
-#include "src/io/fst_input.hpp"
-#include "src/io/hydrodyn_input.hpp"
-#include "src/io/inflowwind_input.hpp"
-#include "src/io/openfast_turbine.hpp"
-#include "src/io/seastate_input.hpp"
-#include "src/io/servodyn_input.hpp"
+#include "src/io/openfast/aerodyn/aerodyn_input.hpp"
+#include "src/io/openfast/aerodyn/airfoil_input.hpp"
+#include "src/io/openfast/aerodyn/inflowwind_input.hpp"
+#include "src/io/openfast/elastodyn/elastodyn_input.hpp"
+#include "src/io/openfast/fst_input.hpp"
+#include "src/io/openfast/offshore/hydrodyn_input.hpp"
+#include "src/io/openfast/offshore/seastate_input.hpp"
+#include "src/io/openfast/openfast_turbine.hpp"
+#include "src/io/openfast/servodyn/servodyn_input.hpp"
 #include "src/turbine/elastodyn_parts.hpp"
 #include "tests/unit/openfast_test_util.hpp"
 

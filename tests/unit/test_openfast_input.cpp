@@ -5,8 +5,8 @@
 
 #include <cmath>
 
-#include "src/io/openfast_input.hpp"
-#include "src/io/openfast_overrides.hpp"
+#include "src/io/openfast/openfast_input.hpp"
+#include "src/io/openfast/openfast_overrides.hpp"
 #include "tests/unit/openfast_test_util.hpp"
 
 namespace {

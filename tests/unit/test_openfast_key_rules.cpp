@@ -6,16 +6,16 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "src/io/aerodyn_blade_input.hpp"
-#include "src/io/aerodyn_input.hpp"
-#include "src/io/airfoil_input.hpp"
-#include "src/io/fst_input.hpp"
-#include "src/io/hydrodyn_input.hpp"
-#include "src/io/inflowwind_input.hpp"
-#include "src/io/map_input.hpp"
-#include "src/io/moordyn_input.hpp"
-#include "src/io/seastate_input.hpp"
-#include "src/io/servodyn_input.hpp"
+#include "src/io/openfast/aerodyn/aerodyn_blade_input.hpp"
+#include "src/io/openfast/aerodyn/aerodyn_input.hpp"
+#include "src/io/openfast/aerodyn/airfoil_input.hpp"
+#include "src/io/openfast/aerodyn/inflowwind_input.hpp"
+#include "src/io/openfast/fst_input.hpp"
+#include "src/io/openfast/offshore/hydrodyn_input.hpp"
+#include "src/io/openfast/offshore/map_input.hpp"
+#include "src/io/openfast/offshore/moordyn_input.hpp"
+#include "src/io/openfast/offshore/seastate_input.hpp"
+#include "src/io/openfast/servodyn/servodyn_input.hpp"
 #include "tests/unit/nrel5mw_scratch.hpp"
 #include "tests/unit/openfast_test_util.hpp"
 

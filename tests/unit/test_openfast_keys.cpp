@@ -6,9 +6,9 @@
 
 #include <algorithm>
 
-#include "src/io/elastodyn_blade.hpp"
-#include "src/io/elastodyn_tower.hpp"
-#include "src/io/openfast_turbine.hpp"
+#include "src/io/openfast/elastodyn/elastodyn_blade.hpp"
+#include "src/io/openfast/elastodyn/elastodyn_tower.hpp"
+#include "src/io/openfast/openfast_turbine.hpp"
 #include "tests/unit/nrel5mw_scratch.hpp"
 #include "tests/unit/openfast_test_util.hpp"
 

@@ -5,8 +5,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "src/io/openfast_support.hpp"
-#include "src/io/openfast_turbine.hpp"
+#include "src/io/openfast/openfast_support.hpp"
+#include "src/io/openfast/openfast_turbine.hpp"
 #include "tests/unit/openfast_test_util.hpp"
 
 namespace {

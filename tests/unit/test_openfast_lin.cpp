@@ -7,7 +7,7 @@
 #include <sstream>
 #include <string>
 
-#include "src/io/openfast_lin.hpp"
+#include "src/io/lin/openfast_lin.hpp"
 #include "src/model/error.hpp"
 #include "tests/unit/test_util.hpp"
 

@@ -2,7 +2,7 @@
 // comments), rows of numbers, and the next line with content.
 #include <gtest/gtest.h>
 
-#include "src/io/openfast_lines.hpp"
+#include "src/io/openfast/openfast_lines.hpp"
 #include "tests/unit/openfast_test_util.hpp"
 
 namespace {

@@ -10,8 +10,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "src/io/csv.hpp"
-#include "src/io/openfast_lin.hpp"
+#include "src/io/lin/openfast_lin.hpp"
+#include "src/io/text/csv.hpp"
 #include "src/writers/campbell_output.hpp"
 #include "src/writers/state_space_files.hpp"
 #include "test_util.hpp"

@@ -8,7 +8,7 @@
 #include <functional>
 #include <sstream>
 
-#include "src/io/wamit_state_space.hpp"
+#include "src/io/openfast/offshore/wamit_state_space.hpp"
 #include "src/model/error.hpp"
 #include "tests/unit/test_util.hpp"
 

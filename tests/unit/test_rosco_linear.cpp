@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "linearize/rosco_linear.hpp"
-#include "src/io/discon_input.hpp"
+#include "src/io/openfast/servodyn/discon_input.hpp"
 #include "tests/unit/openfast_test_util.hpp"
 
 namespace whirl {

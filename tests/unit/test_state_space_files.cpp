@@ -15,7 +15,7 @@
 #include "modal/mbc_lin.hpp"
 #include "modal/rotor_modes.hpp"
 #include "openfast_test_util.hpp"
-#include "src/io/openfast_lin.hpp"
+#include "src/io/lin/openfast_lin.hpp"
 #include "src/writers/state_space_files.hpp"
 #include "state_space_test_util.hpp"
 

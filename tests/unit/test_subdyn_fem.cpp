@@ -15,7 +15,7 @@
 #include "modal/modes.hpp"
 #include "src/fem/fem_body.hpp"
 #include "src/fem/rigid_interface.hpp"
-#include "src/io/openfast_overrides.hpp"
+#include "src/io/openfast/openfast_overrides.hpp"
 #include "src/turbine/subdyn_fem.hpp"
 
 namespace whirl {

@@ -1,4 +1,4 @@
-// The SubDyn reader (src/io/subdyn_input.hpp): the OC3 monopile of certification Test19
+// The SubDyn reader (src/io/openfast/offshore/subdyn_input.hpp): the OC3 monopile of certification Test19
 // (cases/oc3_monopile, SubDyn v1.01 layout), a tube in the v1.01 and the OpenFAST v3–v4 layouts
 // (tests/data/subdyn), and one error or refusal per bad input, each one line "file:line: key: reason".
 #include <gmock/gmock.h>
@@ -11,8 +11,8 @@
 
 #include <unistd.h>
 
-#include "src/io/openfast_overrides.hpp"
-#include "src/io/subdyn_input.hpp"
+#include "src/io/openfast/offshore/subdyn_input.hpp"
+#include "src/io/openfast/openfast_overrides.hpp"
 #include "src/model/error.hpp"
 #include "tests/unit/test_util.hpp"
 

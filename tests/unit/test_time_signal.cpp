@@ -1,4 +1,4 @@
-// Input histories of `whirl simulate` (src/model/time_signal.hpp, src/io/time_signal_reader.hpp):
+// Input histories of `whirl simulate` (src/model/time_signal.hpp, src/io/text/time_signal_reader.hpp):
 // the values and derivatives of each kind, their breakpoints, and the messages for bad forms.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -8,7 +8,7 @@
 #include <fstream>
 #include <numbers>
 
-#include "src/io/time_signal_reader.hpp"
+#include "src/io/text/time_signal_reader.hpp"
 #include "src/model/error.hpp"
 
 namespace whirl {

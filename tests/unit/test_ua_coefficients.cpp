@@ -10,8 +10,8 @@
 
 #include "src/aero/ua_coefficients.hpp"
 #include "src/aero/ua_span.hpp"
-#include "src/io/airfoil_input.hpp"
-#include "src/io/airfoil_ua.hpp"
+#include "src/io/openfast/aerodyn/airfoil_input.hpp"
+#include "src/io/openfast/aerodyn/airfoil_ua.hpp"
 #include "tests/unit/aero_test_util.hpp"
 
 namespace {

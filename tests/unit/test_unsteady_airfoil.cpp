@@ -17,8 +17,8 @@
 #include "src/aero/dynamic_inflow.hpp"
 #include "src/aero/unsteady_airfoil.hpp"
 #include "src/aero/unsteady_airfoil_linear.hpp"
-#include "src/io/airfoil_input.hpp"
-#include "src/io/airfoil_ua.hpp"
+#include "src/io/openfast/aerodyn/airfoil_input.hpp"
+#include "src/io/openfast/aerodyn/airfoil_ua.hpp"
 #include "src/model/scalar.hpp"
 
 namespace {

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "modal/closed_loop_step.hpp"
-#include "src/io/discon_input.hpp"
+#include "src/io/openfast/servodyn/discon_input.hpp"
 #include "src/turbine/elastodyn_model.hpp"
 #include "tests/support/test_paths.hpp"
 

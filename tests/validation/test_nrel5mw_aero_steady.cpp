@@ -10,7 +10,7 @@
 #include "linearize/linearize.hpp"
 #include "linearize/operating_point.hpp"
 #include "linearize/trim.hpp"
-#include "src/io/schedule.hpp"
+#include "src/io/text/schedule.hpp"
 #include "src/model/error.hpp"
 #include "src/turbine/elastodyn_model.hpp"
 

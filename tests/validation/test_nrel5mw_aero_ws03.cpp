@@ -17,7 +17,7 @@
 #include "modal/eigen.hpp"
 #include "modal/mbc_lin.hpp"
 #include "modal/rotor_modes.hpp"
-#include "src/io/openfast_lin.hpp"
+#include "src/io/lin/openfast_lin.hpp"
 #include "src/turbine/elastodyn_model.hpp"
 
 namespace whirl {

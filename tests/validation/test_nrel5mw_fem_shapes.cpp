@@ -15,8 +15,8 @@
 #include <sstream>
 
 #include "src/fem/shape_comparison.hpp"
-#include "src/io/elastodyn_blade.hpp"
-#include "src/io/elastodyn_tower.hpp"
+#include "src/io/openfast/elastodyn/elastodyn_blade.hpp"
+#include "src/io/openfast/elastodyn/elastodyn_tower.hpp"
 #include "src/turbine/elastodyn_model.hpp"
 
 namespace whirl {

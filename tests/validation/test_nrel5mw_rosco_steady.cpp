@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "linearize/trim.hpp"
-#include "src/io/discon_input.hpp"
+#include "src/io/openfast/servodyn/discon_input.hpp"
 #include "src/model/error.hpp"
 #include "src/turbine/elastodyn_model.hpp"
 

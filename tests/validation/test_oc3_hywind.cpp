@@ -22,7 +22,7 @@
 #include "linearize/linearize.hpp"
 #include "modal/modes.hpp"
 #include "modal/rotor_modes.hpp"
-#include "src/io/case_file.hpp"
+#include "src/io/case/case_file.hpp"
 #include "src/turbine/elastodyn_model.hpp"
 #include "src/turbine/elastodyn_tower_beam.hpp"
 #include "tests/support/reference.hpp"

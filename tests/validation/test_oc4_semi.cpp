@@ -13,8 +13,8 @@
 
 #include "linearize/linearize.hpp"
 #include "modal/modes.hpp"
-#include "src/io/openfast_overrides.hpp"
-#include "src/io/openfast_turbine.hpp"
+#include "src/io/openfast/openfast_overrides.hpp"
+#include "src/io/openfast/openfast_turbine.hpp"
 #include "src/turbine/elastodyn_model.hpp"
 #include "src/turbine/hydrodyn_ballast.hpp"
 #include "tests/support/reference.hpp"

@@ -17,7 +17,7 @@
 
 #include "linearize/simulate.hpp"
 #include "modal/modes.hpp"
-#include "src/io/case_file.hpp"
+#include "src/io/case/case_file.hpp"
 #include "tests/support/kane_spin_up.hpp"
 #include "tests/support/reference.hpp"
 

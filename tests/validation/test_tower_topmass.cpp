@@ -5,7 +5,7 @@
 #include <numbers>
 
 #include "modal/modes.hpp"
-#include "src/io/case_file.hpp"
+#include "src/io/case/case_file.hpp"
 #include "src/shapes/shape.hpp"
 #include "tests/support/reference.hpp"
 
