@@ -11,6 +11,7 @@
 #include "modal/mbc_lin.hpp"
 #include "src/io/lin/openfast_lin.hpp"
 #include "src/model/error.hpp"
+#include "tests/support/openfast_9rpm_mbc3.hpp"
 #include "tests/unit/test_util.hpp"
 
 namespace {
@@ -44,23 +45,11 @@ Point campbellPoint(const std::vector<std::string>& files) {
   return p;
 }
 
-// Source: MBC3 [Bir2010] of tests/data/openfast-lin/rotating-9rpm/Main.{1,12,24}.lin averaged over
-// the 3 azimuths, as stored by OpenFAST's python toolbox for these files, printed with 4 decimals. Tolerance: half
-// a unit of the 4th decimal, the rounding of the printed values.
+// Source: MBC3 of tests/data/openfast-lin/rotating-9rpm/Main.{1,12,24}.lin (tests/support/
+// openfast_9rpm_mbc3.hpp), printed with 4 decimals. Tolerance: half a unit of the 4th decimal, the
+// rounding of the printed values.
 TEST(MbcOpenFast, Rotating9rpmMatchesMbc3) {
-  struct Row {
-    const char* mode;
-    double freq_hz, damping_ratio;
-  };
-  const Row ref[] = {{"1st flap BW", 0.5878, 0.6311},
-                     {"1st flap collective", 0.7225, 0.5253},
-                     {"1st flap FW", 0.8416, 0.4401},
-                     {"1st edge BW", 0.9371, 0.0163},
-                     {"1st edge FW", 1.2371, 0.0124},
-                     {"2nd flap BW", 1.8373, 0.1555},
-                     {"2nd flap collective", 1.9870, 0.1429},
-                     {"2nd flap FW", 2.1337, 0.1338},
-                     {"1st edge collective (with generator)", 2.2561, 0.0226}};
+  const auto& ref = test::kOpenFast9rpmMbc3;
   const double tol = 0.5e-4 + 1e-12;
   const auto p = campbellPoint({"rotating-9rpm/Main.1.lin", "rotating-9rpm/Main.12.lin", "rotating-9rpm/Main.24.lin"});
   ASSERT_EQ(p.modes.size(), std::size(ref));
