@@ -11,7 +11,7 @@
 // (--out is the sandbox's). Per-run cost stays small by construction: tame sweeps have at most 3
 // points and 6 azimuths, tame simulations at most 2 s; an edge value that is valid but expensive is
 // left out on purpose (it would be a timeout, not a bug): those are the edges the bounds of
-// src/model/limits.hpp refuse before any work (1e9 points, 1e9 s).
+// src/base/limits.hpp refuse before any work (1e9 points, 1e9 s).
 //
 // Never generated: --solver sparse and PETSc options (they start MPI in the fuzzing process), an
 // --out outside the sandbox. Gnuplot is never run: PATH is an empty folder (the "not found" note).

@@ -22,7 +22,7 @@
 
 #include "linearize/linearize.hpp"
 #include "linearize/operating_point.hpp"
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 #include "src/model/model.hpp"
 
 namespace whirl::fuzz {

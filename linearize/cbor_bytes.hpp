@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 
 namespace whirl {
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <utility>
 
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 
 namespace whirl {
 namespace {

@@ -6,9 +6,9 @@
 
 #include "linearize/operating_point.hpp"
 #include "linearize/periodic.hpp"
+#include "src/base/error.hpp"
 #include "src/dynamics/mass_matrix.hpp"
 #include "src/dynamics/workspace.hpp"
-#include "src/model/error.hpp"
 
 namespace whirl {
 namespace {

@@ -3,7 +3,7 @@
 #include <numbers>
 
 #include "linearize/periodic.hpp"
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 
 namespace whirl {
 

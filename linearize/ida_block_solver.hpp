@@ -40,7 +40,7 @@
 
 #include <functional>
 
-#include "src/model/types.hpp"
+#include "src/base/types.hpp"
 
 namespace whirl {
 

@@ -7,9 +7,9 @@
 /// through them: the direction of u_i also seeds q_d with gain, so ∂/∂u is the total derivative.
 #include <vector>
 
+#include "src/base/scalar.hpp"
 #include "src/dynamics/aero_inflow.hpp"
 #include "src/dynamics/workspace.hpp"
-#include "src/model/scalar.hpp"
 
 namespace whirl {
 

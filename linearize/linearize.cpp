@@ -2,10 +2,10 @@
 
 #include "linearize/jacobian.hpp"
 #include "linearize/unsteady_aero.hpp"
+#include "src/base/error.hpp"
 #include "src/dynamics/aero_unsteady.hpp"
 #include "src/dynamics/mass_matrix.hpp"
 #include "src/dynamics/residual.hpp"
-#include "src/model/error.hpp"
 
 namespace whirl {
 namespace {

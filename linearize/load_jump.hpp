@@ -8,8 +8,8 @@
 /// zero lies between the loads on the two sides — and whirl takes the side with the smaller residual.
 #include <string>
 
+#include "src/base/types.hpp"
 #include "src/model/model.hpp"
-#include "src/model/types.hpp"
 
 namespace whirl {
 

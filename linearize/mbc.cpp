@@ -5,7 +5,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 
 namespace whirl {
 namespace {

@@ -8,10 +8,10 @@
 #include "linearize/jacobian.hpp"
 #include "linearize/linearize.hpp"
 #include "linearize/unrestrained.hpp"
+#include "src/base/error.hpp"
 #include "src/dynamics/mass_matrix.hpp"
 #include "src/dynamics/mooring_scale.hpp"
 #include "src/dynamics/residual.hpp"
-#include "src/model/error.hpp"
 
 namespace whirl {
 namespace {

@@ -7,7 +7,7 @@
 #include <numbers>
 
 #include "linearize/unrestrained.hpp"
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 
 namespace whirl {
 namespace {

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 
 namespace whirl {
 namespace {

@@ -7,8 +7,8 @@
 
 #include "linearize/closed_loop.hpp"
 #include "linearize/simulation_setup.hpp"
+#include "src/base/error.hpp"
 #include "src/dynamics/outputs.hpp"
-#include "src/model/error.hpp"
 
 namespace whirl {
 namespace {

@@ -19,11 +19,11 @@
 #include "linearize/ida_block_solver.hpp"
 #include "linearize/ida_vector.hpp"
 #include "linearize/jacobian.hpp"
+#include "src/base/error.hpp"
+#include "src/base/limits.hpp"
 #include "src/dynamics/mass_matrix.hpp"
 #include "src/dynamics/outputs.hpp"
 #include "src/dynamics/residual.hpp"
-#include "src/model/error.hpp"
-#include "src/model/limits.hpp"
 
 namespace whirl {
 namespace {
@@ -286,13 +286,13 @@ void checkSimulationSize(const Model& m, const OperatingPoint& start, const Simu
   if (records > static_cast<double>(limits::kMaxSimulationRecords))
     throw InputError(
         fmt::format("simulate: tmax: {:g} s recorded every {:g} s (dt-out) are {:.3g} instants, more than {} "
-                    "(src/model/limits.hpp): give a larger --dt-out or a shorter --tmax",
+                    "(src/base/limits.hpp): give a larger --dt-out or a shorter --tmax",
                     opt.t_end, opt.dt_out, records, limits::kMaxSimulationRecords));
   const double columns = 2.0 * m.ndof() + m.ninput() + m.noutput();
   if (records * columns > limits::kMaxSimulationValues)
     throw InputError(fmt::format(
         "simulate: tmax: {:.3g} instants of {:g} values each ({:.0f} MB in memory) are more than {:.3g} values "
-        "(src/model/limits.hpp): give a larger --dt-out or a shorter --tmax",
+        "(src/base/limits.hpp): give a larger --dt-out or a shorter --tmax",
         records, columns, records * columns * 8e-6, limits::kMaxSimulationValues));
   double rate = 0;  // [rad/s]
   for (int i : m.roles.azimuth) rate = std::max(rate, std::abs(start.qd(i)));
@@ -300,7 +300,7 @@ void checkSimulationSize(const Model& m, const OperatingPoint& start, const Simu
   if (!(revolutions <= limits::kMaxSimulationRevolutions))
     throw InputError(fmt::format(
         "simulate: the rotor turns {:.3g} revolutions in tmax = {:g} s at {:.6g} rpm, more than {:g} "
-        "(src/model/limits.hpp: the integrator's steps grow with them): give a lower --rpm or a shorter --tmax",
+        "(src/base/limits.hpp: the integrator's steps grow with them): give a lower --rpm or a shorter --tmax",
         revolutions, opt.t_end, rate * 30 / M_PI, limits::kMaxSimulationRevolutions));
 }
 
@@ -483,7 +483,7 @@ Simulation simulate(const Model& m, const OperatingPoint& start, const Simulatio
       IDAGetNumSteps(h.mem, &steps);
       if (sim.steps + steps > limits::kMaxSimulationSteps)
         throw ComputeError(fmt::format(
-            "simulate: t = {:.6g} s: more than {} integrator steps (src/model/limits.hpp) for {:g} s of {:g}: the "
+            "simulate: t = {:.6g} s: more than {} integrator steps (src/base/limits.hpp) for {:g} s of {:g}: the "
             "motion is too fast for the time step it needs (a rotor spinning up, a diverging model?)",
             t, limits::kMaxSimulationSteps, t, opt.t_end));
       if (flag < 0) throw ComputeError(idaFailure(flag, t, opt));

@@ -3,7 +3,7 @@
 #include <fmt/format.h>
 
 #include "linearize/point_validity.hpp"
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 
 namespace whirl {
 

@@ -3,8 +3,8 @@
 #include <cmath>
 
 #include "linearize/jacobian.hpp"
+#include "src/base/error.hpp"
 #include "src/dynamics/outputs.hpp"
-#include "src/model/error.hpp"
 
 namespace whirl {
 

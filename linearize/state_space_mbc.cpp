@@ -3,7 +3,7 @@
 
 #include "linearize/mbc.hpp"
 #include "linearize/state_space.hpp"
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 
 namespace whirl {
 namespace {

@@ -6,7 +6,7 @@
 #include <numbers>
 #include <regex>
 
-#include "src/model/limits.hpp"
+#include "src/base/limits.hpp"
 
 namespace whirl {
 
@@ -34,7 +34,7 @@ std::vector<double> parseRange(const std::string& spec, const std::string& optio
   const double count = std::floor((b - a) / s + 1e-9) + 1;
   if (!(count <= limits::kMaxSweepPoints))
     throw InputError(option + ": more than " + std::to_string(limits::kMaxSweepPoints) + " points in '" + spec +
-                     "' (src/model/limits.hpp)");
+                     "' (src/base/limits.hpp)");
   const int n = static_cast<int>(count);
   std::vector<double> values(static_cast<size_t>(n));
   for (int k = 0; k < n; ++k) values[static_cast<size_t>(k)] = a + k * s;

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "linearize/operating_point.hpp"
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 #include "src/model/model.hpp"
 #include "src/model/operating_condition.hpp"
 #include "src/parallel/parallel_map.hpp"

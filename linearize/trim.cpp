@@ -11,12 +11,12 @@
 #include <tuple>
 #include <vector>
 
+#include "src/base/brent.hpp"
+#include "src/base/error.hpp"
 #include "src/dynamics/generator_torque.hpp"
 #include "src/dynamics/kinematics.hpp"
 #include "src/dynamics/outputs.hpp"
 #include "src/dynamics/residual.hpp"
-#include "src/model/brent.hpp"
-#include "src/model/error.hpp"
 
 namespace whirl {
 namespace {

@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "src/base/types.hpp"
 #include "src/model/model.hpp"
-#include "src/model/types.hpp"
 
 namespace whirl {
 

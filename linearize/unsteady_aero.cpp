@@ -2,9 +2,9 @@
 
 #include <algorithm>
 
+#include "src/base/error.hpp"
 #include "src/dynamics/aero_unsteady.hpp"
 #include "src/dynamics/kinematics.hpp"
-#include "src/model/error.hpp"
 
 namespace whirl {
 namespace {

@@ -3,7 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "linearize/cbor_bytes.hpp"
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 
 namespace whirl {
 namespace {

@@ -8,7 +8,7 @@
 #include "linearize/rosco_step.hpp"
 #include "linearize/simulate.hpp"
 #include "modal/closed_loop_modes.hpp"
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 
 namespace whirl {
 namespace {

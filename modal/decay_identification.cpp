@@ -4,7 +4,7 @@
 #include <numbers>
 #include <string>
 
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 
 namespace whirl {
 namespace {

@@ -7,7 +7,7 @@
 #include <numbers>
 #include <string>
 
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 
 namespace whirl {
 namespace {

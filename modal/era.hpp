@@ -10,7 +10,7 @@
 /// signal that carries the platform pitch mode too gives both frequencies, unbiased).
 #include <vector>
 
-#include "src/model/types.hpp"
+#include "src/base/types.hpp"
 
 namespace whirl {
 

@@ -11,7 +11,7 @@
 #include "modal/eigen.hpp"
 #include "modal/floquet_harmonic.hpp"
 #include "modal/floquet_multipliers.hpp"
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 
 namespace whirl {
 namespace {

@@ -4,7 +4,7 @@
 #include <numbers>
 
 #include "modal/eigen.hpp"
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 
 namespace whirl {
 

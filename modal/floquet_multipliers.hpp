@@ -12,7 +12,7 @@
 /// *Periodic Systems*, 2009, on the cyclic reformulation). G = 1 is the eigenanalysis of Φ(T) itself.
 #include <vector>
 
-#include "src/model/types.hpp"
+#include "src/base/types.hpp"
 
 namespace whirl {
 

@@ -3,7 +3,7 @@
 /// Optimal assignment (Hungarian algorithm, Kuhn–Munkres with potentials, O(n²m)).
 #include <vector>
 
-#include "src/model/types.hpp"
+#include "src/base/types.hpp"
 
 namespace whirl {
 

@@ -6,8 +6,8 @@
 #include <regex>
 #include <utility>
 
+#include "src/base/error.hpp"
 #include "src/io/lin/openfast_lin_names.hpp"
-#include "src/model/error.hpp"
 
 namespace whirl {
 

@@ -7,7 +7,7 @@
 #include <optional>
 #include <regex>
 
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 
 namespace whirl {
 namespace {

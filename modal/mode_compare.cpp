@@ -5,8 +5,8 @@
 #include <map>
 #include <sstream>
 
+#include "src/base/error.hpp"
 #include "src/io/text/csv.hpp"
-#include "src/model/error.hpp"
 
 namespace whirl {
 namespace {

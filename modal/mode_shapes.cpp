@@ -4,8 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "src/base/skew.hpp"
 #include "src/dynamics/kinematics.hpp"
-#include "src/model/skew.hpp"
 
 namespace whirl {
 namespace {

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "modal/mode_motion.hpp"
-#include "src/model/types.hpp"
+#include "src/base/types.hpp"
 
 namespace whirl {
 

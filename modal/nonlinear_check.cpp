@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "linearize/linearize.hpp"
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 
 namespace whirl {
 

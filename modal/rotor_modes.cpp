@@ -12,7 +12,7 @@
 #include "modal/eigen.hpp"
 #include "modal/floquet.hpp"
 #include "modal/participation.hpp"
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 
 namespace whirl {
 namespace {

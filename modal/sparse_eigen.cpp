@@ -5,7 +5,7 @@
 #include <cstdlib>
 #include <limits>
 
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 #include "src/parallel/session.hpp"
 
 #ifdef WHIRL_HAVE_PETSC

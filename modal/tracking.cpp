@@ -9,7 +9,7 @@
 #include "modal/aero_roots.hpp"
 #include "modal/hungarian.hpp"
 #include "modal/tracking_overrides.hpp"
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 
 namespace whirl {
 

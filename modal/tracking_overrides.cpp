@@ -6,10 +6,10 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "src/base/error.hpp"
+#include "src/base/text.hpp"
 #include "src/io/text/csv.hpp"
 #include "src/io/text/input_file.hpp"
-#include "src/model/error.hpp"
-#include "src/model/text.hpp"
 
 namespace whirl {
 

@@ -12,7 +12,7 @@
 #include "linearize/trim.hpp"
 #include "python/src/bindings.hpp"
 #include "python/src/operating_point.hpp"
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 #include "src/writers/bode_table.hpp"
 #include "src/writers/gnuplot.hpp"
 #include "src/writers/output_set.hpp"

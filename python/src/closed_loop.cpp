@@ -7,7 +7,7 @@
 #include "modal/closed_loop_campbell.hpp"
 #include "modal/closed_loop_step.hpp"
 #include "python/src/bindings.hpp"
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 #include "src/writers/campbell_output.hpp"
 #include "src/writers/closed_loop_step_table.hpp"
 #include "src/writers/closed_loop_tables.hpp"

@@ -6,7 +6,7 @@
 
 #include "modal/mode_compare.hpp"
 #include "python/src/bindings.hpp"
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 
 namespace whirl::python {
 namespace {

@@ -3,7 +3,7 @@
 #include <Python.h>
 
 #include "python/src/bindings.hpp"
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 
 namespace whirl::python {
 

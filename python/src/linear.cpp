@@ -15,7 +15,7 @@
 #include "linearize/trim.hpp"
 #include "python/src/bindings.hpp"
 #include "python/src/operating_point.hpp"
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 #include "src/writers/output_set.hpp"
 #include "src/writers/state_space_files.hpp"
 

@@ -13,9 +13,9 @@
 #include "linearize/state_space.hpp"
 #include "python/src/bindings.hpp"
 #include "python/src/operating_point.hpp"
+#include "src/base/error.hpp"
 #include "src/io/case/case_file.hpp"
 #include "src/io/openfast/servodyn/discon_input.hpp"
-#include "src/model/error.hpp"
 #include "src/turbine/load_model.hpp"
 
 namespace whirl::python {

@@ -15,8 +15,8 @@
 #include "linearize/simulation_setup.hpp"
 #include "python/src/bindings.hpp"
 #include "python/src/operating_point.hpp"
+#include "src/base/error.hpp"
 #include "src/io/text/time_signal_reader.hpp"
-#include "src/model/error.hpp"
 #include "src/writers/output_set.hpp"
 #include "src/writers/timeseries_output.hpp"
 

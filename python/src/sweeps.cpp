@@ -16,9 +16,9 @@
 #include "modal/tracking.hpp"
 #include "python/src/bindings.hpp"
 #include "python/src/operating_point.hpp"
+#include "src/base/error.hpp"
 #include "src/io/lin/openfast_lin.hpp"
 #include "src/io/text/schedule.hpp"
-#include "src/model/error.hpp"
 #include "src/writers/steady_table.hpp"
 
 namespace whirl::python {

@@ -11,9 +11,9 @@
 #include <type_traits>
 
 #include "src/aero/prandtl_expansion.hpp"
-#include "src/model/brent.hpp"
-#include "src/model/error.hpp"
-#include "src/model/scalar.hpp"
+#include "src/base/brent.hpp"
+#include "src/base/error.hpp"
+#include "src/base/scalar.hpp"
 
 namespace whirl::aero {
 

@@ -11,7 +11,7 @@
 /// r/R the element's distance from the rotor axis over the largest one. Eliminating v1 gives the
 /// second-order filter τ1 τ2 v̈ + (τ1 + τ2) v̇ + v = v_qs + k τ1 v̇_qs; AeroDyn's linearization states
 /// are v and v̇ (`vind`, "first time derivative of vind"). Steady state: v1 = (1 − k) v_qs, v = v_qs.
-#include "src/model/scalar.hpp"
+#include "src/base/scalar.hpp"
 
 namespace whirl::aero {
 

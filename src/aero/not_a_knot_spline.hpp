@@ -8,7 +8,7 @@
 /// A tensor-product interpolant is evaluated by weights along each axis: s(x, y) = w_y(y)ᵀ T w_x(x).
 #include <vector>
 
-#include "src/model/types.hpp"
+#include "src/base/types.hpp"
 
 namespace whirl::aero {
 

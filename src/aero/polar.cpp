@@ -5,8 +5,8 @@
 #include <numbers>
 #include <sstream>
 
-#include "src/model/error.hpp"
-#include "src/model/scalar.hpp"
+#include "src/base/error.hpp"
+#include "src/base/scalar.hpp"
 
 namespace whirl::aero {
 

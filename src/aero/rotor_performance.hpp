@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "src/aero/not_a_knot_spline.hpp"
-#include "src/model/types.hpp"
+#include "src/base/types.hpp"
 
 namespace whirl::aero {
 

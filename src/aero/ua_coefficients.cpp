@@ -6,7 +6,7 @@
 #include <limits>
 #include <numbers>
 
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 
 namespace whirl::aero {
 namespace {

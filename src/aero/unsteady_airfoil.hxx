@@ -7,7 +7,7 @@
 #include <numbers>
 
 #include "src/aero/unsteady_airfoil.hpp"
-#include "src/model/scalar.hpp"
+#include "src/base/scalar.hpp"
 
 namespace whirl::aero {
 namespace hgm_detail {

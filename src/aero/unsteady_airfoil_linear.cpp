@@ -2,7 +2,7 @@
 
 #include <Eigen/LU>
 
-#include "src/model/scalar.hpp"
+#include "src/base/scalar.hpp"
 
 namespace whirl::aero {
 

@@ -5,8 +5,8 @@
 #include <optional>
 
 #include "modal/mode_compare.hpp"
+#include "src/base/error.hpp"
 #include "src/cli/commands.hpp"
-#include "src/model/error.hpp"
 
 namespace whirl::cli {
 namespace {

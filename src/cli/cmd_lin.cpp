@@ -4,12 +4,12 @@
 
 #include "modal/lin_modes.hpp"
 #include "modal/tracking.hpp"
+#include "src/base/error.hpp"
+#include "src/base/text.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/common.hpp"
 #include "src/cli/mode_output.hpp"
 #include "src/io/lin/openfast_lin.hpp"
-#include "src/model/error.hpp"
-#include "src/model/text.hpp"
 #include "src/writers/campbell_output.hpp"
 #include "src/writers/output_set.hpp"
 

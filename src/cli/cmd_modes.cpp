@@ -6,10 +6,10 @@
 #include "modal/mode_shapes.hpp"
 #include "modal/rotor_modes.hpp"
 #include "modal/sparse_modes.hpp"
+#include "src/base/error.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/common.hpp"
 #include "src/cli/mode_output.hpp"
-#include "src/model/error.hpp"
 #include "src/parallel/session.hpp"
 
 namespace whirl::cli {

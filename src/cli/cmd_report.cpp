@@ -8,8 +8,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "src/base/error.hpp"
 #include "src/cli/commands.hpp"
-#include "src/model/error.hpp"
 #include "src/writers/campbell_html.hpp"
 #include "src/writers/output_set.hpp"
 

@@ -6,11 +6,11 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "src/base/error.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/common.hpp"
 #include "src/io/case/case_file.hpp"
 #include "src/io/text/csv.hpp"
-#include "src/model/error.hpp"
 #include "src/turbine/elastodyn_model.hpp"
 #include "src/writers/output_set.hpp"
 

@@ -16,11 +16,11 @@
 #include "linearize/simulate.hpp"
 #include "linearize/simulation_setup.hpp"
 #include "linearize/trim.hpp"
+#include "src/base/error.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/common.hpp"
 #include "src/io/openfast/servodyn/discon_input.hpp"
 #include "src/io/text/time_signal_reader.hpp"
-#include "src/model/error.hpp"
 #include "src/writers/output_set.hpp"
 #include "src/writers/timeseries_output.hpp"
 

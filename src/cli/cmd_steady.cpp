@@ -8,12 +8,12 @@
 
 #include "linearize/sweep.hpp"
 #include "linearize/trim.hpp"
+#include "src/base/error.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/common.hpp"
 #include "src/io/openfast/servodyn/discon_input.hpp"
 #include "src/io/text/csv.hpp"
 #include "src/io/text/schedule.hpp"
-#include "src/model/error.hpp"
 #include "src/writers/gnuplot.hpp"
 #include "src/writers/output_set.hpp"
 #include "src/writers/steady_table.hpp"

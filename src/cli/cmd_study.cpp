@@ -7,12 +7,12 @@
 
 #include "modal/campbell_sweep.hpp"
 #include "modal/tracking.hpp"
+#include "src/base/error.hpp"
+#include "src/base/limits.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/common.hpp"
 #include "src/io/text/csv.hpp"
 #include "src/io/text/schedule.hpp"
-#include "src/model/error.hpp"
-#include "src/model/limits.hpp"
 #include "src/parallel/session.hpp"
 #include "src/writers/output_set.hpp"
 #include "src/writers/study_table.hpp"
@@ -46,7 +46,7 @@ void run(const StudyOptions& opt) {
     throw InputError(
         where(opt.params, sets.lines[limits::kMaxStudySets], "",
               "more than " + std::to_string(limits::kMaxStudySets) +
-                  " parameter sets (src/model/limits.hpp, kMaxStudySets): split the study into several runs"));
+                  " parameter sets (src/base/limits.hpp, kMaxStudySets): split the study into several runs"));
   if (sets.names.empty() || sets.rows.empty())
     throw InputError(where(opt.params, 1, "", "needs a header of --set keys and at least one row of values"));
   for (const auto& n : sets.names)

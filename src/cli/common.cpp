@@ -14,9 +14,9 @@
 
 #include "linearize/load_jump.hpp"
 #include "linearize/point_validity.hpp"
+#include "src/base/error.hpp"
+#include "src/base/text.hpp"
 #include "src/io/openfast/servodyn/discon_input.hpp"
-#include "src/model/error.hpp"
-#include "src/model/text.hpp"
 #include "src/parallel/session.hpp"
 #include "src/turbine/load_model.hpp"
 

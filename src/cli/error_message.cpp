@@ -5,8 +5,8 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
-#include "src/model/error.hpp"
-#include "src/model/text.hpp"
+#include "src/base/error.hpp"
+#include "src/base/text.hpp"
 
 namespace whirl::cli {
 namespace {

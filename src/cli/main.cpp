@@ -4,9 +4,9 @@
 #include <cstdio>
 #include <exception>
 
+#include "src/base/text.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/error_message.hpp"
-#include "src/model/text.hpp"
 #include "src/parallel/session.hpp"
 
 int main(int argc, char** argv) {

@@ -13,9 +13,9 @@
 #include <cmath>
 #include <type_traits>
 
+#include "src/base/skew.hpp"
 #include "src/dynamics/aero_element.hxx"
 #include "src/dynamics/kinematics.hxx"
-#include "src/model/skew.hpp"
 
 namespace whirl::detail {
 

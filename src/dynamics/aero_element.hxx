@@ -7,12 +7,12 @@
 #include <string>
 #include <type_traits>
 
+#include "src/base/error.hpp"
+#include "src/base/scalar.hpp"
 #include "src/dynamics/aero_loads.hpp"
 #include "src/dynamics/aero_section.hxx"
 #include "src/dynamics/kinematics.hpp"
 #include "src/dynamics/point_force.hxx"
-#include "src/model/error.hpp"
-#include "src/model/scalar.hpp"
 
 namespace whirl::detail {
 

@@ -4,7 +4,7 @@
 /// linearization holds fixed, and per element what the BEM solution was (for tables and checks).
 #include <vector>
 
-#include "src/model/types.hpp"
+#include "src/base/types.hpp"
 
 namespace whirl {
 

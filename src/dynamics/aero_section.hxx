@@ -7,9 +7,9 @@
 #include <type_traits>
 
 #include "src/aero/bem.hpp"
+#include "src/base/scalar.hpp"
 #include "src/dynamics/workspace.hpp"
 #include "src/model/aero_model.hpp"
-#include "src/model/scalar.hpp"
 
 namespace whirl::detail {
 

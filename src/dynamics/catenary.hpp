@@ -9,8 +9,8 @@
 /// its own type from the converged point, which gives exactly the implicit-function derivative
 /// ∂(H, V)/∂(l, h) = J⁻¹ (no finite differences), so the mooring stiffness comes out of the
 /// Jacobians like any other term.
+#include "src/base/scalar.hpp"
 #include "src/model/mooring.hpp"
-#include "src/model/scalar.hpp"
 
 namespace whirl {
 

@@ -6,8 +6,8 @@
 #include <string>
 #include <type_traits>
 
+#include "src/base/error.hpp"
 #include "src/dynamics/catenary.hpp"
-#include "src/model/error.hpp"
 
 namespace whirl::detail {
 

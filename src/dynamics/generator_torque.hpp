@@ -5,8 +5,8 @@
 #include <cmath>
 #include <utility>
 
+#include "src/base/scalar.hpp"
 #include "src/model/aero_model.hpp"
-#include "src/model/scalar.hpp"
 
 namespace whirl {
 

@@ -1,6 +1,6 @@
 // Explicit instantiation of the kinematics (kinematics.hxx) for double and the AD chunk type.
 #include "src/dynamics/kinematics.hxx"
-#include "src/model/scalar.hpp"
+#include "src/base/scalar.hpp"
 
 namespace whirl {
 

@@ -2,8 +2,8 @@
 /// \file
 /// Root-to-leaf kinematics of the body tree [Branlard2019, §3.2–3.3; BranlardGeisler2022, eq. 1–3], written once
 /// for any scalar type T (double or ADChunk); body in kinematics.hxx, instantiated in kinematics.cpp.
+#include "src/base/skew.hpp"
 #include "src/dynamics/workspace.hpp"
-#include "src/model/skew.hpp"
 
 namespace whirl {
 

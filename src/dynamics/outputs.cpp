@@ -1,7 +1,7 @@
 // Explicit instantiation of the outputs for double and the AD chunk type.
 #include "src/dynamics/outputs.hxx"
+#include "src/base/scalar.hpp"
 #include "src/dynamics/aero_loads.hxx"
-#include "src/model/scalar.hpp"
 
 namespace whirl {
 

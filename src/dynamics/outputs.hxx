@@ -1,9 +1,9 @@
 #pragma once
+#include "src/base/error.hpp"
 #include "src/dynamics/aero_loads.hpp"
 #include "src/dynamics/generator_torque.hpp"
 #include "src/dynamics/kinematics.hpp"
 #include "src/dynamics/outputs.hpp"
-#include "src/model/error.hpp"
 
 namespace whirl {
 namespace detail {

@@ -1,7 +1,7 @@
 // Explicit instantiation of the residual and the input loads: the heavy templates compile once, for
 // double and the AD chunk type (the kinematics: kinematics.cpp; the workspace: workspace.cpp).
 #include "src/dynamics/residual.hxx"
-#include "src/model/scalar.hpp"
+#include "src/base/scalar.hpp"
 
 namespace whirl {
 

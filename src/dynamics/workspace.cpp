@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <type_traits>
 
+#include "src/base/scalar.hpp"
 #include "src/dynamics/kinematics.hxx"
 #include "src/dynamics/workspace.hpp"
-#include "src/model/scalar.hpp"
 
 namespace whirl {
 

@@ -5,8 +5,8 @@
 #include <array>
 #include <vector>
 
+#include "src/base/scalar.hpp"
 #include "src/model/model.hpp"
-#include "src/model/scalar.hpp"
 
 namespace whirl {
 

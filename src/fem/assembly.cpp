@@ -2,7 +2,7 @@
 
 #include <vector>
 
-#include "src/model/skew.hpp"
+#include "src/base/skew.hpp"
 
 namespace whirl::fem {
 namespace {

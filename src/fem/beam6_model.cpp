@@ -3,7 +3,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 
 namespace whirl::fem {
 namespace {

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <string>
 
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 
 namespace whirl::fem {
 

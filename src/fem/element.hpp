@@ -14,7 +14,7 @@
 /// along the element).
 #include <Eigen/Dense>
 
-#include "src/model/types.hpp"
+#include "src/base/types.hpp"
 
 namespace whirl::fem {
 

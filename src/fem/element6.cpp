@@ -1,6 +1,6 @@
 #include "src/fem/element6.hpp"
 
-#include "src/model/skew.hpp"
+#include "src/base/skew.hpp"
 
 namespace whirl::fem {
 

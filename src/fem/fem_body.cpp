@@ -5,9 +5,9 @@
 
 #include <Eigen/SparseCholesky>
 
+#include "src/base/error.hpp"
+#include "src/base/limits.hpp"
 #include "src/fem/rigid_interface.hpp"
-#include "src/model/error.hpp"
-#include "src/model/limits.hpp"
 
 namespace whirl::fem {
 
@@ -41,7 +41,7 @@ FemBody buildFemBody(const FemBodySpec& spec, const std::string& name, const Mod
         "FE body '" + name + "': " + std::to_string(coordinates) + " coordinates (" +
         (spec.reduction == ReductionKind::None ? "every free DOF of the unreduced model" : "interface DOFs and modes") +
         "), more than " + std::to_string(limits::kMaxFemBodyCoordinates) +
-        " (src/model/limits.hpp): reduce it (guyan or craig_bampton) or use fewer elements");
+        " (src/base/limits.hpp): reduce it (guyan or craig_bampton) or use fewer elements");
   if (spec.reduction == ReductionKind::None && !spec.rigid_interface) {
     fb.basis = MatX::Identity(n, n);
     for (int f : fb.map.free) fb.dof_names.push_back(dofName(f));

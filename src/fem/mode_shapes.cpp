@@ -4,11 +4,11 @@
 #include <cmath>
 #include <numbers>
 
+#include "src/base/error.hpp"
+#include "src/base/limits.hpp"
+#include "src/base/skew.hpp"
 #include "src/fem/boundary.hpp"
 #include "src/fem/reduction.hpp"
-#include "src/model/error.hpp"
-#include "src/model/limits.hpp"
-#include "src/model/skew.hpp"
 #include "src/shapes/interpolate.hpp"
 
 namespace whirl::fem {
@@ -191,7 +191,7 @@ std::vector<BeamMode> beamModes(const ModeShapeInput& in, int count_y, int count
     throw InputError("mode shapes: the FE mesh has " + std::to_string(model.elements.size()) +
                      " elements (every property station is a node), more than the " +
                      std::to_string(limits::kMaxFemShapeMesh) +
-                     " the dense eigensolver handles in seconds (src/model/limits.hpp)");
+                     " the dense eigensolver handles in seconds (src/base/limits.hpp)");
   validate(model, "mode shapes");
   const bool torsion = hasTorsion(in.props);
   const Assembly a = assemble(model, false);

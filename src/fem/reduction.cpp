@@ -8,7 +8,7 @@
 
 #include <Eigen/SparseCholesky>
 
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 
 namespace whirl::fem {
 namespace {

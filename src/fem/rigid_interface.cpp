@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 
 namespace whirl::fem {
 

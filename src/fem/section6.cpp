@@ -1,6 +1,6 @@
 #include "src/fem/section6.hpp"
 
-#include "src/model/skew.hpp"
+#include "src/base/skew.hpp"
 
 namespace whirl::fem {
 

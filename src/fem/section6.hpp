@@ -15,7 +15,7 @@
 /// the reference axis [kg m] (BeamDyn's i_Edge, i_Flap, i_plr and i_cp).
 #include <Eigen/Dense>
 
-#include "src/model/types.hpp"
+#include "src/base/types.hpp"
 
 namespace whirl::fem {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <string>
 
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 #include "src/model/model.hpp"
 
 namespace whirl {

@@ -17,7 +17,7 @@
 #include "src/aero/bem.hpp"
 #include "src/aero/polar.hpp"
 #include "src/aero/ua_coefficients.hpp"
-#include "src/model/types.hpp"
+#include "src/base/types.hpp"
 
 namespace whirl {
 

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "src/model/types.hpp"
+#include "src/base/types.hpp"
 
 namespace whirl {
 

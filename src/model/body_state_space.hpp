@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "src/model/types.hpp"
+#include "src/base/types.hpp"
 
 namespace whirl {
 

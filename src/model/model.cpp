@@ -6,8 +6,8 @@
 #include <numeric>
 #include <set>
 
-#include "src/model/error.hpp"
-#include "src/model/text.hpp"
+#include "src/base/error.hpp"
+#include "src/base/text.hpp"
 
 namespace whirl {
 namespace {

@@ -14,13 +14,13 @@
 #include <string>
 #include <vector>
 
+#include "src/base/types.hpp"
 #include "src/model/aero_model.hpp"
 #include "src/model/body.hpp"
 #include "src/model/body_state_space.hpp"
 #include "src/model/mooring.hpp"
 #include "src/model/output.hpp"
 #include "src/model/rosco_controller.hpp"
-#include "src/model/types.hpp"
 
 namespace whirl {
 
@@ -193,7 +193,7 @@ int jointDofCount(JointType t);
 /// checks the data: names unique, parents and points exist, masses ≥ 0, inertia positive
 /// semi-definite, everything finite. Bodies must carry their DOFs in `dofs` with `body`/`local`
 /// set; DOFs are renumbered (and with them the DOF indices of `roles`, whose `azimuth` becomes the
-/// rotating coordinates). Names and units must be printable text on one line (src/model/text.hpp).
+/// rotating coordinates). Names and units must be printable text on one line (src/base/text.hpp).
 /// Throws InputError naming the body/DOF and the reason.
 void finalize(Model& model);
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 #include "src/model/model.hpp"
 
 namespace whirl {

@@ -5,7 +5,7 @@
 /// mooring module describe it. Plain data; the tension comes from src/dynamics/catenary.hpp.
 #include <string>
 
-#include "src/model/types.hpp"
+#include "src/base/types.hpp"
 
 namespace whirl {
 

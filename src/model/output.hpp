@@ -21,7 +21,7 @@
 #include <utility>
 #include <vector>
 
-#include "src/model/types.hpp"
+#include "src/base/types.hpp"
 
 namespace whirl {
 

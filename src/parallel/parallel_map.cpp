@@ -5,7 +5,7 @@
 #include <exception>
 #include <stdexcept>
 
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 #include "src/parallel/session.hpp"
 
 #ifdef WHIRL_HAVE_PETSC

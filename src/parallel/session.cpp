@@ -3,7 +3,7 @@
 #include <cstdlib>
 #include <sstream>
 
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 
 #ifdef WHIRL_HAVE_PETSC
 #include <slepcsys.h>

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 
 namespace whirl {
 namespace {

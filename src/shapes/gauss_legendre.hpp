@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// Gauss–Legendre quadrature: ∫₋₁¹ f dx ≈ Σ w_i f(x_i), exact for polynomials of degree 2n − 1.
-#include "src/model/types.hpp"
+#include "src/base/types.hpp"
 
 namespace whirl {
 

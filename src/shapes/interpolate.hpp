@@ -4,7 +4,7 @@
 /// distributed properties.
 #include <algorithm>
 
-#include "src/model/types.hpp"
+#include "src/base/types.hpp"
 
 namespace whirl {
 

@@ -7,8 +7,8 @@
 #include <string>
 
 #include "src/aero/not_a_knot_spline.hpp"
-#include "src/model/error.hpp"
-#include "src/model/limits.hpp"
+#include "src/base/error.hpp"
+#include "src/base/limits.hpp"
 
 namespace whirl {
 namespace {

@@ -5,9 +5,9 @@
 #include <string>
 
 #include "src/aero/ua_span.hpp"
+#include "src/base/error.hpp"
 #include "src/dynamics/generator_torque.hpp"
 #include "src/io/openfast/aerodyn/airfoil_ua.hpp"
-#include "src/model/error.hpp"
 #include "src/shapes/beam.hpp"
 #include "src/turbine/elastodyn_parts.hpp"
 

@@ -6,12 +6,12 @@
 #include <filesystem>
 #include <numbers>
 
+#include "src/base/error.hpp"
+#include "src/base/text.hpp"
 #include "src/io/openfast/aerodyn/aero_support.hpp"
 #include "src/io/openfast/openfast_overrides.hpp"
 #include "src/io/openfast/openfast_support.hpp"
 #include "src/io/openfast/servodyn/discon_input.hpp"
-#include "src/model/error.hpp"
-#include "src/model/text.hpp"
 #include "src/turbine/elastodyn_fem_shapes.hpp"
 #include "src/turbine/elastodyn_parts.hpp"
 #include "src/turbine/elastodyn_tower_beam.hpp"

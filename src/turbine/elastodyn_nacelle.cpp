@@ -3,7 +3,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 #include "src/turbine/elastodyn_parts.hpp"
 
 namespace whirl::elastodyn {

@@ -4,12 +4,12 @@
 #include <cmath>
 #include <optional>
 
+#include "src/base/error.hpp"
 #include "src/dynamics/catenary.hpp"
 #include "src/io/openfast/elastodyn_common.hpp"
 #include "src/io/openfast/offshore/wamit_input.hpp"
 #include "src/io/openfast/offshore/wamit_state_space.hpp"
 #include "src/io/openfast/refusals.hpp"
-#include "src/model/error.hpp"
 #include "src/turbine/elastodyn_parts.hpp"
 #include "src/turbine/hydrodyn_ballast.hpp"
 

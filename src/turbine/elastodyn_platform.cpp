@@ -5,8 +5,8 @@
 #include <numbers>
 #include <string>
 
+#include "src/base/error.hpp"
 #include "src/io/openfast/openfast_support.hpp"
-#include "src/model/error.hpp"
 #include "src/turbine/elastodyn_parts.hpp"
 
 namespace whirl::elastodyn {

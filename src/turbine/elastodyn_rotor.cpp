@@ -2,7 +2,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 #include "src/shapes/beam_moment.hpp"
 #include "src/turbine/beamdyn_blade.hpp"
 #include "src/turbine/elastodyn_blade_shapes.hpp"

@@ -7,7 +7,7 @@
 // [Branlard2019, §3.4], the platform and everything above it ride on its TP point.
 #include <utility>
 
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 #include "src/turbine/elastodyn_parts.hpp"
 #include "src/turbine/hydrodyn_strip.hpp"
 #include "src/turbine/subdyn_fem.hpp"

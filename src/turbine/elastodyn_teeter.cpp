@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 #include "src/turbine/elastodyn_parts.hpp"
 
 namespace whirl::elastodyn {

@@ -1,7 +1,7 @@
 // The ElastoDyn tower as a whirl beam body (ElastoDyn `Coeff`, tower part).
 #include <cmath>
 
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 #include "src/shapes/beam.hpp"
 #include "src/shapes/beam_moment.hpp"
 #include "src/turbine/elastodyn_blade_shapes.hpp"

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "src/model/skew.hpp"
+#include "src/base/skew.hpp"
 
 namespace whirl::elastodyn {
 namespace {

@@ -10,8 +10,8 @@
 /// must not add it a second time.
 #include <Eigen/Core>
 
+#include "src/base/types.hpp"
 #include "src/io/openfast/offshore/hydrodyn_members.hpp"
-#include "src/model/types.hpp"
 
 namespace whirl::elastodyn {
 

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "src/base/error.hpp"
 #include "src/io/openfast/elastodyn_common.hpp"
-#include "src/model/error.hpp"
 
 namespace whirl::elastodyn {
 namespace {

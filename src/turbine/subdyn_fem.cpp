@@ -6,8 +6,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "src/base/error.hpp"
 #include "src/fem/boundary.hpp"
-#include "src/model/error.hpp"
 
 namespace whirl {
 namespace {

@@ -11,7 +11,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 
 namespace whirl {
 

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <optional>
 
+#include "src/base/text.hpp"
 #include "src/io/text/csv.hpp"
-#include "src/model/text.hpp"
 #include "src/writers/campbell_output.hpp"
 #include "src/writers/gnuplot.hpp"
 

@@ -10,7 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 
 namespace whirl {
 namespace {

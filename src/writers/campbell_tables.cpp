@@ -3,8 +3,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "src/base/error.hpp"
 #include "src/io/text/csv.hpp"
-#include "src/model/error.hpp"
 #include "src/writers/campbell_output.hpp"
 #include "src/writers/mode_shape_tables.hpp"
 
@@ -97,7 +97,7 @@ std::string campbellModesJson(const CampbellDiagram& d) {
     }
     j["points"].push_back(std::move(jp));
   }
-  // Names are checked as UTF-8 where they are read (src/model/text.hpp); a byte that still is not
+  // Names are checked as UTF-8 where they are read (src/base/text.hpp); a byte that still is not
   // becomes U+FFFD here rather than an exception without file or key (fuzz_writers).
   return j.dump(1, ' ', false, json::error_handler_t::replace) + "\n";
 }

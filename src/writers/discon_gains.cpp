@@ -6,7 +6,7 @@
 #include <sstream>
 #include <vector>
 
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 
 namespace whirl {
 namespace {

@@ -10,7 +10,7 @@
 #include <iostream>
 #include <sstream>
 
-#include "src/model/text.hpp"
+#include "src/base/text.hpp"
 
 namespace whirl {
 namespace {

@@ -16,7 +16,7 @@
 #include <iterator>
 #include <vector>
 
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 #include "src/writers/atomic_file.hpp"
 #include "src/writers/output_set.hpp"
 #include "src/writers/output_set_internal.hpp"

@@ -14,7 +14,7 @@
 #include <set>
 #include <stdexcept>
 
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 #include "src/writers/output_set_internal.hpp"
 
 namespace whirl {

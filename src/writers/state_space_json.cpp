@@ -69,7 +69,7 @@ std::string stateSpaceJson(const StateSpaceExport& e) {
     for (const auto& m : p.azimuths) o["azimuths"].push_back(model(m));
     j["operating_points"].push_back(o);
   }
-  // Names are checked as UTF-8 where they are read (src/model/text.hpp); a byte that still is not
+  // Names are checked as UTF-8 where they are read (src/base/text.hpp); a byte that still is not
   // becomes U+FFFD here rather than an exception without file or key (fuzz_writers).
   return j.dump(1, ' ', false, json::error_handler_t::replace) + "\n";
 }

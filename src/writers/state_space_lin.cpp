@@ -6,7 +6,7 @@
 #include <regex>
 #include <sstream>
 
-#include "src/model/text.hpp"
+#include "src/base/text.hpp"
 #include "src/writers/lin_channels.hpp"
 #include "src/writers/state_space_files.hpp"
 

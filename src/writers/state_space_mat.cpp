@@ -5,7 +5,7 @@
 #include <limits>
 #include <memory>
 
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 #include "src/writers/lin_channels.hpp"
 #include "src/writers/state_space_files.hpp"
 

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
+#include "src/base/error.hpp"
 #include "src/io/text/csv.hpp"
-#include "src/model/error.hpp"
 #include "src/writers/gnuplot.hpp"
 #include "src/writers/output_set.hpp"
 

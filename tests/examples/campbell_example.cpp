@@ -5,7 +5,7 @@
 #include <iostream>
 #include <string>
 
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 #include "src/writers/campbell_output.hpp"
 #include "tests/support/synthetic_campbell.hpp"
 

@@ -8,8 +8,8 @@
 #include <fstream>
 #include <string>
 
+#include "src/base/error.hpp"
 #include "src/io/case/case_file.hpp"
-#include "src/model/error.hpp"
 
 namespace whirl::testing {
 

@@ -9,7 +9,7 @@
 #include <iterator>
 #include <string>
 
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 
 namespace whirl::test {
 

@@ -8,8 +8,8 @@
 #include <numbers>
 #include <sstream>
 
+#include "src/base/error.hpp"
 #include "src/io/openfast/beamdyn/beamdyn_input.hpp"
-#include "src/model/error.hpp"
 #include "tests/unit/openfast_test_util.hpp"
 #include "tests/unit/test_util.hpp"
 

@@ -9,8 +9,8 @@
 
 #include "src/aero/bem.hpp"
 #include "src/aero/prandtl_expansion.hpp"
-#include "src/model/error.hpp"
-#include "src/model/scalar.hpp"
+#include "src/base/error.hpp"
+#include "src/base/scalar.hpp"
 #include "tests/unit/aero_data_util.hpp"
 
 using namespace whirl;

@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 #include "src/writers/campbell_output.hpp"
 #include "test_util.hpp"
 #include "tests/support/synthetic_campbell.hpp"

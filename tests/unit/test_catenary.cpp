@@ -5,8 +5,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "src/base/error.hpp"
 #include "src/dynamics/catenary.hpp"
-#include "src/model/error.hpp"
 
 namespace whirl {
 namespace {

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "linearize/closed_loop.hpp"
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 
 namespace whirl {
 namespace {

@@ -14,8 +14,8 @@
 
 #include "linearize/controller_tuning.hpp"
 #include "src/aero/not_a_knot_spline.hpp"
+#include "src/base/error.hpp"
 #include "src/io/openfast/servodyn/rotor_performance_input.hpp"
-#include "src/model/error.hpp"
 
 namespace whirl {
 namespace {

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "modal/eigen.hpp"
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 
 namespace {
 

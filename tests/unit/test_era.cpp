@@ -5,7 +5,7 @@
 #include <numbers>
 
 #include "modal/era.hpp"
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 
 namespace whirl {
 namespace {

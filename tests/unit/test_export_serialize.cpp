@@ -8,7 +8,7 @@
 #include <limits>
 
 #include "linearize/export_serialize.hpp"
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 
 namespace whirl {
 namespace {

@@ -6,9 +6,9 @@
 #include <cmath>
 #include <numbers>
 
+#include "src/base/error.hpp"
+#include "src/base/limits.hpp"
 #include "src/fem/mode_shapes.hpp"
-#include "src/model/error.hpp"
-#include "src/model/limits.hpp"
 #include "src/shapes/shape.hpp"
 
 namespace whirl::fem {

@@ -7,7 +7,7 @@
 #include "modal/eigen.hpp"
 #include "modal/floquet.hpp"
 #include "modal/modes.hpp"
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 #include "tests/support/rotor_model.hpp"
 
 namespace {

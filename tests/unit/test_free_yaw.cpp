@@ -12,7 +12,7 @@
 #include "linearize/periodic.hpp"
 #include "linearize/unrestrained.hpp"
 #include "modal/rotor_modes.hpp"
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 #include "src/turbine/elastodyn_model.hpp"
 
 namespace whirl {

@@ -1,4 +1,4 @@
-// Counts read from input files are bounded (src/model/limits.hpp) with an error naming file, line and
+// Counts read from input files are bounded (src/base/limits.hpp) with an error naming file, line and
 // key, and allocation follows the data actually read (issue 14, item 4).
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -73,7 +73,7 @@ bodies:
   const std::string msg = inputErrorMessage([&] { whirl::readCase(path.string()); });
   EXPECT_THAT(msg, HasSubstr("fe.yaml:4: "));
   EXPECT_THAT(msg, HasSubstr("FE body 'pile': 1800 coordinates (every free DOF of the unreduced model), more than "
-                             "1200 (src/model/limits.hpp): reduce it"));
+                             "1200 (src/base/limits.hpp): reduce it"));
   const auto reduced = dir.write("cb.yaml",
                                  text + "    reduction: {type: craig_bampton, interface: [top], modes: 4}\n");
   EXPECT_EQ(whirl::readCase(reduced.string()).ndof(), 10);

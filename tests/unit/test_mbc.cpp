@@ -12,7 +12,7 @@
 
 #include "linearize/mbc.hpp"
 #include "modal/eigen.hpp"
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 
 namespace {
 

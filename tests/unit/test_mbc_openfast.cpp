@@ -9,8 +9,8 @@
 
 #include "modal/eigen.hpp"
 #include "modal/mbc_lin.hpp"
+#include "src/base/error.hpp"
 #include "src/io/lin/openfast_lin.hpp"
-#include "src/model/error.hpp"
 #include "tests/support/openfast_9rpm_mbc3.hpp"
 #include "tests/unit/test_util.hpp"
 

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 #include "src/model/model_builder.hpp"
 
 namespace whirl {

@@ -8,9 +8,9 @@
 #include <functional>
 #include <regex>
 
+#include "src/base/error.hpp"
 #include "src/io/openfast/offshore/map_input.hpp"
 #include "src/io/openfast/offshore/moordyn_input.hpp"
-#include "src/model/error.hpp"
 #include "tests/unit/test_util.hpp"
 
 namespace whirl {

@@ -10,12 +10,12 @@
 #include <functional>
 #include <numbers>
 
+#include "src/base/error.hpp"
 #include "src/dynamics/catenary.hpp"
 #include "src/io/openfast/offshore/hydrodyn_input.hpp"
 #include "src/io/openfast/offshore/map_input.hpp"
 #include "src/io/openfast/offshore/wamit_input.hpp"
 #include "src/io/openfast/openfast_overrides.hpp"
-#include "src/model/error.hpp"
 #include "tests/unit/test_util.hpp"
 
 namespace whirl {

@@ -7,9 +7,9 @@
 #include <filesystem>
 #include <numbers>
 
+#include "src/base/error.hpp"
 #include "src/dynamics/outputs.hpp"
 #include "src/dynamics/workspace.hpp"
-#include "src/model/error.hpp"
 #include "src/turbine/elastodyn_model.hpp"
 #include "tests/unit/test_util.hpp"
 

@@ -7,8 +7,8 @@
 #include <sstream>
 #include <string>
 
+#include "src/base/error.hpp"
 #include "src/io/lin/openfast_lin.hpp"
-#include "src/model/error.hpp"
 #include "tests/unit/test_util.hpp"
 
 namespace {

@@ -7,7 +7,7 @@
 #include <limits>
 
 #include "modal/campbell_serialize.hpp"
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 #include "src/parallel/parallel_map.hpp"
 #include "src/parallel/session.hpp"
 

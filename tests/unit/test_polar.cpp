@@ -5,8 +5,8 @@
 #include <numbers>
 
 #include "src/aero/polar.hpp"
-#include "src/model/error.hpp"
-#include "src/model/scalar.hpp"
+#include "src/base/error.hpp"
+#include "src/base/scalar.hpp"
 #include "tests/unit/aero_data_util.hpp"
 
 using namespace whirl;

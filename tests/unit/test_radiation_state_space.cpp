@@ -8,8 +8,8 @@
 #include <functional>
 #include <sstream>
 
+#include "src/base/error.hpp"
 #include "src/io/openfast/offshore/wamit_state_space.hpp"
-#include "src/model/error.hpp"
 #include "tests/unit/test_util.hpp"
 
 namespace whirl {

@@ -12,9 +12,9 @@
 #include "linearize/simulate.hpp"
 #include "linearize/state_space.hpp"
 #include "modal/mbc_lin.hpp"
+#include "src/base/error.hpp"
 #include "src/io/case/case_file.hpp"
 #include "src/io/lin/openfast_lin.hpp"
-#include "src/model/error.hpp"
 #include "src/turbine/elastodyn_model.hpp"
 #include "src/writers/campbell_output.hpp"
 #include "src/writers/state_space_files.hpp"
@@ -132,7 +132,7 @@ TEST(SanitizerFindings, LinHugeStateCountIsATruncatedTable) {
   test::TempDir tmp;
   const std::string f = linWith(tmp, "Number of continuous states: +20",
                                 "Number of continuous states:        2000000000");
-  // (The bounds of src/model/limits.hpp, added alongside, now refuse the count at its header line.)
+  // (The bounds of src/base/limits.hpp, added alongside, now refuse the count at its header line.)
   expectInputError([&] { readOpenFastLin(f); },
                    f + ":12: Number of continuous states: 2000000000 is above the limit of 100000");
 }
@@ -142,7 +142,7 @@ TEST(SanitizerFindings, LinHugeStateCountIsATruncatedTable) {
 TEST(SanitizerFindings, LinMatrixDimensionsOutOfRange) {
   test::TempDir tmp;
   const std::string big = linWith(tmp, "\nA: 20 x 20", "\nA: 99999999999 x 20");
-  // (The bounds of src/model/limits.hpp, added alongside, now refuse both at the title line.)
+  // (The bounds of src/base/limits.hpp, added alongside, now refuse both at the title line.)
   expectInputError([&] { readOpenFastLin(big); }, big + ":70: A rows: '99999999999' is out of the integer range");
   const std::string wide = linWith(tmp, "\nA: 20 x 20", "\nA: 20 x 2000000000");
   expectInputError([&] { readOpenFastLin(wide); }, wide + ":70: A columns: 2000000000 is above the limit of");

@@ -10,7 +10,7 @@
 #include "modal/modes.hpp"
 #include "modal/sparse_eigen.hpp"
 #include "modal/sparse_modes.hpp"
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 #include "src/parallel/session.hpp"
 #include "tests/support/sparse_models.hpp"
 

@@ -11,9 +11,9 @@
 
 #include <unistd.h>
 
+#include "src/base/error.hpp"
 #include "src/io/openfast/offshore/subdyn_input.hpp"
 #include "src/io/openfast/openfast_overrides.hpp"
-#include "src/model/error.hpp"
 #include "tests/unit/test_util.hpp"
 
 namespace whirl {
@@ -154,13 +154,13 @@ TEST(SubDynInput, TableErrorsNameFileLineAndKey) {
 
 TEST(SubDynInput, CountsAreBoundedBeforeRowsAreRead) {
   EXPECT_THAT(errorOfEdit(kMonopile, 15, "       2000000   NJoints     - Number of joints (-)"),
-              HasSubstr("_SubDyn.dat:15: NJoints: must be between 2 and 2000 (src/model/limits.hpp)"));
+              HasSubstr("_SubDyn.dat:15: NJoints: must be between 2 and 2000 (src/base/limits.hpp)"));
   EXPECT_THAT(errorOfEdit(kMonopile, 10, "           1000   NDiv        - Number of sub-elements per member"),
-              HasSubstr("_SubDyn.dat:10: NDiv: must be between 1 and 100 (src/model/limits.hpp)"));
+              HasSubstr("_SubDyn.dat:10: NDiv: must be between 1 and 100 (src/base/limits.hpp)"));
   EXPECT_THAT(errorOfEdit(kMonopile, 12, "           5000   Nmodes      - Number of internal modes"),
-              HasSubstr("_SubDyn.dat:12: Nmodes: must be at most 1000 (src/model/limits.hpp)"));
+              HasSubstr("_SubDyn.dat:12: Nmodes: must be at most 1000 (src/base/limits.hpp)"));
   EXPECT_THAT(errorOfEdit(kMonopile, 33, "       3000   NMembers    - Number of frame members"),
-              HasSubstr("_SubDyn.dat:33: NMembers: must be between 1 and 2000 (src/model/limits.hpp)"));
+              HasSubstr("_SubDyn.dat:33: NMembers: must be between 1 and 2000 (src/base/limits.hpp)"));
 }
 
 TEST(SubDynInput, RefusalsAreExplicit) {

@@ -8,8 +8,8 @@
 #include <fstream>
 #include <numbers>
 
+#include "src/base/error.hpp"
 #include "src/io/text/time_signal_reader.hpp"
-#include "src/model/error.hpp"
 
 namespace whirl {
 namespace {

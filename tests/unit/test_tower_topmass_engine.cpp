@@ -5,7 +5,7 @@
 #include <numbers>
 
 #include "linearize/linearize.hpp"
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 #include "src/shapes/beam.hpp"
 
 namespace whirl {

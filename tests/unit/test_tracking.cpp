@@ -8,7 +8,7 @@
 
 #include "modal/tracking.hpp"
 #include "modal/tracking_overrides.hpp"
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 #include "test_util.hpp"
 
 namespace whirl {

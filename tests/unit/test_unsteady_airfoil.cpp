@@ -17,9 +17,9 @@
 #include "src/aero/dynamic_inflow.hpp"
 #include "src/aero/unsteady_airfoil.hpp"
 #include "src/aero/unsteady_airfoil_linear.hpp"
+#include "src/base/scalar.hpp"
 #include "src/io/openfast/aerodyn/airfoil_input.hpp"
 #include "src/io/openfast/aerodyn/airfoil_ua.hpp"
-#include "src/model/scalar.hpp"
 
 namespace {
 

@@ -1,11 +1,11 @@
-// Names must be UTF-8 text (src/model/text.hpp, invalidUtf8Reason): the JSON writer stops at a byte
+// Names must be UTF-8 text (src/base/text.hpp, invalidUtf8Reason): the JSON writer stops at a byte
 // that is not (issue 48, item 5). The cases follow RFC 3629, section 4 (the syntax of UTF-8).
 #include <gtest/gtest.h>
 
 #include <string>
 
-#include "src/model/error.hpp"
-#include "src/model/text.hpp"
+#include "src/base/error.hpp"
+#include "src/base/text.hpp"
 
 namespace whirl {
 namespace {

@@ -10,8 +10,8 @@
 #include "linearize/linearize.hpp"
 #include "linearize/operating_point.hpp"
 #include "linearize/trim.hpp"
+#include "src/base/error.hpp"
 #include "src/io/text/schedule.hpp"
-#include "src/model/error.hpp"
 #include "src/turbine/elastodyn_model.hpp"
 
 namespace whirl {

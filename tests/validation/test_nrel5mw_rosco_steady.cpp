@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "linearize/trim.hpp"
+#include "src/base/error.hpp"
 #include "src/io/openfast/servodyn/discon_input.hpp"
-#include "src/model/error.hpp"
 #include "src/turbine/elastodyn_model.hpp"
 
 namespace whirl {

@@ -11,7 +11,7 @@
 #include "modal/decay_identification.hpp"
 #include "modal/modes.hpp"
 #include "modal/nonlinear_check.hpp"
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 #include "tests/support/decay_support.hpp"
 #include "tests/support/reference.hpp"
 

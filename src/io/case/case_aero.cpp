@@ -7,10 +7,10 @@
 #include <filesystem>
 #include <numbers>
 
+#include "src/base/error.hpp"
 #include "src/io/case/case_columns.hpp"
 #include "src/io/case/case_reader.hpp"
 #include "src/io/openfast/aerodyn/airfoil_input.hpp"
-#include "src/model/error.hpp"
 #include "src/shapes/beam.hpp"
 
 namespace whirl {

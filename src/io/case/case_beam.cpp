@@ -4,10 +4,10 @@
 #include <cmath>
 #include <numbers>
 
+#include "src/base/error.hpp"
+#include "src/base/limits.hpp"
 #include "src/io/case/case_columns.hpp"
 #include "src/io/case/case_reader.hpp"
-#include "src/model/error.hpp"
-#include "src/model/limits.hpp"
 #include "src/shapes/beam.hpp"
 
 namespace whirl {
@@ -82,7 +82,7 @@ BeamIntegration readIntegration(const CaseNode& n) {
     q.n = k->integer();
     const int most = q.method == BeamIntegration::Gauss ? limits::kMaxGaussPoints : limits::kMaxIntegrationPoints;
     if (q.n < 1 || q.n > most)
-      k->fail("must be between 1 and " + std::to_string(most) + " with method " + s + " (src/model/limits.hpp)");
+      k->fail("must be between 1 and " + std::to_string(most) + " with method " + s + " (src/base/limits.hpp)");
   }
   return q;
 }

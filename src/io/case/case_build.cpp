@@ -1,6 +1,6 @@
 #include "src/io/case/case_reader.hpp"
 
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 
 namespace whirl {
 

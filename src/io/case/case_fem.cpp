@@ -7,12 +7,12 @@
 #include <map>
 #include <optional>
 
+#include "src/base/error.hpp"
+#include "src/base/limits.hpp"
 #include "src/dynamics/kinematics.hpp"
 #include "src/fem/fem_body.hpp"
 #include "src/io/case/case_columns.hpp"
 #include "src/io/case/case_reader.hpp"
-#include "src/model/error.hpp"
-#include "src/model/limits.hpp"
 
 namespace whirl {
 
@@ -218,7 +218,7 @@ void readFemReduction(const CaseNode& n, const PointNode& pointNode, fem::FemBod
     spec.modes = r->at("modes").integer();
     if (spec.modes < 0 || spec.modes > limits::kMaxReducedModes)
       r->at("modes").fail("must be between 0 and " + std::to_string(limits::kMaxReducedModes) +
-                          " (src/model/limits.hpp)");
+                          " (src/base/limits.hpp)");
   } else if (r->has("modes")) {
     r->at("modes").fail("modes only with craig_bampton");
   }
@@ -265,7 +265,7 @@ void readFemBody(const CaseNode& n, int index, CaseBuild& build) {
   if (const auto e = n.find("elements")) {
     elements = e->integer();
     if (elements < 1 || elements > limits::kMaxFemElements)
-      e->fail("must be between 1 and " + std::to_string(limits::kMaxFemElements) + " (src/model/limits.hpp)");
+      e->fail("must be between 1 and " + std::to_string(limits::kMaxFemElements) + " (src/base/limits.hpp)");
   }
   const auto uni = n.find("uniform"), tab = n.find("properties");
   if (uni && tab) tab->fail("give uniform or properties, not both");

@@ -3,9 +3,9 @@
 #include <cmath>
 #include <numbers>
 
+#include "src/base/error.hpp"
+#include "src/base/limits.hpp"
 #include "src/io/case/case_reader.hpp"
-#include "src/model/error.hpp"
-#include "src/model/limits.hpp"
 
 namespace whirl {
 
@@ -18,7 +18,7 @@ fem::ModeShapeInput readFemShapeSettings(const CaseNode& s, const BeamProperties
     in.elements = e->integer();
     if (in.elements < 1 || in.elements > limits::kMaxFemShapeElements)
       e->fail("the number of elements must be from 1 to " + std::to_string(limits::kMaxFemShapeElements) +
-              " (src/model/limits.hpp)");
+              " (src/base/limits.hpp)");
   }
   if (const auto t = s.find("tip_mass")) {
     t->allowKeys({"mass", "cog", "inertia"});
@@ -62,7 +62,7 @@ std::vector<ShapePtr> readFemShapes(const CaseNode& s, const BeamProperties& pro
     const int j = m.at("mode").integer();
     if (j < 1 || j > limits::kMaxFemShapeMode)
       m.at("mode").fail("the mode number must be from 1 to " + std::to_string(limits::kMaxFemShapeMode) +
-                        " (src/model/limits.hpp)");
+                        " (src/base/limits.hpp)");
     (d == "y" ? ny : nz) = std::max(d == "y" ? ny : nz, j);
     req.push_back({m.at("name").text(), d[0], j, m});
   }

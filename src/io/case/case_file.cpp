@@ -8,10 +8,10 @@
 #include <sstream>
 #include <utility>
 
+#include "src/base/error.hpp"
+#include "src/base/text.hpp"
 #include "src/io/case/case_reader.hpp"
 #include "src/io/text/input_file.hpp"
-#include "src/model/error.hpp"
-#include "src/model/text.hpp"
 
 namespace whirl {
 namespace {

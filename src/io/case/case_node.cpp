@@ -7,8 +7,8 @@
 
 #include <fmt/format.h>
 
-#include "src/model/error.hpp"
-#include "src/model/text.hpp"
+#include "src/base/error.hpp"
+#include "src/base/text.hpp"
 
 namespace whirl {
 namespace {

@@ -12,8 +12,8 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include "src/model/error.hpp"
-#include "src/model/types.hpp"
+#include "src/base/error.hpp"
+#include "src/base/types.hpp"
 
 namespace whirl {
 

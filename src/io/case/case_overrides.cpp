@@ -3,9 +3,9 @@
 // then checked by the reader like any key in the file, so a typo is still reported.
 #include <charconv>
 
+#include "src/base/error.hpp"
+#include "src/base/text.hpp"
 #include "src/io/case/case_reader.hpp"
-#include "src/model/error.hpp"
-#include "src/model/text.hpp"
 
 namespace whirl {
 namespace {

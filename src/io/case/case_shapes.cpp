@@ -4,10 +4,10 @@
 #include <charconv>
 #include <cmath>
 
+#include "src/base/error.hpp"
+#include "src/base/limits.hpp"
 #include "src/io/case/case_columns.hpp"
 #include "src/io/case/case_reader.hpp"
-#include "src/model/error.hpp"
-#include "src/model/limits.hpp"
 
 namespace whirl {
 namespace {
@@ -122,7 +122,7 @@ std::vector<ShapePtr> readShapes(const CaseNode& beam, const BeamProperties& pro
       const double ratio = s.at("tip_mass_ratio").number();
       if (mode < 1 || mode > limits::kMaxAnalyticShapeMode)
         s.at("mode").fail("the mode number must be from 1 to " + std::to_string(limits::kMaxAnalyticShapeMode) +
-                          " (src/model/limits.hpp)");
+                          " (src/base/limits.hpp)");
       if (ratio < 0) s.at("tip_mass_ratio").fail("must not be negative");
       shapes.push_back(located(s, [&, dy = dy, dz = dz] { return clampedTopMassShape(name, L, mode, ratio, dy, dz); }));
     } else if (type == "torsion_sine") {
@@ -130,7 +130,7 @@ std::vector<ShapePtr> readShapes(const CaseNode& beam, const BeamProperties& pro
       const int mode = s.at("mode").integer();
       if (mode < 1 || mode > limits::kMaxAnalyticShapeMode)
         s.at("mode").fail("the mode number must be from 1 to " + std::to_string(limits::kMaxAnalyticShapeMode) +
-                          " (src/model/limits.hpp)");
+                          " (src/base/limits.hpp)");
       shapes.push_back(located(s, [&] { return torsionSineShape(name, L, mode); }));
       angular = true;
     } else if (type == "table") {

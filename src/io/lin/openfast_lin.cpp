@@ -11,10 +11,10 @@
 #include <regex>
 #include <string_view>
 
+#include "src/base/error.hpp"
+#include "src/base/limits.hpp"
+#include "src/base/text.hpp"
 #include "src/io/text/input_file.hpp"
-#include "src/model/error.hpp"
-#include "src/model/limits.hpp"
-#include "src/model/text.hpp"
 
 namespace whirl {
 namespace {
@@ -102,7 +102,7 @@ class LinParser {
     if (v > limits::kMaxLinDimension)
       fail(i, key,
            std::to_string(v) + " is above the limit of " + std::to_string(limits::kMaxLinDimension) +
-               " (src/model/limits.hpp)");
+               " (src/base/limits.hpp)");
     return v;
   }
 

@@ -2,8 +2,8 @@
 
 #include <cmath>
 
+#include "src/base/error.hpp"
 #include "src/io/openfast/elastodyn_common.hpp"
-#include "src/model/error.hpp"
 
 namespace whirl::io {
 namespace {

@@ -4,7 +4,7 @@
 #include <charconv>
 #include <cmath>
 
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 
 namespace whirl::io {
 

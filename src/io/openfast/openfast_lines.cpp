@@ -3,9 +3,9 @@
 #include <fstream>
 #include <sstream>
 
+#include "src/base/error.hpp"
 #include "src/io/openfast/openfast_input.hpp"
 #include "src/io/text/input_file.hpp"
-#include "src/model/error.hpp"
 
 namespace whirl::io {
 namespace {

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cctype>
 
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 
 namespace whirl::io {
 

@@ -3,8 +3,8 @@
 #include <string>
 #include <utility>
 
+#include "src/base/error.hpp"
 #include "src/io/openfast/refusals.hpp"
-#include "src/model/error.hpp"
 
 namespace whirl::io {
 

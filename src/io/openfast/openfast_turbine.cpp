@@ -1,8 +1,8 @@
 #include "src/io/openfast/openfast_turbine.hpp"
 
+#include "src/base/error.hpp"
 #include "src/io/openfast/offshore/moordyn_input.hpp"
 #include "src/io/openfast/openfast_support.hpp"
-#include "src/model/error.hpp"
 
 namespace whirl::io {
 

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "src/base/error.hpp"
 #include "src/io/openfast/openfast_input.hpp"
-#include "src/model/error.hpp"
 
 namespace whirl::io {
 

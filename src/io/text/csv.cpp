@@ -4,10 +4,10 @@
 #include <cmath>
 #include <fstream>
 
+#include "src/base/error.hpp"
+#include "src/base/limits.hpp"
+#include "src/base/text.hpp"
 #include "src/io/text/input_file.hpp"
-#include "src/model/error.hpp"
-#include "src/model/limits.hpp"
-#include "src/model/text.hpp"
 
 namespace whirl {
 

@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-#include "src/model/types.hpp"
+#include "src/base/types.hpp"
 
 namespace whirl {
 

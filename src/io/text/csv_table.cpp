@@ -6,11 +6,11 @@
 #include <fstream>
 #include <set>
 
+#include "src/base/error.hpp"
+#include "src/base/limits.hpp"
+#include "src/base/text.hpp"
 #include "src/io/text/csv.hpp"
 #include "src/io/text/input_file.hpp"
-#include "src/model/error.hpp"
-#include "src/model/limits.hpp"
-#include "src/model/text.hpp"
 
 namespace whirl {
 namespace {

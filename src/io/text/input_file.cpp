@@ -10,8 +10,8 @@
 #include <cstdio>
 #include <cstring>
 
-#include "src/model/error.hpp"
-#include "src/model/limits.hpp"
+#include "src/base/error.hpp"
+#include "src/base/limits.hpp"
 
 namespace whirl::io {
 namespace {
@@ -35,7 +35,7 @@ std::string megabytes(double bytes) {
   throw InputError(where(path, 0, "",
                          "is " + (bytes > limits::kMaxInputFileBytes ? megabytes(bytes) : std::string("growing")) +
                              ", more than the " + megabytes(limits::kMaxInputFileBytes) +
-                             " an input file may have (src/model/limits.hpp, kMaxInputFileBytes): not an input "
+                             " an input file may have (src/base/limits.hpp, kMaxInputFileBytes): not an input "
                              "whirl reads (data appended to it?)"));
 }
 
@@ -87,7 +87,7 @@ bool readInputFile(const std::string& path, std::string& text) {
 std::string tooManyRows(const std::string& file, int line) {
   return where(file, line, "",
                "more than " + std::to_string(limits::kMaxTableRows) +
-                   " rows, the bound of a table (src/model/limits.hpp, kMaxTableRows): not a table whirl reads");
+                   " rows, the bound of a table (src/base/limits.hpp, kMaxTableRows): not a table whirl reads");
 }
 
 bool openInputFile(const std::string& path, std::istringstream& in) {

@@ -4,9 +4,9 @@
 #include <cctype>
 #include <optional>
 
+#include "src/base/error.hpp"
+#include "src/base/limits.hpp"
 #include "src/io/text/csv_table.hpp"
-#include "src/model/error.hpp"
-#include "src/model/limits.hpp"
 
 namespace whirl {
 namespace {
@@ -46,7 +46,7 @@ std::vector<SweepPoint> readSchedule(const std::string& path) {
   if (pts.empty()) throw InputError(where(path, 0, "", "the schedule has no rows"));
   if (pts.size() > static_cast<size_t>(limits::kMaxSweepPoints))
     throw InputError(where(path, t.row_lines[limits::kMaxSweepPoints], "",
-                           "more than " + std::to_string(limits::kMaxSweepPoints) + " rows (src/model/limits.hpp)"));
+                           "more than " + std::to_string(limits::kMaxSweepPoints) + " rows (src/base/limits.hpp)"));
   return pts;
 }
 

@@ -6,9 +6,9 @@
 #include <stdexcept>
 #include <vector>
 
+#include "src/base/error.hpp"
+#include "src/base/text.hpp"
 #include "src/io/text/csv_table.hpp"
-#include "src/model/error.hpp"
-#include "src/model/text.hpp"
 
 namespace whirl {
 namespace {

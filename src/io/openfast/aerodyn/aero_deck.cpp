@@ -2,12 +2,12 @@
 
 #include <algorithm>
 
+#include "src/base/error.hpp"
 #include "src/io/openfast/aerodyn/aero_deck14.hpp"
 #include "src/io/openfast/aerodyn/aero_support.hpp"
 #include "src/io/openfast/aerodyn/airfoil14_input.hpp"
 #include "src/io/openfast/elastodyn_common.hpp"
 #include "src/io/openfast/refusals.hpp"
-#include "src/model/error.hpp"
 
 namespace whirl::io {
 namespace {

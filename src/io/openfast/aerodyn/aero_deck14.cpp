@@ -1,8 +1,8 @@
 #include "src/io/openfast/aerodyn/aero_deck14.hpp"
 
+#include "src/base/error.hpp"
 #include "src/io/openfast/aerodyn/aero_support.hpp"
 #include "src/io/openfast/refusals.hpp"
-#include "src/model/error.hpp"
 
 namespace whirl::io {
 

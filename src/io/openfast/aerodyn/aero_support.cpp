@@ -2,8 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "src/base/error.hpp"
 #include "src/io/openfast/refusals.hpp"
-#include "src/model/error.hpp"
 
 namespace whirl::io {
 namespace {

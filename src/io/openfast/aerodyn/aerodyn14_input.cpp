@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "src/base/error.hpp"
 #include "src/io/openfast/elastodyn_common.hpp"
 #include "src/io/openfast/openfast_lines.hpp"
 #include "src/io/openfast/openfast_overrides.hpp"
-#include "src/model/error.hpp"
 
 namespace whirl::io {
 namespace {

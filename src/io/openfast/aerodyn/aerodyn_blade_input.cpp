@@ -2,11 +2,11 @@
 
 #include <cmath>
 
+#include "src/base/error.hpp"
 #include "src/io/openfast/distributed_table.hpp"
 #include "src/io/openfast/elastodyn_common.hpp"
 #include "src/io/openfast/openfast_layouts.hpp"
 #include "src/io/openfast/openfast_overrides.hpp"
-#include "src/model/error.hpp"
 
 namespace whirl::io {
 

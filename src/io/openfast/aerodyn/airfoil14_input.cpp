@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
+#include "src/base/error.hpp"
 #include "src/io/openfast/elastodyn_common.hpp"
 #include "src/io/openfast/openfast_lines.hpp"
-#include "src/model/error.hpp"
 
 namespace whirl::io {
 namespace {

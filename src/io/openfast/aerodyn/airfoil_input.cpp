@@ -5,11 +5,11 @@
 #include <numbers>
 #include <utility>
 
+#include "src/base/error.hpp"
 #include "src/io/openfast/elastodyn_common.hpp"
 #include "src/io/openfast/openfast_input.hpp"
 #include "src/io/openfast/openfast_layouts.hpp"
 #include "src/io/openfast/openfast_lines.hpp"
-#include "src/model/error.hpp"
 
 namespace whirl::io {
 namespace {

@@ -8,12 +8,12 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 
+#include "src/base/error.hpp"
+#include "src/base/limits.hpp"
 #include "src/io/openfast/openfast_lines.hpp"
 #include "src/io/openfast/openfast_overrides.hpp"
 #include "src/io/openfast/refusals.hpp"
 #include "src/io/text/input_file.hpp"
-#include "src/model/error.hpp"
-#include "src/model/limits.hpp"
 
 namespace whirl::io {
 namespace {
@@ -39,7 +39,7 @@ class Rows {
     const int n = f_.getInt(key);
     if (n < lo || n > hi)
       throw InputError(f_.where(key, "must be between " + std::to_string(lo) + " and " + std::to_string(hi) +
-                                         " (src/model/limits.hpp)"));
+                                         " (src/base/limits.hpp)"));
     return n;
   }
 

@@ -26,8 +26,8 @@
 #include <string>
 #include <vector>
 
+#include "src/base/types.hpp"
 #include "src/io/openfast/openfast_input.hpp"
-#include "src/model/types.hpp"
 
 namespace whirl::io {
 

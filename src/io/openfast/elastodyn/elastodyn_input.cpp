@@ -5,10 +5,10 @@
 #include <cmath>
 #include <utility>
 
+#include "src/base/error.hpp"
+#include "src/base/limits.hpp"
 #include "src/io/openfast/elastodyn_common.hpp"
 #include "src/io/openfast/openfast_overrides.hpp"
-#include "src/model/error.hpp"
-#include "src/model/limits.hpp"
 
 namespace whirl::io {
 namespace {
@@ -250,7 +250,7 @@ ElastoDynInput readElastoDyn(const std::filesystem::path& file, OverrideSet* ove
   for (const char* key : {"TwrNodes", "BldNodes"})
     if (const std::optional<int> n = f.findInt(key); n && *n > limits::kMaxElastoDynNodes)
       throw InputError(f.where(key, "at most " + std::to_string(limits::kMaxElastoDynNodes) + " nodes (is " +
-                                        std::to_string(*n) + "; src/model/limits.hpp)"));
+                                        std::to_string(*n) + "; src/base/limits.hpp)"));
 
   ed.TwrFile = f.getExistingPath("TwrFile");
   ed.tower = readElastoDynTower(ed.TwrFile, overrides);

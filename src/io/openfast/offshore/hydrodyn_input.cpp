@@ -3,12 +3,12 @@
 #include <cmath>
 #include <sstream>
 
+#include "src/base/error.hpp"
 #include "src/io/openfast/elastodyn_common.hpp"
 #include "src/io/openfast/openfast_layouts.hpp"
 #include "src/io/openfast/openfast_lines.hpp"
 #include "src/io/openfast/openfast_overrides.hpp"
 #include "src/io/openfast/refusals.hpp"
-#include "src/model/error.hpp"
 
 namespace whirl::io {
 namespace {

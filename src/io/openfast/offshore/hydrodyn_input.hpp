@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
+#include "src/base/types.hpp"
 #include "src/io/openfast/offshore/hydrodyn_members.hpp"
 #include "src/io/openfast/openfast_input.hpp"
-#include "src/model/types.hpp"
 
 namespace whirl::io {
 

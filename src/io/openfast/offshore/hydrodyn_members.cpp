@@ -4,9 +4,9 @@
 #include <cmath>
 #include <set>
 
+#include "src/base/error.hpp"
+#include "src/base/limits.hpp"
 #include "src/io/openfast/openfast_lines.hpp"
-#include "src/model/error.hpp"
-#include "src/model/limits.hpp"
 
 namespace whirl::io {
 namespace {
@@ -31,7 +31,7 @@ class TableReader {
     const std::optional<int> n = f_.findInt(key);
     if (!n) return 0;
     if (*n < 0 || *n > hi)
-      throw InputError(f_.where(key, "must be between 0 and " + std::to_string(hi) + " (src/model/limits.hpp)"));
+      throw InputError(f_.where(key, "must be between 0 and " + std::to_string(hi) + " (src/base/limits.hpp)"));
     return *n;
   }
 

@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "src/base/types.hpp"
 #include "src/io/openfast/openfast_input.hpp"
-#include "src/model/types.hpp"
 
 namespace whirl::io {
 
@@ -101,7 +101,7 @@ struct HydroDynMembers {
 /// against the others: duplicate ids, a member whose joints or property sets do not exist or whose
 /// joints coincide (zero length), a property set with D ≤ 0 or a wall thickness outside [0, D/2], a
 /// fill group naming an unknown member or one already filled, a FillDens ≤ 0 — each an InputError
-/// "file:line: key: reason" naming the row's line. Counts are bounded (src/model/limits.hpp).
+/// "file:line: key: reason" naming the row's line. Counts are bounded (src/base/limits.hpp).
 HydroDynMembers readHydroDynMembers(const OpenFastFile& f, const OpenFastLines& lines);
 
 }  // namespace whirl::io

@@ -6,11 +6,11 @@
 #include <sstream>
 #include <unordered_map>
 
+#include "src/base/error.hpp"
 #include "src/io/openfast/elastodyn_common.hpp"
 #include "src/io/openfast/offshore/mooring_table.hpp"
 #include "src/io/openfast/openfast_input.hpp"
 #include "src/io/text/input_file.hpp"
-#include "src/model/error.hpp"
 
 namespace whirl::io {
 namespace {

@@ -3,9 +3,9 @@
 #include <cmath>
 #include <fstream>
 
+#include "src/base/limits.hpp"
 #include "src/io/openfast/offshore/mooring_table.hpp"
 #include "src/io/text/input_file.hpp"
-#include "src/model/limits.hpp"
 
 namespace whirl::io {
 namespace {
@@ -75,7 +75,7 @@ MapInput readMoorDyn(const std::filesystem::path& file) {
       const double n = r.number(t[0], t[1]);
       if (n != std::floor(n) || n < 0 || n > limits::kMaxMooringCount)
         throw r.fail(t[1], "must be in [0, " + std::to_string(limits::kMaxMooringCount) + "] (is " +
-                               t[0].substr(0, 40) + "; src/model/limits.hpp)");
+                               t[0].substr(0, 40) + "; src/base/limits.hpp)");
       continue;
     }
     if (header > 0) {

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "src/base/error.hpp"
 #include "src/io/openfast/elastodyn_common.hpp"
-#include "src/model/error.hpp"
 
 namespace whirl::io {
 

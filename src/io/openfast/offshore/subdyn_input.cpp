@@ -5,12 +5,12 @@
 #include <cmath>
 #include <optional>
 
+#include "src/base/error.hpp"
+#include "src/base/limits.hpp"
 #include "src/io/openfast/elastodyn_common.hpp"
 #include "src/io/openfast/openfast_lines.hpp"
 #include "src/io/openfast/openfast_overrides.hpp"
 #include "src/io/openfast/refusals.hpp"
-#include "src/model/error.hpp"
-#include "src/model/limits.hpp"
 
 namespace whirl::io {
 namespace {
@@ -47,7 +47,7 @@ class Reader {
     }
     if (n < lo || n > hi)
       throw InputError(
-          where(e, "must be between " + std::to_string(lo) + " and " + std::to_string(hi) + " (src/model/limits.hpp)"));
+          where(e, "must be between " + std::to_string(lo) + " and " + std::to_string(hi) + " (src/base/limits.hpp)"));
     return n;
   }
 
@@ -162,11 +162,11 @@ void readModes(SubDynInput& sd, Refusals& r) {
   sd.NDiv = f.getInt("NDiv");
   if (sd.NDiv < 1 || sd.NDiv > limits::kMaxSubDynNDiv)
     throw InputError(
-        f.where("NDiv", "must be between 1 and " + std::to_string(limits::kMaxSubDynNDiv) + " (src/model/limits.hpp)"));
+        f.where("NDiv", "must be between 1 and " + std::to_string(limits::kMaxSubDynNDiv) + " (src/base/limits.hpp)"));
   const int nmodes = f.getInt("Nmodes");
   if (nmodes > limits::kMaxReducedModes)
     throw InputError(
-        f.where("Nmodes", "must be at most " + std::to_string(limits::kMaxReducedModes) + " (src/model/limits.hpp)"));
+        f.where("Nmodes", "must be at most " + std::to_string(limits::kMaxReducedModes) + " (src/base/limits.hpp)"));
   // v1.01: CBMod = False keeps every mode (Nmodes ignored); from OpenFAST v2, Nmodes < 0 does.
   const std::optional<bool> cb = f.findBool("CBMod");
   if (cb && !*cb) {
@@ -330,7 +330,7 @@ void readMembers(SubDynInput& sd, const Reader& rd, std::vector<std::string>& re
   if (static_cast<long>(n) * sd.NDiv > limits::kMaxFemElements)
     throw InputError(rd.where(e, "NMembers × NDiv = " + std::to_string(static_cast<long>(n) * sd.NDiv) +
                                      " elements, more than " + std::to_string(limits::kMaxFemElements) +
-                                     " (src/model/limits.hpp)"));
+                                     " (src/base/limits.hpp)"));
   const Rows rows = rd.rows(e, n);
   // OpenFAST v2.5+ has an MType column (1 or 1c circular beam, 1r rectangular, 2 cable, 3 rigid link,
   // 4 arbitrary section, 5 spring); v1.01 members are all circular beams.

@@ -20,14 +20,14 @@
 /// links, rectangular and arbitrary sections, springs), interface DOFs not all locked (SubDyn refuses
 /// them too), concentrated masses with a centre-of-mass offset. Time integration, the static improvement
 /// method and the output lists do not enter a linearization without hydrodynamic loads: ignored.
-/// Every count is bounded (src/model/limits.hpp) before its rows are read.
+/// Every count is bounded (src/base/limits.hpp) before its rows are read.
 #include <array>
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "src/base/types.hpp"
 #include "src/io/openfast/openfast_input.hpp"
-#include "src/model/types.hpp"
 
 namespace whirl::io {
 

@@ -4,9 +4,9 @@
 #include <fstream>
 #include <sstream>
 
+#include "src/base/error.hpp"
 #include "src/io/openfast/elastodyn_common.hpp"
 #include "src/io/text/input_file.hpp"
-#include "src/model/error.hpp"
 
 namespace whirl::io {
 

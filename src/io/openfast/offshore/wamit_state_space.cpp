@@ -4,11 +4,11 @@
 #include <fstream>
 #include <sstream>
 
+#include "src/base/error.hpp"
+#include "src/base/limits.hpp"
 #include "src/io/openfast/elastodyn_common.hpp"
 #include "src/io/openfast/offshore/wamit_input.hpp"
 #include "src/io/text/input_file.hpp"
-#include "src/model/error.hpp"
-#include "src/model/limits.hpp"
 
 namespace whirl::io {
 namespace {

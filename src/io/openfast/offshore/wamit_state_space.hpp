@@ -10,8 +10,8 @@
 /// so that ż = A z + B ẋ and the radiation load on the platform is C z (no sign or scaling added).
 #include <array>
 
+#include "src/base/types.hpp"
 #include "src/io/openfast/offshore/hydrodyn_input.hpp"
-#include "src/model/types.hpp"
 
 namespace whirl::io {
 

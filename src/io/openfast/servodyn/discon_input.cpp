@@ -11,13 +11,13 @@
 #include <unordered_map>
 #include <vector>
 
+#include "src/base/error.hpp"
 #include "src/io/openfast/elastodyn_common.hpp"
 #include "src/io/openfast/fst_input.hpp"
 #include "src/io/openfast/openfast_input.hpp"
 #include "src/io/openfast/openfast_overrides.hpp"
 #include "src/io/openfast/openfast_turbine.hpp"
 #include "src/io/text/input_file.hpp"
-#include "src/model/error.hpp"
 
 namespace whirl::io {
 namespace {

@@ -4,9 +4,9 @@
 #include <numbers>
 #include <sstream>
 
+#include "src/base/error.hpp"
 #include "src/io/openfast/openfast_lines.hpp"
 #include "src/io/text/input_file.hpp"
-#include "src/model/error.hpp"
 
 namespace whirl::io {
 namespace {

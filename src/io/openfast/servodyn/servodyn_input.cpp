@@ -1,9 +1,9 @@
 #include "src/io/openfast/servodyn/servodyn_input.hpp"
 
+#include "src/base/error.hpp"
 #include "src/io/openfast/elastodyn_common.hpp"
 #include "src/io/openfast/openfast_layouts.hpp"
 #include "src/io/openfast/openfast_overrides.hpp"
-#include "src/model/error.hpp"
 
 namespace whirl::io {
 namespace {

@@ -1,8 +1,8 @@
-#include "src/model/text.hpp"
+#include "src/base/text.hpp"
 
 #include <cstdio>
 
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 
 namespace whirl {
 namespace {

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// The cross-product matrix, used by the equations (any scalar) and the finite elements (double).
-#include "src/model/types.hpp"
+#include "src/base/types.hpp"
 
 namespace whirl {
 

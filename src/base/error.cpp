@@ -1,6 +1,6 @@
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 
-#include "src/model/text.hpp"
+#include "src/base/text.hpp"
 
 namespace whirl {
 
