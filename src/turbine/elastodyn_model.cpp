@@ -1,5 +1,6 @@
 // buildElastoDynModel: the parts (tower, nacelle and drivetrain, blades), inputs and outputs, springs, gravity;
-// readElastoDynModel: files and overrides; readElastoDynFlexibleBeams: tower and blades for `whirl shapes`.
+// readElastoDynModel: the deck read in one pass (io::readOpenFastDeck) with the overrides; readElastoDynFlexibleBeams:
+// tower and blades for `whirl shapes`.
 #include "src/turbine/elastodyn_model.hpp"
 
 #include <cmath>
@@ -9,9 +10,9 @@
 #include "src/base/error.hpp"
 #include "src/base/text.hpp"
 #include "src/io/openfast/aerodyn/aero_support.hpp"
+#include "src/io/openfast/openfast_deck.hpp"
 #include "src/io/openfast/openfast_overrides.hpp"
 #include "src/io/openfast/openfast_support.hpp"
-#include "src/io/openfast/servodyn/discon_input.hpp"
 #include "src/turbine/elastodyn_fem_shapes.hpp"
 #include "src/turbine/elastodyn_parts.hpp"
 #include "src/turbine/elastodyn_tower_beam.hpp"
@@ -52,8 +53,7 @@ double gravityOf(const io::OpenFastTurbine& t, const ElastoDynModelOptions& opt)
 // ServoDyn's yaw spring when the yaw is free and ServoDyn is on.
 std::optional<io::ServoDynInput> yawSpring(const io::OpenFastTurbine& t, const ElastoDynModelOptions& opt) {
   if (!opt.yaw_spring_from_servodyn || !t.elastodyn.dof.YawDOF || t.fst.CompServo == 0) return std::nullopt;
-  if (opt.servodyn) return opt.servodyn;
-  return io::readServoDynIfEnabled(t.fst);  // InputError naming the .fst line when the file is missing
+  return opt.servodyn;  // read with the deck (io::readOpenFastDeck)
 }
 
 }  // namespace
@@ -119,28 +119,13 @@ io::OpenFastTurbine readElastoDynTurbine(const std::string& path, const std::vec
     file_overrides.push_back(std::move(o));
   }
   io::OverrideSet set(std::move(file_overrides));
-  const std::filesystem::path p(path);
-  io::OpenFastTurbine t;
-  if (io::toLower(p.extension().string()) == ".fst") t = io::readOpenFastTurbine(p, &set);
-  else t.elastodyn = io::readElastoDyn(p, &set);
-  // ServoDyn is read once, for the yaw spring and for the torque law (issue 42: it was read twice).
-  std::optional<io::ServoDynInput> servo;
-  bool servo_read = false;
-  auto servoDyn = [&]() -> const std::optional<io::ServoDynInput>& {
-    if (!servo_read) servo = io::readServoDynIfEnabled(t.fst, &set), servo_read = true;
-    return servo;
-  };
-  if (opt.yaw_spring_from_servodyn && t.elastodyn.dof.YawDOF && t.fst.CompServo != 0) opt.servodyn = servoDyn();
-  // Aerodynamics follows the deck: CompAero = 2 reads AeroDyn, its blades and airfoils and InflowWind
-  // (`--set CompAero=0` gives the structural model of the same deck).
-  if (t.fst.CompAero != 0) {
-    io::AeroDeckInput deck = io::readAeroDeck(t.fst, &set);
-    io::requireSupported(deck.aerodyn);
-    io::requireSupported(deck.inflow);
-    opt.aero = std::move(deck);
-    opt.torque_law = servoDyn();
-    // A ROSCO DISCON.IN, with the --set overrides of its keys: the model carries it to the commands.
-    if (opt.torque_law) opt.controller = io::readServoDynController(*opt.torque_law, &set);
+  io::OpenFastDeck deck = io::readOpenFastDeck(path, &set, {opt.yaw_spring_from_servodyn});
+  const io::OpenFastTurbine& t = deck.turbine;
+  if (opt.yaw_spring_from_servodyn && t.elastodyn.dof.YawDOF && t.fst.CompServo != 0) opt.servodyn = deck.servodyn;
+  if (deck.aero) {
+    opt.aero = std::move(deck.aero);
+    opt.torque_law = deck.servodyn;
+    opt.controller = std::move(deck.controller);
     if (opt.torque_law)
       if (std::optional<std::string> note = io::externalTorqueController(*opt.torque_law)) {
         opt.aero->notes.push_back(std::move(*note));
@@ -148,7 +133,7 @@ io::OpenFastTurbine readElastoDynTurbine(const std::string& path, const std::vec
       }
   }
   set.requireAllUsed();
-  return t;
+  return std::move(deck.turbine);
 }
 
 Model readElastoDynModel(const std::string& path, const std::vector<std::string>& overrides) {

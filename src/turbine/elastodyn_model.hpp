@@ -76,7 +76,7 @@ namespace whirl {
 struct ElastoDynModelOptions {
   /// Yaw spring and damper from ServoDyn (YawSpr, YawDamp, YawNeut) when CompServo = 1 and YawDOF is on.
   bool yaw_spring_from_servodyn = true;
-  /// The ServoDyn input to use (e.g. read with overrides); read from the .fst's ServoFile when absent and needed.
+  /// The ServoDyn input (read with the deck, io::readOpenFastDeck); no yaw spring without it.
   std::optional<io::ServoDynInput> servodyn;
   /// Gravity [m/s²]; default: the .fst's (or ElastoDyn v1.0x's) Gravity, 9.80665 for an ElastoDyn file alone.
   std::optional<double> gravity;
@@ -91,12 +91,12 @@ struct ElastoDynModelOptions {
   /// fixed-root modes kept (`--set blade_elements=N`, `--set blade_modes=N`).
   int blade_elements = 60;
   int blade_modes = 8;
-  /// Aerodynamics (AeroDyn, InflowWind) when the .fst has CompAero = 2: read by readElastoDynTurbine.
+  /// Aerodynamics (AeroDyn, InflowWind) when the .fst has CompAero = 2 (io::OpenFastDeck::aero).
   /// Absent: a structural model. (elastodyn_aero.cpp; frames and conventions in src/model/aero_model.hpp.)
   std::optional<io::AeroDeckInput> aero;
   /// ServoDyn's generator torque law for an aerodynamic model (VSContrl = 1), when ServoDyn is on.
   std::optional<io::ServoDynInput> torque_law;
-  /// The deck's ROSCO controller (VSContrl = 5 and a DISCON.IN), read by readElastoDynTurbine: Model::deck_controller.
+  /// The deck's ROSCO controller (VSContrl = 5 and a DISCON.IN; io::OpenFastDeck::controller): Model::deck_controller.
   std::optional<RoscoController> controller;
 };
 

@@ -32,8 +32,7 @@ double water(const io::OpenFastTurbine& t, std::optional<double> hd, std::option
 }
 
 // HydroDyn's state-space radiation memory (`RdtnMod = 2`): the states of each DOF's block named after it.
-void addRadiationStates(Builder& b, const PlatformParts& p, const io::HydroDynInput& hd) {
-  const io::RadiationStateSpace ss = io::readRadiationStateSpace(hd);
+void addRadiationStates(Builder& b, const PlatformParts& p, const io::RadiationStateSpace& ss) {
   static const char* const kDof[6] = {"surge", "sway", "heave", "roll", "pitch", "yaw"};
   BodyStateSpace bs;
   bs.body = p.body;
@@ -75,7 +74,7 @@ void addHydroDyn(Builder& b, const PlatformParts& p, const io::OpenFastTurbine& 
     if (p.reference.norm() != 0.0)
       throw InputError(b.where(b.ed.config.PtfmRefzt ? "PtfmRefzt" : "PtfmRef",
                                "the platform reference point must be the WAMIT origin (0, 0, 0) with PotMod = 1"));
-    const io::WamitMatrices w = io::readWamit(hd, rho, g);
+    const io::WamitMatrices w = io::dimensional(*t.wamit, rho, g);
     bm.K += w.hydrostatic;
     // WAMIT's added mass is symmetric up to its panel discretization (A15 and A51 of the OC3 spar
     // differ in the 6th digit); the mass matrix wants it symmetric.
@@ -89,7 +88,7 @@ void addHydroDyn(Builder& b, const PlatformParts& p, const io::OpenFastTurbine& 
                                            io::numberText(es.eigenvalues().minCoeff()) + ")"));
     const double B = rho * g * hd.PtfmVol0;
     f0 += (Eigen::Matrix<double, 6, 1>() << 0, 0, B, B * hd.PtfmCOByt, -B * hd.PtfmCOBxt, 0).finished();
-    if (hd.RdtnMod == 2) addRadiationStates(b, p, hd);
+    if (hd.RdtnMod == 2) addRadiationStates(b, p, *t.radiation);
   }
   if (!hd.geometry.fills.empty()) {
     const Ballast ballast = ballastOf(hd.geometry, rho, g, p.reference);

@@ -1,8 +1,9 @@
 #pragma once
 /// \file
-/// Reading a turbine from its OpenFAST `.fst` file: the `.fst`, then the ElastoDyn main, tower and blade
-/// files it names. ServoDyn is read separately and only on request (for the yaw spring), so a case whose
-/// ServoDyn file is absent still reads as long as nothing needs it.
+/// Reading a turbine from its OpenFAST `.fst` file: the `.fst`, then the structural files it names
+/// (ElastoDyn, BeamDyn, SubDyn, HydroDyn with its WAMIT files, the mooring). The whole deck, with
+/// ServoDyn, AeroDyn and the controller, is readOpenFastDeck (openfast_deck.hpp); ServoDyn is read only
+/// when something needs it, so a case whose ServoDyn file is absent still reads as long as nothing does.
 #include <filesystem>
 #include <optional>
 
@@ -13,6 +14,8 @@
 #include "src/io/openfast/offshore/map_input.hpp"
 #include "src/io/openfast/offshore/seastate_input.hpp"
 #include "src/io/openfast/offshore/subdyn_input.hpp"
+#include "src/io/openfast/offshore/wamit_input.hpp"
+#include "src/io/openfast/offshore/wamit_state_space.hpp"
 #include "src/io/openfast/servodyn/servodyn_input.hpp"
 
 namespace whirl::io {
@@ -27,6 +30,10 @@ struct OpenFastTurbine {
   std::optional<SeaStateInput> seastate;  ///< with the HydroDyn file when CompSeaSt = 1 (OpenFAST v4+)
   std::optional<MapInput> mooring;        ///< with a platform DOF on: MAP++ (CompMooring = 1) or MoorDyn (3)
   std::optional<SubDynInput> subdyn;      ///< with CompSub = 1 (then a mooring is not read)
+  /// A floating platform's WAMIT coefficients (HydroDyn PotMod = 1) and its state-space radiation
+  /// (RdtnMod = 2, the `.ss` file).
+  std::optional<WamitCoefficients> wamit;
+  std::optional<RadiationStateSpace> radiation;
   /// With CompElast = 2: the BeamDyn file of each blade (BDBldFile(k), k = 1 … NumBl).
   std::vector<BeamDynInput> beamdyn;
 };

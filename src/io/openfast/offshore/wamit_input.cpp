@@ -70,13 +70,13 @@ int index1to6(const std::filesystem::path& file, const Row& r, double x) {
 
 }  // namespace
 
-WamitMatrices readWamit(const HydroDynInput& hd, double rho, double g) {
-  WamitMatrices w;
-  const double L = hd.WAMITULEN;
+WamitCoefficients readWamitCoefficients(const HydroDynInput& hd) {
+  WamitCoefficients c;
+  c.L = hd.WAMITULEN;
   const std::filesystem::path hst = wamitFile(hd, ".hst");
   for (const Row& r : numericRows(hst, 3)) {
     const int i = index1to6(hst, r, r.v[0]), j = index1to6(hst, r, r.v[1]);
-    w.hydrostatic(i, j) = r.v[2] * rho * g * std::pow(L, 2 + rotational(i + 1, j + 1));
+    c.hydrostatic(i, j) = r.v[2];
   }
   const std::filesystem::path one = wamitFile(hd, ".1");
   bool any = false;
@@ -85,14 +85,29 @@ WamitMatrices readWamit(const HydroDynInput& hd, double rho, double g) {
     // one as PER = 0 (zero period), as HydroDyn's WAMIT reader takes them; finite frequencies PER > 0.
     if (r.v[0] != 0) continue;
     const int i = index1to6(one, r, r.v[1]), j = index1to6(one, r, r.v[2]);
-    w.added_mass(i, j) = r.v[3] * rho * std::pow(L, 3 + rotational(i + 1, j + 1));
+    c.added_mass(i, j) = r.v[3];
     any = true;
   }
   if (!any)
     throw InputError(whirl::where(one.string(), 0, "",
                                   "no infinite-frequency added mass (rows with PER = 0): "
                                   "HydroDyn needs the infinite-frequency limit"));
+  return c;
+}
+
+WamitMatrices dimensional(const WamitCoefficients& c, double rho, double g) {
+  WamitMatrices w;
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < 6; ++j) {
+      const int k = rotational(i + 1, j + 1);
+      w.hydrostatic(i, j) = c.hydrostatic(i, j) * rho * g * std::pow(c.L, 2 + k);
+      w.added_mass(i, j) = c.added_mass(i, j) * rho * std::pow(c.L, 3 + k);
+    }
   return w;
+}
+
+WamitMatrices readWamit(const HydroDynInput& hd, double rho, double g) {
+  return dimensional(readWamitCoefficients(hd), rho, g);
 }
 
 }  // namespace whirl::io

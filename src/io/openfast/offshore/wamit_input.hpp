@@ -12,6 +12,15 @@ struct WamitMatrices {
   Mat6 added_mass = Mat6::Zero();   ///< added mass at infinite frequency of the `.1` file (kg, kg m, kg m²)
 };
 
+/// The same files as WAMIT writes them: nondimensional coefficients (C̄_ij of the `.hst`, Ā_ij of the
+/// `.1` at infinite frequency) and the length scale L = WAMITULEN. What the deck reader keeps
+/// (readOpenFastTurbine): the turbine scales them with its water density and gravity (dimensional).
+struct WamitCoefficients {
+  Mat6 hydrostatic = Mat6::Zero();
+  Mat6 added_mass = Mat6::Zero();
+  double L = 1.0;  ///< WAMITULEN [m]
+};
+
 /// `<PotFile><ext>`, or the unique file of its folder whose name matches it ignoring case (the
 /// certification decks were written on Windows: `Spar` for `spar.hst`).
 /// \throws InputError naming PotFile when there is none.
@@ -25,5 +34,11 @@ std::filesystem::path wamitFile(const HydroDynInput& hd, const std::string& ext)
 /// row → InputError "file:line: reason". A name that differs from the files only by case is accepted
 /// when the match is unique (the certification decks were written on Windows: `Spar` for `spar.hst`).
 WamitMatrices readWamit(const HydroDynInput& hd, double rho, double g);
+
+/// The files of readWamit, not yet redimensionalized (same errors).
+WamitCoefficients readWamitCoefficients(const HydroDynInput& hd);
+
+/// C_ij = C̄_ij ρ g L^k, A_ij = Ā_ij ρ L^k (WAMIT's conventions, readWamit).
+WamitMatrices dimensional(const WamitCoefficients& c, double rho, double g);
 
 }  // namespace whirl::io
