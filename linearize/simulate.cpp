@@ -501,6 +501,11 @@ Simulation simulate(const Model& m, const OperatingPoint& start, const Simulatio
       if (ts >= tout * (1 - 1e-12)) break;
     }
     record(k, tout, y, yp);
+    if (opt.stop && opt.stop(tout, sim.q.row(k).transpose())) {
+      for (MatX* a : {&sim.q, &sim.qd, &sim.u, &sim.y}) a->conservativeResize(k + 1, Eigen::NoChange);
+      sim.stopped = true;
+      break;
+    }
   }
   addStatistics(h.mem, sim);
   sim.jacobian_evaluations = blockSolverStatistics(h.ls).evaluations;

@@ -67,6 +67,10 @@ struct SimulationOptions {
   DiscreteController controller;
   /// Called after each recorded instant with (t, t_end).
   std::function<void(double, double)> progress;
+  /// Called after each recorded instant after the start with (t, q: all coordinates, dim ndof); true
+  /// ends the integration there, the record kept up to and including that instant
+  /// (Simulation::stopped). E.g. stopAtInvalidMotion: a diverging model is not integrated to t_end.
+  std::function<bool(double, const VecX&)> stop;
 };
 
 /// The root tolerance of the induction's residual in a time simulation's residuals and outputs:
@@ -88,6 +92,7 @@ struct Simulation {
   long nonlinear_iterations = 0;     ///< Newton iterations (one residual and one linear solve each)
   long convergence_failures = 0;     ///< Newton iterations that failed to converge (the step is retried)
   long error_test_failures = 0;      ///< steps rejected by the local error test
+  bool stopped = false;              ///< ended before t_end by SimulationOptions::stop
 };
 
 /// Integrates from `start` (coordinates, rates and inputs at t = 0; its q̈ is not used: the initial

@@ -58,6 +58,14 @@ std::optional<std::string> invalidMotion(const Model& m, const Simulation& sim) 
   return std::nullopt;
 }
 
+std::function<bool(double, const VecX&)> stopAtInvalidMotion(const Model& m) {
+  return [&m](double, const VecX& q) {
+    OperatingPoint at;  // no solved coordinates: only the geometry is checked, as invalidMotion does
+    at.q = q;
+    return !checkPointValidity(m, at).empty();
+  };
+}
+
 WindStart windStart(const Model& m, double wind, const RoscoController* controller) {
   TrimOptions trim;
   trim.controller = controller;

@@ -3,6 +3,7 @@
 /// What a simulation's caller names by text, checked against the model with the messages the user
 /// sees (`whirl simulate`'s --init, --input, --drive; the Python `Model.simulate`), and the check of
 /// the recorded motion against the model's range of validity (linearize/point_validity.hpp).
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -38,5 +39,10 @@ WindStart windStart(const Model& m, double wind, const RoscoController* controll
 /// empty when the whole motion is valid. A model that blows up (negative damping: a 325 km tower
 /// deflection, issue 48, item 6) gives no result to keep silently (docs/user/limits.md, *Blow-ups*).
 std::optional<std::string> invalidMotion(const Model& m, const Simulation& sim);
+
+/// A SimulationOptions::stop that ends the integration at the first recorded instant outside the
+/// model's range of validity (the instant invalidMotion then names): a model that blows up is not
+/// integrated on to t_end (issue 48). `m` must outlive the function.
+std::function<bool(double, const VecX&)> stopAtInvalidMotion(const Model& m);
 
 }  // namespace whirl

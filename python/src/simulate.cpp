@@ -61,6 +61,7 @@ py::tuple simulateModel(const PyModel& p, double tmax, std::optional<double> rpm
   so.rtol = rtol;
   so.atol = atol;
   if (!free_rotor && !wind) so.prescribed = m.roles.azimuth;
+  if (!allow_invalid_point) so.stop = stopAtInvalidMotion(m);  // a diverging model stops at its first invalid instant
   // wind=: the trimmed start of `whirl simulate --wind` (with the deck's ROSCO controller), closed_loop=:
   // that controller in the loop (linearize/rosco_step.hpp).
   if (closed_loop && !wind) throw InputError("closed_loop: needs wind= (it starts where ROSCO settles)");

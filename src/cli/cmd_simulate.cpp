@@ -85,6 +85,9 @@ void run(const SimulateOptions& opt) {
   so.atol = opt.atol;
   if (!opt.free_rotor && !opt.wind) so.prescribed = m.roles.azimuth;
   if (opt.closed_loop) so.controller = roscoInTheLoop(m, *controller, *steady, opt.controller_dt, start);
+  // Without --allow-invalid-point a diverging motion is an error: stop integrating at its first
+  // invalid instant instead of at --tmax (docs/user/limits.md, *Blow-ups*).
+  if (!opt.model.allow_invalid_point) so.stop = stopAtInvalidMotion(m);
   for (const std::string& s : opt.inputs) {
     const auto [name, signal] = splitAssignment(s, "--input");
     so.inputs.push_back({simulationInput(m, name, "--input"), parseTimeSignal(signal, "--input " + name)});

@@ -92,5 +92,29 @@ TEST(SimulateTorsionTube, EnergyIsConservedWithoutDamping) {
   EXPECT_LT(drift, 1e-6);
 }
 
+// SimulationOptions::stop ends the integration at the instant it names, keeping the record up to it
+// (what stops a diverging model at its first invalid instant, stopAtInvalidMotion; issue 48). The
+// kept instants equal the same instants of the run to the end.
+TEST(SimulateTorsionTube, StopEndsTheRecordAtItsInstant) {
+  const Model forced = readCase(std::string(WHIRL_SOURCE_DIR) + "/cases/torsion_tube/torsion_tube_forced.yaml");
+  SimulationOptions o;
+  o.t_end = 1;
+  o.dt_out = 0.1;
+  TimeSignal s;
+  s.kind = TimeSignal::Kind::Sine;
+  s.parameters = {kM0, 1.0};
+  o.inputs.push_back({*forced.findInput("tip moment"), s});
+  const Simulation full = simulate(forced, initialPoint(forced), o);
+  o.stop = [](double t, const VecX& q) { return t > 0.45 && q.allFinite(); };
+  const Simulation part = simulate(forced, initialPoint(forced), o);
+  EXPECT_FALSE(full.stopped);
+  ASSERT_TRUE(part.stopped);
+  ASSERT_EQ(part.time.size(), 6u);  // 0, 0.1, …, 0.5
+  EXPECT_EQ(part.q.rows(), 6);
+  EXPECT_EQ(part.y.rows(), 6);
+  EXPECT_DOUBLE_EQ(part.time.back(), 0.5);
+  EXPECT_EQ(part.q, full.q.topRows(6));
+}
+
 }  // namespace
 }  // namespace whirl
