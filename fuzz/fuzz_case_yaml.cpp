@@ -3,7 +3,7 @@
 #include "fuzz/fuzz_support.hpp"
 #include "src/io/case/case_file.hpp"
 
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+static int fuzzOne(const uint8_t* data, size_t size) {
   const std::string path = whirl::fuzz::writeInput("case.yaml", data, size);
   whirl::fuzz::expectOnlyInputErrors([&] {
     const whirl::Model m = whirl::readCase(path);
@@ -11,3 +11,5 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   });
   return 0;
 }
+
+static const whirl::fuzz::RegisterHarness kHarness("fuzz_case_yaml", fuzzOne);

@@ -5,9 +5,9 @@
 // NaN, inf, 1e308, text where a number goes, malformed ranges, huge counts that a bound must refuse).
 // Files an option names (--params, --schedule, --tracking) are written from the input too.
 //
-// Built three times (fuzz/CMakeLists.txt): fuzz_cli (every command that computes: modes, linearize,
-// campbell, export, steady, bode, simulate, study, shapes), fuzz_study (WHIRL_FUZZ_COMMAND="study")
-// and fuzz_simulate (WHIRL_FUZZ_COMMAND="simulate"). The output writers run on every success
+// Three harnesses: fuzz_cli (every command that computes: modes, linearize, campbell, export, steady,
+// bode, simulate, study, shapes), fuzz_study (`study` alone) and fuzz_simulate (`simulate` alone). The output writers
+// run on every success
 // (--out is the sandbox's). Per-run cost stays small by construction: tame sweeps have at most 3
 // points and 6 azimuths, tame simulations at most 2 s; an edge value that is valid but expensive is
 // left out on purpose (it would be a timeout, not a bug): those are the edges the bounds of
@@ -157,15 +157,11 @@ const std::vector<Command>& commands() {
   return all;
 }
 
-/// The command(s) this executable fuzzes.
-std::vector<const Command*> fuzzedCommands() {
+/// The command(s) a harness fuzzes: `only` (nullptr: every command).
+std::vector<const Command*> fuzzedCommands(const char* only) {
   std::vector<const Command*> out;
-  for (const Command& c : commands()) {
-#ifdef WHIRL_FUZZ_COMMAND
-    if (std::string(c.name) != WHIRL_FUZZ_COMMAND) continue;
-#endif
-    out.push_back(&c);
-  }
+  for (const Command& c : commands())
+    if (!only || std::string(c.name) == only) out.push_back(&c);
   return out;
 }
 
@@ -243,12 +239,9 @@ void setUp() {
   (void)done;
 }
 
-}  // namespace
-
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+int fuzzCommands(const std::vector<const Command*>& cmds, const uint8_t* data, size_t size) {
   setUp();
   FuzzedDataProvider in(data, size);
-  static const std::vector<const Command*> cmds = fuzzedCommands();
   const Command& cmd = *cmds[in.ConsumeIntegralInRange<size_t>(0, cmds.size() - 1)];
   std::string case_path = pick(in, kCases);
   const bool own_case = case_path.empty();
@@ -278,3 +271,24 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   whirl::fuzz::runCommand(whirl::cli::addCommands, args);
   return 0;
 }
+
+int fuzzEveryCommand(const uint8_t* data, size_t size) {
+  static const std::vector<const Command*> cmds = fuzzedCommands(nullptr);
+  return fuzzCommands(cmds, data, size);
+}
+
+int fuzzStudy(const uint8_t* data, size_t size) {
+  static const std::vector<const Command*> cmds = fuzzedCommands("study");
+  return fuzzCommands(cmds, data, size);
+}
+
+int fuzzSimulate(const uint8_t* data, size_t size) {
+  static const std::vector<const Command*> cmds = fuzzedCommands("simulate");
+  return fuzzCommands(cmds, data, size);
+}
+
+const whirl::fuzz::RegisterHarness kCli("fuzz_cli", fuzzEveryCommand);
+const whirl::fuzz::RegisterHarness kStudy("fuzz_study", fuzzStudy);
+const whirl::fuzz::RegisterHarness kSimulate("fuzz_simulate", fuzzSimulate);
+
+}  // namespace

@@ -4,7 +4,7 @@
 #include "fuzz/fuzz_cli.hpp"
 #include "src/cli/commands.hpp"
 
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+static int fuzzOne(const uint8_t* data, size_t size) {
   static const std::string result = [] {
     const std::string text =
         "index,name,freq_hz,damped_freq_hz,damping_ratio\n"
@@ -17,3 +17,5 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   whirl::fuzz::runCommand(whirl::cli::addCompareCommand, {"compare", result, ref, "--tol-rel", "0.015"});
   return 0;
 }
+
+static const whirl::fuzz::RegisterHarness kHarness("fuzz_compare", fuzzOne);

@@ -4,8 +4,10 @@
 #include "fuzz/fuzz_cli.hpp"
 #include "src/cli/commands.hpp"
 
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+static int fuzzOne(const uint8_t* data, size_t size) {
   const std::string path = whirl::fuzz::writeInput("fuzz.lin", data, size);
   whirl::fuzz::runCommand(whirl::cli::addLinCommand, {"lin", path, "--format", "csv"});
   return 0;
 }
+
+static const whirl::fuzz::RegisterHarness kHarness("fuzz_lin", fuzzOne);

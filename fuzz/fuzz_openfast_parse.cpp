@@ -6,7 +6,7 @@
 #include "fuzz/fuzz_support.hpp"
 #include "src/io/openfast/openfast_input.hpp"
 
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+static int fuzzOne(const uint8_t* data, size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   whirl::fuzz::expectOnlyInputErrors([&] {
     const whirl::io::OpenFastFile f = whirl::io::OpenFastFile::parse(text, "fuzz.dat");
@@ -29,3 +29,5 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   });
   return 0;
 }
+
+static const whirl::fuzz::RegisterHarness kHarness("fuzz_openfast_parse", fuzzOne);

@@ -1,8 +1,7 @@
-// libFuzzer harness for one reader alone, compiled once per reader (fuzz/CMakeLists.txt,
-// WHIRL_FUZZ_READER): the bytes are the file and only that reader (and what turns its result into
-// model data) runs: hundreds to thousands of inputs/s under ASan, where the harnesses of the model
-// behind each file (fuzz_case_yaml, fuzz_elastodyn, fuzz_aerodyn & co.) solve and linearize it at
-// 1–100 inputs/s — so that each parser gets its 10⁶ executions.
+// libFuzzer harnesses for one reader alone, one harness per reader (the name in the table): the bytes are the file and
+// only that reader (and what turns its result into model data) runs: hundreds to thousands of inputs/s under ASan,
+// where the harnesses of the model behind each file (fuzz_case_yaml, fuzz_elastodyn, fuzz_aerodyn & co.) solve and
+// linearize it at 1–100 inputs/s — so that each parser gets its 10⁶ executions.
 //   1 fuzz_read_aerodyn     readAeroDyn (AeroDyn v15 main file; named files are not opened)
 //   2 fuzz_read_ad_blade    readAeroDynBlade
 //   3 fuzz_read_airfoil     readAirfoil, then airfoilPolar (the polar AeroDyn uses; first table, and on Re)
@@ -22,6 +21,9 @@
 //  16 fuzz_read_hydrodyn    readHydroDyn (its member tables too), then ballastOf (the filled members' fluid)
 //  17 fuzz_read_seastate    readSeaState (OpenFAST v4+ water properties)
 //  18 fuzz_read_discon      readDiscon (ROSCO's DISCON.IN), then its minimum pitch, gains and torques
+#include <iterator>
+#include <utility>
+
 #include "fuzz/fuzz_support.hpp"
 #include "src/io/case/case_file.hpp"
 #include "src/io/openfast/aerodyn/aero_deck14.hpp"
@@ -43,70 +45,88 @@
 #include "src/io/openfast/servodyn/servodyn_input.hpp"
 #include "src/turbine/hydrodyn_ballast.hpp"
 
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-#if WHIRL_FUZZ_READER == 13
-  const std::string path = whirl::fuzz::writeInput("fuzz_rad.ss", data, size);
-#else
-  const std::string path = whirl::fuzz::writeInput("fuzz_aero.dat", data, size);
-#endif
-  whirl::fuzz::expectOnlyInputErrors([&] {
-    namespace io = whirl::io;
-#if WHIRL_FUZZ_READER == 1
-    (void)io::readAeroDyn(path);
-#elif WHIRL_FUZZ_READER == 2
-    (void)io::readAeroDynBlade(path);
-#elif WHIRL_FUZZ_READER == 3
-    const io::AirfoilInput af = io::readAirfoil(path);
-    // Every table on the Reynolds number (AFTabMod = 2) first: it checks the tables beyond the first.
-    whirl::fuzz::expectOnlyInputErrors([&] { (void)io::airfoilPolar(af, true, whirl::aero::ReynoldsInterp::Log); });
-    (void)io::airfoilPolar(af, true);
-#elif WHIRL_FUZZ_READER == 4
-    (void)io::readInflowWind(path);
-#elif WHIRL_FUZZ_READER == 5
-    (void)io::generatorTorqueLaw(io::readServoDyn(path));
-#elif WHIRL_FUZZ_READER == 6
-    (void)whirl::readCase(path);
-#elif WHIRL_FUZZ_READER == 7
-    (void)io::readFst(path);
-#elif WHIRL_FUZZ_READER == 8
-    (void)io::readElastoDyn(path);
-#elif WHIRL_FUZZ_READER == 9
-    (void)io::readElastoDynTower(path);
-#elif WHIRL_FUZZ_READER == 10
-    (void)io::readElastoDynBlade(path);
-#elif WHIRL_FUZZ_READER == 11
-    const io::AeroDyn14Input v14 = io::readAeroDyn14(path);
-    (void)io::aerodynFromV14(v14);
-    (void)io::bladeFromV14(v14);
-    (void)io::steadySubstitutes(v14);
-#elif WHIRL_FUZZ_READER == 12
-    for (bool cm : {false, true}) {
-      const io::AirfoilInput af = io::readAirfoil14(path, cm);
-      whirl::fuzz::expectOnlyInputErrors(
-          [&] { (void)io::airfoilPolar(af, cm, whirl::aero::ReynoldsInterp::Linear); });  // MultiTab = RENUM
-      (void)io::airfoilPolar(af, cm);
+namespace {
+
+namespace io = whirl::io;
+
+// The reader numbered as in the table above.
+void readAs(int reader, const std::string& path) {
+  switch (reader) {
+    case 1: (void)io::readAeroDyn(path); break;
+    case 2: (void)io::readAeroDynBlade(path); break;
+    case 3: {
+      const io::AirfoilInput af = io::readAirfoil(path);
+      // Every table on the Reynolds number (AFTabMod = 2) first: it checks the tables beyond the first.
+      whirl::fuzz::expectOnlyInputErrors([&] { (void)io::airfoilPolar(af, true, whirl::aero::ReynoldsInterp::Log); });
+      (void)io::airfoilPolar(af, true);
+      break;
     }
-#elif WHIRL_FUZZ_READER == 13
-    io::HydroDynInput hd;
-    hd.PotFile = std::filesystem::path(path).replace_extension();
-    (void)io::readRadiationStateSpace(hd);
-#elif WHIRL_FUZZ_READER == 14
-    (void)io::mapMooringLines(io::readMap(path), 0, 320, 1025, 9.80665);
-#elif WHIRL_FUZZ_READER == 15
-    (void)io::mapMooringLines(io::readMoorDyn(path), 0, 320, 1025, 9.80665);
-#elif WHIRL_FUZZ_READER == 16
-    const io::HydroDynInput hd = io::readHydroDyn(path);
-    (void)whirl::elastodyn::ballastOf(hd.geometry, hd.WtrDens.value_or(1025), 9.80665, whirl::Vec3::Zero());
-#elif WHIRL_FUZZ_READER == 17
-    (void)io::readSeaState(path);
-#elif WHIRL_FUZZ_READER == 18
-    const whirl::RoscoController c = io::readDiscon(path);
-    (void)whirl::roscoMinimumPitch(c, 12.0);
-    if (!c.PC_GS_angles.empty()) (void)whirl::roscoPitchGains(c, 0.1);
-    (void)whirl::roscoTorqueLimit(c, c.VS_RefSpd);
-#else
-#error "WHIRL_FUZZ_READER must be 1 to 18"
-#endif
-  });
+    case 4: (void)io::readInflowWind(path); break;
+    case 5: (void)io::generatorTorqueLaw(io::readServoDyn(path)); break;
+    case 6: (void)whirl::readCase(path); break;
+    case 7: (void)io::readFst(path); break;
+    case 8: (void)io::readElastoDyn(path); break;
+    case 9: (void)io::readElastoDynTower(path); break;
+    case 10: (void)io::readElastoDynBlade(path); break;
+    case 11: {
+      const io::AeroDyn14Input v14 = io::readAeroDyn14(path);
+      (void)io::aerodynFromV14(v14);
+      (void)io::bladeFromV14(v14);
+      (void)io::steadySubstitutes(v14);
+      break;
+    }
+    case 12:
+      for (bool cm : {false, true}) {
+        const io::AirfoilInput af = io::readAirfoil14(path, cm);
+        whirl::fuzz::expectOnlyInputErrors(
+            [&] { (void)io::airfoilPolar(af, cm, whirl::aero::ReynoldsInterp::Linear); });  // MultiTab = RENUM
+        (void)io::airfoilPolar(af, cm);
+      }
+      break;
+    case 13: {
+      io::HydroDynInput hd;
+      hd.PotFile = std::filesystem::path(path).replace_extension();
+      (void)io::readRadiationStateSpace(hd);
+      break;
+    }
+    case 14: (void)io::mapMooringLines(io::readMap(path), 0, 320, 1025, 9.80665); break;
+    case 15: (void)io::mapMooringLines(io::readMoorDyn(path), 0, 320, 1025, 9.80665); break;
+    case 16: {
+      const io::HydroDynInput hd = io::readHydroDyn(path);
+      (void)whirl::elastodyn::ballastOf(hd.geometry, hd.WtrDens.value_or(1025), 9.80665, whirl::Vec3::Zero());
+      break;
+    }
+    case 17: (void)io::readSeaState(path); break;
+    case 18: {
+      const whirl::RoscoController c = io::readDiscon(path);
+      (void)whirl::roscoMinimumPitch(c, 12.0);
+      if (!c.PC_GS_angles.empty()) (void)whirl::roscoPitchGains(c, 0.1);
+      (void)whirl::roscoTorqueLimit(c, c.VS_RefSpd);
+      break;
+    }
+  }
+}
+
+template <int Reader>
+int fuzzReader(const uint8_t* data, size_t size) {
+  const std::string path = whirl::fuzz::writeInput(Reader == 13 ? "fuzz_rad.ss" : "fuzz_aero.dat", data, size);
+  whirl::fuzz::expectOnlyInputErrors([&] { readAs(Reader, path); });
   return 0;
 }
+
+constexpr const char* kNames[] = {"fuzz_read_aerodyn",    "fuzz_read_ad_blade",  "fuzz_read_airfoil",
+                                  "fuzz_read_inflowwind", "fuzz_read_servodyn",  "fuzz_read_case_yaml",
+                                  "fuzz_read_fst",        "fuzz_read_elastodyn", "fuzz_read_ed_tower",
+                                  "fuzz_read_ed_blade",   "fuzz_read_aerodyn14", "fuzz_read_airfoil14",
+                                  "fuzz_read_wamit_ss",   "fuzz_read_map",       "fuzz_read_moordyn",
+                                  "fuzz_read_hydrodyn",   "fuzz_read_seastate",  "fuzz_read_discon"};
+
+template <std::size_t... I>
+bool registerReaders(std::index_sequence<I...>) {
+  (whirl::fuzz::RegisterHarness(kNames[I], &fuzzReader<static_cast<int>(I) + 1>), ...);
+  return true;
+}
+
+[[maybe_unused]] const bool kRegistered = registerReaders(std::make_index_sequence<std::size(kNames)>{});
+
+}  // namespace

@@ -32,7 +32,7 @@ constexpr const char* kPrimary =
 
 }  // namespace
 
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+static int fuzzOne(const uint8_t* data, size_t size) {
   whirl::fuzz::writeInput("fuzz_BeamDyn_Blade.dat", data, size);
   const std::string primary = whirl::fuzz::writeInput("fuzz_BeamDyn.dat", reinterpret_cast<const uint8_t*>(kPrimary),
                                                       std::char_traits<char>::length(kPrimary));
@@ -42,3 +42,5 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   });
   return 0;
 }
+
+static const whirl::fuzz::RegisterHarness kHarness("fuzz_read_beamdyn", fuzzOne);

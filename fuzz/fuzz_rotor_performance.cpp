@@ -3,7 +3,7 @@
 #include "fuzz/fuzz_support.hpp"
 #include "src/io/openfast/servodyn/rotor_performance_input.hpp"
 
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+static int fuzzOne(const uint8_t* data, size_t size) {
   const std::string path = whirl::fuzz::writeInput("Cp_Ct_Cq.txt", data, size);
   whirl::fuzz::expectOnlyInputErrors([&] {
     const whirl::aero::RotorPerformance p = whirl::io::readRotorPerformance(path);
@@ -12,3 +12,5 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   });
   return 0;
 }
+
+static const whirl::fuzz::RegisterHarness kHarness("fuzz_rotor_performance", fuzzOne);

@@ -6,7 +6,7 @@
 #include "fuzz/fuzz_support.hpp"
 #include "src/io/text/schedule.hpp"
 
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+static int fuzzOne(const uint8_t* data, size_t size) {
   const std::string path = whirl::fuzz::writeInput("schedule.csv", data, size);
   whirl::fuzz::expectOnlyInputErrors([&] {
     for (const whirl::SweepPoint& p : whirl::readSchedule(path)) {
@@ -20,3 +20,5 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   });
   return 0;
 }
+
+static const whirl::fuzz::RegisterHarness kHarness("fuzz_schedule", fuzzOne);

@@ -6,7 +6,7 @@
 #include "src/io/openfast/offshore/subdyn_input.hpp"
 #include "src/turbine/subdyn_fem.hpp"
 
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+static int fuzzOne(const uint8_t* data, size_t size) {
   const std::string path = whirl::fuzz::writeInput("fuzz_SubDyn.dat", data, size);
   whirl::fuzz::expectOnlyInputErrors([&] {
     const whirl::io::SubDynInput sd = whirl::io::readSubDyn(path);
@@ -14,3 +14,5 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   });
   return 0;
 }
+
+static const whirl::fuzz::RegisterHarness kHarness("fuzz_subdyn", fuzzOne);

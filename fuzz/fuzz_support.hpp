@@ -16,6 +16,7 @@
 #include <exception>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <string>
 #include <typeinfo>
 #include <vector>
@@ -28,6 +29,22 @@
 namespace whirl::fuzz {
 
 namespace fs = std::filesystem;
+
+/// One harness of the fuzzing executable (fuzz/CMakeLists.txt builds one, `whirl_fuzz`, with every
+/// harness; each harness name is a link to it, and the name it runs under picks the harness:
+/// fuzz_main.cpp). What libFuzzer's LLVMFuzzerTestOneInput would be in a one-harness executable.
+using HarnessEntry = int (*)(const uint8_t* data, size_t size);
+
+/// Every harness linked in, by name.
+inline std::map<std::string, HarnessEntry>& harnesses() {
+  static std::map<std::string, HarnessEntry> all;
+  return all;
+}
+
+/// A file-scope `static const RegisterHarness h("fuzz_name", entry);` adds a harness.
+struct RegisterHarness {
+  RegisterHarness(const char* name, HarnessEntry entry) { harnesses()[name] = entry; }
+};
 
 /// This process' sandbox: <tmp>/whirl-fuzz-XXXXXX/run with copies of the auxiliary files (cases/nrel5mw
 /// with its aero files, the property and aero tables of the YAML cases, the ElastoDyn files the test

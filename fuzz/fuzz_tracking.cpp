@@ -9,7 +9,7 @@
 #include "modal/tracking_overrides.hpp"
 #include "synthetic_campbell.hpp"
 
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+static int fuzzOne(const uint8_t* data, size_t size) {
   static const whirl::CampbellDiagram d = whirl::test::syntheticTurbineCampbell(false);
   static const std::vector<whirl::CampbellLine> tracked = whirl::trackModes(d.points);
   const std::string text(reinterpret_cast<const char*>(data), size);
@@ -28,3 +28,5 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   });
   return 0;
 }
+
+static const whirl::fuzz::RegisterHarness kHarness("fuzz_tracking", fuzzOne);

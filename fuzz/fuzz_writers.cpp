@@ -164,9 +164,11 @@ void campbellFiles(FuzzedDataProvider& in) {
 
 }  // namespace
 
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+static int fuzzOne(const uint8_t* data, size_t size) {
   FuzzedDataProvider in(data, size);
   const bool campbell = in.ConsumeBool();
   fuzz::expectOnlyInputErrors([&] { campbell ? campbellFiles(in) : stateSpaceFiles(in); });
   return 0;
 }
+
+static const whirl::fuzz::RegisterHarness kHarness("fuzz_writers", fuzzOne);
