@@ -17,9 +17,9 @@
 #include "linearize/operating_point.hpp"
 #include "linearize/periodic.hpp"
 #include "modal/rotor_modes.hpp"
+#include "src/base/error.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/common.hpp"
-#include "src/model/error.hpp"
 #include "src/model/operating_condition.hpp"
 #include "src/writers/atomic_file.hpp"
 

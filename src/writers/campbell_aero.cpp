@@ -2,7 +2,7 @@
 #include "src/writers/campbell_aero.hpp"
 
 #include "modal/aero_roots.hpp"
-#include "src/io/csv.hpp"
+#include "src/io/text/csv.hpp"
 
 namespace whirl {
 

@@ -3,7 +3,7 @@
 
 #include <algorithm>
 
-#include "src/model/error.hpp"
+#include "src/base/error.hpp"
 #include "src/writers/campbell_aero.hpp"
 #include "src/writers/campbell_html.hpp"
 #include "src/writers/gnuplot.hpp"
