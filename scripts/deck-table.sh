@@ -43,6 +43,10 @@ simulation and its linearization (`BEMT_UnCoupledSolve`), and whirl says how man
 (`CompAero = 1`: Test01, 04, 06, 09, 11, 16, 17) run through its conversion to AeroDyn v15's elements
 and BEMT ([Aerodynamics](../theory/aerodynamics.md)); SWRT Test16 and 17 interpolate their airfoil tables on the Reynolds
 number (`RENUM`), as AeroDyn v15's `AFTabMod = 2` does in log Re.
+The deck with BeamDyn blades (`CompElast = 2`: Test26) runs with each blade a finite-element body of
+6 × 6 sections reduced to its fixed-root modes ([FE blades](../theory/fe-blades.md)); so do the IEA 3.4's BeamDyn
+variant and an aeroelastic NREL 5MW with BeamDyn blades, kept in `cases/iea34_beamdyn` and
+`cases/nrel5mw_beamdyn`: 2 + 1 BeamDyn decks in all.
 
 HEAD
 echo "| deck | \`whirl modes DECK\` | \`whirl modes DECK --set CompAero=0\` (structure only) |"
