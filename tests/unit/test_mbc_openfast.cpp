@@ -49,7 +49,7 @@ Point campbellPoint(const std::vector<std::string>& files) {
 // openfast_9rpm_mbc3.hpp), printed with 4 decimals. Tolerance: half a unit of the 4th decimal, the
 // rounding of the printed values.
 TEST(MbcOpenFast, Rotating9rpmMatchesMbc3) {
-  const auto& ref = test::kOpenFast9rpmMbc3;
+  const auto& ref = whirl::test::kOpenFast9rpmMbc3;
   const double tol = 0.5e-4 + 1e-12;
   const auto p = campbellPoint({"rotating-9rpm/Main.1.lin", "rotating-9rpm/Main.12.lin", "rotating-9rpm/Main.24.lin"});
   ASSERT_EQ(p.modes.size(), std::size(ref));
