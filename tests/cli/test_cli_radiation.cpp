@@ -75,7 +75,8 @@ TEST(CliRadiation, FloquetRefusesTheStatesOnOneLine) {
   EXPECT_EQ(r.code, 1);
   EXPECT_THAT(r.err, HasSubstr("whirl: error: operating point 1 (6 rpm, pitch 0 deg, azimuth 0 deg): Floquet analysis "
                                "(fewer than 3 blades, turning) of a model with first-order states (HydroDyn "
-                               "radiation) is not supported: --set RdtnMod=0"));
+                               "radiation, unsteady-airfoil states) is not supported: --set RdtnMod=0 leaves the "
+                               "radiation out"));
   EXPECT_FALSE(std::filesystem::exists(dir / "out" / "campbell.csv"));
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// Internal to the case reader (src/io/case_*.cpp): the model under construction with where each
+/// Internal to the case reader (src/io/case/case_*.cpp): the model under construction with where each
 /// part was written, and the readers of each section. Users call readCase() (case_file.hpp).
 #include <memory>
 #include <string>

@@ -1,6 +1,8 @@
 #include "src/io/openfast/openfast_deck.hpp"
 
 #include "src/io/openfast/aerodyn/aero_support.hpp"
+#include "src/io/openfast/offshore/wamit_input.hpp"
+#include "src/io/openfast/offshore/wamit_state_space.hpp"
 #include "src/io/openfast/openfast_input.hpp"
 #include "src/io/openfast/servodyn/discon_input.hpp"
 
@@ -11,6 +13,12 @@ OpenFastDeck readOpenFastDeck(const std::filesystem::path& p, OverrideSet* overr
   OpenFastTurbine& t = d.turbine;
   if (toLower(p.extension().string()) == ".fst") t = readOpenFastTurbine(p, overrides);
   else t.elastodyn = readElastoDyn(p, overrides);
+  // A floating platform's potential flow: WAMIT's coefficients (PotMod = 1) and the state-space
+  // radiation (RdtnMod = 2). On a SubDyn substructure potential flow is refused (requireSupported).
+  if (t.hydrodyn && !t.subdyn && t.hydrodyn->PotMod == 1) {
+    t.wamit = readWamitCoefficients(*t.hydrodyn);
+    if (t.hydrodyn->RdtnMod == 2) t.radiation = readRadiationStateSpace(*t.hydrodyn);
+  }
   bool servo_read = false;
   auto readServo = [&] {
     if (!servo_read) d.servodyn = readServoDynIfEnabled(t.fst, overrides), servo_read = true;

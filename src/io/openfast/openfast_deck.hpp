@@ -28,7 +28,8 @@ struct OpenFastDeckOptions {
 };
 
 /// Reads a `.fst` and the files it names, or (any other extension) an ElastoDyn main file alone: the
-/// structure (readOpenFastTurbine); ServoDyn when CompServo = 1 and the yaw DOF (with
+/// structure (readOpenFastTurbine) with a floating platform's WAMIT files (OpenFastTurbine::wamit,
+/// ::radiation); ServoDyn when CompServo = 1 and the yaw DOF (with
 /// `servodyn_for_yaw`) or the aerodynamics need it; with CompAero ≠ 0 AeroDyn, InflowWind and the
 /// controller of ServoDyn's DISCON.IN. `overrides` (may be null) apply to every file; call
 /// overrides->requireAllUsed() afterwards. Throws InputError naming file, line and key.

@@ -2,8 +2,6 @@
 
 #include "src/base/error.hpp"
 #include "src/io/openfast/offshore/moordyn_input.hpp"
-#include "src/io/openfast/offshore/wamit_input.hpp"
-#include "src/io/openfast/offshore/wamit_state_space.hpp"
 #include "src/io/openfast/openfast_support.hpp"
 
 namespace whirl::io {
@@ -15,14 +13,6 @@ void readHydro(OpenFastTurbine& t, OverrideSet* overrides) {
   if (t.fst.CompHydro != 1) return;
   if (t.fst.CompSeaSt == 1) t.seastate = readSeaState(t.fst.source.getExistingPath("SeaStFile"), overrides);
   t.hydrodyn = readHydroDyn(t.fst.source.getExistingPath("HydroFile"), overrides);
-}
-
-/// The WAMIT files of a floating platform's HydroDyn (PotMod = 1) and its state-space radiation
-/// (RdtnMod = 2): what the turbine builder needs of them, read with the deck.
-void readPotentialFlow(OpenFastTurbine& t) {
-  if (!t.hydrodyn || t.hydrodyn->PotMod != 1) return;
-  t.wamit = readWamitCoefficients(*t.hydrodyn);
-  if (t.hydrodyn->RdtnMod == 2) t.radiation = readRadiationStateSpace(*t.hydrodyn);
 }
 
 }  // namespace
@@ -40,7 +30,6 @@ OpenFastTurbine readOpenFastTurbine(const std::filesystem::path& fst, OverrideSe
     readHydro(t, overrides);
   } else if (hasPlatformDofs(t.elastodyn)) {
     readHydro(t, overrides);
-    readPotentialFlow(t);
     if (t.fst.CompMooring == 1) t.mooring = readMap(t.fst.source.getExistingPath("MooringFile"));
     if (t.fst.CompMooring == 3) t.mooring = readMoorDyn(t.fst.source.getExistingPath("MooringFile"));
   }

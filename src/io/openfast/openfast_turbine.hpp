@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// Reading a turbine from its OpenFAST `.fst` file: the `.fst`, then the structural files it names
-/// (ElastoDyn, BeamDyn, SubDyn, HydroDyn with its WAMIT files, the mooring). The whole deck, with
+/// (ElastoDyn, BeamDyn, SubDyn, HydroDyn, the mooring). The whole deck, with
 /// ServoDyn, AeroDyn and the controller, is readOpenFastDeck (openfast_deck.hpp); ServoDyn is read only
 /// when something needs it, so a case whose ServoDyn file is absent still reads as long as nothing does.
 #include <filesystem>
@@ -31,7 +31,7 @@ struct OpenFastTurbine {
   std::optional<MapInput> mooring;        ///< with a platform DOF on: MAP++ (CompMooring = 1) or MoorDyn (3)
   std::optional<SubDynInput> subdyn;      ///< with CompSub = 1 (then a mooring is not read)
   /// A floating platform's WAMIT coefficients (HydroDyn PotMod = 1) and its state-space radiation
-  /// (RdtnMod = 2, the `.ss` file).
+  /// (RdtnMod = 2, the `.ss` file): read by readOpenFastDeck (openfast_deck.hpp), not by readOpenFastTurbine.
   std::optional<WamitCoefficients> wamit;
   std::optional<RadiationStateSpace> radiation;
   /// With CompElast = 2: the BeamDyn file of each blade (BDBldFile(k), k = 1 … NumBl).
