@@ -95,7 +95,7 @@ void run(const CampbellOptions& opt) {
   if (opt.without_speed_filter) throw InputError("campbell: --without-speed-filter goes with --closed-loop");
   if (opt.rpm_range.empty() + opt.schedule.empty() + opt.wind_range.empty() != 2)
     throw InputError("campbell: give exactly one of --rpm START:STEP:STOP, --schedule FILE and --wind START:STEP:STOP");
-  const Model m = loadModel(opt.model);
+  const Model m = loadModel(opt.model, opt.unsteady_aero);
   if (opt.unsteady_aero && m.aero.ua_mod != 4 && m.aero.ua_mod != 6)
     throw InputError(opt.model.case_path +
                      ": --unsteady-aero: the deck's AeroDyn has no unsteady-airfoil states to add (UA_Mod 4 or 6; "

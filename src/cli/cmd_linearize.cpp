@@ -32,7 +32,7 @@ nlohmann::json namedValues(const Model& m, const VecX& v) {
 }
 
 void run(const LinearizeOptions& opt) {
-  const Model m = loadModel(opt.model);
+  const Model m = loadModel(opt.model, opt.unsteady_aero);
   const OperatingPoint op = solveOperatingPoint(m, startPoint(m, opt.model));
   const std::vector<std::string> problems = checkSolvedPoints(opt.model, m, {op});
   whirl::LinearizeOptions lo;

@@ -16,6 +16,8 @@
 #include "linearize/point_validity.hpp"
 #include "src/base/error.hpp"
 #include "src/base/text.hpp"
+#include "src/dynamics/aero_unsteady.hpp"
+#include "src/io/openfast/aerodyn/aero_support.hpp"
 #include "src/io/openfast/servodyn/discon_input.hpp"
 #include "src/parallel/session.hpp"
 #include "src/turbine/load_model.hpp"
@@ -64,9 +66,11 @@ OperatingPoint startPoint(const Model& m, const ModelOptions& opt) {
 
 bool isYamlCase(const std::string& path) { return isYamlCasePath(path); }
 
-Model loadModel(const ModelOptions& opt) {
+Model loadModel(const ModelOptions& opt, bool unsteady_airfoil_states) {
   std::vector<std::string> notes;
   Model m = loadCaseModel(opt.case_path, opt.sets, opt.allow_outside_files, &notes);
+  // The states are in the linear model only where the model has some (UA_Mod 4 or 6 on some element).
+  if (unsteady_airfoil_states && uaStateCount(m.aero) > 0) std::erase_if(notes, io::isUnsteadyAirfoilNote);
   if (parallel::rank() == 0)
     for (const std::string& n : notes) std::fprintf(stderr, "whirl: note: %s\n", escapeControlCharacters(n).c_str());
   return m;

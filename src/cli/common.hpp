@@ -40,7 +40,10 @@ CLI::Option* addTrimAzimuths(CLI::App& cmd, int& azimuths);
 
 /// Loads the case — a YAML case file (.yaml, .yml), or an OpenFAST .fst / ElastoDyn .dat — with
 /// --set applied before the model is built. --rpm does not change the model: see operatingCondition.
-Model loadModel(const ModelOptions& opt);
+/// The reader's notes go to stderr; with `unsteady_airfoil_states` (the command puts the UA states into
+/// the linear model: --unsteady-aero) and a model that has such states, without the note that they are
+/// left out.
+Model loadModel(const ModelOptions& opt, bool unsteady_airfoil_states = false);
 
 /// "a, b,c" → {"a", "b", "c"}: a comma-separated list of names (--inputs, --outputs), blanks trimmed.
 std::vector<std::string> splitList(const std::string& s);

@@ -39,6 +39,8 @@ TEST(CliAero, CampbellWithUnsteadyAirfoilStates) {
   const auto r = whirl("campbell " + kAero + " --set AFAeroMod=2 --set UAMod=4 --unsteady-aero --wind 8:4:12 " +
                        "--azimuths 4 --no-plot --out '" + dir.string() + "'");
   ASSERT_EQ(r.code, 0) << r.err;
+  // The states are in the model: no note that they are left out (issue 47).
+  EXPECT_EQ(r.err.find("AFAeroMod: 2: unsteady airfoil aerodynamics"), std::string::npos) << r.err;
   EXPECT_NE(slurp(dir / "campbell.csv").find("edge 1 BW"), std::string::npos);
   EXPECT_NE(slurp(dir / "campbell_modes.json").find("\"UA x4 element 10 sin\""), std::string::npos);
   // The aerodynamic roots apart, on no line (modal/aero_roots.hpp).
@@ -47,6 +49,18 @@ TEST(CliAero, CampbellWithUnsteadyAirfoilStates) {
             "rpm,wind_speed,mode,freq_hz,damped_freq_hz,damping_ratio,aero_share,dominant_state");
   EXPECT_NE(aero.find(",aero 1,"), std::string::npos);
   EXPECT_EQ(slurp(dir / "campbell.csv").find("aero "), std::string::npos);
+}
+
+// The note that the UA states are left out comes without --unsteady-aero, and not with it (issue 47).
+TEST(CliAero, UnsteadyAirfoilNoteOnlyWithoutTheStates) {
+  const std::string args = "linearize " + kAero + " --set AFAeroMod=2 --set UAMod=4 --rpm 12 --out '";
+  const std::string note = "AFAeroMod: 2: unsteady airfoil aerodynamics: whirl uses the static airfoil tables";
+  const auto quasi_steady = whirl(args + freshDir("aero_lin_qs").string() + "'");
+  ASSERT_EQ(quasi_steady.code, 0) << quasi_steady.err;
+  EXPECT_NE(quasi_steady.err.find(note), std::string::npos) << quasi_steady.err;
+  const auto with_states = whirl(args + freshDir("aero_lin_ua").string() + "' --unsteady-aero");
+  ASSERT_EQ(with_states.code, 0) << with_states.err;
+  EXPECT_EQ(with_states.err.find(note), std::string::npos) << with_states.err;
 }
 
 TEST(CliAero, CampbellUnsteadyAeroNeedsTheDecksStates) {

@@ -48,6 +48,16 @@ std::vector<std::string> unsupportedOptions(const AeroDynInput& ad) {
   return r.take();
 }
 
+namespace {
+
+constexpr const char* kUnsteadyAirfoilReason =
+    "unsteady airfoil aerodynamics: whirl uses the static airfoil tables, the steady state of the "
+    "unsteady-airfoil model, whose states are not in the linear model";
+
+}  // namespace
+
+bool isUnsteadyAirfoilNote(const std::string& note) { return note.find(kUnsteadyAirfoilReason) != std::string::npos; }
+
 std::vector<std::string> steadySubstitutes(const AeroDynInput& ad) {
   std::vector<std::string> notes;
   const OpenFastFile& f = ad.source;
@@ -62,9 +72,7 @@ std::vector<std::string> steadySubstitutes(const AeroDynInput& ad) {
       "inflow states, which are not in the linear model";
   note(legacy_dbemt, "WakeMod", dbemt);
   note(!legacy_dbemt && ad.Wake_Mod == 1 && ad.DBEMT_Mod > 0, ad.dbemt_key, dbemt);
-  note(ad.unsteadyAero(), ad.ua_key,
-       "unsteady airfoil aerodynamics: whirl uses the static airfoil tables, the steady state of the "
-       "unsteady-airfoil model, whose states are not in the linear model");
+  note(ad.unsteadyAero(), ad.ua_key, kUnsteadyAirfoilReason);
   note(ad.TwrPotent != 0, "TwrPotent", "tower potential flow left out: the blades see the undisturbed wind");
   note(ad.TwrShadow != 0, "TwrShadow", "tower shadow left out: the blades see the undisturbed wind");
   note(ad.TwrAero, "TwrAero", "aerodynamic drag on the tower left out");

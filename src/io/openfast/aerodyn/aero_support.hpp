@@ -37,6 +37,11 @@ std::vector<std::string> unsupportedOptions(const AeroDynInput& ad);
 /// when linearizing"); its Campbell scripts switch them off for the linearization runs.
 std::vector<std::string> steadySubstitutes(const AeroDynInput& ad);
 
+/// True for steadySubstitutes' note on the unsteady airfoil aerodynamics (AFAeroMod = 2, UA_Mod > 0): a
+/// caller that puts the model's states into the linear model (`--unsteady-aero` of linearize and
+/// campbell) drops it, since there the note's "not in the linear model" would be wrong.
+bool isUnsteadyAirfoilNote(const std::string& note);
+
 /// InflowWind: an unknown WindType (1 to 7 are OpenFAST's).
 std::vector<std::string> unsupportedOptions(const InflowWindInput& wind);
 
