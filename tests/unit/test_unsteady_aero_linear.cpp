@@ -143,6 +143,50 @@ TEST(UnsteadyAeroLinear, LinearModelCarriesTheStatesAfterTheStructure) {
   EXPECT_EQ(again.B, qs.B);
 }
 
+TEST(UnsteadyAeroLinear, FlapRateIsNoPitchRateOfTheSection) {
+  // Issue 47: the NREL 5MW's flap modes move far with UA (docs/theory/unsteady-aero.md). Not from the
+  // inputs: the pitch rate ω the HGM model receives is the section's rotation about its own span axis, so a
+  // flap rate (a rotation about an axis across the span) must leave it unchanged, while it changes the
+  // angle of attack by about −ḣ/U. Central differences of the UA inputs at the rated point (12 m/s,
+  // 12.1 rpm, ElastoDyn's initial conditions) in each blade's flap rates, at every element with states.
+  const Model m = readElastoDynModel((std::filesystem::path(WHIRL_SOURCE_DIR) / "cases/nrel5mw/Main_Aero.fst").string(),
+                                     {"AFAeroMod=2", "UAMod=4"});
+  const OperatingPoint op = solveOperatingPoint(m, initialPoint(m));
+  const VecX z = unsteadyAeroSteadyStates(m, op);
+  auto inputs = [&](const VecX& qd) {
+    Workspace<double> ws(m);
+    forwardKinematics(m, ws, op.q, qd, op.qdd);
+    VecX e = VecX::Zero(m.ndof());
+    std::vector<aero::UaInput<double>> in;
+    addUnsteadyAeroLoads<double>(m, ws, op.q, qd, op.u, op.inflow, &z, e, nullptr, &in);
+    return in;
+  };
+  int flap_dofs = 0;
+  for (int d : m.activeDofs()) {
+    if (m.dofs[d].name.find("flap") == std::string::npos) continue;
+    ++flap_dofs;
+    const double h = 1e-3;  // [m/s]; ω and α are smooth in q̇: truncation ~h², far below the tolerances
+    VecX qp = op.qd, qm = op.qd;
+    qp(d) += h;
+    qm(d) -= h;
+    const auto ip = inputs(qp), im = inputs(qm);
+    ASSERT_EQ(ip.size(), static_cast<std::size_t>(uaStateCount(m.aero) / 4));
+    double worst = 0, alpha_rate = 0;
+    for (std::size_t k = 0; k < ip.size(); ++k) {
+      const double dalpha = (ip[k].alpha_ac - im[k].alpha_ac) / (2 * h), domega = (ip[k].omega - im[k].omega) / (2 * h);
+      // The pitch rate's share of α34 (ω c/(2U), c ≤ 4.7 m) against the flap rate's own change of α.
+      worst = std::max(worst, std::abs(domega) * 4.7 / (2 * ip[k].u));
+      alpha_rate = std::max(alpha_rate, std::abs(dalpha));
+    }
+    EXPECT_GT(alpha_rate, 1e-3) << m.dofs[d].name;  // the flap rate does move α (of order φ/U)
+    // Measured: 1.2e-3 (flap 1), 7e-4 (flap 2) of the largest change of α; what is left is the section's
+    // rotation about its deformed span axis at the point (slopes of order 1 %), as AeroDyn's node
+    // orientation gives it. Were ω the flap slope's rate, the share would be of order c/r ≈ 0.08.
+    EXPECT_LT(worst, 5e-3 * alpha_rate) << m.dofs[d].name;
+  }
+  EXPECT_EQ(flap_dofs, 6);  // two flap modes on each of three blades
+}
+
 TEST(UnsteadyAeroLinear, SlowLimitIsTheQuasiSteadyFrozenWake) {
   // Eliminating the states of a slow motion (ż ≈ 0: z = −A_zz⁻¹(Z_q δq + Z_q̇ δq̇)) leaves
   // K + ΔK + G A_zz⁻¹ Z_q and C + ΔC + G A_zz⁻¹ Z_q̇, which are K and C of the quasi-steady frozen wake where

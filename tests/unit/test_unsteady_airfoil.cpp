@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <fstream>
 #include <numbers>
 #include <sstream>
@@ -277,6 +278,107 @@ TEST(DynamicInflow, SteadyStateAndTimeConstants) {
 }  // namespace
 
 namespace {
+
+// Polynomial coefficients, lowest power first.
+using Poly = std::vector<double>;
+Poly times(const Poly& a, const Poly& b) {
+  Poly r(a.size() + b.size() - 1, 0.0);
+  for (std::size_t i = 0; i < a.size(); ++i)
+    for (std::size_t j = 0; j < b.size(); ++j) r[i + j] += a[i] * b[j];
+  return r;
+}
+Poly plus(Poly a, const Poly& b) {
+  a.resize(std::max(a.size(), b.size()), 0.0);
+  for (std::size_t i = 0; i < b.size(); ++i) a[i] += b[i];
+  return a;
+}
+// The roots of a polynomial (eigenvalues of its companion matrix).
+Eigen::VectorXcd roots(const Poly& p) {
+  const int n = static_cast<int>(p.size()) - 1;
+  Eigen::MatrixXd comp = Eigen::MatrixXd::Zero(n, n);
+  for (int i = 1; i < n; ++i) comp(i, i - 1) = 1.0;
+  for (int i = 0; i < n; ++i) comp(i, n - 1) = -p[static_cast<std::size_t>(i)] / p.back();
+  return Eigen::EigenSolver<Eigen::MatrixXd>(comp).eigenvalues();
+}
+
+// A plunging typical section (mass m and stiffness k per span, plunge h up, lift only, attached flow at 2°):
+// its eigenvalues with the element's HGM states, assembled here from the element's linear model
+// (uaElementLinear: δα34 = −ḣ/U, δU = δω = 0 to first order) [1/s], the quasi-steady ones first.
+struct PlungeSection {
+  double m, k, chord, u, rho = 1.225;
+  Eigen::VectorXcd withStates(const UaSection& s) const {
+    const UaInput<double> in{2 * kDeg, 2 * kDeg, u, 0.0};
+    const UaElementLinear lin = uaElementLinear(s, hgmSteady(s, in), in);
+    const double q = 0.5 * rho * u * u * chord;       // lift per span per unit Cl [N/m]
+    Eigen::MatrixXd a = Eigen::MatrixXd::Zero(6, 6);  // [h, ḣ, x1..x4]
+    a(0, 1) = 1.0;
+    a(1, 0) = -k / m;
+    a(1, 1) = -q * lin.D(0, 0) / (u * m);
+    a.block<1, 4>(1, 2) = q * lin.C.row(0) / m;
+    a.block<4, 1>(2, 1) = -lin.B.col(0) / u;
+    a.block<4, 4>(2, 2) = lin.A;
+    return Eigen::EigenSolver<Eigen::MatrixXd>(a).eigenvalues();
+  }
+  // Theodorsen's circulatory lift on a plunging plate, L = −2π ρ U b C(k) ḣ (b = c/2; Theodorsen 1935),
+  // with C in R. T. Jones's rational form in reduced Laplace variable p = s b/U (Jones 1940):
+  // C(p) = 1 − A1 p/(p + b1) − A2 p/(p + b2). m s² + k + 2π ρ U b s C = 0 times (p + b1)(p + b2) is a
+  // polynomial of degree 4 in p; its roots [1/s]. The apparent mass π ρ b² ḧ is left out, as the HGM
+  // model (AeroDyn UA_Mod 4) leaves it out.
+  Eigen::VectorXcd theodorsenJones(double A1, double b1, double A2, double b2) const {
+    const double tu = chord / (2 * u), ca = kPi * rho * u * chord;
+    const Poly p1{b1, 1.0}, p2{b2, 1.0}, p12 = times(p1, p2);
+    const Poly structure{k, 0.0, m / (tu * tu)};
+    const Poly lift = times(Poly{0.0, ca / tu}, plus(plus(p12, times(Poly{0.0, -A1}, p2)), times(Poly{0.0, -A2}, p1)));
+    return roots(plus(times(structure, p12), lift)) / tu;
+  }
+};
+
+TEST(UnsteadyAirfoilLinear, PlungingSectionMatchesTheodorsenWithJonesApproximation) {
+  // A flap-like mode heavily damped by its lift (quasi-steady ζ = 0.8 at 0.6 Hz; c = 3 m, U = 60 m/s as at
+  // the outer NREL 5MW blade at rated). With Jones's constants (A1 = 0.165, b1 = 0.0455, A2 = 0.335,
+  // b2 = 0.3) the HGM element reproduces Theodorsen's plunge with Jones's C(k); with AeroDyn's (0.3, 0.14,
+  // 0.7, 0.53) the same lift with that C. Four eigenvalues are the polynomial's roots, to round-off; the
+  // other two are the lags of x3 and x4, which do not feed the attached lift: −1/(T_p Tu), −1/(T_f0 Tu).
+  const ThinAirfoil af;
+  PlungeSection sec{0, 0, 3.0, 60.0};
+  const double w0 = 2 * kPi * 0.6, ca = kPi * sec.rho * sec.u * sec.chord, zeta = 0.8;
+  sec.m = ca / (2 * zeta * w0);
+  sec.k = sec.m * w0 * w0;
+  const double tu = sec.chord / (2 * sec.u);
+  struct Constants {
+    double A1, b1, A2, b2;
+  };
+  for (const Constants& j : {Constants{0.165, 0.0455, 0.335, 0.3}, Constants{0.3, 0.14, 0.7, 0.53}}) {
+    UaTable table = af.ua;
+    table.c.A1 = j.A1;
+    table.c.b1 = j.b1;
+    table.c.A2 = j.A2;
+    table.c.b2 = j.b2;
+    const Eigen::VectorXcd ua = sec.withStates(UaSection{&af.polar, &table, sec.chord, true});
+    Eigen::VectorXcd expected(6);
+    expected << sec.theodorsenJones(j.A1, j.b1, j.A2, j.b2), -1.0 / (table.c.T_p * tu), -1.0 / (table.c.T_f0 * tu);
+    std::vector<bool> used(6, false);
+    for (int i = 0; i < 6; ++i) {
+      int best = -1;
+      for (int k = 0; k < 6; ++k)
+        if (!used[static_cast<std::size_t>(k)] &&
+            (best < 0 || std::abs(ua(k) - expected(i)) < std::abs(ua(best) - expected(i))))
+          best = k;
+      used[static_cast<std::size_t>(best)] = true;
+      EXPECT_LT(std::abs(ua(best) - expected(i)), 1e-9 * std::abs(expected(i)))
+          << "A1 = " << j.A1 << ": " << expected(i);
+    }
+    // The mechanism (docs/theory/unsteady-aero.md): the lagged lift of a heavily damped mode stiffens it.
+    // Quasi-steady (C = 1) the pair is at 0.6 Hz with ζ = 0.8 (damped 0.36 Hz); with the lag its natural
+    // frequency rises and its damping ratio falls: 0.770 Hz, ζ 0.671 with Jones's constants (Theodorsen's
+    // theory itself), 1.016 Hz, ζ 0.627 with AeroDyn's, where all the lift is lagged (A1 + A2 = 1).
+    const std::complex<double> pair = *std::max_element(ua.begin(), ua.end(), [](const auto& a, const auto& b) {
+      return a.imag() < b.imag();
+    });
+    EXPECT_GT(std::abs(pair) / (2 * kPi), 0.6 * (j.A1 + j.A2 < 0.9 ? 1.25 : 1.6)) << pair;
+    EXPECT_LT(-pair.real() / std::abs(pair), 0.7) << pair;
+  }
+}
 
 TEST(UnsteadyAirfoilLinear, SlowInputsGiveTheQuasiSteadyDerivative) {
   // Reduced frequency → 0: the linear model's static gain D − C A⁻¹ B equals the derivative of the model's
