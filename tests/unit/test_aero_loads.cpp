@@ -13,6 +13,7 @@
 #include "src/dynamics/residual.hpp"
 #include "src/turbine/elastodyn_model.hpp"
 #include "tests/support/aero_rotor_model.hpp"
+#include "tests/support/residual_differences.hpp"
 
 namespace whirl {
 namespace {
@@ -32,28 +33,7 @@ OperatingPoint perturbedPoint(const Model& m) {
   return op;
 }
 
-// Central differences of e with respect to one argument; the residual is evaluated with `frozen`.
-MatX centralDifferences(const Model& m, const OperatingPoint& op, Wrt wrt, const std::vector<int>& cols,
-                        const AeroInflow* frozen) {
-  Workspace<double> ws(m);
-  MatX J(m.ndof(), cols.size());
-  VecX ep(m.ndof()), em(m.ndof());
-  for (size_t c = 0; c < cols.size(); ++c) {
-    const double h = 1e-6;
-    auto eval = [&](double step, VecX& e) {
-      OperatingPoint p = op;
-      VecX& x = wrt == Wrt::Q ? p.q : wrt == Wrt::Qd ? p.qd : p.u;
-      x(cols[c]) += step;
-      if (wrt == Wrt::U)
-        for (const InputDofTarget& t : m.inputs[cols[c]].dofs) p.q(t.dof) += t.gain * step;
-      residual(m, ws, p.q, p.qd, p.qdd, p.u, e, frozen);
-    };
-    eval(h, ep);
-    eval(-h, em);
-    J.col(c) = (ep - em) / (2 * h);
-  }
-  return J;
-}
+using test::centralDifferences;
 
 void expectJacobiansMatch(const Model& m, const OperatingPoint& op, const AeroInflow* frozen) {
   JacobianWorkspace jw(m);

@@ -15,6 +15,7 @@
 #include "modal/rotor_modes.hpp"
 #include "src/dynamics/residual.hpp"
 #include "src/turbine/elastodyn_model.hpp"
+#include "tests/support/residual_differences.hpp"
 
 namespace whirl {
 namespace {
@@ -39,25 +40,7 @@ OperatingPoint deflected(const Model& m) {
   return op;
 }
 
-MatX centralDifferences(const Model& m, const OperatingPoint& op, Wrt wrt, const std::vector<int>& cols,
-                        const AeroInflow* frozen) {
-  Workspace<double> ws(m);
-  MatX J(m.ndof(), cols.size());
-  VecX ep(m.ndof()), em(m.ndof());
-  const double h = 1e-6;
-  for (std::size_t c = 0; c < cols.size(); ++c) {
-    auto eval = [&](double step, VecX& e) {
-      OperatingPoint p = op;
-      VecX& x = wrt == Wrt::Q ? p.q : p.qd;
-      x(cols[c]) += step;
-      residual(m, ws, p.q, p.qd, p.qdd, p.u, e, frozen);
-    };
-    eval(h, ep);
-    eval(-h, em);
-    J.col(c) = (ep - em) / (2 * h);
-  }
-  return J;
-}
+using test::centralDifferences;
 
 // The columns of the blade's elastic coordinates and the rows of every coordinate: AD against central
 // differences (h = 1e-6 on loads up to ~1e6 N: truncation and round-off ~1e-7 relative; 2e-6 as in
