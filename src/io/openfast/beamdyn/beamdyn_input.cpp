@@ -193,11 +193,11 @@ BeamDynBlade readBeamDynBlade(const std::filesystem::path& file) {
 }
 
 BeamDynInput readBeamDyn(const std::filesystem::path& file, OverrideSet* overrides) {
+  const OpenFastLines lines = OpenFastLines::read(file);  // the file opened once: keys and tables
   BeamDynInput in;
-  in.source = OpenFastFile::read(file);
+  in.source = OpenFastFile::parse(lines.text(), file);
   if (overrides) overrides->applyTo(in.source);
   const OpenFastFile& f = in.source;
-  const OpenFastLines lines = OpenFastLines::read(file);
   checkOnce(f, {"quadrature", "refine", "member_total", "kp_total", "order_elem", "BldFile", "UsePitchAct"});
   const Rows rows(f, lines);
   in.quadrature = f.getInt("quadrature");

@@ -75,12 +75,12 @@ Vec6 preload(const OpenFastFile& f, const OpenFastLines& lines) {
 }  // namespace
 
 HydroDynInput readHydroDyn(const std::filesystem::path& file, OverrideSet* overrides) {
+  const OpenFastLines lines = OpenFastLines::read(file);  // the file opened once: keys and tables
   HydroDynInput h;
-  h.source = OpenFastFile::read(file);
+  h.source = OpenFastFile::parse(lines.text(), file);
   h.source.checkLayout(hydroDynLayout());
   if (overrides) overrides->applyTo(h.source);
   const OpenFastFile& f = h.source;
-  const OpenFastLines lines = OpenFastLines::read(file);
   h.geometry = readHydroDynMembers(f, lines);
   // `default` is the .fst's value (HydroDyn_Input.f90 of OpenFAST v3, HydroDyn_ParseInput:
   // ParseVarWDefault 'WtrDens' with defWtrDens, the glue code's): nullopt here, the .fst's value later.

@@ -500,10 +500,10 @@ std::string SubDynInput::where(int line, const std::string& key, const std::stri
 }
 
 SubDynInput readSubDyn(const std::filesystem::path& file, OverrideSet* overrides) {
+  const OpenFastLines lines = OpenFastLines::read(file);  // the file opened once: keys and tables
   SubDynInput sd;
-  sd.source = OpenFastFile::read(file);
+  sd.source = OpenFastFile::parse(lines.text(), file);
   if (overrides) overrides->applyTo(sd.source);
-  const OpenFastLines lines = OpenFastLines::read(file);
   checkDuplicates(sd.source);
   Refusals r(sd.source);
   readModes(sd, r);
