@@ -1,5 +1,7 @@
 #include "src/io/openfast/openfast_turbine.hpp"
 
+#include <algorithm>
+
 #include "src/base/error.hpp"
 #include "src/io/openfast/offshore/moordyn_input.hpp"
 #include "src/io/openfast/openfast_support.hpp"
@@ -22,8 +24,13 @@ OpenFastTurbine readOpenFastTurbine(const std::filesystem::path& fst, OverrideSe
   t.fst = readFst(fst, overrides);
   t.elastodyn = readElastoDyn(t.fst.source.getExistingPath("EDFile"), overrides);
   if (t.fst.CompElast == 2)
-    for (int k = 1; k <= t.elastodyn.config.NumBl; ++k)
-      t.beamdyn.push_back(readBeamDyn(t.fst.source.getExistingPath("BDBldFile(" + std::to_string(k) + ")"), overrides));
+    for (int k = 1; k <= t.elastodyn.config.NumBl; ++k) {
+      const std::filesystem::path p = t.fst.source.getExistingPath("BDBldFile(" + std::to_string(k) + ")");
+      // Blades sharing a file (the usual deck) read it once.
+      const auto same = std::find_if(t.beamdyn.begin(), t.beamdyn.end(),
+                                     [&](const BeamDynInput& b) { return b.source.path() == p; });
+      t.beamdyn.push_back(same != t.beamdyn.end() ? *same : readBeamDyn(p, overrides));
+    }
   if (t.fst.CompSub == 1) {
     // A mooring on a SubDyn substructure is refused by requireSupported, unread.
     t.subdyn = readSubDyn(t.fst.source.getExistingPath("SubFile"), overrides);
