@@ -273,93 +273,93 @@ RotorModes linearModelModes(const Model& m, const LinearModel& lin, const std::v
   return multibladeModes(c, linearLayout(c, lin), {s});
 }
 
-RotorModes multibladeModes(const RotorCoordinates& c, const MbcLayout& layout, const std::vector<MbcSample>& samples) {
-  RotorModes out;
+namespace {
+
+/// Per coordinate of c, the state that carries it: its displacement, or its first-order state.
+std::vector<int> stateOfCoordinate(const RotorCoordinates& c) {
   const int n = static_cast<int>(c.names.size());
-  const bool by_participation = !c.coordinate_of_state.empty();
-  // State that carries each coordinate (its displacement, or the first-order state).
   std::vector<int> state_of(n);
   for (int i = 0; i < n; ++i) state_of[i] = i;
-  if (by_participation)
+  if (!c.coordinate_of_state.empty())
     for (int s = static_cast<int>(c.coordinate_of_state.size()) - 1; s >= 0; --s)
       state_of[c.coordinate_of_state[s]] = s;
-  auto groupOf = [&](int i) { return c.groups.empty() ? c.names[i] : c.groups[i]; };
-  int nb = 0;
-  for (int b : c.blade) nb = std::max(nb, b + 1);
-  const double rotor_speed = samples.front().rotor_speed;
-  std::vector<NamingCoordinate> coords(n);
-  MbcResult mbc;
-  const bool teeter = std::find(c.teeter.begin(), c.teeter.end(), true) != c.teeter.end();
-  // A single blade with no fixed-frame coordinate (a blade-only deck) needs no transform: its rotating
-  // coordinates are its multiblade ones (N = 1), and the azimuth average of A is MBC3's.
-  const bool blade_only = nb == 1 && !teeter && std::find(c.blade.begin(), c.blade.end(), -1) == c.blade.end();
-  if ((nb > 0 || teeter) && nb < 3 && !blade_only && std::abs(rotor_speed) > 0 && samples.size() >= 2) {
-    // With fewer than 3 blades (or a teeter, which only 2 blades have) the transformed system stays
-    // periodic: Floquet analysis, when the azimuths cover the revolution evenly (else the first
-    // sample, as below).
-    bool even = true;
-    for (std::size_t k = 1; k < samples.size(); ++k)
-      even = even && std::abs(samples[k].azimuth - samples[0].azimuth -
-                              2 * std::numbers::pi * double(k) / double(samples.size())) < 1e-6;
-    if (even) {
-      // Floquet's fixed-frame view pairs every coordinate with a rate; a first-order state has none.
-      std::vector<int> states_per(n, 0);
-      for (int k : c.coordinate_of_state) ++states_per[k];
-      if (std::find(states_per.begin(), states_per.end(), 1) != states_per.end())
-        throw InputError(
-            "Floquet analysis (fewer than 3 blades, turning) of a model with first-order states "
-            "(HydroDyn radiation, unsteady-airfoil states) is not supported: --set RdtnMod=0 leaves the "
-            "radiation out, no --unsteady-aero the airfoil states");
-      return floquetModes(c, samples);
+  return state_of;
+}
+
+/// Per coordinate of c, how many states carry it: 2 (displacement and rate) or 1 (a first-order state);
+/// 0 without first-order states.
+std::vector<int> statesPerCoordinate(const RotorCoordinates& c) {
+  std::vector<int> states_per(c.names.size(), 0);
+  for (int k : c.coordinate_of_state) ++states_per[k];
+  return states_per;
+}
+
+/// The naming group of coordinate i: its group when c has groups, else its name.
+const std::string& namingGroup(const RotorCoordinates& c, int i) { return c.groups.empty() ? c.names[i] : c.groups[i]; }
+
+/// Whether the samples' azimuths [rad] cover the revolution evenly (sample k at 2πk/N past the first).
+bool evenAzimuths(const std::vector<MbcSample>& samples) {
+  bool even = true;
+  for (std::size_t k = 1; k < samples.size(); ++k)
+    even = even && std::abs(samples[k].azimuth - samples[0].azimuth -
+                            2 * std::numbers::pi * double(k) / double(samples.size())) < 1e-6;
+  return even;
+}
+
+/// Floquet analysis of samples that cover the revolution evenly (fewer than 3 blades, turning).
+/// InputError when c has first-order states: Floquet's fixed-frame view pairs every coordinate with a rate.
+RotorModes floquetRotorModes(const RotorCoordinates& c, const std::vector<MbcSample>& samples) {
+  const std::vector<int> states_per = statesPerCoordinate(c);
+  if (std::find(states_per.begin(), states_per.end(), 1) != states_per.end())
+    throw InputError(
+        "Floquet analysis (fewer than 3 blades, turning) of a model with first-order states "
+        "(HydroDyn radiation, unsteady-airfoil states) is not supported: --set RdtnMod=0 leaves the "
+        "radiation out, no --unsteady-aero the airfoil states");
+  return floquetModes(c, samples);
+}
+
+/// With 3 or more blades: the azimuth average of A in multiblade coordinates (out.A), and the names
+/// and naming groups of those coordinates: the j-th coordinate of every blade forms one set named
+/// after blade 1's, with its multiblade kind (collective, cosine, …).
+void multibladeCoordinates(const RotorCoordinates& c, const MbcLayout& layout, const std::vector<MbcSample>& samples,
+                           int nb, RotorModes& out, std::vector<NamingCoordinate>& coords) {
+  const int n = static_cast<int>(c.names.size());
+  const std::vector<int> state_of = stateOfCoordinate(c);
+  out.num_blades = nb;
+  const MbcResult mbc = mbcAverage(layout, samples);
+  out.A = mbc.A;
+  std::vector<std::vector<int>> per_blade(nb);
+  for (int i = 0; i < n; ++i)
+    if (c.blade[i] >= 0) per_blade[c.blade[i]].push_back(i);
+  out.coordinates.resize(n);
+  for (int i = 0; i < n; ++i) {
+    coords[i].kind = mbc.states[state_of[i]];
+    if (c.blade[i] < 0) {
+      coords[i].group = namingGroup(c, i);
+      out.coordinates[i] = c.names[i];
+      continue;
     }
+    const auto& list = per_blade[c.blade[i]];
+    const size_t j = std::find(list.begin(), list.end(), i) - list.begin();
+    coords[i].group = multibladeBaseName(namingGroup(c, per_blade[0].at(j)));
+    out.coordinates[i] = multibladeBaseName(c.names[per_blade[0].at(j)]) + " " + toString(coords[i].kind);
   }
-  // Parked (or uneven azimuths): the first model, fixed-frame names; a single blade (a blade-only deck)
-  // has no pattern across blades to name, its modes take its coordinates' names below.
-  if ((nb > 1 || teeter) && nb < 3 && !by_participation) return parkedRotorModes(c, samples.front());
-  if (nb < 3) {
-    // No transform: with fewer than 3 blades the transformed system stays periodic.
-    out.A = samples.front().A;
-    if (blade_only) {
-      for (std::size_t k = 1; k < samples.size(); ++k) out.A += samples[k].A;
-      out.A /= static_cast<double>(samples.size());
-    }
-    for (int i = 0; i < n; ++i) coords[i].group = groupOf(i);
-    out.coordinates = c.names;
-  } else {
-    out.num_blades = nb;
-    mbc = mbcAverage(layout, samples);
-    out.A = mbc.A;
-    // Coordinate groups: the j-th coordinate of every blade forms one set named after blade 1's.
-    std::vector<std::vector<int>> per_blade(nb);
-    for (int i = 0; i < n; ++i)
-      if (c.blade[i] >= 0) per_blade[c.blade[i]].push_back(i);
-    out.coordinates.resize(n);
-    for (int i = 0; i < n; ++i) {
-      coords[i].kind = mbc.states[state_of[i]];
-      if (c.blade[i] < 0) {
-        coords[i].group = groupOf(i);
-        out.coordinates[i] = c.names[i];
-        continue;
-      }
-      const auto& list = per_blade[c.blade[i]];
-      const size_t j = std::find(list.begin(), list.end(), i) - list.begin();
-      coords[i].group = multibladeBaseName(groupOf(per_blade[0].at(j)));
-      out.coordinates[i] = multibladeBaseName(c.names[per_blade[0].at(j)]) + " " + toString(coords[i].kind);
-    }
-  }
-  out.modes = by_participation ? participationModes(eigenStandard(out.A, true), c.coordinate_of_state, out.coordinates)
-                               : modesFromEigen(eigenStandard(out.A), n, c.weights, out.coordinates);
-  // The blade elements' aerodynamic states (rotating first-order states, modal/aero_roots.hpp): their own
-  // roots are named apart below, every other mode from its structural coordinates alone.
+}
+
+/// Names every mode (nameRotorMode). With the blade elements' aerodynamic states (rotating first-order
+/// states, modal/aero_roots.hpp) their own roots are named apart, every other mode from its structural
+/// coordinates alone.
+void nameMultibladeModes(std::vector<Mode>& modes, const RotorCoordinates& c,
+                         const std::vector<NamingCoordinate>& coords, double rotor_speed) {
+  const int n = static_cast<int>(c.names.size());
   std::vector<bool> aero(static_cast<std::size_t>(n), false);
-  if (by_participation) {
-    std::vector<int> per(n, 0);
-    for (int k : c.coordinate_of_state) ++per[k];
+  if (!c.coordinate_of_state.empty()) {
+    const std::vector<int> per = statesPerCoordinate(c);
     for (int i = 0; i < n; ++i) aero[i] = per[i] == 1 && c.blade[i] >= 0;
   }
   const bool any_aero = std::find(aero.begin(), aero.end(), true) != aero.end();
-  if (any_aero) nameAeroRoots(out.modes, aero);
-  for (auto& mode : out.modes) {
+  if (any_aero) nameAeroRoots(modes, aero);
+  for (auto& mode : modes) {
     if (!any_aero) {
       nameRotorMode(mode, coords, c.azimuth, c.held, rotor_speed);
       continue;
@@ -371,44 +371,92 @@ RotorModes multibladeModes(const RotorCoordinates& c, const MbcLayout& layout, c
     nameRotorMode(mode, coords, c.azimuth, c.held, rotor_speed);
     mode.participation = full;
   }
+}
+
+/// Marks the modes carried by first-order states (Mode::first_order). A zero root carried by them (a
+/// coordinate with one state: HydroDyn's wave-excitation filter) is no rigid-body motion but a state
+/// that does not change by itself: renamed "… (zero root)".
+void markFirstOrderModes(std::vector<Mode>& modes, const RotorCoordinates& c) {
+  const int n = static_cast<int>(c.names.size());
+  const std::vector<int> states_per = statesPerCoordinate(c);
+  for (auto& mode : modes) {
+    double first_order = 0;
+    for (int i = 0; i < n; ++i)
+      if (states_per[i] == 1) first_order += mode.participation(i);
+    if (!isAeroRoot(mode)) mode.first_order = first_order > 0.5;  // an aerodynamic root stays one
+    const std::string tag = " (rigid body)";
+    if (mode.rigid_body && first_order > 0.5 && mode.name.size() > tag.size() &&
+        mode.name.compare(mode.name.size() - tag.size(), tag.size(), tag) == 0) {
+      mode.rigid_body = false;
+      mode.name = mode.name.substr(0, mode.name.size() - tag.size()) + " (zero root)";
+    }
+  }
+}
+
+/// Real roots listed one by one (participationModes) but one rigid-body motion: the two roots of a
+/// free azimuth (the multiblade average leaves them ~1e-4 Hz apart from zero) or of a free yaw (zero
+/// and its decay) are one mode, as whirl's own modes count them. The pair's frequency [Hz] and damping
+/// as modal/modes.hpp gives them: f = √(λ₁λ₂)/2π, ζ = −(λ₁+λ₂)/(2√(λ₁λ₂)), zero when a root is zero.
+std::vector<Mode> mergeRigidBodyRoots(std::vector<Mode>& modes) {
+  std::vector<Mode> kept;
+  for (auto& mode : modes) {
+    const auto k = std::find_if(kept.begin(), kept.end(), [&](const Mode& m) {
+      return m.rigid_body && m.damped_freq_hz == 0 && m.name == mode.name;
+    });
+    if (!mode.rigid_body || mode.damped_freq_hz != 0 || k == kept.end()) {
+      kept.push_back(std::move(mode));
+      continue;
+    }
+    const double l1 = -k->damping_ratio * k->freq_hz, l2 = -mode.damping_ratio * mode.freq_hz;  // λ/2π
+    const double f = std::sqrt(std::abs(l1 * l2));
+    k->damping_ratio = f > 0 ? -(l1 + l2) / (2 * f) : 0;
+    k->freq_hz = f;
+  }
+  return kept;
+}
+
+}  // namespace
+
+RotorModes multibladeModes(const RotorCoordinates& c, const MbcLayout& layout, const std::vector<MbcSample>& samples) {
+  RotorModes out;
+  const int n = static_cast<int>(c.names.size());
+  const bool by_participation = !c.coordinate_of_state.empty();
+  int nb = 0;
+  for (int b : c.blade) nb = std::max(nb, b + 1);
+  const double rotor_speed = samples.front().rotor_speed;
+  std::vector<NamingCoordinate> coords(n);
+  const bool teeter = std::find(c.teeter.begin(), c.teeter.end(), true) != c.teeter.end();
+  // A single blade with no fixed-frame coordinate (a blade-only deck) needs no transform: its rotating
+  // coordinates are its multiblade ones (N = 1), and the azimuth average of A is MBC3's.
+  const bool blade_only = nb == 1 && !teeter && std::find(c.blade.begin(), c.blade.end(), -1) == c.blade.end();
+  // With fewer than 3 blades (or a teeter, which only 2 blades have) the transformed system stays
+  // periodic: Floquet analysis, when the azimuths cover the revolution evenly (else the first
+  // sample, as below).
+  if ((nb > 0 || teeter) && nb < 3 && !blade_only && std::abs(rotor_speed) > 0 && samples.size() >= 2 &&
+      evenAzimuths(samples))
+    return floquetRotorModes(c, samples);
+  // Parked (or uneven azimuths): the first model, fixed-frame names; a single blade (a blade-only deck)
+  // has no pattern across blades to name, its modes take its coordinates' names below.
+  if ((nb > 1 || teeter) && nb < 3 && !by_participation) return parkedRotorModes(c, samples.front());
+  if (nb < 3) {
+    // No transform: with fewer than 3 blades the transformed system stays periodic.
+    out.A = samples.front().A;
+    if (blade_only) {
+      for (std::size_t k = 1; k < samples.size(); ++k) out.A += samples[k].A;
+      out.A /= static_cast<double>(samples.size());
+    }
+    for (int i = 0; i < n; ++i) coords[i].group = namingGroup(c, i);
+    out.coordinates = c.names;
+  } else {
+    multibladeCoordinates(c, layout, samples, nb, out, coords);
+  }
+  out.modes = by_participation ? participationModes(eigenStandard(out.A, true), c.coordinate_of_state, out.coordinates)
+                               : modesFromEigen(eigenStandard(out.A), n, c.weights, out.coordinates);
+  nameMultibladeModes(out.modes, c, coords, rotor_speed);
   if (nb >= 3) distinctBladeNames(out.modes, coords, rotor_speed);
   if (by_participation) {
-    // Real roots listed one by one (participationModes) but one rigid-body motion: the two roots of a
-    // free azimuth (the multiblade average leaves them ~1e-4 Hz apart from zero) or of a free yaw
-    // (zero and its decay) are one mode, as whirl's own modes count them.
-    // A zero root carried by first-order states (a coordinate with one state: HydroDyn's wave-excitation
-    // filter) is no rigid-body motion but a state that does not change by itself.
-    std::vector<int> states_per(n, 0);
-    for (int k : c.coordinate_of_state) ++states_per[k];
-    for (auto& mode : out.modes) {
-      double first_order = 0;
-      for (int i = 0; i < n; ++i)
-        if (states_per[i] == 1) first_order += mode.participation(i);
-      if (!isAeroRoot(mode)) mode.first_order = first_order > 0.5;  // an aerodynamic root stays one
-      const std::string tag = " (rigid body)";
-      if (mode.rigid_body && first_order > 0.5 && mode.name.size() > tag.size() &&
-          mode.name.compare(mode.name.size() - tag.size(), tag.size(), tag) == 0) {
-        mode.rigid_body = false;
-        mode.name = mode.name.substr(0, mode.name.size() - tag.size()) + " (zero root)";
-      }
-    }
-    // The pair's frequency and damping as modal/modes.hpp gives them: f = √(λ₁λ₂)/2π,
-    // ζ = −(λ₁+λ₂)/(2√(λ₁λ₂)), zero when a root is zero.
-    std::vector<Mode> kept;
-    for (auto& mode : out.modes) {
-      const auto k = std::find_if(kept.begin(), kept.end(), [&](const Mode& m) {
-        return m.rigid_body && m.damped_freq_hz == 0 && m.name == mode.name;
-      });
-      if (!mode.rigid_body || mode.damped_freq_hz != 0 || k == kept.end()) {
-        kept.push_back(std::move(mode));
-        continue;
-      }
-      const double l1 = -k->damping_ratio * k->freq_hz, l2 = -mode.damping_ratio * mode.freq_hz;  // λ/2π
-      const double f = std::sqrt(std::abs(l1 * l2));
-      k->damping_ratio = f > 0 ? -(l1 + l2) / (2 * f) : 0;
-      k->freq_hz = f;
-    }
-    out.modes = std::move(kept);
+    markFirstOrderModes(out.modes, c);
+    out.modes = mergeRigidBodyRoots(out.modes);
   }
   return out;
 }
