@@ -262,6 +262,142 @@ double balancingTorque(TorqueBalance& balance, double omega, double beta, double
   return t1;
 }
 
+// The checks of a trim with ROSCO: a generator speed output on the rotor azimuth (gear > 0), a
+// generator-torque input, and torque control.
+void requireControllerTrim(const Model& m, const RoscoController& c, double gear, const std::string& at) {
+  if (!(gear > 0)) throw InputError(at + "the model has no generator speed output (GenSpeed) on the rotor azimuth");
+  if (m.roles.generator_torque_input < 0) throw InputError(at + "the model has no generator-torque input");
+  if (c.VS_ControlMode == 0) {
+    const Where w = c.at("VS_ControlMode");
+    throw InputError(where(w.file, w.line, w.key, "0: no torque control, so no steady state to trim to"));
+  }
+}
+
+// What ROSCO's trim at one wind speed [m/s] works with: the balance, the gearbox ratio, the balance's
+// tolerance [N m], the minimum pitch [rad] and the messages' prefix `at`.
+struct ControllerTrim {
+  const Model& m;
+  const RoscoController& c;
+  const TrimOptions& opt;
+  TorqueBalance& balance;
+  double wind, gear, ftol, beta_min;
+  const std::string& at;
+  // A generator speed [rad/s] as the rotor speed in rpm.
+  std::string rpmOf(double gen_speed) const {
+    const double rpm = 30 / std::numbers::pi;
+    return std::to_string(gen_speed / gear * rpm) + " rpm";
+  }
+};
+
+// The point ROSCO's trim settles at: rotor speed [rad/s], generator torque [N m], pitch [rad], and the
+// controller's region.
+struct ControllerPoint {
+  double omega = 0, torque = std::numeric_limits<double>::quiet_NaN(), pitch = 0;
+  std::string region;
+};
+
+// The torque loop at the minimum pitch: its speed reference and the branch it is on (TSR tracking:
+// TSRopt·V/R clipped to [VS_MinOMSpd, VS_RefSpd]; k·Ω²: the balance with Rgn2K·ω², clipped likewise),
+// with the torque that balances the rotor there. ComputeError below cut-in (torque below VS_MinTq).
+ControllerPoint torqueLoopPoint(const ControllerTrim& x) {
+  const RoscoController& c = x.c;
+  const double gear = x.gear;
+  ControllerPoint p;
+  p.pitch = x.beta_min;
+  const double w_lo = std::max(c.VS_MinOMSpd / gear,
+                               c.VS_MinOMSpd > 0 ? 0.0 : x.opt.min_tsr * x.wind / x.m.aero.rotor_radius);
+  const double w_hi = c.VS_RefSpd / gear;
+  if (c.VS_ControlMode == 2) {
+    const double ref = c.VS_TSRopt * x.wind / c.WE_BladeRadius * c.WE_GearboxRatio;  // ComputeVariablesSetpoints
+    p.omega = std::clamp(ref, c.VS_MinOMSpd, c.VS_RefSpd) / gear;
+    p.region = ref <= c.VS_MinOMSpd ? "1.5" : ref >= c.VS_RefSpd ? "2.5" : "2";
+  } else {
+    // k·Ω² (1) and the power- or torque-based TSR tracking (3, 4), whose references settle on k·Ω².
+    auto fk = [&](double w) {
+      const double wg = gear * w;
+      return x.balance(w, x.beta_min, c.VS_Rgn2K * wg * wg).f;
+    };
+    const double f_lo = fk(w_lo), f_hi = fk(w_hi);
+    if (f_lo <= 0) {
+      p.omega = w_lo, p.region = "1.5";
+    } else if (f_hi >= 0) {
+      p.omega = w_hi, p.region = "2.5";
+    } else {
+      const BrentResult r = brent(fk, w_lo, w_hi, f_lo, f_hi, x.ftol, 1e-10, 100);
+      if (!r.converged) throw ComputeError(x.at + "the rotor-speed trim on VS_Rgn2K did not converge");
+      p.omega = r.x, p.region = "2";
+      const double wg = gear * p.omega;
+      p.torque = c.VS_Rgn2K * wg * wg;
+    }
+  }
+  if (std::isnan(p.torque)) p.torque = balancingTorque(x.balance, p.omega, x.beta_min, gear, x.ftol, x.at);
+  if (p.torque < c.VS_MinTq)
+    throw ComputeError(x.at + "below cut-in: at the torque loop's speed " + x.rpmOf(gear * p.omega) +
+                       " the aerodynamic torque needs a generator torque of " + std::to_string(p.torque) +
+                       " N m, below VS_MinTq = " + std::to_string(c.VS_MinTq) + " N m");
+  return p;
+}
+
+// Above rated, where the minimum pitch leaves excess aerodynamic torque at PC_RefSpd (f_min > 0 the
+// balance there): the pitch loop holds PC_RefSpd with the region-3 torque t3 [N m], at the pitch that
+// balances the rotor, searched from the neighbour's pitch when it is above the minimum.
+ControllerPoint regionThreePoint(const ControllerTrim& x, const TrimGuess& guess, double f_min) {
+  const RoscoController& c = x.c;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double w3 = c.PC_RefSpd / x.gear, t3 = roscoAboveRatedTorque(c, c.PC_RefSpd);
+  const double p_hi = std::min(c.PC_MaxPit, x.opt.max_pitch);
+  auto fp = [&](double b) { return x.balance(w3, b, t3).f; };
+  auto top = [&](double b) {
+    const double ft = fp(b);
+    if (ft > 0)
+      throw ComputeError(x.at + "the controller cannot hold rated speed " + x.rpmOf(c.PC_RefSpd) +
+                         ": the aerodynamic torque exceeds the region-3 torque even at " +
+                         std::to_string(p_hi * 180 / std::numbers::pi) + " deg pitch");
+    return ft;
+  };
+  double slope = guess.pitch_slope;
+  const BrentResult r = guess.pitch > x.beta_min
+                            ? guessedRoot(fp, x.beta_min, p_hi, f_min, nan, guess.pitch, 0.01, x.ftol, top, slope)
+                            : brent(fp, x.beta_min, p_hi, f_min, top(p_hi), x.ftol, 1e-10, 100);
+  if (!r.converged) throw ComputeError(x.at + "the pitch trim did not converge");
+  ControllerPoint p;
+  p.omega = w3, p.torque = t3, p.pitch = r.x, p.region = "3";
+  return p;
+}
+
+// Torque at its limit, pitch at its minimum: the speed rises above the torque loop's reference (of
+// `below`) until the aerodynamic torque meets the limit, below the pitch loop's (f_min: the balance
+// there at the region-3 torque, ≤ 0).
+ControllerPoint saturatedTorquePoint(const ControllerTrim& x, const ControllerPoint& below, double f_min) {
+  const RoscoController& c = x.c;
+  const double gear = x.gear;
+  const double w3 = c.PC_RefSpd / gear;
+  auto fs = [&](double w) { return x.balance(w, x.beta_min, roscoTorqueLimit(c, gear * w)).f; };
+  const double f_lo = fs(below.omega);
+  if (!(w3 > below.omega) || !(f_lo > 0))
+    throw ComputeError(x.at + "no steady state between the torque loop's speed " + x.rpmOf(gear * below.omega) +
+                       " and the pitch loop's " + x.rpmOf(c.PC_RefSpd) + " with the torque at its limit");
+  const BrentResult r = brent(fs, below.omega, w3, f_lo, f_min, x.ftol, 1e-10, 100);
+  if (!r.converged) throw ComputeError(x.at + "the rotor-speed trim at the torque limit did not converge");
+  ControllerPoint p;
+  p.omega = r.x, p.torque = roscoTorqueLimit(c, gear * p.omega), p.pitch = x.beta_min, p.region = "2.5 saturated";
+  return p;
+}
+
+// The pitch loop, when the torque loop's point needs more torque than the torque loop's limit: the
+// region-3 point, or the saturated one when even the minimum pitch leaves too little aerodynamic torque
+// at PC_RefSpd. ComputeError when the pitch control is off.
+ControllerPoint pitchLoopPoint(const ControllerTrim& x, const TrimGuess& guess, const ControllerPoint& below) {
+  const RoscoController& c = x.c;
+  if (c.PC_ControlMode == 0)
+    throw ComputeError(x.at + "the controller cannot hold rated speed: the aerodynamic torque needs " +
+                       std::to_string(below.torque) + " N m at " + x.rpmOf(x.gear * below.omega) +
+                       ", above the torque limit, and the pitch control is off (PC_ControlMode = 0)");
+  const double w3 = c.PC_RefSpd / x.gear, t3 = roscoAboveRatedTorque(c, c.PC_RefSpd);
+  const double f_min = x.balance(w3, x.beta_min, t3).f;
+  return f_min > 0 ? regionThreePoint(x, guess, f_min) : saturatedTorquePoint(x, below, f_min);
+}
+
 // ROSCO's steady state at `wind` (docs/theory/controller.md): its wind-speed estimate equals the wind, its
 // integrators have removed every speed error, and the generator torque balances the rotor. In turn:
 // the torque loop's speed (TSR tracking: TSRopt·V/R clipped to [VS_MinOMSpd, VS_RefSpd]; k·Ω²: the
@@ -275,104 +411,23 @@ double balancingTorque(TorqueBalance& balance, double omega, double beta, double
 SteadyState controllerTrim(const Model& m, double wind, const TrimGuess& guess, const TrimOptions& opt,
                            const std::string& at) {
   const RoscoController& c = *opt.controller;
-  const int az = m.roles.azimuth.front();
-  const double gear = gearRatio(m, az);
-  if (!(gear > 0)) throw InputError(at + "the model has no generator speed output (GenSpeed) on the rotor azimuth");
-  if (m.roles.generator_torque_input < 0) throw InputError(at + "the model has no generator-torque input");
-  if (c.VS_ControlMode == 0) {
-    const Where w = c.at("VS_ControlMode");
-    throw InputError(where(w.file, w.line, w.key, "0: no torque control, so no steady state to trim to"));
-  }
+  const double gear = gearRatio(m, m.roles.azimuth.front());
+  requireControllerTrim(m, c, gear, at);
   const double ftol = opt.tolerance * std::max(1.0, gear * c.VS_RtTq);
-  const double nan = std::numeric_limits<double>::quiet_NaN();
   TorqueBalance balance(m, wind, guess, opt);
-  const double beta_min = roscoMinimumPitch(c, wind);
-  const double rpm = 30 / std::numbers::pi;
-  auto rpmOf = [&](double gen_speed) { return std::to_string(gen_speed / gear * rpm) + " rpm"; };
-
-  // The torque loop: its speed reference and the branch it is on.
-  double omega = 0, torque = nan;
-  std::string region;
-  const double w_lo = std::max(c.VS_MinOMSpd / gear,
-                               c.VS_MinOMSpd > 0 ? 0.0 : opt.min_tsr * wind / m.aero.rotor_radius);
-  const double w_hi = c.VS_RefSpd / gear;
-  if (c.VS_ControlMode == 2) {
-    const double ref = c.VS_TSRopt * wind / c.WE_BladeRadius * c.WE_GearboxRatio;  // ComputeVariablesSetpoints
-    omega = std::clamp(ref, c.VS_MinOMSpd, c.VS_RefSpd) / gear;
-    region = ref <= c.VS_MinOMSpd ? "1.5" : ref >= c.VS_RefSpd ? "2.5" : "2";
-  } else {
-    // k·Ω² (1) and the power- or torque-based TSR tracking (3, 4), whose references settle on k·Ω².
-    auto fk = [&](double w) {
-      const double wg = gear * w;
-      return balance(w, beta_min, c.VS_Rgn2K * wg * wg).f;
-    };
-    const double f_lo = fk(w_lo), f_hi = fk(w_hi);
-    if (f_lo <= 0) {
-      omega = w_lo, region = "1.5";
-    } else if (f_hi >= 0) {
-      omega = w_hi, region = "2.5";
-    } else {
-      const BrentResult r = brent(fk, w_lo, w_hi, f_lo, f_hi, ftol, 1e-10, 100);
-      if (!r.converged) throw ComputeError(at + "the rotor-speed trim on VS_Rgn2K did not converge");
-      omega = r.x, region = "2";
-      const double wg = gear * omega;
-      torque = c.VS_Rgn2K * wg * wg;
-    }
-  }
-  if (std::isnan(torque)) torque = balancingTorque(balance, omega, beta_min, gear, ftol, at);
-  if (torque < c.VS_MinTq)
-    throw ComputeError(at + "below cut-in: at the torque loop's speed " + rpmOf(gear * omega) +
-                       " the aerodynamic torque needs a generator torque of " + std::to_string(torque) +
-                       " N m, below VS_MinTq = " + std::to_string(c.VS_MinTq) + " N m");
-  double pitch = beta_min;
-  if (torque > roscoTorqueLimit(c, gear * omega)) {
-    // Above rated: the pitch loop holds PC_RefSpd with the region-3 torque.
-    if (c.PC_ControlMode == 0)
-      throw ComputeError(at + "the controller cannot hold rated speed: the aerodynamic torque needs " +
-                         std::to_string(torque) + " N m at " + rpmOf(gear * omega) +
-                         ", above the torque limit, and the pitch control is off (PC_ControlMode = 0)");
-    const double w3 = c.PC_RefSpd / gear, t3 = roscoAboveRatedTorque(c, c.PC_RefSpd);
-    const double p_hi = std::min(c.PC_MaxPit, opt.max_pitch);
-    auto fp = [&](double b) { return balance(w3, b, t3).f; };
-    auto top = [&](double b) {
-      const double ft = fp(b);
-      if (ft > 0)
-        throw ComputeError(at + "the controller cannot hold rated speed " + rpmOf(c.PC_RefSpd) +
-                           ": the aerodynamic torque exceeds the region-3 torque even at " +
-                           std::to_string(p_hi * 180 / std::numbers::pi) + " deg pitch");
-      return ft;
-    };
-    const double f_min = fp(beta_min);
-    if (f_min > 0) {
-      double slope = guess.pitch_slope;
-      const BrentResult r = guess.pitch > beta_min
-                                ? guessedRoot(fp, beta_min, p_hi, f_min, nan, guess.pitch, 0.01, ftol, top, slope)
-                                : brent(fp, beta_min, p_hi, f_min, top(p_hi), ftol, 1e-10, 100);
-      if (!r.converged) throw ComputeError(at + "the pitch trim did not converge");
-      omega = w3, torque = t3, pitch = r.x, region = "3";
-    } else {
-      // Torque at its limit, pitch at its minimum: the speed rises above the torque loop's reference
-      // until the aerodynamic torque meets the limit, below the pitch loop's.
-      auto fs = [&](double w) { return balance(w, beta_min, roscoTorqueLimit(c, gear * w)).f; };
-      const double f_lo = fs(omega);
-      if (!(w3 > omega) || !(f_lo > 0))
-        throw ComputeError(at + "no steady state between the torque loop's speed " + rpmOf(gear * omega) +
-                           " and the pitch loop's " + rpmOf(c.PC_RefSpd) + " with the torque at its limit");
-      const BrentResult r = brent(fs, omega, w3, f_lo, f_min, ftol, 1e-10, 100);
-      if (!r.converged) throw ComputeError(at + "the rotor-speed trim at the torque limit did not converge");
-      omega = r.x, torque = roscoTorqueLimit(c, gear * omega), region = "2.5 saturated";
-    }
-  }
-  if (pitch == beta_min && beta_min > c.PC_FinePit) region += " + min pitch";
+  const ControllerTrim x{m, c, opt, balance, wind, gear, ftol, roscoMinimumPitch(c, wind), at};
+  ControllerPoint p = torqueLoopPoint(x);
+  if (p.torque > roscoTorqueLimit(c, gear * p.omega)) p = pitchLoopPoint(x, guess, p);
+  if (p.pitch == x.beta_min && x.beta_min > c.PC_FinePit) p.region += " + min pitch";
   OperatingCondition cond;
   cond.wind_speed = wind;
-  cond.rotor_speed = omega;
-  cond.collective_pitch = pitch;
-  cond.generator_torque = torque;
+  cond.rotor_speed = p.omega;
+  cond.collective_pitch = p.pitch;
+  cond.generator_torque = p.torque;
   SteadyState out = stateOf(m, cond, balance);
-  out.above_rated = region.starts_with("3");
-  out.region = region;
-  out.min_pitch = beta_min;
+  out.above_rated = p.region.starts_with("3");
+  out.region = p.region;
+  out.min_pitch = x.beta_min;
   out.generator_efficiency = c.VS_GenEff;
   return out;
 }
@@ -383,6 +438,138 @@ SteadyState trimAtWindSpeed(const Model& m, double wind, const TrimOptions& opt)
   return trimAtWindSpeed(m, wind, TrimGuess{}, opt);
 }
 
+namespace {
+
+// The rotor speed [rad/s] of a fixed-speed rotor (induction generator, `gear` generator per rotor speed):
+// where the torque-slip curve meets the aerodynamic torque, at fine pitch, between the motoring and
+// generating pull-out slips. ComputeError when the balance is not between them.
+double inductionRotorSpeed(const Model& m, TorqueBalance& balance, double gear, double ftol, const TrimOptions& opt,
+                           const std::string& at) {
+  const auto [glo, ghi] = pulloutSpeeds(m.generator);
+  const double lo = glo / gear, hi = ghi / gear;
+  auto f = [&](double w) { return balance(w, opt.min_pitch).f; };
+  const double flo = f(lo), fhi = f(hi);
+  if (fhi > 0 || flo < 0)
+    throw ComputeError(at + "no torque balance between the induction generator's pull-out slips (" + rpmText(lo) +
+                       " to " + rpmText(hi) + "): the aerodynamic torque " +
+                       (fhi > 0 ? "exceeds the pull-out torque (runaway)" : "is below the motoring pull-out torque"));
+  const BrentResult r = brent(f, lo, hi, flo, fhi, ftol, 1e-10, 100);
+  if (!r.converged) throw ComputeError(at + "the rotor-speed trim did not converge");
+  return r.x;
+}
+
+// A variable-speed rotor's trim searches at one wind speed with the model's torque law: the balance f
+// decreases with pitch [rad] at rated speed and with rotor speed [rad/s] at fine pitch, between the
+// rotor speed `low` (tip-speed ratio opt.min_tsr) and `rated`.
+struct TorqueLawSearch {
+  TorqueBalance& balance;
+  const TrimOptions& opt;
+  const std::string& at;
+  double rated, low, ftol;
+
+  double atPitch(double p) const { return balance(rated, p).f; }          // at rated speed
+  double atSpeed(double w) const { return balance(w, opt.min_pitch).f; }  // at fine pitch
+  // At the top pitch: ComputeError if the torque still exceeds the rated torque.
+  double atTopPitch(double p) const {
+    const double ft = atPitch(p);
+    if (ft > 0)
+      throw ComputeError(at + "the aerodynamic torque exceeds the rated generator torque even at " +
+                         std::to_string(opt.max_pitch * 180 / std::numbers::pi) + " deg pitch");
+    return ft;
+  }
+  // At the lowest speed: ComputeError if the aerodynamic torque does not overcome the torque law there.
+  double atLowSpeed(double w) const {
+    const double fs = atSpeed(w);
+    if (fs <= 0)
+      throw ComputeError(at + "no torque balance between " + rpmText(low) + " (tip-speed ratio " +
+                         std::to_string(opt.min_tsr) + ") and rated " + rpmText(rated) +
+                         ": the aerodynamic torque does not overcome the generator torque law (below cut-in?)");
+    return fs;
+  }
+};
+
+// The guessed search met the balance at rated speed and fine pitch on the other side of rated.
+struct OtherSide {};
+
+// The search from a neighbour's trim (TrimGuess): the pitch when its pitch is above fine pitch (then
+// `above`), the rotor speed when its speed is between `low` and rated; none without such a guess or
+// when the search meets the other side of rated. search_slope: f' of the search (0 without one).
+std::optional<BrentResult> guessedTorqueLawTrim(const TorqueLawSearch& s, const TrimGuess& guess, bool& above,
+                                                double& search_slope) {
+  const TrimOptions& opt = s.opt;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  auto fp = [&](double p) { return s.atPitch(p); };
+  auto fw = [&](double w) { return s.atSpeed(w); };
+  std::optional<BrentResult> r;
+  try {
+    if (guess.pitch > opt.min_pitch) {
+      search_slope = guess.pitch_slope;
+      r = guessedRoot(
+          fp, opt.min_pitch, opt.max_pitch, nan, nan, guess.pitch, 0.01, s.ftol,
+          [&](double p) {
+            if (p != opt.min_pitch) return s.atTopPitch(p);
+            const double f_fine = fp(p);
+            if (f_fine <= 0) throw OtherSide{};
+            return f_fine;
+          },
+          search_slope);
+      above = true;
+    } else if (guess.rotor_speed > s.low && guess.rotor_speed < s.rated) {
+      search_slope = guess.speed_slope;
+      r = guessedRoot(
+          fw, s.low, s.rated, nan, nan, guess.rotor_speed, 0.01 * guess.rotor_speed, s.ftol,
+          [&](double w) {
+            if (w != s.rated) return s.atLowSpeed(w);
+            const double f_rated = fw(w);
+            if (f_rated > 0) throw OtherSide{};
+            return f_rated;
+          },
+          search_slope);
+    }
+  } catch (const OtherSide&) {
+    r.reset();
+    above = false;
+    search_slope = 0;
+  }
+  return r;
+}
+
+// The variable-speed rotor's trim with the model's torque law: above rated (excess torque at rated
+// speed and fine pitch) the pitch that removes the excess; below, the rotor speed of the balance at
+// fine pitch, above the tip-speed ratio opt.min_tsr (near standstill BEM has no solution on much of the
+// blade, and AeroDyn itself blends the induction off at low tip-speed ratios). f decreases with pitch
+// and with rotor speed (as every search here assumes), so a root bracketed next to a neighbour's pitch
+// (speed) also shows the side of rated, without the balance at rated speed and fine pitch, whose
+// equilibria are far from the root's. Sets omega [rad/s] or pitch [rad], above and search_slope.
+void torqueLawTrim(const TorqueLawSearch& s, const TrimGuess& guess, double& omega, double& pitch, bool& above,
+                   double& search_slope) {
+  const TrimOptions& opt = s.opt;
+  auto fp = [&](double p) { return s.atPitch(p); };
+  auto fw = [&](double w) { return s.atSpeed(w); };
+  std::optional<BrentResult> r = guessedTorqueLawTrim(s, guess, above, search_slope);
+  if (!r) {
+    const double at_rated = fw(s.rated);
+    above = at_rated > 0;
+    r = above ? brent(fp, opt.min_pitch, opt.max_pitch, at_rated, s.atTopPitch(opt.max_pitch), s.ftol, 1e-10, 100)
+              : brent(fw, s.low, s.rated, s.atLowSpeed(s.low), at_rated, s.ftol, 1e-10, 100);
+  }
+  if (!r->converged)
+    throw ComputeError(s.at + (above ? "the pitch trim did not converge" : "the rotor-speed trim did not converge"));
+  (above ? pitch : omega) = r->x;
+}
+
+// The checks of a trim with the model's torque law; returns the generator speed per rotor speed.
+double requireTorqueLawTrim(const Model& m, double wind, const std::string& at) {
+  if (!m.generator.active())
+    throw InputError(at + "the model has no generator torque law (ServoDyn VSContrl = 1, or 0 with GenModel = 1 or 2)");
+  if (!(wind > 0) || !std::isfinite(wind)) throw InputError(at + "the wind speed must be positive");
+  const double gear = gearRatio(m, m.roles.azimuth.front());
+  if (!(gear > 0)) throw InputError(at + "the generator speed does not follow the rotor azimuth");
+  return gear;
+}
+
+}  // namespace
+
 SteadyState trimAtWindSpeed(const Model& m, double wind, const TrimGuess& guess, const TrimOptions& opt) {
   const std::string at = "trim at " + std::to_string(wind) + " m/s: ";
   requireSteadyModel(m, at);
@@ -390,12 +577,7 @@ SteadyState trimAtWindSpeed(const Model& m, double wind, const TrimGuess& guess,
     if (!(wind > 0) || !std::isfinite(wind)) throw InputError(at + "the wind speed must be positive");
     return controllerTrim(m, wind, guess, opt, at);
   }
-  if (!m.generator.active())
-    throw InputError(at + "the model has no generator torque law (ServoDyn VSContrl = 1, or 0 with GenModel = 1 or 2)");
-  if (!(wind > 0) || !std::isfinite(wind)) throw InputError(at + "the wind speed must be positive");
-  const int az = m.roles.azimuth.front();
-  const double gear = gearRatio(m, az);
-  if (!(gear > 0)) throw InputError(at + "the generator speed does not follow the rotor azimuth");
+  const double gear = requireTorqueLawTrim(m, wind, at);
   const GeneratorTorqueLaw& law = m.generator;
   const double rated = law.rated_speed / gear;
   const double scale = std::max(1.0, gear * law.rated_torque);
@@ -405,87 +587,11 @@ SteadyState trimAtWindSpeed(const Model& m, double wind, const TrimGuess& guess,
   double omega = rated, pitch = opt.min_pitch;
   double search_slope = 0;  // f' of the guessed search, for the next wind speed's (SteadyState::search_slope)
   bool above = false;
-  const double nan = std::numeric_limits<double>::quiet_NaN();
   if (law.induction()) {
-    // A fixed-speed rotor: the speed where the torque-slip curve meets the aerodynamic torque, at fine
-    // pitch, between the motoring and generating pull-out slips.
-    const auto [glo, ghi] = pulloutSpeeds(law);
-    const double lo = glo / gear, hi = ghi / gear;
-    auto f = [&](double w) { return balance(w, opt.min_pitch).f; };
-    const double flo = f(lo), fhi = f(hi);
-    if (fhi > 0 || flo < 0)
-      throw ComputeError(at + "no torque balance between the induction generator's pull-out slips (" + rpmText(lo) +
-                         " to " + rpmText(hi) + "): the aerodynamic torque " +
-                         (fhi > 0 ? "exceeds the pull-out torque (runaway)" : "is below the motoring pull-out torque"));
-    const BrentResult r = brent(f, lo, hi, flo, fhi, ftol, 1e-10, 100);
-    if (!r.converged) throw ComputeError(at + "the rotor-speed trim did not converge");
-    omega = r.x;
+    omega = inductionRotorSpeed(m, balance, gear, ftol, opt, at);
   } else {
-    // Above rated (excess torque at rated speed and fine pitch): the pitch that removes the excess;
-    // below: the rotor speed of the balance at fine pitch, above the tip-speed ratio opt.min_tsr (near
-    // standstill BEM has no solution on much of the blade, and AeroDyn itself blends the induction off
-    // at low tip-speed ratios). f decreases with pitch and with rotor speed (as every search here
-    // assumes), so a root bracketed next to a neighbour's pitch (speed) also shows the side of rated,
-    // without the balance at rated speed and fine pitch, whose equilibria are far from the root's.
-    auto fp = [&](double p) { return balance(rated, p).f; };
-    auto fw = [&](double w) { return balance(w, opt.min_pitch).f; };
-    auto top = [&](double p) {
-      const double ft = fp(p);
-      if (ft > 0)
-        throw ComputeError(at + "the aerodynamic torque exceeds the rated generator torque even at " +
-                           std::to_string(opt.max_pitch * 180 / std::numbers::pi) + " deg pitch");
-      return ft;
-    };
     const double low = std::min(0.5 * rated, opt.min_tsr * wind / m.aero.rotor_radius);
-    auto slow = [&](double w) {
-      const double fs = fw(w);
-      if (fs <= 0)
-        throw ComputeError(at + "no torque balance between " + rpmText(low) + " (tip-speed ratio " +
-                           std::to_string(opt.min_tsr) + ") and rated " + rpmText(rated) +
-                           ": the aerodynamic torque does not overcome the generator torque law (below cut-in?)");
-      return fs;
-    };
-    struct OtherSide {};  // the guessed search met the balance at rated speed and fine pitch on the other side
-    std::optional<BrentResult> r;
-    try {
-      if (guess.pitch > opt.min_pitch) {
-        search_slope = guess.pitch_slope;
-        r = guessedRoot(
-            fp, opt.min_pitch, opt.max_pitch, nan, nan, guess.pitch, 0.01, ftol,
-            [&](double p) {
-              if (p != opt.min_pitch) return top(p);
-              const double f_fine = fp(p);
-              if (f_fine <= 0) throw OtherSide{};
-              return f_fine;
-            },
-            search_slope);
-        above = true;
-      } else if (guess.rotor_speed > low && guess.rotor_speed < rated) {
-        search_slope = guess.speed_slope;
-        r = guessedRoot(
-            fw, low, rated, nan, nan, guess.rotor_speed, 0.01 * guess.rotor_speed, ftol,
-            [&](double w) {
-              if (w != rated) return slow(w);
-              const double f_rated = fw(w);
-              if (f_rated > 0) throw OtherSide{};
-              return f_rated;
-            },
-            search_slope);
-      }
-    } catch (const OtherSide&) {
-      r.reset();
-      above = false;
-      search_slope = 0;
-    }
-    if (!r) {
-      const double at_rated = fw(rated);
-      above = at_rated > 0;
-      r = above ? brent(fp, opt.min_pitch, opt.max_pitch, at_rated, top(opt.max_pitch), ftol, 1e-10, 100)
-                : brent(fw, low, rated, slow(low), at_rated, ftol, 1e-10, 100);
-    }
-    if (!r->converged)
-      throw ComputeError(at + (above ? "the pitch trim did not converge" : "the rotor-speed trim did not converge"));
-    (above ? pitch : omega) = r->x;
+    torqueLawTrim(TorqueLawSearch{balance, opt, at, rated, low, ftol}, guess, omega, pitch, above, search_slope);
   }
   OperatingCondition c;
   c.wind_speed = wind;
