@@ -393,56 +393,82 @@ double simulationBemTolerance(double model_tolerance, double rtol) {
   return std::max(model_tolerance, std::min(kAeroDynIndToler, 1e-3 * rtol));
 }
 
-Simulation simulate(const Model& m, const OperatingPoint& start, const SimulationOptions& opt) {
-  checkOptions(m, start, opt);
-  checkSimulationSize(m, start, opt);
-  Problem p(m, start, opt);
+namespace {
+
+// The coordinates IDA integrates: the model's active ones, neither prescribed nor driven.
+std::vector<int> integratedStates(const Model& m, const SimulationOptions& opt) {
   auto held = [&](int i) {
     return std::find(opt.prescribed.begin(), opt.prescribed.end(), i) != opt.prescribed.end() ||
            std::any_of(opt.driven.begin(), opt.driven.end(), [i](const DrivenDof& d) { return d.dof == i; });
   };
+  std::vector<int> states;
   for (int i : m.activeDofs())
-    if (!held(i)) p.states.push_back(i);
-  const int ns = p.n();
+    if (!held(i)) states.push_back(i);
+  return states;
+}
 
-  Simulation sim;
-  sim.states = p.states;
+// The number of recorded instants: every dt_out from 0 [s], and t_end when it is off that grid.
+long recordCount(const SimulationOptions& opt) {
   const long nout = static_cast<long>(std::floor(opt.t_end / opt.dt_out + 1e-9)) + 1;
   const bool last_extra = (nout - 1) * opt.dt_out < opt.t_end * (1 - 1e-12);
-  const long nrec = nout + (last_extra ? 1 : 0);
+  return nout + (last_extra ? 1 : 0);
+}
+
+// The record's matrices sized for nrec instants, their pages mapped at once (prefault).
+void allocateRecord(const Model& m, long nrec, Simulation& sim) {
   sim.q.resize(nrec, m.ndof());
   sim.qd.resize(nrec, m.ndof());
   sim.u.resize(nrec, m.ninput());
   sim.y.resize(nrec, m.noutput());
   sim.time.reserve(static_cast<std::size_t>(nrec));
   for (MatX* a : {&sim.q, &sim.qd, &sim.u, &sim.y}) prefault(a->data(), a->size() * sizeof(double));
-  Workspace<double> wy(m);
-  VecX y_out(m.noutput());
-  auto record = [&](long k, double t, const double* y, const double* yp) {
-    p.load(t, y, yp);
-    sim.time.push_back(t);
-    sim.q.row(k) = p.q.transpose();
-    sim.qd.row(k) = p.qd.transpose();
-    if (m.ninput() > 0) sim.u.row(k) = p.u.transpose();  // row k of a 0-column matrix: offset on a null pointer
-    if (m.noutput() > 0) {
+}
+
+// Writes the record's rows: time, coordinates, rates, inputs and the model's outputs at an instant.
+class Recorder {
+ public:
+  Recorder(const Model& m, const SimulationOptions& opt, Problem& p, Simulation& sim)
+      : m_(m), opt_(opt), p_(p), sim_(sim), wy_(m), y_out_(m.noutput()) {}
+
+  // Row k at time t [s] from IDA's y, ẏ (null: the prescribed motion alone).
+  void operator()(long k, double t, const double* y, const double* yp) {
+    p_.load(t, y, yp);
+    sim_.time.push_back(t);
+    sim_.q.row(k) = p_.q.transpose();
+    sim_.qd.row(k) = p_.qd.transpose();
+    if (m_.ninput() > 0) sim_.u.row(k) = p_.u.transpose();  // row k of a 0-column matrix: offset on a null pointer
+    if (m_.noutput() > 0) {
       // The BEM roots of the integrator's last residual start the outputs' root searches: a step
       // away instead of one recorded interval (the outputs' own last roots); the same roots.
-      wy.bem = p.ws.bem;
-      evaluateOutputs(m, wy, p.q, p.qd, p.qdd, y_out, &p.u);
-      sim.y.row(k) = y_out.transpose();
+      wy_.bem = p_.ws.bem;
+      evaluateOutputs(m_, wy_, p_.q, p_.qd, p_.qdd, y_out_, &p_.u);
+      sim_.y.row(k) = y_out_.transpose();
     }
-    if (opt.progress) opt.progress(t, opt.t_end);
-  };
-
-  const bool controlled = static_cast<bool>(opt.controller.step);
-  const std::vector<double> stops = stopTimes(opt);
-
-  if (ns == 0) {  // everything prescribed: the motion is known
-    for (long k = 0; k < nrec; ++k) record(k, std::min(k * opt.dt_out, opt.t_end), nullptr, nullptr);
-    return sim;
+    if (opt_.progress) opt_.progress(t, opt_.t_end);
   }
 
-  IdaHandles h;
+ private:
+  const Model& m_;
+  const SimulationOptions& opt_;
+  Problem& p_;
+  Simulation& sim_;
+  Workspace<double> wy_;
+  VecX y_out_;
+};
+
+// The controller's commands at a stop tc [s]: from the motion y there (the held values before the call).
+void applyController(Problem& p, const SimulationOptions& opt, double tc, const double* y) {
+  p.load(tc, y, nullptr);
+  p.held = opt.controller.step(tc, p.q, p.qd, p.u);
+  if (p.held.size() != static_cast<Eigen::Index>(opt.controller.inputs.size()) || !p.held.allFinite())
+    throw ComputeError(fmt::format("simulate: t = {:.6g} s: the controller's commands are not finite", tc));
+}
+
+// IDA started at t = 0: its state vectors from `start`, the controller's first commands (from the start
+// point's inputs), consistent rates, the integrator attached and stopping at the first stop.
+void startIntegrator(IdaHandles& h, Problem& p, const Model& m, const OperatingPoint& start,
+                     const SimulationOptions& opt, const std::vector<double>& stops) {
+  const int ns = p.n();
   check(SUNContext_Create(nullptr, &h.ctx), "SUNContext_Create");
   h.y = newFastSerialVector(2 * ns, h.ctx);
   h.yp = newFastSerialVector(2 * ns, h.ctx);
@@ -453,54 +479,81 @@ Simulation simulate(const Model& m, const OperatingPoint& start, const Simulatio
     y[k] = start.q(p.states[k]);
     y[ns + k] = start.qd(p.states[k]);
   }
-  // The controller's commands at a stop: from the motion there (the held values before the call).
-  auto control = [&](double tc) {
-    if (!controlled) return;
-    p.load(tc, y, nullptr);
-    p.held = opt.controller.step(tc, p.q, p.qd, p.u);
-    if (p.held.size() != static_cast<Eigen::Index>(opt.controller.inputs.size()) || !p.held.allFinite())
-      throw ComputeError(fmt::format("simulate: t = {:.6g} s: the controller's commands are not finite", tc));
-  };
-  if (controlled) {
+  if (opt.controller.step) {
     p.held = VecX(static_cast<Eigen::Index>(opt.controller.inputs.size()));
     for (size_t k = 0; k < opt.controller.inputs.size(); ++k)
       p.held(static_cast<Eigen::Index>(k)) = start.u(opt.controller.inputs[k]);
-    control(0.0);
+    applyController(p, opt, 0.0, y);
   }
   consistentRates(p, 0.0, y, yp);
   attachIntegrator(h, p, m, ns, opt);
-  size_t next_stop = 0;
-  check(IDASetStopTime(h.mem, stops[next_stop]), "IDASetStopTime");
+  check(IDASetStopTime(h.mem, stops[0]), "IDASetStopTime");
+}
 
-  record(0, 0.0, y, yp);
+// IDA from t to tout [s], restarting at every stop it meets (an input breakpoint, a controller call):
+// from consistent rates under the inputs after it, the controller called first when due. ComputeError
+// when IDA fails or the run's steps exceed limits::kMaxSimulationSteps.
+void integrateTo(IdaHandles& h, Problem& p, const SimulationOptions& opt, const std::vector<double>& stops,
+                 size_t& next_stop, double tout, double& t, Simulation& sim) {
+  double* y = N_VGetArrayPointer(h.y);
+  double* yp = N_VGetArrayPointer(h.yp);
+  while (true) {
+    const int flag = IDASolve(h.mem, tout, &t, h.y, h.yp, IDA_NORMAL);
+    if (p.error) std::rethrow_exception(p.error);
+    long steps = 0;
+    IDAGetNumSteps(h.mem, &steps);
+    if (sim.steps + steps > limits::kMaxSimulationSteps)
+      throw ComputeError(fmt::format(
+          "simulate: t = {:.6g} s: more than {} integrator steps (src/base/limits.hpp) for {:g} s of {:g}: the "
+          "motion is too fast for the time step it needs (a rotor spinning up, a diverging model?)",
+          t, limits::kMaxSimulationSteps, t, opt.t_end));
+    if (flag < 0) throw ComputeError(idaFailure(flag, t, opt));
+    if (flag != IDA_TSTOP_RETURN) break;
+    // At an input breakpoint: restart from consistent rates under the inputs after it.
+    const double ts = stops[next_stop];
+    if (next_stop + 1 < stops.size()) {
+      ++next_stop;
+      addStatistics(h.mem, sim);
+      if (opt.controller.step && std::abs(ts / opt.controller.dt - std::round(ts / opt.controller.dt)) < 1e-9)
+        applyController(p, opt, ts, y);
+      consistentRates(p, ts, y, yp);
+      check(IDAReInit(h.mem, ts, h.y, h.yp), "IDAReInit");
+      check(IDASetStopTime(h.mem, stops[next_stop]), "IDASetStopTime");
+    }
+    if (ts >= tout * (1 - 1e-12)) break;
+  }
+}
+
+}  // namespace
+
+Simulation simulate(const Model& m, const OperatingPoint& start, const SimulationOptions& opt) {
+  checkOptions(m, start, opt);
+  checkSimulationSize(m, start, opt);
+  Problem p(m, start, opt);
+  p.states = integratedStates(m, opt);
+  const int ns = p.n();
+
+  Simulation sim;
+  sim.states = p.states;
+  const long nrec = recordCount(opt);
+  allocateRecord(m, nrec, sim);
+  Recorder record(m, opt, p, sim);
+  const std::vector<double> stops = stopTimes(opt);
+
+  if (ns == 0) {  // everything prescribed: the motion is known
+    for (long k = 0; k < nrec; ++k) record(k, std::min(k * opt.dt_out, opt.t_end), nullptr, nullptr);
+    return sim;
+  }
+
+  IdaHandles h;
+  startIntegrator(h, p, m, start, opt, stops);
+  size_t next_stop = 0;
+  record(0, 0.0, N_VGetArrayPointer(h.y), N_VGetArrayPointer(h.yp));
   double t = 0;
   for (long k = 1; k < nrec; ++k) {
     const double tout = std::min(k * opt.dt_out, opt.t_end);
-    while (true) {
-      const int flag = IDASolve(h.mem, tout, &t, h.y, h.yp, IDA_NORMAL);
-      if (p.error) std::rethrow_exception(p.error);
-      long steps = 0;
-      IDAGetNumSteps(h.mem, &steps);
-      if (sim.steps + steps > limits::kMaxSimulationSteps)
-        throw ComputeError(fmt::format(
-            "simulate: t = {:.6g} s: more than {} integrator steps (src/base/limits.hpp) for {:g} s of {:g}: the "
-            "motion is too fast for the time step it needs (a rotor spinning up, a diverging model?)",
-            t, limits::kMaxSimulationSteps, t, opt.t_end));
-      if (flag < 0) throw ComputeError(idaFailure(flag, t, opt));
-      if (flag != IDA_TSTOP_RETURN) break;
-      // At an input breakpoint: restart from consistent rates under the inputs after it.
-      const double ts = stops[next_stop];
-      if (next_stop + 1 < stops.size()) {
-        ++next_stop;
-        addStatistics(h.mem, sim);
-        if (controlled && std::abs(ts / opt.controller.dt - std::round(ts / opt.controller.dt)) < 1e-9) control(ts);
-        consistentRates(p, ts, y, yp);
-        check(IDAReInit(h.mem, ts, h.y, h.yp), "IDAReInit");
-        check(IDASetStopTime(h.mem, stops[next_stop]), "IDASetStopTime");
-      }
-      if (ts >= tout * (1 - 1e-12)) break;
-    }
-    record(k, tout, y, yp);
+    integrateTo(h, p, opt, stops, next_stop, tout, t, sim);
+    record(k, tout, N_VGetArrayPointer(h.y), N_VGetArrayPointer(h.yp));
     if (opt.stop && opt.stop(tout, sim.q.row(k).transpose())) {
       for (MatX* a : {&sim.q, &sim.qd, &sim.u, &sim.y}) a->conservativeResize(k + 1, Eigen::NoChange);
       sim.stopped = true;
