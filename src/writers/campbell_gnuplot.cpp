@@ -158,9 +158,11 @@ std::string campbellGnuplotData(const CampbellDiagram& d) {
   return s;
 }
 
-std::string campbellGnuplotScript(const CampbellDiagram& d, const CampbellPlotOptions& opt) {
-  const Ranges r = ranges(d, opt);
-  const auto s = sweep(d, opt, r);
+namespace {
+
+/// The script's opening comments, the paths of its data and images, and its layout variables: page
+/// size, x column and title, the axes' ranges (x in rpm or m/s, frequency [Hz], damping [%]).
+std::string gnuplotScriptHeader(const CampbellDiagram& d, const CampbellPlotOptions& opt, const Ranges& r) {
   std::string g;
   g += "# Campbell diagram written by whirl. Run it from anywhere: gnuplot campbell.gp\n"
        "# It reads campbell.dat next to itself and writes campbell.png and campbell.svg there\n"
@@ -184,6 +186,14 @@ std::string campbellGnuplotScript(const CampbellDiagram& d, const CampbellPlotOp
   g += "fmax = " + formatNumber(r.fmax) + "   # top of the frequency axis [Hz]\n";
   g += "dmin = " + formatNumber(r.dmin) + "; dmax = " + formatNumber(r.dmax) + "   # damping axis [%]\n";
   g += "left = 0.08; right = 0.74\n\n";
+  return g;
+}
+
+/// One line style per Campbell line (colour, point type), the excitation lines' style 100, and versus
+/// wind speed the operating points (wind speed, rpm) `s` the nP lines are drawn through.
+std::string gnuplotLineStyles(const CampbellDiagram& d, const CampbellPlotOptions& opt,
+                              const std::vector<std::pair<double, double>>& s) {
+  std::string g;
   g += "# One style per Campbell line (colour and point type); 100: excitation lines and labels.\n";
   for (std::size_t l = 0; l < d.lines.size(); ++l)
     g += "set style line " + std::to_string(l + 1) + " lc rgb '" + kColours[l % 10] + "' lw 2 pt " +
@@ -194,29 +204,48 @@ std::string campbellGnuplotScript(const CampbellDiagram& d, const CampbellPlotOp
     for (const auto& [x, rpm] : s) g += formatNumber(x) + " " + formatNumber(rpm) + "\n";
     g += "EOD\n\n";
   }
+  return g;
+}
 
-  std::string harmonics;
+/// The items of the three plots (each ending in ", \" and a newline): the nP excitation lines with their labels, the
+/// shown lines' frequencies and damping ratios, and their key entries.
+struct PlotItems {
+  std::string harmonics, freq, damp, key;
   std::vector<HarmonicLabel> labels;
+};
+
+/// The plot items of the harmonics opt.harmonics along `s` and of the lines campbellLineShown keeps.
+PlotItems plotItems(const CampbellDiagram& d, const CampbellPlotOptions& opt,
+                    const std::vector<std::pair<double, double>>& s, const Ranges& r) {
+  PlotItems items;
   for (int n : opt.harmonics) {
     if (d.points.empty()) break;
     const std::string nP = std::to_string(n);
-    harmonics += (opt.versus_wind_speed ? "  $points using 1:(" + nP + "*$2/60.0)" : "  " + nP + "*x/60.0") +
-                 " with lines ls 100 notitle, \\\n";
-    if (auto l = harmonicLabel(n, s, r)) labels.push_back(*l);
+    items.harmonics += (opt.versus_wind_speed ? "  $points using 1:(" + nP + "*$2/60.0)" : "  " + nP + "*x/60.0") +
+                       " with lines ls 100 notitle, \\\n";
+    if (auto l = harmonicLabel(n, s, r)) items.labels.push_back(*l);
   }
-  std::string freq, damp, key;
   for (std::size_t l = 0; l < d.lines.size(); ++l) {
     if (!campbellLineShown(d, d.lines[l], opt)) continue;
     const std::string idx = "data index " + std::to_string(l) + " using xcol:";
     const std::string style = " with linespoints ls " + std::to_string(l + 1);
-    freq += "  " + idx + "3" + style + " notitle, \\\n";
-    damp += "  " + idx + "(100*$4)" + style + " notitle, \\\n";
-    key += "  NaN" + style + " title " + gnuplotQuoted(d.lines[l].name) + ", \\\n";
+    items.freq += "  " + idx + "3" + style + " notitle, \\\n";
+    items.damp += "  " + idx + "(100*$4)" + style + " notitle, \\\n";
+    items.key += "  NaN" + style + " title " + gnuplotQuoted(d.lines[l].name) + ", \\\n";
   }
-  const auto plot = [](std::string items) {
-    if (items.empty()) return std::string("  NaN notitle\n");
-    return items.substr(0, items.size() - 4) + "\n";  // drop the last ", \"
-  };
+  return items;
+}
+
+/// A plot command's items without the last ", \" continuation, or a placeholder when there are none.
+std::string plotItemList(const std::string& items) {
+  if (items.empty()) return std::string("  NaN notitle\n");
+  return items.substr(0, items.size() - 4) + "\n";  // drop the last ", \"
+}
+
+/// The loop over png and svg drawing the frequency panel (with the nP labels), the damping panel and
+/// the key panel.
+std::string gnuplotPanels(const PlotItems& items, const Ranges& r) {
+  std::string g;
   g += "do for [out in 'png svg'] {\n"
        "  if (out eq 'png') {\n"
        "    set terminal pngcairo size width, height font font noenhanced\n"
@@ -237,8 +266,8 @@ std::string campbellGnuplotScript(const CampbellDiagram& d, const CampbellPlotOp
        "  set ylabel 'Frequency [Hz]'\n"
        "  set yrange [0:fmax]\n"
        "  unset key\n";
-  g += harmonicLabels(labels, r);
-  g += "  plot \\\n" + plot(harmonics + freq);
+  g += harmonicLabels(items.labels, r);
+  g += "  plot \\\n" + plotItemList(items.harmonics + items.freq);
   g += "  # Bottom: damping ratio in percent.\n"
        "  unset label; unset key\n"
        "  set tmargin at screen 0.37; set bmargin at screen 0.08\n"
@@ -249,7 +278,7 @@ std::string campbellGnuplotScript(const CampbellDiagram& d, const CampbellPlotOp
        "  if (dmin < 0) { set object 1 rect from graph 0, first dmin to graph 1, first 0 fc rgb '#ffd8d8' "
        "fs solid noborder behind; set label 1 'unstable (negative damping)' at graph 0.01, first dmin / 2 "
        "tc rgb '#a00000' front }\n";
-  g += "  plot \\\n" + plot(damp);
+  g += "  plot \\\n" + plotItemList(items.damp);
   // The key in a panel of its own right of both plots, as tall as both, so that some 40 lines fit in
   // one column (a key of the top panel alone wraps into columns past the page's edge).
   g += "  # Key: an empty panel right of the plots, as tall as both.\n"
@@ -259,11 +288,19 @@ std::string campbellGnuplotScript(const CampbellDiagram& d, const CampbellPlotOp
        "  set xrange [0:1]; set yrange [0:1]\n"
        "  set key at screen right + 0.045, screen 0.91 left top Left reverse samplen 3 spacing 1.15 "
        "title 'Mode'\n";
-  g += "  plot \\\n" + plot(key);
+  g += "  plot \\\n" + plotItemList(items.key);
   g += "  unset multiplot\n"
        "  set output\n"
        "}\n";
   return g;
+}
+
+}  // namespace
+
+std::string campbellGnuplotScript(const CampbellDiagram& d, const CampbellPlotOptions& opt) {
+  const Ranges r = ranges(d, opt);
+  const auto s = sweep(d, opt, r);
+  return gnuplotScriptHeader(d, opt, r) + gnuplotLineStyles(d, opt, s) + gnuplotPanels(plotItems(d, opt, s, r), r);
 }
 
 }  // namespace whirl
