@@ -248,9 +248,9 @@ class DisconFile {
   std::unordered_map<std::string, std::size_t> index_;
 };
 
-// ROSCO's defaults are those of ReadSetParameters.f90: a key read with CheckOptional true (or without
-// it) takes 0 when missing; `need` states why a key whose mode needs it may not be missing.
-void readDisconParameters(const DisconFile& f, RoscoController& c) {
+// CONTROLLER FLAGS: the modes of the filters, the torque and pitch control, the setpoint smoother,
+// the minimum pitch, the floating feedback, the pitch actuator and the wind-speed estimator.
+void readDisconFlags(const DisconFile& f, RoscoController& c) {
   auto flag = [&](const char* key, int def = 0) { return f.integer(c, key, def); };
   c.F_LPFType = flag("F_LPFType");
   c.VS_ControlMode = f.integer(c, "VS_ControlMode", std::nullopt, "whirl needs the torque control mode");
@@ -261,11 +261,11 @@ void readDisconParameters(const DisconFile& f, RoscoController& c) {
   c.Fl_Mode = flag("Fl_Mode");
   c.PA_Mode = flag("PA_Mode");
   c.WE_Mode = flag("WE_Mode");
+}
 
-  // Filters.
-  c.F_LPFCornerFreq = f.real(c, "F_LPFCornerFreq", std::nullopt, "the generator-speed filter's corner frequency");
-  c.F_LPFDamping = f.real(c, "F_LPFDamping", c.F_LPFType == 1 ? std::optional<double>(0.0) : std::nullopt,
-                          "F_LPFType = 2 needs the filter's damping");
+// FILTERS, the notches: F_NumNotchFilts notch filters (frequency [rad/s], numerator and denominator
+// damping), and the generator-speed and tower-top signals' lists of them by index.
+void readDisconNotches(const DisconFile& f, RoscoController& c) {
   const int notches = f.integer(c, "F_NumNotchFilts", 0);
   if (notches < 0)
     throw InputError(where(f.file(), f.lineOf("F_NumNotchFilts"), "F_NumNotchFilts", "must not be negative"));
@@ -292,6 +292,15 @@ void readDisconParameters(const DisconFile& f, RoscoController& c) {
   };
   notchList("F_GenSpdNotch_N", "F_GenSpdNotch_Ind", c.gen_speed_notches);
   notchList("F_TwrTopNotch_N", "F_TwrTopNotch_Ind", c.twr_top_notches);
+}
+
+// FILTERS: the generator-speed low pass, the notches, the setpoint smoother's, wind-speed estimator's
+// and torque reference's low passes, and the floating feedback's filters (corner frequencies [rad/s]).
+void readDisconFilters(const DisconFile& f, RoscoController& c) {
+  c.F_LPFCornerFreq = f.real(c, "F_LPFCornerFreq", std::nullopt, "the generator-speed filter's corner frequency");
+  c.F_LPFDamping = f.real(c, "F_LPFDamping", c.F_LPFType == 1 ? std::optional<double>(0.0) : std::nullopt,
+                          "F_LPFType = 2 needs the filter's damping");
+  readDisconNotches(f, c);
   c.F_SSCornerFreq = f.real(c, "F_SSCornerFreq", c.SS_Mode == 0 ? std::optional<double>(0.0) : std::nullopt,
                             "SS_Mode = 1 needs the setpoint smoother's filter");
   c.F_WECornerFreq = f.real(c, "F_WECornerFreq", 0.0);
@@ -304,8 +313,11 @@ void readDisconParameters(const DisconFile& f, RoscoController& c) {
   }
   c.F_FlHighPassFreq = f.real(c, "F_FlHighPassFreq", c.Fl_Mode == 0 ? std::optional<double>(0.0) : std::nullopt,
                               "Fl_Mode > 0 needs the floating feedback's high-pass filter");
+}
 
-  // Pitch control.
+// BLADE PITCH CONTROL: the gain schedule (PC_ControlMode = 1), pitch limits [rad], rates [rad/s] and
+// the rated generator speed [rad/s] (0 when the pitch control is off).
+void readDisconPitchControl(const DisconFile& f, RoscoController& c) {
   if (c.PC_ControlMode != 0) {
     const char* why = "PC_ControlMode = 1 needs the pitch controller's schedule";
     const int n = f.integer(c, "PC_GS_n", std::nullopt, why);
@@ -328,8 +340,11 @@ void readDisconParameters(const DisconFile& f, RoscoController& c) {
   c.PC_RefSpd = pc("PC_RefSpd");
   c.PC_FinePit = pc("PC_FinePit");
   c.PC_Switch = pc("PC_Switch");
+}
 
-  // Torque control.
+// VS TORQUE CONTROL: efficiency, torque limits [N m], speeds [rad/s], the region-2 constant, rated
+// power and torque, the PI gains and the optimal tip-speed ratio.
+void readDisconTorqueControl(const DisconFile& f, RoscoController& c) {
   const char* vwhy = "the torque controller needs it";
   c.VS_GenEff = f.real(c, "VS_GenEff", std::nullopt, vwhy) / 100.0;
   c.VS_ArSatTq = f.real(c, "VS_ArSatTq", c.VS_ControlMode != 1 ? std::optional<double>(0.0) : std::nullopt,
@@ -350,15 +365,24 @@ void readDisconParameters(const DisconFile& f, RoscoController& c) {
   c.VS_KI = f.array(c, "VS_KI", vs_n, "VS_n", false, vwhy);
   c.VS_TSRopt = f.real(c, "VS_TSRopt", c.VS_ControlMode < 2 ? std::optional<double>(0.0) : std::nullopt,
                        "TSR tracking (VS_ControlMode >= 2) needs the optimal tip-speed ratio");
+}
 
+// SETPOINT SMOOTHER: its gains on the torque and pitch loops' references (SS_Mode = 1).
+void readDisconSetpointSmoother(const DisconFile& f, RoscoController& c) {
   c.SS_VSGain = f.real(c, "SS_VSGain", c.SS_Mode == 0 ? std::optional<double>(0.0) : std::nullopt,
                        "SS_Mode = 1 needs it");
   c.SS_PCGain = f.real(c, "SS_PCGain", c.SS_Mode == 0 ? std::optional<double>(0.0) : std::nullopt,
                        "SS_Mode = 1 needs it");
+}
 
+// WIND SPEED ESTIMATOR: the rotor radius [m] and the gearbox ratio whirl uses.
+void readDisconWindEstimator(const DisconFile& f, RoscoController& c) {
   c.WE_BladeRadius = f.real(c, "WE_BladeRadius", std::nullopt, "the tip-speed ratio needs the rotor radius");
   c.WE_GearboxRatio = f.real(c, "WE_GearboxRatio", std::nullopt, "whirl needs the gearbox ratio");
+}
 
+// MINIMUM PITCH SATURATION (peak shaving): the minimum pitch [rad] per wind speed [m/s] (PS_Mode = 1).
+void readDisconMinimumPitch(const DisconFile& f, RoscoController& c) {
   if (c.PS_Mode != 0) {
     const char* why = "PS_Mode = 1 needs the minimum-pitch table";
     const int n = f.integer(c, "PS_BldPitchMin_N", std::nullopt, why);
@@ -367,16 +391,37 @@ void readDisconParameters(const DisconFile& f, RoscoController& c) {
     c.PS_WindSpeeds = f.array(c, "PS_WindSpeeds", n, "PS_BldPitchMin_N", false, why);
     c.PS_BldPitchMin = f.array(c, "PS_BldPitchMin", n, "PS_BldPitchMin_N", false, why);
   }
+}
 
+// Floating: the platform feedback's gains, scheduled on wind speed [m/s] when Fl_n > 1.
+void readDisconFloating(const DisconFile& f, RoscoController& c) {
   const int fl_n = f.integer(c, "Fl_n", 1);
   if (fl_n < 1) throw InputError(where(f.file(), f.lineOf("Fl_n"), "Fl_n", "must be greater than 0"));
   c.Fl_Kp = f.array(c, "Fl_Kp", fl_n, "Fl_n", c.Fl_Mode == 0, "Fl_Mode > 0 needs the feedback gain");
   c.Fl_U = f.array(c, "Fl_U", fl_n, "Fl_n", fl_n == 1, "Fl_n > 1 needs the wind speeds of the Fl_Kp schedule");
+}
 
+// Pitch Actuator Model: its corner frequency [rad/s] and damping (PA_Mode > 0).
+void readDisconPitchActuator(const DisconFile& f, RoscoController& c) {
   c.PA_CornerFreq = f.real(c, "PA_CornerFreq", c.PA_Mode == 0 ? std::optional<double>(0.0) : std::nullopt,
                            "PA_Mode > 0 needs the actuator's corner frequency");
   c.PA_Damping = f.real(c, "PA_Damping", c.PA_Mode == 0 ? std::optional<double>(0.0) : std::nullopt,
                         "PA_Mode > 0 needs the actuator's damping");
+}
+
+// The parameters whirl reads from DISCON.IN, one function per section of ROSCO's file, in the file's order.
+// ROSCO's defaults are those of ReadSetParameters.f90: a key read with CheckOptional true (or without
+// it) takes 0 when missing; `need` states why a key whose mode needs it may not be missing.
+void readDisconParameters(const DisconFile& f, RoscoController& c) {
+  readDisconFlags(f, c);
+  readDisconFilters(f, c);
+  readDisconPitchControl(f, c);
+  readDisconTorqueControl(f, c);
+  readDisconSetpointSmoother(f, c);
+  readDisconWindEstimator(f, c);
+  readDisconMinimumPitch(f, c);
+  readDisconFloating(f, c);
+  readDisconPitchActuator(f, c);
 }
 
 bool nonDecreasing(const std::vector<double>& v) { return std::is_sorted(v.begin(), v.end()); }
