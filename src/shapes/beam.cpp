@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "src/base/error.hpp"
+#include "src/base/skew.hpp"
 
 namespace whirl {
 namespace {
@@ -46,6 +47,35 @@ void quadrature(const BeamProperties& p, const BeamIntegration& q, VecX& x, VecX
       return;
     }
   }
+}
+
+// The section inertia tensor at x: linear between stations, as the other properties.
+Mat3 interpolateInertia(const VecX& x, const std::vector<Mat3>& J, double xi) {
+  const Eigen::Index n = x.size();
+  Eigen::Index i = 0;
+  while (i < n - 2 && xi > x(i + 1)) ++i;
+  const double w = std::clamp((xi - x(i)) / (x(i + 1) - x(i)), 0.0, 1.0);
+  return (1 - w) * J[static_cast<std::size_t>(i)] + w * J[static_cast<std::size_t>(i) + 1];
+}
+
+// The section as a rigid lamina of inertia J about its COG (weight w of the quadrature point), turning
+// with the mean line's small rotations θ_i = (t_x, −u_z', u_y') of each shape: a section point at ρ
+// from the COG moves by θ_i × ρ. With Σ = ∫ ρ ρᵀ dm = ½ tr(J) 1 − J per length and ∫ ρ dm = 0, the basis
+// columns a, b add (A_a Σ A_bᵀ)_jl to S_jl, A_0 = 1 (the rigid section), A_1+i = θ̃_i. The elastic
+// mass block Σ_k S_kk then holds θ_iᵀ J θ_j, the section's rotary inertia, and the inertia about the
+// body axes tr(S) 1 − S holds J: the gyroscopic and centrifugal terms of the turning sections follow
+// from the multibody equations. The pair columns (axial shortening) carry none: second order.
+void addSectionLamina(BodyInertia& in, double w, const Mat3& J, const std::vector<ShapeValue>& v) {
+  const int ne = in.ne;
+  const Mat3 Sigma = w * (0.5 * J.trace() * Mat3::Identity() - J);
+  std::vector<Mat3> A(static_cast<std::size_t>(ne) + 1, Mat3::Identity());
+  for (int i = 0; i < ne; ++i) A[static_cast<std::size_t>(i) + 1] = skew(Vec3(v[i].tx, -v[i].uz1, v[i].uy1));
+  for (int a = 0; a <= ne; ++a)
+    for (int b = 0; b <= ne; ++b) {
+      const Mat3 B = A[static_cast<std::size_t>(a)] * Sigma * A[static_cast<std::size_t>(b)].transpose();
+      for (int j = 0; j < 3; ++j)
+        for (int l = 0; l < 3; ++l) in.S[3 * j + l](a, b) += B(j, l);
+    }
 }
 
 int pairIndex(int ne, int i, int j) {  // position of q_i q_j (i <= j) in c
@@ -122,6 +152,10 @@ void validateBeam(const BeamProperties& p, const std::string& body) {
   }
   if (std::abs(p.x(0)) > 1e-9 * p.length || std::abs(p.x(n - 1) - p.length) > 1e-9 * p.length)
     throw InputError(where("x", "stations must run from 0 to the length"));
+  if (!p.J.empty() && static_cast<Eigen::Index>(p.J.size()) != n)
+    throw InputError(where("J", "has " + std::to_string(p.J.size()) + " values, stations have " + std::to_string(n)));
+  for (std::size_t i = 0; i < p.J.size(); ++i)
+    if (!p.J[i].allFinite()) throw InputError(where("J", "value " + std::to_string(i + 1) + " is not finite"));
 }
 
 namespace {
@@ -206,11 +240,15 @@ BeamBody buildBeamBody(const BeamProperties& p, const std::vector<ShapePtr>& sha
     in.m1 += w * m * P;
     for (int j = 0; j < 3; ++j)
       for (int l = 0; l < 3; ++l) in.S[3 * j + l].noalias() += (w * m) * P.row(j).transpose() * P.row(l);
-    // Polar inertia of the section turning with the torsion (eq. 31): section points at (y, z)
+    // The full section inertia, when given: a rigid lamina turning about all three axes. Otherwise
+    // the polar inertia of the section turning with the torsion (eq. 31): section points at (y, z)
     // move by t_x (−z, y); with ∫y² = ∫z² = j_G/2 and ∫yz = 0 per unit length. Thin-beam
     // convention ([Branlard2019, eq. 31], ElastoDyn): sections have rotary inertia about the beam axis
-    // only, so S_xx gets −j_G/2, which cancels the j_G/2 of S_yy, S_zz in J_yy and J_zz.
-    if (jG > 0) {
+    // only, so S_xx gets −j_G/2, which cancels the j_G/2 of S_yy, S_zz in J_yy and J_zz (the lamina
+    // with J = diag(j_G, 0, 0) and the slopes left out).
+    if (!p.J.empty()) {
+      addSectionLamina(in, w, interpolateInertia(p.x, p.J, x), v);
+    } else if (jG > 0) {
       const double h = 0.5 * w * jG;
       in.S[0](0, 0) -= h;
       MatX& Syy = in.S[4];

@@ -7,7 +7,8 @@
 /// Body frame: the mean line runs along +x from the root (x = 0) to the tip (x = L). Shapes
 /// displace it along y and z and twist it about x. Mass sits on the COG line (mean line + COG
 /// offset); torsion moves the COG by eq. 30 and the section's polar inertia j_G adds eq. 31 (rotary
-/// inertia of the sections about the beam axis only, the thin-beam convention).
+/// inertia of the sections about the beam axis only, the thin-beam convention), or, when the full
+/// section inertia J is given, the section turns as a rigid lamina about all three axes.
 /// With axial shortening on, a bent beam's points move along x by −½ Σ q_i q_j ∫₀ˣ ν_i·ν_j dx' and, on a
 /// curved mean line (pre-sweep y0, pre-bend z0), by −Σ q_i ∫₀ˣ (y0' u_y,i' + z0' u_z,i') dx' (beam.cpp):
 /// the geometric stiffness of any axial load (gravity, masses carried, centrifugal, body
@@ -32,6 +33,11 @@ struct BeamProperties {
   VecX twist;         ///< structural twist of the principal axes about x [rad] (empty = 0)
   VecX y0, z0;        ///< mean line (pre-sweep, pre-bend) [m] (empty = 0)
   VecX cgy, cgz;      ///< COG offset from the mean line, body y and z [m] (empty = 0)
+  /// Full inertia tensor per length of the section about its COG, body axes, one per station [kg m]
+  /// (empty: the thin-beam convention, jG about x only). Given, it replaces jG in the inertia: the
+  /// section turns as a rigid lamina with the mean line's small rotations (t_x, −u_z', u_y'), so its
+  /// flap and edge rotary inertia (a Rayleigh beam; BeamDyn's M44, M55, M45) enter too.
+  std::vector<Mat3> J;
 };
 
 /// Where the integrals are evaluated.

@@ -160,7 +160,8 @@ BeamDynBladeBody beamDynBladeBody(const io::BeamDynInput& bd, const BeamDynBlade
     p.cgy(i) = sm.c.y();
     p.cgz(i) = sm.c.z();
     p.jG(i) = std::max(0.0, sm.J_cm(0, 0));
-    p.EIy(i) = s.C(5, 5);  // deflection along y: curvature about z
+    p.J.push_back(sm.J_cm);  // the whole rotational block: flap and edge rotary inertia too
+    p.EIy(i) = s.C(5, 5);    // deflection along y: curvature about z
     p.EIz(i) = s.C(4, 4);
     p.GKt(i) = s.C(3, 3);
   }

@@ -16,8 +16,11 @@
 ///
 /// What the body takes from the FE model: the elastic stiffness Φᵀ K Φ and the stiffness-proportional
 /// damping Φᵀ D Φ (D = diag(μ) C per section, BeamDyn's `mu`) of the kept modes exactly; the inertia
-/// from the thin-beam integrals of the shapes (mass per length, mass-centre offsets, polar inertia about
-/// the mass centre; the sections' flap and edge rotary inertia is left out, as ElastoDyn leaves it out).
+/// from the integrals of the shapes over the sections' mass (mass per length, mass-centre offsets) and
+/// the whole inertia tensor of each section about its mass centre (`BeamProperties::J`: torsion, flap
+/// and edge rotary inertia, BeamDyn's M44, M55, M66 and their couplings), the section turning with the
+/// shapes' slopes and twist. ElastoDyn's blades keep the thin-beam convention (no flap or edge rotary
+/// inertia); BeamDyn keeps it, and so does the BeamDyn blade here.
 #include <vector>
 
 #include "src/fem/beam6_model.hpp"
