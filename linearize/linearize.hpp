@@ -43,9 +43,10 @@ struct LinearizeOptions {
   /// and leaves them out (Q and B are then n × 0 and 2n × 0).
   bool inputs = true;
   /// Unsteady airfoil aerodynamics as first-order states (a deck's UA_Mod 4 or 6, on the frozen wake): the
-  /// elements' states in the model instead of the quasi-steady polar (linearize/unsteady_aero.hpp). No
+  /// elements' states in the model instead of the quasi-steady polar (linearize/unsteady_aero.hpp). On by
+  /// default, so a model has the states its deck asks for (issue 47); false: the quasi-steady polar. No
   /// effect without UA data, or with frozen_wake = false.
-  bool unsteady_aero = false;
+  bool unsteady_aero = true;
 };
 
 LinearModel linearize(const Model& model, const OperatingPoint& op, LinearizeWorkspace& lw,

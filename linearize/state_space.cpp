@@ -19,6 +19,17 @@ std::string dofUnit(const Model& m, int dof) {
   }
 }
 
+namespace {
+
+// HydroDyn's radiation states are a fit's internal states (only C z has units, N and N m); of the HGM
+// model's (Hansen, Gaunaa & Madsen 2004) x1, x2 are angles of attack, x3 a normal-force coefficient and x4
+// a separation point; OpenFAST's .lin gives them rad, rad, -, - (tests/data/openfast-lin/ua4-dbemt3).
+std::string firstOrderUnit(const std::string& name) {
+  return name.rfind("UA x1 ", 0) == 0 || name.rfind("UA x2 ", 0) == 0 ? "rad" : "-";
+}
+
+}  // namespace
+
 std::vector<bool> firstOrderStates(const std::vector<StateSpaceVariable>& x) {
   std::vector<bool> first(x.size(), true);
   for (std::size_t i = 0; i < x.size(); ++i)
@@ -51,11 +62,16 @@ StateSpaceModel stateSpace(const Model& m, const OperatingPoint& op, const Linea
     v.azimuth = false;
     s.x.push_back(v);
   }
-  for (const std::string& name : lin.first_order_names) {
+  for (std::size_t k = 0; k < lin.first_order_names.size(); ++k) {
     StateSpaceVariable v;
-    v.name = name;
-    v.unit = "-";      // a fit's internal state: only C z has units (N, N m)
-    s.x.push_back(v);  // at rest (0) at a static point
+    v.name = lin.first_order_names[k];
+    v.unit = firstOrderUnit(v.name);
+    // Body states rest at 0 at a static point; the unsteady-airfoil states at their steady values, on
+    // their blade in the rotating frame (so that the multiblade transform takes them with it).
+    if (k < static_cast<std::size_t>(lin.first_order_values.size()))
+      v.op = lin.first_order_values(static_cast<Eigen::Index>(k));
+    if (k < lin.first_order_blades.size()) v.blade = lin.first_order_blades[k];
+    s.x.push_back(v);
   }
   const int nx = static_cast<int>(s.x.size());
   for (int i = 0; i < m.ninput(); ++i) {

@@ -14,10 +14,13 @@ std::vector<int> bladesOf(const std::vector<StateSpaceVariable>& v) {
   return b;
 }
 
-// "blade 2 flap 1" → "flap 1"; "RootMFlp2" → "RootMFlp" (the blade number removed).
+// "blade 2 flap 1" → "flap 1"; "UA x1 blade 2 element 7" → "UA x1 element 7" (as the Campbell diagram's
+// mode shapes name them); "RootMFlp2" → "RootMFlp" (the blade number removed).
 std::string baseName(const std::string& name, int blade) {
   const std::string prefix = "blade " + std::to_string(blade + 1) + " ";
   if (name.rfind(prefix, 0) == 0) return name.substr(prefix.size());
+  if (const std::size_t at = name.find(" " + prefix); at != std::string::npos)
+    return name.substr(0, at + 1) + name.substr(at + 1 + prefix.size());
   const std::string suffix = std::to_string(blade + 1);
   if (name.size() > suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0 &&
       !std::isdigit(static_cast<unsigned char>(name[name.size() - suffix.size() - 1])))

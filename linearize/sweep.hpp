@@ -29,8 +29,8 @@ std::vector<SweepPoint> rpmRange(const std::string& spec);
 
 struct SweepOptions {
   int azimuths = 36;  ///< per revolution, for the periodic linearization of a rotating model
-  /// Unsteady-airfoil states in each linearization (LinearizeOptions::unsteady_aero).
-  bool unsteady_aero = false;
+  /// Unsteady-airfoil states in each linearization when the model has them (LinearizeOptions::unsteady_aero).
+  bool unsteady_aero = true;
   /// Called after each point with (points done, points total); used for progress on stderr.
   /// Under mpirun: rank 0 only, counting its own share of the points.
   std::function<void(int, int)> progress;

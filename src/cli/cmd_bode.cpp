@@ -35,7 +35,7 @@ struct BodeOptions {
 };
 
 void run(const BodeOptions& opt) {
-  const Model m = loadModel(opt.model);
+  const Model m = loadModel(opt.model, true);
   const std::string dir = opt.out.empty() ? defaultOutputFolder(opt.model.case_path) : opt.out;
   prepareOutputFolder(dir);
   ExportOptions eo;
@@ -109,6 +109,7 @@ void addBodeCommand(CLI::App& app) {
       "Frequency response (Bode diagram) of the linear model at one operating point, azimuth-averaged in multiblade "
       "coordinates without the azimuth integrator: writes bode.csv, bode.gp and PNG/SVG");
   addModelOptions(*cmd, opt->model, true);
+  addAeroStateOptions(*cmd, opt->model);
   cmd->add_option("--wind", opt->wind, "trimmed operating point at this wind speed [m/s] (aerodynamic models)");
   cmd->add_option("--inputs", opt->inputs, "inputs, comma-separated (e.g. 'wind speed,collective pitch')")->required();
   cmd->add_option("--outputs", opt->outputs, "outputs, comma-separated (e.g. GenSpeed)")->required();

@@ -33,7 +33,6 @@ struct CampbellOptions {
   std::vector<std::string> formats;
   bool html = false;
   bool closed_loop = false, without_speed_filter = false;
-  bool unsteady_aero = false;
 };
 
 /// `campbell --closed-loop`: the deck's ROSCO controller in the loop at each trimmed wind speed
@@ -45,7 +44,7 @@ void runClosedLoop(const CampbellOptions& opt) {
         "campbell: --closed-loop needs --wind START:STEP:STOP (the controller's steady states along the wind)");
   if (!opt.formats.empty() || !opt.schedule.empty() || !opt.rpm_range.empty())
     throw InputError("campbell: --closed-loop goes with --wind alone, without --rpm, --schedule or --format");
-  const Model m = loadModel(opt.model);
+  const Model m = loadModel(opt.model, true);
   const std::optional<RoscoController> controller = closedLoopController(m, opt.model);
   for (const std::string& n : controller->notes) std::fprintf(stderr, "whirl: note: %s\n", n.c_str());
   for (const std::string& n : linearRoscoNotes(*controller))
@@ -95,11 +94,7 @@ void run(const CampbellOptions& opt) {
   if (opt.without_speed_filter) throw InputError("campbell: --without-speed-filter goes with --closed-loop");
   if (opt.rpm_range.empty() + opt.schedule.empty() + opt.wind_range.empty() != 2)
     throw InputError("campbell: give exactly one of --rpm START:STEP:STOP, --schedule FILE and --wind START:STEP:STOP");
-  const Model m = loadModel(opt.model, opt.unsteady_aero);
-  if (opt.unsteady_aero && m.aero.ua_mod != 4 && m.aero.ua_mod != 6)
-    throw InputError(opt.model.case_path +
-                     ": --unsteady-aero: the deck's AeroDyn has no unsteady-airfoil states to add (UA_Mod 4 or 6; "
-                     "an older AeroDyn file: --set AFAeroMod=2 --set UAMod=4)");
+  const Model m = loadModel(opt.model, true);
   // Along the wind: trimmed with the deck's ROSCO controller when it has one (docs/user/controller.md).
   auto trimmed = [&] {
     const std::optional<RoscoController>& controller = m.deck_controller;
@@ -116,7 +111,6 @@ void run(const CampbellOptions& opt) {
   if (parallel::launchedByMpi()) parallel::requirePetsc("mpirun");  // start-up outside the timing
   CampbellDiagramOptions cd;
   cd.sweep.azimuths = opt.azimuths;
-  cd.sweep.unsteady_aero = opt.unsteady_aero;
   cd.sweep.check_point = [&opt](const Model& pm, const std::vector<OperatingPoint>& ops, const SweepPoint& sp) {
     return checkSolvedPoints(opt.model, pm, ops, fmt::format("{:g} rpm", sp.rpm));
   };
@@ -198,9 +192,7 @@ void addCampbellCommand(CLI::App& app) {
   cmd->add_flag(
       "--without-speed-filter", opt->without_speed_filter,
       "with --closed-loop: leave the controller's generator-speed low pass out (as ROSCO's own linear tools do)");
-  cmd->add_flag("--unsteady-aero", opt->unsteady_aero,
-                "unsteady airfoil states (the deck's UA_Mod 4 or 6) in every linearization, through the multiblade "
-                "transform; their roots are first-order lines (drawn with --first-order-lines)");
+  addAeroStateOptions(*cmd, opt->model);
   cmd->add_flag(
       "--html", opt->html,
       "also write campbell.html: the interactive report (diagram, mode shapes, tables), one file, no network");

@@ -101,7 +101,7 @@ void run(const CliOptions& opt) {
   if (bool(opt.model.rpm) + !opt.schedule.empty() + !opt.wind_range.empty() > 1)
     throw InputError("export: give at most one of --rpm, --schedule and --wind");
   const std::vector<std::string> in = splitList(opt.inputs), out = splitList(opt.outputs);
-  const Model base = loadModel(opt.model);
+  const Model base = loadModel(opt.model, true);
   checkNames(base, in, out);
   const std::string dir = opt.out.empty() ? defaultOutputFolder(opt.model.case_path) : opt.out;
   prepareOutputFolder(dir);
@@ -172,6 +172,7 @@ void addExportCommand(CLI::App& app) {
       "state-space model(s) A, B, C, D with named inputs and outputs for controller design: MATLAB .mat, "
       "OpenFAST-style .lin (one per azimuth) or JSON");
   addModelOptions(*cmd, opt->model);
+  addAeroStateOptions(*cmd, opt->model);
   cmd->add_option("--schedule", opt->schedule, "operating schedule CSV (wind speed, RotSpeed, BldPitch columns)");
   cmd->add_option("--wind", opt->wind_range,
                   "wind speeds START:STEP:STOP [m/s], each trimmed as `whirl steady` (aerodynamic models with a "

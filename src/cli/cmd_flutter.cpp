@@ -76,7 +76,7 @@ void printPoint(const Least& l) {
 }
 
 void run(const FlutterOptions& opt) {
-  const Model m = loadModel(opt.model);
+  const Model m = loadModel(opt.model, true);
   if (findAzimuthDof(m) < 0) throw InputError("flutter: the model has no rotor (no rotating coordinate)");
   const double first = opt.rpm_min >= 0 ? opt.rpm_min : modelCondition(m).rotor_speed * 30 / std::numbers::pi;
   const double last = opt.rpm_max > 0 ? opt.rpm_max : 3 * first;
@@ -142,6 +142,7 @@ void addFlutterCommand(CLI::App& app) {
       "flutter search: the rotor speed raised beyond rated (still air, or --wind with the pitch held) until a "
       "mode's damping crosses zero, then bisected; prints the onset speed, frequency and mode, writes flutter.csv");
   addModelOptions(*cmd, opt->model, false);
+  addAeroStateOptions(*cmd, opt->model);
   cmd->add_option("--wind", opt->wind, "hub-height wind speed [m/s] (default 0: still air)")
       ->check(CLI::Range(0.0, 100.0));
   cmd->add_option("--rpm-min", opt->rpm_min, "first rotor speed [rpm] (default: the deck's RotSpeed)");

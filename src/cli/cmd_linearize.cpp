@@ -14,7 +14,6 @@ namespace {
 struct LinearizeOptions {
   ModelOptions model;
   std::string out;
-  bool unsteady_aero = false;
 };
 
 // [q; q̇; z]: the coordinates, their rates, the first-order states (HydroDyn radiation, unsteady airfoils).
@@ -32,12 +31,10 @@ nlohmann::json namedValues(const Model& m, const VecX& v) {
 }
 
 void run(const LinearizeOptions& opt) {
-  const Model m = loadModel(opt.model, opt.unsteady_aero);
+  const Model m = loadModel(opt.model, true);
   const OperatingPoint op = solveOperatingPoint(m, startPoint(m, opt.model));
   const std::vector<std::string> problems = checkSolvedPoints(opt.model, m, {op});
-  whirl::LinearizeOptions lo;
-  lo.unsteady_aero = opt.unsteady_aero;
-  const LinearModel lin = linearize(m, op, lo);
+  const LinearModel lin = linearize(m, op);  // with the deck's UA states (unless --quasi-steady-aero)
   const std::string dir = opt.out.empty() ? defaultOutputFolder(opt.model.case_path) : opt.out;
   prepareOutputFolder(dir);
   OutputSet files(dir);  // the seven files appear together, or none
@@ -93,8 +90,7 @@ void addLinearizeCommand(CLI::App& app) {
       "linearize", "solve the operating point and write M, C, K, Q, A, B (CSV) and linearization.json");
   addModelOptions(*cmd, opt->model);
   cmd->add_option("--out", opt->out, "output folder (default reports/<case name>)");
-  cmd->add_flag("--unsteady-aero", opt->unsteady_aero,
-                "unsteady airfoil states (the deck's UA_Mod 4 or 6) in the linear model, on the frozen wake");
+  addAeroStateOptions(*cmd, opt->model);
   cmd->callback([opt]() { runWithCaseSource(opt->model.case_path, [&] { run(*opt); }); });
 }
 

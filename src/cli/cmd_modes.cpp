@@ -39,7 +39,7 @@ bool rotorPath(const Model& m, int az) {
 }
 
 void run(const ModesOptions& opt) {
-  const Model m = loadModel(opt.model);
+  const Model m = loadModel(opt.model, true);
   nlohmann::json header;
   header["case"] = opt.model.case_path;
   const int az = findAzimuthDof(m);
@@ -112,6 +112,7 @@ void addModesCommand(CLI::App& app) {
       "solve the operating point and print the modes (rotors with 3+ blades: multiblade coordinates, "
       "averaged over the azimuths)");
   addModelOptions(*cmd, opt->model);
+  addAeroStateOptions(*cmd, opt->model);
   cmd->add_option("--format", opt->format, "table, csv or json")->check(CLI::IsMember({"table", "csv", "json"}));
   addMultibladeAzimuths(*cmd, opt->azimuths);
   cmd->add_option("--solver", opt->solver,

@@ -31,7 +31,7 @@ Model loadSet(const StudyOptions& opt, const TextTable& sets, size_t s) {
   ModelOptions mo = opt.model;
   for (size_t c = 0; c < sets.names.size(); ++c) mo.sets.push_back(sets.names[c] + "=" + sets.rows[s][c]);
   try {
-    return loadModel(mo);
+    return loadModel(mo, true);
   } catch (const InputError& e) {
     throw InputError(where(sets.file, sets.lines[s], "parameter set " + std::to_string(s + 1), e.what()));
   }
@@ -95,6 +95,7 @@ void addStudyCommand(CLI::App& app) {
       "parameter study: every parameter set of --params (a CSV whose columns are --set keys, one row per set) "
       "at every operating point; writes study.csv (set, its values, then the campbell.csv columns)");
   addModelOptions(*cmd, opt->model, false);
+  addAeroStateOptions(*cmd, opt->model);
   cmd->add_option("--params", opt->params, "CSV of parameter sets: header of --set keys, one row per set")->required();
   cmd->add_option("--rpm", opt->rpm_range, "rotor speeds START:STEP:STOP [rpm]");
   cmd->add_option("--schedule", opt->schedule, "operating schedule CSV (wind speed, RotSpeed, BldPitch columns)");

@@ -141,7 +141,7 @@ void printChecks(const std::vector<PlacementCheck>& checks) {
 
 void run(TuneOptions opt) {
   const auto start = std::chrono::steady_clock::now();
-  const Model m = loadModel(opt.model);
+  const Model m = loadModel(opt.model, true);
   if (!m.aero.active() && opt.cp_surface.empty())
     throw InputError(opt.model.case_path + ": the model has no aerodynamics; give --cp-surface or an aeroelastic deck");
   opt.goals.fit_linear_in_wind = !opt.pointwise;
@@ -223,6 +223,7 @@ void addTuneCommand(CLI::App& app) {
       "Gains of ROSCO's PI pitch and torque loops by ROSCO's pole placement on the one-state rotor model, with "
       "whirl's sensitivities along its trimmed schedule (or a ROSCO Cp surface); writes tune.csv and a DISCON.IN");
   addModelOptions(*cmd, opt->model, false);
+  addAeroStateOptions(*cmd, opt->model);
   cmd->add_option("--pc-omega", opt->goals.pc_omega, "pitch loop natural frequency [rad/s]")->required();
   cmd->add_option("--pc-zeta", opt->goals.pc_zeta, "pitch loop damping ratio [-]")->required();
   cmd->add_option("--vs-omega", opt->goals.vs_omega, "torque loop natural frequency [rad/s]")->required();

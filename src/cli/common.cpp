@@ -37,6 +37,16 @@ void addModelOptions(CLI::App& cmd, ModelOptions& opt, bool with_rpm) {
                "let a YAML case's `file:` entries name files outside the case folder");
 }
 
+void addAeroStateOptions(CLI::App& cmd, ModelOptions& opt) {
+  CLI::Option* qs = cmd.add_flag("--quasi-steady-aero", opt.quasi_steady_aero,
+                                 "leave the deck's unsteady-airfoil states (AeroDyn UA_Mod 4 or 6) out of the linear "
+                                 "models: the static polar on the frozen wake, as with UA_Mod 0");
+  cmd.add_flag("--unsteady-aero", opt.unsteady_aero,
+               "insist on the deck's unsteady-airfoil states (UA_Mod 4 or 6; in the linear models by default): "
+               "refuse a deck without them")
+      ->excludes(qs);
+}
+
 CLI::Option* addMultibladeAzimuths(CLI::App& cmd, int& azimuths) {
   return cmd.add_option("--azimuths", azimuths, "azimuths per revolution: periodic linearization, multiblade average")
       ->check(CLI::Range(1, 3600));
@@ -66,11 +76,17 @@ OperatingPoint startPoint(const Model& m, const ModelOptions& opt) {
 
 bool isYamlCase(const std::string& path) { return isYamlCasePath(path); }
 
-Model loadModel(const ModelOptions& opt, bool unsteady_airfoil_states) {
+Model loadModel(const ModelOptions& opt, bool linear_model) {
   std::vector<std::string> notes;
   Model m = loadCaseModel(opt.case_path, opt.sets, opt.allow_outside_files, &notes);
+  if (opt.unsteady_aero && uaStateCount(m.aero) == 0)
+    throw InputError(opt.case_path +
+                     ": --unsteady-aero: the deck's AeroDyn has no unsteady-airfoil states to add (UA_Mod 4 or 6 "
+                     "on an element inside UAStartRad…UAEndRad; an older AeroDyn file: --set AFAeroMod=2 --set "
+                     "UAMod=4)");
+  if (opt.quasi_steady_aero) removeUnsteadyAirfoils(m.aero);
   // The states are in the linear model only where the model has some (UA_Mod 4 or 6 on some element).
-  if (unsteady_airfoil_states && uaStateCount(m.aero) > 0) std::erase_if(notes, io::isUnsteadyAirfoilNote);
+  if (linear_model && uaStateCount(m.aero) > 0) std::erase_if(notes, io::isUnsteadyAirfoilNote);
   if (parallel::rank() == 0)
     for (const std::string& n : notes) std::fprintf(stderr, "whirl: note: %s\n", escapeControlCharacters(n).c_str());
   return m;

@@ -27,10 +27,17 @@ struct ModelOptions {
   std::optional<double> rpm;
   bool allow_invalid_point = false;  ///< --allow-invalid-point: warn instead of stopping (point_validity.hpp)
   bool allow_outside_files = false;  ///< --allow-outside-files: a YAML case's `file:` may leave its folder
+  bool unsteady_aero = false;        ///< --unsteady-aero: the deck's UA states asked for explicitly (refused without)
+  bool quasi_steady_aero = false;    ///< --quasi-steady-aero: the deck's UA states left out of the linear models
 };
 
 /// Registers CASE, --set, --allow-invalid-point, --allow-outside-files and (when with_rpm) --rpm.
 void addModelOptions(CLI::App& cmd, ModelOptions& opt, bool with_rpm = true);
+
+/// --quasi-steady-aero and --unsteady-aero (exclusive) of the commands that build linear models: the
+/// blade elements' unsteady-airfoil states are in them when the deck's AeroDyn asks for them (UA_Mod 4 or
+/// 6), unless --quasi-steady-aero; --unsteady-aero insists on them (loadModel refuses a deck without).
+void addAeroStateOptions(CLI::App& cmd, ModelOptions& opt);
 
 /// `--azimuths N` of the commands that linearize a rotor over a revolution and average it in multiblade
 /// coordinates: one help text and range (1–3600) for all of them.
@@ -40,10 +47,13 @@ CLI::Option* addTrimAzimuths(CLI::App& cmd, int& azimuths);
 
 /// Loads the case — a YAML case file (.yaml, .yml), or an OpenFAST .fst / ElastoDyn .dat — with
 /// --set applied before the model is built. --rpm does not change the model: see operatingCondition.
-/// The reader's notes go to stderr; with `unsteady_airfoil_states` (the command puts the UA states into
-/// the linear model: --unsteady-aero) and a model that has such states, without the note that they are
-/// left out.
-Model loadModel(const ModelOptions& opt, bool unsteady_airfoil_states = false);
+/// The reader's notes go to stderr. With `linear_model` (the command builds linear models, which carry the
+/// deck's unsteady-airfoil states: LinearizeOptions::unsteady_aero) and a model that has such states,
+/// without the note that they are left out; with --quasi-steady-aero the model loses its UA data
+/// (removeUnsteadyAirfoils) and the note stays.
+/// \throws InputError "CASE: --unsteady-aero: the deck's AeroDyn has no unsteady-airfoil states to add …"
+///   when --unsteady-aero is given and the model has no element with states.
+Model loadModel(const ModelOptions& opt, bool linear_model = false);
 
 /// "a, b,c" → {"a", "b", "c"}: a comma-separated list of names (--inputs, --outputs), blanks trimmed.
 std::vector<std::string> splitList(const std::string& s);

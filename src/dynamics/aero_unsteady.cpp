@@ -67,6 +67,14 @@ void uaStateNames(const AeroModel& am, std::vector<std::string>& names, std::vec
     }
 }
 
+void removeUnsteadyAirfoils(AeroModel& am) {
+  am.ua_mod = 0;
+  am.ua_tables.clear();
+  am.ua_has_cm.clear();
+  for (AeroBlade& b : am.blades)
+    for (AeroStation& st : b.stations) st.ua = false;
+}
+
 aero::UaSection uaSection(const AeroModel& am, const AeroStation& st) {
   const auto p = static_cast<std::size_t>(st.polar);
   return {&am.polars[p], &am.ua_tables[p], st.chord, static_cast<bool>(am.ua_has_cm[p]), am.ua_mod};

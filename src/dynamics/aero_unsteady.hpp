@@ -31,6 +31,9 @@ int uaStateCount(const AeroModel& am);
 /// Their names, "UA x1 blade 2 element 7" (elements numbered from the root, 1-based, as AeroDyn's nodes),
 /// and groups "UA x1 blade 2" (one per state kind and blade: the rotating group of the multiblade transform).
 void uaStateNames(const AeroModel& am, std::vector<std::string>& names, std::vector<std::string>& groups);
+/// Takes the unsteady-airfoil data out of the model (ua_mod 0, no tables, no element with states): the
+/// quasi-steady polar everywhere, whatever a linearization asks (`--quasi-steady-aero`).
+void removeUnsteadyAirfoils(AeroModel& am);
 
 /// e += the generalized aerodynamic forces (dim ndof) at the kinematics already in ws (forwardKinematics at
 /// q, qd), with the induced velocities `frozen` and the UA states z (dim uaStateCount, elements in order

@@ -162,6 +162,11 @@ std::string linStateDescription(const StateSpaceVariable& x, const std::vector<S
                                                             {"roll", "R"},   {"pitch", "P"}, {"yaw", "Y"}};
     return "HD RdtnPtfm" + code.at(rm[1]) + rm[2].str();
   }
+  // The unsteady-airfoil states of a blade element as AeroDyn describes them ("AD x1 blade 2, node 7, rad":
+  // tests/data/openfast-lin/ua4-dbemt3/states_inputs.txt); in multiblade coordinates they keep whirl's name.
+  static const std::regex airfoil(R"(^UA (x[1-4]) blade (\d+) element (\d+)$)");
+  if (x.rate_of < 0 && std::regex_match(x.name, rm, airfoil))
+    return withUnit("AD " + rm[1].str() + " blade " + rm[2].str() + ", node " + rm[3].str(), x.unit);
   const bool rate = x.rate_of >= 0;
   const StateSpaceVariable& base = rate ? all[x.rate_of] : x;
   std::string d = elastodyn ? elastoDynDescription(base.name) : "";

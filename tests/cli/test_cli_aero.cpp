@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/cli/cli_support.hpp"
+#include "tests/support/lin_rules_reader.hpp"
 
 namespace whirl::test {
 namespace {
@@ -33,10 +34,11 @@ TEST(CliAero, CampbellAlongTheWind) {
 }
 
 // With the blade elements' unsteady-airfoil states (the deck's airfoil files carry UA data; AeroDyn's
-// older AFAeroMod switch turned to the HGM model): their multiblade coordinates are in the mode shapes.
+// older AFAeroMod switch turned to the HGM model): in the linear models by default, as the deck asks
+// (issue 47 item 6); their multiblade coordinates are in the mode shapes.
 TEST(CliAero, CampbellWithUnsteadyAirfoilStates) {
   const auto dir = freshDir("aero_campbell_ua");
-  const auto r = whirl("campbell " + kAero + " --set AFAeroMod=2 --set UAMod=4 --unsteady-aero --wind 8:4:12 " +
+  const auto r = whirl("campbell " + kAero + " --set AFAeroMod=2 --set UAMod=4 --wind 8:4:12 " +
                        "--azimuths 4 --no-plot --out '" + dir.string() + "'");
   ASSERT_EQ(r.code, 0) << r.err;
   // The states are in the model: no note that they are left out (issue 47).
@@ -51,16 +53,68 @@ TEST(CliAero, CampbellWithUnsteadyAirfoilStates) {
   EXPECT_EQ(slurp(dir / "campbell.csv").find("aero "), std::string::npos);
 }
 
-// The note that the UA states are left out comes without --unsteady-aero, and not with it (issue 47).
-TEST(CliAero, UnsteadyAirfoilNoteOnlyWithoutTheStates) {
+// The UA states by default where the deck asks for them, without the note that they are left out; with
+// --quasi-steady-aero the static polar and the note; --unsteady-aero as an explicit request (issue 47).
+TEST(CliAero, UnsteadyAirfoilStatesAsTheDeckAsks) {
   const std::string args = "linearize " + kAero + " --set AFAeroMod=2 --set UAMod=4 --rpm 12 --out '";
   const std::string note = "AFAeroMod: 2: unsteady airfoil aerodynamics: whirl uses the static airfoil tables";
-  const auto quasi_steady = whirl(args + freshDir("aero_lin_qs").string() + "'");
+  auto uaStates = [](const std::filesystem::path& dir) {
+    const auto j = nlohmann::json::parse(slurp(dir / "linearization.json"));
+    int n = 0;
+    for (const auto& s : j.at("states")) n += s.get<std::string>().rfind("UA x", 0) == 0;
+    return n;
+  };
+  const auto ua_dir = freshDir("aero_lin_ua"), asked_dir = freshDir("aero_lin_ua_asked"),
+             qs_dir = freshDir("aero_lin_qs");
+  const auto by_default = whirl(args + ua_dir.string() + "'");
+  ASSERT_EQ(by_default.code, 0) << by_default.err;
+  EXPECT_EQ(by_default.err.find(note), std::string::npos) << by_default.err;
+  // 15 elements with states per blade (UAStartRad 0.15, no cylinders), 4 HGM states each, 3 blades.
+  EXPECT_EQ(uaStates(ua_dir), 180);
+  const auto asked = whirl(args + asked_dir.string() + "' --unsteady-aero");
+  ASSERT_EQ(asked.code, 0) << asked.err;
+  EXPECT_EQ(uaStates(asked_dir), 180);
+  const auto quasi_steady = whirl(args + qs_dir.string() + "' --quasi-steady-aero");
   ASSERT_EQ(quasi_steady.code, 0) << quasi_steady.err;
   EXPECT_NE(quasi_steady.err.find(note), std::string::npos) << quasi_steady.err;
-  const auto with_states = whirl(args + freshDir("aero_lin_ua").string() + "' --unsteady-aero");
-  ASSERT_EQ(with_states.code, 0) << with_states.err;
-  EXPECT_EQ(with_states.err.find(note), std::string::npos) << with_states.err;
+  EXPECT_EQ(uaStates(qs_dir), 0);
+  const auto both = whirl(args + freshDir("aero_lin_both").string() + "' --quasi-steady-aero --unsteady-aero");
+  EXPECT_NE(both.code, 0);
+  EXPECT_NE(both.err.find("excludes"), std::string::npos) << both.err;
+}
+
+// UA_Mod values the linear model cannot carry (here 3, the deck's own) keep the note and the static polar;
+// asked for explicitly they are refused, naming the key to change.
+TEST(CliAero, UnsteadyAirfoilModelWithoutStatesKeepsTheNote) {
+  const std::string deck = "tests/data/openfast/decks/toolbox-nrel5mw/Main_Onshore.fst";
+  const auto r = whirl("modes " + deck + " --rpm 9 --format csv");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("AFAeroMod: 2: unsteady airfoil aerodynamics"), std::string::npos) << r.err;
+  EXPECT_EQ(r.out.find("UA x"), std::string::npos);
+  const auto asked = whirl("modes " + deck + " --rpm 9 --format csv --unsteady-aero");
+  EXPECT_NE(asked.code, 0);
+  EXPECT_NE(asked.err.find(deck + ": --unsteady-aero: the deck's AeroDyn has no unsteady-airfoil states to add"),
+            std::string::npos)
+      << asked.err;
+  EXPECT_NE(asked.err.find("--set UAMod=4"), std::string::npos) << asked.err;
+}
+
+// BeamDyn (finite-element) blades carry the states too: the NREL 5MW BeamDyn deck has AFAeroMod 2 with
+// UAMod 3 (no states: the note); with UAMod 4 every blade's elements get them.
+TEST(CliAero, BeamDynBladesWithUnsteadyAirfoilStates) {
+  const std::string deck = "cases/nrel5mw_beamdyn/Test26.fst";
+  const auto dir = freshDir("aero_lin_bd_ua");
+  const auto r = whirl("linearize " + deck + " --set UAMod=4 --set HWindSpeed=11 --rpm 12 --out '" + dir.string() +
+                       "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(slurp(dir / "linearization.json"));
+  std::vector<std::string> ua;
+  for (const auto& s : j.at("states"))
+    if (s.get<std::string>().rfind("UA x", 0) == 0) ua.push_back(s.get<std::string>());
+  ASSERT_FALSE(ua.empty());
+  EXPECT_EQ(ua.size() % 12, 0u);  // 4 states per element, the same elements on each of the three blades
+  EXPECT_EQ(ua.front(), "UA x1 blade 1 element 5") << "the first element with states (UAStartRad 0.15)";
+  EXPECT_EQ(ua.back().rfind("UA x4 blade 3 element ", 0), 0u) << ua.back();
 }
 
 TEST(CliAero, CampbellUnsteadyAeroNeedsTheDecksStates) {
@@ -70,6 +124,66 @@ TEST(CliAero, CampbellUnsteadyAeroNeedsTheDecksStates) {
   EXPECT_NE(r.err.find(kAero + ": --unsteady-aero: the deck's AeroDyn has no unsteady-airfoil states to add"),
             std::string::npos)
       << r.err;
+}
+
+// A deck without UA states (Main_Aero: AFAeroMod 1) linearizes as before, with or without
+// --quasi-steady-aero, to the last digit (scripts/main.sh's outputs do not change).
+TEST(CliAero, DeckWithoutUnsteadyAirfoilsIsUnchanged) {
+  const auto plain = whirl("modes " + kAero + " --rpm 10 --format csv");
+  ASSERT_EQ(plain.code, 0) << plain.err;
+  const auto qs = whirl("modes " + kAero + " --rpm 10 --format csv --quasi-steady-aero");
+  ASSERT_EQ(qs.code, 0) << qs.err;
+  EXPECT_EQ(plain.out, qs.out);
+}
+
+// `export` with the unsteady-airfoil states (issue 47 item 3; seconds: Slow): per azimuth in the rotating frame as
+// OpenFAST's .lin describes them ("AD x1 blade 1, node 2, rad", rotating, first order:
+// tests/data/openfast-lin/ua4-dbemt3/states_inputs.txt), read by the rules ROSCO's and openfast_toolbox's
+// readers use; `whirl lin` reads them back into the modes `whirl modes` finds; the multiblade JSON and
+// .mat name them without the blade. 32 structural states + 180 UA states (15 elements × 4 × 3 blades).
+TEST(CliAeroSlow, ExportCarriesTheUnsteadyAirfoilStates) {
+  const std::string ua = kAero + " --set AFAeroMod=2 --set UAMod=4 --rpm 12 --azimuths 3";
+  const auto dir = freshDir("aero_export_ua");
+  const auto lin = whirl("export " + ua + " --format lin --out '" + (dir / "lin").string() + "'");
+  ASSERT_EQ(lin.code, 0) << lin.err;
+  std::string files;
+  for (int k = 1; k <= 3; ++k) {
+    const auto path = dir / "lin" / ("statespace." + std::to_string(k) + ".lin");
+    files += " '" + path.string() + "'";
+    const RulesLin f = readLinByOpenFastRules(slurp(path));
+    ASSERT_EQ(f.x.size(), 212u) << path;
+    ASSERT_EQ(f.matrices.at("A").rows(), 212) << path;
+    for (std::size_t i = 32; i < 212; ++i) {
+      EXPECT_TRUE(f.x[i].rotating) << i;
+      EXPECT_EQ(f.x[i].order, 1) << i;
+    }
+    EXPECT_EQ(f.x[32].description, "AD x1 blade 1, node 5, rad");  // the first element with states (UAStartRad)
+    EXPECT_EQ(f.x[34].description, "AD x3 blade 1, node 5, -");
+    EXPECT_EQ(f.x[211].description, "AD x4 blade 3, node 19, -");
+    EXPECT_GT(f.x[35].op, 0.0);  // x4, the separation point, at its steady value
+  }
+  const auto back = whirl("lin" + files + " --format json");
+  ASSERT_EQ(back.code, 0) << back.err;
+  const auto own = whirl("modes " + ua + " --format json");
+  ASSERT_EQ(own.code, 0) << own.err;
+  const auto jb = nlohmann::json::parse(back.out), jo = nlohmann::json::parse(own.out);
+  ASSERT_EQ(jb["modes"].size(), jo["modes"].size());
+  for (std::size_t i = 0; i < jo["modes"].size(); ++i) {
+    EXPECT_EQ(jb["modes"][i]["name"], jo["modes"][i]["name"]) << i;
+    // export's and modes' linearizations of this aero deck differ by up to 3.4e-5 relative in frequency
+    // without the states too (flap 1 BW, measured with --quasi-steady-aero); 2.2e-5 with them.
+    const double fb = jb["modes"][i]["freq_hz"], fo = jo["modes"][i]["freq_hz"];
+    EXPECT_NEAR(fb, fo, 1e-4 * std::max(fo, 1e-3)) << i;
+  }
+  const auto json = whirl("export " + ua + " --format json --drop-azimuth --out '" + (dir / "json").string() + "'");
+  ASSERT_EQ(json.code, 0) << json.err;
+  const auto j = nlohmann::json::parse(slurp(dir / "json" / "statespace.json"));
+  const auto& x = j["operating_points"][0]["model"]["states"];
+  ASSERT_EQ(x.size(), 211u);  // the azimuth dropped
+  EXPECT_EQ(x[31]["name"], "UA x1 element 5 collective");
+  EXPECT_EQ(x[31]["unit"], "rad");
+  EXPECT_FALSE(x[31]["rotating_frame"].get<bool>());
+  EXPECT_EQ(x[210]["name"], "UA x4 element 19 sin");
 }
 
 // A state-space model per trimmed wind speed for controller design: below rated at fine pitch, above

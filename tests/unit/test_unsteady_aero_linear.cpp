@@ -46,6 +46,13 @@ Evaluation evaluate(const Model& m, const OperatingPoint& op, const VecX& q, con
 
 OperatingPoint rTestPoint(const Model& m) { return solveOperatingPoint(m, initialPoint(m)); }
 
+// The quasi-steady linearization of a deck with UA data (the states are in by default: issue 47 item 6).
+LinearizeOptions quasiSteady() {
+  LinearizeOptions o;
+  o.unsteady_aero = false;
+  return o;
+}
+
 TEST(UnsteadyAeroLinear, StatesOnTheElementsAeroDynGivesThem) {
   // OpenFAST's .lin of the deck lists UA states x1-x4 at nodes 2, 3, 4 of blade 1 (node 1: Cylinder1.dat).
   const Model m = readElastoDynModel(uaDeck());
@@ -58,9 +65,9 @@ TEST(UnsteadyAeroLinear, StatesOnTheElementsAeroDynGivesThem) {
   EXPECT_EQ(groups.back(), "UA x4 blade 1");
 }
 
-TEST(UnsteadyAeroLinear, AdJacobianEqualsCentralDifferences) {
-  const Model m = readElastoDynModel(uaDeck());
-  const OperatingPoint op = rTestPoint(m);
+// Every block of unsteadyAeroLinear at op against central differences of the loads and state rates,
+// within `tol` relative.
+void expectAdEqualsCentralDifferences(const Model& m, const OperatingPoint& op, double tol = 1e-6) {
   const std::vector<int> cols = m.activeDofs();
   const UnsteadyAeroLinear ua = unsteadyAeroLinear(m, op, cols, true);
   const int nz = static_cast<int>(ua.z.size());
@@ -70,15 +77,27 @@ TEST(UnsteadyAeroLinear, AdJacobianEqualsCentralDifferences) {
   auto check = [&](const char* what, const MatX& ad, const std::function<VecX(double)>& f, double h, int col) {
     const VecX fd = (f(h) - f(-h)) / (2 * h);
     const double scale = std::max(1.0, fd.cwiseAbs().maxCoeff());
-    EXPECT_LT((ad.col(col) - fd).cwiseAbs().maxCoeff(), 1e-6 * scale) << what << " column " << col;
+    EXPECT_LT((ad.col(col) - fd).cwiseAbs().maxCoeff(), tol * scale) << what << " column " << col;
   };
+  // x4 (the separation point) is clamped to [0, 1] where the loads and rates use it, as in AeroDyn; in
+  // attached flow its steady value is f_st = 1 exactly, on the clamp, where AD takes the branch inside
+  // (src/aero/unsteady_airfoil.hxx clampT) and central differences would average it with the clamped
+  // side's zero: there second-order backward differences, (3 f(0) − 4 f(−h) + f(−2h)) / 2h.
+  auto checkInside = [&](const char* what, const MatX& ad, const std::function<VecX(double)>& f, double h, int col) {
+    const VecX fd = (3 * f(0) - 4 * f(-h) + f(-2 * h)) / (2 * h);
+    const double scale = std::max(1.0, fd.cwiseAbs().maxCoeff());
+    EXPECT_LT((ad.col(col) - fd).cwiseAbs().maxCoeff(), tol * scale) << what << " column " << col << " (x4 = 1)";
+  };
+  const int per = uaStatesPerElement(m.aero);
   for (int c = 0; c < static_cast<int>(cols.size()); ++c) {
     auto dq = [&](double h, bool rate, bool states) {
       VecX q = op.q, qd = op.qd;
       (rate ? qd : q)(cols[c]) += h;
       return states ? evaluate(m, op, q, qd, op.u, &ua.z) : evaluate(m, op, q, qd, op.u, nullptr);
     };
-    const double hq = 1e-5 * std::max(1.0, std::abs(op.q(cols[c])));
+    // 4e-5: ΔK is the difference of two blade loads of ~1e6 N, whose round-off dominates smaller steps (on
+    // the BeamDyn blades 2.1e-6 relative at 1e-5, 1.4e-5 at 2.5e-6; measured).
+    const double hq = 4e-5 * std::max(1.0, std::abs(op.q(cols[c])));
     check(
         "dK", -ua.dK, [&](double h) { return VecX(dq(h, false, true).e - dq(h, false, false).e); }, hq, c);
     check(
@@ -94,10 +113,16 @@ TEST(UnsteadyAeroLinear, AdJacobianEqualsCentralDifferences) {
       z(k) += h;
       return evaluate(m, op, op.q, op.qd, op.u, &z);
     };
-    check(
-        "G", ua.G, [&](double h) { return dz(h).e; }, 1e-6, k);
-    check(
-        "Azz", ua.Azz, [&](double h) { return dz(h).zdot; }, 1e-6, k);
+    const bool on_clamp = k % per == per - 1 && ua.z(k) == 1.0;
+    const auto g = [&](double h) { return VecX(dz(h).e); };
+    const auto a = [&](double h) { return VecX(dz(h).zdot); };
+    if (on_clamp) {
+      checkInside("G", ua.G, g, 1e-6, k);
+      checkInside("Azz", ua.Azz, a, 1e-6, k);
+    } else {
+      check("G", ua.G, g, 1e-6, k);
+      check("Azz", ua.Azz, a, 1e-6, k);
+    }
   }
   const int wind = m.roles.wind_speed_input;
   auto du = [&](double h) {
@@ -116,12 +141,30 @@ TEST(UnsteadyAeroLinear, AdJacobianEqualsCentralDifferences) {
       "Zu", ua.Zu, [&](double h) { return du(h).first.zdot; }, 1e-4, wind);
 }
 
+TEST(UnsteadyAeroLinear, AdJacobianEqualsCentralDifferences) {
+  const Model m = readElastoDynModel(uaDeck());
+  expectAdEqualsCentralDifferences(m, rTestPoint(m));
+}
+
+// BeamDyn (finite-element) blades: the elastic twist turns the section and its rate is the pitch rate ω
+// the HGM model receives; the NREL 5MW BeamDyn deck (cases/nrel5mw_beamdyn/Main_Aero_BD.fst, a coarse
+// blade: 20 elements, 6 modes) with UA_Mod 4, at its initial condition (12.1 rpm, 11.4 m/s).
+TEST(UnsteadyAeroLinear, AdJacobianEqualsCentralDifferencesOnBeamDynBlades) {
+  const Model m =
+      readElastoDynModel((std::filesystem::path(WHIRL_SOURCE_DIR) / "cases/nrel5mw_beamdyn/Main_Aero_BD.fst").string(),
+                         {"blade_elements=20", "blade_modes=6", "AFAeroMod=2", "UAMod=4"});
+  ASSERT_EQ(m.aero.ua_mod, 4);
+  ASSERT_GT(uaStateCount(m.aero), 0);
+  // 2e-6 as the FE blades' quasi-steady loads against central differences (tests/unit/test_fe_blade_aero.cpp):
+  // measured 1.2e-6 relative on ΔK's second column (steps 4e-5; 2.1e-6 at 1e-5, 1.4e-5 at 2.5e-6: the
+  // difference of two ~1e6 N blade loads), every other block within 1e-6.
+  expectAdEqualsCentralDifferences(m, rTestPoint(m), 2e-6);
+}
+
 TEST(UnsteadyAeroLinear, LinearModelCarriesTheStatesAfterTheStructure) {
   const Model m = readElastoDynModel(uaDeck());
   const OperatingPoint op = rTestPoint(m);
-  LinearizeOptions with;
-  with.unsteady_aero = true;
-  const LinearModel qs = linearize(m, op), ua = linearize(m, op, with);
+  const LinearModel qs = linearize(m, op, quasiSteady()), ua = linearize(m, op);
   const int n = static_cast<int>(qs.dofs.size());
   ASSERT_EQ(ua.A.rows(), 2 * n + 12);
   ASSERT_EQ(ua.B.rows(), 2 * n + 12);
@@ -137,8 +180,12 @@ TEST(UnsteadyAeroLinear, LinearModelCarriesTheStatesAfterTheStructure) {
   EXPECT_EQ(MatX(ua.A.bottomRightCorner(12, 12)), blocks.Azz);
   EXPECT_EQ(MatX(ua.A.block(2 * n, 0, 12, n)), MatX(blocks.Zq));
   EXPECT_EQ(MatX(ua.B.bottomRows(12)), blocks.Zu);
-  // Without the option every matrix is the quasi-steady one, bit for bit.
-  const LinearModel again = linearize(m, op);
+  // A model without its UA data (removeUnsteadyAirfoils: --quasi-steady-aero) linearizes by default to the
+  // quasi-steady model, bit for bit.
+  Model without = m;
+  removeUnsteadyAirfoils(without.aero);
+  EXPECT_EQ(uaStateCount(without.aero), 0);
+  const LinearModel again = linearize(without, op);
   EXPECT_EQ(again.A, qs.A);
   EXPECT_EQ(again.B, qs.B);
 }
@@ -225,7 +272,7 @@ TEST(UnsteadyAeroLinear, SlowLimitIsTheQuasiSteadyFrozenWake) {
   const UnsteadyAeroLinear ua = unsteadyAeroLinear(m, op, cols, false);
   const MatX Ginv = ua.G * ua.Azz.inverse();
   const MatX dK = ua.dK + Ginv * ua.Zq, dC = ua.dC + Ginv * ua.Zqd;
-  const LinearModel qs = linearize(m, op);
+  const LinearModel qs = linearize(m, op, quasiSteady());
   for (int c = 0; c < static_cast<int>(cols.size()); ++c) {
     const int r = cols[c];
     // No stiffness from the states here (the flap does not turn the section's flow at a parked rotor):
@@ -285,7 +332,6 @@ TEST(UnsteadyAeroLinear, RotatingStatesGoThroughTheMultibladeTransform) {
   PeriodicOptions po;
   po.azimuths = 4;  // 0°, 90°, 180°, 270°: not a multiple of the blade spacing
   po.linearize.inputs = false;
-  po.linearize.unsteady_aero = true;
   const PeriodicLinearization p = linearizePeriodic(m, c, po);
   const LinearModel& first = p.models.front();
   const int n = static_cast<int>(first.dofs.size());

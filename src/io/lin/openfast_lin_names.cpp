@@ -36,11 +36,14 @@ std::string dofNameFromLinDescription(const std::string& d) {
                                 std::regex::icase);
   static const std::regex beamdyn(
       R"(^BD_(\d+) (?:First time derivative of )?finite element node (\d+).*(translational|rotational) displacement in ([XYZ]))");
+  // AeroDyn's unsteady-airfoil states: "AD x1 blade 1, node 2, rad" (UnsteadyAero, UA_Mod 4 to 6).
+  static const std::regex airfoil(R"(^AD (x[1-5]) blade (\d+), node (\d+))");
   std::smatch m;
   if (std::regex_search(d, m, beamdyn))
     return "blade " + m[1].str() + " BD node " + m[2].str() +
            (m[3] == "translational" ? " translation " : " rotation ") + m[4].str();
   if (const std::string hd = hydroDynName(d); !hd.empty()) return hd;
+  if (std::regex_search(d, m, airfoil)) return "UA " + m[1].str() + " blade " + m[2].str() + " element " + m[3].str();
   if (std::regex_search(d, m, tower))
     return std::string("tower ") + (m[2].str()[0] == 'f' || m[2].str()[0] == 'F' ? "FA " : "SS ") + ordinal(m[1]);
   if (std::regex_search(d, m, blade))
@@ -75,6 +78,9 @@ std::string dofNameFromLinDescription(const std::string& d) {
 
 std::string firstOrderGroupFromLinDescription(const std::string& d) {
   std::string s = dofNameFromLinDescription(d);
+  // "UA x1 blade 2 element 7" → "UA x1 blade 2", the group whirl's own models give it (uaStateNames).
+  if (const std::size_t at = s.find(" element "); s.rfind("UA x", 0) == 0 && at != std::string::npos)
+    return s.substr(0, at);
   while (!s.empty() && (std::isdigit(static_cast<unsigned char>(s.back())) || s.back() == ' ')) s.pop_back();
   return s.empty() ? dofNameFromLinDescription(d) : s;
 }

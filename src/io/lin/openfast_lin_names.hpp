@@ -5,7 +5,8 @@
 /// → "tower FA 1", "ED Variable speed generator DOF" → "generator azimuth", … so that modes from
 /// `.lin` files carry the same names as whirl's own models. BeamDyn nodes: "BD_2 finite element node 3
 /// (…) rotational displacement in Y, rad" → "blade 2 BD node 3 rotation Y" (BeamDyn's own axes).
-/// HydroDyn states: "HD RdtnPtfmSg3" → "HydroDyn radiation surge 3". Unknown states keep their
+/// HydroDyn states: "HD RdtnPtfmSg3" → "HydroDyn radiation surge 3"; AeroDyn's unsteady-airfoil states:
+/// "AD x1 blade 2, node 7, rad" → "UA x1 blade 2 element 7" (group "UA x1 blade 2"). Unknown states keep their
 /// description (without the module prefix and the "(internal …)" part).
 #include <string>
 
