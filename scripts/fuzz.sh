@@ -12,8 +12,8 @@
 # The corpus each run grows is kept in build-fuzz/corpus/<harness> for the next run.
 # Everything runs under `nice -n 19`; the build uses FUZZ_BUILD_JOBS (default 2) jobs.
 # FUZZ_RUNS=N also stops each harness after N executions.
-# FUZZ_BUILD_DIR=DIR uses another build folder configured with -DWHIRL_FUZZ=ON (e.g. one that also
-# builds the tests under the sanitizers: docs/dev/fuzzing.md).
+# The build is the one sanitized build of scripts/sanitized-build.sh (which also serves the test suite:
+# scripts/sanitized-tests.sh); FUZZ_BUILD_DIR=DIR uses another folder configured with -DWHIRL_FUZZ=ON.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-45}
@@ -30,25 +30,7 @@ all=(fuzz_case_yaml fuzz_openfast_parse fuzz_fst fuzz_elastodyn fuzz_servodyn fu
 harnesses=("${all[@]}")
 if [ $# -gt 0 ]; then harnesses=("$@"); fi
 
-bash scripts/install-deps.sh clang libclang-rt-14-dev > /dev/null
-launcher=()
-# ccache keys on paths relative to the folder above the repository (as scripts/build.sh), so a fresh
-# clone (CI) reuses the objects of an earlier build on the same machine.
-export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$(dirname "$PWD")}"
-# The objects carry -gline-tables-only: without NOHASHDIR ccache keys on the build folder, so every
-# worktree or clone would recompile the whole clang build (15 min on 2 cores).
-export CCACHE_NOHASHDIR=1
-command -v ccache > /dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
-if [ ! -f "$out/CMakeCache.txt" ]; then
-  nice -n 19 cmake -S . -B "$out" -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DWHIRL_FUZZ=ON \
-    -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -gline-tables-only" \
-    -DWHIRL_BUILD_TESTS=OFF -DWHIRL_BUILD_BENCH=OFF "${launcher[@]}" > "$out.log" 2>&1 || { cat "$out.log"; exit 2; }
-fi
-start=$(date +%s)
-if ! nice -n 19 cmake --build "$out" -j "${FUZZ_BUILD_JOBS:-2}" --target "${harnesses[@]}" >> "$out.log" 2>&1; then
-  tail -n 30 "$out.log"; echo "fuzz.sh: build failed (log: $out.log)" >&2; exit 2
-fi
-echo "fuzz.sh: harnesses built in $(( $(date +%s) - start )) s"
+SANITIZED_BUILD_DIR=$out SANITIZED_BUILD_JOBS=${FUZZ_BUILD_JOBS:-2} bash scripts/sanitized-build.sh "${harnesses[@]}"
 bash scripts/fuzz-seeds.sh "$out/seeds" > /dev/null
 
 # Leaks are findings; OpenMPI is never started by the harnesses (no PETSc), so nothing to suppress.
