@@ -1,66 +1,55 @@
 #!/usr/bin/env bash
-# The include rule of docs/dev/architecture.md (*Layers*): a file includes only files of its own layer
-# or of a lower one, and folders of one rank (aerodynamics and the MPI map; FE and equations; OpenFAST
-# and .lin readers) do not include each other.
-# Prints every `#include "…"` that breaks the rule as file:line: includes X (layer a -> b) and exits
-# 1 if there is one; a source folder with no layer is an error too (give a new folder its layer here
-# and in CMakeLists.txt). Run by CTest (test `layers_include_rule`, label unit).
-# Usage: bash scripts/check-layers.sh [repository root]
+# The include rule of docs/dev/architecture.md (*Layers*), checked against the graph CMake builds the
+# layers by: cmake/layer-graph.cmake writes, from each layer target's links, the folders each source
+# folder may include (build/layers/graph.txt), so the rule has one source, CMakeLists.txt.
+# Prints every `#include "…"` of a layer folder that points outside what its target links, as
+# file:line: includes X (folder a may not include folder b), and exits 1 if there is one; a source
+# folder of no layer is an error too (give a new folder to whirl_layer(...) in CMakeLists.txt).
+# Run by CTest (test `layers_include_rule`, label unit).
+# Usage: bash scripts/check-layers.sh [repository root] [graph file, default <root>/build/layers/graph.txt]
 set -euo pipefail
 cd "${1:-$(dirname "$0")/..}"
+graph=${2:-build/layers/graph.txt}
+if [[ ! -f "$graph" ]]; then
+  echo "check-layers.sh: $graph: no layer graph (configure the build first: cmake -S . -B build)" >&2
+  exit 2
+fi
 
-# folder -> layer rank × 10 (docs/dev/architecture.md, table *Layers*); within a layer the folders are
-# ranked by their own targets' links: layer 0 base < aerodynamics, MPI map < model types < shapes; the
-# readers of layer 2 text < OpenFAST, .lin < YAML cases
-layer_of() {
-  case "$1" in
-    src/base/*) echo 0 ;;
-    src/aero/*|src/parallel/*) echo 2 ;;
-    src/model/*) echo 4 ;;
-    src/shapes/*) echo 6 ;;
-    src/fem/*|src/dynamics/*) echo 10 ;;
-    src/io/text/*) echo 20 ;;
-    src/io/openfast/*|src/io/lin/*) echo 21 ;;
-    src/io/case/*) echo 22 ;;
-    src/turbine/*) echo 30 ;;
-    linearize/*) echo 40 ;;
-    modal/*) echo 50 ;;
-    src/writers/*) echo 60 ;;
-    src/cli/*) echo 70 ;;
-    python/src/*) echo 80 ;;
-    *) echo "" ;;
-  esac
-}
-# folders of one rank that must not include each other
-peers() {
-  case "$1" in
-    src/fem/*) echo fem ;;
-    src/dynamics/*) echo dynamics ;;
-    src/aero/*) echo aerodynamics ;;
-    src/parallel/*) echo "MPI/thread map" ;;
-    src/io/openfast/*) echo "OpenFAST readers" ;;
-    src/io/lin/*) echo ".lin readers" ;;
-    *) echo "" ;;
-  esac
+declare -A visible=()
+folders=()
+while IFS= read -r line; do
+  [[ -z "$line" || "$line" == \#* ]] && continue
+  folder=${line%%:*}
+  visible[$folder]=" ${line#*: } "
+  folders+=("$folder")
+done < "$graph"
+# Longest folder first, so src/io/openfast/aerodyn/x.hpp maps to src/io/openfast, not to src/io.
+mapfile -t folders < <(printf '%s\n' "${folders[@]}" | awk '{ print length, $0 }' | sort -rn | cut -d' ' -f2-)
+
+folder_of() {
+  local f
+  for f in "${folders[@]}"; do
+    if [[ "$1" == "$f"/* ]]; then
+      echo "$f"
+      return
+    fi
+  done
 }
 
 status=0
 while IFS= read -r -d '' file; do
-  from=$(layer_of "$file")
+  from=$(folder_of "$file")
   if [[ -z "$from" ]]; then
-    echo "$file: folder has no layer (add it to scripts/check-layers.sh and CMakeLists.txt)"
+    echo "$file: folder has no layer (add it to whirl_layer(...) in CMakeLists.txt)"
     status=1
     continue
   fi
   while IFS=: read -r line target; do
     [[ -z "$line" ]] && continue
-    to=$(layer_of "$target")
-    [[ -z "$to" ]] && continue  # a header outside the layers (none today) or a relative include
-    if (( to > from )); then
-      echo "$file:$line: includes $target (rank $from -> $to, upward)"
-      status=1
-    elif (( to == from )) && [[ -n "$(peers "$file")" && -n "$(peers "$target")" && "$(peers "$file")" != "$(peers "$target")" ]]; then
-      echo "$file:$line: includes $target (folders of one layer: $(peers "$file") -> $(peers "$target"))"
+    to=$(folder_of "$target")
+    [[ -z "$to" ]] && continue  # a header outside the layers (tests/support) or a relative include
+    if [[ "${visible[$from]}" != *" $to "* ]]; then
+      echo "$file:$line: includes $target (folder $from may not include $to: its target does not link that layer)"
       status=1
     fi
   done < <(awk 'match($0, /^[ \t]*#[ \t]*include[ \t]*"[^"]*"/) {
