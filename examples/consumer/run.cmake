@@ -8,6 +8,14 @@ execute_process(COMMAND ${CMAKE_COMMAND} --install ${BUILD} --prefix ${WORK}/sta
 if(rc)
   message(FATAL_ERROR "install failed: ${err}")
 endif()
+# Only the public headers are installed (cmake/public-headers.cmake): the readers' internals and the
+# CLI stay private.
+foreach(private src/io/case/case_reader.hpp src/io/openfast/openfast_lines.hpp src/cli/common.hpp
+                linearize/ida_vector.hpp)
+  if(EXISTS ${WORK}/stage/include/whirl/${private})
+    message(FATAL_ERROR "a private header was installed: include/whirl/${private}")
+  endif()
+endforeach()
 execute_process(COMMAND ${CMAKE_COMMAND} -S ${SOURCE} -B ${WORK}/build -G ${GENERATOR} -DCMAKE_BUILD_TYPE=Release
     -DCMAKE_CXX_COMPILER=${CXX} -DCMAKE_PREFIX_PATH=${WORK}/stage
   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)

@@ -1,6 +1,8 @@
-// Finite-element beam bodies of a case (`type: fem_beam`): properties, mesh, boundary conditions,
-// springs, lumped masses, reduction (none, Guyan, Craig–Bampton) → a Ritz body (src/fem/). After
-// finalize(), the geometric stiffness of the gravity loads each FE body carries is added.
+// Finite-element beam bodies of a case (`type: fem_beam`): the keys (properties, points, soil, DOF
+// kinds, boundary conditions, springs, lumped masses, reduction, damping) read into a
+// fem::StraightBeamSpec, which src/fem/straight_beam_body assembles and reduces to a Ritz body. After
+// finalize(), the geometric stiffness of the gravity loads each FE body carries is added (the loads from
+// src/dynamics/gravity_loads, the stiffness from src/fem/fem_body).
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -9,8 +11,8 @@
 
 #include "src/base/error.hpp"
 #include "src/base/limits.hpp"
-#include "src/dynamics/kinematics.hpp"
-#include "src/fem/fem_body.hpp"
+#include "src/dynamics/gravity_loads.hpp"
+#include "src/fem/straight_beam_body.hpp"
 #include "src/io/case/case_columns.hpp"
 #include "src/io/case/case_reader.hpp"
 
@@ -86,13 +88,6 @@ std::array<bool, 6> readActiveDofs(const CaseNode& n) {
   return a;
 }
 
-int nodeAt(const fem::BeamModel& m, double x) {
-  int best = 0;
-  for (int i = 1; i < m.nnodes(); ++i)
-    if (std::abs(m.nodes[i].x() - x) < std::abs(m.nodes[best].x() - x)) best = i;
-  return best;
-}
-
 /// A named station of an FE body (`points:`), placed on the mesh.
 struct FemPoint {
   std::string name;
@@ -112,68 +107,48 @@ std::vector<FemPoint> readFemPoints(const CaseNode& n, double L, const std::stri
   return pts;
 }
 
-/// Distributed soil springs (`soil:` kx, ky, kz per length along x), interpolated linearly.
-struct FemSoil {
-  Columns columns;
-  VecX x;
-  /// Stiffness per length of column `c` at x; 0 outside the table or where the column is absent.
-  double at(const char* c, double xs, double L) const {
-    if (!columns.count(c) || xs < x(0) - 1e-9 * L || xs > x(x.size() - 1) + 1e-9 * L) return 0.0;
-    const VecX& v = columns.at(c).values;
-    Eigen::Index i = 0;
-    while (i < x.size() - 2 && xs > x(i + 1)) ++i;
-    const double w = std::clamp((xs - x(i)) / (x(i + 1) - x(i)), 0.0, 1.0);
-    return (1 - w) * v(i) + w * v(i + 1);
-  }
-};
-
-std::optional<FemSoil> readFemSoil(const CaseNode& n, double L) {
+/// Distributed soil springs (`soil:` kx, ky, kz per length along x).
+std::optional<fem::BeamSoil> readFemSoil(const CaseNode& n, double L) {
   const auto s = n.find("soil");
   if (!s) return std::nullopt;
-  FemSoil soil;
-  soil.columns = readColumns(*s, {"x", "fraction", "kx", "ky", "kz"}, {});
-  soil.x = stations(*s, soil.columns, L, false);
+  const Columns columns = readColumns(*s, {"x", "fraction", "kx", "ky", "kz"}, {});
+  fem::BeamSoil soil;
+  soil.x = stations(*s, columns, L, false);
   if (soil.x(0) < -1e-9 * L || soil.x(soil.x.size() - 1) > L * (1 + 1e-9))
     s->fail("soil stations must lie on the beam");
   for (const char* k : {"kx", "ky", "kz"})
-    if (soil.columns.count(k)) requireNonNegative(soil.columns.at(k));
+    if (columns.count(k)) requireNonNegative(columns.at(k));
+  auto column = [&](const char* k) { return columns.count(k) ? columns.at(k).values : VecX(); };
+  soil.kx = column("kx");
+  soil.ky = column("ky");
+  soil.kz = column("kz");
   return soil;
 }
 
-/// Soil springs on the elements whose middle lies in the soil table (nodal values at both ends).
-void applyFemSoil(const FemSoil& soil, double L, fem::BeamModel& fm) {
-  for (fem::Element& e : fm.elements) {
-    const double x1 = fm.nodes[e.n1].x(), x2 = fm.nodes[e.n2].x(), xm = 0.5 * (x1 + x2);
-    if (xm < soil.x(0) || xm > soil.x(soil.x.size() - 1)) continue;
-    e.k1 = Vec3(soil.at("kx", x1, L), soil.at("ky", x1, L), soil.at("kz", x1, L));
-    e.k2 = Vec3(soil.at("kx", x2, L), soil.at("ky", x2, L), soil.at("kz", x2, L));
-  }
-}
+/// Index of the point named in `v` (StraightBeamSpec::points); an FE body's points are its nodes.
+using PointIndex = std::function<int(const CaseNode&)>;
 
-/// Node of a point named in `v`; an FE body's points are its nodes.
-using PointNode = std::function<int(const CaseNode&)>;
-
-void readFemSupports(const CaseNode& n, const PointNode& pointNode, fem::BeamModel& fm) {
+void readFemSupports(const CaseNode& n, const PointIndex& pointIndex, fem::StraightBeamSpec& spec) {
   if (const auto c = n.find("clamped"))
-    for (const CaseNode& p : c->items()) fem::clamp(fm, pointNode(p));
+    for (const CaseNode& p : c->items()) spec.clamped.push_back(pointIndex(p));
   if (const auto s = n.find("supports"))
     for (const CaseNode& sp : s->items()) {
       sp.allowKeys({"at", "K"});
-      fem::NodeSpring ns;
-      ns.node = pointNode(sp.at("at"));
+      fem::BeamPointSpring ns;
+      ns.point = pointIndex(sp.at("at"));
       const CaseNode k = sp.at("K");
       ns.K = k.matrix(6, 6);
       if ((ns.K - ns.K.transpose()).norm() > 1e-9 * ns.K.norm()) k.fail("the 6×6 stiffness matrix must be symmetric");
-      fm.springs.push_back(ns);
+      spec.supports.push_back(ns);
     }
 }
 
-void readFemMasses(const CaseNode& n, const PointNode& pointNode, fem::BeamModel& fm) {
+void readFemMasses(const CaseNode& n, const PointIndex& pointIndex, fem::StraightBeamSpec& spec) {
   if (const auto ms = n.find("masses"))
     for (const CaseNode& mm : ms->items()) {
       mm.allowKeys({"at", "mass", "inertia"});
-      fem::NodeMass nm;
-      nm.node = pointNode(mm.at("at"));
+      fem::BeamPointMass nm;
+      nm.point = pointIndex(mm.at("at"));
       nm.mass = mm.number("mass", 0);
       if (nm.mass < 0) mm.at("mass").fail("negative mass");
       if (const auto j = mm.find("inertia")) {
@@ -181,14 +156,14 @@ void readFemMasses(const CaseNode& n, const PointNode& pointNode, fem::BeamModel
         if ((d.array() < 0).any()) j->fail("inertia [Jxx, Jyy, Jzz] about the node must not be negative");
         nm.inertia = d.asDiagonal();
       }
-      fm.masses.push_back(nm);
+      spec.masses.push_back(nm);
     }
 }
 
 /// Each active DOF kind needs stiffness and inertia, else K or M is singular; `props_node`: the
 /// `uniform` or `properties` node the message points at.
 void requireFemStiffnessAndInertia(const fem::BeamStations& props, const std::array<bool, 6>& active,
-                                   const CaseNode& props_node, fem::BeamModel& fm) {
+                                   const CaseNode& props_node) {
   auto need = [&](int k, const VecX& v, const char* what) {
     if (active[k] && (v.size() == 0 || (v.array() <= 0).any()))
       props_node.fail(std::string("DOF ") + fem::kNodeDofNames[k] + " needs " + what + " > 0 (or leave " +
@@ -197,11 +172,9 @@ void requireFemStiffnessAndInertia(const fem::BeamStations& props, const std::ar
   need(0, props.EA, "EA");
   need(3, props.GJ, "GJ");
   need(3, props.iy2, "jG");
-  for (fem::Element& e : fm.elements)  // unused kinds: any positive value keeps the element valid
-    if (!active[0]) e.s1.EA = e.s2.EA = 1.0;
 }
 
-void readFemReduction(const CaseNode& n, const PointNode& pointNode, fem::FemBodySpec& spec) {
+void readFemReduction(const CaseNode& n, const PointIndex& pointIndex, fem::StraightBeamSpec& spec) {
   const auto r = n.find("reduction");
   if (!r) return;
   r->allowKeys({"type", "interface", "modes"});
@@ -211,8 +184,8 @@ void readFemReduction(const CaseNode& n, const PointNode& pointNode, fem::FemBod
   else if (t == "craig_bampton") spec.reduction = fem::ReductionKind::CraigBampton;
   else r->at("type").fail("unknown reduction '" + t + "' (allowed: none, guyan, craig_bampton)");
   if (spec.reduction != fem::ReductionKind::None) {
-    for (const CaseNode& p : r->at("interface").items()) spec.interface_nodes.push_back(pointNode(p));
-    if (spec.interface_nodes.empty()) r->at("interface").fail("the interface needs at least one point");
+    for (const CaseNode& p : r->at("interface").items()) spec.interface_points.push_back(pointIndex(p));
+    if (spec.interface_points.empty()) r->at("interface").fail("the interface needs at least one point");
   }
   if (spec.reduction == fem::ReductionKind::CraigBampton) {
     spec.modes = r->at("modes").integer();
@@ -258,71 +231,57 @@ void addFemDofs(const fem::FemBody& fb, const std::map<int, std::string>& point_
 
 void readFemBody(const CaseNode& n, int index, CaseBuild& build) {
   Body& b = build.model().bodies[index];
+  fem::StraightBeamSpec spec;
   const CaseNode len = n.at("length");
-  const double L = len.number();
+  const double L = spec.length = len.number();
   if (!(L > 0)) len.fail("the length must be positive");
-  int elements = 20;
   if (const auto e = n.find("elements")) {
-    elements = e->integer();
-    if (elements < 1 || elements > limits::kMaxFemElements)
+    spec.elements = e->integer();
+    if (spec.elements < 1 || spec.elements > limits::kMaxFemElements)
       e->fail("must be between 1 and " + std::to_string(limits::kMaxFemElements) + " (src/base/limits.hpp)");
   }
   const auto uni = n.find("uniform"), tab = n.find("properties");
   if (uni && tab) tab->fail("give uniform or properties, not both");
   if (!uni && !tab) n.fail("an FE beam needs uniform or properties");
   const CaseNode& props_node = uni ? *uni : *tab;
-  const fem::BeamStations props = femProperties(props_node, L, uni.has_value());
+  spec.props = femProperties(props_node, L, uni.has_value());
+  spec.timoshenko = n.boolean("timoshenko", false);
 
-  // The mesh contains the points and the ends of the soil table.
   const std::vector<FemPoint> pts = readFemPoints(n, L, b.name);
-  const std::optional<FemSoil> soil = readFemSoil(n, L);
-  std::vector<double> extra;
-  for (const FemPoint& p : pts) extra.push_back(p.x);
-  if (soil) extra.insert(extra.end(), {soil->x(0), soil->x(soil->x.size() - 1)});
-  fem::FemBodySpec spec;
-  spec.model = fem::straightBeam(props, fem::meshStations(0, L, elements, extra), n.boolean("timoshenko", false));
-  fem::BeamModel& fm = spec.model;
-  if (soil) applyFemSoil(*soil, L, fm);
-
-  std::map<std::string, int> node_of;
-  for (const FemPoint& p : pts) {
-    node_of[p.name] = nodeAt(fm, p.x);
-    spec.points.emplace_back(p.name, node_of[p.name]);
-  }
-  const PointNode pointNode = [&](const CaseNode& v) {
+  for (const FemPoint& p : pts) spec.points.emplace_back(p.name, p.x);
+  spec.soil = readFemSoil(n, L);
+  const PointIndex pointIndex = [&](const CaseNode& v) {
     const std::string s = v.text();
-    const auto it = node_of.find(s);
-    if (it == node_of.end())
-      v.fail("no point named '" + s + "' in body '" + b.name + "' (points of an FE body are its nodes)");
-    return it->second;
+    for (std::size_t i = 0; i < pts.size(); ++i)
+      if (pts[i].name == s) return static_cast<int>(i);
+    v.fail("no point named '" + s + "' in body '" + b.name + "' (points of an FE body are its nodes)");
   };
-  std::array<bool, 6> active{true, true, true, true, true, true};
-  if (const auto d = n.find("dofs")) active = readActiveDofs(*d);
-  fem::keepOnly(fm, active);
-  readFemSupports(n, pointNode, fm);
-  readFemMasses(n, pointNode, fm);
-  requireFemStiffnessAndInertia(props, active, props_node, fm);
-  readFemReduction(n, pointNode, spec);
+  if (const auto d = n.find("dofs")) spec.active = readActiveDofs(*d);
+  readFemSupports(n, pointIndex, spec);
+  readFemMasses(n, pointIndex, spec);
+  requireFemStiffnessAndInertia(spec.props, spec.active, props_node);
+  readFemReduction(n, pointIndex, spec);
 
-  fem::FemBody fb;
+  fem::StraightBeamBody beam;
   try {
-    fb = fem::buildFemBody(spec, b.name);
+    beam = fem::buildStraightBeamBody(spec, b.name);
   } catch (const std::exception& e) {
     rethrowAt(n.where(), e);
   }
+  fem::FemBody& fb = beam.body;
   b.inertia = fb.body.inertia;
   b.elastic = fb.body.elastic;
   b.points = fb.body.points;
   readFemDamping(n, b);
   std::map<int, std::string> point_name;
-  for (const FemPoint& p : pts) point_name.emplace(node_of[p.name], p.name);
+  for (std::size_t i = 0; i < pts.size(); ++i) point_name.emplace(beam.point_node[i], pts[i].name);
   addFemDofs(fb, point_name, index, n, build);
   if (n.boolean("geometric_stiffness", true)) {
     auto pend = std::make_shared<FemPending>();
     pend->body = b.name;
-    pend->model = fm;
-    pend->fb = std::move(fb);
-    for (const FemPoint& p : pts) pend->point_node.push_back(node_of[p.name]);
+    pend->model = std::move(beam.model);
+    pend->fb = std::move(beam.body);
+    pend->point_node = std::move(beam.point_node);
     pend->where = n.where();
     build.fem.push_back(pend);
   }
@@ -330,16 +289,7 @@ void readFemBody(const CaseNode& n, int index, CaseBuild& build) {
 
 void addFemGeometricStiffness(Model& m, const std::vector<std::shared_ptr<FemPending>>& pending) {
   if (pending.empty() || m.gravity.isZero(0)) return;
-  Workspace<double> ws(m);
-  VecX q(m.ndof());
-  for (int k = 0; k < m.ndof(); ++k) q(k) = m.dofs[k].value;
-  const VecX zero = VecX::Zero(m.ndof());
-  forwardKinematics(m, ws, q, zero, zero);
-  // Mass of each body with everything it carries (parents come before children).
-  std::vector<double> carried(m.bodies.size());
-  for (size_t i = 0; i < m.bodies.size(); ++i) carried[i] = m.bodies[i].inertia.mass;
-  for (int i = static_cast<int>(m.bodies.size()) - 1; i >= 0; --i)
-    if (m.bodies[i].parent >= 0) carried[m.bodies[i].parent] += carried[i];
+  const GravityAtRest g = gravityAtRest(m);
   for (const auto& p : pending) {
     const int bi = *m.findBody(p->body);
     std::vector<fem::CarriedMass> loads;
@@ -350,11 +300,10 @@ void addFemGeometricStiffness(Model& m, const std::vector<std::shared_ptr<FemPen
         throw InputError(where(p->where.file, p->where.line, "",
                                "body '" + child.name + "' sits on FE body '" + p->body +
                                    "' without a point: attach it at a node (`at:`)"));
-      loads.push_back({p->point_node[child.parent_point], carried[c]});
+      loads.push_back({p->point_node[child.parent_point], g.carried[c]});
     }
-    const Vec3 g_body = ws.frames[bi].R.transpose() * m.gravity;
     try {
-      m.bodies[bi].elastic.K += fem::gravityGeometricStiffness(p->fb, p->model, g_body, loads);
+      m.bodies[bi].elastic.K += fem::gravityGeometricStiffness(p->fb, p->model, g.gravity_body[bi], loads);
     } catch (const std::exception& e) {
       rethrowAt(p->where, e);
     }
