@@ -10,7 +10,7 @@ if(rc)
 endif()
 # Only the public headers are installed (cmake/public-headers.cmake): the readers' internals and the
 # CLI stay private.
-foreach(private src/io/case/case_reader.hpp src/io/openfast/openfast_lines.hpp src/cli/common.hpp
+foreach(private src/io/case/case_reader.hpp src/dynamics/residual.hxx src/cli/common.hpp
                 linearize/ida_vector.hpp)
   if(EXISTS ${WORK}/stage/include/whirl/${private})
     message(FATAL_ERROR "a private header was installed: include/whirl/${private}")
