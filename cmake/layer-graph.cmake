@@ -5,14 +5,15 @@
 #
 # whirl_layer() records each target's folders in the target property WHIRL_FOLDERS.
 
-# Layer targets `target` sees through the PUBLIC (interface) links of `dep`, `dep` included.
-function(_whirl_public_closure dep out)
-  set(seen ${dep})
-  get_target_property(links ${dep} INTERFACE_LINK_LIBRARIES)
+# `out` = `target` and the layer targets it sees through `property` (LINK_LIBRARIES: every link of its
+# own; INTERFACE_LINK_LIBRARIES: the PUBLIC ones it passes on), each of those with what it passes on.
+function(_whirl_seen_through target property out)
+  set(seen ${target})
+  get_target_property(links ${target} ${property})
   if(links)
     foreach(l IN LISTS links)
       if(TARGET ${l} AND NOT l MATCHES "::")  # a layer, not an imported package (Eigen3::Eigen …)
-        _whirl_public_closure(${l} sub)
+        _whirl_seen_through(${l} INTERFACE_LINK_LIBRARIES sub)
         list(APPEND seen ${sub})
       endif()
     endforeach()
@@ -34,17 +35,7 @@ function(whirl_write_layer_graph path)
       continue()  # an INTERFACE grouping (whirl_io): no sources of its own
     endif()
     list(APPEND all_folders ${folders})
-    set(visible ${t})
-    get_target_property(links ${t} LINK_LIBRARIES)
-    if(links)
-      foreach(l IN LISTS links)
-        if(TARGET ${l} AND NOT l MATCHES "::")
-          _whirl_public_closure(${l} sub)
-          list(APPEND visible ${sub})
-        endif()
-      endforeach()
-    endif()
-    list(REMOVE_DUPLICATES visible)
+    _whirl_seen_through(${t} LINK_LIBRARIES visible)
     set(visible_folders "")
     foreach(v IN LISTS visible)
       get_target_property(vf ${v} WHIRL_FOLDERS)
