@@ -17,20 +17,34 @@ double aeroShare(const Mode& mode, const std::vector<bool>& aero) {
 
 bool isAeroRoot(const Mode& mode) { return mode.first_order && mode.name.rfind(kPrefix, 0) == 0; }
 
-int nameAeroRoots(std::vector<Mode>& modes, const std::vector<bool>& aero) {
-  int left = static_cast<int>(std::count(aero.begin(), aero.end(), true));
-  std::vector<double> share(modes.size());
-  std::vector<std::size_t> order(modes.size());
-  for (std::size_t k = 0; k < modes.size(); ++k) share[k] = aeroShare(modes[k], aero), order[k] = k;
+std::vector<bool> pickAeroRoots(const std::vector<double>& share, const std::vector<bool>& pair,
+                                const std::vector<bool>& excluded, int count) {
+  std::vector<std::size_t> order(share.size());
+  for (std::size_t k = 0; k < share.size(); ++k) order[k] = k;
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return share[a] > share[b]; });
-  std::vector<bool> is_aero(modes.size(), false);
+  std::vector<bool> is_aero(share.size(), false);
   for (std::size_t k : order) {
-    const int roots = modes[k].damped_freq_hz > 0 ? 2 : 1;
-    if (left <= 0) break;
-    if (roots > left || modes[k].rigid_body) continue;
+    const int roots = pair[k] ? 2 : 1;
+    if (count <= 0) break;
+    if (roots > count || excluded[k]) continue;
     is_aero[k] = true;
-    left -= roots;
+    count -= roots;
   }
+  return is_aero;
+}
+
+bool isAeroStateName(const std::string& name) { return name.rfind("UA x", 0) == 0; }
+
+int nameAeroRoots(std::vector<Mode>& modes, const std::vector<bool>& aero) {
+  std::vector<double> share(modes.size());
+  std::vector<bool> pair(modes.size()), rigid(modes.size());
+  for (std::size_t k = 0; k < modes.size(); ++k) {
+    share[k] = aeroShare(modes[k], aero);
+    pair[k] = modes[k].damped_freq_hz > 0;
+    rigid[k] = modes[k].rigid_body;
+  }
+  const std::vector<bool> is_aero = pickAeroRoots(share, pair, rigid,
+                                                  static_cast<int>(std::count(aero.begin(), aero.end(), true)));
   int count = 0;
   for (std::size_t k = 0; k < modes.size(); ++k) {
     if (!is_aero[k]) continue;

@@ -15,6 +15,7 @@
 ///
 /// Which coordinates are aerodynamic: the rotating first-order states (a state of its own with a blade,
 /// RotorCoordinates::blade ≥ 0), the only ones whirl has being the blade elements' UA states.
+#include <string>
 #include <vector>
 
 #include "modal/modes.hpp"
@@ -26,6 +27,17 @@ double aeroShare(const Mode& mode, const std::vector<bool>& aero);
 
 /// Whether `mode` is an aerodynamic root, as nameAeroRoots marked it (first-order, named "aero <k>").
 bool isAeroRoot(const Mode& mode);
+
+/// Which of a set of roots are the aerodynamic ones: by decreasing `share` (each root's participation
+/// share in the aerodynamic states), as many roots as there are aerodynamic states, `count`; a complex pair
+/// (`pair`) counts two and is skipped when only one is left; a root with `excluded` (a rigid-body mode)
+/// never is one.
+std::vector<bool> pickAeroRoots(const std::vector<double>& share, const std::vector<bool>& pair,
+                                const std::vector<bool>& excluded, int count);
+
+/// Whether state or coordinate `name` is a blade element's aerodynamic state ("UA x1 blade 2 element 7",
+/// after the multiblade transform "UA x1 element 7 cos": src/dynamics/aero_unsteady.hpp).
+bool isAeroStateName(const std::string& name);
 
 /// Marks (Mode::first_order) and names the aerodynamic roots of `modes` (sorted by frequency, each real
 /// root a mode of its own): by decreasing aeroShare, as many roots as `aero` flags coordinates (one state

@@ -21,6 +21,7 @@ CampbellPoint campbellPointOf(const ClosedLoopPoint& p, bool closed) {
     md.damped_freq_hz = m.damped_freq_hz;
     md.damping_ratio = m.damping_ratio;
     md.name = m.name;
+    md.first_order = m.aero;  // "aero k": listed apart, never tracked (modal/aero_roots.hpp)
     md.shape = m.shape.head(static_cast<Eigen::Index>(plant.size()));
     md.participation = md.shape.cwiseAbs2().real();
     md.participation /= std::max(md.participation.sum(), 1e-300);

@@ -5,6 +5,7 @@
 #include <map>
 
 #include "linearize/export_point.hpp"
+#include "modal/aero_roots.hpp"
 #include "modal/eigen.hpp"
 
 namespace whirl {
@@ -49,6 +50,15 @@ std::string whirlName(const std::string& name, const StateSpaceModel& s, const E
   return base + (forward ? " FW" : " BW");
 }
 
+/// Marks the roots the unsteady-airfoil states add (modal/aero_roots.hpp): as many as there are such
+/// states, by their participation share in them (`share`, one per mode).
+void nameClosedLoopAeroRoots(std::vector<ClosedLoopMode>& modes, const std::vector<double>& share, int states) {
+  std::vector<bool> pair(modes.size()), none(modes.size(), false);
+  for (std::size_t k = 0; k < modes.size(); ++k) pair[k] = modes[k].damped_freq_hz > 0;
+  const std::vector<bool> is_aero = pickAeroRoots(share, pair, none, states);
+  for (std::size_t k = 0; k < modes.size(); ++k) modes[k].aero = is_aero[k];
+}
+
 }  // namespace
 
 std::vector<ClosedLoopMode> namedModes(const StateSpaceModel& s, bool has_pitch_loop, double rotor_speed) {
@@ -59,18 +69,26 @@ std::vector<ClosedLoopMode> namedModes(const StateSpaceModel& s, const EigenDeco
                                        double rotor_speed) {
   const Eigen::Index n = e.values.size();
   std::vector<ClosedLoopMode> modes;
+  std::vector<double> aero_share;
+  int aero_states = 0;
+  for (const StateSpaceVariable& v : s.x) aero_states += isAeroStateName(v.name);
   for (Eigen::Index j = 0; j < n; ++j) {
     const std::complex<double> lambda = e.values(j);
     if (lambda.imag() < 0) continue;  // one of each pair
     std::map<std::string, double> share;
-    double total = 0, controller = 0;
+    double total = 0, controller = 0, aero = 0;
     for (Eigen::Index i = 0; i < n; ++i) {
       const double p = std::abs(e.vectors(i, j) * std::conj(e.left(i, j)));
       const StateSpaceVariable& v = s.x[static_cast<size_t>(i)];
-      share[groupOf(v, has_pitch_loop, s.x)] += p;
       total += p;
+      if (isAeroStateName(v.name)) {  // names no mode: the aerodynamic roots are named apart below
+        aero += p;
+        continue;
+      }
+      share[groupOf(v, has_pitch_loop, s.x)] += p;
       if (v.name.rfind(kController, 0) == 0) controller += p;
     }
+    aero_share.push_back(total > 0 ? aero / total : 0);
     ClosedLoopMode m;
     m.eigenvalue = lambda;
     const ModalFrequency f = modalFrequency(lambda);
@@ -81,11 +99,18 @@ std::vector<ClosedLoopMode> namedModes(const StateSpaceModel& s, const EigenDeco
     Eigen::Index big = 0;
     e.vectors.col(j).cwiseAbs().maxCoeff(&big);
     m.shape = e.vectors.col(j) / e.vectors(big, j);
+    if (share.empty()) share["aerodynamic states"] = aero;  // no state but the aerodynamic ones
     m.name = std::max_element(share.begin(), share.end(), [](auto& a, auto& b) { return a.second < b.second; })->first;
     m.name = whirlName(m.name, s, e.vectors.col(j), rotor_speed);
     modes.push_back(m);
   }
+  if (aero_states > 0) nameClosedLoopAeroRoots(modes, aero_share, aero_states);
   std::sort(modes.begin(), modes.end(), [](const auto& a, const auto& b) { return a.freq_hz < b.freq_hz; });
+  if (aero_states > 0) {
+    int k = 0;
+    for (ClosedLoopMode& m : modes)
+      if (m.aero) m.name = "aero " + std::to_string(++k);  // numbered by frequency, as the open loop's
+  }
   return modes;
 }
 

@@ -26,6 +26,9 @@ struct ClosedLoopMode {
   double damping_ratio = 0;  ///< [-]
   std::complex<double> eigenvalue;
   double controller_share = 0;  ///< participation of the controller's states [-]
+  /// One of the roots the blade elements' unsteady-airfoil states add (modal/aero_roots.hpp), named
+  /// "aero k"; the other modes are named from the structure's and the controller's states alone.
+  bool aero = false;
   /// Right eigenvector on the model's states (ClosedLoopPoint::closed.x or plant.x), largest entry 1:
   /// what tracking along the wind compares (modal/closed_loop_campbell.hpp).
   Eigen::VectorXcd shape;

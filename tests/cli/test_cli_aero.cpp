@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
 
 #include "tests/cli/cli_support.hpp"
 #include "tests/support/lin_rules_reader.hpp"
@@ -51,6 +53,41 @@ TEST(CliAero, CampbellWithUnsteadyAirfoilStates) {
             "rpm,wind_speed,mode,freq_hz,damped_freq_hz,damping_ratio,aero_share,dominant_state");
   EXPECT_NE(aero.find(",aero 1,"), std::string::npos);
   EXPECT_EQ(slurp(dir / "campbell.csv").find("aero "), std::string::npos);
+}
+
+// The closed-loop Campbell diagram with unsteady-airfoil states (ROSCO's NREL 5MW with UA_Mod 4): the
+// same structural lines as the quasi-steady one, none named after a UA state; the states' roots are "aero k" in
+// closed_loop_modes.csv (modal/closed_loop_modes.hpp; before, 140 of its lines were UA states).
+TEST(CliAero, ClosedLoopCampbellKeepsTheStatesRootsOffTheLines) {
+  const std::string deck = "cases/nrel5mw/Main_ROSCO.fst", run = " --closed-loop --wind 10:4:18 --azimuths 4 --no-plot";
+  const auto ua = freshDir("aero_closed_loop_ua"), qs = freshDir("aero_closed_loop_qs");
+  const auto r = whirl("campbell " + deck + " --set AFAeroMod=2 --set UAMod=4" + run + " --out '" + ua.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  ASSERT_EQ(whirl("campbell " + deck + run + " --out '" + qs.string() + "'").code, 0);
+  auto lines = [](const std::filesystem::path& csv) {
+    std::set<std::string> names;
+    std::istringstream in(slurp(csv));
+    std::string row;
+    std::getline(in, row);  // header: rpm,wind_speed,mode,...
+    while (std::getline(in, row)) {
+      const std::size_t a = row.find(',', row.find(',') + 1);
+      names.insert(row.substr(a + 1, row.find(',', a + 1) - a - 1));
+    }
+    return names;
+  };
+  // The structure's lines alike; the controller's modes may be named differently where the UA states
+  // change the rotor's aerodynamic damping (a "speed reference filter" line at one wind speed).
+  auto structural = [](const std::set<std::string>& names) {
+    std::set<std::string> out;
+    for (const std::string& n : names)
+      if (n.find("control") == std::string::npos && n.find("filter") == std::string::npos) out.insert(n);
+    return out;
+  };
+  const std::set<std::string> with_ua = lines(ua / "campbell.csv"), without = lines(qs / "campbell.csv");
+  EXPECT_EQ(structural(with_ua), structural(without));
+  EXPECT_GE(structural(with_ua).size(), 15u);
+  for (const std::string& n : with_ua) EXPECT_NE(n.rfind("UA x", 0), 0u) << n;
+  EXPECT_NE(slurp(ua / "closed_loop_modes.csv").find(",aero 1,"), std::string::npos);
 }
 
 // The UA states by default where the deck asks for them, without the note that they are left out; with

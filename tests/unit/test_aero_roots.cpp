@@ -5,10 +5,12 @@
 
 #include <filesystem>
 #include <map>
+#include <numbers>
 
 #include "linearize/trim.hpp"
 #include "modal/aero_roots.hpp"
 #include "modal/campbell_diagram.hpp"
+#include "modal/closed_loop_modes.hpp"
 #include "src/dynamics/aero_unsteady.hpp"
 #include "src/turbine/elastodyn_model.hpp"
 
@@ -90,3 +92,40 @@ TEST(AeroRoots, StructuralLinesKeepTheirNamesWithUnsteadyAirfoils) {
 }
 
 }  // namespace
+
+// The closed-loop modes (modal/closed_loop_modes.hpp) with unsteady-airfoil states: their roots named
+// "aero k" and marked, the structural mode named from the structure alone. A 1-DOF oscillator (1 Hz,
+// 2 % damping) driven by two first-order "UA" states (time constants 0.05 and 0.2 s) that it feeds back:
+// the oscillator's share in the UA states is large enough that, named from all states, it could take a
+// UA state's name; the two real roots are the states'.
+TEST(AeroRoots, ClosedLoopModesNameTheStatesRootsApart) {
+  StateSpaceModel s;
+  s.x = {{"tower FA 1", "m", 0, -1, -1, false},
+         {"d(tower FA 1)/dt", "m/s", 0, -1, 0, false},
+         {"UA x1 element 3 collective", "rad", 0, -1, -1, false},
+         {"UA x2 element 3 collective", "rad", 0, -1, -1, false}};
+  const double w = 2 * std::numbers::pi, z = 0.02;
+  s.A = MatX::Zero(4, 4);
+  s.A(0, 1) = 1;
+  s.A(1, 0) = -w * w;
+  s.A(1, 1) = -2 * z * w;
+  s.A(1, 2) = 30;  // the states' loads on the oscillator
+  s.A(1, 3) = 20;
+  s.A(2, 1) = 1;  // the oscillator's velocity drives the states
+  s.A(2, 2) = -1 / 0.05;
+  s.A(3, 1) = 1;
+  s.A(3, 3) = -1 / 0.2;
+  const std::vector<ClosedLoopMode> modes = namedModes(s, false, 0.0);
+  ASSERT_EQ(modes.size(), 3u);  // one pair, two real roots
+  int aero = 0;
+  for (const ClosedLoopMode& m : modes) {
+    if (m.damped_freq_hz > 0) {
+      EXPECT_EQ(m.name, "tower FA 1");
+      EXPECT_FALSE(m.aero);
+    } else {
+      EXPECT_TRUE(m.aero) << m.name;
+      EXPECT_EQ(m.name, "aero " + std::to_string(++aero));
+    }
+  }
+  EXPECT_EQ(aero, 2);
+}
