@@ -77,6 +77,10 @@ void addUnsteadyAero(const Model& m, const OperatingPoint& op, bool inputs, Line
     for (const AeroStation& st : m.aero.blades[b].stations)
       if (st.ua)
         lin.first_order_blades.insert(lin.first_order_blades.end(), uaStatesPerElement(m.aero), static_cast<int>(b));
+  for (std::size_t b = 0; b < m.aero.blades.size(); ++b)  // the dynamic-inflow states, after the UA ones
+    lin.first_order_blades.insert(lin.first_order_blades.end(),
+                                  inflowStatesPerElement(m.aero) * m.aero.blades[b].stations.size(),
+                                  static_cast<int>(b));
   lin.first_order_values.conservativeResize(nb + nz);
   lin.first_order_values.tail(nz) = ua.z;
 }
@@ -141,8 +145,7 @@ LinearModel linearize(const Model& m, const OperatingPoint& op, LinearizeWorkspa
   lin.first_order_values = VecX::Zero(nb);
   lin.first_order_blades.assign(static_cast<std::size_t>(nb), -1);
   MatX Zq, Za, Zu;  // the UA rows: [Z_q, Z_q̇] on the active coordinates, A_zz, Z_u
-  if (opt.unsteady_aero && frozen && m.aero.ua_mod > 0 && uaStateCount(m.aero) > 0)
-    addUnsteadyAero(m, op, nu > 0, lin, G, Zq, Za, Zu);
+  if (opt.unsteady_aero && frozen && aeroStateCount(m.aero) > 0) addUnsteadyAero(m, op, nu > 0, lin, G, Zq, Za, Zu);
   const int nz = static_cast<int>(G.cols());
   // One solve with the right-hand sides [K C G Q] (K, C, Q with the UA loads' changes, if any).
   MatX rhs(n, 2 * n + nz + nu);

@@ -8,8 +8,8 @@
 /// First-order states z on free joints (Model::body_states, ż = A_z z + B_z q̇, loads C_z z) follow:
 /// x = [δq; δq̇; z], A = [[0, I, 0], [−M⁻¹K, −M⁻¹C, M⁻¹G], [0, B_z P, A_z]], G = Pᵀ C_z, P picking the
 /// joint's six coordinates among the active ones; they rest at z = 0 at a static point.
-/// With LinearizeOptions::unsteady_aero the blade elements' unsteady-airfoil states follow them
-/// (linearize/unsteady_aero.hpp): their loads replace the quasi-steady ones in K, C, Q, and their rows are
+/// With LinearizeOptions::unsteady_aero the blade elements' unsteady-airfoil and dynamic-inflow states follow
+/// them (linearize/unsteady_aero.hpp): their loads replace the quasi-steady ones in K, C, Q, and their rows are
 /// [Z_q, Z_q̇, A_zz] (B: Z_u), at their steady values for the point's inputs.
 #include <string>
 #include <vector>
@@ -30,7 +30,7 @@ struct LinearModel {
   std::vector<std::string> first_order_names;   ///< states z (dim nz), e.g. "HydroDyn radiation surge 3"
   std::vector<std::string> first_order_groups;  ///< what each z belongs to, e.g. "HydroDyn radiation surge"
   VecX residual;                                ///< e at the operating point on the active coordinates (dim n)
-  VecX first_order_values;              ///< z at the operating point (dim nz: 0 for body states, steady UA states)
+  VecX first_order_values;              ///< z at the operating point (dim nz: 0 for body states, steady aero states)
   std::vector<int> first_order_blades;  ///< blade (0-based) of each z, −1 in the fixed frame (body states)
 };
 
@@ -45,7 +45,8 @@ struct LinearizeOptions {
   /// Unsteady airfoil aerodynamics as first-order states (a deck's UA_Mod 4 or 6, on the frozen wake): the
   /// elements' states in the model instead of the quasi-steady polar (linearize/unsteady_aero.hpp). On by
   /// default, so a model has the states its deck asks for (issue 47); false: the quasi-steady polar. No
-  /// effect without UA data, or with frozen_wake = false.
+  /// effect without UA data, or with frozen_wake = false. The same switch adds a deck's dynamic-inflow states
+  /// (DBEMT_Mod 3: the elements see the states' induction instead of the frozen wake's).
   bool unsteady_aero = true;
 };
 

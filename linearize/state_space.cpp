@@ -23,8 +23,10 @@ namespace {
 
 // HydroDyn's radiation states are a fit's internal states (only C z has units, N and N m); of the HGM
 // model's (Hansen, Gaunaa & Madsen 2004) x1, x2 are angles of attack, x3 a normal-force coefficient and x4
-// a separation point; OpenFAST's .lin gives them rad, rad, -, - (tests/data/openfast-lin/ua4-dbemt3).
+// a separation point; OpenFAST's .lin gives them rad, rad, -, - (tests/data/openfast-lin/ua4-dbemt3). The
+// dynamic-inflow states (DBEMT v, v1) are induced velocities, m/s.
 std::string firstOrderUnit(const std::string& name) {
+  if (name.rfind("DBEMT v", 0) == 0) return "m/s";
   return name.rfind("UA x1 ", 0) == 0 || name.rfind("UA x2 ", 0) == 0 ? "rad" : "-";
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "src/aero/dynamic_inflow.hpp"
 #include "src/base/error.hpp"
 #include "src/dynamics/aero_unsteady.hpp"
 #include "src/dynamics/kinematics.hpp"
@@ -10,7 +11,8 @@ namespace whirl {
 namespace {
 
 void requireFrozenInduction(const Model& m, const OperatingPoint& op) {
-  if (m.aero.ua_mod <= 0) throw ComputeError("unsteady-airfoil states: the model has no UA_Mod 4 or 6");
+  if (aeroStateCount(m.aero) == 0)
+    throw ComputeError("aerodynamic states: the model has no UA_Mod 4 or 6 and no DBEMT_Mod 3 on its elements");
   if (static_cast<int>(op.inflow.axial.size()) != m.aero.nstations())
     throw ComputeError(
         "unsteady-airfoil states: the operating point carries no induction of the blade elements "
@@ -29,9 +31,18 @@ VecX unsteadyAeroSteadyStates(const Model& m, const OperatingPoint& op) {
   requireFrozenInduction(m, op);
   Workspace<double> ws(m);
   forwardKinematics(m, ws, op.q, op.qd, op.qdd);
-  const int nz = uaStateCount(m.aero), ns = uaStatesPerElement(m.aero);
+  const int nz = aeroStateCount(m.aero), ns = uaStatesPerElement(m.aero), nua = uaStateCount(m.aero);
   VecX z = VecX::Zero(nz), e = VecX::Zero(m.ndof());
   std::vector<aero::UaInput<double>> inputs;
+  if (nz > nua) {  // dynamic inflow at its steady state: v = v_qs, v1 = (1 − k) v_qs (the BEM induction)
+    VecX qs = VecX::Zero(2 * m.aero.nstations());
+    addUnsteadyAeroLoads<double>(m, ws, op.q, op.qd, op.u, op.inflow, &z, e, nullptr, nullptr, &qs);
+    for (int i = 0; i < m.aero.nstations(); ++i) {
+      const aero::OyeState<double> ax = aero::oyeSteady(qs(2 * i)), tn = aero::oyeSteady(qs(2 * i + 1));
+      z.segment(nua + 4 * i, 4) << ax.v, tn.v, ax.v1, tn.v1;
+    }
+  }
+  // The UA inputs with the induction the elements see (the dynamic inflow's steady one, if any).
   addUnsteadyAeroLoads<double>(m, ws, op.q, op.qd, op.u, op.inflow, &z, e, nullptr, &inputs);
   int zi = 0, k = 0;
   for (const AeroBlade& b : m.aero.blades)
@@ -50,6 +61,7 @@ UnsteadyAeroLinear unsteadyAeroLinear(const Model& m, const OperatingPoint& op, 
   UnsteadyAeroLinear out;
   out.z = unsteadyAeroSteadyStates(m, op);
   uaStateNames(m.aero, out.names, out.groups);
+  inflowStateNames(m.aero, out.names, out.groups);
   const int n = m.ndof(), nz = static_cast<int>(out.z.size()), nc = static_cast<int>(cols.size());
   const int nu = inputs ? m.ninput() : 0;
   std::vector<Column> all;

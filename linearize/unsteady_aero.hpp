@@ -1,14 +1,19 @@
 #pragma once
 /// \file
-/// The unsteady-airfoil states of a linear model (AeroDyn UA_Mod 4 or 6 on the frozen wake; issue 47):
-/// with z the states of the elements that carry them (src/dynamics/aero_unsteady.hpp) the linearized
+/// The aerodynamic states of a linear model (issue 47): the unsteady-airfoil states (AeroDyn UA_Mod 4 or 6)
+/// and the dynamic-inflow states (DBEMT_Mod 3, which replace the frozen wake's induction): with z the states
+/// of the elements that carry them (src/dynamics/aero_unsteady.hpp) the linearized
 /// equations are
 ///   M δq̈ + (C + ΔC) δq̇ + (K + ΔK) δq = (Q + ΔQ) δu + G δz,
 ///   δż = Z_q δq + Z_q̇ δq̇ + A_zz δz + Z_u δu,
 /// with ΔK = −∂(e_UA − e_QS)/∂q, ΔC = −∂(e_UA − e_QS)/∂q̇, ΔQ = ∂(e_UA − e_QS)/∂u: the UA loads' derivatives
 /// at fixed states replace the quasi-steady frozen-wake ones that K, C, Q hold (e_UA, e_QS: the blade
 /// loads with and without states, same kinematics and frozen induction), G = ∂e_UA/∂z. Everything by one
-/// forward-AD evaluation per chunk of columns; z at its steady value for the point's inputs (aero::hgmSteady).
+/// forward-AD evaluation per chunk of columns; z at its steady value for the point's inputs (aero::hgmSteady;
+/// the dynamic inflow's v = v_qs, v1 = (1 − k) v_qs: the BEM induction of the point). With dynamic inflow the
+/// rows of v̇ take the quasi-steady induction's derivatives (the converged BEM residual differentiated by the
+/// implicit-function theorem), and the loads at fixed states see v (equal to the frozen wake's loads but at
+/// the elements with fixed inductions, whose loads follow the BEM induction, as AeroDyn).
 #include <vector>
 
 #include "linearize/operating_point.hpp"
@@ -23,12 +28,12 @@ struct UnsteadyAeroLinear {
   MatX Zq, Zqd;                            ///< nz × ncol
   MatX Zu;                                 ///< nz × ninput (or × 0)
   MatX Azz;                                ///< nz × nz
-  std::vector<std::string> names, groups;  ///< uaStateNames
+  std::vector<std::string> names, groups;  ///< uaStateNames, then inflowStateNames
 };
 
 /// The blocks above at op (its frozen induction: op.inflow), columns `cols` of q and q̇ (model coordinates),
-/// the input columns when `inputs`. Requires m.aero.ua_mod > 0 and an induction of every element in
-/// op.inflow (ComputeError otherwise).
+/// the input columns when `inputs`. Requires aerodynamic states (aeroStateCount > 0) and an induction of every element
+/// in op.inflow (ComputeError otherwise).
 UnsteadyAeroLinear unsteadyAeroLinear(const Model& m, const OperatingPoint& op, const std::vector<int>& cols,
                                       bool inputs);
 

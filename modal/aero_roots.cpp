@@ -33,7 +33,7 @@ std::vector<bool> pickAeroRoots(const std::vector<double>& share, const std::vec
   return is_aero;
 }
 
-bool isAeroStateName(const std::string& name) { return name.rfind("UA x", 0) == 0; }
+bool isAeroStateName(const std::string& name) { return name.rfind("UA x", 0) == 0 || name.rfind("DBEMT v", 0) == 0; }
 
 int nameAeroRoots(std::vector<Mode>& modes, const std::vector<bool>& aero) {
   std::vector<double> share(modes.size());

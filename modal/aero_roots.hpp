@@ -14,7 +14,7 @@
 /// take a structural line's place; the structural modes are named from their structural coordinates alone.
 ///
 /// Which coordinates are aerodynamic: the rotating first-order states (a state of its own with a blade,
-/// RotorCoordinates::blade ≥ 0), the only ones whirl has being the blade elements' UA states.
+/// RotorCoordinates::blade ≥ 0), the only ones whirl has being the blade elements' UA and DBEMT states.
 #include <string>
 #include <vector>
 
@@ -36,7 +36,8 @@ std::vector<bool> pickAeroRoots(const std::vector<double>& share, const std::vec
                                 const std::vector<bool>& excluded, int count);
 
 /// Whether state or coordinate `name` is a blade element's aerodynamic state ("UA x1 blade 2 element 7",
-/// after the multiblade transform "UA x1 element 7 cos": src/dynamics/aero_unsteady.hpp).
+/// after the multiblade transform "UA x1 element 7 cos"; the dynamic-inflow states "DBEMT v axial blade 2
+/// element 7", "DBEMT v1 tangential element 7 sin": src/dynamics/aero_unsteady.hpp).
 bool isAeroStateName(const std::string& name);
 
 /// Marks (Mode::first_order) and names the aerodynamic roots of `modes` (sorted by frequency, each real

@@ -314,7 +314,7 @@ RotorModes floquetRotorModes(const RotorCoordinates& c, const std::vector<MbcSam
     throw InputError(
         "Floquet analysis (fewer than 3 blades, turning) of a model with first-order states "
         "(HydroDyn radiation, unsteady-airfoil states) is not supported: --set RdtnMod=0 leaves the "
-        "radiation out, --quasi-steady-aero the airfoil states");
+        "radiation out, --quasi-steady-aero the airfoil and dynamic-inflow states");
   return floquetModes(c, samples);
 }
 

@@ -700,6 +700,47 @@ SectionLoads<T> quasiSteadyLoads(const BemStation& s, const T& Vx, const T& Vy, 
   return loadsFromFlow<T>(s, x, y, theta, rho);
 }
 
+template <class T>
+InducedVelocity<T> quasiSteadyInducedVelocity(const BemStation& s, const T& Vx, const T& Vy, const T& theta,
+                                              double phi0, const BemOptions& o, const T* radius, double* slope) {
+  const T phi = inflowAngle<T>(s, Vx, Vy, theta, phi0, o, radius, slope);
+  const Induction<T> ind = inductions<T>(s, phi, Vx, Vy, theta, o, radius);
+  T a = ind.a, ap = ind.ap;
+  if (!ind.valid) {
+    a = T(0.0);
+    ap = T(0.0);
+  } else {  // limitInductionFactors: a clamped value has no derivative
+    if (valueOf(a) < kMinA) a = T(kMinA);
+    if (valueOf(a) > kMaxA) a = T(kMaxA);
+    if (valueOf(ap) < kMinAp) ap = T(kMinAp);
+    if (valueOf(ap) > kMaxAp) ap = T(kMaxAp);
+  }
+  return {T(-Vx * a), T(Vy * ap), stationConstants(s, o).fixed};
+}
+
+template <class T>
+std::pair<T, T> inducedFlow(const T& Vx, const T& Vy, const T& ax, const T& tn, const T* weight) {
+  // calculate_Inductions_from_DBEMT (BEMT.f90): the inductions of the induced velocities, limited.
+  T a = equal(valueOf(Vx), 0.0) ? T(0.0) : T(-ax / Vx);
+  T ap = equal(valueOf(Vy), 0.0) ? T(0.0) : T(tn / Vy);
+  if (valueOf(a) < kMinA) a = T(kMinA);
+  if (valueOf(a) > kMaxA) a = T(kMaxA);
+  if (valueOf(ap) < kMinAp) ap = T(kMinAp);
+  if (valueOf(ap) > kMaxAp) ap = T(kMaxAp);
+  if (weight) {  // check_turnOffBEMT, after DBEMT
+    a = a * *weight;
+    ap = ap * *weight;
+  }
+  return {T(Vx * (1.0 - a)), T(Vy * (1.0 + ap))};
+}
+
+template <class T>
+SectionLoads<T> inducedVelocityLoads(const BemStation& s, const T& Vx, const T& Vy, const T& theta, const T& ax,
+                                     const T& tn, double rho, const T* weight) {
+  const auto [x, y] = inducedFlow<T>(Vx, Vy, ax, tn, weight);
+  return loadsFromFlow<T>(s, x, y, theta, rho);
+}
+
 SectionLoads<double> loadsAtInduction(const BemStation& s, double Vx, double Vy, double theta, double a, double ap,
                                       double rho) {
   return loadsFromFlow<double>(s, Vx * (1.0 - a), Vy * (1.0 + ap), theta, rho);
@@ -733,7 +774,12 @@ T inductionWeight(const T& tsr) {
                                           const BemOptions&);                                                        \
   template SectionLoads<T> quasiSteadyLoads<T>(const BemStation&, const T&, const T&, const T&, double, double,      \
                                                const BemOptions&, const T*, const T*, double*);                      \
-  template T inductionWeight<T>(const T&);
+  template T inductionWeight<T>(const T&);                                                                           \
+  template InducedVelocity<T> quasiSteadyInducedVelocity<T>(const BemStation&, const T&, const T&, const T&, double, \
+                                                            const BemOptions&, const T*, double*);                   \
+  template std::pair<T, T> inducedFlow<T>(const T&, const T&, const T&, const T&, const T*);                         \
+  template SectionLoads<T> inducedVelocityLoads<T>(const BemStation&, const T&, const T&, const T&, const T&,        \
+                                                   const T&, double, const T*);
 
 WHIRL_BEM_INSTANTIATE(double)
 WHIRL_BEM_INSTANTIATE(ADChunk)

@@ -32,6 +32,7 @@
 /// azimuth and skew angle χ0; no effect at zero skew), the low-TSR blending of the inductions
 /// (check_turnOffBEMT, rotor-level TSR < 2), DBEMT, unsteady aerodynamics, Reynolds-number tables.
 #include <string>
+#include <utility>
 
 #include "src/aero/polar.hpp"
 
@@ -224,6 +225,36 @@ template <class T>
 SectionLoads<T> quasiSteadyLoads(const BemStation& s, const T& Vx, const T& Vy, const T& theta, double phi0, double rho,
                                  const BemOptions& o, const T* radius = nullptr, const T* weight = nullptr,
                                  double* slope = nullptr);
+
+/// The induced velocities of the quasi-steady BEM solution at (Vx, Vy, θ): AeroDyn's DBEMT input vind_s
+/// (BEMT SetInputs_For_DBEMT, eq. 38 of its theory): axial −Vx a, tangential Vy a', with a, a' the inductions at
+/// φ = inflowAngle(...phi0...) (its derivatives by the implicit-function theorem), 0 where the solution is not
+/// valid, else within AeroDyn's limits (limitInductionFactors; a clamped value has no derivative); before the
+/// low-TSR weight, which AeroDyn applies after DBEMT. `fixed`: AeroDyn's p%FixedInductions (a tip or hub loss
+/// constant of 0: the tip node, a node at the blade root), where the loads take these inductions, not DBEMT's.
+/// `radius`, `slope`: as for inflowAngle. [m/s]
+template <class T>
+struct InducedVelocity {
+  T axial, tangential;
+  bool fixed = false;
+};
+template <class T>
+InducedVelocity<T> quasiSteadyInducedVelocity(const BemStation& s, const T& Vx, const T& Vy, const T& theta,
+                                              double phi0, const BemOptions& o, const T* radius = nullptr,
+                                              double* slope = nullptr);
+
+/// Loads with given induced velocities (ax, tn) [m/s], e.g. DBEMT's states: AeroDyn's
+/// calculate_Inductions_from_DBEMT, a = −ax/Vx, a' = tn/Vy (0 where Vx resp. Vy is 0), limited as
+/// limitInductionFactors, scaled by the low-TSR `weight` (optional) as check_turnOffBEMT, then the flow
+/// (Vx(1−a), Vy(1+a')) and its loads as frozenLoads. With ax, tn constant, unlimited and weight 1, frozenLoads.
+template <class T>
+SectionLoads<T> inducedVelocityLoads(const BemStation& s, const T& Vx, const T& Vy, const T& theta, const T& ax,
+                                     const T& tn, double rho, const T* weight = nullptr);
+
+/// The relative flow (x, y) = (Vx(1−a), Vy(1+a')) of inducedVelocityLoads, for models that form the section
+/// loads themselves (the unsteady-airfoil elements, src/dynamics/aero_unsteady.hpp).
+template <class T>
+std::pair<T, T> inducedFlow(const T& Vx, const T& Vy, const T& ax, const T& tn, const T* weight = nullptr);
 
 /// Loads of a solved element in double at its inductions a, a' (BemSolution::a, ap: AeroDyn's limited values,
 /// times the low-TSR weight where it applies): AeroDyn's output φ = atan2(Vx(1−a), Vy(1+a')), α, W and loads as

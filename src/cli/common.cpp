@@ -39,8 +39,9 @@ void addModelOptions(CLI::App& cmd, ModelOptions& opt, bool with_rpm) {
 
 void addAeroStateOptions(CLI::App& cmd, ModelOptions& opt) {
   CLI::Option* qs = cmd.add_flag("--quasi-steady-aero", opt.quasi_steady_aero,
-                                 "leave the deck's unsteady-airfoil states (AeroDyn UA_Mod 4 or 6) out of the linear "
-                                 "models: the static polar on the frozen wake, as with UA_Mod 0");
+                                 "leave the deck's unsteady-airfoil states (AeroDyn UA_Mod 4 or 6) and dynamic-inflow "
+                                 "states (DBEMT_Mod 3) out of the linear models: the static polar on the frozen wake, "
+                                 "as with UA_Mod 0 and DBEMT_Mod -1");
   cmd.add_flag("--unsteady-aero", opt.unsteady_aero,
                "insist on the deck's unsteady-airfoil states (UA_Mod 4 or 6; in the linear models by default): "
                "refuse a deck without them")
@@ -84,9 +85,14 @@ Model loadModel(const ModelOptions& opt, bool linear_model) {
                      ": --unsteady-aero: the deck's AeroDyn has no unsteady-airfoil states to add (UA_Mod 4 or 6 "
                      "on an element inside UAStartRad…UAEndRad; an older AeroDyn file: --set AFAeroMod=2 --set "
                      "UAMod=4)");
-  if (opt.quasi_steady_aero) removeUnsteadyAirfoils(m.aero);
-  // The states are in the linear model only where the model has some (UA_Mod 4 or 6 on some element).
+  if (opt.quasi_steady_aero) {
+    removeUnsteadyAirfoils(m.aero);
+    removeDynamicInflow(m.aero);
+  }
+  // The states are in the linear model only where the model has some (UA_Mod 4 or 6 on some element;
+  // DBEMT_Mod 3 with the BEM induction).
   if (linear_model && uaStateCount(m.aero) > 0) std::erase_if(notes, io::isUnsteadyAirfoilNote);
+  if (linear_model && inflowStateCount(m.aero) > 0) std::erase_if(notes, io::isDynamicInflowNote);
   if (parallel::rank() == 0)
     for (const std::string& n : notes) std::fprintf(stderr, "whirl: note: %s\n", escapeControlCharacters(n).c_str());
   return m;

@@ -2,8 +2,11 @@
 #include "src/dynamics/aero_unsteady.hpp"
 
 #include <cmath>
+#include <optional>
+#include <tuple>
 
 #include "src/aero/bem.hpp"
+#include "src/aero/dynamic_inflow.hpp"
 #include "src/dynamics/aero_element.hxx"
 #include "src/dynamics/aero_section.hxx"
 #include "src/dynamics/point_force.hxx"
@@ -43,7 +46,70 @@ aero::SectionLoads<T> loadsOfCoefficients(const T& x, const T& y, const T& phi, 
   return L;
 }
 
+// The quasi-steady induced velocity of an element at (vx, vy, θ): the BEM root solved in double at the values
+// (kept in `root` and reused while the values agree to round-off: the AD passes of one linearization), the
+// derivatives by the implicit-function theorem (aero::quasiSteadyInducedVelocity). No valid root: AeroDyn's
+// geometric fallback, no induction.
+template <class T>
+aero::InducedVelocity<T> quasiSteadyInduction(const AeroModel& am, aero::BemStation b, const T& vx, const T& vy,
+                                              const T& theta, const T& r, BemRoot& root) {
+  const double x = valueOf(vx), y = valueOf(vy), th = valueOf(theta);
+  b.theta = th;
+  const double tol = std::is_same_v<T, double> ? 0.0 : 1e-12, vscale = tol * (std::abs(x) + std::abs(y));
+  if (!(root.valid && std::abs(root.vx - x) <= vscale && std::abs(root.vy - y) <= vscale &&
+        std::abs(root.theta - th) <= tol && std::abs(root.r - b.r) <= tol * b.r)) {
+    const aero::InflowRoot sol = aero::findInflowRoot(b, x, y, am.bem,
+                                                      root.valid ? std::optional<double>(root.phi) : std::nullopt);
+    root = BemRoot{};
+    root.valid = true;
+    root.vx = x;
+    root.vy = y;
+    root.theta = th;
+    root.r = b.r;
+    root.phi = sol.phi;
+    root.a = sol.a;
+    root.ap = sol.ap;
+    root.bem_valid = sol.valid;
+  }
+  if (!root.bem_valid) return {T(0.0), T(0.0), false};
+  return aero::quasiSteadyInducedVelocity<T>(b, vx, vy, theta, root.phi, am.bem, &r, &root.slope);
+}
+
+// AeroDyn's BEM weight of the rotor's tip-speed ratio (check_turnOffBEMT), as addAeroLoads forms it.
+template <class T>
+T inductionWeightOf(const AeroModel& am, const FrameState<T>& hub, const T& speed, const Vec3& wind_dir) {
+  const Vec3T<T> disk = hub.R.col(0);
+  const T omega = hub.w.dot(disk);
+  const T along = speed * T(wind_dir.template cast<T>().dot(disk));
+  const T va = valueOf(along) < 0 ? T(-along) : along;
+  const T om = valueOf(omega) < 0 ? T(-omega) : omega;
+  if (valueOf(va) > 0) return aero::inductionWeight<T>(om * am.tip_radius / va);
+  return T(valueOf(om) > 0 ? 1.0 : 0.0);
+}
+
 }  // namespace
+
+int inflowStatesPerElement(const AeroModel& am) { return am.dbemt_mod == 3 && am.induction ? 4 : 0; }
+
+int inflowStateCount(const AeroModel& am) { return inflowStatesPerElement(am) * am.nstations(); }
+
+int aeroStateCount(const AeroModel& am) { return uaStateCount(am) + inflowStateCount(am); }
+
+void inflowStateNames(const AeroModel& am, std::vector<std::string>& names, std::vector<std::string>& groups) {
+  if (inflowStatesPerElement(am) == 0) return;
+  static const char* const kinds[4] = {"DBEMT v axial", "DBEMT v tangential", "DBEMT v1 axial", "DBEMT v1 tangential"};
+  for (std::size_t b = 0; b < am.blades.size(); ++b)
+    for (std::size_t j = 0; j < am.blades[b].stations.size(); ++j)
+      for (const char* kind : kinds) {
+        groups.push_back(std::string(kind) + " blade " + std::to_string(b + 1));
+        names.push_back(groups.back() + " element " + std::to_string(j + 1));
+      }
+}
+
+void removeDynamicInflow(AeroModel& am) {
+  am.dbemt_mod = 0;
+  am.tau1 = 0;
+}
 
 int uaStatesPerElement(const AeroModel& am) { return am.ua_mod == 4 ? 4 : am.ua_mod == 6 ? 1 : 0; }
 
@@ -83,7 +149,7 @@ aero::UaSection uaSection(const AeroModel& am, const AeroStation& st) {
 template <class T>
 void addUnsteadyAeroLoads(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T>& qd, const VecXT<T>& u,
                           const AeroInflow& frozen, const VecXT<T>* z, VecXT<T>& e, VecXT<T>* zdot,
-                          std::vector<aero::UaInput<T>>* inputs) {
+                          std::vector<aero::UaInput<T>>* inputs, VecXT<T>* quasi_steady) {
   using std::sqrt;
   const AeroModel& am = m.aero;
   if (!am.active()) return;
@@ -92,6 +158,10 @@ void addUnsteadyAeroLoads(const Model& m, Workspace<T>& ws, const VecXT<T>& q, c
   const T speed = m.roles.wind_speed_input >= 0 ? u(m.roles.wind_speed_input) : T(0);
   const Vec3 wind_dir = detail::windDirection(am.wind);
   const int ns = uaStatesPerElement(am);
+  // Dynamic inflow: with states given, the elements' induction is the states' (DBEMT_Mod 3).
+  const bool dynamic = z && inflowStatesPerElement(am) > 0;
+  const int zi_inflow = uaStateCount(am);  // the first dynamic-inflow state in z
+  const T weight = dynamic ? inductionWeightOf(am, hub, speed, wind_dir) : T(1.0);
   if (inputs) inputs->clear();
   int index = 0, zi = 0;  // element over all blades, first state of the next element with states
   for (std::size_t bi = 0; bi < am.blades.size(); ++bi) {
@@ -113,14 +183,45 @@ void addUnsteadyAeroLoads(const Model& m, Workspace<T>& ws, const VecXT<T>& q, c
       const T vx = rel.dot(g.xn), vy = rel.dot(g.ya);
       const Vec3T<T> d = g.pos - hub.r;
       const Vec3T<T> dr = d - d.dot(disk) * disk;
-      const double r = sqrt(valueOf(dr.dot(dr)));
+      const T r_t = sqrt(dr.dot(dr));
+      const double r = valueOf(r_t);
       const T theta = T(st.twist) + T(pitch - g.twist);
       const double ax = frozen.axial(index), tn = frozen.tangential(index);
+      // The relative flow (x, y) = (Vx(1−a), Vy(1+a')): the frozen wake's, or with the dynamic-inflow states
+      // v (AeroDyn calculate_Inductions_from_DBEMT), their rates driven by the quasi-steady induction.
+      T x = valueOf(vx) == 0 ? vx : T(vx + ax), y = valueOf(vy) == 0 ? vy : T(vy + tn);
+      T v_ax(0.0), v_tn(0.0);  // the induced velocities the loads see, with dynamic inflow
+      if (dynamic) {
+        const aero::BemStation b = detail::bemStation(am, st, r);
+        const aero::InducedVelocity<T> qs = quasiSteadyInduction(am, b, vx, vy, theta, r_t,
+                                                                 ws.bem[static_cast<std::size_t>(index)]);
+        const int k = zi_inflow + 4 * index;  // v axial, v tangential, v1 axial, v1 tangential
+        // Elements with fixed inductions (a loss constant of 0) take the BEM ones (AeroDyn skips DBEMT there).
+        v_ax = qs.fixed ? qs.axial : (*z)(k);
+        v_tn = qs.fixed ? qs.tangential : (*z)(k + 1);
+        std::tie(x, y) = aero::inducedFlow<T>(vx, vy, v_ax, v_tn, &weight);
+        if (zdot) {
+          const double tau2 = aero::dbemtTau2(am.tau1, st.span_ratio);
+          const aero::OyeState<T> da = aero::oyeDerivative<T>({(*z)(k + 2), (*z)(k)}, qs.axial, am.tau1, tau2);
+          const aero::OyeState<T> dt = aero::oyeDerivative<T>({(*z)(k + 3), (*z)(k + 1)}, qs.tangential, am.tau1, tau2);
+          (*zdot)(k) = da.v;
+          (*zdot)(k + 1) = dt.v;
+          (*zdot)(k + 2) = da.v1;
+          (*zdot)(k + 3) = dt.v1;
+        }
+        if (quasi_steady) {
+          (*quasi_steady)(2 * index) = qs.axial;
+          (*quasi_steady)(2 * index + 1) = qs.tangential;
+        }
+      }
       aero::SectionLoads<T> L;
-      if (!st.ua || !z) {
+      if (!z) {
         L = aero::frozenLoads(detail::bemStation(am, st, r), vx, vy, theta, ax, tn, am.air_density, am.bem);
+      } else if (!st.ua) {
+        L = dynamic ? aero::inducedVelocityLoads<T>(detail::bemStation(am, st, r), vx, vy, theta, v_ax, v_tn,
+                                                    am.air_density, &weight)
+                    : aero::frozenLoads(detail::bemStation(am, st, r), vx, vy, theta, ax, tn, am.air_density, am.bem);
       } else {
-        const T x = valueOf(vx) == 0 ? vx : T(vx + ax), y = valueOf(vy) == 0 ? vy : T(vy + tn);
         const T phi = atan2S(x, y), alpha = phi - theta, W = sqrt(x * x + y * y);
         // The section's rotation rate about the span axis: the body frame's and the elastic twist's.
         Vec3T<T> twist_rate = Vec3T<T>::Zero();
@@ -158,10 +259,10 @@ void addUnsteadyAeroLoads(const Model& m, Workspace<T>& ws, const VecXT<T>& q, c
 
 template void addUnsteadyAeroLoads<double>(const Model&, Workspace<double>&, const VecX&, const VecX&, const VecX&,
                                            const AeroInflow&, const VecX*, VecX&, VecX*,
-                                           std::vector<aero::UaInput<double>>*);
+                                           std::vector<aero::UaInput<double>>*, VecX*);
 template void addUnsteadyAeroLoads<ADChunk>(const Model&, Workspace<ADChunk>&, const VecXT<ADChunk>&,
                                             const VecXT<ADChunk>&, const VecXT<ADChunk>&, const AeroInflow&,
                                             const VecXT<ADChunk>*, VecXT<ADChunk>&, VecXT<ADChunk>*,
-                                            std::vector<aero::UaInput<ADChunk>>*);
+                                            std::vector<aero::UaInput<ADChunk>>*, VecXT<ADChunk>*);
 
 }  // namespace whirl

@@ -1,9 +1,9 @@
 #pragma once
 /// \file
 /// Blade-element loads with unsteady-airfoil states (AeroDyn UA_Mod 4 or 6, src/aero/unsteady_airfoil.hpp)
-/// on the frozen wake of an operating point: the loads of the linear model's first-order aerodynamic
-/// states. Per element that carries states (AeroStation::ua), the section inputs of AeroDyn's UA
-/// (UA_InputType) from the element's motion:
+/// and dynamic-inflow states (DBEMT_Mod 3, src/aero/dynamic_inflow.hpp), or on the frozen wake of an operating point:
+/// the loads of the linear model's first-order aerodynamic states. Per element that carries states (AeroStation::ua),
+/// the section inputs of AeroDyn's UA (UA_InputType) from the element's motion:
 /// - the relative flow with the frozen induction, x = Vx + AxInd, y = Vy + TnInd, as aero::frozenLoads:
 ///   φ = atan2(x, y), α = φ − θ, U = |(x, y)| (AeroDyn SetInputs_for_UA);
 /// - ω = the section's angular velocity about the span axis z_a of its annulus frame, positive nose up
@@ -31,18 +31,39 @@ int uaStateCount(const AeroModel& am);
 /// Their names, "UA x1 blade 2 element 7" (elements numbered from the root, 1-based, as AeroDyn's nodes),
 /// and groups "UA x1 blade 2" (one per state kind and blade: the rotating group of the multiblade transform).
 void uaStateNames(const AeroModel& am, std::vector<std::string>& names, std::vector<std::string>& groups);
+/// Dynamic-inflow states per element (AeroDyn DBEMT_Mod 3 on the BEM induction, src/aero/dynamic_inflow.hpp):
+/// 4 (v and v1, each axial and tangential), on every element as AeroDyn; 0 without.
+int inflowStatesPerElement(const AeroModel& am);
+/// The number of dynamic-inflow states of the model (every element of every blade).
+int inflowStateCount(const AeroModel& am);
+/// The aerodynamic states of the model: uaStateCount + inflowStateCount (in that order in z).
+int aeroStateCount(const AeroModel& am);
+/// The dynamic-inflow states' names, per element "DBEMT v axial blade 2 element 7", "DBEMT v tangential …",
+/// "DBEMT v1 axial …", "DBEMT v1 tangential …" (v the induced velocity the loads see, v1 Øye's intermediate
+/// state; AeroDyn's `vind` and the one its .lin calls "First time derivative of vind"), and groups
+/// "DBEMT v axial blade 2" (the rotating group of the multiblade transform).
+void inflowStateNames(const AeroModel& am, std::vector<std::string>& names, std::vector<std::string>& groups);
+/// Takes the dynamic inflow out of the model (dbemt_mod 0): the frozen wake in the linear model.
+void removeDynamicInflow(AeroModel& am);
 /// Takes the unsteady-airfoil data out of the model (ua_mod 0, no tables, no element with states): the
 /// quasi-steady polar everywhere, whatever a linearization asks (`--quasi-steady-aero`).
 void removeUnsteadyAirfoils(AeroModel& am);
 
 /// e += the generalized aerodynamic forces (dim ndof) at the kinematics already in ws (forwardKinematics at
-/// q, qd), with the induced velocities `frozen` and the UA states z (dim uaStateCount, elements in order
-/// and per element its states); zdot (if given, dim uaStateCount) = the states' rates. z null: every element
-/// quasi-steady (zdot untouched). `inputs` (if given) receives the UA inputs of the elements with states.
+/// q, qd), with the induced velocities `frozen` and the aerodynamic states z (dim aeroStateCount: the UA
+/// states, elements in order and per element its states, then the dynamic-inflow states, inflowStateNames'
+/// order); zdot (if given, same dim) = the states' rates. z null: every element quasi-steady on the frozen
+/// wake (zdot untouched). With dynamic-inflow states the elements see their states v instead of the frozen
+/// induction (AeroDyn calculate_Inductions_from_DBEMT; the elements with fixed inductions, at a loss constant
+/// of 0, the BEM ones, as AeroDyn), and v̇, v̇1 are driven by the quasi-steady BEM induced velocity at the
+/// current inflow (aero::quasiSteadyInducedVelocity: the root solved in double, its derivatives by the
+/// implicit-function theorem). `inputs` (if given) receives the UA inputs of the elements with states;
+/// `quasi_steady` (if given, dim 2 nstations, with dynamic-inflow states) the quasi-steady induced velocities,
+/// axial and tangential per element.
 template <class T>
 void addUnsteadyAeroLoads(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T>& qd, const VecXT<T>& u,
                           const AeroInflow& frozen, const VecXT<T>* z, VecXT<T>& e, VecXT<T>* zdot,
-                          std::vector<aero::UaInput<T>>* inputs = nullptr);
+                          std::vector<aero::UaInput<T>>* inputs = nullptr, VecXT<T>* quasi_steady = nullptr);
 
 /// The airfoil of a station for the UA functions (the polar, its UA table and Cm rule, the chord).
 aero::UaSection uaSection(const AeroModel& am, const AeroStation& st);

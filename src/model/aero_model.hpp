@@ -33,6 +33,9 @@ struct AeroStation {
   /// Carries unsteady-airfoil states (AeroModel::ua_mod > 0, inside UAStartRad … UAEndRad and a table that
   /// allows them: src/aero/ua_span.hpp).
   bool ua = false;
+  /// Distance from the rotor axis over the largest of the rotor's elements, undeflected (AeroDyn DBEMT
+  /// p%spanRatio: rLocal at initialization over its largest), for DBEMT's τ2; set with AeroModel::dbemt_mod.
+  double span_ratio = 0;
 };
 
 /// The elements of one blade.
@@ -69,6 +72,10 @@ struct AeroModel {
   int ua_mod = 0;
   std::vector<aero::UaTable> ua_tables;  ///< per polar (same index) when ua_mod > 0
   std::vector<bool> ua_has_cm;           ///< per polar: the table has a Cm column read (AeroDyn ColCm > 0)
+  /// Dynamic inflow (AeroDyn DBEMT_Mod): 3 (Øye's continuous model, src/aero/dynamic_inflow.hpp) or 0; the
+  /// discrete models 1, 2 leave it 0. Used only by linearizations with the states (LinearizeOptions::unsteady_aero).
+  int dbemt_mod = 0;
+  double tau1 = 0;  ///< DBEMT's τ1 (tau1_const) [s]
 
   bool active() const { return !blades.empty(); }
   /// Number of elements over all blades (the length of an AeroInflow).

@@ -109,6 +109,33 @@ void addUnsteadyAirfoils(AeroModel& am, const io::AeroDeckInput& deck, double hu
   }
 }
 
+// Dynamic inflow of the deck (BEMT with DBEMT_Mod 3, either syntax: the reader gives Wake_Mod 1 and the
+// DBEMT_Mod): τ1 and each element's span ratio for τ2, its distance from the rotor axis in the undeflected,
+// coned rotor over the largest (AeroDyn DBEMT_Init: rLocal at initialization over rTip). The node sits at
+// (BlCrvAC, BlSwpAC, HubRad + BlSpn) in the coned blade frame (out of plane, in plane, along the span):
+// r = √(((HubRad + BlSpn) cos β − BlCrvAC sin β)² + BlSwpAC²), β the precone (OpenFAST's r-test
+// Fake5MW_AeroLin_B1_UA4_DBEMT3: its 1/τ2 to 13 digits, the straight blade's to 2e-4).
+void addDynamicInflow(AeroModel& am, const io::AeroDeckInput& deck, double hub_radius, double precone) {
+  const io::AeroDynInput& ad = deck.aerodyn;
+  if (ad.Wake_Mod != 1 || ad.DBEMT_Mod != 3 || !ad.tau1_const) return;
+  std::vector<std::vector<double>> r(am.blades.size());
+  double r_max = 0;
+  for (std::size_t k = 0; k < am.blades.size(); ++k) {
+    const io::AeroDynBladeInput& file = deck.blades[k];
+    for (std::size_t j = 0; j < am.blades[k].stations.size(); ++j) {
+      const double radial = (hub_radius + am.blades[k].stations[j].span) * std::cos(precone) -
+                            file.BlCrvAC[j] * std::sin(precone);
+      r[k].push_back(std::hypot(radial, file.BlSwpAC[j]));
+      r_max = std::max(r_max, r[k].back());
+    }
+  }
+  if (!(r_max > 0)) return;
+  am.dbemt_mod = 3;
+  am.tau1 = *ad.tau1_const;
+  for (std::size_t k = 0; k < am.blades.size(); ++k)
+    for (std::size_t j = 0; j < r[k].size(); ++j) am.blades[k].stations[j].span_ratio = r[k][j] / r_max;
+}
+
 }  // namespace
 
 void addAerodynamics(Builder& b, const DrivetrainParts& dt, const RotorParts& rotor, const io::AeroDeckInput& deck) {
@@ -151,6 +178,7 @@ void addAerodynamics(Builder& b, const DrivetrainParts& dt, const RotorParts& ro
   am.bem.ti_drag = ad.TIDrag;
   am.bem.max_iter = std::max(ad.MaxIter, 100);
   if (!v14) addUnsteadyAirfoils(am, deck, c.HubRad, c.PreCone.front() * deg);
+  if (!v14) addDynamicInflow(am, deck, c.HubRad, c.PreCone.front() * deg);
 
   const io::InflowWindInput& w = deck.inflow;
   Input wind;

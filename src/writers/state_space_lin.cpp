@@ -167,6 +167,15 @@ std::string linStateDescription(const StateSpaceVariable& x, const std::vector<S
   static const std::regex airfoil(R"(^UA (x[1-4]) blade (\d+) element (\d+)$)");
   if (x.rate_of < 0 && std::regex_match(x.name, rm, airfoil))
     return withUnit("AD " + rm[1].str() + " blade " + rm[2].str() + ", node " + rm[3].str(), x.unit);
+  // The dynamic-inflow states as AeroDyn's DBEMT describes them: v "AD vind (axial) at blade 1, node 2, m/s",
+  // Øye's intermediate v1 "AD First time derivative of vind (axial) at blade 1, node 2, m/s/s" (OpenFAST's
+  // label and unit, though v1 is a velocity and not v's rate; whirl writes both as first-order states).
+  static const std::regex inflow(R"(^DBEMT (v1?) (axial|tangential) blade (\d+) element (\d+)$)");
+  if (x.rate_of < 0 && std::regex_match(x.name, rm, inflow)) {
+    const bool v1 = rm[1] == "v1";
+    return std::string("AD ") + (v1 ? "First time derivative of " : "") + "vind (" + rm[2].str() + ") at blade " +
+           rm[3].str() + ", node " + rm[4].str() + (v1 ? ", m/s/s" : ", m/s");
+  }
   const bool rate = x.rate_of >= 0;
   const StateSpaceVariable& base = rate ? all[x.rate_of] : x;
   std::string d = elastodyn ? elastoDynDescription(base.name) : "";

@@ -39,7 +39,7 @@ Evaluation evaluate(const Model& m, const OperatingPoint& op, const VecX& q, con
                     const VecX* z) {
   Workspace<double> ws(m);
   forwardKinematics(m, ws, q, qd, op.qdd);
-  Evaluation out{VecX::Zero(m.ndof()), VecX::Zero(uaStateCount(m.aero))};
+  Evaluation out{VecX::Zero(m.ndof()), VecX::Zero(aeroStateCount(m.aero))};
   addUnsteadyAeroLoads<double>(m, ws, q, qd, u, op.inflow, z, out.e, z ? &out.zdot : nullptr);
   return out;
 }
@@ -88,7 +88,7 @@ void expectAdEqualsCentralDifferences(const Model& m, const OperatingPoint& op, 
     const double scale = std::max(1.0, fd.cwiseAbs().maxCoeff());
     EXPECT_LT((ad.col(col) - fd).cwiseAbs().maxCoeff(), tol * scale) << what << " column " << col << " (x4 = 1)";
   };
-  const int per = uaStatesPerElement(m.aero);
+  const int per = uaStatesPerElement(m.aero), nua = uaStateCount(m.aero);
   for (int c = 0; c < static_cast<int>(cols.size()); ++c) {
     auto dq = [&](double h, bool rate, bool states) {
       VecX q = op.q, qd = op.qd;
@@ -113,7 +113,7 @@ void expectAdEqualsCentralDifferences(const Model& m, const OperatingPoint& op, 
       z(k) += h;
       return evaluate(m, op, op.q, op.qd, op.u, &z);
     };
-    const bool on_clamp = k % per == per - 1 && ua.z(k) == 1.0;
+    const bool on_clamp = k < nua && k % per == per - 1 && ua.z(k) == 1.0;
     const auto g = [&](double h) { return VecX(dz(h).e); };
     const auto a = [&](double h) { return VecX(dz(h).zdot); };
     if (on_clamp) {
@@ -141,8 +141,12 @@ void expectAdEqualsCentralDifferences(const Model& m, const OperatingPoint& op, 
       "Zu", ua.Zu, [&](double h) { return du(h).first.zdot; }, 1e-4, wind);
 }
 
+// The r-test deck's UA states and its dynamic-inflow states (DBEMT_Mod 3, every element): the rows of v̇
+// carry the quasi-steady BEM induction's derivatives (implicit-function theorem), the central differences
+// re-solve BEM at each perturbed inflow.
 TEST(UnsteadyAeroLinear, AdJacobianEqualsCentralDifferences) {
   const Model m = readElastoDynModel(uaDeck());
+  ASSERT_EQ(inflowStateCount(m.aero), 16);
   expectAdEqualsCentralDifferences(m, rTestPoint(m));
 }
 
@@ -166,10 +170,14 @@ TEST(UnsteadyAeroLinear, LinearModelCarriesTheStatesAfterTheStructure) {
   const OperatingPoint op = rTestPoint(m);
   const LinearModel qs = linearize(m, op, quasiSteady()), ua = linearize(m, op);
   const int n = static_cast<int>(qs.dofs.size());
-  ASSERT_EQ(ua.A.rows(), 2 * n + 12);
-  ASSERT_EQ(ua.B.rows(), 2 * n + 12);
-  ASSERT_EQ(ua.first_order_names.size(), 12u);
+  // 12 UA states (elements 2-4), then 16 dynamic-inflow states (4 elements, DBEMT_Mod 3).
+  ASSERT_EQ(ua.A.rows(), 2 * n + 28);
+  ASSERT_EQ(ua.B.rows(), 2 * n + 28);
+  ASSERT_EQ(ua.first_order_names.size(), 28u);
   EXPECT_EQ(ua.first_order_names[4], "UA x1 blade 1 element 3");
+  EXPECT_EQ(ua.first_order_names[12], "DBEMT v axial blade 1 element 1");
+  EXPECT_EQ(ua.first_order_names[27], "DBEMT v1 tangential blade 1 element 4");
+  EXPECT_EQ(ua.first_order_groups[27], "DBEMT v1 tangential blade 1");
   const UnsteadyAeroLinear blocks = unsteadyAeroLinear(m, op, qs.dofs, true);
   EXPECT_EQ(ua.first_order_values, blocks.z);
   for (int r = 0; r < n; ++r) {
@@ -177,14 +185,15 @@ TEST(UnsteadyAeroLinear, LinearModelCarriesTheStatesAfterTheStructure) {
     EXPECT_NEAR(ua.C(r, r), qs.C(r, r) + blocks.dC(qs.dofs[r], r), 1e-9 * std::abs(qs.C(r, r)));
   }
   // The states' own rows: [Z_q, Z_q̇, A_zz] and Z_u.
-  EXPECT_EQ(MatX(ua.A.bottomRightCorner(12, 12)), blocks.Azz);
-  EXPECT_EQ(MatX(ua.A.block(2 * n, 0, 12, n)), MatX(blocks.Zq));
-  EXPECT_EQ(MatX(ua.B.bottomRows(12)), blocks.Zu);
-  // A model without its UA data (removeUnsteadyAirfoils: --quasi-steady-aero) linearizes by default to the
-  // quasi-steady model, bit for bit.
+  EXPECT_EQ(MatX(ua.A.bottomRightCorner(28, 28)), blocks.Azz);
+  EXPECT_EQ(MatX(ua.A.block(2 * n, 0, 28, n)), MatX(blocks.Zq));
+  EXPECT_EQ(MatX(ua.B.bottomRows(28)), blocks.Zu);
+  // A model without its UA data and dynamic inflow (removeUnsteadyAirfoils, removeDynamicInflow:
+  // --quasi-steady-aero) linearizes by default to the quasi-steady model, bit for bit.
   Model without = m;
   removeUnsteadyAirfoils(without.aero);
-  EXPECT_EQ(uaStateCount(without.aero), 0);
+  removeDynamicInflow(without.aero);
+  EXPECT_EQ(aeroStateCount(without.aero), 0);
   const LinearModel again = linearize(without, op);
   EXPECT_EQ(again.A, qs.A);
   EXPECT_EQ(again.B, qs.B);
@@ -240,8 +249,10 @@ TEST(UnsteadyAeroLinear, SlowLimitIsTheQuasiSteadyFrozenWake) {
   // the HGM model's static gain is the polar's slope: attached flow on a straight-line lift (the thin-airfoil
   // table of test_unsteady_airfoil.cpp within ±10°, f_st = 1) and no pitch-rate terms (a parked rotor: ω = 0
   // and ∂ω/∂q = 0; flap shapes do not twist the section). The rotor is parked and pitched to 85° so that
-  // every element's α lies within −8°..5°.
+  // every element's α lies within −8°..5°. The deck's dynamic inflow is taken out: its states, eliminated,
+  // re-solve the induction (test_dynamic_inflow_linear.cpp), which the frozen wake does not.
   Model m = readElastoDynModel(uaDeck());
+  removeDynamicInflow(m.aero);
   std::vector<double> a, cl, cd, cm;
   for (int d = -180; d <= 180; ++d) {
     const double x = d * kDeg;

@@ -44,6 +44,13 @@ std::string dofNameFromLinDescription(const std::string& d) {
            (m[3] == "translational" ? " translation " : " rotation ") + m[4].str();
   if (const std::string hd = hydroDynName(d); !hd.empty()) return hd;
   if (std::regex_search(d, m, airfoil)) return "UA " + m[1].str() + " blade " + m[2].str() + " element " + m[3].str();
+  // AeroDyn's DBEMT states: "AD vind (axial) at blade 1, node 2, m/s" (v) and "AD First time derivative of vind
+  // (axial) at blade 1, node 2, m/s/s" (Øye's intermediate state v1, DBEMT_Mod 3).
+  static const std::regex inflow(
+      R"(^AD (First time derivative of )?vind \((axial|tangential)\) at blade (\d+), node (\d+))");
+  if (std::regex_search(d, m, inflow))
+    return std::string("DBEMT ") + (m[1].matched ? "v1 " : "v ") + m[2].str() + " blade " + m[3].str() + " element " +
+           m[4].str();
   if (std::regex_search(d, m, tower))
     return std::string("tower ") + (m[2].str()[0] == 'f' || m[2].str()[0] == 'F' ? "FA " : "SS ") + ordinal(m[1]);
   if (std::regex_search(d, m, blade))
@@ -79,7 +86,8 @@ std::string dofNameFromLinDescription(const std::string& d) {
 std::string firstOrderGroupFromLinDescription(const std::string& d) {
   std::string s = dofNameFromLinDescription(d);
   // "UA x1 blade 2 element 7" → "UA x1 blade 2", the group whirl's own models give it (uaStateNames).
-  if (const std::size_t at = s.find(" element "); s.rfind("UA x", 0) == 0 && at != std::string::npos)
+  if (const std::size_t at = s.find(" element ");
+      (s.rfind("UA x", 0) == 0 || s.rfind("DBEMT v", 0) == 0) && at != std::string::npos)
     return s.substr(0, at);
   while (!s.empty() && (std::isdigit(static_cast<unsigned char>(s.back())) || s.back() == ' ')) s.pop_back();
   return s.empty() ? dofNameFromLinDescription(d) : s;

@@ -6,7 +6,9 @@
 /// `.lin` files carry the same names as whirl's own models. BeamDyn nodes: "BD_2 finite element node 3
 /// (…) rotational displacement in Y, rad" → "blade 2 BD node 3 rotation Y" (BeamDyn's own axes).
 /// HydroDyn states: "HD RdtnPtfmSg3" → "HydroDyn radiation surge 3"; AeroDyn's unsteady-airfoil states:
-/// "AD x1 blade 2, node 7, rad" → "UA x1 blade 2 element 7" (group "UA x1 blade 2"). Unknown states keep their
+/// "AD x1 blade 2, node 7, rad" → "UA x1 blade 2 element 7" (group "UA x1 blade 2"); its DBEMT states: "AD vind
+/// (axial) at blade 1, node 2, m/s" → "DBEMT v axial blade 1 element 2", "AD First time derivative of vind
+/// (axial) …" → "DBEMT v1 axial …" (Øye's intermediate state). Unknown states keep their
 /// description (without the module prefix and the "(internal …)" part).
 #include <string>
 

@@ -53,10 +53,15 @@ namespace {
 constexpr const char* kUnsteadyAirfoilReason =
     "unsteady airfoil aerodynamics: whirl uses the static airfoil tables, the steady state of the "
     "unsteady-airfoil model, whose states are not in the linear model";
+constexpr const char* kDynamicInflowReason =
+    "dynamic BEMT: whirl solves the quasi-steady BEMT, the steady state of DBEMT's "
+    "inflow states, which are not in the linear model";
 
 }  // namespace
 
 bool isUnsteadyAirfoilNote(const std::string& note) { return note.find(kUnsteadyAirfoilReason) != std::string::npos; }
+
+bool isDynamicInflowNote(const std::string& note) { return note.find(kDynamicInflowReason) != std::string::npos; }
 
 std::vector<std::string> steadySubstitutes(const AeroDynInput& ad) {
   std::vector<std::string> notes;
@@ -67,9 +72,7 @@ std::vector<std::string> steadySubstitutes(const AeroDynInput& ad) {
     notes.push_back(f.where(key, (e ? e->raw : std::string("?")) + ": " + what));
   };
   const bool legacy_dbemt = ad.dbemt_key == "WakeMod";  // WakeMod = 2: reported on WakeMod itself
-  const std::string dbemt =
-      "dynamic BEMT: whirl solves the quasi-steady BEMT, the steady state of DBEMT's "
-      "inflow states, which are not in the linear model";
+  const std::string dbemt = kDynamicInflowReason;
   note(legacy_dbemt, "WakeMod", dbemt);
   note(!legacy_dbemt && ad.Wake_Mod == 1 && ad.DBEMT_Mod > 0, ad.dbemt_key, dbemt);
   note(ad.unsteadyAero(), ad.ua_key, kUnsteadyAirfoilReason);

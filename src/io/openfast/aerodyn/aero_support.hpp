@@ -41,6 +41,9 @@ std::vector<std::string> steadySubstitutes(const AeroDynInput& ad);
 /// caller that puts the model's states into the linear model (`--unsteady-aero` of linearize and
 /// campbell) drops it, since there the note's "not in the linear model" would be wrong.
 bool isUnsteadyAirfoilNote(const std::string& note);
+/// True for steadySubstitutes' note on dynamic BEMT (DBEMT_Mod > 0): a caller whose linear model has the
+/// deck's dynamic-inflow states (DBEMT_Mod 3) drops it.
+bool isDynamicInflowNote(const std::string& note);
 
 /// InflowWind: an unknown WindType (1 to 7 are OpenFAST's).
 std::vector<std::string> unsupportedOptions(const InflowWindInput& wind);
