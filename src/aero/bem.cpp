@@ -199,6 +199,8 @@ double tipLossConstant(const BemStation& s) {
   return s.blades * (s.tip_radius - z) / (2.0 * z);
 }
 
+bool hasFixedInductions(const BemStation& s, const BemOptions& o) { return stationConstants(s, o).fixed; }
+
 double hubLossConstant(const BemStation& s) {
   if (!(s.hub_radius > 0)) return std::numeric_limits<double>::infinity();  // Fortran: x/0 = +Inf → F_hub = 1
   const double z = stationZ(s);

@@ -152,6 +152,8 @@ struct SectionLoads {
 /// AeroDyn's loss constants B (zTip − z)/(2 z) and B (z − zHub)/(2 zHub) (BEMT_SetParameters).
 double tipLossConstant(const BemStation& s);
 double hubLossConstant(const BemStation& s);
+/// AeroDyn's p%FixedInductions: a loss constant of 0 with that loss on (a = 1, a' = 0 whatever φ).
+bool hasFixedInductions(const BemStation& s, const BemOptions& o);
 
 /// `radius` (optional, in T): the distance from the rotor axis [m] the solidity is formed with, so that
 /// its derivative reaches the result (a deflecting blade); absent: s.r.

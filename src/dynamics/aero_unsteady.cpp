@@ -72,6 +72,13 @@ aero::InducedVelocity<T> quasiSteadyInduction(const AeroModel& am, aero::BemStat
     root.bem_valid = sol.valid;
   }
   if (!root.bem_valid) return {T(0.0), T(0.0), false};
+  if constexpr (!std::is_same_v<T, double>) {
+    // An AD pass that seeds none of the inflow (the chunks of state columns): no derivatives, and the value
+    // is the root's own (−Vx a, Vy a'), without the implicit-function step in the AD scalar.
+    if (vx.derivatives().isZero(0.0) && vy.derivatives().isZero(0.0) && theta.derivatives().isZero(0.0) &&
+        r.derivatives().isZero(0.0))
+      return {T(-x * root.a), T(y * root.ap), aero::hasFixedInductions(b, am.bem)};
+  }
   return aero::quasiSteadyInducedVelocity<T>(b, vx, vy, theta, root.phi, am.bem, &r, &root.slope);
 }
 
