@@ -375,4 +375,46 @@ TEST(UnsteadyAeroLinear, RotatingStatesGoThroughTheMultibladeTransform) {
     EXPECT_NE(std::find(r.coordinates.begin(), r.coordinates.end(), name), r.coordinates.end()) << name;
 }
 
+TEST(UnsteadyAeroLinear, DynamicInflowStatesGoThroughTheMultibladeTransform) {
+  // The same check with the dynamic-inflow states (DBEMT_Mod 3: 4 per element, all 19 elements of each
+  // blade, 228 states) beside the UA states: rotating-frame states of their blade, time invariant once
+  // transformed with it, turning with the rotor when left in the fixed frame.
+  Model m = readElastoDynModel((std::filesystem::path(WHIRL_SOURCE_DIR) / "cases/nrel5mw/Main_Aero.fst").string(),
+                               {"AFAeroMod=2", "UAMod=4", "WakeMod=2", "DBEMT_Mod=3", "ShftTilt=0", "TwFADOF1=False",
+                                "TwFADOF2=False"});
+  m.gravity = Vec3::Zero();
+  m.aero.wind.shear_exponent = 0;
+  ASSERT_EQ(inflowStateCount(m.aero), 228);
+  const int nz = aeroStateCount(m.aero);
+  OperatingCondition c;
+  c.rotor_speed = 12.1 * std::numbers::pi / 30;
+  c.wind_speed = 11.4;
+  c.collective_pitch = 0;
+  PeriodicOptions po;
+  po.azimuths = 4;
+  po.linearize.inputs = false;
+  const PeriodicLinearization p = linearizePeriodic(m, c, po);
+  const LinearModel& first = p.models.front();
+  ASSERT_EQ(first.first_order_blades.size(), static_cast<std::size_t>(nz));
+  EXPECT_EQ(first.first_order_blades.back(), 2);
+  std::vector<int> dof_blade;
+  for (int i : first.dofs) dof_blade.push_back(m.dofs[i].blade);
+  std::vector<MbcSample> samples;
+  for (std::size_t k = 0; k < p.models.size(); ++k) {
+    MbcSample s;
+    s.azimuth = p.azimuths[k];
+    s.rotor_speed = p.rotor_speed;
+    s.A = p.models[k].A;
+    samples.push_back(std::move(s));
+  }
+  // Measured: 1.6e-14; in the fixed frame 38 (the inflow states' rows turn with the rotor).
+  EXPECT_LT(azimuthVariation(mbcAverage(secondOrderLayout(3, dof_blade, first.first_order_blades), samples).samples),
+            1e-10);
+  EXPECT_GT(azimuthVariation(mbcAverage(secondOrderLayout(3, dof_blade, std::vector<int>(nz, -1)), samples).samples),
+            1e-2);
+  const RotorModes r = rotorModes(m, p);
+  for (const char* name : {"DBEMT v axial element 10 collective", "DBEMT v1 tangential element 19 sin"})
+    EXPECT_NE(std::find(r.coordinates.begin(), r.coordinates.end(), name), r.coordinates.end()) << name;
+}
+
 }  // namespace
