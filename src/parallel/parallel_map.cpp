@@ -75,6 +75,24 @@ std::string gatherOnRoot(const std::string& mine, MPI_Comm comm, int rank, int s
   return all;
 }
 
+/// Every rank's records, concatenated in rank order on every rank (MapOptions::every_rank).
+std::string gatherOnAll(const std::string& mine, MPI_Comm comm, int size) {
+  const int len = static_cast<int>(mine.size());
+  if (static_cast<size_t>(len) != mine.size()) throw ComputeError("parallel sweep: results over 2 GB on one rank");
+  std::vector<int> lens(static_cast<size_t>(size)), displs(static_cast<size_t>(size));
+  check(MPI_Allgather(&len, 1, MPI_INT, lens.data(), 1, MPI_INT, comm), "MPI_Allgather");
+  std::int64_t total = 0;
+  for (int r = 0; r < size; ++r) {
+    displs[static_cast<size_t>(r)] = static_cast<int>(total);
+    total += lens[static_cast<size_t>(r)];
+  }
+  if (total > INT32_MAX) throw ComputeError("parallel sweep: gathered results over 2 GB");
+  std::string all(static_cast<size_t>(total), '\0');
+  check(MPI_Allgatherv(mine.data(), len, MPI_CHAR, all.data(), lens.data(), displs.data(), MPI_CHAR, comm),
+        "MPI_Allgatherv");
+  return all;
+}
+
 /// Rank 0's verdict (status of the lowest failing task and its message) sent to every rank.
 void broadcastVerdict(Status& s, std::string& msg, MPI_Comm comm) {
   std::int64_t head[2] = {static_cast<std::int64_t>(s), static_cast<std::int64_t>(msg.size())};
@@ -87,9 +105,13 @@ void broadcastVerdict(Status& s, std::string& msg, MPI_Comm comm) {
 
 }  // namespace
 
-std::vector<std::string> parallelMapBytes(int n, const std::function<std::string(int)>& task, const MapOptions& opt) {
+int mapSize() {
   if (launchedByMpi()) requirePetsc("mpirun (distributed sweep)");
-  const int rk = rank(), sz = petscStarted() ? size() : 1;
+  return petscStarted() ? size() : 1;
+}
+
+std::vector<std::string> parallelMapBytes(int n, const std::function<std::string(int)>& task, const MapOptions& opt) {
+  const int sz = mapSize(), rk = rank();
 
   // This rank's tasks, in order; stop at the first failure (later ones cannot be the lowest).
   std::string mine;
@@ -107,14 +129,15 @@ std::vector<std::string> parallelMapBytes(int n, const std::function<std::string
 
   std::string all = mine;
 #ifdef WHIRL_HAVE_PETSC
-  if (sz > 1) all = gatherOnRoot(mine, PETSC_COMM_WORLD, rk, sz);
+  if (sz > 1)
+    all = opt.every_rank ? gatherOnAll(mine, PETSC_COMM_WORLD, sz) : gatherOnRoot(mine, PETSC_COMM_WORLD, rk, sz);
 #endif
 
-  // Rank 0 puts the records in task order and finds the lowest failing task.
+  // Rank 0 (every rank, with every_rank) puts the records in task order and finds the lowest failing task.
   std::vector<std::string> results;
   Status verdict = Status::ok;
   std::string message;
-  if (rk == 0) {
+  if (rk == 0 || opt.every_rank) {
     results.resize(static_cast<size_t>(n));
     std::vector<bool> have(static_cast<size_t>(n), false);
     int lowest_error = n;

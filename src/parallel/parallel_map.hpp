@@ -17,10 +17,17 @@ namespace whirl::parallel {
 struct MapOptions {
   /// Called on rank 0 after each of its own tasks with (tasks done here, tasks assigned here).
   std::function<void(int, int)> progress;
+  /// The results on every rank instead of rank 0 alone: for a result every rank goes on from (the
+  /// trim schedule, whose points the distributed sweep then needs on each rank).
+  bool every_rank = false;
 };
 
+/// The number of ranks parallelMapBytes spreads its tasks over: MPI's size under mpirun (MPI is
+/// started here if it was not), 1 otherwise. For a caller that cuts its work into one task per rank.
+int mapSize();
+
 /// Runs task(k) for k = 0 … n−1 over the ranks; returns the n results on rank 0 (index k = task
-/// k) and an empty vector on the other ranks.
+/// k) and an empty vector on the other ranks (with MapOptions::every_rank, the n results on each).
 /// Errors: a rank stops at its first failing task; afterwards every rank throws the error of the
 /// lowest failing task index, with its type (InputError, ComputeError, else std::runtime_error)
 /// and message — the error one rank would have stopped on.
