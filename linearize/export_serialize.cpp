@@ -1,6 +1,5 @@
 #include "linearize/export_serialize.hpp"
 
-#include <bit>
 #include <cstdint>
 #include <nlohmann/json.hpp>
 
@@ -16,25 +15,8 @@ struct Corrupt : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// Doubles as little-endian 8-byte words: the bits, whatever the value (NaN payloads, −0, denormals).
-json doubles(const double* v, size_t n) {
-  std::vector<std::uint8_t> b(8 * n);
-  for (size_t i = 0; i < n; ++i) {
-    const auto w = std::bit_cast<std::uint64_t>(v[i]);
-    for (int k = 0; k < 8; ++k) b[8 * i + k] = static_cast<std::uint8_t>(w >> (8 * k));
-  }
-  return json::binary(std::move(b));
-}
-
-void readDoubles(const json& j, double* v, size_t n) {
-  const auto& b = j.get_binary();
-  if (b.size() != 8 * n) throw Corrupt(std::to_string(b.size()) + " bytes for " + std::to_string(n) + " doubles");
-  for (size_t i = 0; i < n; ++i) {
-    std::uint64_t w = 0;
-    for (int k = 0; k < 8; ++k) w |= static_cast<std::uint64_t>(b[8 * i + k]) << (8 * k);
-    v[i] = std::bit_cast<double>(w);
-  }
-}
+json doubles(const double* v, size_t n) { return cborDoubles(v, n); }
+void readDoubles(const json& j, double* v, size_t n) { readCborDoubles(j, v, n); }
 
 json scalar(double x) { return doubles(&x, 1); }
 double readScalar(const json& j) {
