@@ -611,35 +611,4 @@ SweepPoint sweepPointOf(const SteadyState& t) {
   return p;
 }
 
-std::vector<SteadyState> trimSchedule(const Model& m, const std::vector<double>& winds, const TrimOptions& opt) {
-  std::vector<SteadyState> out;
-  for (double w : winds) {
-    TrimGuess g;
-    const std::size_t n = out.size();
-    if (n >= 1) {
-      const SteadyState& p = out[n - 1];
-      const double pw = *p.condition.wind_speed;
-      g.rotor_speed = p.condition.rotor_speed / pw * w;  // the tip-speed ratio held
-      g.pitch = *p.condition.collective_pitch;
-      g.q = p.azimuth_q;
-      g.stiffness = p.azimuth_stiffness;
-      (p.above_rated ? g.pitch_slope : g.speed_slope) = p.search_slope;
-      if (n >= 2 && out[n - 2].above_rated && p.above_rated) {
-        const SteadyState& pp = out[n - 2];
-        const double dw = pw - *pp.condition.wind_speed;
-        if (dw != 0) g.pitch += (g.pitch - *pp.condition.collective_pitch) / dw * (w - pw);
-      }
-    }
-    out.push_back(trimAtWindSpeed(m, w, g, opt));
-    if (opt.progress) opt.progress(static_cast<int>(out.size()), static_cast<int>(winds.size()));
-  }
-  return out;
-}
-
-std::vector<SweepPoint> trimmedPoints(const Model& m, const std::string& spec, const TrimOptions& opt) {
-  std::vector<SweepPoint> points;
-  for (const SteadyState& s : trimSchedule(m, parseRange(spec, "--wind"), opt)) points.push_back(sweepPointOf(s));
-  return points;
-}
-
 }  // namespace whirl

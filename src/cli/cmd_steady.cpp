@@ -14,6 +14,7 @@
 #include "src/io/openfast/servodyn/discon_input.hpp"
 #include "src/io/text/csv.hpp"
 #include "src/io/text/schedule.hpp"
+#include "src/parallel/session.hpp"
 #include "src/writers/gnuplot.hpp"
 #include "src/writers/output_set.hpp"
 #include "src/writers/steady_table.hpp"
@@ -69,6 +70,7 @@ void run(const SteadyOptions& opt) {
   // The deck's ROSCO controller, when it names one: the trim settles where it does (docs/user/controller.md).
   const std::optional<RoscoController>& controller = m.deck_controller;
   if (controller) trim.controller = &*controller;
+  if (parallel::launchedByMpi()) parallel::requirePetsc("mpirun");  // start-up outside the timing
   const auto start = std::chrono::steady_clock::now();
   std::vector<SteadyState> rows;
   if (!opt.wind_range.empty()) {
@@ -91,7 +93,8 @@ void run(const SteadyOptions& opt) {
       }
     }
   }
-  OutputSet files(dir);  // table, script and images together
+  if (parallel::rank() != 0) return;  // under mpirun (the trim spread over the ranks): rank 0 writes
+  OutputSet files(dir);               // table, script and images together
   files.write("steady.csv", steadyCsv(m, rows));
   files.write("steady.gp", scriptOf("Steady operating points: " + m.name.substr(0, 60)));
   if (!opt.no_plot) renderGnuplot(files.stagingFolder(), "gnuplot", "steady", dir);
@@ -107,8 +110,10 @@ void run(const SteadyOptions& opt) {
   }
   std::printf("wrote");
   for (const auto& f : written) std::printf(" %s", f.c_str());
-  std::printf("\n%zu operating points, %.2f s\n", rows.size(),
+  std::printf("\n%zu operating points, %.2f s", rows.size(),
               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  if (parallel::size() > 1) std::printf(" on %d MPI ranks", parallel::size());
+  std::printf("\n");
 }
 
 }  // namespace

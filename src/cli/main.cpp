@@ -24,13 +24,14 @@ int main(int argc, char** argv) {
   // Under mpirun with several ranks, only the commands that split their work run; any other
   // command would do the same work K times and write the same files K times.
   if (whirl::parallel::size() > 1) {
-    static const std::vector<std::string> distributed = {"campbell", "study", "export", "modes"};
+    static const std::vector<std::string> distributed = {"campbell", "study", "export", "modes", "steady"};
     for (size_t i = 1; i < args.size(); ++i) {
       if (args[i].empty() || args[i][0] == '-') continue;
       if (std::find(distributed.begin(), distributed.end(), args[i]) == distributed.end()) {
         if (root)
           std::fprintf(
-              stderr, "whirl: error: %s: does not run distributed; under mpirun use campbell, study, export or modes\n",
+              stderr,
+              "whirl: error: %s: does not run distributed; under mpirun use campbell, study, export, modes or steady\n",
               whirl::escapeControlCharacters(args[i]).c_str());
         return 1;
       }
@@ -44,7 +45,8 @@ int main(int argc, char** argv) {
   app.footer(
       "PETSc/SLEPc options (-eps_*, -pep_*, -st_*, -mat_mumps_*, …) go after a lone `--` or in --petsc \"…\", "
       "e.g. whirl modes CASE --solver sparse -- -eps_tol 1e-10. Under `mpirun -n K`, `campbell`, `study` and "
-      "`export` spread their operating points over the K ranks; rank 0 writes the output.");
+      "`export` spread their operating points over the K ranks, and a --wind trim (also `steady`'s) its wind speeds; "
+      "rank 0 writes the output.");
   whirl::cli::addCommands(app);
   std::vector<char*> cargv;
   for (auto& a : args) cargv.push_back(a.data());
