@@ -303,7 +303,7 @@ inline void formBladeJetVelocityColumns(const Model& m, int bi, int index0, cons
     const AeroStation& st = blade.stations[si];
     const BodyPoint& pt = body.points[st.point];
     const SectionJet& sj = jets.sections[static_cast<std::size_t>(index0) + si];
-    const ElementFrame<double> g = elementFrame(body, pt, bm, axes);
+    const ElementFrame<double> g = elementFrame(body, pt, bm, axes, st.curve);
     elementLoadRows(g, pt, st.weight, ne, nc, jet);
     const Vec3 wb = x.R0.transpose() * steadyWind(am.wind, wind_dir, 1.0, g.pos(2));
     relativeVelocityRow(sj.J[0][0] * g.xnb + sj.J[0][1] * g.yab, g.s, pt, wb, D, ne, nc, jet.r1.data());

@@ -79,10 +79,14 @@ struct ElementFrame {
 };
 
 /// The element at body point pt: its position, velocity and annulus frame — the no-pitch frame
-/// turned about y_a by the out-of-plane slope of the deflected span axis.
+/// turned about y_a by the out-of-plane slope of the deflected span axis. `curve` [rad] is AeroDyn's
+/// BlCrvAng (AeroStation::curve): the node's reference orientation is turned about the pitched blade
+/// frame's y axis (edgewise, y_r) by it before the elastic rotation, EulerConstruct(0, BlCrvAng,
+/// −BlTwist) in AeroDyn's Init_u (AeroDyn.f90), so the span axis of the section leans downwind (body
+/// +y) by it: (cos c, sin c, 0) in body components, turned by the small elastic rotation θ.
 template <class TK>
 ElementFrame<TK> elementFrame(const Body& body, const BodyPoint& pt, const BladeMotion<TK>& bm,
-                              const BladeAxes<TK>& axes) {
+                              const BladeAxes<TK>& axes, double curve) {
   using std::sqrt;
   ElementFrame<TK> g;
   // Summed in locals from local pointers: summed into g.s, each term was stored and the basis
@@ -100,12 +104,26 @@ ElementFrame<TK> elementFrame(const Body& body, const BodyPoint& pt, const Blade
   g.Rs = bm.R * g.s;
   g.pos = bm.r + g.Rs;
   g.vel = bm.v + bm.w.cross(g.Rs) + bm.R * sd;
-  // Out-of-plane slope of the deflected span axis (1, θz, −θy): the annulus frame's tilt.
+  // Out-of-plane slope of the deflected span axis e = e₀ + θ × e₀, e₀ = (cos c, sin c, 0): the annulus
+  // frame's tilt; e = (1, θz, −θy) on a section without curve, written apart so that its results stay
+  // bit for bit (the compiler's fused multiply-adds would round the general form differently).
+  // AeroDyn extracts the tilt as the Euler angle about y_a (Calculate_MeshOrientation_NoSweepPitchTwist:
+  // sin = e·x_a); the angle of e's projection on the (x_a, z_a) plane differs from it at second order
+  // in the toe (e·y_a: curve and pitch together, or edgewise elastic slopes).
   // (Its dot products written out: a Vec3 built from the constant and two values went through the
   // stack, and reading it back as a pair stalled the store forwarding, a fifth of this function.)
   const Vec3T<TK> xab = axes.Ab.col(1), yab = axes.Ab.col(2), zab = axes.Ab.col(0);
-  // cos and sin of the slope atan2(span·xa, span·za), without the angle.
-  const TK sx = xab(0) + rot(2) * xab(1) - rot(1) * xab(2), sz = zab(0) + rot(2) * zab(1) - rot(1) * zab(2);
+  // cos and sin of the slope atan2(e·xa, e·za), without the angle.
+  TK sx, sz;
+  if (curve == 0.0) {
+    sx = xab(0) + rot(2) * xab(1) - rot(1) * xab(2);
+    sz = zab(0) + rot(2) * zab(1) - rot(1) * zab(2);
+  } else {
+    const double cc = std::cos(curve), sc = std::sin(curve);
+    const TK e0 = cc - rot(2) * sc, e1 = sc + rot(2) * cc, e2 = rot(0) * sc - rot(1) * cc;
+    sx = e0 * xab(0) + e1 * xab(1) + e2 * xab(2);
+    sz = e0 * zab(0) + e1 * zab(1) + e2 * zab(2);
+  }
   const TK h = sqrt(sx * sx + sz * sz);
   const TK cs = sz / h, ss = sx / h;
   const Vec3T<TK> xa = axes.Rnp.col(1), za = axes.Rnp.col(0);
@@ -149,7 +167,7 @@ void bladeLoads(const Model& m, int bi, int index0, const BladeMotion<TK>& bm, c
     const int index = index0 + static_cast<int>(si);
     const AeroStation& st = blade.stations[si];
     const BodyPoint& pt = body.points[st.point];
-    const ElementFrame<TK> g = elementFrame(body, pt, bm, axes);
+    const ElementFrame<TK> g = elementFrame(body, pt, bm, axes, st.curve);
     const Vec3T<T> rel = steadyWind(am.wind, in.wind_dir, in.speed, g.pos(2)) - g.vel.template cast<T>();
     const T vx = rel.dot(g.xn.template cast<T>()), vy = rel.dot(g.ya.template cast<T>());
     const Vec3T<TK> d = g.pos - in.hub;

@@ -185,7 +185,7 @@ void addUnsteadyAeroLoads(const Model& m, Workspace<T>& ws, const VecXT<T>& q, c
     for (std::size_t si = 0; si < blade.stations.size(); ++si, ++index) {
       const AeroStation& st = blade.stations[si];
       const BodyPoint& pt = body.points[st.point];
-      const detail::ElementFrame<T> g = detail::elementFrame(body, pt, bm, axes);
+      const detail::ElementFrame<T> g = detail::elementFrame(body, pt, bm, axes, st.curve);
       const Vec3T<T> rel = detail::steadyWind(am.wind, wind_dir, speed, g.pos(2)) - g.vel;
       const T vx = rel.dot(g.xn), vy = rel.dot(g.ya);
       const Vec3T<T> d = g.pos - hub.r;

@@ -23,11 +23,15 @@ namespace whirl {
 
 /// One blade element: a node of AeroDyn's blade mesh.
 struct AeroStation {
-  int point = -1;     ///< body point at the aerodynamic centre (shape values at the station's span)
-  double span = 0;    ///< distance from the blade root along the undeflected span axis [m]
-  double z = 0;       ///< distance from the rotor apex along the blade (AeroDyn zLocal, loss constants) [m]
-  double chord = 0;   ///< [m]
-  double twist = 0;   ///< aerodynamic twist, positive towards feather [rad]
+  int point = -1;    ///< body point at the aerodynamic centre (shape values at the station's span)
+  double span = 0;   ///< distance from the blade root along the undeflected span axis [m]
+  double z = 0;      ///< distance from the rotor apex along the blade (AeroDyn zLocal, loss constants) [m]
+  double chord = 0;  ///< [m]
+  double twist = 0;  ///< aerodynamic twist, positive towards feather [rad]
+  /// AeroDyn's BlCrvAng [rad]: the section's plane turned about the edgewise axis y_r, its span axis
+  /// leaning downwind (out of the rotor plane) by it at zero pitch; it tilts the annulus frame
+  /// (src/dynamics/aero_element.hxx: elementFrame) on top of the elastic slope.
+  double curve = 0;
   int polar = -1;     ///< index into AeroModel::polars
   double weight = 0;  ///< length the element's load per unit length acts over (trapezoid rule) [m]
   /// Carries unsteady-airfoil states (AeroModel::ua_mod > 0, inside UAStartRad … UAEndRad and a table that

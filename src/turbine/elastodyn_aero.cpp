@@ -73,6 +73,7 @@ AeroBlade bladeElements(Builder& b, const BladeParts& blade, const io::AeroDynBl
     st.z = z;
     st.chord = file.BlChord[j];
     st.twist = file.BlTwist[j] * deg;
+    st.curve = file.BlCrvAng[j] * deg;
     st.polar = file.BlAFID[j] - 1;
     const double lo = j > 0 ? file.BlSpn[j - 1] : file.BlSpn[j], hi = j + 1 < n ? file.BlSpn[j + 1] : file.BlSpn[j];
     st.weight = v14 ? file.element_width[j] : 0.5 * (hi - lo);

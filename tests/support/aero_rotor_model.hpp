@@ -21,6 +21,7 @@ struct AeroRotorOptions {
   bool induction = true;
   double hub_height = 90;
   int elements = 12;
+  double curve_deg = 0;  ///< AeroDyn's BlCrvAng of every element (AeroStation::curve) [deg]
 };
 
 inline Model aeroRotorModel(const AeroRotorOptions& o = {}) {
@@ -100,6 +101,7 @@ inline Model aeroRotorModel(const AeroRotorOptions& o = {}) {
       st.chord = 3.5 - 2.0 * x / length;
       st.twist = (10.0 - 10.0 * x / length) * pi / 180;
       st.polar = 0;
+      st.curve = o.curve_deg * pi / 180;
       st.weight = length / (o.elements - 1) * (s == 0 || s == o.elements - 1 ? 0.5 : 1.0);
       ab.stations.push_back(st);
     }

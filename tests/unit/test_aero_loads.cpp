@@ -69,6 +69,22 @@ TEST(AeroLoads, FrozenWakeJacobiansEqualCentralDifferences) {
   expectJacobiansMatch(m, op, &frozen);
 }
 
+// AeroDyn's BlCrvAng tilts every element's annulus frame (aero_element.hxx): the frozen-wake blade
+// jets (aero_blade_jet.hxx) and the quasi-steady evaluation differentiate the tilted frame as well.
+TEST(AeroLoads, JacobiansOnCurvedSectionsEqualCentralDifferences) {
+  AeroRotorOptions o;
+  o.curve_deg = -9;
+  const Model m = aeroRotorModel(o);
+  const OperatingPoint op = perturbedPoint(m);
+  Workspace<double> ws(m);
+  VecX e(m.ndof());
+  AeroRecord rec;
+  residual(m, ws, op.q, op.qd, op.qdd, op.u, e, nullptr, &rec);
+  const AeroInflow frozen = rec.inflow();
+  expectJacobiansMatch(m, op, &frozen);
+  expectJacobiansMatch(m, op, nullptr);
+}
+
 TEST(AeroLoads, QuasiSteadyJacobiansEqualCentralDifferences) {
   const Model m = aeroRotorModel();
   expectJacobiansMatch(m, perturbedPoint(m), nullptr);

@@ -56,7 +56,13 @@ TEST(AeroDynBladeInput, NewerLayoutWithOptionalColumnsInAnotherOrder) {
   const AeroDynBladeInput b = readAeroDynBlade(dir.write("blade.dat", text));
   EXPECT_EQ(b.NumBlNds, 3);
   EXPECT_FALSE(b.has_BlCrvAng);
-  EXPECT_EQ(b.BlCrvAng, (std::vector<double>{0.0, 0.0, 0.0}));
+  // AeroDyn computes the curve from the mid-chord line's prebend (setCantAngle, AeroDyn_IO.f90): the
+  // slope of the parabola through the three nodes' x = BlCrvAC + ¼ BlChord sin(BlTwist); values from
+  // numpy (polyfit of degree 2, its derivative at each node, arctan in degrees).
+  ASSERT_EQ(b.BlCrvAng.size(), 3u);
+  EXPECT_NEAR(b.BlCrvAng[0], -0.14924018, 1e-8);
+  EXPECT_NEAR(b.BlCrvAng[1], 0.08663102, 1e-8);
+  EXPECT_NEAR(b.BlCrvAng[2], 0.33429249, 1e-8);
   EXPECT_EQ(b.BlChord, (std::vector<double>{3.5, 3.0, 1.4}));
   EXPECT_EQ(b.BlTwist, (std::vector<double>{13.3, 6.5, 0.1}));
   EXPECT_EQ(b.BlAFID, (std::vector<int>{1, 2, 2}));

@@ -23,7 +23,7 @@ struct AeroDynBladeInput {
   std::vector<double> BlSpn;     ///< span from the blade root along the pitch axis (m); starts at 0, increasing
   std::vector<double> BlCrvAC;   ///< out-of-plane offset of the aerodynamic centre, prebend (m)
   std::vector<double> BlSwpAC;   ///< in-plane offset of the aerodynamic centre, sweep (m)
-  std::vector<double> BlCrvAng;  ///< curve angle (deg); zeros when the column is absent (v4+: computed by AeroDyn)
+  std::vector<double> BlCrvAng;  ///< curve angle (deg); without the column AeroDyn's (aeroDynCurveAngles)
   std::vector<double> BlTwist;   ///< aerodynamic twist (deg), positive to feather
   std::vector<double> BlChord;   ///< chord (m), > 0
   std::vector<int> BlAFID;       ///< airfoil of each station, 1-based index into AeroDyn's AFNames list
@@ -40,6 +40,12 @@ struct AeroDynBladeInput {
 /// required columns present (BlSpn, BlCrvAC, BlSwpAC, BlTwist, BlChord, BlAFID), finite numbers, BlSpn
 /// starting at 0 and strictly increasing, BlChord > 0, BlAFID a whole number >= 1 (its upper bound,
 /// NumAFfiles, is checked by readAeroDeck). Throws InputError "file:line: key: reason".
+/// The curve angles (deg) AeroDyn computes when the file has no BlCrvAng column (setCantAngle,
+/// AeroDyn_IO.f90): atan of the mid-chord line's prebend slope, x = BlCrvAC + ¼ BlChord sin(BlTwist),
+/// differentiated along BlSpn through each node and its two neighbours. AeroDyn needs three nodes;
+/// with two, the slope of the line through them.
+std::vector<double> aeroDynCurveAngles(const AeroDynBladeInput& b);
+
 AeroDynBladeInput readAeroDynBlade(const std::filesystem::path& file, OverrideSet* overrides = nullptr);
 
 }  // namespace whirl::io
