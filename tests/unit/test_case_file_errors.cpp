@@ -85,7 +85,7 @@ TEST_F(CaseErrors, WrongTypes) {
   expect("mass: 2.4e5", "mass: \"2.4e5\"", "expected a number, got the quoted text");
   expect("length: 80", "length: [80]", "bodies.tower.length: expected a number, got a list");
   expect("type: revolute,", "type: hinge,", "unknown joint type 'hinge' (allowed: fixed, revolute, prismatic, free)");
-  expect("type: beam", "type: flexible", "unknown body type 'flexible' (allowed: rigid, beam, fem_beam)");
+  expect("type: beam", "type: flexible", "unknown body type 'flexible' (allowed: rigid, beam, fem_beam, fe_blade)");
   expect("rotating: true", "rotating: yes please", "dofs.azimuth.rotating: expected true or false");
   expect("force: [1, 0, 0]", "force: [1, 0]", "expected 3 numbers [x, y, z], got 2");
   expect("  - name: tower\n", "  - tower\n  - name: tower\n", "bodies[0]: expected a map of keys, got 'tower'");

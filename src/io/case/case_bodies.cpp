@@ -16,6 +16,8 @@ const std::vector<std::string> kBeamKeys = {"length",      "uniform",          "
 const std::vector<std::string> kFemKeys = {
     "length", "elements", "uniform",   "properties", "timoshenko",         "dofs", "clamped", "supports",
     "soil",   "masses",   "reduction", "damping",    "geometric_stiffness"};
+const std::vector<std::string> kBlade6Keys = {"reference_axis", "sections", "mu",
+                                              "elements",       "modes",    "axial_shortening"};
 
 Mat3 elementary(char axis, double angle) {
   const double c = std::cos(angle), s = std::sin(angle);
@@ -102,7 +104,8 @@ void readBodies(const CaseNode& list, CaseBuild& build) {
     if (type == "rigid") keys.insert(keys.end(), kRigidKeys.begin(), kRigidKeys.end());
     else if (type == "beam") keys.insert(keys.end(), kBeamKeys.begin(), kBeamKeys.end());
     else if (type == "fem_beam") keys.insert(keys.end(), kFemKeys.begin(), kFemKeys.end());
-    else n.at("type").fail("unknown body type '" + type + "' (allowed: rigid, beam, fem_beam)");
+    else if (type == "fe_blade") keys.insert(keys.end(), kBlade6Keys.begin(), kBlade6Keys.end());
+    else n.at("type").fail("unknown body type '" + type + "' (allowed: rigid, beam, fem_beam, fe_blade)");
     n.allowKeys(keys);
     Body b;
     const CaseNode name = n.at("name");
@@ -118,6 +121,7 @@ void readBodies(const CaseNode& list, CaseBuild& build) {
     readJoint(n, index, build);
     if (type == "rigid") readRigidBody(n, m.bodies[index]);
     else if (type == "beam") readBeamBody(n, index, build);
+    else if (type == "fe_blade") readBlade6Body(n, index, build);
     else readFemBody(n, index, build);
   }
   for (size_t i = 0; i < items.size(); ++i) {

@@ -59,6 +59,10 @@ void readBeamBody(const CaseNode& node, int index, CaseBuild& build);
 /// The keys of a `fem_beam` body into body `index`, with its elastic DOFs (case_fem.cpp).
 void readFemBody(const CaseNode& node, int index, CaseBuild& build);
 
+/// The keys of an `fe_blade` body (6 × 6 sections on a curved reference axis, BeamDyn's description)
+/// into body `index`, with its modal DOFs "<body> flap 1", … (case_blade6.cpp).
+void readBlade6Body(const CaseNode& node, int index, CaseBuild& build);
+
 /// After finalize(): adds to each FE body the geometric stiffness of the gravity loads it carries
 /// (its own weight and that of the bodies attached at its nodes), at the initial DOF values.
 void addFemGeometricStiffness(Model& model, const std::vector<std::shared_ptr<FemPending>>& pending);
