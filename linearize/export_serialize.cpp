@@ -114,8 +114,12 @@ StateSpaceModel readModel(const json& j) {
   return s;
 }
 
+// The frozen wake travels with the point: linearizing at it again (the Python module's second-order
+// matrices) needs the elements' induction.
 json operatingPoint(const OperatingPoint& op) {
   return {{"q", vec(op.q)},
+          {"ind_ax", vec(op.inflow.axial)},
+          {"ind_tn", vec(op.inflow.tangential)},
           {"qd", vec(op.qd)},
           {"qdd", vec(op.qdd)},
           {"u", vec(op.u)},
@@ -131,6 +135,8 @@ json operatingPoint(const OperatingPoint& op) {
 OperatingPoint readOperatingPoint(const json& j) {
   OperatingPoint op;
   op.q = readVector(j.at("q"));
+  op.inflow.axial = readVector(j.at("ind_ax"));
+  op.inflow.tangential = readVector(j.at("ind_tn"));
   op.qd = readVector(j.at("qd"));
   op.qdd = readVector(j.at("qdd"));
   op.u = readVector(j.at("u"));

@@ -23,18 +23,28 @@ namespace {
 
 constexpr double kDeg = std::numbers::pi / 180;
 
-PyModel load(const std::string& path, const std::vector<std::string>& sets, bool allow_outside_files) {
+// The Python module builds linear models from every model: None → as the deck asks, True → required,
+// False → quasi-steady (the command line's --unsteady-aero / --quasi-steady-aero).
+UnsteadyAeroChoice unsteadyAeroChoice(std::optional<bool> unsteady_aero) {
+  if (!unsteady_aero) return UnsteadyAeroChoice::as_deck;
+  return *unsteady_aero ? UnsteadyAeroChoice::required : UnsteadyAeroChoice::off;
+}
+
+PyModel load(const std::string& path, const std::vector<std::string>& sets, bool allow_outside_files,
+             std::optional<bool> unsteady_aero) {
   PyModel m;
   m.source = path;
   m.sets = sets;
   py::gil_scoped_release released;
-  m.model = std::make_shared<const Model>(loadCaseModel(path, sets, allow_outside_files, &m.notes));
+  Model model = loadCaseModel(path, sets, allow_outside_files, &m.notes);
+  applyUnsteadyAeroChoice(model, unsteadyAeroChoice(unsteady_aero), path, &m.notes, true);
+  m.model = std::make_shared<const Model>(std::move(model));
   return m;
 }
 
 // A case's YAML text (the package writes a dict as JSON, which is YAML): no file, the same reader.
 PyModel loadText(const std::string& text, const std::string& folder, const std::vector<std::string>& sets,
-                 bool allow_outside_files) {
+                 bool allow_outside_files, std::optional<bool> unsteady_aero) {
   PyModel m;
   m.source = "<dict>";
   m.sets = sets;
@@ -43,6 +53,7 @@ PyModel loadText(const std::string& text, const std::string& folder, const std::
   for (const auto& s : sets) overrides.push_back(parseOverride(s));
   Model model = readCaseText(text, m.source, folder, overrides, allow_outside_files);
   requireActiveDof(model, m.source);
+  applyUnsteadyAeroChoice(model, unsteadyAeroChoice(unsteady_aero), m.source, &m.notes, true);
   m.model = std::make_shared<const Model>(std::move(model));
   return m;
 }
@@ -156,9 +167,9 @@ void bindModel(py::module_& m) {
           "norm of the residual at the equilibrium [N, N m]");
 
   m.def("load", &load, py::arg("path"), py::arg("sets") = std::vector<std::string>{},
-        py::arg("allow_outside_files") = false);
+        py::arg("allow_outside_files") = false, py::arg("unsteady_aero") = std::nullopt);
   m.def("load_text", &loadText, py::arg("text"), py::arg("folder") = ".", py::arg("sets") = std::vector<std::string>{},
-        py::arg("allow_outside_files") = false);
+        py::arg("allow_outside_files") = false, py::arg("unsteady_aero") = std::nullopt);
 }
 
 }  // namespace whirl::python

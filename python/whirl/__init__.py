@@ -81,7 +81,7 @@ def _sets(overrides: Optional[Mapping[str, Any]]) -> list:
 
 
 def load(path: Union[str, os.PathLike, Mapping], set: Optional[Mapping[str, Any]] = None,
-         allow_outside_files: bool = False) -> "Model":
+         allow_outside_files: bool = False, unsteady_aero: Optional[bool] = None) -> "Model":
     """Load a model, as every ``whirl`` command does with ``CASE --set KEY=VALUE``.
 
     Parameters
@@ -94,6 +94,11 @@ def load(path: Union[str, os.PathLike, Mapping], set: Optional[Mapping[str, Any]
         ``{"bodies.tower.uniform.EIy": 1e11}`` (a dotted path of a YAML case), ``{"gravity": 0}``.
     allow_outside_files : bool
         Let a YAML case's ``file:`` entries name files outside the case's folder.
+    unsteady_aero : bool, optional
+        The blade elements' unsteady-airfoil and dynamic-inflow states in the model's linearizations:
+        ``None`` where the deck's AeroDyn asks for them (``UA_Mod`` 4 or 6, ``DBEMT_Mod`` 3), ``True``
+        the same but an error on a deck without unsteady-airfoil states (the CLI's ``--unsteady-aero``),
+        ``False`` quasi-steady: the static polar on the frozen wake (``--quasi-steady-aero``).
 
     Raises
     ------
@@ -101,8 +106,8 @@ def load(path: Union[str, os.PathLike, Mapping], set: Optional[Mapping[str, Any]
         With the CLI's ``file:line: key: reason`` message.
     """
     if isinstance(path, Mapping):
-        return from_dict(path, set=set, allow_outside_files=allow_outside_files)
-    return Model(_whirl.load(os.fspath(path), _sets(set), allow_outside_files))
+        return from_dict(path, set=set, allow_outside_files=allow_outside_files, unsteady_aero=unsteady_aero)
+    return Model(_whirl.load(os.fspath(path), _sets(set), allow_outside_files, unsteady_aero))
 
 
 def _plain(value):
@@ -117,7 +122,7 @@ def _plain(value):
 
 
 def from_dict(case: Mapping, folder: Union[str, os.PathLike] = ".", set: Optional[Mapping[str, Any]] = None,
-              allow_outside_files: bool = False) -> "Model":
+              allow_outside_files: bool = False, unsteady_aero: Optional[bool] = None) -> "Model":
     """Build a model from a YAML case given as a dict (the schema of cases/README.md), no file written.
 
     ``folder`` is where the case's ``file:`` entries (property and shape tables) are looked up, as a
@@ -125,7 +130,7 @@ def from_dict(case: Mapping, folder: Union[str, os.PathLike] = ".", set: Optiona
     text the dict is written as (one key per line).
     """
     text = json.dumps(case, indent=1, default=_plain)
-    return Model(_whirl.load_text(text, os.fspath(folder), _sets(set), allow_outside_files))
+    return Model(_whirl.load_text(text, os.fspath(folder), _sets(set), allow_outside_files, unsteady_aero))
 
 
 def _progress(progress):

@@ -16,8 +16,6 @@
 #include "linearize/point_validity.hpp"
 #include "src/base/error.hpp"
 #include "src/base/text.hpp"
-#include "src/dynamics/aero_unsteady.hpp"
-#include "src/io/openfast/aerodyn/aero_support.hpp"
 #include "src/io/openfast/servodyn/discon_input.hpp"
 #include "src/parallel/session.hpp"
 #include "src/turbine/load_model.hpp"
@@ -80,19 +78,10 @@ bool isYamlCase(const std::string& path) { return isYamlCasePath(path); }
 Model loadModel(const ModelOptions& opt, bool linear_model) {
   std::vector<std::string> notes;
   Model m = loadCaseModel(opt.case_path, opt.sets, opt.allow_outside_files, &notes);
-  if (opt.unsteady_aero && uaStateCount(m.aero) == 0)
-    throw InputError(opt.case_path +
-                     ": --unsteady-aero: the deck's AeroDyn has no unsteady-airfoil states to add (UA_Mod 4 or 6 "
-                     "on an element inside UAStartRad…UAEndRad; an older AeroDyn file: --set AFAeroMod=2 --set "
-                     "UAMod=4)");
-  if (opt.quasi_steady_aero) {
-    removeUnsteadyAirfoils(m.aero);
-    removeDynamicInflow(m.aero);
-  }
-  // The states are in the linear model only where the model has some (UA_Mod 4 or 6 on some element;
-  // DBEMT_Mod 3 with the BEM induction).
-  if (linear_model && uaStateCount(m.aero) > 0) std::erase_if(notes, io::isUnsteadyAirfoilNote);
-  if (linear_model && inflowStateCount(m.aero) > 0) std::erase_if(notes, io::isDynamicInflowNote);
+  const UnsteadyAeroChoice choice = opt.unsteady_aero       ? UnsteadyAeroChoice::required
+                                    : opt.quasi_steady_aero ? UnsteadyAeroChoice::off
+                                                            : UnsteadyAeroChoice::as_deck;
+  applyUnsteadyAeroChoice(m, choice, opt.case_path, &notes, linear_model);
   if (parallel::rank() == 0)
     for (const std::string& n : notes) std::fprintf(stderr, "whirl: note: %s\n", escapeControlCharacters(n).c_str());
   return m;

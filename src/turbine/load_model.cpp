@@ -3,7 +3,10 @@
 
 #include <filesystem>
 
+#include "src/base/error.hpp"
+#include "src/dynamics/aero_unsteady.hpp"
 #include "src/io/case/case_file.hpp"
+#include "src/io/openfast/aerodyn/aero_support.hpp"
 #include "src/turbine/elastodyn_model.hpp"
 
 namespace whirl {
@@ -36,6 +39,24 @@ Model loadCaseModel(const std::string& path, const std::vector<std::string>& set
   // Every caller linearizes the model: refuse an empty state before any work or output.
   requireActiveDof(m, path);
   return m;
+}
+
+void applyUnsteadyAeroChoice(Model& m, UnsteadyAeroChoice choice, const std::string& path,
+                             std::vector<std::string>* notes, bool linear_model) {
+  if (choice == UnsteadyAeroChoice::required && uaStateCount(m.aero) == 0)
+    throw InputError(path +
+                     ": --unsteady-aero: the deck's AeroDyn has no unsteady-airfoil states to add (UA_Mod 4 or 6 "
+                     "on an element inside UAStartRad…UAEndRad; an older AeroDyn file: --set AFAeroMod=2 --set "
+                     "UAMod=4)");
+  if (choice == UnsteadyAeroChoice::off) {
+    removeUnsteadyAirfoils(m.aero);
+    removeDynamicInflow(m.aero);
+  }
+  // The states are in the linear model only where the model has some (UA_Mod 4 or 6 on some element;
+  // DBEMT_Mod 3 with the BEM induction).
+  if (!notes || !linear_model) return;
+  if (uaStateCount(m.aero) > 0) std::erase_if(*notes, io::isUnsteadyAirfoilNote);
+  if (inflowStateCount(m.aero) > 0) std::erase_if(*notes, io::isDynamicInflowNote);
 }
 
 }  // namespace whirl

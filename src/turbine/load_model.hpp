@@ -24,4 +24,20 @@ bool isYamlCasePath(const std::string& path);
 Model loadCaseModel(const std::string& path, const std::vector<std::string>& sets, bool allow_outside_files = false,
                     std::vector<std::string>* notes = nullptr);
 
+/// Which aerodynamic states (unsteady airfoil: AeroDyn's UA_Mod 4 or 6; dynamic inflow: DBEMT_Mod 3;
+/// docs/theory/unsteady-aero.md) a model's linearizations carry: the command line's --unsteady-aero /
+/// --quasi-steady-aero, the Python module's `unsteady_aero=True/False`.
+enum class UnsteadyAeroChoice {
+  as_deck,   ///< the states where the deck's AeroDyn asks for them (default)
+  required,  ///< as the deck asks, and a model without any such state is refused
+  off,       ///< quasi-steady: the elements' UA and DBEMT data removed (static polar, frozen wake)
+};
+
+/// Applies `choice` to a model loaded from `path`. With `linear_model` (the caller builds linear models)
+/// and states left in the model, the reader's notes that they are left out are dropped from `notes`.
+/// \throws InputError "PATH: --unsteady-aero: the deck's AeroDyn has no unsteady-airfoil states to add …"
+///   for `required` on a model without an element with states.
+void applyUnsteadyAeroChoice(Model& m, UnsteadyAeroChoice choice, const std::string& path,
+                             std::vector<std::string>* notes, bool linear_model);
+
 }  // namespace whirl

@@ -120,6 +120,46 @@ TEST(CliAero, UnsteadyAirfoilStatesAsTheDeckAsks) {
   EXPECT_NE(both.err.find("excludes"), std::string::npos) << both.err;
 }
 
+// The dynamic-inflow states (DBEMT_Mod 3 on the BEM induction, AeroDyn's older WakeMod 2) by default, without
+// the note that they are left out; --quasi-steady-aero leaves them out with the UA states, and the note
+// stays (issue 47 items 2 and 6).
+TEST(CliAero, DynamicInflowStatesAsTheDeckAsks) {
+  const std::string args = "linearize " + kAero + " --set WakeMod=2 --set DBEMT_Mod=3 --rpm 12 --out '";
+  const std::string note = "dynamic BEMT: whirl solves the quasi-steady BEMT";
+  auto inflowStates = [](const std::filesystem::path& dir) {
+    const auto j = nlohmann::json::parse(slurp(dir / "linearization.json"));
+    int n = 0;
+    for (const auto& s : j.at("states")) n += s.get<std::string>().rfind("DBEMT v", 0) == 0;
+    return n;
+  };
+  const auto dbemt_dir = freshDir("aero_lin_dbemt"), qs_dir = freshDir("aero_lin_dbemt_qs");
+  const auto by_default = whirl(args + dbemt_dir.string() + "'");
+  ASSERT_EQ(by_default.code, 0) << by_default.err;
+  EXPECT_EQ(by_default.err.find(note), std::string::npos) << by_default.err;
+  // 4 states (v, v1; axial, tangential) on every one of the 19 elements of each of the 3 blades.
+  EXPECT_EQ(inflowStates(dbemt_dir), 4 * 19 * 3);
+  const auto quasi_steady = whirl(args + qs_dir.string() + "' --quasi-steady-aero");
+  ASSERT_EQ(quasi_steady.code, 0) << quasi_steady.err;
+  EXPECT_NE(quasi_steady.err.find(note), std::string::npos) << quasi_steady.err;
+  EXPECT_EQ(inflowStates(qs_dir), 0);
+}
+
+// A two-bladed rotor with UA states: Floquet's fixed-frame view pairs every coordinate with a rate, so the
+// turning rotor's modes are refused with the way out, not computed wrong (AWT-27, r-test Test03: AeroDyn 15
+// with AFAeroMod 2, here with the HGM model).
+TEST(CliAero, TwoBladedRotorWithUnsteadyAirfoilStatesIsRefusedWithTheWayOut) {
+  const std::string deck = "tests/data/openfast/decks/certtest/Test03.fst";
+  const std::string run = "campbell " + deck + " --set UAMod=4 --rpm 20:20:40 --azimuths 8 --no-plot";
+  const auto r = whirl(run + " --out '" + freshDir("aero_two_blades_ua").string() + "'");
+  EXPECT_NE(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("Floquet analysis (fewer than 3 blades, turning) of a model with first-order states"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("--quasi-steady-aero"), std::string::npos) << r.err;
+  const auto qs = whirl(run + " --quasi-steady-aero --out '" + freshDir("aero_two_blades_qs").string() + "'");
+  EXPECT_EQ(qs.code, 0) << qs.err;
+}
+
 // UA_Mod values the linear model cannot carry (here 3, the deck's own) keep the note and the static polar;
 // asked for explicitly they are refused, naming the key to change.
 TEST(CliAero, UnsteadyAirfoilModelWithoutStatesKeepsTheNote) {
