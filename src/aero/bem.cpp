@@ -669,6 +669,25 @@ T inflowAngle(const BemStation& s, const T& Vx, const T& Vy, const T& theta, dou
   return T(phi0 - R / Rphi);
 }
 
+/// AeroDyn's limitInductionFactors (BEMTUncoupled): a within [−1, 1.5], a' within [−1, 1]. A clamped
+/// value is a constant: it has no derivative.
+template <class T>
+void limitInductions(T& a, T& ap) {
+  if (valueOf(a) < kMinA) a = T(kMinA);
+  if (valueOf(a) > kMaxA) a = T(kMaxA);
+  if (valueOf(ap) < kMinAp) ap = T(kMinAp);
+  if (valueOf(ap) > kMaxAp) ap = T(kMaxAp);
+}
+
+/// calculate_Inductions_from_BEMT: the inductions of an invalid solution are 0, the others limited.
+template <class T>
+std::pair<T, T> limitedInductions(const Induction<T>& ind) {
+  if (!ind.valid) return {T(0.0), T(0.0)};
+  T a = ind.a, ap = ind.ap;
+  limitInductions<T>(a, ap);
+  return {a, ap};
+}
+
 template <class T>
 SectionLoads<T> frozenLoads(const BemStation& s, const T& Vx, const T& Vy, const T& theta, double ax_ind_vel,
                             double tan_ind_vel, double rho, const BemOptions& /*o*/) {
@@ -684,16 +703,7 @@ SectionLoads<T> quasiSteadyLoads(const BemStation& s, const T& Vx, const T& Vy, 
                                  const BemOptions& o, const T* radius, const T* weight, double* slope) {
   const T phi = inflowAngle<T>(s, Vx, Vy, theta, phi0, o, radius, slope);
   const Induction<T> ind = inductions<T>(s, phi, Vx, Vy, theta, o, radius);
-  T a = ind.a, ap = ind.ap;
-  if (!ind.valid) {
-    a = T(0.0);
-    ap = T(0.0);
-  } else {  // limitInductionFactors: a clamped value has no derivative
-    if (valueOf(a) < kMinA) a = T(kMinA);
-    if (valueOf(a) > kMaxA) a = T(kMaxA);
-    if (valueOf(ap) < kMinAp) ap = T(kMinAp);
-    if (valueOf(ap) > kMaxAp) ap = T(kMaxAp);
-  }
+  auto [a, ap] = limitedInductions<T>(ind);
   if (weight) {
     a = a * *weight;
     ap = ap * *weight;
@@ -707,16 +717,7 @@ InducedVelocity<T> quasiSteadyInducedVelocity(const BemStation& s, const T& Vx, 
                                               double phi0, const BemOptions& o, const T* radius, double* slope) {
   const T phi = inflowAngle<T>(s, Vx, Vy, theta, phi0, o, radius, slope);
   const Induction<T> ind = inductions<T>(s, phi, Vx, Vy, theta, o, radius);
-  T a = ind.a, ap = ind.ap;
-  if (!ind.valid) {
-    a = T(0.0);
-    ap = T(0.0);
-  } else {  // limitInductionFactors: a clamped value has no derivative
-    if (valueOf(a) < kMinA) a = T(kMinA);
-    if (valueOf(a) > kMaxA) a = T(kMaxA);
-    if (valueOf(ap) < kMinAp) ap = T(kMinAp);
-    if (valueOf(ap) > kMaxAp) ap = T(kMaxAp);
-  }
+  auto [a, ap] = limitedInductions<T>(ind);
   return {T(-Vx * a), T(Vy * ap), stationConstants(s, o).fixed};
 }
 
@@ -725,10 +726,7 @@ std::pair<T, T> inducedFlow(const T& Vx, const T& Vy, const T& ax, const T& tn, 
   // calculate_Inductions_from_DBEMT (BEMT.f90): the inductions of the induced velocities, limited.
   T a = equal(valueOf(Vx), 0.0) ? T(0.0) : T(-ax / Vx);
   T ap = equal(valueOf(Vy), 0.0) ? T(0.0) : T(tn / Vy);
-  if (valueOf(a) < kMinA) a = T(kMinA);
-  if (valueOf(a) > kMaxA) a = T(kMaxA);
-  if (valueOf(ap) < kMinAp) ap = T(kMinAp);
-  if (valueOf(ap) > kMaxAp) ap = T(kMaxAp);
+  limitInductions<T>(a, ap);
   if (weight) {  // check_turnOffBEMT, after DBEMT
     a = a * *weight;
     ap = ap * *weight;

@@ -4,30 +4,16 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstring>
-#include <limits>
 
 #include "linearize/export_serialize.hpp"
 #include "src/base/error.hpp"
+#include "tests/support/bit_exact.hpp"
 
 namespace whirl {
 namespace {
 
-// Doubles whose bits a lossy encoding would change: NaN with a payload and sign, −0, denormals.
-double tricky(int i) {
-  std::uint64_t nan_bits = 0xfff8'0000'dead'beefULL;
-  double nan;
-  std::memcpy(&nan, &nan_bits, sizeof nan);
-  const double v[] = {0.1 * i - 1,
-                      -0.0,
-                      std::numeric_limits<double>::denorm_min() * (i + 1),
-                      nan,
-                      std::numeric_limits<double>::infinity(),
-                      1.0 / 3 + i,
-                      0.5f,
-                      -1e300 * i};
-  return v[i % 8];
-}
+using test::sameBits;
+const auto tricky = test::trickyDouble;
 
 StateSpaceVariable variable(int i) {
   return {"var " + std::to_string(i), i % 2 ? "rad" : "m", tricky(i + 3), i % 4 - 1, i % 3 ? i / 2 : -1, i == 0};
@@ -79,8 +65,6 @@ ExportPoint point(bool optionals) {
   p.equilibrium.residual_max_dof = "tower FA 1";
   return p;
 }
-
-bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
 template <class M>
 void expectSameBits(const M& a, const M& b, const std::string& what) {

@@ -3,32 +3,15 @@
 // for bit, the Newton matrices stay behind, and bytes that are not encoded states give a ComputeError.
 #include <gtest/gtest.h>
 
-#include <cstring>
-#include <limits>
-
 #include "linearize/trim_serialize.hpp"
 #include "src/base/error.hpp"
+#include "tests/support/bit_exact.hpp"
 
 namespace whirl {
 namespace {
 
-// Doubles whose bits a lossy encoding would change: NaN with a payload and sign, −0, denormals.
-double tricky(int i) {
-  const std::uint64_t nan_bits = 0xfff8'0000'dead'beefULL;
-  double nan;
-  std::memcpy(&nan, &nan_bits, sizeof nan);
-  const double v[] = {0.1 * i - 1,
-                      -0.0,
-                      std::numeric_limits<double>::denorm_min() * (i + 1),
-                      nan,
-                      std::numeric_limits<double>::infinity(),
-                      1.0 / 3 + i,
-                      0.5f,
-                      -1e300 * i};
-  return v[i % 8];
-}
-
-bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+using test::sameBits;
+const auto tricky = test::trickyDouble;
 
 // Every field a distinct value; `seed` shifts them, `optionals` sets the condition's optional values.
 SteadyState state(int seed, bool optionals) {
