@@ -9,6 +9,7 @@
 #include "src/dynamics/generator_torque.hpp"
 #include "src/io/openfast/aerodyn/airfoil_ua.hpp"
 #include "src/shapes/beam.hpp"
+#include "src/shapes/rigid_arm.hpp"
 #include "src/turbine/elastodyn_parts.hpp"
 
 namespace whirl::elastodyn {
@@ -25,13 +26,10 @@ int outputIndex(const Model& m, const std::string& name) {
 // The point pt of an FE blade's reference axis moved to AeroDyn's aerodynamic centre (x_r, y_r) =
 // (BlCrvAC, BlSwpAC) [m] of the blade-root frame, body (y, z): AeroDyn places its nodes there and
 // OpenFAST maps their loads to BeamDyn's axis through rigid arms (ModMesh_Mapping, line2-to-line2), so
-// the offset d from the axis turns with the section: the shapes' columns gain θ_k × d. A lift ahead of
-// the axis then loads the torsion modes and the section's twist moves the centre (the aerodynamic
-// stiffness of torsion). The shortening columns stay those of the axis (second order in q and d).
+// the offset from the axis turns with the section (offsetOnRigidArm): a lift ahead of the axis loads the
+// torsion modes and the section's twist moves the centre (the aerodynamic stiffness of torsion).
 void atAerodynamicCentre(BodyPoint& pt, double crv_ac, double swp_ac) {
-  const Vec3 d(0.0, crv_ac - pt.P(1, 0), swp_ac - pt.P(2, 0));
-  pt.P.col(0) += d;
-  for (Eigen::Index k = 0; k < pt.theta.cols(); ++k) pt.P.col(1 + k) += Vec3(pt.theta.col(k)).cross(d);
+  offsetOnRigidArm(pt, Vec3(0.0, crv_ac - pt.P(1, 0), swp_ac - pt.P(2, 0)));
 }
 
 // One blade's elements at the AeroDyn nodes: points on the blade body at the aerodynamic centre,

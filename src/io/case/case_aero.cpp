@@ -12,6 +12,7 @@
 #include "src/io/case/case_reader.hpp"
 #include "src/io/openfast/aerodyn/airfoil_input.hpp"
 #include "src/shapes/beam.hpp"
+#include "src/shapes/rigid_arm.hpp"
 
 namespace whirl {
 namespace {
@@ -120,8 +121,11 @@ PendingBlade readBlade(const CaseNode& n, int body, const CaseBuild::Beam& beam,
         table.fail("body '" + b.name + "' already has a point named '" + name +
                    "' (the blade elements' points are 'aero 1', 'aero 2', …)");
     BodyPoint pt = beamPoint(beam.props, beam.shapes, beam.axial_shortening, std::clamp(x(j), 0.0, L), name);
-    pt.P(1, 0) += ac_y(j);
-    pt.P(2, 0) += ac_z(j);
+    if (beam.finite_element) offsetOnRigidArm(pt, Vec3(0.0, ac_y(j), ac_z(j)));
+    else {
+      pt.P(1, 0) += ac_y(j);
+      pt.P(2, 0) += ac_z(j);
+    }
     out.nodes.push_back(pt.P.col(0));
     AeroStation st;
     st.point = static_cast<int>(b.points.size());
@@ -193,7 +197,7 @@ void readAerodynamics(const CaseNode& top, CaseBuild& build) {
   const CaseNode& r = *rotor;
   r.allowKeys({"hub", "air_density", "induction", "airfoils", "TipLoss", "HubLoss", "TanInd", "AIDrag", "TIDrag",
                "MaxIter", "UseBlCm"});
-  if (blade_nodes.empty()) r.fail("no beam body has an aero: block (its blade elements)");
+  if (blade_nodes.empty()) r.fail("no beam or fe_blade body has an aero: block (its blade elements)");
   if (!wind) r.fail("aerodynamics need a top-level wind: block (at least its speed)");
   const CaseNode hub = r.at("hub");
   am.hub_body = build.builder.bodyIndex(hub.text(), hub.where());

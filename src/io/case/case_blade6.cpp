@@ -150,6 +150,14 @@ void readBlade6Body(const CaseNode& n, int index, CaseBuild& build) {
         if (q.name == name) pt.at("name").fail("point name '" + name + "' used twice in body '" + b.name + "'");
       b.points.push_back(beamPoint(fe.props, fe.shapes, axial_shortening, std::clamp(v, 0.0, fe.length), name));
     }
+  // The blade elements of an `aero:` block sit on the FE blade's modes as on a beam's shapes.
+  CaseBuild::Beam record;
+  record.body = index;
+  record.props = fe.props;
+  record.shapes = fe.shapes;
+  record.axial_shortening = axial_shortening;
+  record.finite_element = true;
+  build.beams.push_back(std::move(record));
   for (std::size_t s = 0; s < fe.shapes.size(); ++s)
     build.addDof(b.name + " " + fe.shapes[s]->name, DofKind::Elastic, index, static_cast<int>(s), n.where(), false);
 }

@@ -16,8 +16,8 @@ const std::vector<std::string> kBeamKeys = {"length",      "uniform",          "
 const std::vector<std::string> kFemKeys = {
     "length", "elements", "uniform",   "properties", "timoshenko",         "dofs", "clamped", "supports",
     "soil",   "masses",   "reduction", "damping",    "geometric_stiffness"};
-const std::vector<std::string> kBlade6Keys = {"reference_axis", "sections", "mu",
-                                              "elements",       "modes",    "axial_shortening"};
+const std::vector<std::string> kBlade6Keys = {"reference_axis", "sections",         "mu",  "elements",
+                                              "modes",          "axial_shortening", "aero"};
 
 Mat3 elementary(char axis, double angle) {
   const double c = std::cos(angle), s = std::sin(angle);

@@ -117,7 +117,8 @@ Model readCaseDocument(YAML::Node doc, const std::string& path, const std::strin
   if (const auto g = top.find("generator")) readGenerator(*g, build);
   // Body indices of build.beams are those before finalize() sorts the bodies.
   if (beams)
-    for (const CaseBuild::Beam& b : build.beams) beams->push_back({m.bodies[b.body].name, b.fem, b.shapes});
+    for (const CaseBuild::Beam& b : build.beams)  // an fe_blade's shapes are its FE modes already
+      if (!b.finite_element) beams->push_back({m.bodies[b.body].name, b.fem, b.shapes});
   Model model;
   try {
     model = std::move(build.builder).finish();

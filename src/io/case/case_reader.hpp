@@ -28,6 +28,9 @@ struct CaseBuild {
     std::vector<ShapePtr> shapes;
     fem::ModeShapeInput fem;       ///< FE input for `whirl shapes`: the `{from: fem}` settings, else properties only
     bool axial_shortening = true;  ///< as built (the points of the blade elements follow it)
+    /// An `fe_blade` (6 × 6 sections): the blade elements' aerodynamic-centre offsets are rigid arms that
+    /// turn with the section (offsetOnRigidArm), so the lift loads the torsion modes.
+    bool finite_element = false;
   };
   ModelBuilder builder;  ///< the model, where its bodies and DOFs were written, the lookups by name
   std::vector<Beam> beams;
