@@ -7,6 +7,9 @@
 #   interactive report campbell.html (mode shapes, docs/user/mode-shapes.md) and HAWCStab2's .cmb/.amp/.opt;
 # - reports/nrel5mw_aero_ua/: the same with the blade elements' unsteady-airfoil states (the airfoil files'
 #   UA data, HGM model), the aerodynamic roots apart in campbell_aero.csv (docs/theory/unsteady-aero.md);
+# - reports/nrel5mw_aero_ua_dbemt/: the same with Øye's dynamic inflow as well (DBEMT_Mod 3, the deck's tau1_const);
+# - reports/nrel5mw_aero_models/: the three side by side (campbell_side_by_side.png, one column per model) and
+#   their first tower, flap and edge modes tabulated (aero_models.csv);
 # - reports/nrel5mw_rosco/: with ROSCO's controller, open and closed loop (below);
 # - reports/oc3_hywind_rosco/: the floating NREL 5MW with its ROSCO controller, closed loop (below).
 set -euo pipefail
@@ -19,6 +22,10 @@ build/whirl campbell cases/nrel5mw/Main_Aero.fst --wind 3:1:25 --azimuths 36 --m
   --html --format hawcstab2
 build/whirl campbell cases/nrel5mw/Main_Aero.fst --set AFAeroMod=2 --set UAMod=4 --unsteady-aero --wind 3:1:25 \
   --azimuths 36 --max-freq 3.2 --out reports/nrel5mw_aero_ua
+build/whirl campbell cases/nrel5mw/Main_Aero.fst --set AFAeroMod=2 --set UAMod=4 --set WakeMod=2 --set DBEMT_Mod=3 \
+  --unsteady-aero --wind 3:1:25 --azimuths 36 --max-freq 3.2 --out reports/nrel5mw_aero_ua_dbemt
+build/whirl report reports/nrel5mw_aero reports/nrel5mw_aero_ua reports/nrel5mw_aero_ua_dbemt --side-by-side \
+  --label "quasi-steady" --label "UA" --label "UA + DBEMT" --max-freq 3.2 --out reports/nrel5mw_aero_models
 # The NREL 5MW with ROSCO's controller (cases/nrel5mw/Main_ROSCO.fst): the schedule it settles at along
 # the wind, the open-loop Campbell diagram along that schedule, and the closed loop with the controller
 # (reports/nrel5mw_rosco/closed_loop/: closed-loop Campbell, open vs closed side by side in
