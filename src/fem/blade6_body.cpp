@@ -207,6 +207,7 @@ Blade6Body blade6Body(const Blade6Input& in, const Blade6Options& opt) {
                      std::to_string(opt.elements) + " elements give " + std::to_string(kept) +
                      " among their lowest modes; use more blade_elements or fewer blade_modes");
   const MatX K = Phi.transpose() * (mats.K * Phi), D = Phi.transpose() * (mats.D * Phi);
+  out.modes = Phi;
   out.K = 0.5 * (K + K.transpose());
   out.D = 0.5 * (D + D.transpose());
   return out;

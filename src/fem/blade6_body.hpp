@@ -64,6 +64,7 @@ struct Blade6Body {
   BeamProperties props;          ///< mass line, offsets, inertia tensors, EI for outputs (body frame)
   std::vector<ShapePtr> shapes;  ///< the kept modes as table shapes, named flap k, edge k, torsion k
   MatX K, D;                     ///< stiffness and damping of the modal coordinates (modes × modes)
+  MatX modes;                    ///< the kept modes over the FE DOFs (6 nodes × modes, zero at the root)
   std::vector<double> freq_hz;   ///< the FE modes' frequencies, clamped root, not rotating [Hz]
   double length = 0;             ///< along z_r [m]
 };

@@ -95,7 +95,8 @@ RotorParts addBlades(Builder& b, const RotorHub& hub) {
       dofs[s] = d;
     }
     out.shape_dofs.push_back(dofs);
-    out.root_moment_gains.push_back(beamMomentGains(beam.props, beam.shapes, 0.0));
+    // An FE blade's root moment from its elements' resultants: its tabulated modes have no curvature there.
+    out.root_moment_gains.push_back(fe ? fe->root_moment_gains : beamMomentGains(beam.props, beam.shapes, 0.0));
 
     if (tip_mass > 0) {
       Body tip;

@@ -8,12 +8,14 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <numbers>
 #include <string>
 
 #include "src/base/error.hpp"
 #include "src/base/limits.hpp"
 #include "src/fem/blade6_body.hpp"
+#include "src/fem/blade6_moments.hpp"
 #include "src/io/case/case_columns.hpp"
 #include "src/io/case/case_reader.hpp"
 #include "src/shapes/beam.hpp"
@@ -157,6 +159,9 @@ void readBlade6Body(const CaseNode& n, int index, CaseBuild& build) {
   record.shapes = fe.shapes;
   record.axial_shortening = axial_shortening;
   record.finite_element = true;
+  record.moment_gains = [fe = std::make_shared<const fem::Blade6Body>(fe)](double x) {
+    return fem::blade6MomentGains(*fe, x);
+  };
   build.beams.push_back(std::move(record));
   for (std::size_t s = 0; s < fe.shapes.size(); ++s)
     build.addDof(b.name + " " + fe.shapes[s]->name, DofKind::Elastic, index, static_cast<int>(s), n.where(), false);

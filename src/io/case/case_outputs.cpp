@@ -75,9 +75,6 @@ Output momentOutput(const CaseNode& n, CaseBuild& build) {
   for (const auto& bm : build.beams)
     if (bm.body == b) beam = &bm;
   if (!beam) body.fail("body '" + body.text() + "' is not a beam: bending moments come from a beam's curvature");
-  // The FE modes are tabulated at the nodes, linear between them: no curvature to take a moment from.
-  if (beam->finite_element)
-    body.fail("body '" + body.text() + "' is an fe_blade: its bending moments are not available as outputs yet");
   const double L = beam->props.length;
   if (n.has("fraction") && n.has("x")) n.at("x").fail("give fraction or x, not both");
   const double x = n.has("x") ? n.at("x").number() : n.number("fraction", 0.0) * L;
@@ -85,7 +82,7 @@ Output momentOutput(const CaseNode& n, CaseBuild& build) {
   const CaseNode comp = n.at("component");
   const std::string c = comp.text();
   if (c != "y" && c != "z") comp.fail("expected y (bends towards body +y) or z (towards body +z), got '" + c + "'");
-  const MatX G = beamMomentGains(beam->props, beam->shapes, x);
+  const MatX G = beam->moment_gains ? beam->moment_gains(x) : beamMomentGains(beam->props, beam->shapes, x);
   Output o;
   o.kind = OutputKind::DofCombination;
   for (int j = 0; j < G.cols(); ++j) {

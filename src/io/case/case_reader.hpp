@@ -2,6 +2,7 @@
 /// \file
 /// Internal to the case reader (src/io/case/case_*.cpp): the model under construction with where each
 /// part was written, and the readers of each section. Users call readCase() (case_file.hpp).
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -31,6 +32,9 @@ struct CaseBuild {
     /// An `fe_blade` (6 × 6 sections): the blade elements' aerodynamic-centre offsets are rigid arms that
     /// turn with the section (offsetOnRigidArm), so the lift loads the torsion modes.
     bool finite_element = false;
+    /// The bending-moment gains at x [m] (2 × shapes) when the shapes' curvature does not give them
+    /// (an fe_blade: fem::blade6MomentGains); empty: beamMomentGains of the shapes.
+    std::function<MatX(double)> moment_gains;
   };
   ModelBuilder builder;  ///< the model, where its bodies and DOFs were written, the lookups by name
   std::vector<Beam> beams;
