@@ -1,5 +1,6 @@
 #include "src/writers/campbell_csv_input.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <map>
@@ -28,6 +29,13 @@ int requireColumn(const TextTable& t, const std::string& name) {
 
 }  // namespace
 
+std::optional<CampbellCsvValue> CampbellCsvLine::at(std::size_t p) const {
+  const auto it = std::lower_bound(modes.begin(), modes.end(), p,
+                                   [](const auto& m, std::size_t q) { return m.first < q; });
+  if (it == modes.end() || it->first != p) return std::nullopt;
+  return it->second;
+}
+
 CampbellCsvResult readCampbellCsv(const std::string& path) {
   const TextTable t = readTextCsv(path);
   const int c_rpm = requireColumn(t, "rpm"), c_wind = requireColumn(t, "wind_speed"), c_mode = requireColumn(t, "mode"),
@@ -36,7 +44,6 @@ CampbellCsvResult readCampbellCsv(const std::string& path) {
   r.file = path;
   std::map<std::string, std::size_t> line_of;  // name → index in r.lines
   std::string head;                            // the current point's "rpm,wind" text
-  std::vector<bool> seen;                      // lines met at the current point
   for (std::size_t i = 0; i < t.rows.size(); ++i) {
     const std::vector<std::string>& row = t.rows[i];
     const int line = t.lines[i];
@@ -52,19 +59,15 @@ CampbellCsvResult readCampbellCsv(const std::string& path) {
     requirePrintable(name, path, line, "mode");
     if (const std::string reason = invalidUtf8Reason(name); !reason.empty()) fail(c_mode, reason);
     auto [it, added] = line_of.try_emplace(name, r.lines.size());
-    if (added) {
-      r.lines.push_back({name, std::vector<std::optional<CampbellCsvValue>>(r.points.size())});
-      seen.push_back(false);
-    }
+    if (added) r.lines.push_back({name, {}});
+    CampbellCsvLine& l = r.lines[it->second];
     const std::string point_head = row[c_rpm] + "," + row[c_wind];
-    if (r.points.empty() || point_head != head || seen[it->second]) {
+    // A new point where the speeds change, or where this line already has a mode at the current one.
+    if (r.points.empty() || point_head != head || (!l.modes.empty() && l.modes.back().first + 1 == r.points.size())) {
       head = point_head;
       r.points.push_back({*rpm, row[c_wind].empty() ? std::nullopt : wind});
-      for (CampbellCsvLine& l : r.lines) l.at.emplace_back();
-      seen.assign(r.lines.size(), false);
     }
-    seen[it->second] = true;
-    r.lines[it->second].at.back() = CampbellCsvValue{*freq, *damp};
+    l.modes.emplace_back(r.points.size() - 1, CampbellCsvValue{*freq, *damp});
   }
   if (r.points.empty()) throw InputError(where(path, 0, "", "no Campbell rows: the sweep found no modes"));
   return r;

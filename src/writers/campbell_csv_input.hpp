@@ -6,6 +6,7 @@
 /// (`whirl report --side-by-side`, src/writers/campbell_side_by_side.hpp).
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace whirl {
@@ -16,10 +17,13 @@ struct CampbellCsvValue {
   double damping_ratio = 0;
 };
 
-/// One Campbell line: its name and its mode at every point (empty where the line skips the point).
+/// One Campbell line: its name and its modes, stored where it has one (memory follows the rows of the file,
+/// not points × lines).
 struct CampbellCsvLine {
   std::string name;
-  std::vector<std::optional<CampbellCsvValue>> at;
+  std::vector<std::pair<std::size_t, CampbellCsvValue>> modes;  ///< (point index, mode), points ascending
+  /// The line's mode at point `p`; none where the line skips it.
+  std::optional<CampbellCsvValue> at(std::size_t p) const;
 };
 
 /// One operating point: rotor speed [rpm] and wind speed [m/s] (none for an rpm sweep).

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <set>
 
 #include "src/base/error.hpp"
@@ -29,19 +30,24 @@ double xOf(const CampbellCsvPoint& p, bool versus_wind_speed) {
 
 /// Whether `line` is drawn: it has a finite frequency, at or below max_freq_hz when that is set.
 bool shown(const CampbellCsvLine& line, const SideBySideOptions& opt) {
-  for (const auto& v : line.at)
-    if (v && std::isfinite(v->freq_hz) && (opt.max_freq_hz <= 0 || v->freq_hz <= opt.max_freq_hz)) return true;
+  for (const auto& [p, v] : line.modes)
+    if (std::isfinite(v.freq_hz) && (opt.max_freq_hz <= 0 || v.freq_hz <= opt.max_freq_hz)) return true;
   return false;
 }
 
 /// The names of the lines drawn, over every column in order of first appearance: line style k + 1 is
 /// name k's, in every column.
-std::vector<std::string> shownNames(const std::vector<SideBySideColumn>& columns, const SideBySideOptions& opt) {
+struct LineStyles {
   std::vector<std::string> names;
+  std::map<std::string, std::size_t> style;  ///< name → its line style (1-based)
+};
+
+LineStyles lineStyles(const std::vector<SideBySideColumn>& columns, const SideBySideOptions& opt) {
+  LineStyles s;
   for (const SideBySideColumn& c : columns)
     for (const CampbellCsvLine& l : c.result.lines)
-      if (shown(l, opt) && std::find(names.begin(), names.end(), l.name) == names.end()) names.push_back(l.name);
-  return names;
+      if (shown(l, opt) && s.style.try_emplace(l.name, s.names.size() + 1).second) s.names.push_back(l.name);
+  return s;
 }
 
 /// The axis end for the largest value v (v > 0 finite): v rounded up to a step of 1, 2 or 5 units of the
@@ -73,13 +79,12 @@ Ranges ranges(const std::vector<SideBySideColumn>& columns, const SideBySideOpti
     }
     for (const CampbellCsvLine& l : c.result.lines) {
       if (!shown(l, opt)) continue;
-      for (const auto& v : l.at) {
-        if (!v) continue;
-        if (std::isfinite(v->freq_hz) && (opt.max_freq_hz <= 0 || v->freq_hz <= opt.max_freq_hz))
-          f1 = std::max(f1, v->freq_hz);
-        if (std::isfinite(v->damping_ratio)) {
-          z0 = std::min(z0, 100 * v->damping_ratio);
-          z1 = std::max(z1, 100 * v->damping_ratio);
+      for (const auto& [p, v] : l.modes) {
+        if (std::isfinite(v.freq_hz) && (opt.max_freq_hz <= 0 || v.freq_hz <= opt.max_freq_hz))
+          f1 = std::max(f1, v.freq_hz);
+        if (std::isfinite(v.damping_ratio)) {
+          z0 = std::min(z0, 100 * v.damping_ratio);
+          z1 = std::max(z1, 100 * v.damping_ratio);
         }
       }
     }
@@ -100,22 +105,22 @@ std::string datName(std::size_t k) { return "campbell_side_by_side_" + std::to_s
 /// The `plot` entries of column `k`'s panel (`using` column expression `y`); with `key`, titled, plus
 /// an empty entry for every name drawn elsewhere only, so the one key lists every line.
 std::string panelEntries(const std::vector<SideBySideColumn>& columns, std::size_t k, const std::string& y,
-                         const std::vector<std::string>& names, bool key, const SideBySideOptions& opt) {
+                         const LineStyles& styles, bool key, const SideBySideOptions& opt) {
   std::string s;
   auto add = [&](const std::string& e) { s += (s.empty() ? "" : ", \\\n       ") + e; };
   std::set<std::string> here;
   const std::vector<CampbellCsvLine>& lines = columns[k].result.lines;
   for (std::size_t i = 0; i < lines.size(); ++i) {
     if (!shown(lines[i], opt)) continue;
-    const auto style = std::find(names.begin(), names.end(), lines[i].name) - names.begin() + 1;
     here.insert(lines[i].name);
     add(gnuplotQuoted(datName(k)) + " index " + std::to_string(i) + " using xcol:" + y + " with linespoints ls " +
-        std::to_string(style) + (key ? " title " + gnuplotQuoted(lines[i].name) : std::string(" notitle")));
+        std::to_string(styles.style.at(lines[i].name)) +
+        (key ? " title " + gnuplotQuoted(lines[i].name) : std::string(" notitle")));
   }
   if (key)
-    for (std::size_t n = 0; n < names.size(); ++n)
-      if (!here.count(names[n]))
-        add("NaN with linespoints ls " + std::to_string(n + 1) + " title " + gnuplotQuoted(names[n]));
+    for (std::size_t n = 0; n < styles.names.size(); ++n)
+      if (!here.count(styles.names[n]))
+        add("NaN with linespoints ls " + std::to_string(n + 1) + " title " + gnuplotQuoted(styles.names[n]));
   return s.empty() ? "NaN notitle" : s;
 }
 
@@ -129,8 +134,8 @@ std::string panelMargins(std::size_t k, std::size_t n, bool top) {
 }
 
 /// Column `k`'s two panels: frequency with its label as title, damping ratio with the x axis title.
-std::string columnPanels(const std::vector<SideBySideColumn>& columns, std::size_t k,
-                         const std::vector<std::string>& names, const SideBySideOptions& opt) {
+std::string columnPanels(const std::vector<SideBySideColumn>& columns, std::size_t k, const LineStyles& styles,
+                         const SideBySideOptions& opt) {
   const bool first = k == 0, last = k + 1 == columns.size();
   std::string g = "  # column " + std::to_string(k + 1) + ": " + gnuplotComment(columns[k].label) + "\n";
   g += panelMargins(k, columns.size(), true);
@@ -139,12 +144,12 @@ std::string columnPanels(const std::vector<SideBySideColumn>& columns, std::size
   g += "  set yrange [0:fmax]; set format x ''; unset xlabel\n";
   g += last ? "  set key at screen " + formatNumber(kRight + 0.01) + ", " + formatNumber(kTop) + " top left\n"
             : "  set key off\n";
-  g += "  plot " + panelEntries(columns, k, "3", names, last, opt) + "\n";
+  g += "  plot " + panelEntries(columns, k, "3", styles, last, opt) + "\n";
   g += panelMargins(k, columns.size(), false);
   g += "  unset title; set key off\n";
   g += first ? "  set ylabel 'Damping ratio [%]'\n" : "  unset ylabel\n";
   g += "  set yrange [dmin:dmax]; set format x '%g'; set xlabel xtitle\n";
-  g += "  plot " + panelEntries(columns, k, "(100*$4)", names, false, opt) + "\n";
+  g += "  plot " + panelEntries(columns, k, "(100*$4)", styles, false, opt) + "\n";
   return g;
 }
 
@@ -181,25 +186,19 @@ std::string sideBySideData(const CampbellCsvResult& r) {
   for (std::size_t l = 0; l < r.lines.size(); ++l) {
     s += (l ? "\n\n" : "") + std::string("# index ") + std::to_string(l) + ": " + gnuplotComment(r.lines[l].name) +
          "\n";
-    bool gap = false, any = false;
-    for (std::size_t p = 0; p < r.points.size(); ++p) {
-      const auto& v = r.lines[l].at[p];
-      if (!v) {
-        gap = any;
-        continue;
-      }
-      if (gap) s += "\n";  // one blank line: Gnuplot does not join across it
-      gap = false;
-      any = true;
+    std::size_t next = 0;  // the point after the previous mode: a mode elsewhere follows a gap
+    for (const auto& [p, v] : r.lines[l].modes) {
+      if (p != next && next > 0) s += "\n";  // one blank line: Gnuplot does not join across it
+      next = p + 1;
       s += formatNumber(r.points[p].rpm) + " " + formatNumber(r.points[p].wind_speed.value_or(NAN)) + " " +
-           formatNumber(v->freq_hz) + " " + formatNumber(v->damping_ratio) + "\n";
+           formatNumber(v.freq_hz) + " " + formatNumber(v.damping_ratio) + "\n";
     }
   }
   return s;
 }
 
 std::string sideBySideGnuplotScript(const std::vector<SideBySideColumn>& columns, const SideBySideOptions& opt) {
-  const std::vector<std::string> names = shownNames(columns, opt);
+  const LineStyles styles = lineStyles(columns, opt);
   const Ranges r = ranges(columns, opt);
   const int width = 160 + 480 * static_cast<int>(std::max<std::size_t>(columns.size(), 1)) + 200;
   std::string g =
@@ -218,9 +217,9 @@ std::string sideBySideGnuplotScript(const std::vector<SideBySideColumn>& columns
   g += "fmax = " + formatNumber(r.fmax) + "   # top of the frequency axis [Hz]\n";
   g += "dmin = " + formatNumber(r.dmin) + "; dmax = " + formatNumber(r.dmax) + "   # damping axis [%]\n";
   g += "# One style per line name, the same in every column.\n";
-  for (std::size_t l = 0; l < names.size(); ++l)
+  for (std::size_t l = 0; l < styles.names.size(); ++l)
     g += "set style line " + std::to_string(l + 1) + " lc rgb '" + kColours[l % 10] + "' lw 2 pt " +
-         std::to_string(kPointTypes[l % 9]) + " ps 0.8   # " + gnuplotComment(names[l]) + "\n";
+         std::to_string(kPointTypes[l % 9]) + " ps 0.8   # " + gnuplotComment(styles.names[l]) + "\n";
   g += "set grid\nset key noenhanced left top font ',9'\nset xrange [xmin:xmax]\n";
   g += "do for [out = 1:2] {\n"
        "  if (out == 1) { set terminal pngcairo size " +
@@ -230,7 +229,7 @@ std::string sideBySideGnuplotScript(const std::vector<SideBySideColumn>& columns
        std::to_string(width) +
        ",900 noenhanced font 'Sans,11'; set output svg_out }\n"
        "  set multiplot title 'Campbell diagrams side by side'\n";
-  for (std::size_t k = 0; k < columns.size(); ++k) g += columnPanels(columns, k, names, opt);
+  for (std::size_t k = 0; k < columns.size(); ++k) g += columnPanels(columns, k, styles, opt);
   g += "  unset multiplot\n}\n";
   return g;
 }
@@ -244,21 +243,26 @@ std::string aeroModelsCsv(const std::vector<SideBySideColumn>& columns, bool ver
   for (const SideBySideColumn& c : columns)
     t += "," + csvField("freq_hz " + c.label) + "," + csvField("damping_ratio " + c.label);
   t += "\n";
-  // The line named `mode` of column c at the point with x, if any.
-  auto value = [&](const SideBySideColumn& c, const std::string& mode, double x) -> std::optional<CampbellCsvValue> {
-    for (const CampbellCsvLine& l : c.result.lines) {
-      if (l.name != mode) continue;
-      for (std::size_t p = 0; p < c.result.points.size(); ++p)
-        if (xOf(c.result.points[p], versus_wind_speed) == x && l.at[p]) return l.at[p];
-    }
-    return std::nullopt;
+  // Per column the first point at each x and the line of each name: the table costs x values × modes × columns.
+  std::vector<std::map<double, std::size_t>> point_at(columns.size());
+  std::vector<std::map<std::string, const CampbellCsvLine*>> line_of(columns.size());
+  for (std::size_t k = 0; k < columns.size(); ++k) {
+    const CampbellCsvResult& r = columns[k].result;
+    for (std::size_t p = 0; p < r.points.size(); ++p) point_at[k].try_emplace(xOf(r.points[p], versus_wind_speed), p);
+    for (const CampbellCsvLine& l : r.lines) line_of[k].try_emplace(l.name, &l);
+  }
+  auto value = [&](std::size_t k, const std::string& mode, double x) -> std::optional<CampbellCsvValue> {
+    const auto p = point_at[k].find(x);
+    const auto l = line_of[k].find(mode);
+    if (p == point_at[k].end() || l == line_of[k].end()) return std::nullopt;
+    return l->second->at(p->second);
   };
   for (double x : xs)
     for (const std::string& mode : sideBySideTabulatedModes()) {
       std::string row = formatNumber(x) + "," + csvField(mode);
       bool any = false;
-      for (const SideBySideColumn& c : columns) {
-        const std::optional<CampbellCsvValue> v = value(c, mode, x);
+      for (std::size_t k = 0; k < columns.size(); ++k) {
+        const std::optional<CampbellCsvValue> v = value(k, mode, x);
         any = any || v.has_value();
         row += v ? "," + formatNumber(v->freq_hz) + "," + formatNumber(v->damping_ratio) : std::string(",,");
       }

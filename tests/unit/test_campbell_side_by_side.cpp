@@ -44,10 +44,10 @@ TEST(CampbellCsvInput, ReadsPointsLinesAndGaps) {
   EXPECT_EQ(r.points[1].wind_speed, 12);
   ASSERT_EQ(r.lines.size(), 3u);
   EXPECT_EQ(r.lines[2].name, "edge 1 BW");
-  ASSERT_EQ(r.lines[2].at.size(), 2u);
-  EXPECT_FALSE(r.lines[2].at[0].has_value());  // the line skips the first point
-  EXPECT_EQ(r.lines[2].at[1]->damping_ratio, 0.02);
-  EXPECT_EQ(r.lines[0].at[0]->freq_hz, 0.6);
+  ASSERT_EQ(r.lines[2].modes.size(), 1u);
+  EXPECT_FALSE(r.lines[2].at(0).has_value());  // the line skips the first point
+  EXPECT_EQ(r.lines[2].at(1)->damping_ratio, 0.02);
+  EXPECT_EQ(r.lines[0].at(0)->freq_hz, 0.6);
 }
 
 TEST(CampbellCsvInput, RepeatedLineStartsANewPointAtTheSameSpeeds) {
@@ -56,8 +56,25 @@ TEST(CampbellCsvInput, RepeatedLineStartsANewPointAtTheSameSpeeds) {
       tmp.write("c.csv", "rpm,wind_speed,mode,freq_hz,damping_ratio\n5,,a,1,0\n5,,a,2,0\n5,,b,3,0\n"));
   ASSERT_EQ(r.points.size(), 2u);
   EXPECT_FALSE(r.points[0].wind_speed.has_value());
-  EXPECT_EQ(r.lines[0].at[1]->freq_hz, 2);
-  EXPECT_FALSE(r.lines[1].at[0].has_value());
+  EXPECT_EQ(r.lines[0].at(1)->freq_hz, 2);
+  EXPECT_FALSE(r.lines[1].at(0).has_value());
+}
+
+// Every row a new point and a new line: storage and work follow the rows, not points × lines (20000² modes
+// held densely would be 9.6 GB).
+TEST(CampbellCsvInput, ManyPointsAndLinesStayLinear) {
+  test::TempDir tmp;
+  std::string text = "rpm,wind_speed,mode,freq_hz,damping_ratio\n";
+  for (int i = 0; i < 20000; ++i) text += std::to_string(i) + ",8,line " + std::to_string(i) + ",1,0.01\n";
+  const CampbellCsvResult r = readCampbellCsv(tmp.write("many.csv", text));
+  ASSERT_EQ(r.points.size(), 20000u);
+  ASSERT_EQ(r.lines.size(), 20000u);
+  EXPECT_EQ(r.lines[19999].at(19999)->freq_hz, 1);
+  const std::vector<SideBySideColumn> columns = {{"many", r}};
+  SideBySideOptions opt;
+  opt.versus_wind_speed = false;
+  EXPECT_EQ(aeroModelsCsv(columns, false), "rpm,mode,freq_hz many,damping_ratio many\n");
+  EXPECT_NE(sideBySideGnuplotScript(columns, opt).find("index 19999 "), std::string::npos);
 }
 
 TEST(CampbellCsvInput, BadFilesNameFileLineAndColumn) {
