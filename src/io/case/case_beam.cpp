@@ -139,7 +139,7 @@ void readBeamBody(const CaseNode& n, int index, CaseBuild& build) {
   fem::ModeShapeInput fe;
   fe.props = p;
   if (sh && sh->isMap()) fe = readFemShapeSettings(*sh, p);
-  build.beams.push_back({index, p, shapes, fe, opt.axial_shortening});
+  build.beams.push_back({index, p, shapes, fe, opt.axial_shortening, false, {}});
   Body& b = build.model().bodies[index];
   try {
     const BeamBody bb = buildBeamBody(p, shapes, opt, b.name);
