@@ -30,8 +30,9 @@ bool isAeroRoot(const Mode& mode);
 
 /// Which of a set of roots are the aerodynamic ones: by decreasing `share` (each root's participation
 /// share in the aerodynamic states), as many roots as there are aerodynamic states, `count`; a complex pair
-/// (`pair`) counts two and is skipped when only one is left; a root with `excluded` (a rigid-body mode)
-/// never is one.
+/// (`pair`) counts two and, when only one is left, is skipped for a single root further down with at least
+/// half its share, else taken (it then holds the last state's root and a structural first-order one); a
+/// root with `excluded` (a rigid-body mode) never is one.
 std::vector<bool> pickAeroRoots(const std::vector<double>& share, const std::vector<bool>& pair,
                                 const std::vector<bool>& excluded, int count);
 
@@ -42,7 +43,7 @@ bool isAeroStateName(const std::string& name);
 
 /// Marks (Mode::first_order) and names the aerodynamic roots of `modes` (sorted by frequency, each real
 /// root a mode of its own): by decreasing aeroShare, as many roots as `aero` flags coordinates (one state
-/// each), a complex pair counting two (skipped when only one is left); named "aero 1", "aero 2", … in the
+/// each), a complex pair counting two (as pickAeroRoots); named "aero 1", "aero 2", … in the
 /// order of `modes`, their name evidence the aerodynamic share. \return the number of aerodynamic modes.
 int nameAeroRoots(std::vector<Mode>& modes, const std::vector<bool>& aero);
 
