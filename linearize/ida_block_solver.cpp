@@ -25,7 +25,18 @@ struct Content {
         S(size, size),
         lu(size),
         rhs(size),
-        x1(size) {}
+        x1(size),
+        nz(o.first_order) {
+    if (nz > 0) {
+      fo.G = MatX::Zero(size, nz);
+      fo.Zq = MatX::Zero(nz, size);
+      fo.Zv = MatX::Zero(nz, size);
+      fo.Azz = MatX::Zero(nz, nz);
+      D.resize(nz, nz);
+      W.resize(nz, size);
+      w.resize(nz);
+    }
+  }
   int n;
   void* ida;
   IterationBlocksFn blocks;
@@ -34,6 +45,11 @@ struct Content {
   MatX S;               // J21 + c J22 = ∂e/∂q + c ∂e/∂q̇ − c² M
   Eigen::PartialPivLU<MatX> lu;
   VecX rhs, x1;
+  int nz;                         // first-order states (0: none)
+  FirstOrderBlocks fo;            // their blocks of the last evaluation
+  MatX D, W;                      // c I − A_zz; D⁻¹ (Z_q + c Z_v)
+  Eigen::PartialPivLU<MatX> dlu;  // of D
+  VecX w;                         // D⁻¹ (b3 − Z_v b1)
 
   bool have_blocks = false, factored = false, refresh = false;
   double c = NAN;                           // of the factorization
@@ -67,6 +83,8 @@ int evaluate(Content& p, double t, N_Vector yy, N_Vector yp, bool mass_only) {
   int flag = 0;
   try {
     flag = p.blocks(t, NV_DATA_S(yy), NV_DATA_S(yp), mass_only, p.dedq, p.dedqd, p.M);
+    if (flag == 0 && !mass_only && p.nz > 0)
+      flag = p.opt.first_order_blocks(t, NV_DATA_S(yy), NV_DATA_S(yp), p.dedq, p.dedqd, p.fo);
   } catch (...) {
     flag = -1;
   }
@@ -79,6 +97,16 @@ int evaluate(Content& p, double t, N_Vector yy, N_Vector yp, bool mass_only) {
 
 int factor(Content& p, double c) {
   p.S = p.dedq + c * p.dedqd - (c * c) * p.M;
+  bool regular = std::isfinite(c);
+  if (p.nz > 0) {  // the first-order states eliminated (header): S += G D⁻¹ (Z_q + c Z_v)
+    p.D = -p.fo.Azz;
+    p.D.diagonal().array() += c;
+    p.dlu.compute(p.D);
+    const auto dd = p.dlu.matrixLU().diagonal();
+    for (int k = 0; k < p.nz; ++k) regular = regular && std::isfinite(dd(k)) && dd(k) != 0.0;
+    p.W.noalias() = p.dlu.solve(p.fo.Zq + c * p.fo.Zv);
+    p.S.noalias() += p.fo.G * p.W;
+  }
   p.lu.compute(p.S);
   ++p.stats.factorizations;
   // The rate estimate survives a c that grows or falls by at most 25 % (the header): the blocks are
@@ -86,7 +114,6 @@ int factor(Content& p, double c) {
   if (!(c / p.c >= 0.75)) p.ss = kSsAfterSetup;
   p.c = c;
   const auto d = p.lu.matrixLU().diagonal();
-  bool regular = std::isfinite(c);
   for (int k = 0; k < p.n; ++k) regular = regular && std::isfinite(d(k)) && d(k) != 0.0;
   p.factored = regular;
   return regular ? SUNLS_SUCCESS : SUNLS_LUFACT_FAIL;
@@ -134,9 +161,15 @@ int solve(SUNLinearSolver s, SUNMatrix, N_Vector x, N_Vector b, double) {
   p.rhs.noalias() = p.dedqd * b1;
   p.rhs.noalias() -= p.c * (p.M * b1);
   p.rhs += b2;
+  if (p.nz > 0) {  // w = D⁻¹ (b3 − Z_v b1), rhs −= G w
+    const Eigen::Map<const VecX> b3(bd + 2 * n, p.nz);
+    p.w.noalias() = p.dlu.solve(b3 - p.fo.Zv * b1);
+    p.rhs.noalias() -= p.fo.G * p.w;
+  }
   p.x1.noalias() = p.lu.solve(p.rhs);
   Eigen::Map<VecX>(xd, n) = p.x1;
   Eigen::Map<VecX>(xd + n, n) = p.c * p.x1 - b1;
+  if (p.nz > 0) Eigen::Map<VecX>(xd + 2 * n, p.nz) = p.w + p.W * p.x1;
   return static_cast<int>(p.last_flag = SUNLS_SUCCESS);
 }
 

@@ -35,6 +35,13 @@
 /// factorizations, 59.5k instead of 47.1k residuals with both rules; keeping it across a doubled step
 /// cost the structural benchmark 6× its error-test failures. The start-up's outputs stay within 7.7e-5
 /// of their ranges from a 1e-10 / 1e-12 run, tests/validation/test_simulate_tolerance.cpp.)
+///
+/// First-order states z (dim nz, e.g. the blade elements' unsteady-airfoil and dynamic-inflow states) may
+/// follow: y = [q; v; z], F = [q̇ − v; e(q, v, v̇, z); ż − f(q, v, z)], and with G = ∂e/∂z, Z_q = ∂f/∂q,
+/// Z_v = ∂f/∂v, A_zz = ∂f/∂z the third block row [−Z_q, −Z_v, D], D = c I − A_zz, is eliminated as well:
+///   x3 = w + W x1,  w = D⁻¹ (b3 − Z_v b1),  W = D⁻¹ (Z_q + c Z_v),
+///   (J21 + c J22 + G W) x1 = b2 + J22 b1 − G w,
+/// one more LU (of D, nz × nz) per factorization; the blocks of z are evaluated with ∂e/∂q and ∂e/∂q̇.
 #include <sundials/sundials_linearsolver.h>
 #include <sundials/sundials_nonlinearsolver.h>
 
@@ -51,13 +58,26 @@ namespace whirl {
 using IterationBlocksFn =
     std::function<int(double t, const double* y, const double* yp, bool mass_only, MatX& dedq, MatX& dedqd, MatX& M)>;
 
+/// The blocks of the first-order states (header): G (n × nz), Z_q, Z_v (nz × n), A_zz (nz × nz).
+struct FirstOrderBlocks {
+  MatX G, Zq, Zv, Azz;
+};
+
+/// Evaluates the first-order states' blocks at (t, y, ẏ) (dimension 2n + nz), called right after the
+/// IterationBlocksFn (not for M alone), which it may correct: it gets that call's ∂e/∂q and ∂e/∂q̇ to
+/// add the states' load derivatives to. Returns as IterationBlocksFn.
+using FirstOrderBlocksFn =
+    std::function<int(double t, const double* y, const double* yp, MatX& dedq, MatX& dedqd, FirstOrderBlocks& z)>;
+
 struct BlockSolverOptions {
   double max_rate = 0.2;  ///< evaluate the blocks when a Newton iteration contracts less than this
   long max_age = 1000;    ///< evaluate the blocks after this many steps
   /// The rotor angle at (t, y) [rad], or null (no rotor).
   std::function<double(double t, const double* y)> angle;
-  double max_turn = 1.0;       ///< evaluate the blocks after the rotor turned this much [rad]
-  double max_mass_turn = 0.1;  ///< evaluate M alone after the rotor turned this much [rad]
+  double max_turn = 1.0;                  ///< evaluate the blocks after the rotor turned this much [rad]
+  double max_mass_turn = 0.1;             ///< evaluate M alone after the rotor turned this much [rad]
+  int first_order = 0;                    ///< nz: first-order states after the 2n of the second-order system
+  FirstOrderBlocksFn first_order_blocks;  ///< their blocks (required when first_order > 0)
 };
 
 struct BlockSolverStatistics {
@@ -66,9 +86,9 @@ struct BlockSolverStatistics {
   long factorizations = 0;    ///< LU of J21 + c J22
 };
 
-/// The solver for n coordinates of the IDA integrator `ida_mem`, for IDASetLinearSolver(ida_mem, S,
-/// NULL). Null when SUNDIALS cannot allocate it. A singular or non-finite n × n matrix, or blocks that
-/// cannot be evaluated, are a recoverable failure of the solve (IDA retries with a smaller step).
+/// The solver for n coordinates (and options.first_order states) of the IDA integrator `ida_mem`, for
+/// IDASetLinearSolver(ida_mem, S, NULL). Null when SUNDIALS cannot allocate it. A singular or non-finite n × n matrix,
+/// or blocks that cannot be evaluated, are a recoverable failure of the solve (IDA retries with a smaller step).
 SUNLinearSolver newBlockEliminationSolver(int n, void* ida_mem, IterationBlocksFn blocks,
                                           const BlockSolverOptions& options, SUNContext ctx);
 

@@ -19,6 +19,8 @@
 #include "linearize/ida_block_solver.hpp"
 #include "linearize/ida_vector.hpp"
 #include "linearize/jacobian.hpp"
+#include "linearize/simulate_aero.hpp"
+#include "linearize/unsteady_aero.hpp"
 #include "src/base/error.hpp"
 #include "src/base/limits.hpp"
 #include "src/dynamics/mass_matrix.hpp"
@@ -73,12 +75,26 @@ struct Problem {
   VecX q_kinematics;  // the coordinates of the kinematics in ws, when known
   bool kinematics_known = false;
   MatX Mfull;
+  int nz = 0;             // aerodynamic states after [q; v] in y (linearize/simulate_aero.hpp)
+  VecX z, zdot;           // their values and rates f(q, v, z) at the last evaluation
+  AeroRecord record;      // the quasi-steady BEM of the last residual (with aerodynamic states)
+  AeroInflow bem_inflow;  // its induced velocities
+  AeroStateLoads aero_loads;
   VecX held;                 // the controller's commands (SimulationOptions::controller), per controlled input
   std::string ida_message;   // the last message IDA reported
   std::exception_ptr error;  // an exception thrown inside a callback, rethrown after IDASolve
 
   Problem(const Model& model, const OperatingPoint& s, const SimulationOptions& o)
-      : m(model), start(s), opt(o), ws(model), jw(model), e(VecX::Zero(model.ndof())) {
+      : m(model),
+        start(s),
+        opt(o),
+        ws(model),
+        jw(model),
+        e(VecX::Zero(model.ndof())),
+        nz(simulationAeroStateCount(model, o)),
+        z(VecX::Zero(nz)),
+        zdot(VecX::Zero(nz)),
+        aero_loads(model) {
     const double tolerance = simulationBemTolerance(model.aero.bem.tolerance, o.rtol);
     for (BemRoot& r : ws.bem) r.tolerance = tolerance;
   }
@@ -115,10 +131,17 @@ struct Problem {
     }
   }
 
-  // e at the loaded q, q̇, q̈, u, recording the coordinates of the kinematics it leaves in ws.
+  // e at the loaded q, q̇, q̈, u (and z, with their rates zdot), recording the coordinates of the
+  // kinematics it leaves in ws.
   void evaluateResidual() {
     kinematics_known = false;  // should the residual throw
-    residual(m, ws, q, qd, qdd, u, e);
+    if (nz > 0) {
+      residual(m, ws, q, qd, qdd, u, e, nullptr, &record);
+      bem_inflow = record.inflow();
+      addAeroStateLoads(m, ws, q, qd, u, bem_inflow, opt.frozen_inflow, z, aero_loads, e, zdot);
+    } else {
+      residual(m, ws, q, qd, qdd, u, e);
+    }
     q_kinematics = q;  // same size each time: no allocation
     kinematics_known = true;
   }
@@ -144,6 +167,7 @@ struct Problem {
       qd(states[k]) = y[ns + k];
       if (yp) qdd(states[k]) = yp[ns + k];
     }
+    for (int k = 0; k < nz; ++k) z(k) = y[2 * ns + k];
   }
 };
 
@@ -162,6 +186,10 @@ int residualFn(double t, N_Vector yy, N_Vector yp, N_Vector rr, void* data) {
       r[k] = d[k] - y[ns + k];
       r[ns + k] = p.e(p.states[k]);
       finite = finite && std::isfinite(r[ns + k]);
+    }
+    for (int k = 0; k < p.nz; ++k) {  // ż − f(q, v, z)
+      r[2 * ns + k] = d[2 * ns + k] - p.zdot(k);
+      finite = finite && std::isfinite(r[2 * ns + k]);
     }
     return finite ? 0 : 1;  // recoverable: IDA retries with a smaller step
   } catch (...) {
@@ -194,6 +222,38 @@ int iterationBlocks(Problem& p, double t, const double* y, const double* yp, boo
   return dedq.allFinite() && dedqd.allFinite() && M.allFinite() ? 0 : 1;
 }
 
+// The aerodynamic states' blocks at (t, y, ẏ) (linearize/ida_block_solver.hpp): the linear model's
+// (unsteadyAeroLinearAt) at the states' current values, on the induction the loads see there; their load
+// derivatives replace the quasi-steady ones in ∂e/∂q and ∂e/∂q̇ (held induction: an approximate Newton matrix).
+int aeroStateBlocks(Problem& p, double t, const double* y, const double* yp, MatX& dedq, MatX& dedqd,
+                    FirstOrderBlocks& fo) {
+  p.load(t, y, yp);
+  p.evaluateResidual();
+  OperatingPoint at = p.start;
+  at.q = p.q;
+  at.qd = p.qd;
+  at.qdd = p.qdd;
+  at.u = p.u;
+  at.inflow = p.opt.frozen_inflow.empty() ? p.bem_inflow : p.opt.frozen_inflow;
+  const UnsteadyAeroLinear ua = unsteadyAeroLinearAt(p.m, at, p.z, p.states, false);
+  const int ns = p.n();
+  for (int r = 0; r < ns; ++r) {
+    const int i = p.states[r];
+    for (int k = 0; k < ns; ++k) {
+      dedq(r, k) -= ua.dK(i, k);
+      dedqd(r, k) -= ua.dC(i, k);
+    }
+    fo.G.row(r) = ua.G.row(i);
+  }
+  fo.Zq = ua.Zq;
+  fo.Zv = ua.Zqd;
+  fo.Azz = ua.Azz;
+  return dedq.allFinite() && dedqd.allFinite() && fo.G.allFinite() && fo.Zq.allFinite() && fo.Zv.allFinite() &&
+                 fo.Azz.allFinite()
+             ? 0
+             : 1;
+}
+
 void errorHandler(int, const char*, const char*, char* msg, void* data) {
   static_cast<Problem*>(data)->ida_message = msg ? msg : "";
 }
@@ -220,6 +280,7 @@ void consistentRates(Problem& p, double t, const double* y, double* yp) {
     yp[k] = y[ns + k];
     yp[ns + k] = a(k);
   }
+  for (int k = 0; k < p.nz; ++k) yp[2 * ns + k] = p.zdot(k);
 }
 
 void check(int flag, const char* what) {
@@ -288,7 +349,7 @@ void checkSimulationSize(const Model& m, const OperatingPoint& start, const Simu
         fmt::format("simulate: tmax: {:g} s recorded every {:g} s (dt-out) are {:.3g} instants, more than {} "
                     "(src/base/limits.hpp): give a larger --dt-out or a shorter --tmax",
                     opt.t_end, opt.dt_out, records, limits::kMaxSimulationRecords));
-  const double columns = 2.0 * m.ndof() + m.ninput() + m.noutput();
+  const double columns = 2.0 * m.ndof() + m.ninput() + m.noutput() + simulationAeroStateCount(m, opt);
   if (records * columns > limits::kMaxSimulationValues)
     throw InputError(fmt::format(
         "simulate: tmax: {:.3g} instants of {:g} values each ({:.0f} MB in memory) are more than {:.3g} values "
@@ -318,6 +379,9 @@ void checkOptions(const Model& m, const OperatingPoint& start, const SimulationO
     throw InputError(
         "simulate: the model has first-order states of the linear model only (HydroDyn's state-space "
         "radiation, RdtnMod = 2); --set RdtnMod=0 simulates without the radiation memory");
+  if (!opt.frozen_inflow.empty() && (opt.frozen_inflow.axial.size() != m.aero.nstations() ||
+                                     opt.frozen_inflow.tangential.size() != m.aero.nstations()))
+    throw InputError("simulate: frozen inflow: not one induced velocity per blade element of the model");
   for (const InputSignal& in : opt.inputs)
     if (in.input < 0 || in.input >= m.ninput()) throw InputError("simulate: input signal: no such input");
   const std::vector<int> active = m.activeDofs();
@@ -357,6 +421,17 @@ void attachIntegrator(IdaHandles& h, Problem& p, const Model& m, int ns, const S
   // The rotor angle tells the linear solver when M's coupling of rotating and fixed coordinates has
   // turned too far (linearize/ida_block_solver.hpp): the azimuth state, or its prescribed motion.
   BlockSolverOptions bo;
+  bo.first_order = p.nz;
+  if (p.nz > 0)
+    bo.first_order_blocks = [&p](double t, const double* yy, const double* ypp, MatX& dq, MatX& dqd,
+                                 FirstOrderBlocks& fo) {
+      try {
+        return aeroStateBlocks(p, t, yy, ypp, dq, dqd, fo);
+      } catch (...) {
+        p.error = std::current_exception();
+        return -1;
+      }
+    };
   if (!m.roles.azimuth.empty()) {
     const int az = m.roles.azimuth.front();
     bo.angle = [&p, az](double t, const double* yy) {
@@ -415,7 +490,8 @@ long recordCount(const SimulationOptions& opt) {
 }
 
 // The record's matrices sized for nrec instants, their pages mapped at once (prefault).
-void allocateRecord(const Model& m, long nrec, Simulation& sim) {
+void allocateRecord(const Model& m, long nrec, int nz, Simulation& sim) {
+  sim.z.resize(nrec, nz);
   sim.q.resize(nrec, m.ndof());
   sim.qd.resize(nrec, m.ndof());
   sim.u.resize(nrec, m.ninput());
@@ -436,7 +512,8 @@ class Recorder {
     sim_.time.push_back(t);
     sim_.q.row(k) = p_.q.transpose();
     sim_.qd.row(k) = p_.qd.transpose();
-    if (m_.ninput() > 0) sim_.u.row(k) = p_.u.transpose();  // row k of a 0-column matrix: offset on a null pointer
+    if (m_.ninput() > 0) sim_.u.row(k) = p_.u.transpose();
+    if (p_.nz > 0) sim_.z.row(k) = p_.z.transpose();  // row k of a 0-column matrix: offset on a null pointer
     if (m_.noutput() > 0) {
       // The BEM roots of the integrator's last residual start the outputs' root searches: a step
       // away instead of one recorded interval (the outputs' own last roots); the same roots.
@@ -470,14 +547,18 @@ void startIntegrator(IdaHandles& h, Problem& p, const Model& m, const OperatingP
                      const SimulationOptions& opt, const std::vector<double>& stops) {
   const int ns = p.n();
   check(SUNContext_Create(nullptr, &h.ctx), "SUNContext_Create");
-  h.y = newFastSerialVector(2 * ns, h.ctx);
-  h.yp = newFastSerialVector(2 * ns, h.ctx);
+  h.y = newFastSerialVector(2 * ns + p.nz, h.ctx);
+  h.yp = newFastSerialVector(2 * ns + p.nz, h.ctx);
   if (!h.y || !h.yp) throw ComputeError("simulate: SUNDIALS: cannot allocate the state vectors");
   double* y = N_VGetArrayPointer(h.y);
   double* yp = N_VGetArrayPointer(h.yp);
   for (int k = 0; k < ns; ++k) {
     y[k] = start.q(p.states[k]);
     y[ns + k] = start.qd(p.states[k]);
+  }
+  if (p.nz > 0) {  // the aerodynamic states at their steady values at the start
+    const VecX z0 = simulationAeroStart(m, start, opt);
+    for (int k = 0; k < p.nz; ++k) y[2 * ns + k] = z0(k);
   }
   if (opt.controller.step) {
     p.held = VecX(static_cast<Eigen::Index>(opt.controller.inputs.size()));
@@ -536,11 +617,11 @@ Simulation simulate(const Model& m, const OperatingPoint& start, const Simulatio
   Simulation sim;
   sim.states = p.states;
   const long nrec = recordCount(opt);
-  allocateRecord(m, nrec, sim);
+  allocateRecord(m, nrec, p.nz, sim);
   Recorder record(m, opt, p, sim);
   const std::vector<double> stops = stopTimes(opt);
 
-  if (ns == 0) {  // everything prescribed: the motion is known
+  if (ns == 0 && p.nz == 0) {  // everything prescribed: the motion is known
     for (long k = 0; k < nrec; ++k) record(k, std::min(k * opt.dt_out, opt.t_end), nullptr, nullptr);
     return sim;
   }
@@ -555,7 +636,7 @@ Simulation simulate(const Model& m, const OperatingPoint& start, const Simulatio
     integrateTo(h, p, opt, stops, next_stop, tout, t, sim);
     record(k, tout, N_VGetArrayPointer(h.y), N_VGetArrayPointer(h.yp));
     if (opt.stop && opt.stop(tout, sim.q.row(k).transpose())) {
-      for (MatX* a : {&sim.q, &sim.qd, &sim.u, &sim.y}) a->conservativeResize(k + 1, Eigen::NoChange);
+      for (MatX* a : {&sim.q, &sim.qd, &sim.u, &sim.y, &sim.z}) a->conservativeResize(k + 1, Eigen::NoChange);
       sim.stopped = true;
       break;
     }

@@ -19,11 +19,14 @@
 /// pitch history) — are known functions of time
 /// with their rates and accelerations; their rows of e are not equations of the simulation.
 /// With aerodynamics, the induction is re-solved at every evaluation (quasi-steady BEM,
-/// src/dynamics/aero_loads.hpp): no dynamic inflow.
+/// src/dynamics/aero_loads.hpp). With SimulationOptions::aero_states the blade elements' unsteady-airfoil
+/// and dynamic-inflow states of the model (AeroDyn UA_Mod 4 or 6, DBEMT_Mod 3) are integrated too, after
+/// [q; v] in y, from the linear model's equations (linearize/simulate_aero.hpp).
 #include <functional>
 #include <vector>
 
 #include "linearize/operating_point.hpp"
+#include "src/dynamics/aero_inflow.hpp"
 #include "src/model/model.hpp"
 #include "src/model/time_signal.hpp"
 
@@ -65,6 +68,13 @@ struct SimulationOptions {
   long max_steps = 200000;        ///< IDA steps between two recorded instants; more is a ComputeError (never hangs)
   /// A controller in the loop (empty `step`: none).
   DiscreteController controller;
+  /// The blade elements' unsteady-airfoil and dynamic-inflow states as the model has them
+  /// (aeroStateCount, src/dynamics/aero_unsteady.hpp) integrated with the structure, starting at their
+  /// steady values (linearize/simulate_aero.hpp); false: the quasi-steady polar whatever the model has.
+  bool aero_states = false;
+  /// With aero_states and no dynamic inflow: the elements' induced velocities held at these values (a linear
+  /// model's frozen wake) instead of the quasi-steady BEM's at every evaluation; empty: the BEM's.
+  AeroInflow frozen_inflow;
   /// Called after each recorded instant with (t, t_end).
   std::function<void(double, double)> progress;
   /// Called after each recorded instant after the start with (t, q: all coordinates, dim ndof); true
@@ -86,6 +96,7 @@ struct Simulation {
   MatX q, qd;                ///< all coordinates (ndof columns, model order) and their rates
   MatX u;                    ///< inputs (ninput columns)
   MatX y;                    ///< the model's outputs (noutput columns)
+  MatX z;                    ///< the aerodynamic states (SimulationOptions::aero_states; 0 columns without)
   std::vector<int> states;   ///< the coordinates integrated (the others are prescribed)
   long steps = 0, residual_evaluations = 0, jacobian_evaluations = 0;  ///< IDA statistics
   long mass_matrix_evaluations = 0;  ///< M alone, to refresh IDA's iteration matrix between Jacobians
@@ -98,7 +109,7 @@ struct Simulation {
 /// Integrates from `start` (coordinates, rates and inputs at t = 0; its q̈ is not used: the initial
 /// accelerations are solved from M q̈ = F) to options.t_end.
 /// \throws InputError for options out of range (t_end, dt_out, tolerances, an index), or a model with
-///         first-order states (Model::body_states: they are in the linear model only);
+///         first-order states of a body (Model::body_states: they are in the linear model only);
 ///         ComputeError "simulate: t = … s: <reason>" when IDA fails (no convergence, too many steps,
 ///         a non-finite residual), naming the time reached, or when M is not positive definite.
 Simulation simulate(const Model& model, const OperatingPoint& start, const SimulationOptions& options);

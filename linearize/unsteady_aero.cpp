@@ -1,6 +1,7 @@
 #include "linearize/unsteady_aero.hpp"
 
 #include <algorithm>
+#include <string>
 
 #include "src/aero/dynamic_inflow.hpp"
 #include "src/base/error.hpp"
@@ -58,8 +59,17 @@ VecX unsteadyAeroSteadyStates(const Model& m, const OperatingPoint& op) {
 
 UnsteadyAeroLinear unsteadyAeroLinear(const Model& m, const OperatingPoint& op, const std::vector<int>& cols,
                                       bool inputs) {
+  return unsteadyAeroLinearAt(m, op, unsteadyAeroSteadyStates(m, op), cols, inputs);
+}
+
+UnsteadyAeroLinear unsteadyAeroLinearAt(const Model& m, const OperatingPoint& op, const VecX& states,
+                                        const std::vector<int>& cols, bool inputs) {
+  requireFrozenInduction(m, op);
+  if (states.size() != aeroStateCount(m.aero))
+    throw ComputeError("aerodynamic states: " + std::to_string(states.size()) + " values for " +
+                       std::to_string(aeroStateCount(m.aero)) + " states");
   UnsteadyAeroLinear out;
-  out.z = unsteadyAeroSteadyStates(m, op);
+  out.z = states;
   uaStateNames(m.aero, out.names, out.groups);
   inflowStateNames(m.aero, out.names, out.groups);
   const int n = m.ndof(), nz = static_cast<int>(out.z.size()), nc = static_cast<int>(cols.size());

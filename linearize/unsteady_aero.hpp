@@ -37,6 +37,11 @@ struct UnsteadyAeroLinear {
 UnsteadyAeroLinear unsteadyAeroLinear(const Model& m, const OperatingPoint& op, const std::vector<int>& cols,
                                       bool inputs);
 
+/// The same blocks at op with the states at `states` (dim aeroStateCount) instead of their steady values: the
+/// Newton matrix of a time simulation (linearize/simulate_aero.hpp), whose states move away from them.
+UnsteadyAeroLinear unsteadyAeroLinearAt(const Model& m, const OperatingPoint& op, const VecX& states,
+                                        const std::vector<int>& cols, bool inputs);
+
 /// The states' steady values at op (what unsteadyAeroLinear linearizes about).
 VecX unsteadyAeroSteadyStates(const Model& m, const OperatingPoint& op);
 

@@ -6,6 +6,8 @@
 #include <cmath>
 
 #include "linearize/linearize.hpp"
+#include "linearize/simulate_aero.hpp"
+#include "modal/rotor_modes.hpp"
 #include "src/base/error.hpp"
 
 namespace whirl {
@@ -35,13 +37,26 @@ NonlinearCheck checkAgainstLinear(const Model& m, const OperatingPoint& eq, cons
           "verify: the model has a bladed rotor, whose linear model is periodic; verify takes "
           "time-invariant models (no rotor, or an axisymmetric rigid rotor)");
   if (opt.levels < 2) throw InputError("verify: levels: at least 2 amplitudes to observe the order");
+  SimulationOptions so;
+  so.t_end = opt.t_end;
+  so.dt_out = opt.dt_out;
+  so.rtol = opt.rtol;
+  so.atol = opt.atol;
+  so.aero_states = opt.aero_states;
+  const int nz = simulationAeroStateCount(m, so);
   LinearizeOptions lo;
-  lo.frozen_wake = false;  // the simulation re-solves the induction at every evaluation
+  // Without aerodynamic states the simulation re-solves the induction at every evaluation; with them both
+  // hold the equilibrium's frozen wake (the states' linear model is on it).
+  lo.frozen_wake = nz > 0;
+  lo.unsteady_aero = nz > 0;
   lo.inputs = false;
+  if (nz > 0) so.frozen_inflow = eq.inflow;
   const LinearModel lin = linearize(m, eq, lo);
   NonlinearCheck out;
-  out.modes = computeModes(lin.M, lin.C, lin.K, lin.dof_names);
+  out.aero_states = nz;
+  out.modes = nz > 0 ? linearModelModes(m, lin, eq.held).modes : computeModes(lin.M, lin.C, lin.K, lin.dof_names);
   const int n = static_cast<int>(lin.dofs.size());
+  const auto nx = lin.A.rows();
   std::vector<int> perturbed = opt.dofs;
   if (perturbed.empty())
     for (int i : lin.dofs)
@@ -51,20 +66,22 @@ NonlinearCheck checkAgainstLinear(const Model& m, const OperatingPoint& eq, cons
     if (std::find(lin.dofs.begin(), lin.dofs.end(), i) == lin.dofs.end())
       throw InputError("verify: '" + m.dofs[i].name + "' is not a state of the linear model (frozen)");
 
-  SimulationOptions so;
-  so.t_end = opt.t_end;
-  so.dt_out = opt.dt_out;
-  so.rtol = opt.rtol;
-  so.atol = opt.atol;
   const MatX step = (lin.A * opt.dt_out).exp();  // x(t + Δ) = exp(A Δ) x(t)
+  // With the aerodynamic states the quasi-steady equilibrium is their steady state only to the HGM model's
+  // reconstruction of the static polar (~1e-4 of the loads, docs/theory/unsteady-aero.md): the perturbed runs
+  // are measured from an unperturbed one, not from the equilibrium.
+  Simulation base;
+  if (nz > 0) base = simulate(m, eq, so);
   double eps = opt.amplitude;
   for (int level = 0; level < opt.levels; ++level, eps /= 2) {
     OperatingPoint start = eq;
-    VecX x0 = VecX::Zero(2 * n);
+    VecX x0 = VecX::Zero(nx);
     for (int i : perturbed) {
       start.q(i) += eps;
       x0(std::find(lin.dofs.begin(), lin.dofs.end(), i) - lin.dofs.begin()) = eps;
     }
+    // The states start steady at the perturbed point: their deviation from the equilibrium's.
+    if (nz > 0) x0.tail(nz) = simulationAeroStart(m, start, so) - lin.first_order_values.tail(nz);
     VecX x = x0;
     const Simulation sim = simulate(m, start, so);
     NonlinearCheckLevel l;
@@ -76,7 +93,7 @@ NonlinearCheck checkAgainstLinear(const Model& m, const OperatingPoint& eq, cons
       if (k > 0) x = std::abs(t - tk) <= 1e-9 * opt.dt_out ? VecX(step * x) : VecX((lin.A * t).exp() * x0);
       for (int j = 0; j < n; ++j) {
         const int i = lin.dofs[j];
-        const double dq = sim.q(r, i) - eq.q(i) - eq.qd(i) * sim.time[k];
+        const double dq = nz > 0 ? sim.q(r, i) - base.q(r, i) : sim.q(r, i) - eq.q(i) - eq.qd(i) * sim.time[k];
         l.max_difference = std::max(l.max_difference, std::abs(dq - x(j)));
         l.max_response = std::max(l.max_response, std::abs(x(j)));
       }

@@ -13,7 +13,9 @@
 ///
 /// Only for time-invariant linear models: no rotor, or a rotor without blades (an axisymmetric rigid
 /// rotor, turning freely at its rate); a bladed rotor's model is periodic (linearizePeriodic).
-/// With aerodynamics the linear model lets the induction follow (quasi-steady BEM), as the simulation does.
+/// With aerodynamics the linear model lets the induction follow (quasi-steady BEM), as the simulation does;
+/// with NonlinearCheckOptions::aero_states and a model with unsteady-airfoil or dynamic-inflow states both hold
+/// the equilibrium's frozen wake and carry the states (x = [δq; δq̇; δz]).
 #include <string>
 #include <vector>
 
@@ -31,6 +33,11 @@ struct NonlinearCheckOptions {
   double t_end = 10;        ///< [s]
   double dt_out = 0.01;     ///< [s]
   double rtol = 1e-10, atol = 1e-13;  ///< IDA, far below the ε² differences
+  /// The model's blade-element aerodynamic states (unsteady airfoil, dynamic inflow: aeroStateCount) in both
+  /// the linear model (on the frozen wake of the equilibrium) and the simulation (SimulationOptions::
+  /// aero_states, the same induction held), the states starting at their steady values; false, or a model
+  /// without them: the quasi-steady induction in both.
+  bool aero_states = false;
 };
 
 struct NonlinearCheckLevel {
@@ -46,6 +53,7 @@ struct NonlinearCheck {
   std::vector<IdentifiedDecay> identified;  ///< per perturbed coordinate, perturbed alone by the amplitude
   /// Per perturbed coordinate: the poles realized (identifyPoles) from that decay's every state.
   std::vector<std::vector<IdentifiedPole>> poles;
+  int aero_states = 0;  ///< the aerodynamic states in both models (NonlinearCheckOptions::aero_states)
   /// Observed order of the difference between consecutive levels (≥ 2), one fewer than levels.
   std::vector<double> orders;
 };

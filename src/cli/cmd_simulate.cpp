@@ -56,7 +56,9 @@ void applyInit(const Model& m, OperatingPoint& p, const std::string& text) {
 }
 
 void run(const SimulateOptions& opt) {
-  const Model m = loadModel(opt.model);
+  // The deck's unsteady-airfoil and dynamic-inflow states in the simulation as in the linear models
+  // (linearize/simulate_aero.hpp), unless --quasi-steady-aero.
+  const Model m = loadModel(opt.model, true);
   requireActiveDof(m, m.name);
   OperatingPoint start = startPoint(m, opt.model);
   std::optional<RoscoController> controller;
@@ -83,6 +85,7 @@ void run(const SimulateOptions& opt) {
   so.dt_out = opt.dt_out;
   so.rtol = opt.rtol;
   so.atol = opt.atol;
+  so.aero_states = true;
   if (!opt.free_rotor && !opt.wind) so.prescribed = m.roles.azimuth;
   if (opt.closed_loop) so.controller = roscoInTheLoop(m, *controller, *steady, opt.controller_dt, start);
   // Without --allow-invalid-point a diverging motion is an error: stop integrating at its first
@@ -131,7 +134,7 @@ void run(const SimulateOptions& opt) {
   const std::vector<std::string> written = writeTimeseries(m, sim, dir, po);
   std::printf("simulated %g s in %.3g s (%.4g× real time): %ld steps, %ld residuals, %ld Jacobians, %zu states\n",
               opt.tmax, seconds, opt.tmax / std::max(seconds, 1e-9), sim.steps, sim.residual_evaluations,
-              sim.jacobian_evaluations, 2 * sim.states.size());
+              sim.jacobian_evaluations, 2 * sim.states.size() + static_cast<std::size_t>(sim.z.cols()));
   std::printf("wrote");
   for (const auto& w : written) std::printf(" %s", w.c_str());
   std::printf("\n");
@@ -146,6 +149,7 @@ void addSimulateCommand(CLI::App& app) {
       "integrate the nonlinear equations in time (SUNDIALS IDA, AD Jacobians): writes timeseries.csv, "
       "timeseries.gp and PNG/SVG");
   addModelOptions(*cmd, opt->model, true);
+  addAeroStateOptions(*cmd, opt->model);
   cmd->add_option("--tmax", opt->tmax, "simulated time [s]")->required()->check(CLI::PositiveNumber);
   cmd->add_option("--dt-out", opt->dt_out, "interval of the recorded instants [s]")->check(CLI::PositiveNumber);
   cmd->add_option("--init", opt->init,

@@ -13,6 +13,7 @@
 #include <optional>
 
 #include "linearize/trim.hpp"
+#include "modal/aero_roots.hpp"
 #include "modal/closed_loop_step.hpp"
 #include "modal/era.hpp"
 #include "modal/nonlinear_check.hpp"
@@ -84,11 +85,13 @@ void runClosedLoop(const VerifyOptions& opt) {
 void run(const VerifyOptions& opt) {
   if (opt.closed_loop) return runClosedLoop(opt);
   if (opt.wind) throw InputError("verify: --wind is for --closed-loop");
-  const Model m = loadModel(opt.model);
+  // The deck's unsteady-airfoil and dynamic-inflow states in both models, unless --quasi-steady-aero.
+  const Model m = loadModel(opt.model, true);
   requireActiveDof(m, m.name);
   const OperatingPoint eq = solveOperatingPoint(m, startPoint(m, opt.model));
   checkSolvedPoints(opt.model, m, {eq});
   NonlinearCheckOptions co = opt.check;
+  co.aero_states = true;
   for (const std::string& name : opt.dofs) {
     const auto i = m.findDof(name);
     if (!i) throw InputError("--dof: '" + name + "': no such coordinate");
@@ -96,6 +99,11 @@ void run(const VerifyOptions& opt) {
   }
   const NonlinearCheck c = checkAgainstLinear(m, eq, co);
   std::printf("nonlinear free decay vs the linear model at the equilibrium (%g s):\n", co.t_end);
+  if (c.aero_states > 0)
+    std::printf(
+        "  with %d aerodynamic states (unsteady airfoil, dynamic inflow) in both, on the equilibrium's frozen "
+        "wake\n",
+        c.aero_states);
   std::printf("  %-12s %-16s %-16s %s\n", "amplitude", "max |q - q_lin|", "max |q_lin|", "order");
   for (size_t k = 0; k < c.levels.size(); ++k) {
     const NonlinearCheckLevel& l = c.levels[k];
@@ -114,7 +122,8 @@ void run(const VerifyOptions& opt) {
         std::find_if(active.begin(), active.end(), [&](int i) { return m.dofs[i].name == c.identified_dofs[k]; }) -
         active.begin());
     for (const Mode& md : c.modes)
-      if (!md.rigid_body && j < md.participation.size() && (!best || md.participation(j) > best->participation(j)))
+      if (!md.rigid_body && !isAeroRoot(md) && j < md.participation.size() &&
+          (!best || md.participation(j) > best->participation(j)))
         best = &md;
     const IdentifiedDecay& d = c.identified[k];
     // The realized pole of this decay nearest the mode's damped frequency.
@@ -135,6 +144,7 @@ void addVerifyCommand(CLI::App& app) {
       "equilibrium (simulate) against exp(A t) x0; prints the differences, their order (at least 2 expected) and the "
       "identified frequencies next to the eigenvalues");
   addModelOptions(*cmd, opt->model, true);
+  addAeroStateOptions(*cmd, opt->model);
   cmd->add_option("--dof", opt->dofs, "coordinate perturbed (repeatable; default: every non-rotating active one)");
   cmd->add_option("--amplitude", opt->check.amplitude, "largest perturbation e [m or rad]")->check(CLI::PositiveNumber);
   cmd->add_option("--levels", opt->check.levels, "number of amplitudes (halved each time)")->check(CLI::Range(2, 8));
