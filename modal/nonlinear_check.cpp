@@ -31,8 +31,11 @@ std::vector<IdentifiedPole> realizedPoles(const Simulation& sim, const Operating
 }
 
 NonlinearCheck checkAgainstLinear(const Model& m, const OperatingPoint& eq, const NonlinearCheckOptions& opt) {
+  // A parked rotor (no rotating coordinate moving) is time-invariant, blades and all.
+  bool turning = false;
+  for (int i = 0; i < m.ndof(); ++i) turning = turning || (m.dofs[i].rotating && eq.qd(i) != 0);
   for (const Dof& d : m.dofs)
-    if (!d.frozen && d.blade >= 0)
+    if (!d.frozen && d.blade >= 0 && turning)
       throw InputError(
           "verify: the model has a bladed rotor, whose linear model is periodic; verify takes "
           "time-invariant models (no rotor, or an axisymmetric rigid rotor)");

@@ -11,8 +11,9 @@
 /// extrema of that coordinate (identifyDecay), and by the eigensystem realization of every state's response
 /// (identifyPoles), which separates the modes that share the coordinate.
 ///
-/// Only for time-invariant linear models: no rotor, or a rotor without blades (an axisymmetric rigid
-/// rotor, turning freely at its rate); a bladed rotor's model is periodic (linearizePeriodic).
+/// Only for time-invariant linear models: no rotor, a rotor without blades (an axisymmetric rigid
+/// rotor, turning freely at its rate), or a parked bladed rotor (no rotating coordinate moving); a turning
+/// bladed rotor's model is periodic (linearizePeriodic).
 /// With aerodynamics the linear model lets the induction follow (quasi-steady BEM), as the simulation does;
 /// with NonlinearCheckOptions::aero_states and a model with unsteady-airfoil or dynamic-inflow states both hold
 /// the equilibrium's frozen wake and carry the states (x = [δq; δq̇; δz]).
@@ -64,7 +65,7 @@ struct NonlinearCheck {
 std::vector<IdentifiedPole> realizedPoles(const Simulation& sim, const OperatingPoint& equilibrium, double dt_out);
 
 /// \param[in] equilibrium  a solved operating point (solveOperatingPoint)
-/// \throws InputError for a bladed rotor or an unknown / frozen coordinate; ComputeError from simulate
+/// \throws InputError for a turning bladed rotor or an unknown / frozen coordinate; ComputeError from simulate
 NonlinearCheck checkAgainstLinear(const Model& model, const OperatingPoint& equilibrium,
                                   const NonlinearCheckOptions& options = {});
 
