@@ -156,7 +156,7 @@ aero::UaSection uaSection(const AeroModel& am, const AeroStation& st) {
 template <class T>
 void addUnsteadyAeroLoads(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T>& qd, const VecXT<T>& u,
                           const AeroInflow& frozen, const VecXT<T>* z, VecXT<T>& e, VecXT<T>* zdot,
-                          std::vector<aero::UaInput<T>>* inputs, VecXT<T>* quasi_steady) {
+                          std::vector<aero::UaInput<T>>* inputs, VecXT<T>* quasi_steady, int element, VecXT<T>* e_qs) {
   using std::sqrt;
   const AeroModel& am = m.aero;
   if (!am.active()) return;
@@ -173,6 +173,12 @@ void addUnsteadyAeroLoads(const Model& m, Workspace<T>& ws, const VecXT<T>& q, c
   int index = 0, zi = 0;  // element over all blades, first state of the next element with states
   for (std::size_t bi = 0; bi < am.blades.size(); ++bi) {
     const AeroBlade& blade = am.blades[bi];
+    const int nst = static_cast<int>(blade.stations.size());
+    if (element >= 0 && (element < index || element >= index + nst)) {  // a blade without the element asked for
+      for (const AeroStation& st : blade.stations) zi += st.ua ? ns : 0;
+      index += nst;
+      continue;
+    }
     const Body& body = m.bodies[blade.body];
     const FrameState<T>& f = ws.frames[blade.body];
     const BasisState<T>& bs = ws.basis[blade.body];
@@ -181,9 +187,13 @@ void addUnsteadyAeroLoads(const Model& m, Workspace<T>& ws, const VecXT<T>& q, c
     const T* qde = body.inertia.ne > 0 ? qd.data() + body.elastic_dof : nullptr;
     const detail::BladeMotion<T> bm{f.R, f.r, f.v, f.w, bs.c, bs.cd, qe, pitch};
     const detail::BladeAxes<T> axes = detail::bladeAxes(body, bm);
-    detail::BodyLoadSum<T> sum(body.inertia.ne, body.points[blade.stations.front().point].P.cols());
+    detail::BodyLoadSum<T> sum(body.inertia.ne, body.points[blade.stations.front().point].P.cols()), sum_qs = sum;
     for (std::size_t si = 0; si < blade.stations.size(); ++si, ++index) {
       const AeroStation& st = blade.stations[si];
+      if (element >= 0 && index != element) {
+        zi += st.ua ? ns : 0;
+        continue;
+      }
       const BodyPoint& pt = body.points[st.point];
       const detail::ElementFrame<T> g = detail::elementFrame(body, pt, bm, axes, st.curve);
       const Vec3T<T> rel = detail::steadyWind(am.wind, wind_dir, speed, g.pos(2)) - g.vel;
@@ -259,17 +269,28 @@ void addUnsteadyAeroLoads(const Model& m, Workspace<T>& ws, const VecXT<T>& q, c
       const Vec3T<T> Fb = L.fx * g.xnb + L.fy * g.yab;
       const Vec3T<T> Mb = L.mz * g.znb;
       sum.addBody(pt, g.s, Fb, Mb, st.weight);
+      if (e_qs) {  // the same loads where the element has neither states nor dynamic inflow
+        if (z && (st.ua || dynamic)) {
+          const aero::SectionLoads<T> Q = aero::frozenLoads(detail::bemStation(am, st, r), vx, vy, theta, ax, tn,
+                                                            am.air_density, am.bem);
+          sum_qs.addBody(pt, g.s, Vec3T<T>(Q.fx * g.xnb + Q.fy * g.yab), Vec3T<T>(Q.mz * g.znb), st.weight);
+        } else {
+          sum_qs.addBody(pt, g.s, Fb, Mb, st.weight);
+        }
+      }
     }
     sum.project(m, ws, blade.body, e);
+    if (e_qs) sum_qs.project(m, ws, blade.body, *e_qs);
   }
 }
 
 template void addUnsteadyAeroLoads<double>(const Model&, Workspace<double>&, const VecX&, const VecX&, const VecX&,
                                            const AeroInflow&, const VecX*, VecX&, VecX*,
-                                           std::vector<aero::UaInput<double>>*, VecX*);
+                                           std::vector<aero::UaInput<double>>*, VecX*, int, VecX*);
 template void addUnsteadyAeroLoads<ADChunk>(const Model&, Workspace<ADChunk>&, const VecXT<ADChunk>&,
                                             const VecXT<ADChunk>&, const VecXT<ADChunk>&, const AeroInflow&,
                                             const VecXT<ADChunk>*, VecXT<ADChunk>&, VecXT<ADChunk>*,
-                                            std::vector<aero::UaInput<ADChunk>>*, VecXT<ADChunk>*);
+                                            std::vector<aero::UaInput<ADChunk>>*, VecXT<ADChunk>*, int,
+                                            VecXT<ADChunk>*);
 
 }  // namespace whirl

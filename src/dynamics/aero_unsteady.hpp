@@ -59,11 +59,17 @@ void removeUnsteadyAirfoils(AeroModel& am);
 /// current inflow (aero::quasiSteadyInducedVelocity: the root solved in double, its derivatives by the
 /// implicit-function theorem). `inputs` (if given) receives the UA inputs of the elements with states;
 /// `quasi_steady` (if given, dim 2 nstations, with dynamic-inflow states) the quasi-steady induced velocities,
-/// axial and tangential per element.
+/// axial and tangential per element. `element` ≥ 0 (an element over all blades, in AeroModel order) evaluates
+/// that element alone: e receives its loads only, zdot and `quasi_steady` its entries only (the rest untouched),
+/// `inputs` its UA inputs only. `e_qs` (if given) += the quasi-steady frozen-wake loads at the same kinematics
+/// (what z null gives in e), formed in the same pass over the elements: their frames once for both. A state of an
+/// element enters only that element's loads and rates, so its Jacobian columns come from that element alone
+/// (linearize/unsteady_aero.cpp).
 template <class T>
 void addUnsteadyAeroLoads(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T>& qd, const VecXT<T>& u,
                           const AeroInflow& frozen, const VecXT<T>* z, VecXT<T>& e, VecXT<T>* zdot,
-                          std::vector<aero::UaInput<T>>* inputs = nullptr, VecXT<T>* quasi_steady = nullptr);
+                          std::vector<aero::UaInput<T>>* inputs = nullptr, VecXT<T>* quasi_steady = nullptr,
+                          int element = -1, VecXT<T>* e_qs = nullptr);
 
 /// The airfoil of a station for the UA functions (the polar, its UA table and Cm rule, the chord).
 aero::UaSection uaSection(const AeroModel& am, const AeroStation& st);
