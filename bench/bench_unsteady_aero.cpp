@@ -1,7 +1,8 @@
 // Speed with the blade elements' unsteady-airfoil states (issue 47, "Numbers"): the NREL 5MW
 // (cases/nrel5mw/Main_Aero.fst with its airfoil files' UA data, UA_Mod 4: 180 states on 45 elements) —
 // one aeroelastic linearization with the states at rated (11.4 m/s, 12.1 rpm), and its Campbell diagram
-// along 23 trimmed wind speeds (3–25 m/s, 36 azimuths). Targets: 200 µs and 1 s.
+// along 23 trimmed wind speeds (3–25 m/s, 36 azimuths); the same with DBEMT_Mod 3 dynamic inflow (408 states).
+// Targets: 200 µs and 1 s.
 // Run: build/bench/whirl_bench --benchmark_filter=Ua
 #include <benchmark/benchmark.h>
 
@@ -20,8 +21,13 @@ Model uaModel() {
   return readElastoDynModel(std::string(WHIRL_SOURCE_DIR) + "/cases/nrel5mw/Main_Aero.fst", {"AFAeroMod=2", "UAMod=4"});
 }
 
-void nrel5mwUaLinearization(benchmark::State& state) {
-  const Model m = uaModel();
+// The same with DBEMT_Mod 3 dynamic inflow (WakeMod 2): 228 more states, 4 on each of the 57 elements.
+Model uaDbemtModel() {
+  return readElastoDynModel(std::string(WHIRL_SOURCE_DIR) + "/cases/nrel5mw/Main_Aero.fst",
+                            {"AFAeroMod=2", "UAMod=4", "WakeMod=2", "DBEMT_Mod=3"});
+}
+
+void uaLinearization(benchmark::State& state, const Model& m) {
   OperatingCondition c;
   c.rotor_speed = 12.1 * std::numbers::pi / 30;
   c.wind_speed = 11.4;
@@ -35,11 +41,16 @@ void nrel5mwUaLinearization(benchmark::State& state) {
     benchmark::DoNotOptimize(l.A.data());
   }
   state.counters["ua_states"] = uaStateCount(m.aero);
+  state.counters["aero_states"] = aeroStateCount(m.aero);
 }
+
+void nrel5mwUaLinearization(benchmark::State& state) { uaLinearization(state, uaModel()); }
 BENCHMARK(nrel5mwUaLinearization)->Unit(benchmark::kMicrosecond);
 
-void nrel5mwUaCampbell(benchmark::State& state) {
-  const Model m = uaModel();
+void nrel5mwUaDbemtLinearization(benchmark::State& state) { uaLinearization(state, uaDbemtModel()); }
+BENCHMARK(nrel5mwUaDbemtLinearization)->Unit(benchmark::kMicrosecond);
+
+void uaCampbell(benchmark::State& state, const Model& m) {
   SweepOptions opt;
   opt.azimuths = 36;
   opt.unsteady_aero = true;
@@ -49,7 +60,12 @@ void nrel5mwUaCampbell(benchmark::State& state) {
   }
   state.counters["linearizations"] = 23 * 36;
 }
+
+void nrel5mwUaCampbell(benchmark::State& state) { uaCampbell(state, uaModel()); }
 BENCHMARK(nrel5mwUaCampbell)->Unit(benchmark::kMillisecond);
+
+void nrel5mwUaDbemtCampbell(benchmark::State& state) { uaCampbell(state, uaDbemtModel()); }
+BENCHMARK(nrel5mwUaDbemtCampbell)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace whirl
