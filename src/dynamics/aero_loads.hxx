@@ -66,6 +66,11 @@ void addAeroLoads(const Model& m, Workspace<TK>& ws, const VecXT<TK>& q, const V
     detail::BodyLoadSum<T> sum(body.inertia.ne, body.points[blade.stations.front().point].P.cols());
     detail::bladeLoads(m, static_cast<int>(bi), index0, bm, inflow, ws.bem, store.sections, record, totals, sum);
     sum.project(m, ws, blade.body, e);
+    if (totals) {
+      totals->blade_force.resize(am.blades.size(), Vec3T<T>::Zero());
+      totals->blade_moment.resize(am.blades.size(), Vec3T<T>::Zero());
+      sum.resultant(f.R, totals->blade_force[bi], totals->blade_moment[bi]);
+    }
     index0 += n;
   }
 }

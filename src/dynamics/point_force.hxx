@@ -118,6 +118,14 @@ class BodyLoadSum {
     else gtheta_(i - 6 - fk_.size()) = v;
   }
 
+  /// The resultant force and its moment about the body origin, ground components (R: the body's axes).
+  template <class TK>
+  void resultant(const Mat3T<TK>& R, Vec3T<T>& F, Vec3T<T>& M) const {
+    const Mat3T<T> Rt = R.template cast<T>();
+    F = F_ + Rt * Fb_;
+    M = M_ + Rt * Mb_;
+  }
+
   /// Adds the sums to the generalized forces of body b's support and elastic coordinates.
   template <class TK>
   void project(const Model& m, const Workspace<TK>& ws, int b, VecXT<T>& e) const {

@@ -106,21 +106,36 @@ void bodyInertiaForces(const Model& m, int i, Workspace<T>& ws, const VecXT<T>& 
 
 }  // namespace detail
 
+namespace detail {
+
+// The torque of the generator torque law at the generator speed of q̇ (0 without a law).
+template <class TK>
+TK generatorLawTorque(const Model& m, const VecXT<TK>& qd) {
+  const GeneratorTorqueLaw& gen = m.generator;
+  if (!gen.active()) return TK(0);
+  TK speed(0);
+  for (const auto& [d, g] : m.outputs[gen.speed_output].terms) speed += g * qd(d);
+  return generatorTorque(gen, speed);
+}
+
+// The scale of point load l: its input (or 1), plus the torque law's torque on the generator-torque input.
+template <class TK, class T>
+T pointLoadScale(const Model& m, const PointLoad& l, const VecXT<T>& u, const TK& law) {
+  T scale = inputScale(u, l.input);
+  if (m.generator.active() && l.input == m.roles.generator_torque_input) scale += T(law);
+  return scale;
+}
+
+}  // namespace detail
+
 template <class TK, class T>
 void addInputLoads(const Model& m, const Workspace<TK>& ws, const VecXT<TK>& qd, const VecXT<T>& u, VecXT<T>& e) {
   // The generator torque law adds its torque at the generator speed to the generator-torque input.
-  const GeneratorTorqueLaw& gen = m.generator;
-  TK law(0);
-  if (gen.active()) {
-    TK speed(0);
-    for (const auto& [d, g] : m.outputs[gen.speed_output].terms) speed += g * qd(d);
-    law = generatorTorque(gen, speed);
-  }
+  const TK law = detail::generatorLawTorque(m, qd);
   for (const PointLoad& l : m.point_loads) {
     // The load scaled by its input (or 1): its generalized force is scale × that of the unit load,
     // formed in TK; only the final products carry the scalar of u.
-    T scale = detail::inputScale(u, l.input);
-    if (gen.active() && l.input == m.roles.generator_torque_input) scale += T(law);
+    const T scale = detail::pointLoadScale(m, l, u, law);
     // A zero scale that carries no derivative adds nothing (value and derivatives are scale × …):
     // the input loads of a linear model at u = 0, and in a double evaluation every input at zero
     // (six unit loads of an ElastoDyn deck, each a projection onto its support, at every residual).

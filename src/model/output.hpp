@@ -4,7 +4,7 @@
 /// Plain data inside the Model (indices are renumbered by finalize()); evaluated by
 /// evaluateOutputs() (src/dynamics/outputs.hpp) and differentiated by AD (linearize/state_space.hpp).
 ///
-/// Four kinds, the first three at a derivative order (0 value, 1 rate, 2 acceleration):
+/// Five kinds, the first three at a derivative order (0 value, 1 rate, 2 acceleration):
 /// - DofCombination: Σ_k gain_k q_k^(order), e.g. a DOF value/rate/acceleration (one term), the
 ///   rotor speed (generator azimuth + drivetrain rates), the generator speed (gear ratio × rate), or
 ///   an elastic bending moment EI·Σ φ''(x) q (gains from the shapes' curvature, see beamMomentGains).
@@ -17,6 +17,10 @@
 ///   with frame_body = the body, or ElastoDyn's inertial-frame PtfmRVxi … with frame_body = −1.
 /// - Rotor: a rotor-level quantity (RotorQuantity: aerodynamic thrust, torque and power, generator
 ///   torque and power), functions of q, q̇ and u through the blade elements and the torque law.
+/// - SubtreeLoadMoment: the moment about `body`'s origin of the loads on it and on every body it carries
+///   (inertia −∫ a dm, gravity, the quasi-steady blade-element loads, point loads), projected as a Point
+///   output: what the cut at the body's joint transmits to its parent, as ElastoDyn sums its blade-root
+///   and tower-base moments (`MomH0B`) from the loads instead of from the curvature of its shapes.
 #include <string>
 #include <utility>
 #include <vector>
@@ -25,7 +29,7 @@
 
 namespace whirl {
 
-enum class OutputKind { DofCombination, Point, Rotor, Angular };
+enum class OutputKind { DofCombination, Point, Rotor, Angular, SubtreeLoadMoment };
 
 /// Rotor-level quantities (OutputKind::Rotor), from the aerodynamic model and the generator torque law.
 enum class RotorQuantity {
@@ -42,10 +46,11 @@ struct Output {
   OutputKind kind = OutputKind::DofCombination;
   int order = 0;                              ///< 0 = value, 1 = rate, 2 = acceleration (Angular: 1 or 2)
   std::vector<std::pair<int, double>> terms;  ///< DofCombination: (DOF, gain)
-  int body = -1;                              ///< Point, Angular: the body carrying the point, or whose frame turns
-  int point = -1;                             ///< Point: point index of `body`, −1 = body origin
-  int frame_body = -1;                        ///< Point, Angular: axes of `direction`, −1 = ground
-  Vec3 direction = Vec3::UnitX();             ///< Point, Angular: unit vector in those axes
+  int body =
+      -1;  ///< Point, Angular, SubtreeLoadMoment: the body carrying the point, whose frame turns, or whose subtree
+  int point = -1;                  ///< Point: point index of `body`, −1 = body origin
+  int frame_body = -1;             ///< Point, Angular, SubtreeLoadMoment: axes of `direction`, −1 = ground
+  Vec3 direction = Vec3::UnitX();  ///< Point, Angular, SubtreeLoadMoment: unit vector in those axes
   RotorQuantity rotor_quantity = RotorQuantity::AeroThrust;  ///< Rotor: which
   /// Rotor blade (0-based) of an output in the rotating frame, −1 = fixed frame (MBC, `.lin` flag).
   /// finalize() sets it for a DofCombination whose DOFs all belong to one blade, when left at −1.

@@ -2,8 +2,6 @@
 
 #include <utility>
 
-#include "src/fem/blade6_moments.hpp"
-
 namespace whirl {
 
 fem::Blade6Input blade6Input(const io::BeamDynInput& bd) {
@@ -17,7 +15,6 @@ fem::Blade6Input blade6Input(const io::BeamDynInput& bd) {
 BeamDynBladeBody beamDynBladeBody(const io::BeamDynInput& bd, const BeamDynBladeOptions& opt) {
   fem::Blade6Body b = fem::blade6Body(blade6Input(bd), opt);
   BeamDynBladeBody out;
-  out.root_moment_gains = fem::blade6MomentGains(b, 0.0);
   out.model = std::move(b.model);
   out.beam.props = std::move(b.props);
   out.beam.shapes = std::move(b.shapes);

@@ -22,8 +22,6 @@ struct BeamDynBladeBody {
   MatX K, D;                    ///< stiffness and damping of the modal coordinates (modes × modes)
   std::vector<double> freq_hz;  ///< the FE modes' frequencies, clamped root, not rotating [Hz]
   double length = 0;            ///< along z_r [m]
-  /// The root bending moments per modal coordinate (2 × modes: towards +y, towards +z; fem::blade6MomentGains).
-  MatX root_moment_gains;
 };
 
 /// The BeamDyn input as the FE blade's plain data (key points, stations, mu).

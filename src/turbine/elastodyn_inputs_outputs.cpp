@@ -96,15 +96,24 @@ void addOutputs(Builder& b, const TowerParts& tower, const DrivetrainParts& dt, 
   }
   y.push_back(dofOutput("TwrBsMFA", "N m", 0, fa));
   y.push_back(dofOutput("TwrBsMSS", "N m", 0, ss));
-  // Blade body: y = out of plane (flap), z = in plane (edge), both turning with the pitch.
-  for (size_t k = 0; k < rotor.shape_dofs.size(); ++k) {
-    std::vector<std::pair<int, double>> flap, edge;
-    for (std::size_t s = 0; s < rotor.shape_dofs[k].size(); ++s) {
-      flap.push_back({rotor.shape_dofs[k][s], rotor.root_moment_gains[k](0, static_cast<Eigen::Index>(s))});
-      edge.push_back({rotor.shape_dofs[k][s], rotor.root_moment_gains[k](1, static_cast<Eigen::Index>(s))});
+  // ElastoDyn's RootMFlp = RootMyb and RootMEdg = RootMxb: the moment at the blade root of the loads on the
+  // blade (aerodynamic, gravity, inertia: MomH0B, ElastoDyn.f90 CalcOutput) about the pitched axes j2 and
+  // j1, which are the blade body's z and y. Summed from the loads, as ElastoDyn does: the curvature of the
+  // polynomial shapes at the root, EI φ''(0), gave 37 % (flap) and 63 % (edge) of it (docs/theory/fe-blades.md).
+  for (std::size_t k = 0; k < rotor.blades.size(); ++k) {
+    const int body = rotor.blades[k].body;
+    for (const auto& [name, axis] :
+         {std::pair<const char*, Vec3>{"RootMFlp", Vec3::UnitZ()}, {"RootMEdg", Vec3::UnitY()}}) {
+      Output o;
+      o.name = name + std::to_string(k + 1);
+      o.unit = "N m";
+      o.kind = OutputKind::SubtreeLoadMoment;
+      o.body = body;
+      o.frame_body = body;
+      o.direction = axis;
+      o.blade = static_cast<int>(k);  // rotating frame
+      y.push_back(std::move(o));
     }
-    y.push_back(dofOutput("RootMFlp" + std::to_string(k + 1), "N m", 0, flap));
-    y.push_back(dofOutput("RootMEdg" + std::to_string(k + 1), "N m", 0, edge));
   }
   if (rotor.teeter >= 0) y.push_back(dofOutput("TeetDefl", "rad", 0, {{rotor.teeter, 1.0}}));
   // The channels ROSCO's robust scheduling and users read from OpenFAST's .lin files (issue 41):

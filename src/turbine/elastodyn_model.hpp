@@ -43,10 +43,10 @@
 /// "TTDspSS" [m, tower-top (yaw bearing origin) position along ground X, Y]; "YawBrTAxp", "YawBrTAyp"
 /// [m/s², its inertial acceleration along the yaw bearing's x, y axes, which tilt with the tower top];
 /// "TeetDefl" [rad, 2 blades]; "TwrBsMFA", "TwrBsMSS" [N m, tower-base moments from the curvature, bending the top
-/// towards +X, +Y]; "RootMFlp k", "RootMEdg k" (no space) [N m, blade-root moments from the curvature, bending the
-/// blade towards its body +y (out of plane) and +z (in plane), both turning with the pitch; rotating frame]
-/// (src/shapes/beam_moment.hpp; stiffness tuners are not applied to them); with a platform "PtfmSurge",
-/// "PtfmSway", "PtfmHeave" [m], "PtfmRoll", "PtfmPitch", "PtfmYaw" [rad], their rates and accelerations
+/// towards +X, +Y]; "RootMFlp k", "RootMEdg k" (no space) [N m, ElastoDyn's RootMyb and RootMxb: the moment at the
+/// blade root of the loads on the blade (inertia, gravity, the quasi-steady element loads, a tip mass) about the
+/// pitched axes j2 and j1 (the blade body's z and y); rotating frame] (OutputKind::SubtreeLoadMoment); with a platform
+/// "PtfmSurge", "PtfmSway", "PtfmHeave" [m], "PtfmRoll", "PtfmPitch", "PtfmYaw" [rad], their rates and accelerations
 /// "PtfmTVxi" … "PtfmTAzi", and the platform's angular velocity and acceleration about the ground axes
 /// "PtfmRVxi" … "PtfmRAzi" (elastodyn_parts.hpp addPlatformOutputs).
 /// Springs: yaw (YawSpr, YawDamp about YawNeut, from ServoDyn), drivetrain (DTTorSpr, DTTorDmp),

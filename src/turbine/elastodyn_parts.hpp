@@ -134,8 +134,7 @@ struct RotorParts {
   std::vector<int> pitch;  ///< pitch DOF of each blade
   /// Elastic DOFs of each blade: flap 1, edge 1, flap 2 (ElastoDyn) or the kept FE modes (BeamDyn).
   std::vector<std::vector<int>> shape_dofs;
-  std::vector<MatX> root_moment_gains;  ///< per blade, 2 × shapes: (m_y flap, m_z edge) at the root
-  int teeter = -1;                      ///< teeter DOF (2 blades), −1 without one
+  int teeter = -1;  ///< teeter DOF (2 blades), −1 without one
 };
 
 /// The NumBl blades on the hub (pitch joints frozen at BlPitch, twisted ElastoDyn shapes, tip masses).

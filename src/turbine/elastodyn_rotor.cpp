@@ -3,7 +3,6 @@
 #include <numbers>
 
 #include "src/base/error.hpp"
-#include "src/shapes/beam_moment.hpp"
 #include "src/turbine/beamdyn_blade.hpp"
 #include "src/turbine/elastodyn_blade_shapes.hpp"
 #include "src/turbine/elastodyn_fem_shapes.hpp"
@@ -95,8 +94,6 @@ RotorParts addBlades(Builder& b, const RotorHub& hub) {
       dofs[s] = d;
     }
     out.shape_dofs.push_back(dofs);
-    // An FE blade's root moment from its elements' resultants: its tabulated modes have no curvature there.
-    out.root_moment_gains.push_back(fe ? fe->root_moment_gains : beamMomentGains(beam.props, beam.shapes, 0.0));
 
     if (tip_mass > 0) {
       Body tip;

@@ -1,8 +1,8 @@
 // The root bending moments of an FE blade (fem::blade6MomentGains, the elements' stress resultants) on
 // certification Test26's BeamDyn blade (NREL 5MW): for the first flap and edge modes, against the moment
 // of the mode's inertial loads ω² M φ about the root — the clamped blade's equilibrium, a second path
-// through the mass matrix and the eigenvalue instead of the stiffness — and the deck's RootMFlp/RootMEdg
-// channels built from them.
+// through the mass matrix and the eigenvalue instead of the stiffness. (The deck's RootMFlp/RootMEdg
+// channels sum the loads instead, as ElastoDyn: tests/unit/test_subtree_load_moment.cpp.)
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,7 +12,6 @@
 #include "src/fem/blade6_moments.hpp"
 #include "src/io/openfast/beamdyn/beamdyn_input.hpp"
 #include "src/turbine/beamdyn_blade.hpp"
-#include "src/turbine/elastodyn_model.hpp"
 
 namespace whirl {
 namespace {
@@ -54,23 +53,6 @@ TEST(BeamDynRootMoment, Test26BladeResultantsEqualTheInertialLoadsMoment) {
   // Flap 1 bends the blade towards +y (the moment of a tip deflection of +1 m is positive), edge 1 towards +z.
   EXPECT_GT(G(0, column(b, "flap 1")), 1e6);
   EXPECT_GT(G(1, column(b, "edge 1")), 1e6);
-}
-
-TEST(BeamDynRootMoment, DeckChannelsAreTheBladesResultants) {
-  const io::BeamDynInput bd = io::readBeamDyn(kDeck + "5MW_Baseline/NRELOffshrBsline5MW_BeamDyn.dat");
-  const fem::Blade6Body b = fem::blade6Body(blade6Input(bd), {60, 8});  // the deck's blade_elements, blade_modes
-  const MatX G = fem::blade6MomentGains(b, 0.0);
-  const Model m = readElastoDynModel(kDeck + "Test26.fst", {"CompAero=0", "CompInflow=0"});
-  for (const auto& [channel, row] : {std::pair<std::string, int>{"RootMFlp1", 0}, {"RootMEdg1", 1}}) {
-    const Output& o = m.outputs[static_cast<std::size_t>(*m.findOutput(channel))];
-    for (const char* mode : {"flap 1", "edge 1"}) {
-      double gain = 0;
-      for (const auto& [dof, g] : o.terms)
-        if (dof == *m.findDof(std::string("blade 1 ") + mode)) gain = g;
-      const double want = G(row, column(b, mode));
-      EXPECT_NEAR(gain, want, 1e-12 * G.row(row).cwiseAbs().maxCoeff()) << channel << " " << mode;
-    }
-  }
 }
 
 }  // namespace
