@@ -63,7 +63,7 @@ Vec3T<T> subtreeLoadMoment(const Model& m, Workspace<T>& ws, const VecXT<T>& q, 
   const T law = generatorLawTorque(m, qd);
   for (const PointLoad& l : m.point_loads) {
     if (!inSubtree(m, l.body, root)) continue;
-    const T scale = u ? pointLoadScale(m, l, *u, law) : T(l.input >= 0 ? 0.0 : 1.0);
+    const T scale = pointLoadScale(m, l, *u, law);
     const Mat3T<T>& R = ws.frames[l.body].R;
     const Vec3T<T> Fw = l.body_frame ? Vec3T<T>(R * l.force.cast<T>()) : Vec3T<T>(l.force.cast<T>());
     const Vec3T<T> Mw = l.body_frame ? Vec3T<T>(R * l.moment.cast<T>()) : Vec3T<T>(l.moment.cast<T>());
@@ -86,8 +86,9 @@ void evaluateOutputs(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const 
   if (points || rotor || subtree) forwardKinematics(m, ws, q, qd, qdd, pass);
   RotorTotals<T> totals;
   T generator_torque(0), generator_speed(0), rotor_speed(0);
+  if (subtree && !u) throw ComputeError("load outputs need the inputs (wind speed, applied loads)");
   if ((rotor || subtree) && m.aero.active()) {
-    if (!u) throw ComputeError("rotor and load outputs need the inputs (wind speed, generator torque)");
+    if (!u) throw ComputeError("rotor outputs need the inputs (wind speed, generator torque)");
     addAeroLoads(m, ws, q, *u, frozen, nullptr, ws.scratch, 0, &totals);
     rotor_speed = ws.frames[m.aero.hub_body].w.dot(ws.frames[m.aero.hub_body].R.col(0));
   }

@@ -77,6 +77,18 @@ Output pointOutput(std::string name, std::string unit, int order, int body, int 
   return o;
 }
 
+// The moment about `body`'s origin of the loads on it and the bodies it carries, along `axis` (body axes).
+Output subtreeMoment(std::string name, int body, const Vec3& axis) {
+  Output o;
+  o.name = std::move(name);
+  o.unit = "N m";
+  o.kind = OutputKind::SubtreeLoadMoment;
+  o.body = body;
+  o.frame_body = body;
+  o.direction = axis;
+  return o;
+}
+
 void addOutputs(Builder& b, const TowerParts& tower, const DrivetrainParts& dt, const RotorParts& rotor) {
   std::vector<Output>& y = b.model().outputs;
   const double ratio = b.ed.drivetrain.GBRatio;
@@ -88,44 +100,34 @@ void addOutputs(Builder& b, const TowerParts& tower, const DrivetrainParts& dt, 
   y.push_back(pointOutput("TTDspSS", "m", 0, dt.bearing, -1, -1, Vec3::UnitY()));
   y.push_back(pointOutput("YawBrTAxp", "m/s^2", 2, dt.bearing, -1, dt.bearing, Vec3::UnitX()));
   y.push_back(pointOutput("YawBrTAyp", "m/s^2", 2, dt.bearing, -1, dt.bearing, Vec3::UnitY()));
-  // Tower body: y = −Y (side-to-side), z = X (fore-aft); m_z bends the top downwind, −m_y to +Y.
-  std::vector<std::pair<int, double>> fa, ss;
-  for (int i = 0; i < 4; ++i) {
-    fa.push_back({tower.dofs[i], tower.base_moment_gains(1, i)});
-    ss.push_back({tower.dofs[i], -tower.base_moment_gains(0, i)});
-  }
-  y.push_back(dofOutput("TwrBsMFA", "N m", 0, fa));
-  y.push_back(dofOutput("TwrBsMSS", "N m", 0, ss));
+  // Tower body: x up, y = −Y (side-to-side), z = X (fore-aft). The base moments are summed from the loads on
+  // the tower and everything it carries, as ElastoDyn's (the curvature of the tower's polynomial shapes at
+  // the base gave 68 % of the NREL 5MW's fore-aft moment at 11 m/s): TwrBsMFA bends the top towards +X
+  // (about +Y, the body's −y), TwrBsMSS towards +Y (about −X, the body's −z).
+  y.push_back(subtreeMoment("TwrBsMFA", tower.body, -Vec3::UnitY()));
+  y.push_back(subtreeMoment("TwrBsMSS", tower.body, -Vec3::UnitZ()));
   // ElastoDyn's RootMFlp = RootMyb and RootMEdg = RootMxb: the moment at the blade root of the loads on the
   // blade (aerodynamic, gravity, inertia: MomH0B, ElastoDyn.f90 CalcOutput) about the pitched axes j2 and
   // j1, which are the blade body's z and y. Summed from the loads, as ElastoDyn does: the curvature of the
   // polynomial shapes at the root, EI φ''(0), gave 37 % (flap) and 63 % (edge) of it (docs/theory/fe-blades.md).
   for (std::size_t k = 0; k < rotor.blades.size(); ++k) {
     const int body = rotor.blades[k].body;
-    for (const auto& [name, axis] :
-         {std::pair<const char*, Vec3>{"RootMFlp", Vec3::UnitZ()}, {"RootMEdg", Vec3::UnitY()}}) {
-      Output o;
-      o.name = name + std::to_string(k + 1);
-      o.unit = "N m";
-      o.kind = OutputKind::SubtreeLoadMoment;
-      o.body = body;
-      o.frame_body = body;
-      o.direction = axis;
-      o.blade = static_cast<int>(k);  // rotating frame
-      y.push_back(std::move(o));
-    }
+    y.push_back(subtreeMoment("RootMFlp" + std::to_string(k + 1), body, Vec3::UnitZ()));
+    y.back().blade = static_cast<int>(k);  // rotating frame
+    y.push_back(subtreeMoment("RootMEdg" + std::to_string(k + 1), body, Vec3::UnitY()));
+    y.back().blade = static_cast<int>(k);
   }
   if (rotor.teeter >= 0) y.push_back(dofOutput("TeetDefl", "rad", 0, {{rotor.teeter, 1.0}}));
   // The channels ROSCO's robust scheduling and users read from OpenFAST's .lin files (issue 41):
   // ElastoDyn's BldPitch1..3 (the pitch coordinates, driven by the pitch inputs), TwrBsMyt (the tower
-  // base fore-aft moment; here the elastic moment EI·Σ φ''(0) q of the tower shapes, as TwrBsMFA) and
+  // base fore-aft moment about the base frame's yt, which is TwrBsMFA) and
   // NcIMURAys (the nacelle's angular acceleration about its lateral axis ys, which the tilt leaves
   // horizontal: the nacelle body's y).
   for (size_t k = 0; k < rotor.pitch.size(); ++k) {
     y.push_back(dofOutput("BldPitch" + std::to_string(k + 1), "rad", 0, {{rotor.pitch[k], 1.0}}));
     y.back().blade = static_cast<int>(k);  // rotating frame, as OpenFAST flags it
   }
-  y.push_back(dofOutput("TwrBsMyt", "N m", 0, fa));
+  y.push_back(subtreeMoment("TwrBsMyt", tower.body, -Vec3::UnitY()));  // about yt: as TwrBsMFA
   Output imu;
   imu.name = "NcIMURAys";
   imu.unit = "rad/s^2";

@@ -42,15 +42,15 @@
 /// azimuth rate]; "RotSpeed" [rad/s, generator azimuth + drivetrain rates]; "NacYaw" [rad]; "TTDspFA",
 /// "TTDspSS" [m, tower-top (yaw bearing origin) position along ground X, Y]; "YawBrTAxp", "YawBrTAyp"
 /// [m/s², its inertial acceleration along the yaw bearing's x, y axes, which tilt with the tower top];
-/// "TeetDefl" [rad, 2 blades]; "TwrBsMFA", "TwrBsMSS" [N m, tower-base moments from the curvature, bending the top
-/// towards +X, +Y]; "RootMFlp k", "RootMEdg k" (no space) [N m, ElastoDyn's RootMyb and RootMxb: the moment at the
-/// blade root of the loads on the blade (inertia, gravity, the quasi-steady element loads, a tip mass) about the
-/// pitched axes j2 and j1 (the blade body's z and y); rotating frame] (OutputKind::SubtreeLoadMoment); with a platform
-/// "PtfmSurge", "PtfmSway", "PtfmHeave" [m], "PtfmRoll", "PtfmPitch", "PtfmYaw" [rad], their rates and accelerations
-/// "PtfmTVxi" … "PtfmTAzi", and the platform's angular velocity and acceleration about the ground axes
-/// "PtfmRVxi" … "PtfmRAzi" (elastodyn_parts.hpp addPlatformOutputs).
-/// Springs: yaw (YawSpr, YawDamp about YawNeut, from ServoDyn), drivetrain (DTTorSpr, DTTorDmp),
-/// teeter (TeetMod = 1: stops and damper, each linearized on the piece of its law that holds at TeetDefl).
+/// "TeetDefl" [rad, 2 blades]; "TwrBsMFA", "TwrBsMSS" [N m, tower-base moments of the loads on the tower and all it
+/// carries, bending the top towards +X (ElastoDyn's TwrBsMyt), +Y]; "RootMFlp k", "RootMEdg k" (no space) [N m,
+/// ElastoDyn's RootMyb and RootMxb: the moment at the blade root of the loads on the blade (inertia, gravity, the
+/// quasi-steady element loads, a tip mass) about the pitched axes j2 and j1 (the blade body's z and y); rotating frame]
+/// (OutputKind::SubtreeLoadMoment); with a platform "PtfmSurge", "PtfmSway", "PtfmHeave" [m], "PtfmRoll", "PtfmPitch",
+/// "PtfmYaw" [rad], their rates and accelerations "PtfmTVxi" … "PtfmTAzi", and the platform's angular velocity and
+/// acceleration about the ground axes "PtfmRVxi" … "PtfmRAzi" (elastodyn_parts.hpp addPlatformOutputs). Springs: yaw
+/// (YawSpr, YawDamp about YawNeut, from ServoDyn), drivetrain (DTTorSpr, DTTorDmp), teeter (TeetMod = 1: stops and
+/// damper, each linearized on the piece of its law that holds at TeetDefl).
 ///
 /// ElastoDyn conventions kept on purpose: the tower top sits at the tower DOF values themselves (not at
 /// the polynomials' tip values, which need not sum to exactly 1); the blades' twisted shapes come from

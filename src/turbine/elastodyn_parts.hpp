@@ -43,7 +43,6 @@ struct TowerParts {
   int body = -1;
   int top = -1;               ///< index of the tower-top point
   std::array<int, 4> dofs{};  ///< FA 1, SS 1, FA 2, SS 2
-  MatX base_moment_gains;     ///< 2 × 4: (m_y, m_z) at the base from the curvature (beam_moment.hpp)
 };
 
 /// The platform (elastodyn_platform.cpp): a rigid body at the platform reference point, on a free joint

@@ -3,7 +3,6 @@
 
 #include "src/base/error.hpp"
 #include "src/shapes/beam.hpp"
-#include "src/shapes/beam_moment.hpp"
 #include "src/turbine/elastodyn_blade_shapes.hpp"
 #include "src/turbine/elastodyn_fem_shapes.hpp"
 #include "src/turbine/elastodyn_parts.hpp"
@@ -104,7 +103,6 @@ TowerParts addTower(Builder& b, const PlatformParts& platform) {
   out.top = 0;
   const bool on[4] = {ed.dof.TwFADOF1, ed.dof.TwSSDOF1, ed.dof.TwFADOF2, ed.dof.TwSSDOF2};
   for (int i = 0; i < 4; ++i) out.dofs[i] = b.addDof(shapes[i]->name, out.body, DofKind::Elastic, i, on[i]);
-  out.base_moment_gains = beamMomentGains(p, shapes, 0.0);
   return out;
 }
 

@@ -67,18 +67,19 @@ TEST(OffshoreModel, PlatformOutputsAreTheCoordinatesAndTheAngularVelocity) {
   const double pitch = 0.1;
   Workspace<double> ws(m);
   VecX q(m.ndof()), qd = VecX::Zero(m.ndof()), qdd = VecX::Zero(m.ndof()), y(m.noutput());
+  const VecX u = VecX::Zero(m.ninput());  // the load outputs (RootMFlp …) read the inputs
   for (int i = 0; i < m.ndof(); ++i) q(i) = m.dofs[i].value;
   ASSERT_NEAR(q(*m.findDof("platform pitch")), pitch, 1e-15);
   auto out = [&](const char* name) { return y(*m.findOutput(name)); };
   q(*m.findDof("platform surge")) = 2.5;
-  evaluateOutputs(m, ws, q, qd, qdd, y);
+  evaluateOutputs(m, ws, q, qd, qdd, y, &u);
   EXPECT_EQ(out("PtfmSurge"), 2.5);
   EXPECT_EQ(out("PtfmPitch"), pitch);
   EXPECT_EQ(m.outputs[*m.findOutput("PtfmPitch")].unit, "rad");
   qd(*m.findDof("platform roll")) = 1.0;
   qd(*m.findDof("platform heave")) = 0.5;
   qdd(*m.findDof("platform sway")) = -3.0;
-  evaluateOutputs(m, ws, q, qd, qdd, y);
+  evaluateOutputs(m, ws, q, qd, qdd, y, &u);
   EXPECT_EQ(out("PtfmTVzi"), 0.5);
   EXPECT_EQ(out("PtfmTAyi"), -3.0);
   EXPECT_NEAR(out("PtfmRVxi"), std::cos(pitch), 1e-14);

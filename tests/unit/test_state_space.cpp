@@ -69,7 +69,7 @@ TEST(StateSpace, OutputMatricesMatchDifferencesThroughTheEquationsOfMotion) {
   Workspace<double> ws(m);
   auto outputs = [&](const VecX& q, const VecX& qd, const VecX& u) {
     VecX y(m.noutput());
-    evaluateOutputs(m, ws, q, qd, accelerations(m, q, qd, u), y);
+    evaluateOutputs(m, ws, q, qd, accelerations(m, q, qd, u), y, &u);
     return y;
   };
   const int n = static_cast<int>(lin.dofs.size());

@@ -76,6 +76,74 @@ TEST(SubtreeLoadMoment, PitchAxisComponentIsThePitchJointsGeneralizedForce) {
   }
 }
 
+// The yaw joint carries the nacelle, drivetrain and rotor: the moment of their loads about the yaw axis is
+// the yaw coordinate's generalized force, less its spring and damper (ServoDyn YawSpr, YawDamp: a load on
+// the subtree's own joint, not on its bodies). With the generator torque (law + input) and the rotor thrust
+// and torque inputs, whose loads lie in the subtree.
+TEST(SubtreeLoadMoment, YawAxisComponentIsTheYawCoordinatesGeneralizedForce) {
+  Model m = readElastoDynModel(kCases + "nrel5mw/Main_Aero.fst");
+  const int yaw = m.roles.yaw_dof;
+  ASSERT_GE(yaw, 0);
+  const int nacelle = m.dofs[static_cast<std::size_t>(yaw)].body;
+  Output o;
+  o.name = "yaw moment";
+  o.kind = OutputKind::SubtreeLoadMoment;
+  o.body = nacelle;
+  o.frame_body = nacelle;
+  o.direction = m.bodies[static_cast<std::size_t>(nacelle)].axis;
+  m.outputs.push_back(o);
+  OperatingCondition c;
+  c.rotor_speed = 11 * kPi / 30;
+  c.wind_speed = 10;
+  c.collective_pitch = 0.01;
+  const OperatingPoint op = initialPoint(m, c);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> d(-1, 1);
+  VecX q = op.q, qd = op.qd, qdd = op.qdd, u = op.u;
+  for (int i = 0; i < m.ndof(); ++i) {
+    q(i) += 0.01 * d(rng);
+    qd(i) += 0.03 * d(rng);
+    qdd(i) = 0.2 * d(rng);
+  }
+  u(*m.findInput("generator torque")) = 2e4;
+  u(*m.findInput("rotor thrust")) = 3e5;
+  u(*m.findInput("rotor torque")) = 1e6;
+  Workspace<double> ws(m);
+  VecX e(m.ndof());
+  residual(m, ws, q, qd, qdd, u, e);
+  double spring = 0;
+  for (const DofSpring& s : m.springs)
+    if (s.dof == yaw) spring += s.k * (q(yaw) - s.q0) + s.c * qd(yaw);
+  ASSERT_NE(spring, 0.0);
+  const double y = outputsAt(m, q, qd, qdd, u)(m.noutput() - 1);
+  EXPECT_NEAR(y, e(yaw) + spring, 1e-10 * std::abs(spring));
+  EXPECT_GT(std::abs(y), 1e4);
+}
+
+// The tower at rest, undeflected: a tower-top force F adds F × the tower height (TowerHt 87.6 m above
+// TowerBsHt 0, the deck's) to the base moment that bends the top its way; the weights' moment is the rest.
+TEST(SubtreeLoadMoment, TowerTopForceAddsItsMomentAtTheBase) {
+  const Model m = readElastoDynModel(kCases + "nrel5mw/Main_Onshore.fst");
+  OperatingCondition c;
+  c.rotor_speed = 0;
+  const OperatingPoint op = initialPoint(m, c);
+  VecX q = op.q;
+  for (int i = 0; i < m.ndof(); ++i)
+    if (m.dofs[static_cast<std::size_t>(i)].kind == DofKind::Elastic) q(i) = 0;
+  const VecX zero = VecX::Zero(m.ndof());
+  const VecX y0 = outputsAt(m, q, zero, zero, op.u);
+  for (const auto& [input, channel] :
+       {std::pair<std::string, std::string>{"tower-top force", "TwrBsMFA"}, {"tower-top side force", "TwrBsMSS"}}) {
+    VecX u = op.u;
+    u(*m.findInput(input)) = 1e5;
+    const VecX y = outputsAt(m, q, zero, zero, u);
+    const int k = output(m, channel);
+    EXPECT_NEAR(y(k) - y0(k), 1e5 * 87.6, 1e-6) << channel;
+  }
+  // ElastoDyn's TwrBsMyt is the fore-aft one.
+  EXPECT_EQ(y0(output(m, "TwrBsMyt")), y0(output(m, "TwrBsMFA")));
+}
+
 // Rotor at rest, blade 1 horizontal, undeflected: the loads are the blade's weight, whose moment about the
 // root is g × its first mass moment, at right angles to the span (flap and edge components only).
 TEST(SubtreeLoadMoment, HorizontalBladeAtRestCarriesItsWeightsMoment) {
