@@ -93,8 +93,8 @@ TEST(CaseFeBladeAero, FeBladesOfTheExampleRotorHaveItsAeroelasticModes) {
   for (std::size_t k = 0; k < a.size(); ++k) {
     // The FE blade's modes converge to the exact cantilever shapes with the mesh (20 elements: measured
     // 2e-4 in frequency, 1e-3 in damping); the aerodynamic damping follows the shapes at the stations.
-    EXPECT_NEAR(b[k].freq_hz, a[k].freq_hz, 1e-3 * a[k].freq_hz) << "root " << k;
-    EXPECT_NEAR(b[k].damping, a[k].damping, 1e-2 * std::abs(a[k].damping)) << "root " << k;
+    EXPECT_NEAR(b[k].freq_hz, a[k].freq_hz, 5e-4 * a[k].freq_hz) << "root " << k;
+    EXPECT_NEAR(b[k].damping, a[k].damping, 3e-3 * std::abs(a[k].damping)) << "root " << k;
   }
   // Flap modes in attached flow: strongly damped by the air (structural damping is zero in both).
   EXPECT_GT(a[0].damping, 0.05);
