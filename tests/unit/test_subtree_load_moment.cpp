@@ -37,6 +37,34 @@ VecX outputsAt(const Model& m, const VecX& q, const VecX& qd, const VecX& qdd, c
   return y;
 }
 
+// Adds an output: the moment of the loads of `body`'s subtree about its origin, along `axis` (body axes).
+void addSubtreeOutput(Model& m, int body, const Vec3& axis) {
+  Output o;
+  o.name = "subtree moment";
+  o.kind = OutputKind::SubtreeLoadMoment;
+  o.body = body;
+  o.frame_body = body;
+  o.direction = axis;
+  m.outputs.push_back(o);
+}
+
+// A state around op's: every coordinate but `fixed` moved by up to `dq`, rates by 2.5 dq, accelerations up to 15 dq.
+struct State {
+  VecX q, qd, qdd;
+};
+State randomState(const Model& m, const OperatingPoint& op, unsigned seed, double dq, int fixed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> d(-1, 1);
+  State s{op.q, op.qd, op.qdd};
+  for (int i = 0; i < m.ndof(); ++i) {
+    if (i == fixed) continue;
+    s.q(i) += dq * d(rng);
+    s.qd(i) += 2.5 * dq * d(rng);
+    s.qdd(i) = 15 * dq * d(rng);
+  }
+  return s;
+}
+
 // The moment of blade 1's loads about its pitch axis (−x of the blade body, the revolute joint's axis) is
 // the pitch joint's generalized force: the residual's row, projected through the partial angular velocities,
 // at a random state — moving frames, elastic rates and accelerations, wind — with aerodynamics.
@@ -44,27 +72,13 @@ TEST(SubtreeLoadMoment, PitchAxisComponentIsThePitchJointsGeneralizedForce) {
   for (const char* deck : {"nrel5mw/Main_Aero.fst", "nrel5mw_beamdyn/Test26.fst"}) {
     Model m = readElastoDynModel(kCases + deck);
     const int pitch = *m.findDof("blade 1 pitch");
-    Output o;
-    o.name = "pitch moment";
-    o.kind = OutputKind::SubtreeLoadMoment;
-    o.body = m.dofs[static_cast<std::size_t>(pitch)].body;
-    o.frame_body = o.body;
-    o.direction = -Vec3::UnitX();
-    m.outputs.push_back(o);
+    addSubtreeOutput(m, m.dofs[static_cast<std::size_t>(pitch)].body, -Vec3::UnitX());
     OperatingCondition c;
     c.rotor_speed = 11 * kPi / 30;
     c.wind_speed = 9;
     c.collective_pitch = 0.02;
     const OperatingPoint op = initialPoint(m, c);
-    std::mt19937 rng(7);
-    std::uniform_real_distribution<double> d(-1, 1);
-    VecX q = op.q, qd = op.qd, qdd = op.qdd;
-    for (int i = 0; i < m.ndof(); ++i) {
-      if (i == pitch) continue;
-      q(i) += 0.02 * d(rng);
-      qd(i) += 0.05 * d(rng);
-      qdd(i) = 0.3 * d(rng);
-    }
+    const auto [q, qd, qdd] = randomState(m, op, 7, 0.02, pitch);
     Workspace<double> ws(m);
     VecX e(m.ndof());
     residual(m, ws, q, qd, qdd, op.u, e);
@@ -85,26 +99,14 @@ TEST(SubtreeLoadMoment, YawAxisComponentIsTheYawCoordinatesGeneralizedForce) {
   const int yaw = m.roles.yaw_dof;
   ASSERT_GE(yaw, 0);
   const int nacelle = m.dofs[static_cast<std::size_t>(yaw)].body;
-  Output o;
-  o.name = "yaw moment";
-  o.kind = OutputKind::SubtreeLoadMoment;
-  o.body = nacelle;
-  o.frame_body = nacelle;
-  o.direction = m.bodies[static_cast<std::size_t>(nacelle)].axis;
-  m.outputs.push_back(o);
+  addSubtreeOutput(m, nacelle, m.bodies[static_cast<std::size_t>(nacelle)].axis);
   OperatingCondition c;
   c.rotor_speed = 11 * kPi / 30;
   c.wind_speed = 10;
   c.collective_pitch = 0.01;
   const OperatingPoint op = initialPoint(m, c);
-  std::mt19937 rng(11);
-  std::uniform_real_distribution<double> d(-1, 1);
-  VecX q = op.q, qd = op.qd, qdd = op.qdd, u = op.u;
-  for (int i = 0; i < m.ndof(); ++i) {
-    q(i) += 0.01 * d(rng);
-    qd(i) += 0.03 * d(rng);
-    qdd(i) = 0.2 * d(rng);
-  }
+  const auto [q, qd, qdd] = randomState(m, op, 11, 0.01, -1);
+  VecX u = op.u;
   u(*m.findInput("generator torque")) = 2e4;
   u(*m.findInput("rotor thrust")) = 3e5;
   u(*m.findInput("rotor torque")) = 1e6;
