@@ -11,7 +11,9 @@
 #   build-fuzz/fuzz/<harness> build-fuzz/findings/<harness>/crash-…
 # The corpus each run grows is kept in build-fuzz/corpus/<harness> for the next run.
 # Everything runs under `nice -n 19`; the build uses FUZZ_BUILD_JOBS (default 2) jobs.
-# FUZZ_RUNS=N also stops each harness after N executions.
+# FUZZ_RUNS=N also stops each harness after N executions. FUZZ_TIMEOUT=S counts an input as a hang
+# after S seconds instead of 5: libFuzzer measures wall-clock time, and a niced campaign beside
+# compiler jobs can stall that long on an input that runs in under a second on its own.
 # The build is the one sanitized build of scripts/sanitized-build.sh (which also serves the test suite:
 # scripts/sanitized-tests.sh); FUZZ_BUILD_DIR=DIR uses another folder configured with -DWHIRL_FUZZ=ON.
 set -euo pipefail
@@ -50,7 +52,7 @@ for h in "${harnesses[@]}"; do
   extra=()
   if [ "$h" = fuzz_openfast_parse ]; then extra=(-max_len=6000); fi
   set +e
-  nice -n 19 "$out/fuzz/$h" "$corpus" "$out/seeds/$h" -max_total_time="$seconds" -timeout=5 -rss_limit_mb=2048 \
+  nice -n 19 "$out/fuzz/$h" "$corpus" "$out/seeds/$h" -max_total_time="$seconds" -timeout="${FUZZ_TIMEOUT:-5}" -rss_limit_mb=2048 \
     -print_final_stats=1 -artifact_prefix="$findings/" ${FUZZ_RUNS:+-runs=$FUZZ_RUNS} "${extra[@]}" > "$log" 2>&1
   rc=$?
   set -e
