@@ -33,12 +33,17 @@ void addAeroStateLoads(const Model& m, Workspace<double>& ws, const VecX& q, con
                        VecX& zdot) {
   b.e_ua.setZero();
   b.e_qs.setZero();
-  // The quasi-steady loads residual() added, on the frozen wake of its own induction: the same loads to
-  // the BEM root's tolerance (the frozen-wake linearization rests on it).
-  addUnsteadyAeroLoads<double>(m, ws, q, qd, u, bem, nullptr, b.e_qs, nullptr);
+  // e_qs: the quasi-steady loads residual() added, on the frozen wake of its own induction: the same loads
+  // to the BEM root's tolerance (the frozen-wake linearization rests on it). On that same wake they come
+  // out of the pass over the elements that forms the unsteady loads.
   // The elements' root searches of the dynamic inflow keep the simulation's tolerance (BemRoot::tolerance).
   const double tolerance = ws.bem.empty() ? 0.0 : ws.bem.front().tolerance;
-  addUnsteadyAeroLoads<double>(m, ws, q, qd, u, held.empty() ? bem : held, &z, b.e_ua, &zdot);
+  if (held.empty()) {
+    addUnsteadyAeroLoads<double>(m, ws, q, qd, u, bem, &z, b.e_ua, &zdot, nullptr, nullptr, -1, &b.e_qs);
+  } else {
+    addUnsteadyAeroLoads<double>(m, ws, q, qd, u, bem, nullptr, b.e_qs, nullptr);
+    addUnsteadyAeroLoads<double>(m, ws, q, qd, u, held, &z, b.e_ua, &zdot);
+  }
   for (BemRoot& r : ws.bem) r.tolerance = tolerance;
   e += b.e_ua - b.e_qs;
 }

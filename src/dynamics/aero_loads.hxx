@@ -38,6 +38,10 @@ void addAeroLoads(const Model& m, Workspace<TK>& ws, const VecXT<TK>& q, const V
     record->thrust = record->torque = 0;
   }
   const detail::RotorInflow<TK, T> inflow{hub.r, disk, speed, wind_dir, weight, frozen};
+  if (totals) {  // skipped blades keep zero resultants
+    totals->blade_force.assign(am.blades.size(), Vec3T<T>::Zero());
+    totals->blade_moment.assign(am.blades.size(), Vec3T<T>::Zero());
+  }
   int index0 = 0;  // first element of the blade, over all blades
   for (std::size_t bi = 0; bi < am.blades.size(); ++bi) {
     const AeroBlade& blade = am.blades[bi];
@@ -67,8 +71,6 @@ void addAeroLoads(const Model& m, Workspace<TK>& ws, const VecXT<TK>& q, const V
     detail::bladeLoads(m, static_cast<int>(bi), index0, bm, inflow, ws.bem, store.sections, record, totals, sum);
     sum.project(m, ws, blade.body, e);
     if (totals) {
-      totals->blade_force.resize(am.blades.size(), Vec3T<T>::Zero());
-      totals->blade_moment.resize(am.blades.size(), Vec3T<T>::Zero());
       sum.resultant(f.R, totals->blade_force[bi], totals->blade_moment[bi]);
     }
     index0 += n;

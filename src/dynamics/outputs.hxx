@@ -1,4 +1,7 @@
 #pragma once
+#include <utility>
+#include <vector>
+
 #include "src/base/error.hpp"
 #include "src/dynamics/aero_loads.hpp"
 #include "src/dynamics/generator_torque.hpp"
@@ -100,6 +103,15 @@ void evaluateOutputs(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const 
       if (m.roles.generator_torque_input >= 0) generator_torque += (*u)(m.roles.generator_torque_input);
     }
   }
+  // One sum per cut body: a deck's flap and edge channels share their blade's, the tower's fore-aft
+  // and side-side channels the tower's (each sum runs over every body the cut carries).
+  std::vector<std::pair<int, Vec3T<T>>> cut_moments;
+  const auto cutMoment = [&](int root) -> const Vec3T<T>& {
+    for (const auto& [body, M] : cut_moments)
+      if (body == root) return M;
+    cut_moments.emplace_back(root, detail::subtreeLoadMoment(m, ws, q, qd, qdd, u, totals, root));
+    return cut_moments.back().second;
+  };
   for (int i = 0; i < m.noutput(); ++i) {
     const Output& o = m.outputs[i];
     if (o.kind == OutputKind::Rotor) {
@@ -119,8 +131,7 @@ void evaluateOutputs(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const 
       y(i) = s;
       continue;
     }
-    const Vec3T<T> p = o.kind == OutputKind::SubtreeLoadMoment
-                           ? detail::subtreeLoadMoment(m, ws, q, qd, qdd, u, totals, o.body)
+    const Vec3T<T> p = o.kind == OutputKind::SubtreeLoadMoment ? cutMoment(o.body)
                        : o.kind == OutputKind::Angular ? (o.order == 1 ? ws.frames[o.body].w : ws.frames[o.body].dw)
                                                        : detail::pointMotion(m, ws, o.body, o.point, o.order);
     const Vec3T<T> dir = o.frame_body >= 0 ? Vec3T<T>(ws.frames[o.frame_body].R * o.direction.cast<T>())
