@@ -2,6 +2,7 @@
 
 #include <cassert>
 
+#include "src/base/error.hpp"
 #include "src/dynamics/aero_loads.hpp"
 #include "src/dynamics/kinematics.hpp"
 #include "src/dynamics/outputs.hpp"
@@ -13,7 +14,11 @@ namespace {
 // Seeds direction k of column `col` (value ±1 sets, 0 clears), with the chain rule through the
 // frozen coordinates an input drives.
 void seed(const Model& m, JacobianWorkspace& jw, Wrt wrt, int col, int k, bool on) {
-  VecXT<ADChunk>& x = wrt == Wrt::Q ? jw.q : wrt == Wrt::Qd ? jw.qd : wrt == Wrt::Qdd ? jw.qdd : jw.u;
+  VecXT<ADChunk>& x = wrt == Wrt::Q     ? jw.q
+                      : wrt == Wrt::Qd  ? jw.qd
+                      : wrt == Wrt::Qdd ? jw.qdd
+                      : wrt == Wrt::Z   ? jw.z
+                                        : jw.u;
   x(col).derivatives()(k) = on ? 1.0 : 0.0;
   if (wrt != Wrt::U) return;
   for (const InputDofTarget& t : m.inputs[col].dofs) jw.q(t.dof).derivatives()(k) = on ? t.gain : 0.0;
@@ -29,9 +34,10 @@ void pointKinematics(const Model& m, JacobianWorkspace& jw, const VecX& q, const
   jw.kin_qdd = qdd;
 }
 
+// z (if given): the aerodynamic states, loaded into jw.z (Wrt::Z seeds them).
 template <class Eval>
 MatX jacobian(const Model& m, JacobianWorkspace& jw, const VecX& q, const VecX& qd, const VecX& qdd, const VecX& u,
-              Wrt wrt, const std::vector<int>& cols, VecXT<ADChunk>& f, Eval eval) {
+              Wrt wrt, const std::vector<int>& cols, VecXT<ADChunk>& f, Eval eval, const VecX* z = nullptr) {
   auto load = [](VecXT<ADChunk>& dst, const VecX& src) {
     for (Eigen::Index i = 0; i < src.size(); ++i) dst(i) = ADChunk(src(i));  // zero derivatives
   };
@@ -39,6 +45,10 @@ MatX jacobian(const Model& m, JacobianWorkspace& jw, const VecX& q, const VecX& 
   load(jw.qd, qd);
   load(jw.qdd, qdd);
   load(jw.u, u);
+  if (z) {
+    jw.z.resize(z->size());
+    load(jw.z, *z);
+  }
   pointKinematics(m, jw, q, qd, qdd);
   const int n = static_cast<int>(f.size());
   const int ncol = static_cast<int>(cols.size());
@@ -106,10 +116,12 @@ MatX residualJacobian(const Model& m, JacobianWorkspace& jw, const VecX& q, cons
 }
 
 MatX outputJacobian(const Model& m, JacobianWorkspace& jw, const VecX& q, const VecX& qd, const VecX& qdd,
-                    const VecX& u, Wrt wrt, const std::vector<int>& cols, const AeroInflow* frozen) {
+                    const VecX& u, Wrt wrt, const std::vector<int>& cols, const AeroInflow* frozen, const VecX* z) {
+  if (wrt == Wrt::Z && !z) throw ComputeError("output Jacobian with respect to the aerodynamic states without states");
   const AdPass pass{&jw.kin};
-  return jacobian(m, jw, q, qd, qdd, u, wrt, cols, jw.y,
-                  [&]() { evaluateOutputs(m, jw.ws, jw.q, jw.qd, jw.qdd, jw.y, &jw.u, frozen, pass); });
+  return jacobian(
+      m, jw, q, qd, qdd, u, wrt, cols, jw.y,
+      [&]() { evaluateOutputs(m, jw.ws, jw.q, jw.qd, jw.qdd, jw.y, &jw.u, frozen, pass, z ? &jw.z : nullptr); }, z);
 }
 
 }  // namespace whirl

@@ -14,7 +14,8 @@
 namespace whirl {
 
 /// The argument a Jacobian is taken with respect to.
-enum class Wrt { Q, Qd, Qdd, U };
+/// Z: the aerodynamic states of the outputs (outputJacobian with z only).
+enum class Wrt { Q, Qd, Qdd, U, Z };
 
 /// Reusable AD buffers (the AD workspace and AD copies of the arguments).
 struct JacobianWorkspace {
@@ -23,6 +24,7 @@ struct JacobianWorkspace {
   Workspace<double> kin;        ///< double kinematics at the point (constant frames, load-input columns)
   VecX kin_q, kin_qd, kin_qdd;  ///< the point kin was computed at (empty: not yet)
   VecXT<ADChunk> q, qd, qdd, u, e, y;
+  VecXT<ADChunk> z;  ///< the aerodynamic states (outputJacobian with z; dim 0 otherwise)
 };
 
 /// ∂e/∂(wrt)[:, cols] for all ndof rows, at (q, qd, qdd, u) (dims as in residual()).
@@ -38,7 +40,10 @@ MatX residualJacobian(const Model& model, JacobianWorkspace& jw, const VecX& q, 
 
 /// ∂y/∂(wrt)[:, cols] for all noutput rows (y = evaluateOutputs, src/dynamics/outputs.hpp).
 /// `frozen`: the induced velocities the aerodynamic rotor outputs hold (frozen wake), as for residualJacobian.
+/// `z` (if given, dim aeroStateCount; requires `frozen`): the aerodynamic states, whose loads the load outputs
+/// take (evaluateOutputs); Wrt::Z differentiates with respect to them (cols: indices into z).
 MatX outputJacobian(const Model& model, JacobianWorkspace& jw, const VecX& q, const VecX& qd, const VecX& qdd,
-                    const VecX& u, Wrt wrt, const std::vector<int>& cols, const AeroInflow* frozen = nullptr);
+                    const VecX& u, Wrt wrt, const std::vector<int>& cols, const AeroInflow* frozen = nullptr,
+                    const VecX* z = nullptr);
 
 }  // namespace whirl

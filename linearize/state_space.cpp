@@ -4,6 +4,7 @@
 
 #include "linearize/jacobian.hpp"
 #include "src/base/error.hpp"
+#include "src/dynamics/aero_unsteady.hpp"
 #include "src/dynamics/outputs.hpp"
 
 namespace whirl {
@@ -28,6 +29,19 @@ namespace {
 std::string firstOrderUnit(const std::string& name) {
   if (name.rfind("DBEMT v", 0) == 0) return "m/s";
   return name.rfind("UA x1 ", 0) == 0 || name.rfind("UA x2 ", 0) == 0 ? "rad" : "-";
+}
+
+// Where the aerodynamic states start among lin's first-order states (after the body states, HydroDyn's
+// radiation: linearize.cpp), or −1 when the linear model has none (quasi-steady aerodynamics).
+int aeroStatesStart(const Model& m, const LinearModel& lin) {
+  int nb = 0;
+  for (const BodyStateSpace& bs : m.body_states) nb += static_cast<int>(bs.A.rows());
+  const int nz = static_cast<int>(lin.first_order_names.size()), na = aeroStateCount(m.aero);
+  if (na == 0 || nz == nb) return -1;
+  if (nz != nb + na || lin.first_order_values.size() != nz)
+    throw ComputeError("state space: " + std::to_string(nz - nb) + " first-order states after the body states, " +
+                       std::to_string(na) + " aerodynamic states in the model");
+  return nb;
 }
 
 }  // namespace
@@ -99,7 +113,11 @@ StateSpaceModel stateSpace(const Model& m, const OperatingPoint& op, const Linea
   Workspace<double> ws(m);
   // The rotor outputs with the frozen wake of the point, as the linearization (linearize.cpp).
   const AeroInflow* frozen = m.aero.active() && m.aero.induction && !op.inflow.empty() ? &op.inflow : nullptr;
-  evaluateOutputs(m, ws, op.q, op.qd, op.qdd, y, &op.u, frozen);
+  // With the aerodynamic states in the model, the load outputs take their loads, as the equations of motion do.
+  const int z0 = aeroStatesStart(m, lin), nza = z0 >= 0 ? aeroStateCount(m.aero) : 0;
+  const VecX z = z0 >= 0 ? VecX(lin.first_order_values.segment(z0, nza)) : VecX();
+  const VecX* zp = z0 >= 0 ? &z : nullptr;
+  evaluateOutputs(m, ws, op.q, op.qd, op.qdd, y, &op.u, frozen, {}, zp);
   for (int i = 0; i < ny; ++i) {
     if (!std::isfinite(y(i)))
       throw ComputeError("output '" + m.outputs[i].name + "' is not finite at the operating point");
@@ -116,12 +134,17 @@ StateSpaceModel stateSpace(const Model& m, const OperatingPoint& op, const Linea
   s.D = MatX::Zero(ny, m.ninput());
   if (ny > 0) {
     JacobianWorkspace jw(m);
-    const MatX Hq = outputJacobian(m, jw, op.q, op.qd, op.qdd, op.u, Wrt::Q, lin.dofs, frozen);
-    const MatX Hqd = outputJacobian(m, jw, op.q, op.qd, op.qdd, op.u, Wrt::Qd, lin.dofs, frozen);
-    const MatX Hqdd = outputJacobian(m, jw, op.q, op.qd, op.qdd, op.u, Wrt::Qdd, lin.dofs, frozen);
-    const MatX Hu = outputJacobian(m, jw, op.q, op.qd, op.qdd, op.u, Wrt::U, inputs, frozen);
+    const MatX Hq = outputJacobian(m, jw, op.q, op.qd, op.qdd, op.u, Wrt::Q, lin.dofs, frozen, zp);
+    const MatX Hqd = outputJacobian(m, jw, op.q, op.qd, op.qdd, op.u, Wrt::Qd, lin.dofs, frozen, zp);
+    const MatX Hqdd = outputJacobian(m, jw, op.q, op.qd, op.qdd, op.u, Wrt::Qdd, lin.dofs, frozen, zp);
+    const MatX Hu = outputJacobian(m, jw, op.q, op.qd, op.qdd, op.u, Wrt::U, inputs, frozen, zp);
     s.C.leftCols(n) = Hq;
     s.C.middleCols(n, n) = Hqd;
+    if (zp) {  // the aerodynamic states' direct columns; other first-order states (radiation) enter no output
+      std::vector<int> states(static_cast<std::size_t>(nza));
+      for (int k = 0; k < nza; ++k) states[static_cast<std::size_t>(k)] = k;
+      s.C.middleCols(2 * n + z0, nza) = outputJacobian(m, jw, op.q, op.qd, op.qdd, op.u, Wrt::Z, states, frozen, zp);
+    }
     s.C += Hqdd * lin.A.middleRows(n, n);
     s.D = Hu + Hqdd * lin.B.middleRows(n, n);
   }

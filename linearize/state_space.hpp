@@ -7,7 +7,10 @@
 /// docs/dev/architecture.md), A and B from linearize(). Outputs
 /// y = h(q, q̇, q̈) (Model::outputs) are differentiated by AD: with H_• = ∂h/∂• on the active
 /// coordinates and q̈ taken from the equations of motion, q̈ = A_q̈ x + B_q̈ u (the rows of q̈ in A, B),
-///   C = [H_q, H_q̇, 0] + H_q̈ A_q̈,   D = H_u + H_q̈ B_q̈.
+///   C = [H_q, H_q̇, H_z] + H_q̈ A_q̈,   D = H_u + H_q̈ B_q̈,
+/// H_z = 0 but for the aerodynamic states (unsteady airfoil, dynamic inflow: linearize/unsteady_aero.hpp), with
+/// which the load outputs (rotor thrust and torque, subtree moments) take the states' loads at their operating
+/// values, as the equations of motion do (H_q, H_q̇, H_u then carry the unsteady loads' derivatives too).
 /// Inputs that drive frozen coordinates (pitch) enter H_u and B through those coordinates (jacobian.hpp).
 #include <optional>
 #include <string>

@@ -156,7 +156,8 @@ aero::UaSection uaSection(const AeroModel& am, const AeroStation& st) {
 template <class T>
 void addUnsteadyAeroLoads(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T>& qd, const VecXT<T>& u,
                           const AeroInflow& frozen, const VecXT<T>* z, VecXT<T>& e, VecXT<T>* zdot,
-                          std::vector<aero::UaInput<T>>* inputs, VecXT<T>* quasi_steady, int element, VecXT<T>* e_qs) {
+                          std::vector<aero::UaInput<T>>* inputs, VecXT<T>* quasi_steady, int element, VecXT<T>* e_qs,
+                          RotorTotals<T>* totals) {
   using std::sqrt;
   const AeroModel& am = m.aero;
   if (!am.active()) return;
@@ -170,6 +171,11 @@ void addUnsteadyAeroLoads(const Model& m, Workspace<T>& ws, const VecXT<T>& q, c
   const int zi_inflow = uaStateCount(am);  // the first dynamic-inflow state in z
   const T weight = dynamic ? inductionWeightOf(am, hub, speed, wind_dir) : T(1.0);
   if (inputs) inputs->clear();
+  if (totals) {  // blades without the element asked for keep zero resultants
+    totals->thrust = totals->torque = T(0.0);
+    totals->blade_force.assign(am.blades.size(), Vec3T<T>::Zero());
+    totals->blade_moment.assign(am.blades.size(), Vec3T<T>::Zero());
+  }
   int index = 0, zi = 0;  // element over all blades, first state of the next element with states
   for (std::size_t bi = 0; bi < am.blades.size(); ++bi) {
     const AeroBlade& blade = am.blades[bi];
@@ -269,6 +275,11 @@ void addUnsteadyAeroLoads(const Model& m, Workspace<T>& ws, const VecXT<T>& q, c
       const Vec3T<T> Fb = L.fx * g.xnb + L.fy * g.yab;
       const Vec3T<T> Mb = L.mz * g.znb;
       sum.addBody(pt, g.s, Fb, Mb, st.weight);
+      if (totals) {  // ground components about and along the rotor axis through the apex (addAeroLoads')
+        const Vec3T<T> Fg = L.fx * g.xn + L.fy * g.ya, Mg = L.mz * g.zn;
+        totals->thrust += st.weight * Fg.dot(disk);
+        totals->torque += st.weight * (Vec3T<T>(d.cross(Fg)) + Mg).dot(disk);
+      }
       if (e_qs) {  // the same loads where the element has neither states nor dynamic inflow
         if (z && (st.ua || dynamic)) {
           const aero::SectionLoads<T> Q = aero::frozenLoads(detail::bemStation(am, st, r), vx, vy, theta, ax, tn,
@@ -280,17 +291,19 @@ void addUnsteadyAeroLoads(const Model& m, Workspace<T>& ws, const VecXT<T>& q, c
       }
     }
     sum.project(m, ws, blade.body, e);
+    if (totals) sum.resultant(f.R, totals->blade_force[bi], totals->blade_moment[bi]);
     if (e_qs) sum_qs.project(m, ws, blade.body, *e_qs);
   }
 }
 
 template void addUnsteadyAeroLoads<double>(const Model&, Workspace<double>&, const VecX&, const VecX&, const VecX&,
                                            const AeroInflow&, const VecX*, VecX&, VecX*,
-                                           std::vector<aero::UaInput<double>>*, VecX*, int, VecX*);
+                                           std::vector<aero::UaInput<double>>*, VecX*, int, VecX*,
+                                           RotorTotals<double>*);
 template void addUnsteadyAeroLoads<ADChunk>(const Model&, Workspace<ADChunk>&, const VecXT<ADChunk>&,
                                             const VecXT<ADChunk>&, const VecXT<ADChunk>&, const AeroInflow&,
                                             const VecXT<ADChunk>*, VecXT<ADChunk>&, VecXT<ADChunk>*,
-                                            std::vector<aero::UaInput<ADChunk>>*, VecXT<ADChunk>*, int,
-                                            VecXT<ADChunk>*);
+                                            std::vector<aero::UaInput<ADChunk>>*, VecXT<ADChunk>*, int, VecXT<ADChunk>*,
+                                            RotorTotals<ADChunk>*);
 
 }  // namespace whirl

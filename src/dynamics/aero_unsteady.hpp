@@ -20,6 +20,7 @@
 
 #include "src/aero/unsteady_airfoil.hpp"
 #include "src/dynamics/aero_inflow.hpp"
+#include "src/dynamics/aero_loads.hpp"
 #include "src/dynamics/workspace.hpp"
 
 namespace whirl {
@@ -64,12 +65,14 @@ void removeUnsteadyAirfoils(AeroModel& am);
 /// `inputs` its UA inputs only. `e_qs` (if given) += the quasi-steady frozen-wake loads at the same kinematics
 /// (what z null gives in e), formed in the same pass over the elements: their frames once for both. A state of an
 /// element enters only that element's loads and rates, so its Jacobian columns come from that element alone
-/// (linearize/unsteady_aero.cpp).
+/// (linearize/unsteady_aero.cpp). `totals` (if given) receives the rotor thrust and torque of the loads in e and
+/// each blade's resultant force and moment about its body origin (ground components, as addAeroLoads forms them):
+/// the load outputs with the states (evaluateOutputs); blades without the element asked for keep zero resultants.
 template <class T>
 void addUnsteadyAeroLoads(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T>& qd, const VecXT<T>& u,
                           const AeroInflow& frozen, const VecXT<T>* z, VecXT<T>& e, VecXT<T>* zdot,
                           std::vector<aero::UaInput<T>>* inputs = nullptr, VecXT<T>* quasi_steady = nullptr,
-                          int element = -1, VecXT<T>* e_qs = nullptr);
+                          int element = -1, VecXT<T>* e_qs = nullptr, RotorTotals<T>* totals = nullptr);
 
 /// The airfoil of a station for the UA functions (the polar, its UA table and Cm rule, the chord).
 aero::UaSection uaSection(const AeroModel& am, const AeroStation& st);

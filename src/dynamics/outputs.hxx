@@ -1,9 +1,11 @@
 #pragma once
+#include <string>
 #include <utility>
 #include <vector>
 
 #include "src/base/error.hpp"
 #include "src/dynamics/aero_loads.hpp"
+#include "src/dynamics/aero_unsteady.hpp"
 #include "src/dynamics/generator_torque.hpp"
 #include "src/dynamics/kinematics.hpp"
 #include "src/dynamics/outputs.hpp"
@@ -79,7 +81,7 @@ Vec3T<T> subtreeLoadMoment(const Model& m, Workspace<T>& ws, const VecXT<T>& q, 
 
 template <class T>
 void evaluateOutputs(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T>& qd, const VecXT<T>& qdd,
-                     VecXT<T>& y, const VecXT<T>* u, const AeroInflow* frozen, const AdPass& pass) {
+                     VecXT<T>& y, const VecXT<T>* u, const AeroInflow* frozen, const AdPass& pass, const VecXT<T>* z) {
   bool points = false, rotor = false, subtree = false;
   for (const Output& o : m.outputs) {
     points = points || o.kind == OutputKind::Point || o.kind == OutputKind::Angular;
@@ -92,7 +94,16 @@ void evaluateOutputs(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const 
   if (subtree && !u) throw ComputeError("load outputs need the inputs (wind speed, applied loads)");
   if ((rotor || subtree) && m.aero.active()) {
     if (!u) throw ComputeError("rotor outputs need the inputs (wind speed, generator torque)");
-    addAeroLoads(m, ws, q, *u, frozen, nullptr, ws.scratch, 0, &totals);
+    if (z) {  // the loads of the states, as the equations of motion with them (linearize/unsteady_aero.hpp)
+      if (!frozen) throw ComputeError("load outputs with aerodynamic states need the frozen induction of the point");
+      if (z->size() != aeroStateCount(m.aero))
+        throw ComputeError("load outputs: " + std::to_string(z->size()) + " aerodynamic state values for " +
+                           std::to_string(aeroStateCount(m.aero)) + " states");
+      addUnsteadyAeroLoads<T>(m, ws, q, qd, *u, *frozen, z, ws.scratch, nullptr, nullptr, nullptr, -1, nullptr,
+                              &totals);
+    } else {
+      addAeroLoads(m, ws, q, *u, frozen, nullptr, ws.scratch, 0, &totals);
+    }
     rotor_speed = ws.frames[m.aero.hub_body].w.dot(ws.frames[m.aero.hub_body].R.col(0));
   }
   if (rotor) {
