@@ -79,7 +79,11 @@ TEST(CliExport, LinFilesReadBackIntoTheSameModes) {
   ASSERT_EQ(jb["modes"].size(), jo["modes"].size());
   for (size_t i = 0; i < jo["modes"].size(); ++i) {
     const double fb = jb["modes"][i]["freq_hz"], fo = jo["modes"][i]["freq_hz"];
-    EXPECT_NEAR(fb, fo, 1e-9 * std::max(fo, 1e-3)) << i;
+    // The rotor's rigid-body mode is a pair of eigenvalues at the origin (a Jordan block), fixed by the
+    // data only to √(ε‖A‖) (‖A‖₂ ≈ 2e5 here: 7e-6 rad/s, against its 6.5e-4 rad/s); the two paths agree on it
+    // to 1.1e-8 relative, depending on the machine's rounding, the other modes to 1e-11.
+    const bool rigid = jo["modes"][i]["rigid_body"];
+    EXPECT_NEAR(fb, fo, rigid ? 1e-6 * fo : 1e-9 * std::max(fo, 1e-3)) << i;
     const double zb = jb["modes"][i]["damping_ratio"], zo = jo["modes"][i]["damping_ratio"];
     EXPECT_NEAR(zb, zo, 1e-7) << i;
   }
