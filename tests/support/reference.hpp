@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <map>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -80,6 +81,15 @@ inline LinearModel linearizeAt(const Model& m, const VecX& q) {
 
 inline LinearModel linearizeAtEquilibrium(const Model& m) {
   return linearize(m, solveOperatingPoint(m, initialPoint(m)));
+}
+
+/// The NREL 5MW's rated point on model m, solved: 11.4 m/s, 12.1 rpm, pitch 0 (Jonkman et al. 2009).
+inline OperatingPoint nrel5mwRatedPoint(const Model& m) {
+  OperatingCondition c;
+  c.rotor_speed = 12.1 * std::numbers::pi / 30;
+  c.wind_speed = 11.4;
+  c.collective_pitch = 0;
+  return solveOperatingPoint(m, initialPoint(m, c));
 }
 
 inline int dofIndex(const LinearModel& l, const std::string& name) {

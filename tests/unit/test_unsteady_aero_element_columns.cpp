@@ -6,13 +6,13 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <numbers>
 
 #include "linearize/operating_point.hpp"
 #include "linearize/unsteady_aero.hpp"
 #include "src/dynamics/aero_unsteady.hpp"
 #include "src/dynamics/kinematics.hpp"
 #include "src/turbine/elastodyn_model.hpp"
+#include "tests/support/reference.hpp"
 
 namespace {
 
@@ -93,17 +93,6 @@ void expectSameBlocks(const Model& m, const OperatingPoint& op) {
   EXPECT_GT(now.Azz.cwiseAbs().maxCoeff(), 0.0);
 }
 
-// The NREL 5MW (cases/nrel5mw/Main_Aero.fst, UA_Mod 4 from the airfoil files' UA data) at rated, 11.4 m/s
-// and 12.1 rpm, pitch 0: three blades that see different flows (gravity, shear), so a state's columns
-// given to another element, of its blade or of another, differ from the reference.
-OperatingPoint ratedPoint(const Model& m) {
-  OperatingCondition c;
-  c.rotor_speed = 12.1 * std::numbers::pi / 30;
-  c.wind_speed = 11.4;
-  c.collective_pitch = 0;
-  return solveOperatingPoint(m, initialPoint(m, c));
-}
-
 std::string deck(const char* path) { return (std::filesystem::path(WHIRL_SOURCE_DIR) / path).string(); }
 
 TEST(UnsteadyAeroElementColumns, OneBladeRTestDeckWithUaAndDynamicInflow) {
@@ -115,24 +104,27 @@ TEST(UnsteadyAeroElementColumns, OneBladeRTestDeckWithUaAndDynamicInflow) {
   expectSameBlocks(m, solveOperatingPoint(m, initialPoint(m)));
 }
 
+// The NREL 5MW (cases/nrel5mw/Main_Aero.fst, UA_Mod 4 from the airfoil files' UA data) at rated, 11.4 m/s
+// and 12.1 rpm, pitch 0: three blades that see different flows (gravity, shear), so a state's columns
+// given to another element, of its blade or of another, differ from the reference.
 TEST(UnsteadyAeroElementColumns, Nrel5mwWithUa) {
   const Model m = readElastoDynModel(deck("cases/nrel5mw/Main_Aero.fst"), {"AFAeroMod=2", "UAMod=4"});
   ASSERT_EQ(uaStateCount(m.aero), 180);
-  expectSameBlocks(m, ratedPoint(m));
+  expectSameBlocks(m, test::nrel5mwRatedPoint(m));
 }
 
 TEST(UnsteadyAeroElementColumns, Nrel5mwWithUaAndDynamicInflow) {
   const Model m = readElastoDynModel(deck("cases/nrel5mw/Main_Aero.fst"),
                                      {"AFAeroMod=2", "UAMod=4", "WakeMod=2", "DBEMT_Mod=3"});
   ASSERT_EQ(aeroStateCount(m.aero), 180 + 228);
-  expectSameBlocks(m, ratedPoint(m));
+  expectSameBlocks(m, test::nrel5mwRatedPoint(m));
 }
 
 TEST(UnsteadyAeroElementColumns, ElementFilterGivesThatElementsShareOfTheLoads) {
   // The loads of all elements are the sum of each element's alone (in double, at the point's states).
   const Model m = readElastoDynModel(deck("cases/nrel5mw/Main_Aero.fst"),
                                      {"AFAeroMod=2", "UAMod=4", "WakeMod=2", "DBEMT_Mod=3"});
-  const OperatingPoint op = ratedPoint(m);
+  const OperatingPoint op = test::nrel5mwRatedPoint(m);
   const VecX z = unsteadyAeroSteadyStates(m, op);
   Workspace<double> ws(m);
   forwardKinematics(m, ws, op.q, op.qd, op.qdd);

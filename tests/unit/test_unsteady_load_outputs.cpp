@@ -8,7 +8,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <random>
 #include <string>
 #include <vector>
@@ -23,6 +22,7 @@
 #include "src/dynamics/outputs.hpp"
 #include "src/dynamics/residual.hpp"
 #include "src/turbine/elastodyn_model.hpp"
+#include "tests/support/reference.hpp"
 
 namespace whirl {
 namespace {
@@ -30,15 +30,6 @@ namespace {
 const std::string kDeck = std::string(WHIRL_SOURCE_DIR) + "/cases/nrel5mw/Main_Aero.fst";
 const std::vector<std::string> kUa = {"AFAeroMod=2", "UAMod=4"};
 const std::vector<std::string> kUaDbemt = {"AFAeroMod=2", "UAMod=4", "WakeMod=2", "DBEMT_Mod=3"};
-
-// Rated (11.4 m/s, 12.1 rpm, pitch 0), solved: the frozen induction the states' loads see.
-OperatingPoint ratedPoint(const Model& m) {
-  OperatingCondition c;
-  c.rotor_speed = 12.1 * std::numbers::pi / 30;
-  c.wind_speed = 11.4;
-  c.collective_pitch = 0;
-  return solveOperatingPoint(m, initialPoint(m, c));
-}
 
 VecX outputsAt(const Model& m, const OperatingPoint& op, const VecX& q, const VecX& qd, const VecX& qdd, const VecX& u,
                const VecX* z) {
@@ -85,7 +76,7 @@ void expectPitchAxisIdentity(const std::vector<std::string>& overrides) {
   o.frame_body = o.body;
   o.direction = -Vec3::UnitX();
   m.outputs.push_back(o);
-  const OperatingPoint op = ratedPoint(m);
+  const OperatingPoint op = test::nrel5mwRatedPoint(m);
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> d(-1, 1);
   VecX q = op.q, qd = op.qd, qdd = op.qdd;
@@ -157,7 +148,7 @@ struct OutputFunction {
 void expectOutputMatricesAreDifferences(const std::vector<std::string>& overrides) {
   const Model m = readElastoDynModel(kDeck, overrides);
   ASSERT_TRUE(m.body_states.empty());
-  const OperatingPoint op = ratedPoint(m);
+  const OperatingPoint op = test::nrel5mwRatedPoint(m);
   const LinearModel lin = linearize(m, op);
   const int n = static_cast<int>(lin.dofs.size()), nz = aeroStateCount(m.aero);
   ASSERT_EQ(static_cast<int>(lin.first_order_values.size()), nz);
