@@ -17,18 +17,10 @@
 #include <vector>
 
 #include "src/dynamics/aero_inflow.hpp"
+#include "src/dynamics/rotor_totals.hpp"
 #include "src/dynamics/workspace.hpp"
 
 namespace whirl {
-
-/// Rotor thrust [N] and torque [N m] of the blade elements (about and along the rotor axis through
-/// the apex), accumulated by addAeroLoads when asked; per blade (AeroModel::blades' order) the resultant
-/// force [N] of its elements and its moment about the blade body's origin [N m], ground components.
-template <class T>
-struct RotorTotals {
-  T thrust{0}, torque{0};
-  std::vector<Vec3T<T>> blade_force, blade_moment;
-};
 
 /// e += generalized aerodynamic forces (dim model.ndof()) at the kinematics already in ws.
 /// \param[in] q       coordinates (dim ndof), for the pitch angles; scalar of the kinematics

@@ -38,7 +38,8 @@ void addAeroLoads(const Model& m, Workspace<TK>& ws, const VecXT<TK>& q, const V
     record->thrust = record->torque = 0;
   }
   const detail::RotorInflow<TK, T> inflow{hub.r, disk, speed, wind_dir, weight, frozen};
-  if (totals) {  // skipped blades keep zero resultants
+  if (totals) {  // skipped blades keep zero resultants; assign() keeps the vectors' storage
+    totals->thrust = totals->torque = T(0.0);
     totals->blade_force.assign(am.blades.size(), Vec3T<T>::Zero());
     totals->blade_moment.assign(am.blades.size(), Vec3T<T>::Zero());
   }

@@ -89,7 +89,10 @@ void evaluateOutputs(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const 
     subtree = subtree || o.kind == OutputKind::SubtreeLoadMoment;
   }
   if (points || rotor || subtree) forwardKinematics(m, ws, q, qd, qdd, pass);
-  RotorTotals<T> totals;
+  RotorTotals<T>& totals = ws.totals;  // the workspace's: no allocation per AD pass
+  totals.thrust = totals.torque = T(0.0);
+  totals.blade_force.clear();
+  totals.blade_moment.clear();
   T generator_torque(0), generator_speed(0), rotor_speed(0);
   if (subtree && !u) throw ComputeError("load outputs need the inputs (wind speed, applied loads)");
   if ((rotor || subtree) && m.aero.active()) {
@@ -116,7 +119,8 @@ void evaluateOutputs(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const 
   }
   // One sum per cut body: a deck's flap and edge channels share their blade's, the tower's fore-aft
   // and side-side channels the tower's (each sum runs over every body the cut carries).
-  std::vector<std::pair<int, Vec3T<T>>> cut_moments;
+  auto& cut_moments = ws.cut_moments;
+  cut_moments.clear();
   const auto cutMoment = [&](int root) -> const Vec3T<T>& {
     for (const auto& [body, M] : cut_moments)
       if (body == root) return M;

@@ -3,9 +3,11 @@
 /// Per-evaluation buffers (Pinocchio's Data): sized once from a Model, reused by every call so the
 /// hot path does not allocate.
 #include <array>
+#include <utility>
 #include <vector>
 
 #include "src/base/scalar.hpp"
+#include "src/dynamics/rotor_totals.hpp"
 #include "src/model/model.hpp"
 
 namespace whirl {
@@ -140,9 +142,12 @@ struct AeroJets {
 template <class T>
 struct Workspace {
   explicit Workspace(const Model& m);
-  std::vector<BemRoot> bem;           ///< per blade element (AeroModel::nstations())
-  AeroJets jets;                      ///< for AD passes with a frozen wake
-  VecXT<T> scratch;                   ///< ndof: generalized forces nobody keeps (rotor outputs)
+  std::vector<BemRoot> bem;  ///< per blade element (AeroModel::nstations())
+  AeroJets jets;             ///< for AD passes with a frozen wake
+  VecXT<T> scratch;          ///< ndof: generalized forces nobody keeps (rotor outputs)
+  RotorTotals<T> totals;     ///< the load outputs' aerodynamic resultants (evaluateOutputs)
+  /// The load outputs' moments per cut body (evaluateOutputs): body index and moment [N m], ground axes.
+  std::vector<std::pair<int, Vec3T<T>>> cut_moments;
   std::vector<FrameState<T>> frames;  ///< per body
   std::vector<BasisState<T>> basis;   ///< per body
   // Scratch for the body inertia forces (sized to the largest nc). An AD pass uses the double
