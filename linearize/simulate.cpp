@@ -518,7 +518,12 @@ class Recorder {
       // The BEM roots of the integrator's last residual start the outputs' root searches: a step
       // away instead of one recorded interval (the outputs' own last roots); the same roots.
       wy_.bem = p_.ws.bem;
-      evaluateOutputs(m_, wy_, p_.q, p_.qd, p_.qdd, y_out_, &p_.u);
+      if (p_.nz > 0) {  // the loads of the states, on the induction the equations of motion take
+        const AeroInflow inflow = simulationElementInflow(m_, wy_, p_.q, p_.qd, p_.qdd, p_.u, opt_);
+        evaluateOutputs(m_, wy_, p_.q, p_.qd, p_.qdd, y_out_, &p_.u, &inflow, {}, &p_.z);
+      } else {
+        evaluateOutputs(m_, wy_, p_.q, p_.qd, p_.qdd, y_out_, &p_.u);
+      }
       sim_.y.row(k) = y_out_.transpose();
     }
     if (opt_.progress) opt_.progress(t, opt_.t_end);

@@ -26,6 +26,14 @@ VecX simulationAeroStart(const Model& m, const OperatingPoint& start, const Simu
   return unsteadyAeroSteadyStates(m, at);
 }
 
+AeroInflow simulationElementInflow(const Model& m, Workspace<double>& ws, const VecX& q, const VecX& qd,
+                                   const VecX& qdd, const VecX& u, const SimulationOptions& opt) {
+  if (!opt.frozen_inflow.empty()) return opt.frozen_inflow;
+  AeroRecord record;
+  residual(m, ws, q, qd, qdd, u, ws.scratch, nullptr, &record);
+  return record.inflow();
+}
+
 AeroStateLoads::AeroStateLoads(const Model& m) : e_ua(m.ndof()), e_qs(m.ndof()) {}
 
 void addAeroStateLoads(const Model& m, Workspace<double>& ws, const VecX& q, const VecX& qd, const VecX& u,

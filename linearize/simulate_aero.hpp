@@ -32,6 +32,13 @@ AeroInflow quasiSteadyInflow(const Model& m, const OperatingPoint& point);
 /// takes there (opt.frozen_inflow, or the quasi-steady BEM's). Dim simulationAeroStateCount.
 VecX simulationAeroStart(const Model& m, const OperatingPoint& start, const SimulationOptions& opt);
 
+/// The induction the elements see at (q, q̇, q̈, u) in a simulation without dynamic-inflow states driving
+/// it: opt.frozen_inflow if given, else the quasi-steady BEM's of a double residual evaluated in ws (its
+/// BEM roots start the searches). The load outputs with the states take it (the Recorder, evaluateOutputs),
+/// as addAeroStateLoads does for the equations of motion.
+AeroInflow simulationElementInflow(const Model& m, Workspace<double>& ws, const VecX& q, const VecX& qd,
+                                   const VecX& qdd, const VecX& u, const SimulationOptions& opt);
+
 /// Buffers of one evaluation of the states' loads and rates.
 struct AeroStateLoads {
   explicit AeroStateLoads(const Model& m);
