@@ -145,7 +145,12 @@ LinearModel linearize(const Model& m, const OperatingPoint& op, LinearizeWorkspa
   lin.first_order_values = VecX::Zero(nb);
   lin.first_order_blades.assign(static_cast<std::size_t>(nb), -1);
   MatX Zq, Za, Zu;  // the UA rows: [Z_q, Z_q̇] on the active coordinates, A_zz, Z_u
-  if (opt.unsteady_aero && frozen && aeroStateCount(m.aero) > 0) addUnsteadyAero(m, op, nu > 0, lin, G, Zq, Za, Zu);
+  // The aerodynamic states linearize on a frozen induction: the point's BEM induction, or none (WakeMod 0:
+  // op.inflow holds zeros, the geometric inflow the quasi-steady passes above take). AeroDyn keeps UA with
+  // WakeMod 0 (its BEMT runs with UseInduction false); only the quasi-steady-induction linearization
+  // (opt.frozen_wake false) has no frozen induction to carry them.
+  const bool unsteady = opt.unsteady_aero && aeroStateCount(m.aero) > 0 && (frozen || !m.aero.induction);
+  if (unsteady) addUnsteadyAero(m, op, nu > 0, lin, G, Zq, Za, Zu);
   const int nz = static_cast<int>(G.cols());
   // One solve with the right-hand sides [K C G Q] (K, C, Q with the UA loads' changes, if any).
   MatX rhs(n, 2 * n + nz + nu);

@@ -111,12 +111,13 @@ StateSpaceModel stateSpace(const Model& m, const OperatingPoint& op, const Linea
   const int ny = m.noutput();
   VecX y(ny);
   Workspace<double> ws(m);
-  // The rotor outputs with the frozen wake of the point, as the linearization (linearize.cpp).
-  const AeroInflow* frozen = m.aero.active() && m.aero.induction && !op.inflow.empty() ? &op.inflow : nullptr;
   // With the aerodynamic states in the model, the load outputs take their loads, as the equations of motion do.
   const int z0 = aeroStatesStart(m, lin), nza = z0 >= 0 ? aeroStateCount(m.aero) : 0;
   const VecX z = z0 >= 0 ? VecX(lin.first_order_values.segment(z0, nza)) : VecX();
   const VecX* zp = z0 >= 0 ? &z : nullptr;
+  // The rotor outputs with the frozen wake of the point, as the linearization (linearize.cpp); with the states
+  // and no induction (WakeMod 0) the point's zero induction.
+  const AeroInflow* frozen = m.aero.active() && (m.aero.induction || zp) && !op.inflow.empty() ? &op.inflow : nullptr;
   evaluateOutputs(m, ws, op.q, op.qd, op.qdd, y, &op.u, frozen, {}, zp);
   for (int i = 0; i < ny; ++i) {
     if (!std::isfinite(y(i)))
