@@ -51,6 +51,7 @@ struct Command {
 const std::vector<const char*> kSetTemplates = {"gravity=0",
                                                 "gravity=-9.81",
                                                 "gravity=[0, 0, 1e9]",
+                                                "gravity=[0, 0, 1000]",
                                                 "bodies.tower.length=0",
                                                 "bodies.0.mass=-1",
                                                 "name=x",

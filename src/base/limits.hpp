@@ -102,6 +102,10 @@ inline constexpr double kMaxSimulationValues = 5e7;
 // motion the start speed does not announce (a spin-up, a diverging rotor).
 inline constexpr double kMaxSimulationRevolutions = 1e5;
 inline constexpr long kMaxSimulationSteps = 5000000;
+// Gravity's magnitude [m/s²]: 100 g. Beyond it a model is not a structure on a planet but an input
+// error, and the integrator follows its collapse step by step (1e9 m/s² took 93,707 steps before the
+// validity check could stop it).
+inline constexpr double kMaxGravity = 1000.0;
 /// MoorDyn v1's section counts: far above any mooring (the reference floaters have 3–9 lines).
 inline constexpr int kMaxMooringCount = 10000;
 

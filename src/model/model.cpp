@@ -6,7 +6,10 @@
 #include <numeric>
 #include <set>
 
+#include <fmt/format.h>
+
 #include "src/base/error.hpp"
+#include "src/base/limits.hpp"
 #include "src/base/text.hpp"
 
 namespace whirl {
@@ -503,6 +506,9 @@ void finalize(Model& m) {
   requirePrintableNames(m);
   requireUniqueBodyNames(m);
   if (!m.gravity.allFinite()) throw InputError("gravity: not finite");
+  if (m.gravity.norm() > limits::kMaxGravity)
+    throw InputError(fmt::format("gravity: magnitude {:g} m/s² is above the limit of {:g} m/s² (100 g)",
+                                 m.gravity.norm(), limits::kMaxGravity));
   const std::vector<int> new_index = sortBodiesParentsFirst(m);
   remapBodyReferences(m, new_index);
   const std::vector<int> new_dof = numberDofs(m);

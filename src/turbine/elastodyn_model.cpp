@@ -7,7 +7,10 @@
 #include <filesystem>
 #include <numbers>
 
+#include <fmt/format.h>
+
 #include "src/base/error.hpp"
+#include "src/base/limits.hpp"
 #include "src/base/text.hpp"
 #include "src/io/openfast/aerodyn/aero_support.hpp"
 #include "src/io/openfast/openfast_deck.hpp"
@@ -98,6 +101,9 @@ io::OpenFastTurbine readElastoDynTurbine(const std::string& path, const std::vec
     if (io::toLower(o.key) == "gravity") {  // a whirl option, whichever file has (or lacks) Gravity
       const std::optional<double> g = io::parseFortranDouble(o.value);
       if (!g || !std::isfinite(*g)) throw InputError("--set '" + text + "': gravity: not a finite number");
+      if (!(*g >= 0.0 && *g <= limits::kMaxGravity))
+        throw InputError(
+            fmt::format("--set '{}': gravity: must lie in [0, {:g}] m/s² (100 g at most)", text, limits::kMaxGravity));
       opt.gravity = *g;
       continue;
     }

@@ -52,6 +52,14 @@ TEST_F(CaseErrors, YamlSyntax) {
          lineOf(smallTurbineCase(), "    parent: tower"));
 }
 
+// Beyond 100 g (limits::kMaxGravity) a case is an input error, as a scalar g or as a vector.
+TEST_F(CaseErrors, GravityMagnitudeIsBounded) {
+  expect("gravity: 9.81", "gravity: [0, 0, 1.0e9]", "gravity: magnitude 1e+09 m/s² is above the limit of 1000 m/s²");
+  expect("gravity: 9.81", "gravity: 1001", "gravity: magnitude 1001 m/s² is above the limit of 1000 m/s²");
+  EXPECT_NO_THROW(
+      readCase(tmp.write("g.yaml", replaced(smallTurbineCase(), "gravity: 9.81", "gravity: [0, 600, 800]"))));
+}
+
 TEST_F(CaseErrors, UnknownKeysInEveryMap) {
   expect("gravity: 9.81", "gravty: 9.81", "gravty: unknown key 'gravty' (allowed: name, description, gravity, inputs");
   expect("  - {name: thrust, value: 1.0e5}", "  - {name: thrust, valeu: 1.0e5}", "inputs.thrust.valeu: unknown key");

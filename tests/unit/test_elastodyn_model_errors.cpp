@@ -75,6 +75,16 @@ TEST_F(ElastoDynModelErrors, Overrides) {
   EXPECT_DOUBLE_EQ(m.bodies[*m.findBody("nacelle")].inertia.mass, 250000.0);
 }
 
+// Gravity beyond 100 g is an input error (limits::kMaxGravity): the integrator would otherwise follow
+// the structure's collapse step by step (fuzz_simulate found 1e9 m/s² taking 93,707 steps).
+TEST_F(ElastoDynModelErrors, GravityIsBounded) {
+  EXPECT_THAT(error({"gravity=1e9"}), HasSubstr("--set 'gravity=1e9': gravity: must lie in [0, 1000] m/s²"));
+  EXPECT_THAT(error({"gravity=-1"}), HasSubstr("--set 'gravity=-1': gravity: must lie in [0, 1000] m/s²"));
+  EXPECT_NO_THROW(readElastoDynModel(path(kFst), {"gravity=1000"}));
+  edit(kFst, "9.80665                Gravity", "1.0E4                  Gravity");
+  EXPECT_THAT(error({}), HasSubstr(path(kFst) + ":23: Gravity: is 10000 m/s², above the limit of 1000 m/s²"));
+}
+
 TEST_F(ElastoDynModelErrors, ElastoDynFileAlone) {
   // No .fst: OpenFAST's default gravity, no ServoDyn (no yaw spring), overrides reach ElastoDyn's files.
   const Model m = readElastoDynModel(path(kEd), {"AdjBlMs=1.0"});

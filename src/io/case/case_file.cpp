@@ -8,7 +8,10 @@
 #include <sstream>
 #include <utility>
 
+#include <fmt/format.h>
+
 #include "src/base/error.hpp"
+#include "src/base/limits.hpp"
 #include "src/base/text.hpp"
 #include "src/io/case/case_reader.hpp"
 #include "src/io/text/input_file.hpp"
@@ -80,9 +83,11 @@ YAML::Node load(const std::string& path) {
 
 // Scalar g → [0, 0, −g] or a vector [gx, gy, gz].
 Vec3 readGravity(const CaseNode& g) {
-  if (g.isScalar()) return Vec3(0, 0, -g.number());
-  if (g.isList()) return g.vec3();
-  g.fail("expected g [m/s²] or a vector [gx, gy, gz]");
+  if (!g.isScalar() && !g.isList()) g.fail("expected g [m/s²] or a vector [gx, gy, gz]");
+  const Vec3 v = g.isScalar() ? Vec3(0, 0, -g.number()) : g.vec3();
+  if (v.norm() > limits::kMaxGravity)
+    g.fail(fmt::format("magnitude {:g} m/s² is above the limit of {:g} m/s² (100 g)", v.norm(), limits::kMaxGravity));
+  return v;
 }
 
 // The case in `doc`; `path` names it in messages, `folder` holds the files it names.

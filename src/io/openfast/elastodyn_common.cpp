@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "src/base/error.hpp"
+#include "src/base/limits.hpp"
 
 namespace whirl::io {
 
@@ -75,6 +76,13 @@ void requirePositive(const OpenFastFile& f, std::string_view key, double value) 
 
 void requireNonnegative(const OpenFastFile& f, std::string_view key, double value) {
   if (!(value >= 0.0)) throw InputError(f.where(key, "must not be negative (is " + numberText(value) + ")"));
+}
+
+void requireGravity(const OpenFastFile& f, double value) {
+  requireNonnegative(f, "Gravity", value);
+  if (value > limits::kMaxGravity)
+    throw InputError(f.where("Gravity", "is " + numberText(value) + " m/s², above the limit of " +
+                                            numberText(limits::kMaxGravity) + " m/s² (100 g)"));
 }
 
 }  // namespace whirl::io

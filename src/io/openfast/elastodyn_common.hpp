@@ -47,6 +47,8 @@ ModeShapeCoeffs readModeShape(const OpenFastFile& f, std::string_view base);
 void requirePositive(const OpenFastFile& f, std::string_view key, double value);
 /// InputError "file:line: key: must not be negative (is -1)" unless value >= 0.
 void requireNonnegative(const OpenFastFile& f, std::string_view key, double value);
+/// `Gravity` [m/s²]: not negative and at most limits::kMaxGravity.
+void requireGravity(const OpenFastFile& f, double value);
 
 /// A file name as OpenFAST resolves it: relative to the folder of `from`, backslashes read as '/'.
 std::filesystem::path resolveInputPath(const std::filesystem::path& from, std::string name);

@@ -49,7 +49,7 @@ FstInput readFst(const std::filesystem::path& file, OverrideSet* overrides) {
   const OpenFastFile& f = in.source;
 
   in.Gravity = f.findDouble("Gravity");
-  if (in.Gravity) requireNonnegative(f, "Gravity", *in.Gravity);
+  if (in.Gravity) requireGravity(f, *in.Gravity);
   in.CompElast = switchOr(f, "CompElast", 1);
   in.CompInflow = switchOr(f, "CompInflow", 0);
   in.CompAero = switchOr(f, "CompAero", 0);

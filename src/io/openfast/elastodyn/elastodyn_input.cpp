@@ -227,7 +227,7 @@ ElastoDynInput readElastoDyn(const std::filesystem::path& file, OverrideSet* ove
   const OpenFastFile& f = ed.source;
 
   ed.Gravity = f.findDouble("Gravity");
-  if (ed.Gravity) requireNonnegative(f, "Gravity", *ed.Gravity);
+  if (ed.Gravity) requireGravity(f, *ed.Gravity);
   ed.dof = readDofs(f);
   ed.init = readInitialConditions(f);
   ed.config = readConfiguration(f);
