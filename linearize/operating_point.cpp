@@ -9,6 +9,7 @@
 #include "linearize/linearize.hpp"
 #include "linearize/unrestrained.hpp"
 #include "src/base/error.hpp"
+#include "src/base/limits.hpp"
 #include "src/dynamics/mass_matrix.hpp"
 #include "src/dynamics/mooring_scale.hpp"
 #include "src/dynamics/residual.hpp"
@@ -66,6 +67,16 @@ int weakJoint(const Model& m, const std::vector<int>& solved, const MatX& K, con
     }
   }
   return best;
+}
+
+// A wind beyond limits::kMaxWindSpeed is an input error, not a point: its loads (1e21 N at 1e6 m/s) would
+// otherwise defeat the Newton matrix and be reported as a coordinate without stiffness.
+void requireWindWithinLimit(const Model& m, const VecX& u) {
+  const int w = m.roles.wind_speed_input;
+  if (w < 0 || w >= u.size() || !(u(w) > limits::kMaxWindSpeed)) return;
+  throw InputError(fmt::format(
+      "operating point: wind speed {:g} m/s is above the limit of {:g} m/s (the aerodynamics are incompressible)", u(w),
+      limits::kMaxWindSpeed));
 }
 
 // A load along a coordinate without stiffness: no static equilibrium. `motion`: how far it would
@@ -400,6 +411,7 @@ void finish(EquilibriumSolve& s) {
 
 OperatingPoint solveOperatingPoint(const Model& m, const OperatingPoint& start, const EquilibriumOptions& opt,
                                    LinearizeWorkspace& lw) {
+  requireWindWithinLimit(m, start.u);
   EquilibriumSolve s(m, opt, lw, start);
   chooseSolved(m, opt, s.op);
   s.ns = static_cast<int>(s.op.solved.size());

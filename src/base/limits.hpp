@@ -106,6 +106,10 @@ inline constexpr long kMaxSimulationSteps = 5000000;
 // error, and the integrator follows its collapse step by step (1e9 m/s² took 93,707 steps before the
 // validity check could stop it).
 inline constexpr double kMaxGravity = 1000.0;
+// Wind speed [m/s]: the blade-element aerodynamics are incompressible, which holds to about Mach 0.3
+// (100 m/s at sea level); IEC 61400-1 class I's 50-year 3-s gust is 70 m/s. A larger wind is an input
+// error (1e6 m/s gave loads of 3e21 N that no Newton matrix resolves, reported as a DOF without stiffness).
+inline constexpr double kMaxWindSpeed = 100.0;
 /// MoorDyn v1's section counts: far above any mooring (the reference floaters have 3–9 lines).
 inline constexpr int kMaxMooringCount = 10000;
 

@@ -105,6 +105,7 @@ TEST_F(CaseAeroErrors, BlocksThatNeedEachOther) {
   const std::string rotor = base.substr(base.find("aero:\n  hub"));
   expect(rotor, "", "bodies.blade 1.aero: blade elements need the top-level aero: block", "      pitch: blade 1 pitch");
   expect("  speed: 8", "  speed: -8", "wind.speed: must not be negative");
+  expect("  speed: 8", "  speed: 1.0e6", "wind.speed: 1e+06 m/s is above the limit of 100 m/s");
   expect("  reference_height: 90", "  reference_height: 0\n  shear_exponent: 0.2",
          "wind.shear_exponent: a shear exponent needs a positive reference_height", "  shear_exponent");
   expect("  induction: true", "  air_density: 0\n  induction: true", "aero.air_density: must be positive");

@@ -87,6 +87,9 @@ TEST(InflowWindInput, RefusalsAndErrors) {
   s.edit(rel, "          8   HWindSpeed", "         -8   HWindSpeed");
   EXPECT_EQ(inputErrorMessage([&] { readInflowWind(s.path(rel)); }),
             p + ":14: HWindSpeed: must not be negative (is -8)");
+  s.edit(rel, "         -8   HWindSpeed", "        101   HWindSpeed");
+  EXPECT_EQ(inputErrorMessage([&] { readInflowWind(s.path(rel)); }),
+            p + ":14: HWindSpeed: is 101 m/s, above the limit of 100 m/s (the aerodynamics are incompressible)");
 }
 
 TEST(ServoDynInput, ToolboxSimpleVariableSpeedLaw) {

@@ -114,6 +114,21 @@ TEST(OperatingCondition, FieldsTheModelCannotHonourAreNamed) {
             std::string::npos);
 }
 
+// A wind beyond limits::kMaxWindSpeed (100 m/s, incompressible aerodynamics) is refused before the solve:
+// at 1e6 m/s the loads (3e21 N) defeated the Newton matrix and were reported as a tower DOF "with no
+// stiffness" (hardening issue, item 5).
+TEST(OperatingCondition, WindBeyondTheLimitIsNamed) {
+  const Model m = readElastoDynModel(std::string(WHIRL_SOURCE_DIR) + "/cases/nrel5mw/Main_Aero.fst");
+  OperatingCondition c = modelCondition(m);
+  c.rotor_speed = 1.0;
+  c.wind_speed = 1e6;
+  EXPECT_EQ(inputErrorOf([&] { solveOperatingPoint(m, c); }),
+            "operating point: wind speed 1e+06 m/s is above the limit of 100 m/s (the aerodynamics are "
+            "incompressible)");
+  c.wind_speed = 100.0;  // at the limit: a point (blades stalled, far from trim)
+  EXPECT_NO_THROW(solveOperatingPoint(m, c));
+}
+
 // A YAML rotor gives its pitch roles by structure: blade inputs that drive one frozen angle each,
 // and the fixed-frame input that drives all of them.
 TEST(OperatingCondition, CaseFilePitchRolesComeFromTheInputs) {

@@ -7,7 +7,10 @@
 #include <filesystem>
 #include <numbers>
 
+#include <fmt/format.h>
+
 #include "src/base/error.hpp"
+#include "src/base/limits.hpp"
 #include "src/io/case/case_columns.hpp"
 #include "src/io/case/case_reader.hpp"
 #include "src/io/openfast/aerodyn/airfoil_input.hpp"
@@ -167,6 +170,9 @@ void readWind(const CaseNode& w, CaseBuild& build) {
   in.unit = "m/s";
   in.value = speed.number();
   if (in.value < 0) speed.fail("must not be negative");
+  if (in.value > limits::kMaxWindSpeed)
+    speed.fail(fmt::format("{:g} m/s is above the limit of {:g} m/s (the aerodynamics are incompressible)", in.value,
+                           limits::kMaxWindSpeed));
   m.inputs.push_back(in);
   m.roles.wind_speed_input = m.ninput() - 1;
   SteadyWind& sw = m.aero.wind;

@@ -1,5 +1,7 @@
 #include "src/io/openfast/aerodyn/inflowwind_input.hpp"
 
+#include "src/base/error.hpp"
+#include "src/base/limits.hpp"
 #include "src/io/openfast/elastodyn_common.hpp"
 #include "src/io/openfast/openfast_layouts.hpp"
 #include "src/io/openfast/openfast_overrides.hpp"
@@ -22,6 +24,10 @@ InflowWindInput readInflowWind(const std::filesystem::path& file, OverrideSet* o
   w.RefHt = f.getDouble("RefHt");
   w.PLExp = f.getDouble("PLExp");
   requireNonnegative(f, "HWindSpeed", w.HWindSpeed);
+  if (w.HWindSpeed > limits::kMaxWindSpeed)
+    throw InputError(f.where("HWindSpeed", "is " + numberText(w.HWindSpeed) + " m/s, above the limit of " +
+                                               numberText(limits::kMaxWindSpeed) +
+                                               " m/s (the aerodynamics are incompressible)"));
   requirePositive(f, "RefHt", w.RefHt);
   return w;
 }
