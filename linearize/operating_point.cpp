@@ -90,6 +90,17 @@ std::string noEquilibrium(const Model& m, int dof, double load, const std::strin
       holdAdvice(m, dof));
 }
 
+// The Newton matrix singular along an elastic coordinate, which carries its own stiffness: the loads'
+// geometric (and aerodynamic) stiffness cancels it — buckling — or the loads are so large that the
+// matrix is singular to round-off (an absurd gravity or rotor speed).
+std::string stiffnessCancelled(const Model& m, int dof, double load) {
+  return fmt::format(
+      "operating point: the stiffness along DOF '{}' is cancelled (the Newton matrix is singular there, with a "
+      "load of {:.4g} {} along it): no equilibrium; the loads soften the structure to buckling or beyond what "
+      "the matrix resolves (check gravity, rotor speed, wind and the stiffness inputs)",
+      m.dofs[dof].name, load, loadUnit(m, dof));
+}
+
 }  // namespace
 
 OperatingPoint initialPoint(const Model& m) {
@@ -345,7 +356,9 @@ bool newtonStep(EquilibriumSolve& s) {
       const MatX ker = lu.kernel();
       Eigen::Index worst = 0;
       ker.col(0).cwiseAbs().maxCoeff(&worst);
-      throw ComputeError(noEquilibrium(m, op.solved[worst], s.es(worst)));
+      const int d = op.solved[worst];
+      throw ComputeError(m.dofs[d].kind == DofKind::Elastic ? stiffnessCancelled(m, d, s.es(worst))
+                                                            : noEquilibrium(m, d, s.es(worst)));
     }
   }
   s.q_before2 = std::move(s.q_before);
