@@ -60,6 +60,9 @@ py::tuple simulateModel(const PyModel& p, double tmax, std::optional<double> rpm
   so.dt_out = dt_out;
   so.rtol = rtol;
   so.atol = atol;
+  // The model's unsteady-airfoil and dynamic-inflow states integrated as `whirl simulate` does (the load's
+  // unsteady_aero= choice, applied to the model, decides whether there are any).
+  so.aero_states = true;
   if (!free_rotor && !wind) so.prescribed = m.roles.azimuth;
   if (!allow_invalid_point) so.stop = stopAtInvalidMotion(m);  // a diverging model stops at its first invalid instant
   // wind=: the trimmed start of `whirl simulate --wind` (with the deck's ROSCO controller), closed_loop=:
@@ -138,6 +141,7 @@ py::tuple simulateModel(const PyModel& p, double tmax, std::optional<double> rpm
   std::vector<std::string> states;
   for (int s : sim.states) states.push_back(m.dofs[static_cast<std::size_t>(s)].name);
   stats["states"] = states;
+  stats["aero_states"] = static_cast<int>(sim.z.cols());
   return py::make_tuple(timeseriesColumns(m), seriesTable(m, sim), stats, warning);
 }
 

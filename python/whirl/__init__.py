@@ -420,8 +420,9 @@ class Model:
 
         Returns a DataFrame indexed by time [s] (``time_s``) with timeseries.csv's columns: each
         coordinate ``NAME`` and ``NAME rate``, each input ``input: NAME``, each output ``NAME [unit]``
-        (the same numbers as the file); ``attrs``: IDA's statistics and ``states`` (the integrated
-        coordinates). A motion leaving the model's range of validity raises ComputeError unless
+        (the same numbers as the file); ``attrs``: IDA's statistics, ``states`` (the integrated
+        coordinates) and ``aero_states`` (how many unsteady-airfoil and dynamic-inflow states were integrated
+        with them: those of the model, as ``whirl.load(..., unsteady_aero=)`` chose). A motion leaving the model's range of validity raises ComputeError unless
         ``allow_invalid_point`` (then ``attrs["warning"]`` says where). ``out``: write timeseries.csv,
         timeseries.gp (and the images when ``plot`` and Gnuplot is installed; a list of column names
         for ``plot`` chooses the panels). ``progress(t, tmax)`` is called after each recorded instant;
