@@ -73,5 +73,6 @@ void bindBode(py::module_& m);
 void bindSimulate(py::module_& m);
 void bindCompare(py::module_& m);
 void bindClosedLoop(py::module_& m);
+void bindFlutter(py::module_& m);
 
 }  // namespace whirl::python

@@ -19,4 +19,5 @@ PYBIND11_MODULE(_whirl, m) {
   whirl::python::bindSimulate(m);
   whirl::python::bindCompare(m);
   whirl::python::bindClosedLoop(m);
+  whirl::python::bindFlutter(m);
 }

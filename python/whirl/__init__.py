@@ -347,6 +347,27 @@ class Model:
                                        float(dt_out), float(controller_dt), int(azimuths), list(outputs))
         return pd.read_csv(io.StringIO(text), float_precision="round_trip")
 
+    def flutter(self, wind: float = 0.0, rpm_min: Optional[float] = None, rpm_max: Optional[float] = None,
+                rpm_step: float = 1.0, tolerance: float = 0.01, min_freq: float = 0.1, azimuths: int = 36,
+                allow_invalid_point: bool = False,
+                progress: Optional[Callable[[float, float], Any]] = None) -> pd.DataFrame:
+        """Flutter search (``whirl flutter``): the rotor speed raised from ``rpm_min`` [rpm] (default the
+        deck's) in steps of ``rpm_step`` up to ``rpm_max`` (default 3 × the first) in still air or at ``wind``
+        [m/s] with the pitch held, until the least-damped oscillating mode above ``min_freq`` [Hz] is
+        unstable, then bisected to a bracket of ``tolerance`` [rpm]; each speed a multiblade average over
+        ``azimuths``, with the model's aerodynamic states if it has them.
+
+        Returns flutter.csv's rows as a DataFrame (``rpm``, ``least_damped_mode``, ``frequency_hz``,
+        ``damping_ratio``, in the order evaluated); ``attrs["onset"]`` is ``{"rpm", "mode", "frequency_hz"}``
+        (zero damping interpolated in the final bracket) or None when stable up to ``rpm_max``.
+        ``progress(rpm, damping_ratio)`` is called after each rotor speed; Ctrl-C stops the search.
+        """
+        table, onset = _whirl.flutter(self._core, float(wind), rpm_min, rpm_max, float(rpm_step), float(tolerance),
+                                      float(min_freq), int(azimuths), allow_invalid_point, progress)
+        frame = pd.DataFrame(table)
+        frame.attrs["onset"] = onset
+        return frame
+
     def export(self, rpm: Union[None, float, Iterable[float]] = None, wind: Union[None, float, Iterable[float]] = None,
                schedule: Union[None, str, os.PathLike, pd.DataFrame] = None, azimuths: int = 36,
                inputs: Sequence[str] = (), outputs: Sequence[str] = (), drop_azimuth: bool = False,

@@ -1,22 +1,17 @@
 // `whirl flutter CASE`: the rotor speed at which a mode's damping first crosses zero (classical
 // flutter of the blades: torsion coalescing with flap), searched beyond rated in still air or at a
-// given wind speed with the pitch held. Each rotor speed is a periodic linearization averaged in
-// multiblade coordinates (the path of `whirl modes`); the search steps the rotor speed up until the
-// least-damped mode is unstable, then bisects on the rotor speed (the flutter limit as the rotor speed
-// of zero damping, as in Hansen 2007, "Aeroelastic instability problems for wind turbines").
+// given wind speed with the pitch held (modal/flutter_search.hpp); prints each point and the onset,
+// writes flutter.csv.
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
 #include <chrono>
-#include <cmath>
 #include <cstdio>
-#include <limits>
 #include <numbers>
-#include <optional>
 
 #include "linearize/operating_point.hpp"
 #include "linearize/periodic.hpp"
-#include "modal/rotor_modes.hpp"
+#include "modal/flutter_search.hpp"
 #include "src/base/error.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/common.hpp"
@@ -38,98 +33,47 @@ struct FlutterOptions {
   std::string out;
 };
 
-/// The least-damped oscillating mode at one rotor speed.
-struct Least {
-  double rpm = 0;
-  double damping = std::numeric_limits<double>::infinity();  ///< damping ratio [-]
-  double freq_hz = 0;
-  std::string name;
-};
-
-Least leastDamped(const Model& m, const FlutterOptions& opt, double rpm) {
-  OperatingCondition c = modelCondition(m);
-  c.rotor_speed = rpmToRadPerSec(rpm);
-  if (m.roles.wind_speed_input >= 0) c.wind_speed = opt.wind;
-  PeriodicOptions p;
-  p.azimuths = opt.azimuths;
-  const PeriodicLinearization lin = linearizePeriodic(m, c, p);
-  checkSolvedPoints(opt.model, m, lin.points, fmt::format("{:g} rpm", rpm));
-  const RotorModes r = rotorModes(m, lin);
-  Least out;
-  out.rpm = rpm;
-  // Rigid-body roots (the free rotor) and first-order roots are no flutter candidates, nor are the slow
-  // drivetrain and controller roots below min_freq (their damping is the torque law's, not the blades').
-  for (const Mode& mode : r.modes)
-    if (!mode.rigid_body && !mode.first_order && mode.freq_hz >= opt.min_freq && mode.damping_ratio < out.damping) {
-      out.damping = mode.damping_ratio;
-      out.freq_hz = mode.damped_freq_hz;
-      out.name = mode.name;
-    }
-  if (out.name.empty())
-    throw ComputeError(fmt::format("flutter: no oscillating mode above {:g} Hz at {:g} rpm", opt.min_freq, rpm));
-  return out;
-}
-
-void printPoint(const Least& l) {
-  std::fprintf(stderr, "flutter: %8.4f rpm  least damped %-28s %8.4f Hz  damping %+.4f %%\n", l.rpm, l.name.c_str(),
+void printPoint(const FlutterPoint& l) {
+  std::fprintf(stderr, "flutter: %8.4f rpm  least damped %-28s %8.4f Hz  damping %+.4f %%\n", l.rpm, l.mode.c_str(),
                l.freq_hz, 100 * l.damping);
 }
 
 void run(const FlutterOptions& opt) {
   const Model m = loadModel(opt.model, true);
   if (findAzimuthDof(m) < 0) throw InputError("flutter: the model has no rotor (no rotating coordinate)");
-  const double first = opt.rpm_min >= 0 ? opt.rpm_min : modelCondition(m).rotor_speed * 30 / std::numbers::pi;
-  const double last = opt.rpm_max > 0 ? opt.rpm_max : 3 * first;
-  if (!(first > 0) || !(last > first))
-    throw InputError(
-        fmt::format("flutter: the rotor speeds {:g} to {:g} rpm are not an increasing range above 0 "
-                    "(--rpm-min, --rpm-max)",
-                    first, last));
+  FlutterSearchOptions so;
+  so.wind = opt.wind;
+  so.rpm_min = opt.rpm_min >= 0 ? opt.rpm_min : modelCondition(m).rotor_speed * 30 / std::numbers::pi;
+  so.rpm_max = opt.rpm_max > 0 ? opt.rpm_max : 3 * so.rpm_min;
+  so.rpm_step = opt.rpm_step;
+  so.tolerance = opt.tolerance;
+  so.min_freq = opt.min_freq;
+  so.azimuths = opt.azimuths;
   const auto start = std::chrono::steady_clock::now();
-  std::string table = "rpm,least_damped_mode,frequency_hz,damping_ratio\n";
-  auto add = [&](const Least& l) {
-    printPoint(l);
-    table += fmt::format("{:.6g},{},{:.6g},{:.6g}\n", l.rpm, l.name, l.freq_hz, l.damping);
+  FlutterCallbacks cb;
+  cb.check = [&](const PeriodicLinearization& lin, double rpm) {
+    checkSolvedPoints(opt.model, m, lin.points, fmt::format("{:g} rpm", rpm));
   };
-  Least below = leastDamped(m, opt, first);
-  add(below);
-  if (below.damping < 0)
-    throw ComputeError(
-        fmt::format("flutter: {} is already unstable at the first rotor speed {:g} rpm "
-                    "(damping {:.3g} %): start lower with --rpm-min",
-                    below.name, first, 100 * below.damping));
-  std::optional<Least> above;
-  for (double rpm = first + opt.rpm_step; rpm <= last + 1e-9 && !above; rpm += opt.rpm_step) {
-    const Least l = leastDamped(m, opt, rpm);
-    add(l);
-    if (l.damping < 0) above = l;
-    else below = l;
-  }
+  cb.progress = printPoint;
+  const FlutterSearch s = flutterSearch(m, so, cb);
+  std::string table = "rpm,least_damped_mode,frequency_hz,damping_ratio\n";
+  for (const FlutterPoint& l : s.points)
+    table += fmt::format("{:.6g},{},{:.6g},{:.6g}\n", l.rpm, l.mode, l.freq_hz, l.damping);
   const std::string dir = opt.out.empty() ? defaultOutputFolder(opt.model.case_path) : opt.out;
   ensureWritableFolder(dir);
-  if (!above) {
+  if (!s.onset) {
+    const FlutterPoint& last = s.points.back();
     writeFileAtomic(dir + "/flutter.csv", table);
-    std::printf("no flutter up to %g rpm (least damping %.4g %% at %g rpm, %s); wrote %s/flutter.csv\n", last,
-                100 * below.damping, below.rpm, below.name.c_str(), dir.c_str());
+    std::printf("no flutter up to %g rpm (least damping %.4g %% at %g rpm, %s); wrote %s/flutter.csv\n", so.rpm_max,
+                100 * last.damping, last.rpm, last.mode.c_str(), dir.c_str());
     return;
   }
-  // Bisection on the rotor speed: the least damping is continuous in it, negative above, positive below.
-  while (above->rpm - below.rpm > opt.tolerance) {
-    const Least mid = leastDamped(m, opt, 0.5 * (below.rpm + above->rpm));
-    add(mid);
-    if (mid.damping < 0) above = mid;
-    else below = mid;
-  }
-  // The onset: zero damping interpolated linearly in the final bracket.
-  const double t = below.damping / (below.damping - above->damping);
-  const double onset = below.rpm + t * (above->rpm - below.rpm);
-  const double freq = below.freq_hz + t * (above->freq_hz - below.freq_hz);
-  table += fmt::format("# onset,{},{:.6g},{:.6g}\n", above->name, freq, onset);
+  table += fmt::format("# onset,{},{:.6g},{:.6g}\n", s.onset->mode, s.onset->freq_hz, s.onset->rpm);
   writeFileAtomic(dir + "/flutter.csv", table);
   std::printf(
       "flutter onset %.3f rpm: %s at %.4f Hz (%.2f x the first rotor speed %g rpm); wrote %s/flutter.csv, "
       "%.1f s\n",
-      onset, above->name.c_str(), freq, onset / first, first, dir.c_str(),
+      s.onset->rpm, s.onset->mode.c_str(), s.onset->freq_hz, s.onset->rpm / so.rpm_min, so.rpm_min, dir.c_str(),
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
 }
 
