@@ -107,6 +107,36 @@ TEST(OpenFastKeyRules, ServoDynAndFstUnknownKeyIsRefused) {
               HasSubstr("m.fst:17: CompHydr: not a key of an OpenFAST .fst file"));
 }
 
+// A line without a key between two key lines (a lone value or word) in a file whose every value line carries
+// its key: OpenFAST's ParseVar stops there or takes it for the next key's value; whirl skipped it. A blank line
+// (ProcessComFile drops it) and text after the last key (not read) stay accepted.
+TEST(OpenFastKeyRules, LinesWithoutAKeyAreRefusedWhereEveryLineHasOne) {
+  using whirl::test::nrelEd;
+  using whirl::test::turbineError;
+  const std::string ed = nrelEd(), rot = "       10.0   RotSpeed";
+  EXPECT_THAT(turbineError(replaceOnce(ed, rot, "   3.0\n" + rot)),
+              HasSubstr(":33: 3.0: a line without a key in an OpenFAST ElastoDyn file"));
+  EXPECT_THAT(turbineError(replaceOnce(ed, rot, "hello\n" + rot)),
+              HasSubstr(":33: hello: a line without a key in an OpenFAST ElastoDyn file"));
+  EXPECT_THAT(turbineError(replaceOnce(ed, rot, std::string(100, 'x') + "\n" + rot)),
+              HasSubstr(":33: " + std::string(37, 'x') + "...: a line without a key"));
+  ScratchDir dir;
+  EXPECT_NO_THROW(io::readOpenFastTurbine(whirl::test::nrelWith(dir, replaceOnce(ed, rot, "\n" + rot))));
+  EXPECT_NO_THROW(io::readOpenFastTurbine(whirl::test::nrelWith(dir, ed + "\n3.0\nnotes\n")));
+  const std::string ws = "          8   HWindSpeed";
+  const auto wind = edited(dir, kAero / "InflowWind.dat", "w.dat", ws, "         25\n" + ws);
+  EXPECT_THAT(inputErrorMessage([&] { io::readInflowWind(wind); }),
+              HasSubstr("w.dat:14: 25: a line without a key in an OpenFAST InflowWind file"));
+  const std::string pc = "          0   PCMode";
+  const auto srv = edited(dir, kAero / "ServoDyn.dat", "s.dat", pc, "          0\n" + pc);
+  EXPECT_THAT(inputErrorMessage([&] { io::readServoDyn(srv); }), HasSubstr("s.dat:7: 0: a line without a key"));
+  const std::string comp = "          0   CompHydro";
+  const auto fst = edited(dir, nrel5mwDir() / "Main_Aero.fst", "m.fst", comp, "CompHydro\n" + comp);
+  EXPECT_THAT(inputErrorMessage([&] { io::readFst(fst); }), HasSubstr("m.fst:17: CompHydro: a line without a key"));
+  // AeroDyn keeps its keyless lines (AFNames continuation lines): the shipped file reads.
+  EXPECT_NO_THROW(io::readAeroDyn(kAero / "AeroDyn.dat"));
+}
+
 TEST(OpenFastKeyRules, CommentLinesAndTableRowsAreNotKeys) {
   // A '!' comment line (ProcessComFile skips it) and a column-name row followed by its unit row.
   ScratchDir dir;

@@ -100,6 +100,14 @@ std::vector<std::string> splitUnits(std::string_view line) {
   return out;
 }
 
+/// `s` as quoted in a message: at most 40 bytes, cut at a UTF-8 character boundary.
+std::string shortened(const std::string& s) {
+  if (s.size() <= 40) return s;
+  std::size_t n = 37;
+  while (n > 0 && (static_cast<unsigned char>(s[n]) & 0xC0) == 0x80) --n;
+  return s.substr(0, n) + "...";
+}
+
 /// A comment line of OpenFAST's FileInfo-based readers (NWTC_IO.f90, ProcessComFile: CommChars '!#%').
 bool isCommentStart(std::string_view trimmed) {
   return !trimmed.empty() && (trimmed.front() == '!' || trimmed.front() == '#' || trimmed.front() == '%');
@@ -224,12 +232,16 @@ OpenFastFile OpenFastFile::parse(std::string_view text, const std::filesystem::p
     if (isIdentifier(toks[0].text) && (toks.size() == 1 || toks[1].text.front() == '-')) {
       // "OutList", and the nodal "OutListED"/"OutList_Nodes" blocks of OpenFAST v3+, run to "END".
       if (startsWithCi(toks[0].text, "outlist")) in_outlist = true;
+      else if (toks.size() == 1 && !isCommentStart(t)) f.keyless_.emplace_back(lineno, toks[0].text);
       continue;
     }
     // value tokens (the first always), then the key.
     std::size_t k = 1;
     while (k < toks.size() && isValueToken(toks[k].text)) ++k;
-    if (k >= toks.size() || !isIdentifier(toks[k].text)) continue;  // no key: not a value line
+    if (k >= toks.size() || !isIdentifier(toks[k].text)) {  // no key: not a value line
+      if (!isCommentStart(t)) f.keyless_.emplace_back(lineno, toks[0].text);
+      continue;
+    }
     OpenFastEntry e;
     e.key = toks[k].text;
     // "BldFile( 1 )": the index was split off at the blanks; join it back up to the closing parenthesis.
@@ -381,6 +393,18 @@ std::optional<bool> OpenFastFile::findBool(std::string_view key) const {
   return has(key) ? std::optional<bool>(getBool(key)) : std::nullopt;
 }
 
+void OpenFastFile::refuseKeylessLines(const OpenFastLayout& layout) const {
+  int last_key_line = 0;
+  for (const OpenFastEntry& e : entries_)
+    if (!e.informal) last_key_line = std::max(last_key_line, e.line);
+  for (const auto& [line, token] : keyless_)
+    if (line > 2 && line < last_key_line)  // lines 1-2: header and title; after the last key: not read
+      throw InputError(whirl::where(path_.string(), line, shortened(token),
+                                    std::string("a line without a key in an OpenFAST ") + layout.name +
+                                        " file: OpenFAST reads it by position and stops there or takes it for the "
+                                        "next key's value; remove it (every value line is VALUE KEY)"));
+}
+
 void OpenFastFile::checkLayout(const OpenFastLayout& layout) const {
   // Position in `keys` of the key spelled `key` (any spelling canonicalKey accepts), or npos. A layout
   // key written `Name(k)` is an array: `Name` and an index ("bldfile1" from BldFile(1) or BldFile1).
@@ -402,6 +426,7 @@ void OpenFastFile::checkLayout(const OpenFastLayout& layout) const {
   if (!layout.keys.empty())
     for (std::size_t i = 0; i < entries_.size(); ++i)
       if (!entries_[i].informal && (at[i] = position(layout.keys, entries_[i].key)) != npos) present[at[i]] = true;
+  if (!layout.keyless_lines) refuseKeylessLines(layout);
   std::unordered_map<std::string, int> first_line;
   std::size_t previous = npos;  // layout position of the last key read
   for (std::size_t i = 0; i < entries_.size(); ++i) {

@@ -61,6 +61,11 @@ struct OpenFastLayout {
   /// `Name1`, …); empty: any key accepted.
   std::vector<std::string_view> keys;
   std::vector<std::string_view> repeatable;  ///< keys that may appear more than once (same spelling rule)
+  /// Whether lines without a key (a lone value, a lone word) may stand between key lines: true where the
+  /// format has them (AeroDyn's `AFNames` continuation lines, airfoil and blade tables without a unit row);
+  /// false for files whose every value line carries its key (.fst, ElastoDyn, InflowWind, ServoDyn), where
+  /// OpenFAST's ParseVar would stop at such a line or take it for the next key's value.
+  bool keyless_lines = true;
 };
 
 /// A parsed OpenFAST input file. Read-only apart from `setValue` (overrides).
@@ -118,7 +123,8 @@ class OpenFastFile {
   /// lists it as repeatable (`BldFile1` and `BldFile(1)` are the same key), and a key the layout does
   /// not have ("file:line: key: not a key of a … file (expected K here)", K being the layout keys the
   /// file lacks between the known keys around that line). Informal entries (comments, table column
-  /// rows) are skipped.
+  /// rows) are skipped. Where the layout has no keyless lines, a line without a key between two key lines is
+  /// refused too ("file:line: TOKEN: a line without a key …"); text after the last key line is not read.
   void checkLayout(const OpenFastLayout& layout) const;
 
   /// The first table that has a column `column` (case-insensitive), or nullptr.
@@ -132,12 +138,16 @@ class OpenFastFile {
   const OpenFastEntry& require(std::string_view key) const;
   std::string where(const OpenFastEntry& e, const std::string& reason) const;
   std::string singleToken(const OpenFastEntry& e, const char* what) const;
+  void refuseKeylessLines(const OpenFastLayout& layout) const;
 
   std::filesystem::path path_;
   std::string title_;
   int title_line_ = 0;
   std::vector<OpenFastEntry> entries_;
   std::vector<OpenFastTable> tables_;
+  /// Lines that carry no key (a lone value or word, values without a label), outside tables and output
+  /// lists: (line, first token).
+  std::vector<std::pair<int, std::string>> keyless_;
   std::unordered_map<std::string, std::size_t> index_;  ///< lower-case key → first entry
 };
 

@@ -187,7 +187,8 @@ const OpenFastLayout& inflowWindLayout() {
                                 // FAST v8's InflowWind v3.01 labels the uniform and the Bladed-style files both
                                 // `Filename`, and repeats `RefHt` (uniform, full-field) and `PLExp` (HAWC) in later
                                 // sections than the steady wind's (the first, the one whirl reads).
-                                {"Filename", "RefHt", "PLExp"}};
+                                {"Filename", "RefHt", "PLExp"},
+                                false};
   return l;
 }
 
@@ -256,7 +257,8 @@ const OpenFastLayout& servoDynLayout() {
        "Ptch_Cntrl",   "Ptch_SetPnt",  "Ptch_Min",     "Ptch_Max",   "PtchRate_Min", "PtchRate_Max", "Gain_OM",
        "GenSpd_MinOM", "GenSpd_MaxOM", "GenSpd_Dem",   "GenTrq_Dem", "GenPwr_Dem",   "DLL_NumTrq",   "SumPrint",
        "OutFile",      "TabDelim",     "OutFmt",       "TStart"},
-      {}};
+      {},
+      false};
   return l;
 }
 
@@ -276,7 +278,8 @@ const OpenFastLayout& fstLayout() {
        "VTK_fields",   "VTK_fps"},
       // OpenFAST v5 repeats the per-rotor lines for each rotor after the first (FAST_Subs.f90,
       // FAST_ReadPrimaryFile: "EDFile … for rotor iRot").
-      {"EDFile", "BDBldFile(k)", "ServoFile", "SrvDFile"}};
+      {"EDFile", "BDBldFile(k)", "ServoFile", "SrvDFile"},
+      false};
   return l;
 }
 

@@ -38,7 +38,8 @@ const OpenFastLayout& layout() {
        "FurlFile",   "TwrNodes",        "TwrFile",      "SumPrint",   "OutFile",    "TabDelim",
        "OutFmt",     "TStart",          "DecFact",      "NTwGages",   "TwrGagNd",   "NBlGages",
        "BldGagNd",   "BldNd_BladesOut", "BldNd_BlOutNd"},
-      {}};
+      {},
+      false};
   return l;
 }
 
