@@ -46,8 +46,17 @@ class SweepGuard {
   std::function<void(int, int)> phase(int index);
   /// Runs the sweep `f` with the GIL released (runReleased) and re-raises a Python error of the callback.
   void runSweep(const PyModel& m, const std::function<void()>& f);
+  /// From inside runSweep: calls the Python callback with `args` (the GIL taken) when there is one and checks
+  /// for Ctrl-C; a Python error there stops the computation at this call (runSweep raises it again).
+  template <class... A>
+  void notify(const A&... args) {
+    guarded([&] {
+      if (!callback_.is_none()) callback_(args...);
+    });
+  }
 
  private:
+  void guarded(const std::function<void()>& call);
   py::object callback_;
   bool stopped_ = false;
 };

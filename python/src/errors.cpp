@@ -18,23 +18,23 @@ void runReleased(const PyModel& m, const std::function<void()>& f) {
   }
 }
 
+void SweepGuard::guarded(const std::function<void()>& call) {
+  py::gil_scoped_acquire acquired;
+  try {
+    call();
+  } catch (py::error_already_set& e) {
+    e.restore();  // raised again by runSweep, after the library has unwound
+    stopped_ = true;
+    throw std::runtime_error("stopped by the progress callback");
+  }
+  if (PyErr_CheckSignals() != 0) {  // Ctrl-C: the KeyboardInterrupt is now the pending error
+    stopped_ = true;
+    throw std::runtime_error("interrupted");
+  }
+}
+
 std::function<void(int, int)> SweepGuard::progress() {
-  return [this](int done, int total) {
-    py::gil_scoped_acquire acquired;
-    if (!callback_.is_none()) {
-      try {
-        callback_(done, total);
-      } catch (py::error_already_set& e) {
-        e.restore();  // raised again by runSweep, after the library has unwound
-        stopped_ = true;
-        throw std::runtime_error("stopped by the progress callback");
-      }
-    }
-    if (PyErr_CheckSignals() != 0) {  // Ctrl-C: the KeyboardInterrupt is now the pending error
-      stopped_ = true;
-      throw std::runtime_error("interrupted");
-    }
-  };
+  return [this](int done, int total) { notify(done, total); };
 }
 
 std::function<void(int, int)> SweepGuard::phase(int index) {

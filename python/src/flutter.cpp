@@ -3,11 +3,8 @@
 #include <fmt/format.h>
 #include <pybind11/stl.h>
 
-#include <Python.h>
-
 #include <numbers>
 #include <optional>
-#include <stdexcept>
 
 #include "modal/flutter_search.hpp"
 #include "python/src/bindings.hpp"
@@ -34,28 +31,10 @@ py::tuple flutter(const PyModel& p, double wind, std::optional<double> rpm_min, 
     checkValidity(p, m, lin.points, fmt::format("{:g} rpm", rpm), allow_invalid_point);
   };
   // progress(rpm, damping_ratio) after each rotor speed; a Python error there, or Ctrl-C, stops the search.
-  bool stopped = false;
-  cb.progress = [&](const FlutterPoint& l) {
-    py::gil_scoped_acquire acquired;
-    try {
-      if (!progress.is_none()) progress(l.rpm, l.damping);
-    } catch (py::error_already_set& e) {
-      e.restore();
-      stopped = true;
-      throw std::runtime_error("stopped by the progress callback");
-    }
-    if (PyErr_CheckSignals() != 0) {
-      stopped = true;
-      throw std::runtime_error("interrupted");
-    }
-  };
+  SweepGuard guard(progress);
+  cb.progress = [&](const FlutterPoint& l) { guard.notify(l.rpm, l.damping); };
   FlutterSearch s;
-  try {
-    runReleased(p, [&] { s = flutterSearch(m, so, cb); });
-  } catch (...) {
-    if (stopped) throw py::error_already_set();
-    throw;
-  }
+  guard.runSweep(p, [&] { s = flutterSearch(m, so, cb); });
   py::dict table;
   std::vector<double> rpm, freq, damping;
   std::vector<std::string> mode;

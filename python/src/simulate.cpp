@@ -5,8 +5,6 @@
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 
-#include <Python.h>
-
 #include <algorithm>
 
 #include "linearize/point_validity.hpp"
@@ -94,35 +92,17 @@ py::tuple simulateModel(const PyModel& p, double tmax, std::optional<double> rpm
   po.title = m.name + ": simulation";
   // The progress callback (t, t_end) and Ctrl-C, after each recorded instant; a Python error stops the
   // integration there and is raised again.
-  bool stopped = false;
-  so.progress = [&](double t, double t_end) {
-    py::gil_scoped_acquire acquired;
-    try {
-      if (!progress.is_none()) progress(t, t_end);
-    } catch (py::error_already_set& e) {
-      e.restore();
-      stopped = true;
-      throw std::runtime_error("stopped by the progress callback");
-    }
-    if (PyErr_CheckSignals() != 0) {
-      stopped = true;
-      throw std::runtime_error("interrupted");
-    }
-  };
+  SweepGuard guard(progress);
+  so.progress = [&](double t, double t_end) { guard.notify(t, t_end); };
   Simulation sim;
-  try {
-    runReleased(p, [&] {
-      if (equilibrium) {
-        start = solveOperatingPoint(m, start);
-        checkValidity(p, m, {start}, "", allow_invalid_point);
-      }
-      for (const auto& [name, value] : init) applyInitialCondition(m, start, name, value, "init");
-      sim = simulate(m, start, so);
-    });
-  } catch (...) {
-    if (stopped) throw py::error_already_set();
-    throw;
-  }
+  guard.runSweep(p, [&] {
+    if (equilibrium) {
+      start = solveOperatingPoint(m, start);
+      checkValidity(p, m, {start}, "", allow_invalid_point);
+    }
+    for (const auto& [name, value] : init) applyInitialCondition(m, start, name, value, "init");
+    sim = simulate(m, start, so);
+  });
   std::optional<std::string> warning = invalidMotion(m, sim);
   if (warning && !allow_invalid_point)
     throw ComputeError(p.source + ": " + *warning +
