@@ -6,8 +6,8 @@
 // Files an option names (--params, --schedule, --tracking) are written from the input too.
 //
 // Three harnesses: fuzz_cli (every command that computes: modes, linearize, campbell, export, steady,
-// bode, simulate, study, shapes), fuzz_study (`study` alone) and fuzz_simulate (`simulate` alone). The output writers
-// run on every success
+// bode, simulate, study, shapes, flutter), fuzz_study (`study` alone) and fuzz_simulate (`simulate` alone). The output
+// writers run on every success
 // (--out is the sandbox's). Per-run cost stays small by construction: tame sweeps have at most 3
 // points and 6 azimuths, tame simulations at most 2 s; an edge value that is valid but expensive is
 // left out on purpose (it would be a timeout, not a bug): those are the edges the bounds of
@@ -157,6 +157,19 @@ const std::vector<Command>& commands() {
       {"shapes",
        {"--out", ""},
        {{"--rpm", Kind::Number}, {"--format", Kind::Choice, {"table", "csv", "json"}}, setOption()}},
+      // The step and the last speed as choices: the shared number edges include valid steps (2.5e-3 rpm) whose
+      // thousands of periodic linearizations are a timeout, not a bug; 1e308 and inf are refused by bounds.
+      {"flutter",
+       {"--out", ""},
+       {{"--rpm-min", Kind::Number, {}, 15.0},
+        {"--rpm-max", Kind::Choice, {"10", "20", "30", "1e308", "inf", "nan", "-1", "0", "x"}},
+        {"--rpm-step", Kind::Choice, {"0.5", "1", "2", "5", "0", "-1", "nan", "1e-308", "1e4"}},
+        {"--tolerance", Kind::Choice, {"0.01", "0.5", "0", "1e-9", "nan"}},
+        {"--min-freq", Kind::Number},
+        {"--wind", Kind::Number},
+        {"--azimuths", Kind::Count},
+        {"--quasi-steady-aero", Kind::Flag},
+        setOption()}},
   };
   return all;
 }

@@ -7,6 +7,7 @@
 
 #include "modal/rotor_modes.hpp"
 #include "src/base/error.hpp"
+#include "src/base/limits.hpp"
 #include "src/model/operating_condition.hpp"
 
 namespace whirl {
@@ -24,6 +25,13 @@ void checkOptions(const Model& m, const FlutterSearchOptions& o) {
   };
   within(o.wind, 0, 100, "wind", "m/s");
   within(o.rpm_step, 1e-3, 1e3, "rpm_step", "rpm");
+  // Each rotor speed is a periodic linearization, as a Campbell point: the same bound as a sweep's points.
+  const double speeds = (o.rpm_max - o.rpm_min) / o.rpm_step;
+  if (!(speeds <= limits::kMaxSweepPoints))
+    throw InputError(fmt::format(
+        "flutter: {:g} to {:g} rpm in steps of {:g} rpm are {:.3g} rotor speeds, more than {} (src/base/limits.hpp, "
+        "kMaxSweepPoints): narrow the range or take larger steps (--rpm-max, --rpm-step)",
+        o.rpm_min, o.rpm_max, o.rpm_step, speeds, limits::kMaxSweepPoints));
   within(o.tolerance, 1e-6, 1e3, "tolerance", "rpm");
   within(o.min_freq, 0, 1e3, "min_freq", "Hz");
   if (o.azimuths < 1) throw InputError("flutter: azimuths: must be at least 1");

@@ -19,7 +19,8 @@ namespace whirl {
 struct FlutterSearchOptions {
   double wind = 0;          ///< hub-height wind speed [m/s] (models with a wind input)
   double rpm_min = 0;       ///< first rotor speed [rpm], > 0
-  double rpm_max = 0;       ///< last rotor speed searched [rpm], > rpm_min
+  double rpm_max = 0;       ///< last rotor speed searched [rpm], > rpm_min; (rpm_max − rpm_min) / rpm_step ≤
+                            ///< limits::kMaxSweepPoints
   double rpm_step = 1;      ///< step of the search before bisection [rpm], in [1e-3, 1e3]
   double tolerance = 0.01;  ///< width of the final bracket [rpm], in [1e-6, 1e3]
   double min_freq = 0.1;    ///< modes below this damped frequency are not candidates [Hz], in [0, 1e3]

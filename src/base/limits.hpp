@@ -23,7 +23,7 @@
 /// | kMaxFemShapeMode | 50 | mode numbers of FE shapes (`shapes: {from: fem, modes: [{mode:}]}`) |
 /// | kMaxAnalyticShapeMode | 1000 | mode numbers of analytic shapes (`clamped_topmass`, `torsion_sine`) |
 /// | kMaxLinDimension | 100000 | `.lin` header counts (states, inputs, outputs) and matrix sizes `A: n x m` |
-/// | kMaxSweepPoints | 100000 | `--rpm START:STEP:STOP` points, `--schedule` rows |
+/// | kMaxSweepPoints | 100000 | `--rpm START:STEP:STOP` points, `--schedule` rows, `flutter`'s rotor speeds |
 /// | kMaxAzimuths | 3600 | `--azimuths N` (CLI::Range in src/cli/cmd_*.cpp) |
 /// | kMaxRadiationStates | 1000 | HydroDyn's radiation states N, line 3 of the WAMIT `.ss` file |
 /// | kMaxHydroDynJoints, kMaxHydroDynPropSets, kMaxHydroDynMembers | 10000 | HydroDyn `NJoints`, `NPropSets`, `NMembers` (`NFillGroups` lists members) |

@@ -97,6 +97,13 @@ TEST(CliFlutter, BadRangesAndModelsWithoutARotorAreInputErrors) {
   EXPECT_EQ(r.code, 1);
   EXPECT_NE(r.err.find("flutter: the rotor speeds 20 to 10 rpm are not an increasing range above 0"), std::string::npos)
       << r.err;
+  // The search's rotor speeds are bounded as a sweep's points (limits::kMaxSweepPoints): 1e308 rpm in steps of
+  // 1 rpm would run for ever on a model that does not flutter.
+  r = test::whirl("flutter cases/aero_rotor/aero_rotor.yaml --rpm-min 10 --rpm-max 1e308");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("flutter: 10 to 1e+308 rpm in steps of 1 rpm are 1e+308 rotor speeds, more than 100000"),
+            std::string::npos)
+      << r.err;
   r = test::whirl("flutter cases/tower_topmass/tower_topmass.yaml");
   EXPECT_EQ(r.code, 1);
   EXPECT_NE(r.err.find("flutter: the model has no rotor (no rotating coordinate)"), std::string::npos) << r.err;
