@@ -7,6 +7,7 @@
 
 #include "linearize/linearize.hpp"
 #include "linearize/simulate_aero.hpp"
+#include "modal/aero_roots.hpp"
 #include "modal/rotor_modes.hpp"
 #include "src/base/error.hpp"
 
@@ -121,6 +122,30 @@ NonlinearCheck checkAgainstLinear(const Model& m, const OperatingPoint& eq, cons
   }
   for (size_t k = 1; k < out.levels.size(); ++k)
     out.orders.push_back(std::log2(out.levels[k - 1].max_difference / out.levels[k].max_difference));
+  return out;
+}
+
+std::vector<IdentifiedComparison> compareWithModes(const Model& m, const NonlinearCheck& c) {
+  const std::vector<int> active = m.activeDofs();  // the coordinates of the modes' participations
+  std::vector<IdentifiedComparison> out;
+  for (size_t k = 0; k < c.identified.size(); ++k) {
+    IdentifiedComparison r;
+    r.coordinate = c.identified_dofs[k];
+    r.decay = c.identified[k];
+    const auto j = static_cast<Eigen::Index>(
+        std::find_if(active.begin(), active.end(), [&](int i) { return m.dofs[i].name == r.coordinate; }) -
+        active.begin());
+    for (size_t i = 0; i < c.modes.size(); ++i) {
+      const Mode& md = c.modes[i];
+      if (!md.rigid_body && !isAeroRoot(md) && j < md.participation.size() &&
+          (r.mode < 0 || md.participation(j) > c.modes[static_cast<size_t>(r.mode)].participation(j)))
+        r.mode = static_cast<int>(i);
+    }
+    if (r.mode >= 0)
+      if (const IdentifiedPole* p = nearestPole(c.poles[k], c.modes[static_cast<size_t>(r.mode)].damped_freq_hz))
+        r.pole = *p;
+    out.push_back(std::move(r));
+  }
   return out;
 }
 

@@ -17,6 +17,7 @@
 /// With aerodynamics the linear model lets the induction follow (quasi-steady BEM), as the simulation does;
 /// with NonlinearCheckOptions::aero_states and a model with unsteady-airfoil or dynamic-inflow states both hold
 /// the equilibrium's frozen wake and carry the states (x = [δq; δq̇; δz]).
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -63,6 +64,19 @@ struct NonlinearCheck {
 /// the equilibrium's motion q_eq + q̇_eq t, at the recorded instants k·dt_out (a last instant at t_end off
 /// that grid is left out). Empty when there are too few instants for the Hankel matrix.
 std::vector<IdentifiedPole> realizedPoles(const Simulation& sim, const OperatingPoint& equilibrium, double dt_out);
+
+/// One perturbed coordinate of a check, set next to the eigenvalues: the mode it moves most (largest
+/// participation of the coordinate; rigid-body and aerodynamic roots left out) and, of the poles realized from
+/// its decay, the one nearest that mode's damped frequency.
+struct IdentifiedComparison {
+  std::string coordinate;
+  IdentifiedDecay decay;               ///< by the coordinate's zero crossings and extrema
+  std::optional<IdentifiedPole> pole;  ///< none without a mode or without realized poles
+  int mode = -1;                       ///< index into NonlinearCheck::modes; −1: none
+};
+
+/// The comparisons of `check`'s perturbed coordinates, in its order (`whirl verify`'s table).
+std::vector<IdentifiedComparison> compareWithModes(const Model& model, const NonlinearCheck& check);
 
 /// \param[in] equilibrium  a solved operating point (solveOperatingPoint)
 /// \throws InputError for a turning bladed rotor or an unknown / frozen coordinate; ComputeError from simulate

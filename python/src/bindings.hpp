@@ -83,5 +83,6 @@ void bindSimulate(py::module_& m);
 void bindCompare(py::module_& m);
 void bindClosedLoop(py::module_& m);
 void bindFlutter(py::module_& m);
+void bindVerify(py::module_& m);
 
 }  // namespace whirl::python

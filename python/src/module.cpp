@@ -20,4 +20,5 @@ PYBIND11_MODULE(_whirl, m) {
   whirl::python::bindCompare(m);
   whirl::python::bindClosedLoop(m);
   whirl::python::bindFlutter(m);
+  whirl::python::bindVerify(m);
 }

@@ -32,7 +32,7 @@ from . import lin
 
 __version__ = getattr(_whirl, "__version__", "0")
 __all__ = ["load", "from_dict", "compare", "Model", "OperatingPoint", "LinearModel", "ExportedModel", "StateSpace",
-           "CampbellTable", "BodeTable", "ClosedLoop", "InputError", "ComputeError", "lin"]
+           "CampbellTable", "BodeTable", "ClosedLoop", "Verification", "InputError", "ComputeError", "lin"]
 
 #: Bad input: a file that is missing or malformed, an unknown key, a value out of range. The message
 #: is the CLI's, ``file:line: key: reason``; the attributes ``file``, ``line`` (0 when unknown) and
@@ -193,6 +193,22 @@ class ClosedLoop:
     open_loop_campbell: pd.DataFrame
 
 
+@dataclasses.dataclass
+class Verification:
+    """Result of :meth:`Model.verify`: the linear model checked against the nonlinear equations.
+
+    ``levels``: per amplitude ε, ε/2, … the largest difference between the nonlinear and the linear free decay
+    (``max_difference``, m or rad), the linear response's largest deviation (``max_response``) and the observed
+    order log2 of consecutive differences (``order``, ≥ 2 expected; NaN on the first row). ``identified``: per
+    perturbed coordinate the damped frequency [Hz] and damping ratio identified from its decay, the pole realized
+    from every state's response nearest the mode it moves most (``realized_*``), and that mode (``mode``,
+    ``mode_damped_freq_hz``, ``mode_damping_ratio``). ``aero_states``: the aerodynamic states in both models.
+    """
+    levels: pd.DataFrame
+    identified: pd.DataFrame
+    aero_states: int
+
+
 class Model:
     """A loaded model: coordinates (DOFs), inputs, outputs and bodies, and the analyses of the CLI.
 
@@ -346,6 +362,20 @@ class Model:
         text = _whirl.closed_loop_step(self._core, float(wind), float(wind_step), float(step_time), float(tmax),
                                        float(dt_out), float(controller_dt), int(azimuths), list(outputs))
         return pd.read_csv(io.StringIO(text), float_precision="round_trip")
+
+    def verify(self, rpm: Optional[float] = None, dofs: Optional[Sequence[str]] = None, amplitude: float = 0.01,
+               levels: int = 3, tmax: float = 10.0, dt_out: float = 0.01,
+               allow_invalid_point: bool = False) -> Verification:
+        """The linear model at the equilibrium checked against the nonlinear equations (``whirl verify``): free
+        decays from the equilibrium at ``rpm`` [rpm] (default the model's) perturbed by ``amplitude`` [m or rad],
+        halved ``levels`` times, along each of ``dofs`` (default every non-rotating active coordinate), simulated
+        for ``tmax`` [s] sampled every ``dt_out`` [s] and against exp(A t) x0; with the model's unsteady-airfoil and
+        dynamic-inflow states in both (as the load's ``unsteady_aero=`` chose). Only for time-invariant models
+        (no turning bladed rotor). Returns a :class:`Verification`.
+        """
+        lv, identified, aero = _whirl.verify(self._core, rpm, list(dofs or []), float(amplitude), int(levels),
+                                             float(tmax), float(dt_out), allow_invalid_point)
+        return Verification(pd.DataFrame(lv), pd.DataFrame(identified), int(aero))
 
     def flutter(self, wind: float = 0.0, rpm_min: Optional[float] = None, rpm_max: Optional[float] = None,
                 rpm_step: float = 1.0, tolerance: float = 0.01, min_freq: float = 0.1, azimuths: int = 36,

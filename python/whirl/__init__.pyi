@@ -80,6 +80,12 @@ class ClosedLoop:
     def __init__(self, modes: pd.DataFrame, margins: pd.DataFrame, campbell: pd.DataFrame,
                  open_loop_campbell: pd.DataFrame) -> None: ...
 
+class Verification:
+    levels: pd.DataFrame
+    identified: pd.DataFrame
+    aero_states: int
+    def __init__(self, levels: pd.DataFrame, identified: pd.DataFrame, aero_states: int) -> None: ...
+
 class Model:
     name: str
     source: str
@@ -102,6 +108,9 @@ class Model:
                  allow_invalid_point: bool = ...) -> CampbellTable: ...
     def closed_loop(self, wind: Iterable[float], azimuths: int = ..., without_speed_filter: bool = ...,
                     progress: Union[None, bool, Callable[[int, int], Any]] = ...) -> ClosedLoop: ...
+    def verify(self, rpm: Optional[float] = ..., dofs: Optional[Sequence[str]] = ..., amplitude: float = ...,
+               levels: int = ..., tmax: float = ..., dt_out: float = ...,
+               allow_invalid_point: bool = ...) -> Verification: ...
     def flutter(self, wind: float = ..., rpm_min: Optional[float] = ..., rpm_max: Optional[float] = ...,
                 rpm_step: float = ..., tolerance: float = ..., min_freq: float = ..., azimuths: int = ...,
                 allow_invalid_point: bool = ...,

@@ -114,23 +114,12 @@ void run(const VerifyOptions& opt) {
   std::printf("identified from the decay (amplitude %g) vs eigenvalues:\n", co.amplitude);
   std::printf("  %-24s %-14s %-12s | %-14s %-12s | %-24s %-14s %s\n", "coordinate", "damped f [Hz]", "damping",
               "realized [Hz]", "damping", "mode", "damped f [Hz]", "damping");
-  const std::vector<int> active = m.activeDofs();  // the coordinates of the modes' participations
-  for (size_t k = 0; k < c.identified.size(); ++k) {
-    // The mode with the largest participation of this coordinate.
-    const Mode* best = nullptr;
-    const auto j = static_cast<Eigen::Index>(
-        std::find_if(active.begin(), active.end(), [&](int i) { return m.dofs[i].name == c.identified_dofs[k]; }) -
-        active.begin());
-    for (const Mode& md : c.modes)
-      if (!md.rigid_body && !isAeroRoot(md) && j < md.participation.size() &&
-          (!best || md.participation(j) > best->participation(j)))
-        best = &md;
-    const IdentifiedDecay& d = c.identified[k];
-    // The realized pole of this decay nearest the mode's damped frequency.
-    const IdentifiedPole* pole = best ? nearestPole(c.poles[k], best->damped_freq_hz) : nullptr;
-    std::printf("  %-24s %-14.6g %-12.5g | %-14.6g %-12.5g | %-24s %-14.6g %.5g\n", c.identified_dofs[k].c_str(),
-                d.damped_freq_hz, d.damping_ratio, pole ? pole->damped_freq_hz : NAN, pole ? pole->damping_ratio : NAN,
-                best ? best->name.c_str() : "-", best ? best->damped_freq_hz : NAN, best ? best->damping_ratio : NAN);
+  for (const IdentifiedComparison& r : compareWithModes(m, c)) {
+    const Mode* best = r.mode >= 0 ? &c.modes[static_cast<size_t>(r.mode)] : nullptr;
+    std::printf("  %-24s %-14.6g %-12.5g | %-14.6g %-12.5g | %-24s %-14.6g %.5g\n", r.coordinate.c_str(),
+                r.decay.damped_freq_hz, r.decay.damping_ratio, r.pole ? r.pole->damped_freq_hz : NAN,
+                r.pole ? r.pole->damping_ratio : NAN, best ? best->name.c_str() : "-",
+                best ? best->damped_freq_hz : NAN, best ? best->damping_ratio : NAN);
   }
 }
 
