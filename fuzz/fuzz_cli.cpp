@@ -6,8 +6,8 @@
 // Files an option names (--params, --schedule, --tracking) are written from the input too.
 //
 // Three harnesses: fuzz_cli (every command that computes: modes, linearize, campbell, export, steady,
-// bode, simulate, study, shapes, flutter), fuzz_study (`study` alone) and fuzz_simulate (`simulate` alone). The output
-// writers run on every success
+// bode, simulate, study, shapes, flutter, verify), fuzz_study (`study` alone) and fuzz_simulate (`simulate` alone). The
+// output writers run on every success
 // (--out is the sandbox's). Per-run cost stays small by construction: tame sweeps have at most 3
 // points and 6 azimuths, tame simulations at most 2 s; an edge value that is valid but expensive is
 // left out on purpose (it would be a timeout, not a bug): those are the edges the bounds of
@@ -168,6 +168,17 @@ const std::vector<Command>& commands() {
         {"--min-freq", Kind::Number},
         {"--wind", Kind::Number},
         {"--azimuths", Kind::Count},
+        {"--quasi-steady-aero", Kind::Flag},
+        setOption()}},
+      // Free decays against the linear model: tame runs of at most 2 s, output every 0.01 s or more (as simulate).
+      {"verify",
+       {},
+       {{"--dof", Kind::Text, {"tower FA 1", "tower FA 1,tower SS 1", "x", ""}},
+        {"--amplitude", Kind::Number, {}, 0.1},
+        {"--levels", Kind::Count},
+        {"--tmax", Kind::Number, {}, 2.0},
+        {"--dt-out", Kind::Number, {}, 0.5, 0.01},
+        {"--rpm", Kind::Number},
         {"--quasi-steady-aero", Kind::Flag},
         setOption()}},
   };
