@@ -172,7 +172,8 @@ const std::vector<Command>& commands() {
         setOption()}},
       // Free decays against the linear model, each coordinate's at two amplitudes over 0.5 s (fixed: a parked
       // NREL 5MW's 16 coordinates at the defaults, 3 amplitudes over 10 s, took 2.4 s in a release build, beyond
-      // the short run's 5 s under ASan; a value given twice is CLI11's error), output every 0.01 s or more.
+      // the short run's 5 s under ASan; a value given twice is CLI11's error), output every 0.01 s or more. The
+      // amplitude's large edges (1e9, 0x10 = 16) are refused by limits::kMaxVerifyAmplitude.
       {"verify",
        {"--tmax", "0.5", "--levels", "2"},
        {{"--dof", Kind::Text, {"tower FA 1", "tower FA 1,tower SS 1", "x", ""}},

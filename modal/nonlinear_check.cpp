@@ -1,5 +1,6 @@
 #include "modal/nonlinear_check.hpp"
 
+#include <fmt/format.h>
 #include <unsupported/Eigen/MatrixFunctions>
 
 #include <algorithm>
@@ -10,6 +11,7 @@
 #include "modal/aero_roots.hpp"
 #include "modal/rotor_modes.hpp"
 #include "src/base/error.hpp"
+#include "src/base/limits.hpp"
 
 namespace whirl {
 
@@ -31,6 +33,18 @@ std::vector<IdentifiedPole> realizedPoles(const Simulation& sim, const Operating
   }
 }
 
+void requireCheckOptions(const NonlinearCheckOptions& opt) {
+  if (!(opt.amplitude > 0) || !(opt.amplitude <= limits::kMaxVerifyAmplitude))
+    throw InputError(fmt::format(
+        "verify: amplitude: must be a positive number of at most {:g} (m or rad: a perturbation in the linear range)",
+        limits::kMaxVerifyAmplitude));
+  // At least 2 to observe the order; 8 halve ε to ε/128, where the difference meets the integrator's tolerance.
+  if (opt.levels < 2 || opt.levels > 8) throw InputError("verify: levels: must lie in [2, 8]");
+  if (!(opt.t_end > 0) || !std::isfinite(opt.t_end)) throw InputError("verify: tmax: must be a positive number [s]");
+  if (!(opt.dt_out > 0) || !std::isfinite(opt.dt_out))
+    throw InputError("verify: dt_out: must be a positive number [s]");
+}
+
 NonlinearCheck checkAgainstLinear(const Model& m, const OperatingPoint& eq, const NonlinearCheckOptions& opt) {
   // A parked rotor (no rotating coordinate moving) is time-invariant, blades and all.
   bool turning = false;
@@ -40,7 +54,7 @@ NonlinearCheck checkAgainstLinear(const Model& m, const OperatingPoint& eq, cons
       throw InputError(
           "verify: the model has a bladed rotor, whose linear model is periodic; verify takes "
           "time-invariant models (no rotor, or an axisymmetric rigid rotor)");
-  if (opt.levels < 2) throw InputError("verify: levels: at least 2 amplitudes to observe the order");
+  requireCheckOptions(opt);
   SimulationOptions so;
   so.t_end = opt.t_end;
   so.dt_out = opt.dt_out;

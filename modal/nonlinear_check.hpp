@@ -78,8 +78,14 @@ struct IdentifiedComparison {
 /// The comparisons of `check`'s perturbed coordinates, in its order (`whirl verify`'s table).
 std::vector<IdentifiedComparison> compareWithModes(const Model& model, const NonlinearCheck& check);
 
+/// The options' own checks, before any work: amplitude in (0, limits::kMaxVerifyAmplitude], levels in [2, 8],
+/// t_end and dt_out positive and finite (their counts are simulate's to bound).
+/// \throws InputError naming the option (`verify: amplitude: …`)
+void requireCheckOptions(const NonlinearCheckOptions& options);
+
 /// \param[in] equilibrium  a solved operating point (solveOperatingPoint)
-/// \throws InputError for a turning bladed rotor or an unknown / frozen coordinate; ComputeError from simulate
+/// \throws InputError for bad options (requireCheckOptions), a turning bladed rotor or an unknown / frozen coordinate;
+/// ComputeError from simulate
 NonlinearCheck checkAgainstLinear(const Model& model, const OperatingPoint& equilibrium,
                                   const NonlinearCheckOptions& options = {});
 

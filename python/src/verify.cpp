@@ -21,16 +21,13 @@ py::tuple verify(const PyModel& p, std::optional<double> rpm, const std::vector<
                  int levels, double tmax, double dt_out, bool allow_invalid_point) {
   const Model& m = *p.model;
   requireActiveDof(m, m.name);
-  if (!(amplitude > 0) || !std::isfinite(amplitude)) throw InputError("verify: amplitude: must be a positive number");
-  if (levels < 2 || levels > 8) throw InputError("verify: levels: must lie in [2, 8]");
-  if (!(tmax > 0) || !std::isfinite(tmax)) throw InputError("verify: tmax: must be a positive number [s]");
-  if (!(dt_out > 0) || !std::isfinite(dt_out)) throw InputError("verify: dt_out: must be a positive number [s]");
   NonlinearCheckOptions co;
   co.amplitude = amplitude;
   co.levels = levels;
   co.t_end = tmax;
   co.dt_out = dt_out;
-  co.aero_states = true;  // the model's states, as whirl.load(..., unsteady_aero=) chose
+  co.aero_states = true;    // the model's states, as whirl.load(..., unsteady_aero=) chose
+  requireCheckOptions(co);  // before the operating point is solved
   for (const std::string& name : dofs) {
     const auto i = m.findDof(name);
     if (!i) throw InputError("dofs: '" + name + "': no such coordinate");

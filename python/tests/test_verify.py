@@ -62,5 +62,8 @@ def test_errors_name_the_argument():
         model.verify(levels=1)
     with pytest.raises(whirl.InputError, match="verify: amplitude: must be a positive number"):
         model.verify(amplitude=float("nan"))
+    # limits::kMaxVerifyAmplitude: a perturbation in the linear range
+    with pytest.raises(whirl.InputError, match=r"verify: amplitude: must be a positive number of at most 1 \(m or rad"):
+        model.verify(amplitude=16.0)
     with pytest.raises(whirl.InputError, match="turning bladed rotor|periodic"):
         whirl.load(case("nrel5mw", "Main_Onshore.fst")).verify(tmax=1)

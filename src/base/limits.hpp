@@ -39,6 +39,9 @@
 /// | kMaxSimulationRevolutions | 100000 | `simulate` rotor revolutions, tmax × start rotor speed / 2π |
 /// | kMaxSimulationSteps | 5000000 | `simulate` integrator steps in all (IDA) |
 /// | kMaxMooringCount | 10000 | MoorDyn v1 counts `NTypes`, `NConnects`, `NLines` |
+/// | kMaxGravity | 1000 m/s² | YAML `gravity`, `.fst`/ElastoDyn `Gravity`, `--set gravity` |
+/// | kMaxWindSpeed | 100 m/s | InflowWind `HWindSpeed`, YAML `wind.speed`, every operating point's wind |
+/// | kMaxVerifyAmplitude | 1 m or rad | `verify --amplitude`, Python `Model.verify(amplitude=)` |
 // clang-format on
 namespace whirl::limits {
 
@@ -110,6 +113,12 @@ inline constexpr double kMaxGravity = 1000.0;
 // (100 m/s at sea level); IEC 61400-1 class I's 50-year 3-s gust is 70 m/s. A larger wind is an input
 // error (1e6 m/s gave loads of 3e21 N that no Newton matrix resolves, reported as a DOF without stiffness).
 inline constexpr double kMaxWindSpeed = 100.0;
+// `verify`'s perturbation [m or rad]: a check of a linearization lives in its linear range, a
+// fraction of the structure's size (a tip deflection of 1 m is 1.6 % of the NREL 5MW blade). Beyond
+// it the decays are large nonlinear motions the integrator follows step by step (16 m along every
+// blade coordinate took 30 s under the sanitizers) and whose difference from the linear model says
+// nothing about the Jacobian.
+inline constexpr double kMaxVerifyAmplitude = 1.0;
 /// MoorDyn v1's section counts: far above any mooring (the reference floaters have 3–9 lines).
 inline constexpr int kMaxMooringCount = 10000;
 

@@ -85,6 +85,7 @@ void runClosedLoop(const VerifyOptions& opt) {
 void run(const VerifyOptions& opt) {
   if (opt.closed_loop) return runClosedLoop(opt);
   if (opt.wind) throw InputError("verify: --wind is for --closed-loop");
+  requireCheckOptions(opt.check);  // before the model is read and its operating point solved
   // The deck's unsteady-airfoil and dynamic-inflow states in both models, unless --quasi-steady-aero.
   const Model m = loadModel(opt.model, true);
   requireActiveDof(m, m.name);
@@ -135,7 +136,8 @@ void addVerifyCommand(CLI::App& app) {
   addModelOptions(*cmd, opt->model, true);
   addAeroStateOptions(*cmd, opt->model);
   cmd->add_option("--dof", opt->dofs, "coordinate perturbed (repeatable; default: every non-rotating active one)");
-  cmd->add_option("--amplitude", opt->check.amplitude, "largest perturbation e [m or rad]")->check(CLI::PositiveNumber);
+  cmd->add_option("--amplitude", opt->check.amplitude, "largest perturbation e [m or rad], at most 1 (default 0.01)")
+      ->check(CLI::PositiveNumber);
   cmd->add_option("--levels", opt->check.levels, "number of amplitudes (halved each time)")->check(CLI::Range(2, 8));
   cmd->add_option("--tmax", opt->check.t_end, "simulated time [s] (--closed-loop: default 12)")
       ->check(CLI::PositiveNumber)

@@ -149,6 +149,20 @@ TEST(CliVerify, UnsteadyAeroStatesInBothModels) {
   EXPECT_THAT(qs.out, ::testing::Not(HasSubstr("aerodynamic states")));
 }
 
+// A perturbation beyond the linear range (limits::kMaxVerifyAmplitude) is refused before the model is read:
+// 16 m along every blade coordinate (`0x10`, a fuzz finding) took 30 s under the sanitizers.
+TEST(CliVerify, OptionsAreCheckedBeforeAnyWork) {
+  for (const char* bad : {"--amplitude 0x10", "--amplitude 1.5", "--amplitude 1e308"}) {
+    const auto r = test::whirl(std::string("verify cases/aero_rotor/aero_rotor.yaml --tmax 0.5 ") + bad);
+    EXPECT_NE(r.code, 0) << bad;
+    EXPECT_THAT(r.err, HasSubstr("verify: amplitude: must be a positive number of at most 1 (m or rad")) << bad;
+  }
+  const auto ok = test::whirl("verify cases/aero_rotor/aero_rotor.yaml --tmax 0.2 --levels 2 --amplitude 1");
+  EXPECT_EQ(ok.code, 0) << ok.err;
+  const auto levels = test::whirl("verify cases/aero_rotor/aero_rotor.yaml --levels 9");
+  EXPECT_NE(levels.code, 0);
+}
+
 TEST(CliVerify, BladedRotorIsRefused) {
   const auto r = test::whirl("verify cases/nrel5mw/Main_Onshore.fst");
   EXPECT_NE(r.code, 0);
