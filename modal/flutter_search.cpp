@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 #include "modal/rotor_modes.hpp"
 #include "src/base/error.hpp"
@@ -23,7 +24,7 @@ void checkOptions(const Model& m, const FlutterSearchOptions& o) {
     if (!(x >= lo && x <= hi))
       throw InputError(fmt::format("flutter: {}: {:g} is outside [{:g}, {:g}] {}", key, x, lo, hi, unit));
   };
-  within(o.wind, 0, 100, "wind", "m/s");
+  within(o.wind, 0, limits::kMaxWindSpeed, "wind", "m/s");
   within(o.rpm_step, 1e-3, 1e3, "rpm_step", "rpm");
   // Each rotor speed is a periodic linearization, as a Campbell point: the same bound as a sweep's points.
   const double speeds = (o.rpm_max - o.rpm_min) / o.rpm_step;
@@ -62,6 +63,12 @@ FlutterPoint leastDamped(const Model& m, const FlutterSearchOptions& opt, const 
 }
 
 }  // namespace
+
+void setRotorSpeedRange(const Model& m, std::optional<double> rpm_min, std::optional<double> rpm_max,
+                        FlutterSearchOptions& o) {
+  o.rpm_min = rpm_min ? *rpm_min : modelCondition(m).rotor_speed * 30 / std::numbers::pi;
+  o.rpm_max = rpm_max ? *rpm_max : 3 * o.rpm_min;
+}
 
 FlutterSearch flutterSearch(const Model& m, const FlutterSearchOptions& opt, const FlutterCallbacks& cb) {
   checkOptions(m, opt);

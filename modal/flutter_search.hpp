@@ -54,6 +54,11 @@ struct FlutterCallbacks {
   std::function<void(const FlutterPoint&)> progress;
 };
 
+/// The searched range: `rpm_min`, or the model's initial rotor speed (the deck's `RotSpeed`); `rpm_max`, or
+/// 3 × the first. Checked by flutterSearch.
+void setRotorSpeedRange(const Model& model, std::optional<double> rpm_min, std::optional<double> rpm_max,
+                        FlutterSearchOptions& options);
+
 /// The search. Throws InputError for options outside their ranges, ComputeError when no mode oscillates
 /// above min_freq or the first rotor speed is already unstable (start lower).
 FlutterSearch flutterSearch(const Model& model, const FlutterSearchOptions& opt,

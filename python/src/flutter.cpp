@@ -3,12 +3,10 @@
 #include <fmt/format.h>
 #include <pybind11/stl.h>
 
-#include <numbers>
 #include <optional>
 
 #include "modal/flutter_search.hpp"
 #include "python/src/bindings.hpp"
-#include "src/model/operating_condition.hpp"
 
 namespace whirl::python {
 namespace {
@@ -20,8 +18,7 @@ py::tuple flutter(const PyModel& p, double wind, std::optional<double> rpm_min, 
   const Model& m = *p.model;
   FlutterSearchOptions so;
   so.wind = wind;
-  so.rpm_min = rpm_min ? *rpm_min : modelCondition(m).rotor_speed * 30 / std::numbers::pi;
-  so.rpm_max = rpm_max ? *rpm_max : 3 * so.rpm_min;
+  setRotorSpeedRange(m, rpm_min, rpm_max, so);
   so.rpm_step = rpm_step;
   so.tolerance = tolerance;
   so.min_freq = min_freq;

@@ -117,4 +117,11 @@ std::string escapeControlCharacters(std::string_view s) {
   return t;
 }
 
+std::string shortenedForMessage(std::string_view s) {
+  if (s.size() <= 40) return std::string(s);
+  std::size_t n = 37;
+  while (n > 0 && (static_cast<unsigned char>(s[n]) & 0xC0) == 0x80) --n;
+  return std::string(s.substr(0, n)) + "...";
+}
+
 }  // namespace whirl

@@ -49,4 +49,8 @@ constexpr std::string_view trimBlanks(std::string_view s) {
 /// \xFF; other text unchanged): error messages stay one line of text whatever name they quote.
 std::string escapeControlCharacters(std::string_view s);
 
+/// `s` as quoted in a message: at most 40 bytes, longer text cut to 37 and "..." at a UTF-8 character
+/// boundary (a cut inside a character would make the message itself invalid UTF-8).
+std::string shortenedForMessage(std::string_view s);
+
 }  // namespace whirl

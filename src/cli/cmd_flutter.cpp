@@ -7,15 +7,13 @@
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <cstdio>
-#include <numbers>
+#include <optional>
 
 #include "linearize/operating_point.hpp"
 #include "linearize/periodic.hpp"
 #include "modal/flutter_search.hpp"
-#include "src/base/error.hpp"
 #include "src/cli/commands.hpp"
 #include "src/cli/common.hpp"
-#include "src/model/operating_condition.hpp"
 #include "src/writers/atomic_file.hpp"
 
 namespace whirl::cli {
@@ -23,12 +21,12 @@ namespace {
 
 struct FlutterOptions {
   ModelOptions model;
-  double wind = 0;          ///< hub-height wind speed [m/s]
-  double rpm_min = -1;      ///< first rotor speed [rpm]; < 0: the deck's initial rotor speed
-  double rpm_max = -1;      ///< last rotor speed [rpm]; < 0: 3 × the first
-  double rpm_step = 1;      ///< step of the search before bisection [rpm]
-  double tolerance = 0.01;  ///< width of the final bracket [rpm]
-  double min_freq = 0.1;    ///< modes below this frequency are not flutter candidates [Hz]
+  double wind = 0;                ///< hub-height wind speed [m/s]
+  std::optional<double> rpm_min;  ///< first rotor speed [rpm]; none: the deck's initial rotor speed
+  std::optional<double> rpm_max;  ///< last rotor speed [rpm]; none: 3 × the first
+  double rpm_step = 1;            ///< step of the search before bisection [rpm]
+  double tolerance = 0.01;        ///< width of the final bracket [rpm]
+  double min_freq = 0.1;          ///< modes below this frequency are not flutter candidates [Hz]
   int azimuths = 36;
   std::string out;
 };
@@ -40,11 +38,9 @@ void printPoint(const FlutterPoint& l) {
 
 void run(const FlutterOptions& opt) {
   const Model m = loadModel(opt.model, true);
-  if (findAzimuthDof(m) < 0) throw InputError("flutter: the model has no rotor (no rotating coordinate)");
   FlutterSearchOptions so;
   so.wind = opt.wind;
-  so.rpm_min = opt.rpm_min >= 0 ? opt.rpm_min : modelCondition(m).rotor_speed * 30 / std::numbers::pi;
-  so.rpm_max = opt.rpm_max > 0 ? opt.rpm_max : 3 * so.rpm_min;
+  setRotorSpeedRange(m, opt.rpm_min, opt.rpm_max, so);
   so.rpm_step = opt.rpm_step;
   so.tolerance = opt.tolerance;
   so.min_freq = opt.min_freq;

@@ -24,9 +24,7 @@ std::string shown(const YAML::Node& n) {
   if (!n.IsDefined() || n.IsNull()) return "nothing";
   if (n.IsMap()) return "a map";
   if (n.IsSequence()) return "a list";
-  std::string s = n.Scalar();
-  if (s.size() > 40) s = s.substr(0, 37) + "...";
-  return "'" + s + "'";
+  return "'" + shortenedForMessage(n.Scalar()) + "'";
 }
 
 bool isYamlNonFinite(const std::string& s) {

@@ -100,14 +100,6 @@ std::vector<std::string> splitUnits(std::string_view line) {
   return out;
 }
 
-/// `s` as quoted in a message: at most 40 bytes, cut at a UTF-8 character boundary.
-std::string shortened(const std::string& s) {
-  if (s.size() <= 40) return s;
-  std::size_t n = 37;
-  while (n > 0 && (static_cast<unsigned char>(s[n]) & 0xC0) == 0x80) --n;
-  return s.substr(0, n) + "...";
-}
-
 /// A comment line of OpenFAST's FileInfo-based readers (NWTC_IO.f90, ProcessComFile: CommChars '!#%').
 bool isCommentStart(std::string_view trimmed) {
   return !trimmed.empty() && (trimmed.front() == '!' || trimmed.front() == '#' || trimmed.front() == '%');
@@ -399,7 +391,7 @@ void OpenFastFile::refuseKeylessLines(const OpenFastLayout& layout) const {
     if (!e.informal) last_key_line = std::max(last_key_line, e.line);
   for (const auto& [line, token] : keyless_)
     if (line > 2 && line < last_key_line)  // lines 1-2: header and title; after the last key: not read
-      throw InputError(whirl::where(path_.string(), line, shortened(token),
+      throw InputError(whirl::where(path_.string(), line, shortenedForMessage(token),
                                     std::string("a line without a key in an OpenFAST ") + layout.name +
                                         " file: OpenFAST reads it by position and stops there or takes it for the "
                                         "next key's value; remove it (every value line is VALUE KEY)"));
