@@ -38,6 +38,7 @@ json encodeMotion(const ModeMotion& mm) {
   for (const BodyMotion& b : mm.bodies)
     j["bodies"].push_back({{"body", b.body},
                            {"blade", b.blade},
+                           {"role", b.role},
                            {"nodes", b.nodes},
                            {"x", encodeReal(b.x)},
                            {"pos", encodeReal(b.position)},
@@ -57,6 +58,7 @@ ModeMotion decodeMotion(const json& j) {
     BodyMotion b;
     b.body = jb.at("body").get<std::string>();
     b.blade = jb.at("blade").get<int>();
+    b.role = jb.at("role").get<std::string>();
     b.nodes = jb.at("nodes").get<std::vector<std::string>>();
     b.x = decodeReal(jb.at("x"));
     b.position = decodeReal(jb.at("pos"));

@@ -88,6 +88,44 @@ TEST(CliCampbellFormats, Nrel5mwToolboxTablesAndVtkAgreeWithCampbellCsv) {
   EXPECT_FALSE(fs::exists(out / "mode_tower_FA_2_p0.pvd"));  // 2.9 Hz: not drawn
 }
 
+// campbell.amp (HAWCStab2's mode amplitudes: per line 15 DOFs as magnitude and phase, normalized to the
+// largest): the tower columns of the first tower modes carry their motion. The tower and the shaft are found
+// by their bodies' roles, which the sweep's result once lost on its way through CBOR (modal/
+// campbell_serialize.cpp): every tower and shaft column was 0 while the blade columns were right.
+TEST(CliCampbellFormats, HawcStab2AmplitudesCarryTheTowerMotion) {
+  const fs::path out = test::freshDir("campbell_amp");
+  const auto r = test::whirl(
+      "campbell cases/nrel5mw/Main_Onshore.fst --rpm 0:6:12 --azimuths 4 --no-plot "
+      "--format hawcstab2 --out '" +
+      out.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::vector<std::string> lines;  // in campbell.csv's order of first appearance, as the .amp's modes
+  for (const auto& row : csvRows(test::slurp(out / "campbell.csv")))
+    if (row.size() > 2 && row[2] != "mode" && std::find(lines.begin(), lines.end(), row[2]) == lines.end())
+      lines.push_back(row[2]);
+  std::istringstream amp(test::slurp(out / "campbell.amp"));
+  int points = 0;
+  for (std::string line; std::getline(amp, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream ls(line);
+    std::vector<double> v;
+    for (double x; ls >> x;) v.push_back(x);
+    ASSERT_EQ(v.size(), 1 + 30 * lines.size()) << line;
+    for (const char* name : {"tower FA 1", "tower SS 1"}) {
+      const auto k = static_cast<std::size_t>(std::find(lines.begin(), lines.end(), name) - lines.begin());
+      ASSERT_LT(k, lines.size()) << name;
+      // TWR x and TWR y magnitudes (side-side, fore-aft); the rest of the turbine moves less in these modes.
+      EXPECT_GT(std::max(v[1 + 30 * k], v[1 + 30 * k + 2]), 0.5) << name << " at " << v[0] << " rpm";
+    }
+    ++points;
+  }
+  EXPECT_EQ(points, 3);
+  // The roles reach the mode-shape table of campbell_modes.json too.
+  const std::string modes = test::slurp(out / "campbell_modes.json");
+  EXPECT_THAT(modes, HasSubstr("\"role\": \"tower\""));
+  EXPECT_THAT(modes, HasSubstr("\"role\": \"blade\""));
+}
+
 TEST(CliCampbellFormats, UnknownFormatIsRefusedAndNothingIsWritten) {
   const fs::path out = test::freshDir("campbell_bad_format") / "out";
   const auto r = test::whirl("campbell cases/nrel5mw/Main_Onshore.fst --rpm 6 --format paraview --out '" +

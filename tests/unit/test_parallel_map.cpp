@@ -93,6 +93,28 @@ TEST(CampbellSerialize, RoundTripIsBitExact) {
   m.shape << std::complex<double>(1.0 / 3, -2.0 / 7), std::complex<double>(1e-300, 5e300);
   m.participation = Eigen::Vector2d(std::numeric_limits<double>::denorm_min(), 1 - 1e-16);
   m.residual = 3.3e-15;
+  m.first_order = true;
+  m.name_share = 0.625;
+  m.runner_up = "edge 1 BW";
+  m.runner_up_share = 0.5;
+  m.ambiguous = true;
+  // A node motion: every field of BodyMotion, the role too (the tower and blade tables of campbell.amp and
+  // the report's drawing find bodies by it; the sweep's round trip once dropped it).
+  BodyMotion bm;
+  bm.body = "tower";
+  bm.blade = -1;
+  bm.role = "tower";
+  bm.nodes = {"origin", "node 1"};
+  bm.x = Eigen::Vector2d(0, 87.6);
+  bm.position = Mat3X::Random(3, 2);
+  bm.R = Mat3::Random();
+  bm.u = Eigen::MatrixXcd::Random(2, 6);
+  m.motion.bodies = {bm};
+  m.motion.collective = Eigen::MatrixXcd::Random(2, 6);
+  m.motion.backward = Eigen::MatrixXcd::Random(2, 6);
+  m.motion.forward = Eigen::MatrixXcd::Random(2, 6);
+  m.motion.blade_nodes = {"node 1", "node 2"};
+  m.motion.blade_x = Eigen::Vector2d(1.5, 61.5);
   pt.modes = {m, m};
   pt.modes[1].residual.reset();
   const CampbellPoint back = decodeCampbellPoint(encodeCampbellPoint(pt));
@@ -114,6 +136,26 @@ TEST(CampbellSerialize, RoundTripIsBitExact) {
   }
   EXPECT_TRUE(sameBits(*b.residual, *m.residual));
   EXPECT_FALSE(back.modes[1].residual.has_value());
+  EXPECT_TRUE(b.first_order);
+  EXPECT_EQ(b.name_share, m.name_share);
+  EXPECT_EQ(b.runner_up, m.runner_up);
+  EXPECT_EQ(b.runner_up_share, m.runner_up_share);
+  EXPECT_TRUE(b.ambiguous);
+  ASSERT_EQ(b.motion.bodies.size(), 1u);
+  const BodyMotion& bb = b.motion.bodies[0];
+  EXPECT_EQ(bb.body, bm.body);
+  EXPECT_EQ(bb.blade, bm.blade);
+  EXPECT_EQ(bb.role, bm.role);
+  EXPECT_EQ(bb.nodes, bm.nodes);
+  EXPECT_EQ(bb.x, bm.x);
+  EXPECT_EQ(bb.position, bm.position);
+  EXPECT_EQ(bb.R, bm.R);
+  EXPECT_EQ(bb.u, bm.u);
+  EXPECT_EQ(b.motion.collective, m.motion.collective);
+  EXPECT_EQ(b.motion.backward, m.motion.backward);
+  EXPECT_EQ(b.motion.forward, m.motion.forward);
+  EXPECT_EQ(b.motion.blade_nodes, m.motion.blade_nodes);
+  EXPECT_EQ(b.motion.blade_x, m.motion.blade_x);
   EXPECT_THROW(decodeCampbellPoint("not cbor"), ComputeError);
 }
 
