@@ -7,12 +7,15 @@
 //    cases/nrel5mw/Main_Aero.fst (8 m/s steady wind, pitch 0, ServoDyn's simple torque law, AeroDyn's
 //    BEMT re-solved at every residual), the rotor released from rest at the parked static equilibrium;
 //    it settles at 9.13 rpm (tests/validation/test_simulate_aero.cpp checks it against `whirl steady`);
-//    at the default tolerances and with the absolute one loosened to 1e-7 and 1e-6.
+//    at the default tolerances and with the absolute one loosened to 1e-7 and 1e-6; nrel5mwAeroStartupNoSkew
+//    without AeroDyn's skewed-wake correction.
 // Run: build/bench/whirl_bench --benchmark_filter='nrel5mwSimulate|nrel5mwAeroStartup'
 #include <benchmark/benchmark.h>
 
 #include <cmath>
 #include <numbers>
+#include <string>
+#include <vector>
 
 #include "linearize/simulate.hpp"
 #include "src/turbine/elastodyn_model.hpp"
@@ -52,8 +55,8 @@ void nrel5mwSimulate600s(benchmark::State& state) {
 }
 BENCHMARK(nrel5mwSimulate600s)->Unit(benchmark::kMillisecond)->Iterations(1);
 
-void nrel5mwAeroStartup(benchmark::State& state) {
-  const Model m = readElastoDynModel(std::string(WHIRL_SOURCE_DIR) + "/cases/nrel5mw/Main_Aero.fst");
+void aeroStartup(benchmark::State& state, const std::vector<std::string>& overrides) {
+  const Model m = readElastoDynModel(std::string(WHIRL_SOURCE_DIR) + "/cases/nrel5mw/Main_Aero.fst", overrides);
   OperatingCondition parked;
   parked.rotor_speed = 0;
   const OperatingPoint start = solveOperatingPoint(m, parked);
@@ -73,9 +76,14 @@ void nrel5mwAeroStartup(benchmark::State& state) {
   state.counters["final_rpm"] = sim.qd(sim.qd.rows() - 1, az) * 30 / std::numbers::pi;
   idaCounters(state, sim, o.t_end);
 }
+void nrel5mwAeroStartup(benchmark::State& state) { aeroStartup(state, {}); }
+// The same without AeroDyn's skewed-wake correction (the deck's SkewMod 2 set to 0): its 1P induction
+// costs IDA more steps and each residual a second flow and polar evaluation per element.
+void nrel5mwAeroStartupNoSkew(benchmark::State& state) { aeroStartup(state, {"SkewMod=0"}); }
 // The argument k: IDA's absolute tolerance 10^-k (8: the default). The looser ones show the price of
 // the default's accuracy; what each costs in accuracy is in README *Speed* (work and precision).
 BENCHMARK(nrel5mwAeroStartup)->Arg(8)->Arg(7)->Arg(6)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(nrel5mwAeroStartupNoSkew)->Arg(8)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 }  // namespace
 }  // namespace whirl

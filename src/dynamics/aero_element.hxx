@@ -4,13 +4,16 @@
 /// body's motion, and the loads of all its elements summed in body components (aero_loads.hpp for
 /// the model; aero_model.hpp for the frames).
 #include <cmath>
+#include <optional>
 #include <string>
 #include <type_traits>
+#include <vector>
 
 #include "src/base/error.hpp"
 #include "src/base/scalar.hpp"
 #include "src/dynamics/aero_loads.hpp"
 #include "src/dynamics/aero_section.hxx"
+#include "src/dynamics/aero_skew.hxx"
 #include "src/dynamics/kinematics.hpp"
 #include "src/dynamics/point_force.hxx"
 
@@ -148,6 +151,7 @@ struct RotorInflow {
   const Vec3& wind_dir;   ///< windDirection of the model's wind
   const T& weight;        ///< aero::inductionWeight of the tip-speed ratio (BEM solved only)
   const AeroInflow* frozen;
+  const RotorSkew<TK>* skew = nullptr;  ///< the skewed-wake correction of the solved induction, if active
 };
 
 /// sum += the loads of blade bi's elements (body components: BodyLoadSum::addBody), elements numbered
@@ -163,16 +167,36 @@ void bladeLoads(const Model& m, int bi, int index0, const BladeMotion<TK>& bm, c
   const Body& body = m.bodies[blade.body];
   const BladeAxes<TK> axes = bladeAxes(body, bm);
   using std::sqrt;
+  const bool skewed = !in.frozen && in.skew && in.skew->active;
+  // The skewed-wake correction needs R_tip, the largest distance of the blade's elements from the rotor
+  // axis, before the first element's loads: with it the elements' frames are formed in a first pass.
+  auto radius = [&](const ElementFrame<TK>& g) {
+    const Vec3T<TK> d = g.pos - in.hub;
+    const Vec3T<TK> dr = d - d.dot(in.disk) * in.disk;
+    return TK(sqrt(dr.dot(dr)));
+  };
+  std::vector<ElementFrame<TK>> frames;
+  BladeSkew<TK> skew;
+  if (skewed) {
+    frames.reserve(blade.stations.size());
+    TK tip_radius(0.0);
+    for (const AeroStation& st : blade.stations) {
+      frames.push_back(elementFrame(body, body.points[st.point], bm, axes, st.curve));
+      const TK r = radius(frames.back());
+      if (valueOf(r) > valueOf(tip_radius)) tip_radius = r;
+    }
+    skew = bladeSkew(*in.skew, bm.R, tip_radius);
+  }
+  std::optional<ElementFrame<TK>> own;
   for (std::size_t si = 0; si < blade.stations.size(); ++si) {
     const int index = index0 + static_cast<int>(si);
     const AeroStation& st = blade.stations[si];
     const BodyPoint& pt = body.points[st.point];
-    const ElementFrame<TK> g = elementFrame(body, pt, bm, axes, st.curve);
+    const ElementFrame<TK>& g = skewed ? frames[si] : own.emplace(elementFrame(body, pt, bm, axes, st.curve));
     const Vec3T<T> rel = steadyWind(am.wind, in.wind_dir, in.speed, g.pos(2)) - g.vel.template cast<T>();
     const T vx = rel.dot(g.xn.template cast<T>()), vy = rel.dot(g.ya.template cast<T>());
     const Vec3T<TK> d = g.pos - in.hub;
-    const Vec3T<TK> dr = d - d.dot(in.disk) * in.disk;
-    const TK r = sqrt(dr.dot(dr));
+    const TK r = radius(g);
     // Positive twist and pitch turn the leading edge into the wind, about −x; an elastic
     // rotation about +x is the opposite.
     const T theta = T(st.twist) + T(bm.pitch - g.twist);
@@ -181,7 +205,9 @@ void bladeLoads(const Model& m, int bi, int index0, const BladeMotion<TK>& bm, c
       try {
         return in.frozen ? frozenSectionJet(am, st, vx, vy, theta, valueOf(r), in.frozen->axial(index),
                                             in.frozen->tangential(index), jets[static_cast<std::size_t>(index)])
-                         : bemSection(am, st, vx, vy, theta, T(r), in.weight, bem[static_cast<std::size_t>(index)]);
+                         : bemSection(am, st, vx, vy, theta, T(r), in.weight, bem[static_cast<std::size_t>(index)],
+                                      skewed ? std::optional<ElementSkew<T>>(skew.template at<T>(*in.skew, r))
+                                             : std::nullopt);
       } catch (const ComputeError& err) {
         throw ComputeError(body.name + " aero element " + std::to_string(si + 1) + " (span " + std::to_string(st.span) +
                            " m) at hub-height wind speed " + std::to_string(valueOf(in.speed)) + " m/s: " + err.what());

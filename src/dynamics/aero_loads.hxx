@@ -5,6 +5,7 @@
 #include "src/dynamics/aero_blade_jet.hxx"
 #include "src/dynamics/aero_element.hxx"
 #include "src/dynamics/aero_loads.hpp"
+#include "src/dynamics/aero_skew.hxx"
 
 namespace whirl {
 
@@ -37,7 +38,10 @@ void addAeroLoads(const Model& m, Workspace<TK>& ws, const VecXT<TK>& q, const V
     record->elements.clear();
     record->thrust = record->torque = 0;
   }
-  const detail::RotorInflow<TK, T> inflow{hub.r, disk, speed, wind_dir, weight, frozen};
+  // The skewed-wake correction acts on the solved induction; a frozen one carries it from its point.
+  const detail::RotorSkew<TK> skew = frozen ? detail::RotorSkew<TK>{}
+                                            : detail::rotorSkew<TK>(am, disk, wind_dir, valueOf(speed));
+  const detail::RotorInflow<TK, T> inflow{hub.r, disk, speed, wind_dir, weight, frozen, &skew};
   if (totals) {  // skipped blades keep zero resultants; assign() keeps the vectors' storage
     totals->thrust = totals->torque = T(0.0);
     totals->blade_force.assign(am.blades.size(), Vec3T<T>::Zero());

@@ -4,10 +4,12 @@
 /// (src/aero/bem.hpp) with the frozen wake of an operating point, or with the induction solved for
 /// the current inflow (quasi-steady, its derivative by the implicit-function theorem).
 #include <cmath>
+#include <optional>
 #include <type_traits>
 
 #include "src/aero/bem.hpp"
 #include "src/base/scalar.hpp"
+#include "src/dynamics/aero_skew.hxx"
 #include "src/dynamics/workspace.hpp"
 #include "src/model/aero_model.hpp"
 
@@ -115,9 +117,11 @@ inline aero::BemOptions withTolerance(const aero::BemOptions& o, double toleranc
 ///
 /// `weight` is AeroDyn's BEM weight of the rotor's tip-speed ratio (aero::inductionWeight): the
 /// inductions are scaled by it; at 0 (λ ≤ 1: parked, idling, start-up) BEM is not solved at all.
+/// `skew`: the element's skewed-wake correction (aero_skew.hxx), applied to the solved axial induction.
 template <class T>
 SectionState<T> bemSection(const AeroModel& am, const AeroStation& st, const T& vx, const T& vy, const T& theta,
-                           const T& r, const T& weight, BemRoot& root) {
+                           const T& r, const T& weight, BemRoot& root,
+                           const std::optional<ElementSkew<T>>& skew = std::nullopt) {
   if (!am.induction || valueOf(weight) == 0.0) return frozenSection(am, st, vx, vy, theta, valueOf(r), 0.0, 0.0);
   aero::BemStation b = bemStation(am, st, valueOf(r));
   b.theta = valueOf(theta);
@@ -190,6 +194,25 @@ SectionState<T> bemSection(const AeroModel& am, const AeroStation& st, const T& 
     return s;
   }
   const bool blended = valueOf(weight) < 1.0;
+  if (skew && !aero::hasFixedInductions(b, am.bem)) {
+    // The root's induction corrected, then its loads through the induced velocities (limited and weighted
+    // as DBEMT's: AeroDyn applies the correction to the solved induction before the low-TSR weight).
+    const T* w = blended ? &weight : nullptr;
+    if constexpr (std::is_same_v<T, double>) {
+      const double ax = -vx * ra * skewFactor<double>(am, *skew, ra), tn = vy * rap;
+      const auto [fx, fy] = aero::inducedFlow<double>(vx, vy, ax, tn, w);
+      return SectionState<T>{aero::inducedVelocityLoads<double>(b, vx, vy, theta, ax, tn, am.air_density, w),
+                             vx != 0 ? 1.0 - fx / vx : 0.0, vy != 0 ? fy / vy - 1.0 : 0.0, true};
+    } else {
+      aero::InducedVelocity<T> iv = aero::quasiSteadyInducedVelocity<T>(b, vx, vy, theta, phi, am.bem, &r, &root.slope);
+      iv.axial = iv.axial * skewFactor<T>(am, *skew, T(-iv.axial / vx));
+      const auto [fx, fy] = aero::inducedFlow<T>(vx, vy, iv.axial, iv.tangential, w);
+      return SectionState<T>{aero::inducedVelocityLoads<T>(b, vx, vy, theta, iv.axial, iv.tangential, am.air_density,
+                                                           w),
+                             valueOf(vx) != 0 ? 1.0 - valueOf(fx) / valueOf(vx) : 0.0,
+                             valueOf(vy) != 0 ? valueOf(fy) / valueOf(vy) - 1.0 : 0.0, true};
+    }
+  }
   const double a = ra * (blended ? valueOf(weight) : 1.0), ap = rap * (blended ? valueOf(weight) : 1.0);
   // The loads are constructed in the returned state, not assigned to it: a copy of the callee's
   // result, read back wide from its narrow stores, stalled the store forwarding.

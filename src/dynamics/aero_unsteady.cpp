@@ -9,6 +9,7 @@
 #include "src/aero/dynamic_inflow.hpp"
 #include "src/dynamics/aero_element.hxx"
 #include "src/dynamics/aero_section.hxx"
+#include "src/dynamics/aero_skew.hxx"
 #include "src/dynamics/point_force.hxx"
 
 namespace whirl {
@@ -170,6 +171,10 @@ void addUnsteadyAeroLoads(const Model& m, Workspace<T>& ws, const VecXT<T>& q, c
   const bool dynamic = z && inflowStatesPerElement(am) > 0;
   const int zi_inflow = uaStateCount(am);  // the first dynamic-inflow state in z
   const T weight = dynamic ? inductionWeightOf(am, hub, speed, wind_dir) : T(1.0);
+  // The skewed-wake correction of the dynamic inflow's induction (AeroDyn applies it after DBEMT); a frozen
+  // induction carries it from its operating point.
+  const detail::RotorSkew<T> skew = dynamic ? detail::rotorSkew<T>(am, disk, wind_dir, valueOf(speed))
+                                            : detail::RotorSkew<T>{};
   if (inputs) inputs->clear();
   if (totals) {  // blades without the element asked for keep zero resultants
     totals->thrust = totals->torque = T(0.0);
@@ -193,6 +198,9 @@ void addUnsteadyAeroLoads(const Model& m, Workspace<T>& ws, const VecXT<T>& q, c
     const T* qde = body.inertia.ne > 0 ? qd.data() + body.elastic_dof : nullptr;
     const detail::BladeMotion<T> bm{f.R, f.r, f.v, f.w, bs.c, bs.cd, qe, pitch};
     const detail::BladeAxes<T> axes = detail::bladeAxes(body, bm);
+    const detail::BladeSkew<T> blade_skew =
+        skew.active ? detail::bladeSkew(skew, f.R, detail::bladeTipRadius(body, blade, f.R, f.r, bs.c, hub.r, disk))
+                    : detail::BladeSkew<T>{};
     detail::BodyLoadSum<T> sum(body.inertia.ne, body.points[blade.stations.front().point].P.cols()), sum_qs = sum;
     for (std::size_t si = 0; si < blade.stations.size(); ++si, ++index) {
       const AeroStation& st = blade.stations[si];
@@ -222,6 +230,8 @@ void addUnsteadyAeroLoads(const Model& m, Workspace<T>& ws, const VecXT<T>& q, c
         // Elements with fixed inductions (a loss constant of 0) take the BEM ones (AeroDyn skips DBEMT there).
         v_ax = qs.fixed ? qs.axial : (*z)(k);
         v_tn = qs.fixed ? qs.tangential : (*z)(k + 1);
+        if (skew.active && !qs.fixed && valueOf(vx) != 0)
+          v_ax = v_ax * detail::skewFactor<T>(am, blade_skew.template at<T>(skew, r_t), T(-v_ax / vx));
         std::tie(x, y) = aero::inducedFlow<T>(vx, vy, v_ax, v_tn, &weight);
         if (zdot) {
           const double tau2 = aero::dbemtTau2(am.tau1, st.span_ratio);

@@ -80,6 +80,10 @@ struct AeroModel {
   /// discrete models 1, 2 leave it 0. Used only by linearizations with the states (LinearizeOptions::unsteady_aero).
   int dbemt_mod = 0;
   double tau1 = 0;  ///< DBEMT's τ1 (tau1_const) [s]
+  /// The skewed-wake correction's constant K (AeroDyn `SkewModFactor`, 15π/32 by default) when the deck
+  /// asks for the correction (`SkewMod = 2`, or `Skew_Mod = 1` with `SkewRedistr_Mod = 1`); 0: none
+  /// (src/dynamics/aero_skew.hxx).
+  double skew_factor = 0;
 
   bool active() const { return !blades.empty(); }
   /// Number of elements over all blades (the length of an AeroInflow).

@@ -176,6 +176,8 @@ void addAerodynamics(Builder& b, const DrivetrainParts& dt, const RotorParts& ro
   am.bem.ai_drag = ad.AIDrag;
   am.bem.ti_drag = ad.TIDrag;
   am.bem.max_iter = std::max(ad.MaxIter, 100);
+  // AeroDyn v15+'s Pitt/Peters correction (v14 files carry their own skew model, not read).
+  if (!v14 && ad.skew == io::SkewModel::Active && ad.SkewRedistr_Mod == 1) am.skew_factor = ad.SkewModFactor;
   if (!v14) addUnsteadyAirfoils(am, deck, c.HubRad, c.PreCone.front() * deg);
   if (!v14) addDynamicInflow(am, deck, c.HubRad, c.PreCone.front() * deg);
 

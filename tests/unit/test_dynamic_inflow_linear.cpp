@@ -111,15 +111,21 @@ TEST(DynamicInflowLinear, ExportNamesTheStatesAsOpenFast) {
   EXPECT_TRUE(v1.rotating);
   EXPECT_EQ(v.order, 1);
   EXPECT_EQ(v1.order, 1);
-  EXPECT_NEAR(v.op, op.inflow.axial(1), 1e-12 * std::abs(op.inflow.axial(1)));  // the point's BEM induction
+  // The point's BEM induction before the skewed-wake correction (AeroDyn applies it to DBEMT's output): the
+  // state's operating value is the frozen induction divided by the element's correction, a few per cent here.
+  EXPECT_NE(v.op, op.inflow.axial(1));
+  EXPECT_NEAR(v.op, op.inflow.axial(1), 0.1 * std::abs(op.inflow.axial(1)));
   EXPECT_EQ(f.x.size(), 2 * lin.dofs.size() + 28);
 }
 
 TEST(DynamicInflowLinear, SteadyStateIsTheBemInduction) {
   // At whirl's equilibrium of the deck the states rest at v = v_qs, the BEM induced velocities the point was
   // solved with (the frozen wake's AxInd, TnInd: the tip-speed ratio 6.1 leaves AeroDyn's low-TSR weight at 1),
-  // and v1 = (1 − k) v_qs; there ż = 0.
-  const Model m = dbemtDeck();
+  // and v1 = (1 − k) v_qs; there ż = 0. With the deck's skewed-wake correction off: AeroDyn applies it to the
+  // induction after DBEMT, so the frozen wake would carry it and the states not (SkewedWakeCorrectsTheFrozenWake
+  // below).
+  const Model m = readElastoDynModel((referenceDir() / "case/Fake5MW_AeroLin_B1_UA4_DBEMT3.fst").string(),
+                                     {"Skew_Mod=0"});
   const OperatingPoint op = equilibrium(m);
   const VecX z = unsteadyAeroSteadyStates(m, op);
   const int nua = uaStateCount(m.aero);
@@ -263,6 +269,36 @@ TEST(DynamicInflowLinear, FastAndSlowInflowLimits) {
   EXPECT_LT(std::abs(l_fast - l_qs), 1e-5 * std::abs(l_qs)) << l_fast << " " << l_qs;
   EXPECT_LT(std::abs(l_slow - l_fz), 5e-4 * std::abs(l_fz)) << l_slow << " " << l_fz;
   EXPECT_GT(std::abs(l_slow - l_qs), std::abs(l_slow - l_fz));
+}
+
+// With the deck's skewed-wake correction (Skew_Mod 1: the 5° shaft tilt skews the wake by about 5°) the
+// dynamic-inflow states rest at the uncorrected BEM induction, their rates 0, and the frozen wake of the point
+// is that induction corrected, element by element, by the factor the loads with the states apply: those loads
+// equal the frozen wake's (AeroDyn BEMT_CalcOutput_Inductions: DBEMT, then ApplySkewedWakeCorrection_AllNodes).
+// Fails when the correction is applied before DBEMT or not to the states' loads.
+TEST(DynamicInflowLinear, SkewedWakeCorrectsTheFrozenWake) {
+  // Without the UA states, whose loads reconstruct the static polar only to about 1 % here.
+  const Model m = readElastoDynModel((referenceDir() / "case/Fake5MW_AeroLin_B1_UA4_DBEMT3.fst").string(),
+                                     {"UA_Mod=0"});
+  ASSERT_GT(m.aero.skew_factor, 1.47);  // "default": 15π/32
+  const OperatingPoint op = equilibrium(m);
+  const VecX z = unsteadyAeroSteadyStates(m, op);
+  const int nua = uaStateCount(m.aero);
+  Workspace<double> ws(m);
+  forwardKinematics(m, ws, op.q, op.qd, op.qdd);
+  VecX e_states = VecX::Zero(m.ndof()), e_frozen = VecX::Zero(m.ndof()), zdot = VecX::Zero(z.size());
+  addUnsteadyAeroLoads<double>(m, ws, op.q, op.qd, op.u, op.inflow, &z, e_states, &zdot);
+  addUnsteadyAeroLoads<double>(m, ws, op.q, op.qd, op.u, op.inflow, nullptr, e_frozen, nullptr);
+  EXPECT_LT(zdot.tail(16).cwiseAbs().maxCoeff(), 1e-10);
+  int corrected = 0;
+  for (int i = 0; i < 4; ++i) {
+    const double ratio = op.inflow.axial(i) / z(nua + 4 * i);
+    if (std::abs(ratio - 1) > 1e-6) ++corrected;
+    EXPECT_LT(std::abs(ratio - 1), 0.1) << "element " << i + 1;
+    EXPECT_NEAR(z(nua + 4 * i + 1), op.inflow.tangential(i), 1e-12 * std::max(1.0, std::abs(op.inflow.tangential(i))));
+  }
+  EXPECT_GE(corrected, 2);
+  EXPECT_LT((e_states - e_frozen).cwiseAbs().maxCoeff(), 1e-9 * e_frozen.cwiseAbs().maxCoeff());
 }
 
 }  // namespace

@@ -21,9 +21,8 @@ const std::string kDeck = std::string(WHIRL_SOURCE_DIR) + "/tests/data/openfast/
 // (tests/support/openfast_9rpm_mbc3.hpp).
 // Tolerances (the issue's acceptance, not the reference's 4 printed digits): frequency 1 %, damping
 // 10 % relative, or 0.3 percentage points where the damping ratio is below 3 %. What remains
-// between the two models (AeroDyn's skewed-wake redistribution of the induction over the azimuth,
-// ElastoDyn's node-based integration of the distributed loads, single precision) is discussed in
-// docs/theory/aerodynamics.md.
+// between the two models (ElastoDyn's node-based integration of the distributed loads, single
+// precision; AeroDyn's skewed-wake correction is in whirl too) is discussed in docs/theory/aerodynamics.md.
 TEST(Nrel5mwAero, Rotating9rpmMatchesOpenFast) {
   const Model m = readElastoDynModel(kDeck);
   ASSERT_TRUE(m.aero.active());
