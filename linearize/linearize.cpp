@@ -1,5 +1,7 @@
 #include "linearize/linearize.hpp"
 
+#include <utility>
+
 #include "linearize/jacobian.hpp"
 #include "linearize/unsteady_aero.hpp"
 #include "src/base/error.hpp"
@@ -57,7 +59,7 @@ void firstOrderStates(const Model& m, LinearModel& lin, MatX& G, MatX& Bz) {
 // names, groups and steady values into lin.
 void addUnsteadyAero(const Model& m, const OperatingPoint& op, bool inputs, LinearModel& lin, MatX& G, MatX& Zq,
                      MatX& Za, MatX& Zu) {
-  const UnsteadyAeroLinear ua = unsteadyAeroLinear(m, op, lin.dofs, inputs);
+  UnsteadyAeroLinear ua = unsteadyAeroLinear(m, op, lin.dofs, inputs);
   const int n = static_cast<int>(lin.dofs.size()), nb = static_cast<int>(G.cols());
   const int nz = static_cast<int>(ua.z.size());
   for (int r = 0; r < n; ++r) {
@@ -69,7 +71,7 @@ void addUnsteadyAero(const Model& m, const OperatingPoint& op, bool inputs, Line
   for (int r = 0; r < n; ++r) G.block(r, nb, 1, nz) = ua.G.row(lin.dofs[r]);
   Zq.resize(nz, 2 * n);
   Zq << ua.Zq, ua.Zqd;
-  Za = ua.Azz;
+  Za = std::move(ua.Azz);  // nz² entries
   Zu = ua.Zu;
   lin.first_order_names.insert(lin.first_order_names.end(), ua.names.begin(), ua.names.end());
   lin.first_order_groups.insert(lin.first_order_groups.end(), ua.groups.begin(), ua.groups.end());

@@ -42,6 +42,50 @@ std::vector<std::vector<int>> statesOfElements(const AeroModel& am) {
   return out;
 }
 
+// The blade whose elements alone a coordinate moves (its pitch, its body's elastic coordinates, the frames under
+// it that move no other blade), or −1: a coordinate of the tower, nacelle, drivetrain or hub moves every blade.
+std::vector<int> bladeOfDof(const Model& m) {
+  const AeroModel& am = m.aero;
+  std::vector<int> count(static_cast<std::size_t>(m.ndof()), 0), owner(count.size(), -1);
+  for (std::size_t b = 0; b < am.blades.size(); ++b) {
+    const Body& body = m.bodies[am.blades[b].body];
+    std::vector<int> moves = m.support[am.blades[b].body];
+    for (int j = 0; j < body.inertia.ne; ++j) moves.push_back(body.elastic_dof + j);
+    if (am.blades[b].pitch_dof >= 0) moves.push_back(am.blades[b].pitch_dof);
+    std::sort(moves.begin(), moves.end());
+    moves.erase(std::unique(moves.begin(), moves.end()), moves.end());
+    for (int d : moves) {
+      ++count[static_cast<std::size_t>(d)];
+      owner[static_cast<std::size_t>(d)] = static_cast<int>(b);
+    }
+  }
+  for (int d : m.support[am.hub_body]) count[static_cast<std::size_t>(d)] += 2;  // the hub moves every blade
+  for (std::size_t d = 0; d < count.size(); ++d)
+    if (count[d] != 1) owner[d] = -1;
+  return owner;
+}
+
+// The derivative directions of the columns of q, q̇ and u (indices into `all`): a column that moves every blade
+// has a direction of its own; columns that move one blade each, of different blades, share one (Curtis, Powell
+// & Reid 1974: a blade's loads depend on its own coordinates only, so its evaluation reads each shared direction
+// as its own column's).
+std::vector<std::vector<int>> sharedDirections(const std::vector<int>& blade_of_column, int nblades) {
+  std::vector<std::vector<int>> out, by_blade(static_cast<std::size_t>(nblades));
+  for (std::size_t c = 0; c < blade_of_column.size(); ++c) {
+    const int b = blade_of_column[c];
+    if (b < 0) out.push_back({static_cast<int>(c)});
+    else by_blade[static_cast<std::size_t>(b)].push_back(static_cast<int>(c));
+  }
+  for (std::size_t j = 0;; ++j) {
+    std::vector<int> group;
+    for (const std::vector<int>& cols : by_blade)
+      if (j < cols.size()) group.push_back(cols[j]);
+    if (group.empty()) break;
+    out.push_back(group);
+  }
+  return out;
+}
+
 }  // namespace
 
 VecX unsteadyAeroSteadyStates(const Model& m, const OperatingPoint& op) {
@@ -118,23 +162,43 @@ UnsteadyAeroLinear unsteadyAeroLinearAt(const Model& m, const OperatingPoint& op
   auto clear = [&](VecXT<ADChunk>& v) {
     for (Eigen::Index i = 0; i < v.size(); ++i) v(i) = ADChunk(0.0);
   };
-  const int nqu = static_cast<int>(all.size());  // the columns of q, q̇ and u, then the nz of the states
-  MatX Je(n, nqu + nz);
-  MatX Jz = MatX::Zero(nz, nqu + nz);
-  // The columns of q, q̇, u: the kinematics seeded, every element with and without its states (one pass over
-  // the elements: their frames once for both).
-  for (int c0 = 0; c0 < nqu; c0 += kChunk) {
-    const int w = std::min(kChunk, nqu - c0);
-    for (int k = 0; k < w; ++k) seed(all[c0 + k], k, true);
+  const int nqu = static_cast<int>(all.size());  // the columns of q, q̇, u, then the nz of the states
+  MatX Je = MatX::Zero(n, nqu + nz);
+  MatX Jz = MatX::Zero(nz, nqu);  // ż's columns of q, q̇, u; those of z straight into out.Azz (nz² entries)
+  out.Azz = MatX::Zero(nz, nz);
+  // The columns of q, q̇, u: the kinematics seeded, one blade's elements at a time with and without their states
+  // (one pass over the elements: their frames once for both). A column that moves one blade only shares its
+  // direction with other blades' (sharedDirections): the NREL 5MW's 42 columns take 4 passes instead of 6.
+  const std::vector<int> blade_of_dof = bladeOfDof(m);
+  std::vector<int> blade_of_column;
+  for (const Column& c : all) blade_of_column.push_back(c.kind == Column::U ? -1 : blade_of_dof[c.index]);
+  const int nblades = static_cast<int>(m.aero.blades.size());
+  const std::vector<std::vector<int>> directions = sharedDirections(blade_of_column, nblades);
+  const std::vector<std::vector<int>> by_element = statesOfElements(m.aero);
+  std::vector<std::vector<int>> blade_states(static_cast<std::size_t>(nblades));  // each blade's rows of z
+  for (int b = 0, el = 0; b < nblades; ++b)
+    for (std::size_t si = 0; si < m.aero.blades[b].stations.size(); ++si, ++el)
+      for (int r : by_element[static_cast<std::size_t>(el)]) blade_states[static_cast<std::size_t>(b)].push_back(r);
+  const int nd = static_cast<int>(directions.size());
+  for (int d0 = 0; d0 < nd; d0 += kChunk) {
+    const int w = std::min(kChunk, nd - d0);
+    for (int k = 0; k < w; ++k)
+      for (int c : directions[d0 + k]) seed(all[c], k, true);
     forwardKinematics(m, ws, q, qd, qdd);
-    clear(e_ua);
-    clear(e_qs);
-    addUnsteadyAeroLoads<ADChunk>(m, ws, q, qd, u, op.inflow, &z, e_ua, &zdot, nullptr, nullptr, -1, &e_qs);
-    for (int k = 0; k < w; ++k) {
-      for (int i = 0; i < n; ++i) Je(i, c0 + k) = e_ua(i).derivatives()(k) - e_qs(i).derivatives()(k);
-      for (int i = 0; i < nz; ++i) Jz(i, c0 + k) = zdot(i).derivatives()(k);
+    for (int b = 0; b < nblades; ++b) {
+      clear(e_ua);
+      clear(e_qs);
+      addUnsteadyAeroLoads<ADChunk>(m, ws, q, qd, u, op.inflow, &z, e_ua, &zdot, nullptr, nullptr, -1, &e_qs, nullptr,
+                                    b);
+      for (int k = 0; k < w; ++k)
+        for (int c : directions[d0 + k]) {
+          if (blade_of_column[c] >= 0 && blade_of_column[c] != b) continue;  // the direction's other blade's column
+          for (int i = 0; i < n; ++i) Je(i, c) += e_ua(i).derivatives()(k) - e_qs(i).derivatives()(k);
+          for (int i : blade_states[static_cast<std::size_t>(b)]) Jz(i, c) = zdot(i).derivatives()(k);
+        }
     }
-    for (int k = 0; k < w; ++k) seed(all[c0 + k], k, false);
+    for (int k = 0; k < w; ++k)
+      for (int c : directions[d0 + k]) seed(all[c], k, false);
   }
   // The columns of the states, element by element: a state of element i enters only element i's loads and
   // only its rows of ż (aeroStateCount's layout), so each chunk evaluates that element alone, on the
@@ -142,7 +206,6 @@ UnsteadyAeroLinear unsteadyAeroLinearAt(const Model& m, const OperatingPoint& op
   // states through every element of every blade cost nz / 8 evaluations of all elements (51 for the
   // NREL 5MW with UA and DBEMT) where one suffices.
   if (nz > 0) forwardKinematics(m, ws, q, qd, qdd);
-  const std::vector<std::vector<int>> by_element = statesOfElements(m.aero);
   for (int el = 0; el < static_cast<int>(by_element.size()); ++el) {
     const std::vector<int>& s = by_element[static_cast<std::size_t>(el)];
     for (std::size_t k0 = 0; k0 < s.size(); k0 += kChunk) {
@@ -153,7 +216,7 @@ UnsteadyAeroLinear unsteadyAeroLinearAt(const Model& m, const OperatingPoint& op
       for (int k = 0; k < w; ++k) {
         const int col = nqu + s[k0 + k];
         for (int i = 0; i < n; ++i) Je(i, col) = e_ua(i).derivatives()(k);
-        for (int r : s) Jz(r, col) = zdot(r).derivatives()(k);
+        for (int r : s) out.Azz(r, s[k0 + k]) = zdot(r).derivatives()(k);
       }
       for (int k = 0; k < w; ++k) z(s[k0 + k]).derivatives()(k) = 0.0;
     }
@@ -165,7 +228,6 @@ UnsteadyAeroLinear unsteadyAeroLinearAt(const Model& m, const OperatingPoint& op
   out.Zq = Jz.leftCols(nc);
   out.Zqd = Jz.middleCols(nc, nc);
   out.Zu = Jz.middleCols(2 * nc, nu);
-  out.Azz = Jz.rightCols(nz);
   return out;
 }
 

@@ -71,6 +71,15 @@ BladeAxes<TK> bladeAxes(const Body& body, const BladeMotion<TK>& bm) {
   return a;
 }
 
+/// The offset Σ_k P_k c_k of a body point from the body origin (body components, dim 3; P: 3 × nc) for the
+/// basis coefficients coef(k), k < nc.
+template <class TK, class Coef>
+Vec3T<TK> pointOffset(const BodyPoint& pt, Coef coef) {
+  Vec3T<TK> s = Vec3T<TK>::Zero();
+  for (int k = 0; k < pt.P.cols(); ++k) s += pt.P.col(k) * coef(k);
+  return s;
+}
+
 /// One element's point and annulus frame.
 template <class TK>
 struct ElementFrame {
@@ -94,13 +103,10 @@ ElementFrame<TK> elementFrame(const Body& body, const BodyPoint& pt, const Blade
   ElementFrame<TK> g;
   // Summed in locals from local pointers: summed into g.s, each term was stored and the basis
   // pointers reloaded (the result might alias them).
-  Vec3T<TK> s = Vec3T<TK>::Zero(), sd = Vec3T<TK>::Zero();
   const TK* c = bm.c.data();
   const TK* cd = bm.cd.data();
-  for (int k = 0; k < pt.P.cols(); ++k) {
-    s += pt.P.col(k) * c[k];
-    sd += pt.P.col(k) * cd[k];
-  }
+  const Vec3T<TK> s = pointOffset<TK>(pt, [c](int k) -> const TK& { return c[k]; });
+  const Vec3T<TK> sd = pointOffset<TK>(pt, [cd](int k) -> const TK& { return cd[k]; });
   Vec3T<TK> rot = Vec3T<TK>::Zero();  // small rotations of the section about body x, y, z
   for (int j = 0; j < body.inertia.ne; ++j) rot += pt.theta.col(j) * bm.qe[j];
   g.s = s;
@@ -140,6 +146,41 @@ ElementFrame<TK> elementFrame(const Body& body, const BodyPoint& pt, const Blade
   return g;
 }
 
+/// The distance of a point at d from the rotor apex (ground components) from the rotor axis `disk` [m].
+template <class S>
+S distanceFromAxis(const Vec3T<S>& d, const Vec3T<S>& disk) {
+  using std::sqrt;
+  const Vec3T<S> dr = d - d.dot(disk) * disk;
+  return sqrt(dr.dot(dr));
+}
+
+/// R_tip of a blade (AeroDyn BEMT's Rtip, formed at each step): the largest distance of its elements from the
+/// rotor axis, from the blade body's frame (R, origin r0, basis c) and the rotor apex and axis (ground
+/// components). The element farthest out is found on the values; only its distance is formed in TK, whose
+/// derivatives are the maximum's.
+template <class TK>
+TK bladeTipRadius(const Body& body, const AeroBlade& blade, const Mat3T<TK>& R, const Vec3T<TK>& r0, const VecXT<TK>& c,
+                  const Vec3T<TK>& hub, const Vec3T<TK>& disk) {
+  const auto value = [](const TK& x) { return valueOf(x); };
+  const Mat3 Rv = R.unaryExpr(value);
+  const Vec3 r0v = r0.unaryExpr(value), hubv = hub.unaryExpr(value), diskv = disk.unaryExpr(value);
+  const TK* cp = c.data();
+  double tip = 0.0;
+  const BodyPoint* farthest = nullptr;
+  for (const AeroStation& st : blade.stations) {
+    const BodyPoint& pt = body.points[st.point];
+    const Vec3 s = pointOffset<double>(pt, [cp](int k) { return valueOf(cp[k]); });
+    const double r = distanceFromAxis<double>(Vec3(r0v + Rv * s - hubv), diskv);
+    if (r > tip) {
+      tip = r;
+      farthest = &pt;
+    }
+  }
+  if (!farthest) return TK(0.0);
+  const Vec3T<TK> s = pointOffset<TK>(*farthest, [cp](int k) -> const TK& { return cp[k]; });
+  return distanceFromAxis<TK>(Vec3T<TK>(r0 + R * s - hub), disk);
+}
+
 /// Where the elements of one blade are evaluated: the hub (rotor apex and disk normal, for the
 /// distance of an element from the rotor axis), the wind, the BEM weight of the rotor's tip-speed
 /// ratio, and the induction treatment.
@@ -166,37 +207,21 @@ void bladeLoads(const Model& m, int bi, int index0, const BladeMotion<TK>& bm, c
   const AeroBlade& blade = am.blades[static_cast<std::size_t>(bi)];
   const Body& body = m.bodies[blade.body];
   const BladeAxes<TK> axes = bladeAxes(body, bm);
-  using std::sqrt;
   const bool skewed = !in.frozen && in.skew && in.skew->active;
-  // The skewed-wake correction needs R_tip, the largest distance of the blade's elements from the rotor
-  // axis, before the first element's loads: with it the elements' frames are formed in a first pass.
-  auto radius = [&](const ElementFrame<TK>& g) {
-    const Vec3T<TK> d = g.pos - in.hub;
-    const Vec3T<TK> dr = d - d.dot(in.disk) * in.disk;
-    return TK(sqrt(dr.dot(dr)));
-  };
-  std::vector<ElementFrame<TK>> frames;
-  BladeSkew<TK> skew;
-  if (skewed) {
-    frames.reserve(blade.stations.size());
-    TK tip_radius(0.0);
-    for (const AeroStation& st : blade.stations) {
-      frames.push_back(elementFrame(body, body.points[st.point], bm, axes, st.curve));
-      const TK r = radius(frames.back());
-      if (valueOf(r) > valueOf(tip_radius)) tip_radius = r;
-    }
-    skew = bladeSkew(*in.skew, bm.R, tip_radius);
-  }
-  std::optional<ElementFrame<TK>> own;
+  // The skewed-wake correction needs R_tip, the largest distance of the blade's elements from the rotor axis,
+  // before the first element's loads.
+  const BladeSkew<TK> skew = skewed ? bladeSkew(*in.skew, bm.R,
+                                                bladeTipRadius(body, blade, bm.R, bm.r, bm.c, in.hub, in.disk))
+                                    : BladeSkew<TK>{};
   for (std::size_t si = 0; si < blade.stations.size(); ++si) {
     const int index = index0 + static_cast<int>(si);
     const AeroStation& st = blade.stations[si];
     const BodyPoint& pt = body.points[st.point];
-    const ElementFrame<TK>& g = skewed ? frames[si] : own.emplace(elementFrame(body, pt, bm, axes, st.curve));
+    const ElementFrame<TK> g = elementFrame(body, pt, bm, axes, st.curve);
     const Vec3T<T> rel = steadyWind(am.wind, in.wind_dir, in.speed, g.pos(2)) - g.vel.template cast<T>();
     const T vx = rel.dot(g.xn.template cast<T>()), vy = rel.dot(g.ya.template cast<T>());
     const Vec3T<TK> d = g.pos - in.hub;
-    const TK r = radius(g);
+    const TK r = distanceFromAxis<TK>(d, in.disk);
     // Positive twist and pitch turn the leading edge into the wind, about −x; an elastic
     // rotation about +x is the opposite.
     const T theta = T(st.twist) + T(bm.pitch - g.twist);

@@ -77,8 +77,7 @@ struct BladeSkew {
 
 /// A blade's sin ψ from the blade body's rotation R (the root's span axis ẑ_r, root to tip, is the body's x axis
 /// as elementFrame takes AeroDyn's z_a; not the pitch axis, which ElastoDyn turns about −x), and
-/// its R_tip (AeroDyn BEMT's Rtip at each step: the largest distance of its elements from the rotor axis,
-/// which the caller takes from the element frames it forms anyway).
+/// its R_tip (bladeTipRadius in aero_element.hxx).
 template <class TK>
 BladeSkew<TK> bladeSkew(const RotorSkew<TK>& rotor, const Mat3T<TK>& R, const TK& tip_radius) {
   using std::sqrt;
@@ -89,25 +88,6 @@ BladeSkew<TK> bladeSkew(const RotorSkew<TK>& rotor, const Mat3T<TK>& R, const TK
   const TK h = sqrt(sy * sy + sz * sz);
   if (valueOf(h) > 0) b.sin_psi = sy / h;  // ψ = atan2(sy, sz); 0 when both vanish (AeroDyn)
   return b;
-}
-
-/// R_tip of a blade from the blade body's frame (R, origin r0, basis c) and the hub's apex and axis: the
-/// largest distance of its elements from the rotor axis, for callers that do not form every element's frame.
-template <class TK>
-TK bladeTipRadius(const Body& body, const AeroBlade& blade, const Mat3T<TK>& R, const Vec3T<TK>& r0, const VecXT<TK>& c,
-                  const Vec3T<TK>& hub, const Vec3T<TK>& disk) {
-  using std::sqrt;
-  TK tip(0.0);
-  for (const AeroStation& st : blade.stations) {
-    const BodyPoint& pt = body.points[st.point];
-    Vec3T<TK> s = Vec3T<TK>::Zero();
-    for (int k = 0; k < pt.P.cols(); ++k) s += pt.P.col(k) * c(k);
-    const Vec3T<TK> d = r0 + R * s - hub;
-    const Vec3T<TK> dr = d - d.dot(disk) * disk;
-    const TK r = sqrt(dr.dot(dr));
-    if (valueOf(r) > valueOf(tip)) tip = r;
-  }
-  return tip;
 }
 
 /// The factor 1 + K tan(χ/2) (r / R_tip) sin ψ of an element with (uncorrected) axial induction a; |χ| beyond

@@ -158,7 +158,7 @@ template <class T>
 void addUnsteadyAeroLoads(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T>& qd, const VecXT<T>& u,
                           const AeroInflow& frozen, const VecXT<T>* z, VecXT<T>& e, VecXT<T>* zdot,
                           std::vector<aero::UaInput<T>>* inputs, VecXT<T>* quasi_steady, int element, VecXT<T>* e_qs,
-                          RotorTotals<T>* totals) {
+                          RotorTotals<T>* totals, int only_blade) {
   using std::sqrt;
   const AeroModel& am = m.aero;
   if (!am.active()) return;
@@ -185,7 +185,9 @@ void addUnsteadyAeroLoads(const Model& m, Workspace<T>& ws, const VecXT<T>& q, c
   for (std::size_t bi = 0; bi < am.blades.size(); ++bi) {
     const AeroBlade& blade = am.blades[bi];
     const int nst = static_cast<int>(blade.stations.size());
-    if (element >= 0 && (element < index || element >= index + nst)) {  // a blade without the element asked for
+    // A blade not asked for, or without the element asked for.
+    if ((only_blade >= 0 && static_cast<int>(bi) != only_blade) ||
+        (element >= 0 && (element < index || element >= index + nst))) {
       for (const AeroStation& st : blade.stations) zi += st.ua ? ns : 0;
       index += nst;
       continue;
@@ -213,8 +215,7 @@ void addUnsteadyAeroLoads(const Model& m, Workspace<T>& ws, const VecXT<T>& q, c
       const Vec3T<T> rel = detail::steadyWind(am.wind, wind_dir, speed, g.pos(2)) - g.vel;
       const T vx = rel.dot(g.xn), vy = rel.dot(g.ya);
       const Vec3T<T> d = g.pos - hub.r;
-      const Vec3T<T> dr = d - d.dot(disk) * disk;
-      const T r_t = sqrt(dr.dot(dr));
+      const T r_t = detail::distanceFromAxis<T>(d, disk);
       const double r = valueOf(r_t);
       const T theta = T(st.twist) + T(pitch - g.twist);
       const double ax = frozen.axial(index), tn = frozen.tangential(index);
@@ -308,12 +309,12 @@ void addUnsteadyAeroLoads(const Model& m, Workspace<T>& ws, const VecXT<T>& q, c
 
 template void addUnsteadyAeroLoads<double>(const Model&, Workspace<double>&, const VecX&, const VecX&, const VecX&,
                                            const AeroInflow&, const VecX*, VecX&, VecX*,
-                                           std::vector<aero::UaInput<double>>*, VecX*, int, VecX*,
-                                           RotorTotals<double>*);
+                                           std::vector<aero::UaInput<double>>*, VecX*, int, VecX*, RotorTotals<double>*,
+                                           int);
 template void addUnsteadyAeroLoads<ADChunk>(const Model&, Workspace<ADChunk>&, const VecXT<ADChunk>&,
                                             const VecXT<ADChunk>&, const VecXT<ADChunk>&, const AeroInflow&,
                                             const VecXT<ADChunk>*, VecXT<ADChunk>&, VecXT<ADChunk>*,
                                             std::vector<aero::UaInput<ADChunk>>*, VecXT<ADChunk>*, int, VecXT<ADChunk>*,
-                                            RotorTotals<ADChunk>*);
+                                            RotorTotals<ADChunk>*, int);
 
 }  // namespace whirl

@@ -68,11 +68,13 @@ void removeUnsteadyAirfoils(AeroModel& am);
 /// (linearize/unsteady_aero.cpp). `totals` (if given) receives the rotor thrust and torque of the loads in e and
 /// each blade's resultant force and moment about its body origin (ground components, as addAeroLoads forms them):
 /// the load outputs with the states (evaluateOutputs); blades without the element asked for keep zero resultants.
+/// `only_blade` ≥ 0 evaluates that blade's elements alone (as `element` one element): the coordinates that move one
+/// blade only can then share a derivative direction in linearize/unsteady_aero.cpp.
 template <class T>
 void addUnsteadyAeroLoads(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T>& qd, const VecXT<T>& u,
                           const AeroInflow& frozen, const VecXT<T>* z, VecXT<T>& e, VecXT<T>* zdot,
                           std::vector<aero::UaInput<T>>* inputs = nullptr, VecXT<T>* quasi_steady = nullptr,
-                          int element = -1, VecXT<T>* e_qs = nullptr, RotorTotals<T>* totals = nullptr);
+                          int element = -1, VecXT<T>* e_qs = nullptr, RotorTotals<T>* totals = nullptr, int blade = -1);
 
 /// The airfoil of a station for the UA functions (the polar, its UA table and Cm rule, the chord).
 aero::UaSection uaSection(const AeroModel& am, const AeroStation& st);

@@ -2,6 +2,8 @@
 // "Numbers"): a state of element i enters only element i's loads and rates, so unsteadyAeroLinear evaluates
 // each element's state columns with that element alone (addUnsteadyAeroLoads' element filter). Checked
 // against the independent path it replaced: chunks of 8 states seeded through every element of every blade.
+// The same path checks the columns of q, q̇ and u, whose directions a column that moves one blade only shares
+// with the other blades' (their loads evaluated one blade at a time, addUnsteadyAeroLoads' blade filter).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -135,6 +137,28 @@ TEST(UnsteadyAeroElementColumns, ElementFilterGivesThatElementsShareOfTheLoads) 
     addUnsteadyAeroLoads<double>(m, ws, op.q, op.qd, op.u, op.inflow, &z, sum, &zdot, nullptr, nullptr, el);
   EXPECT_LE((sum - all).cwiseAbs().maxCoeff(), 1e-12 * all.cwiseAbs().maxCoeff());
   EXPECT_EQ(zdot, zdot_all);  // every rate written once, by its own element (none left at 7)
+}
+
+TEST(UnsteadyAeroElementColumns, BladeFilterGivesThatBladesShareOfTheLoads) {
+  // The loads of all blades are the sum of each blade's alone, and each blade writes its own states' rates.
+  const Model m = readElastoDynModel(deck("cases/nrel5mw/Main_Aero.fst"),
+                                     {"AFAeroMod=2", "UAMod=4", "WakeMod=2", "DBEMT_Mod=3"});
+  const OperatingPoint op = test::nrel5mwRatedPoint(m);
+  const VecX z = unsteadyAeroSteadyStates(m, op);
+  Workspace<double> ws(m);
+  forwardKinematics(m, ws, op.q, op.qd, op.qdd);
+  VecX all = VecX::Zero(m.ndof()), sum = VecX::Zero(m.ndof());
+  VecX zdot_all = VecX::Zero(z.size()), zdot = VecX::Constant(z.size(), 7.0);
+  addUnsteadyAeroLoads<double>(m, ws, op.q, op.qd, op.u, op.inflow, &z, all, &zdot_all);
+  for (int b = 0; b < static_cast<int>(m.aero.blades.size()); ++b) {
+    VecX one = VecX::Zero(m.ndof());
+    addUnsteadyAeroLoads<double>(m, ws, op.q, op.qd, op.u, op.inflow, &z, one, &zdot, nullptr, nullptr, -1, nullptr,
+                                 nullptr, b);
+    EXPECT_GT(one.cwiseAbs().maxCoeff(), 0.01 * all.cwiseAbs().maxCoeff()) << "blade " << b + 1;
+    sum += one;
+  }
+  EXPECT_LE((sum - all).cwiseAbs().maxCoeff(), 1e-12 * all.cwiseAbs().maxCoeff());
+  EXPECT_EQ(zdot, zdot_all);
 }
 
 }  // namespace
