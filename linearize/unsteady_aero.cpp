@@ -66,9 +66,10 @@ std::vector<int> bladeOfDof(const Model& m) {
 }
 
 // The derivative directions of the columns of q, q̇ and u (indices into `all`): a column that moves every blade
-// has a direction of its own; columns that move one blade each, of different blades, share one (Curtis, Powell
-// & Reid 1974: a blade's loads depend on its own coordinates only, so its evaluation reads each shared direction
-// as its own column's).
+// has a direction of its own; columns that move one blade each, of different blades, share one. The loads are a
+// sum of the blades' terms, each a function of the common columns and its own blade's (partial separability,
+// Griewank & Toint 1982): evaluated apart, a blade's term has zero columns for the other blades' coordinates, so
+// they share its columns' directions (Curtis, Powell & Reid 1974).
 std::vector<std::vector<int>> sharedDirections(const std::vector<int>& blade_of_column, int nblades) {
   std::vector<std::vector<int>> out, by_blade(static_cast<std::size_t>(nblades));
   for (std::size_t c = 0; c < blade_of_column.size(); ++c) {

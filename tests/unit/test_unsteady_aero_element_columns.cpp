@@ -122,43 +122,48 @@ TEST(UnsteadyAeroElementColumns, Nrel5mwWithUaAndDynamicInflow) {
   expectSameBlocks(m, test::nrel5mwRatedPoint(m));
 }
 
+// The NREL 5MW at rated with UA and DBEMT, the kinematics at the point, and what addUnsteadyAeroLoads gives for
+// every element at once (in double, at the point's steady states): the reference of the filter tests.
+struct EveryElement {
+  Model m = readElastoDynModel(deck("cases/nrel5mw/Main_Aero.fst"),
+                               {"AFAeroMod=2", "UAMod=4", "WakeMod=2", "DBEMT_Mod=3"});
+  OperatingPoint op = test::nrel5mwRatedPoint(m);
+  VecX z = unsteadyAeroSteadyStates(m, op);
+  Workspace<double> ws{m};
+  VecX e = VecX::Zero(m.ndof()), zdot = VecX::Zero(z.size());
+
+  EveryElement() {
+    forwardKinematics(m, ws, op.q, op.qd, op.qdd);
+    addUnsteadyAeroLoads<double>(m, ws, op.q, op.qd, op.u, op.inflow, &z, e, &zdot);
+  }
+  /// The loads and rates of a filtered call: element `el` alone, or blade `b` alone.
+  void add(VecX& sum, VecX& rates, int el, int b) {
+    addUnsteadyAeroLoads<double>(m, ws, op.q, op.qd, op.u, op.inflow, &z, sum, &rates, nullptr, nullptr, el, nullptr,
+                                 nullptr, b);
+  }
+};
+
 TEST(UnsteadyAeroElementColumns, ElementFilterGivesThatElementsShareOfTheLoads) {
-  // The loads of all elements are the sum of each element's alone (in double, at the point's states).
-  const Model m = readElastoDynModel(deck("cases/nrel5mw/Main_Aero.fst"),
-                                     {"AFAeroMod=2", "UAMod=4", "WakeMod=2", "DBEMT_Mod=3"});
-  const OperatingPoint op = test::nrel5mwRatedPoint(m);
-  const VecX z = unsteadyAeroSteadyStates(m, op);
-  Workspace<double> ws(m);
-  forwardKinematics(m, ws, op.q, op.qd, op.qdd);
-  VecX all = VecX::Zero(m.ndof()), sum = VecX::Zero(m.ndof());
-  VecX zdot_all = VecX::Zero(z.size()), zdot = VecX::Constant(z.size(), 7.0);
-  addUnsteadyAeroLoads<double>(m, ws, op.q, op.qd, op.u, op.inflow, &z, all, &zdot_all);
-  for (int el = 0; el < m.aero.nstations(); ++el)
-    addUnsteadyAeroLoads<double>(m, ws, op.q, op.qd, op.u, op.inflow, &z, sum, &zdot, nullptr, nullptr, el);
-  EXPECT_LE((sum - all).cwiseAbs().maxCoeff(), 1e-12 * all.cwiseAbs().maxCoeff());
-  EXPECT_EQ(zdot, zdot_all);  // every rate written once, by its own element (none left at 7)
+  // The loads of all elements are the sum of each element's alone.
+  EveryElement all;
+  VecX sum = VecX::Zero(all.m.ndof()), zdot = VecX::Constant(all.z.size(), 7.0);
+  for (int el = 0; el < all.m.aero.nstations(); ++el) all.add(sum, zdot, el, -1);
+  EXPECT_LE((sum - all.e).cwiseAbs().maxCoeff(), 1e-12 * all.e.cwiseAbs().maxCoeff());
+  EXPECT_EQ(zdot, all.zdot);  // every rate written once, by its own element (none left at 7)
 }
 
 TEST(UnsteadyAeroElementColumns, BladeFilterGivesThatBladesShareOfTheLoads) {
   // The loads of all blades are the sum of each blade's alone, and each blade writes its own states' rates.
-  const Model m = readElastoDynModel(deck("cases/nrel5mw/Main_Aero.fst"),
-                                     {"AFAeroMod=2", "UAMod=4", "WakeMod=2", "DBEMT_Mod=3"});
-  const OperatingPoint op = test::nrel5mwRatedPoint(m);
-  const VecX z = unsteadyAeroSteadyStates(m, op);
-  Workspace<double> ws(m);
-  forwardKinematics(m, ws, op.q, op.qd, op.qdd);
-  VecX all = VecX::Zero(m.ndof()), sum = VecX::Zero(m.ndof());
-  VecX zdot_all = VecX::Zero(z.size()), zdot = VecX::Constant(z.size(), 7.0);
-  addUnsteadyAeroLoads<double>(m, ws, op.q, op.qd, op.u, op.inflow, &z, all, &zdot_all);
-  for (int b = 0; b < static_cast<int>(m.aero.blades.size()); ++b) {
-    VecX one = VecX::Zero(m.ndof());
-    addUnsteadyAeroLoads<double>(m, ws, op.q, op.qd, op.u, op.inflow, &z, one, &zdot, nullptr, nullptr, -1, nullptr,
-                                 nullptr, b);
-    EXPECT_GT(one.cwiseAbs().maxCoeff(), 0.01 * all.cwiseAbs().maxCoeff()) << "blade " << b + 1;
+  EveryElement all;
+  VecX sum = VecX::Zero(all.m.ndof()), zdot = VecX::Constant(all.z.size(), 7.0);
+  for (int b = 0; b < static_cast<int>(all.m.aero.blades.size()); ++b) {
+    VecX one = VecX::Zero(all.m.ndof());
+    all.add(one, zdot, -1, b);
+    EXPECT_GT(one.cwiseAbs().maxCoeff(), 0.01 * all.e.cwiseAbs().maxCoeff()) << "blade " << b + 1;
     sum += one;
   }
-  EXPECT_LE((sum - all).cwiseAbs().maxCoeff(), 1e-12 * all.cwiseAbs().maxCoeff());
-  EXPECT_EQ(zdot, zdot_all);
+  EXPECT_LE((sum - all.e).cwiseAbs().maxCoeff(), 1e-12 * all.e.cwiseAbs().maxCoeff());
+  EXPECT_EQ(zdot, all.zdot);
 }
 
 }  // namespace
