@@ -74,7 +74,8 @@ template <class T>
 void addUnsteadyAeroLoads(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T>& qd, const VecXT<T>& u,
                           const AeroInflow& frozen, const VecXT<T>* z, VecXT<T>& e, VecXT<T>* zdot,
                           std::vector<aero::UaInput<T>>* inputs = nullptr, VecXT<T>* quasi_steady = nullptr,
-                          int element = -1, VecXT<T>* e_qs = nullptr, RotorTotals<T>* totals = nullptr, int blade = -1);
+                          int element = -1, VecXT<T>* e_qs = nullptr, RotorTotals<T>* totals = nullptr,
+                          int only_blade = -1);
 
 /// The airfoil of a station for the UA functions (the polar, its UA table and Cm rule, the chord).
 aero::UaSection uaSection(const AeroModel& am, const AeroStation& st);
