@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <stdexcept>
+#include <vector>
 
 #include "modal/campbell_serialize.hpp"
 #include "src/base/error.hpp"
@@ -52,6 +54,44 @@ TEST(ParallelMap, LowestFailingTaskWinsWithItsType) {
                                             return "";
                                           }),
                ComputeError);
+}
+
+// In one process the typed map keeps the tasks' results as they are (no byte round trip: an encoder that would
+// fail is not called), stops at the first failing task with its type, and turns other errors into
+// std::runtime_error with their text, as parallelMapBytes does.
+TEST(ParallelMap, OneProcessKeepsTheResultsWithoutTheirBytes) {
+  auto no_bytes = [](const std::vector<int>&) -> std::string { throw std::logic_error("encoded"); };
+  auto no_result = [](const std::string&) -> std::vector<int> { throw std::logic_error("decoded"); };
+  const auto out = parallel::parallelMap<std::vector<int>>(
+      3, [](int k) { return std::vector<int>(k, k); }, no_bytes, no_result);
+  ASSERT_EQ(out.size(), 3u);
+  EXPECT_EQ(out[2], (std::vector<int>{2, 2}));
+  int ran = 0, progress = 0;
+  parallel::MapOptions opt;
+  opt.progress = [&](int done, int) { progress = done; };
+  try {
+    parallel::parallelMap<std::vector<int>>(
+        9,
+        [&](int k) {
+          ++ran;
+          if (k == 2) throw ComputeError("no convergence");
+          return std::vector<int>{};
+        },
+        no_bytes, no_result, opt);
+    FAIL() << "no exception";
+  } catch (const ComputeError& e) {
+    EXPECT_STREQ(e.what(), "no convergence");
+  }
+  EXPECT_EQ(ran, 3);
+  EXPECT_EQ(progress, 3);  // the failing task counts as done, as in parallelMapBytes
+  try {
+    parallel::parallelMap<std::vector<int>>(
+        2, [](int) -> std::vector<int> { throw std::length_error("vector::reserve"); }, no_bytes, no_result);
+    FAIL() << "no exception";
+  } catch (const std::runtime_error& e) {
+    EXPECT_STREQ(e.what(), "vector::reserve");
+    EXPECT_EQ(dynamic_cast<const std::length_error*>(&e), nullptr);
+  }
 }
 
 TEST(ParallelMap, CommandLineSplitsPetscOptions) {
