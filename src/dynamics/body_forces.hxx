@@ -130,9 +130,9 @@ void positionSums(const BodyInertia& in, const VecXT<TQ>& c, BasisProducts<TQ, T
   for (int k = 0; k < 3; ++k) p.m1c(k) = dot(in.m1.data() + k, 3, c, len[k]);
 }
 
-// Pcd, Pcdd, m1cd, m1cdd, s (the rate part after its products z).
+// Pcd, Pcdd, m1cd, m1cdd (the rate part after its products z).
 template <class TQ, class TR>
-void rateSums(const BodyInertia& in, const VecXT<TR>& cd, const VecXT<TR>& cdd, BasisProducts<TQ, TR>& p) {
+void rateDots(const BodyInertia& in, const VecXT<TR>& cd, const VecXT<TR>& cdd, BasisProducts<TQ, TR>& p) {
   const std::array<int, 3>& len = in.len;
   for (int l = 0; l < 3; ++l) {  // six independent sums per row l, as in positionSums
     TR b[3] = {TR(0), TR(0), TR(0)}, d[3] = {TR(0), TR(0), TR(0)};
@@ -151,6 +151,12 @@ void rateSums(const BodyInertia& in, const VecXT<TR>& cd, const VecXT<TR>& cdd, 
     p.m1cd(k) = dot(in.m1.data() + k, 3, cd, len[k]);
     p.m1cdd(k) = dot(in.m1.data() + k, 3, cdd, len[k]);
   }
+}
+
+// s = Σ_k S_kk c̈.
+template <class TQ, class TR>
+void traceProduct(const BodyInertia& in, const VecXT<TR>& cdd, BasisProducts<TQ, TR>& p) {
+  const std::array<int, 3>& len = in.len;
   if (in.ne == 0) return;
   const int nc = in.nc();
   if (in.Strace.rows() == nc) {
@@ -162,6 +168,13 @@ void rateSums(const BodyInertia& in, const VecXT<TR>& cd, const VecXT<TR>& cdd, 
       for (int r = 0; r < len[k]; ++r) p.scdd(r) += p.z[4 * k](r);
     }
   }
+}
+
+// Pcd, Pcdd, m1cd, m1cdd, s (the rate part after its products z).
+template <class TQ, class TR>
+void rateSums(const BodyInertia& in, const VecXT<TR>& cd, const VecXT<TR>& cdd, BasisProducts<TQ, TR>& p) {
+  rateDots(in, cd, cdd, p);
+  traceProduct(in, cdd, p);
 }
 
 }  // namespace detail

@@ -80,6 +80,33 @@ void evalBasis(const BodyInertia& in, const T* q, const T* qd, const T* qdd, Bas
     }
 }
 
+// Whether any of x[0..n), ẋ, ẍ carries a seeded direction.
+template <class T>
+bool coordinatesSeeded(int n, const T* x, const T* xd, const T* xdd) {
+  for (int k = 0; k < n; ++k)
+    if (seeded(x[k]) || seeded(xd[k]) || seeded(xdd[k])) return true;
+  return false;
+}
+
+// b = the double basis c (values only, no derivatives): what evalBasis gives when none of its
+// arguments is seeded, without its products in the AD scalar.
+template <class T>
+void constantBasis(const BodyInertia& in, const BasisState<double>& c, BasisState<T>& b) {
+  const int ne = in.ne, nc = in.nc();
+  for (int r = 0; r < nc; ++r) {
+    b.c(r) = T(c.c(r));
+    b.cd(r) = T(c.cd(r));
+    b.cdd(r) = T(c.cdd(r));
+  }
+  if (!in.quadratic) return;
+  int p = 1 + ne;
+  for (int i = 0; i < ne; ++i)
+    for (int j = i; j < ne; ++j, ++p) {
+      b.D(p, i) = T(c.D(p, i));
+      b.D(p, j) = T(c.D(p, j));
+    }
+}
+
 // D's constant part (evalBasis writes the rest): once per buffer.
 template <class T>
 void initBasisD(const BodyInertia& in, BasisState<T>& b) {
@@ -120,6 +147,14 @@ void forwardKinematics(const Model& m, Workspace<T>& ws, const VecXT<T>& q, cons
     BasisState<T>& bs = ws.basis[i];
     if (b.inertia.ne > 0) {
       const int e0 = b.elastic_dof;
+      if constexpr (!std::is_same_v<T, double>) {
+        // In a derivatives-only pass, a basis no seeded coordinate moves is the double basis.
+        if (pass.derivativesOnly() &&
+            !detail::coordinatesSeeded(b.inertia.ne, q.data() + e0, qd.data() + e0, qdd.data() + e0)) {
+          detail::constantBasis(b.inertia, pass.kinematics->basis[i], bs);
+          continue;
+        }
+      }
       detail::evalBasis(b.inertia, q.data() + e0, qd.data() + e0, qdd.data() + e0, bs);
     } else {
       bs.c(0) = T(1);

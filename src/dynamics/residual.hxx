@@ -1,6 +1,7 @@
 #pragma once
 #include <cassert>
 #include "src/dynamics/aero_loads.hxx"
+#include "src/dynamics/basis_jet.hxx"
 #include "src/dynamics/body_forces.hxx"
 #include "src/dynamics/generator_torque.hpp"
 #include "src/dynamics/kinematics.hxx"
@@ -44,9 +45,41 @@ bool elasticSeeded(const Body& b, const VecXT<T>& x) {
   return false;
 }
 
+// The body's double basis and products at the values of its elastic coordinates in q, q̇, q̈
+// (kept while they keep their values; the jet is formed again when first asked for at new values).
+template <class T>
+ConstantBasis& constantBasisAt(const Body& b, Workspace<T>& ws, int i, const VecXT<T>& q, const VecXT<T>& qd,
+                               const VecXT<T>& qdd) {
+  const BodyInertia& in = b.inertia;
+  const BasisState<T>& bs = ws.basis[i];
+  ConstantBasis& cb = ws.constant_basis[i];
+  const int ne = in.ne, e0 = b.elastic_dof, nc = in.nc();
+  bool same = cb.valid;
+  for (int j = 0; j < ne && same; ++j)
+    same = cb.key(j) == q(e0 + j).value() && cb.key(ne + j) == qd(e0 + j).value() &&
+           cb.key(2 * ne + j) == qdd(e0 + j).value();
+  if (same) return cb;
+  for (int j = 0; j < ne; ++j) {
+    cb.key(j) = q(e0 + j).value();
+    cb.key(ne + j) = qd(e0 + j).value();
+    cb.key(2 * ne + j) = qdd(e0 + j).value();
+  }
+  for (int r = 0; r < nc; ++r) {
+    cb.basis.c(r) = bs.c(r).value();
+    cb.basis.cd(r) = bs.cd(r).value();
+    cb.basis.cdd(r) = bs.cdd(r).value();
+    for (int j = 0; j < ne; ++j) cb.basis.D(r, j) = bs.D(r, j).value();
+  }
+  basisProducts(in, cb.basis.c, cb.basis.cd, cb.basis.cdd, cb.prod);
+  cb.valid = true;
+  cb.jet.valid = false;
+  return cb;
+}
+
 // Inertia forces of body i (body_forces.hxx) from its frame's â, α, ω. In an AD pass, the basis
 // products are formed in double when the body's own coordinates are not seeded (c, ċ, c̈ and D
-// then carry zero derivatives; cached across passes at the same point), and the c-only products in
+// then carry zero derivatives; cached across passes at the same point); when they are, from the
+// double products and their preaccumulated derivatives (basis_jet.hxx), the c-only products in
 // double when only q̇ or q̈ are seeded.
 template <class T>
 void bodyInertiaForces(const Model& m, int i, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T>& qd,
@@ -64,39 +97,30 @@ void bodyInertiaForces(const Model& m, int i, Workspace<T>& ws, const VecXT<T>& 
     basisProducts(in, bs.c, bs.cd, bs.cdd, p);
     frameForces(in, p, bs.D, ahat, alpha, omega, ws.g, F, Tq, H);
   } else {
-    if (elasticSeeded(b, q)) {
+    const bool finalized = in.Strace.rows() == in.nc();
+    const bool sq = elasticSeeded(b, q), sqd = elasticSeeded(b, qd), sqdd = elasticSeeded(b, qdd);
+    if (sq && !finalized) {
       basisProducts(in, bs.c, bs.cd, bs.cdd, ws.prod);
       frameForces(in, ws.prod, bs.D, ahat, alpha, omega, ws.g, F, Tq, H);
       return;
     }
-    // c and D carry no seeded direction: double products, kept while q_e, q̇_e, q̈_e keep their values.
-    ConstantBasis& cb = ws.constant_basis[i];
-    const int ne = in.ne, e0 = b.elastic_dof, nc = in.nc();
-    bool same = cb.valid;
-    for (int j = 0; j < ne && same; ++j)
-      same = cb.key(j) == q(e0 + j).value() && cb.key(ne + j) == qd(e0 + j).value() &&
-             cb.key(2 * ne + j) == qdd(e0 + j).value();
-    if (!same) {
-      for (int j = 0; j < ne; ++j) {
-        cb.key(j) = q(e0 + j).value();
-        cb.key(ne + j) = qd(e0 + j).value();
-        cb.key(2 * ne + j) = qdd(e0 + j).value();
-      }
-      for (int r = 0; r < nc; ++r) {
-        cb.basis.c(r) = bs.c(r).value();
-        cb.basis.cd(r) = bs.cd(r).value();
-        cb.basis.cdd(r) = bs.cdd(r).value();
-        for (int j = 0; j < ne; ++j) cb.basis.D(r, j) = bs.D(r, j).value();
-      }
-      basisProducts(in, cb.basis.c, cb.basis.cd, cb.basis.cdd, cb.prod);
-      cb.valid = true;
+    ConstantBasis& cb = constantBasisAt(b, ws, i, q, qd, qdd);
+    const int e0 = b.elastic_dof;
+    if (sq) {
+      jetBasisProducts(in, cb, q.data() + e0, qd.data() + e0, qdd.data() + e0, sq, sqd, sqdd, bs, ws.prod);
+      frameForces(in, ws.prod, bs.D, ahat, alpha, omega, ws.g, F, Tq, H);
+      return;
     }
-    if (elasticSeeded(b, qd) || elasticSeeded(b, qdd)) {  // q̇ or q̈ columns: only the rate part in AD
+    if (sqd || sqdd) {  // q̇ or q̈ columns: only the rate part in AD
       BasisProducts<double, T>& p = ws.prod_dt;
-      for (int k = 0; k < 9; ++k) p.y[k].head(in.len[k / 3]) = cb.prod.y[k].head(in.len[k / 3]);
-      p.Pc = cb.prod.Pc;
-      p.m1c = cb.prod.m1c;
-      basisRateProducts(in, bs.cd, bs.cdd, p);
+      if (finalized) {
+        jetRateProducts(in, cb, qd.data() + e0, qdd.data() + e0, sqd, sqdd, bs, p);
+      } else {
+        for (int k = 0; k < 9; ++k) p.y[k].head(in.len[k / 3]) = cb.prod.y[k].head(in.len[k / 3]);
+        p.Pc = cb.prod.Pc;
+        p.m1c = cb.prod.m1c;
+        basisRateProducts(in, bs.cd, bs.cdd, p);
+      }
       frameForces(in, p, cb.basis.D, ahat, alpha, omega, ws.g, F, Tq, H);
       return;
     }

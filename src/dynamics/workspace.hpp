@@ -50,6 +50,26 @@ struct BasisProducts {
   Vec3T<TR> m1cd, m1cdd;       ///< m1 ċ, m1 c̈
 };
 
+/// The first derivatives of one body's stage-1 products (body_forces.hxx) with respect to its own
+/// elastic coordinates at the values of a ConstantBasis, preaccumulated once per point for the AD
+/// passes that seed them (Griewank & Walther 2008, §10; basis_jet.hxx). With D(x) the pattern of
+/// ∂c/∂q_e with the values x in its quadratic rows (D(q) = ∂c/∂q_e, D₂(x) its quadratic rows only):
+///   ∂y_kl = S_kl D(q) ∂q,  ∂z_kl = S_kl D(q) ∂q̇ + S_kl D₂(q̇) ∂q,
+///   ∂s = Σ_k S_kk (D(q) ∂q̈ + 2 D₂(q̇) ∂q̇ + D₂(q̈) ∂q).
+/// Each matrix holds the rows of its ShapeIntegralBlock (nr × ne): a pass then contracts ne
+/// derivative rows instead of nc.
+struct BasisJet {
+  bool valid = false;
+  bool rates = false;          ///< q̇_e ≠ 0 at the key (Sqd, Tqd formed)
+  bool accelerations = false;  ///< q̈_e ≠ 0 at the key (Tqdd formed)
+  std::array<MatX, 9> Sq;      ///< S_kl D(q)
+  std::array<MatX, 9> Sqd;     ///< S_kl D₂(q̇), k ≠ l
+  MatX Tq, Tqd, Tqdd;          ///< Σ_k S_kk D(q), D₂(q̇), D₂(q̈)
+  /// Basis index → the pair (i, j) of its product q_i q_j (−1 for the constant and linear entries).
+  std::vector<std::array<int, 2>> pair;
+  MatX dq, dqd, dqdd;  ///< a pass's derivatives of q_e, q̇_e, q̈_e (directions × ne)
+};
+
 /// One body's basis state and basis products in double at given values of its elastic coordinates:
 /// AD passes that seed none of them reuse these instead of recomputing them per chunk.
 struct ConstantBasis {
@@ -64,6 +84,7 @@ struct ConstantBasis {
   VecX key;  ///< [q_e; q̇_e; q̈_e] the products were formed at
   BasisState<double> basis;
   BasisProducts<double, double> prod;
+  BasisJet jet;  ///< derivatives of prod in q_e, q̇_e, q̈_e at key (formed when a pass seeds them)
 };
 
 /// Buffers of the double mass-matrix assembly (mass_matrix.cpp), sized to the largest body.
