@@ -103,8 +103,8 @@ BENCHMARK_CAPTURE(linearizationParts, M, 3)->Unit(benchmark::kMicrosecond);
 // One linearization per azimuth of the 5MW turning at 12 rpm (36 azimuths, each its own equilibrium),
 // as in a Campbell sweep: every call sees a new point, so nothing cached per point is reused.
 // Reported: time per linearization (per_linearization).
-void nrel5mwAzimuths(benchmark::State& state) {
-  const Model m = load("nrel5mw");
+void azimuthLinearizations(benchmark::State& state, const std::string& name) {
+  const Model m = load(name);
   OperatingPoint start = initialPoint(m);
   start.qd(findAzimuthDof(m)) = 12.0 * 2 * std::numbers::pi / 60;
   PeriodicOptions opt;
@@ -120,7 +120,11 @@ void nrel5mwAzimuths(benchmark::State& state) {
                                                            benchmark::Counter::kIsIterationInvariantRate |
                                                                benchmark::Counter::kInvert);
 }
+void nrel5mwAzimuths(benchmark::State& state) { azimuthLinearizations(state, "nrel5mw"); }
 BENCHMARK(nrel5mwAzimuths)->Unit(benchmark::kMicrosecond);
+// The same with Test26's BeamDyn blades, 8 modes each (31 DOFs; issue 46: ≤ 100 µs).
+void nrel5mwBeamDynAzimuths(benchmark::State& state) { azimuthLinearizations(state, "nrel5mw_beamdyn"); }
+BENCHMARK(nrel5mwBeamDynAzimuths)->Unit(benchmark::kMicrosecond);
 
 // The NREL 5MW Campbell diagram of the main command: 31 rotor speeds (0–15 rpm) × 36 azimuths, each
 // an equilibrium solve and a linearization, multiblade average and eigenanalysis (no output files).

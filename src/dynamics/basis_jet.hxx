@@ -25,43 +25,43 @@ inline void basisPairs(const BodyInertia& in, std::vector<std::array<int, 2>>& p
     for (int j = i; j < in.ne; ++j, ++p) pair[static_cast<std::size_t>(p)] = {i, j};
 }
 
-// out = S D(x) on S's block rows (nr × ne): D's identity rows when `linear`, its quadratic rows
-// ∂(q_i q_j)/∂q with the values x (x_j in column i, x_i in column j).
-inline void blockTimesD(const ShapeIntegralBlock& S, const std::vector<std::array<int, 2>>& pair, int ne,
-                        const double* x, bool linear, MatX& out) {
-  const int nr = static_cast<int>(S.rows.size()), ncol = static_cast<int>(S.cols.size());
-  out.setZero(nr, ne);
-  const double* v = S.values.data();
-  for (int a = 0; a < nr; ++a, v += ncol)
-    for (int b = 0; b < ncol; ++b) {
-      const int c = S.cols[static_cast<std::size_t>(b)];
-      if (c == 0) continue;
-      if (c <= ne) {
-        if (linear) out(a, c - 1) += v[b];
-        continue;
-      }
-      const auto [i, j] = pair[static_cast<std::size_t>(c)];
-      out(a, i) += v[b] * x[j];
-      out(a, j) += v[b] * x[i];
-    }
+// D₂(x): ∂c/∂q_e's quadratic rows with the values x (x_j in column i, x_i in column j of the row of
+// q_i q_j), zero elsewhere (nc × ne).
+inline MatX quadraticRows(const BodyInertia& in, const std::vector<std::array<int, 2>>& pair, const double* x) {
+  MatX D = MatX::Zero(in.nc(), in.ne);
+  for (int p = 1 + in.ne; p < in.nc(); ++p) {
+    const auto [i, j] = pair[static_cast<std::size_t>(p)];
+    D(p, i) += x[j];
+    D(p, j) += x[i];
+  }
+  return D;
 }
 
-// The jet at key = [q_e; q̇_e; q̈_e] (a finalized body: its S_block and Strace_block set).
-inline void formBasisJet(const BodyInertia& in, const VecX& key, BasisJet& jet) {
+// out = S D on S's block rows (nr × ne): the block's values (row-major) times D's rows of its columns.
+inline void blockTimesD(const ShapeIntegralBlock& S, const MatX& D, MatX& out) {
+  using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  const Eigen::Map<const RowMajor> V(S.values.data(), static_cast<Eigen::Index>(S.rows.size()),
+                                     static_cast<Eigen::Index>(S.cols.size()));
+  out.noalias() = V * D(S.cols, Eigen::all);
+}
+
+// The jet at cb's values (a finalized body: its S_block and Strace_block set); D(q) is cb.basis.D.
+inline void formBasisJet(const BodyInertia& in, const ConstantBasis& cb, BasisJet& jet) {
   const int ne = in.ne;
   if (static_cast<int>(jet.pair.size()) != in.nc()) basisPairs(in, jet.pair);
-  const double* q = key.data();
-  const double* qd = q + ne;
+  const double* qd = cb.key.data() + ne;
   const double* qdd = qd + ne;
-  jet.rates = !key.segment(ne, ne).isZero(0.0);
-  jet.accelerations = !key.segment(2 * ne, ne).isZero(0.0);
+  jet.rates = !cb.key.segment(ne, ne).isZero(0.0);
+  jet.accelerations = !cb.key.segment(2 * ne, ne).isZero(0.0);
+  const MatX& Dq = cb.basis.D;
+  MatX Dqd = jet.rates ? quadraticRows(in, jet.pair, qd) : MatX();
   for (int kl = 0; kl < 9; ++kl) {
-    blockTimesD(in.S_block[kl], jet.pair, ne, q, true, jet.Sq[kl]);
-    if (kl % 4 != 0 && jet.rates) blockTimesD(in.S_block[kl], jet.pair, ne, qd, false, jet.Sqd[kl]);
+    blockTimesD(in.S_block[kl], Dq, jet.Sq[kl]);
+    if (kl % 4 != 0 && jet.rates) blockTimesD(in.S_block[kl], Dqd, jet.Sqd[kl]);
   }
-  blockTimesD(in.Strace_block, jet.pair, ne, q, true, jet.Tq);
-  if (jet.rates) blockTimesD(in.Strace_block, jet.pair, ne, qd, false, jet.Tqd);
-  if (jet.accelerations) blockTimesD(in.Strace_block, jet.pair, ne, qdd, false, jet.Tqdd);
+  blockTimesD(in.Strace_block, Dq, jet.Tq);
+  if (jet.rates) blockTimesD(in.Strace_block, Dqd, jet.Tqd);
+  if (jet.accelerations) blockTimesD(in.Strace_block, quadraticRows(in, jet.pair, qdd), jet.Tqdd);
   jet.valid = true;
 }
 
@@ -133,7 +133,7 @@ template <class T>
 void jetBasisProducts(const BodyInertia& in, ConstantBasis& cb, const T* qe, const T* qde, const T* qdde, bool sq,
                       bool sqd, bool sqdd, const BasisState<T>& bs, BasisProducts<T, T>& p) {
   BasisJet& jet = cb.jet;
-  if (!jet.valid) detail::formBasisJet(in, cb.key, jet);
+  if (!jet.valid) detail::formBasisJet(in, cb, jet);
   const int ne = in.ne;
   if (sq) detail::gatherDerivatives(qe, ne, jet.dq);
   if (sqd) detail::gatherDerivatives(qde, ne, jet.dqd);
@@ -152,7 +152,7 @@ template <class T>
 void jetRateProducts(const BodyInertia& in, ConstantBasis& cb, const T* qde, const T* qdde, bool sqd, bool sqdd,
                      const BasisState<T>& bs, BasisProducts<double, T>& p) {
   BasisJet& jet = cb.jet;
-  if (!jet.valid) detail::formBasisJet(in, cb.key, jet);
+  if (!jet.valid) detail::formBasisJet(in, cb, jet);
   const int ne = in.ne;
   if (sqd) detail::gatherDerivatives(qde, ne, jet.dqd);
   if (sqdd) detail::gatherDerivatives(qdde, ne, jet.dqdd);

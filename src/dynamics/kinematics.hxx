@@ -80,6 +80,12 @@ void evalBasis(const BodyInertia& in, const T* q, const T* qd, const T* qdd, Bas
     }
 }
 
+/// The fewest elastic coordinates for which an AD pass takes a body's basis from the double
+/// kinematics and its stage-1 products from their preaccumulated derivatives (basis_jet.hxx): with
+/// ElastoDyn's 3 or 4 shapes (nc 10, 15) the AD evaluation is as fast and the jet's forming at each
+/// new point made a sweep of NREL 5MW linearizations (nrel5mwAzimuths) 8–12 % slower.
+inline constexpr int kJetMinShapes = 6;
+
 // Whether any of x[0..n), ẋ, ẍ carries a seeded direction.
 template <class T>
 bool coordinatesSeeded(int n, const T* x, const T* xd, const T* xdd) {
@@ -149,7 +155,7 @@ void forwardKinematics(const Model& m, Workspace<T>& ws, const VecXT<T>& q, cons
       const int e0 = b.elastic_dof;
       if constexpr (!std::is_same_v<T, double>) {
         // In a derivatives-only pass, a basis no seeded coordinate moves is the double basis.
-        if (pass.derivativesOnly() &&
+        if (pass.derivativesOnly() && b.inertia.ne >= detail::kJetMinShapes &&
             !detail::coordinatesSeeded(b.inertia.ne, q.data() + e0, qd.data() + e0, qdd.data() + e0)) {
           detail::constantBasis(b.inertia, pass.kinematics->basis[i], bs);
           continue;

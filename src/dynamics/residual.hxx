@@ -97,9 +97,9 @@ void bodyInertiaForces(const Model& m, int i, Workspace<T>& ws, const VecXT<T>& 
     basisProducts(in, bs.c, bs.cd, bs.cdd, p);
     frameForces(in, p, bs.D, ahat, alpha, omega, ws.g, F, Tq, H);
   } else {
-    const bool finalized = in.Strace.rows() == in.nc();
+    const bool use_jet = in.Strace.rows() == in.nc() && in.ne >= kJetMinShapes;  // a finalized body
     const bool sq = elasticSeeded(b, q), sqd = elasticSeeded(b, qd), sqdd = elasticSeeded(b, qdd);
-    if (sq && !finalized) {
+    if (sq && !use_jet) {
       basisProducts(in, bs.c, bs.cd, bs.cdd, ws.prod);
       frameForces(in, ws.prod, bs.D, ahat, alpha, omega, ws.g, F, Tq, H);
       return;
@@ -113,7 +113,7 @@ void bodyInertiaForces(const Model& m, int i, Workspace<T>& ws, const VecXT<T>& 
     }
     if (sqd || sqdd) {  // q̇ or q̈ columns: only the rate part in AD
       BasisProducts<double, T>& p = ws.prod_dt;
-      if (finalized) {
+      if (use_jet) {
         jetRateProducts(in, cb, qd.data() + e0, qdd.data() + e0, sqd, sqdd, bs, p);
       } else {
         for (int k = 0; k < 9; ++k) p.y[k].head(in.len[k / 3]) = cb.prod.y[k].head(in.len[k / 3]);
