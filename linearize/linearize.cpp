@@ -57,9 +57,9 @@ void firstOrderStates(const Model& m, LinearModel& lin, MatX& G, MatX& Bz) {
 // The unsteady-airfoil states (linearize/unsteady_aero.hpp) after the body states: K, C, Q take the UA loads'
 // changes, G their columns, and Zq = [Z_q, Z_q̇] (on the active coordinates), Za = A_zz, Zu = Z_u their rows;
 // names, groups and steady values into lin.
-void addUnsteadyAero(const Model& m, const OperatingPoint& op, bool inputs, LinearModel& lin, MatX& G, MatX& Zq,
-                     MatX& Za, MatX& Zu) {
-  UnsteadyAeroLinear ua = unsteadyAeroLinear(m, op, lin.dofs, inputs);
+void addUnsteadyAero(const Model& m, const OperatingPoint& op, bool inputs, LinearizeWorkspace& lw, LinearModel& lin,
+                     MatX& G, MatX& Zq, MatX& Za, MatX& Zu) {
+  UnsteadyAeroLinear ua = unsteadyAeroLinear(m, op, lin.dofs, inputs, lw.ws, lw.jw);
   const int n = static_cast<int>(lin.dofs.size()), nb = static_cast<int>(G.cols());
   const int nz = static_cast<int>(ua.z.size());
   for (int r = 0; r < n; ++r) {
@@ -152,7 +152,7 @@ LinearModel linearize(const Model& m, const OperatingPoint& op, LinearizeWorkspa
   // WakeMod 0 (its BEMT runs with UseInduction false); only the quasi-steady-induction linearization
   // (opt.frozen_wake false) has no frozen induction to carry them.
   const bool unsteady = opt.unsteady_aero && aeroStateCount(m.aero) > 0 && (frozen || !m.aero.induction);
-  if (unsteady) addUnsteadyAero(m, op, nu > 0, lin, G, Zq, Za, Zu);
+  if (unsteady) addUnsteadyAero(m, op, nu > 0, lw, lin, G, Zq, Za, Zu);
   const int nz = static_cast<int>(G.cols());
   // One solve with the right-hand sides [K C G Q] (K, C, Q with the UA loads' changes, if any).
   MatX rhs(n, 2 * n + nz + nu);

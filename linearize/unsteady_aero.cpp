@@ -90,8 +90,12 @@ std::vector<std::vector<int>> sharedDirections(const std::vector<int>& blade_of_
 }  // namespace
 
 VecX unsteadyAeroSteadyStates(const Model& m, const OperatingPoint& op) {
-  requireFrozenInduction(m, op);
   Workspace<double> ws(m);
+  return unsteadyAeroSteadyStates(m, op, ws);
+}
+
+VecX unsteadyAeroSteadyStates(const Model& m, const OperatingPoint& op, Workspace<double>& ws) {
+  requireFrozenInduction(m, op);
   forwardKinematics(m, ws, op.q, op.qd, op.qdd);
   const int nz = aeroStateCount(m.aero), ns = uaStatesPerElement(m.aero), nua = uaStateCount(m.aero);
   VecX z = VecX::Zero(nz), e = VecX::Zero(m.ndof());
@@ -123,8 +127,19 @@ UnsteadyAeroLinear unsteadyAeroLinear(const Model& m, const OperatingPoint& op, 
   return unsteadyAeroLinearAt(m, op, unsteadyAeroSteadyStates(m, op), cols, inputs);
 }
 
+UnsteadyAeroLinear unsteadyAeroLinear(const Model& m, const OperatingPoint& op, const std::vector<int>& cols,
+                                      bool inputs, Workspace<double>& ws, JacobianWorkspace& jw) {
+  return unsteadyAeroLinearAt(m, op, unsteadyAeroSteadyStates(m, op, ws), cols, inputs, jw.ws);
+}
+
 UnsteadyAeroLinear unsteadyAeroLinearAt(const Model& m, const OperatingPoint& op, const VecX& states,
                                         const std::vector<int>& cols, bool inputs) {
+  Workspace<ADChunk> ws(m);
+  return unsteadyAeroLinearAt(m, op, states, cols, inputs, ws);
+}
+
+UnsteadyAeroLinear unsteadyAeroLinearAt(const Model& m, const OperatingPoint& op, const VecX& states,
+                                        const std::vector<int>& cols, bool inputs, Workspace<ADChunk>& ws) {
   requireFrozenInduction(m, op);
   if (states.size() != aeroStateCount(m.aero))
     throw ComputeError("aerodynamic states: " + std::to_string(states.size()) + " values for " +
@@ -139,7 +154,6 @@ UnsteadyAeroLinear unsteadyAeroLinearAt(const Model& m, const OperatingPoint& op
   for (int c : cols) all.push_back({Column::Q, c});
   for (int c : cols) all.push_back({Column::Qd, c});
   for (int i = 0; i < nu; ++i) all.push_back({Column::U, i});
-  Workspace<ADChunk> ws(m);
   auto load = [](const VecX& v) {
     VecXT<ADChunk> a(v.size());
     for (Eigen::Index i = 0; i < v.size(); ++i) a(i) = ADChunk(v(i));

@@ -16,7 +16,9 @@
 /// the elements with fixed inductions, whose loads follow the BEM induction, as AeroDyn).
 #include <vector>
 
+#include "linearize/jacobian.hpp"
 #include "linearize/operating_point.hpp"
+#include "src/dynamics/workspace.hpp"
 
 namespace whirl {
 
@@ -37,12 +39,20 @@ struct UnsteadyAeroLinear {
 UnsteadyAeroLinear unsteadyAeroLinear(const Model& m, const OperatingPoint& op, const std::vector<int>& cols,
                                       bool inputs);
 
+/// The same with the buffers of a sweep's linearizations (ws: the double evaluations of the steady states, jw.ws:
+/// the AD passes), allocated once per model instead of once per call.
+UnsteadyAeroLinear unsteadyAeroLinear(const Model& m, const OperatingPoint& op, const std::vector<int>& cols,
+                                      bool inputs, Workspace<double>& ws, JacobianWorkspace& jw);
+
 /// The same blocks at op with the states at `states` (dim aeroStateCount) instead of their steady values: the
 /// Newton matrix of a time simulation (linearize/simulate_aero.hpp), whose states move away from them.
 UnsteadyAeroLinear unsteadyAeroLinearAt(const Model& m, const OperatingPoint& op, const VecX& states,
                                         const std::vector<int>& cols, bool inputs);
+UnsteadyAeroLinear unsteadyAeroLinearAt(const Model& m, const OperatingPoint& op, const VecX& states,
+                                        const std::vector<int>& cols, bool inputs, Workspace<ADChunk>& ws);
 
 /// The states' steady values at op (what unsteadyAeroLinear linearizes about).
 VecX unsteadyAeroSteadyStates(const Model& m, const OperatingPoint& op);
+VecX unsteadyAeroSteadyStates(const Model& m, const OperatingPoint& op, Workspace<double>& ws);
 
 }  // namespace whirl

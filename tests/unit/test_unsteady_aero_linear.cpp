@@ -10,6 +10,7 @@
 #include <numbers>
 
 #include "linearize/linearize.hpp"
+#include "linearize/linearize_workspace.hpp"
 #include "linearize/mbc.hpp"
 #include "linearize/operating_point.hpp"
 #include "linearize/periodic.hpp"
@@ -199,6 +200,27 @@ TEST(UnsteadyAeroLinear, LinearModelCarriesTheStatesAfterTheStructure) {
   const LinearModel again = linearize(without, op);
   EXPECT_EQ(again.A, qs.A);
   EXPECT_EQ(again.B, qs.B);
+}
+
+// A sweep's workspace carries nothing from one point to the next into the states' blocks (its BEM roots, frames
+// and bases are keyed on the values they were formed at): after a linearization at another point (another wind
+// speed and pitch), the same A, B as with fresh buffers.
+TEST(UnsteadyAeroLinear, SweepWorkspaceGivesWhatFreshBuffersGive) {
+  const Model m = readElastoDynModel(uaDeck());
+  const OperatingPoint op = rTestPoint(m);
+  OperatingCondition other;
+  other.rotor_speed = 9.0 * std::numbers::pi / 30;
+  other.wind_speed = 8.0;
+  other.collective_pitch = 2 * kDeg;
+  const OperatingPoint before = solveOperatingPoint(m, initialPoint(m, other));
+  LinearizeWorkspace lw(m);
+  const LinearModel first = linearize(m, before, lw);
+  const LinearModel reused = linearize(m, op, lw), fresh = linearize(m, op);
+  ASSERT_EQ(reused.A.rows(), fresh.A.rows());
+  ASSERT_GT(reused.A.rows(), 2 * static_cast<Eigen::Index>(reused.dofs.size()));  // the states are in
+  EXPECT_LT((reused.A - fresh.A).cwiseAbs().maxCoeff(), 1e-12 * fresh.A.cwiseAbs().maxCoeff());
+  EXPECT_LT((reused.B - fresh.B).cwiseAbs().maxCoeff(), 1e-12 * fresh.B.cwiseAbs().maxCoeff());
+  EXPECT_GT((first.A - fresh.A).cwiseAbs().maxCoeff(), 1e-6 * fresh.A.cwiseAbs().maxCoeff());  // another point
 }
 
 TEST(UnsteadyAeroLinear, FlapRateIsNoPitchRateOfTheSection) {
