@@ -34,26 +34,27 @@ AeroInflow simulationElementInflow(const Model& m, Workspace<double>& ws, const 
   return record.inflow();
 }
 
-AeroStateLoads::AeroStateLoads(const Model& m) : e_ua(m.ndof()), e_qs(m.ndof()) {}
+AeroStateLoads::AeroStateLoads(const Model& m) : delta(m.ndof()), e_qs(m.ndof()) {}
 
 void addAeroStateLoads(const Model& m, Workspace<double>& ws, const VecX& q, const VecX& qd, const VecX& u,
                        const AeroInflow& bem, const AeroInflow& held, const VecX& z, AeroStateLoads& b, VecX& e,
                        VecX& zdot) {
-  b.e_ua.setZero();
-  b.e_qs.setZero();
-  // e_qs: the quasi-steady loads residual() added, on the frozen wake of its own induction: the same loads
-  // to the BEM root's tolerance (the frozen-wake linearization rests on it). On that same wake they come
-  // out of the pass over the elements that forms the unsteady loads.
+  b.delta.setZero();
+  // e_QS: the quasi-steady loads residual() added, on the frozen wake of its own induction: the same loads
+  // to the BEM root's tolerance (the frozen-wake linearization rests on it). On that same wake the difference
+  // comes out of one pass over the elements.
   // The elements' root searches of the dynamic inflow keep the simulation's tolerance (BemRoot::tolerance).
   const double tolerance = ws.bem.empty() ? 0.0 : ws.bem.front().tolerance;
   if (held.empty()) {
-    addUnsteadyAeroLoads<double>(m, ws, q, qd, u, bem, &z, b.e_ua, &zdot, nullptr, nullptr, -1, &b.e_qs);
+    addUnsteadyAeroLoads<double>(m, ws, q, qd, u, bem, &z, b.delta, &zdot, nullptr, nullptr, -1, true);
   } else {
+    b.e_qs.setZero();
     addUnsteadyAeroLoads<double>(m, ws, q, qd, u, bem, nullptr, b.e_qs, nullptr);
-    addUnsteadyAeroLoads<double>(m, ws, q, qd, u, held, &z, b.e_ua, &zdot);
+    addUnsteadyAeroLoads<double>(m, ws, q, qd, u, held, &z, b.delta, &zdot);
+    b.delta -= b.e_qs;
   }
   for (BemRoot& r : ws.bem) r.tolerance = tolerance;
-  e += b.e_ua - b.e_qs;
+  e += b.delta;
 }
 
 }  // namespace whirl

@@ -42,7 +42,8 @@ AeroInflow simulationElementInflow(const Model& m, Workspace<double>& ws, const 
 /// Buffers of one evaluation of the states' loads and rates.
 struct AeroStateLoads {
   explicit AeroStateLoads(const Model& m);
-  VecX e_ua, e_qs;  ///< dim ndof
+  VecX delta;  ///< e_UA − e_QS, dim ndof
+  VecX e_qs;   ///< e_QS on the BEM inflow when the elements' inflow is held (else unused), dim ndof
 };
 
 /// e += e_UA(z) − e_QS and zdot = f(q, q̇, u, z) at the kinematics already in ws (residual() at q, q̇ just

@@ -160,7 +160,7 @@ UnsteadyAeroLinear unsteadyAeroLinearAt(const Model& m, const OperatingPoint& op
     return a;
   };
   VecXT<ADChunk> q = load(op.q), qd = load(op.qd), qdd = load(op.qdd), u = load(op.u), z = load(out.z);
-  VecXT<ADChunk> e_ua(n), e_qs(n), zdot(nz);
+  VecXT<ADChunk> e_ua(n), zdot(nz);
   // Seeds direction k of a column (on: 1, off: 0); an input that drives frozen coordinates (pitch) seeds
   // them with its gain, as residualJacobian does.
   auto seed = [&](const Column& c, int k, bool on) {
@@ -201,14 +201,13 @@ UnsteadyAeroLinear unsteadyAeroLinearAt(const Model& m, const OperatingPoint& op
       for (int c : directions[d0 + k]) seed(all[c], k, true);
     forwardKinematics(m, ws, q, qd, qdd);
     for (int b = 0; b < nblades; ++b) {
-      clear(e_ua);
-      clear(e_qs);
-      addUnsteadyAeroLoads<ADChunk>(m, ws, q, qd, u, op.inflow, &z, e_ua, &zdot, nullptr, nullptr, -1, &e_qs, nullptr,
+      clear(e_ua);  // receives the loads less the quasi-steady ones the base linearization holds
+      addUnsteadyAeroLoads<ADChunk>(m, ws, q, qd, u, op.inflow, &z, e_ua, &zdot, nullptr, nullptr, -1, true, nullptr,
                                     b);
       for (int k = 0; k < w; ++k)
         for (int c : directions[d0 + k]) {
           if (blade_of_column[c] >= 0 && blade_of_column[c] != b) continue;  // the direction's other blade's column
-          for (int i = 0; i < n; ++i) Je(i, c) += e_ua(i).derivatives()(k) - e_qs(i).derivatives()(k);
+          for (int i = 0; i < n; ++i) Je(i, c) += e_ua(i).derivatives()(k);
           for (int i : blade_states[static_cast<std::size_t>(b)]) Jz(i, c) = zdot(i).derivatives()(k);
         }
     }

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <optional>
+#include <stdexcept>
 #include <tuple>
 
 #include "src/aero/bem.hpp"
@@ -157,11 +158,13 @@ aero::UaSection uaSection(const AeroModel& am, const AeroStation& st) {
 template <class T>
 void addUnsteadyAeroLoads(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T>& qd, const VecXT<T>& u,
                           const AeroInflow& frozen, const VecXT<T>* z, VecXT<T>& e, VecXT<T>* zdot,
-                          std::vector<aero::UaInput<T>>* inputs, VecXT<T>* quasi_steady, int element, VecXT<T>* e_qs,
-                          RotorTotals<T>* totals, int only_blade) {
+                          std::vector<aero::UaInput<T>>* inputs, VecXT<T>* quasi_steady, int element,
+                          bool minus_quasi_steady, RotorTotals<T>* totals, int only_blade) {
   using std::sqrt;
   const AeroModel& am = m.aero;
   if (!am.active()) return;
+  if (minus_quasi_steady && totals)
+    throw std::logic_error("addUnsteadyAeroLoads: totals of loads less quasi-steady ones");
   const FrameState<T>& hub = ws.frames[am.hub_body];
   const Vec3T<T> disk = hub.R.col(0);
   const T speed = m.roles.wind_speed_input >= 0 ? u(m.roles.wind_speed_input) : T(0);
@@ -203,10 +206,11 @@ void addUnsteadyAeroLoads(const Model& m, Workspace<T>& ws, const VecXT<T>& q, c
     const detail::BladeSkew<T> blade_skew =
         skew.active ? detail::bladeSkew(skew, f.R, detail::bladeTipRadius(body, blade, f.R, f.r, bs.c, hub.r, disk))
                     : detail::BladeSkew<T>{};
-    detail::BodyLoadSum<T> sum(body.inertia.ne, body.points[blade.stations.front().point].P.cols()), sum_qs = sum;
+    detail::BodyLoadSum<T> sum(body.inertia.ne, body.points[blade.stations.front().point].P.cols());
     for (std::size_t si = 0; si < blade.stations.size(); ++si, ++index) {
       const AeroStation& st = blade.stations[si];
-      if (element >= 0 && index != element) {
+      // An element asked not for, or whose loads less the quasi-steady ones are zero (no states, no dynamic inflow).
+      if ((element >= 0 && index != element) || (minus_quasi_steady && !(z && (st.ua || dynamic)))) {
         zi += st.ua ? ns : 0;
         continue;
       }
@@ -285,36 +289,32 @@ void addUnsteadyAeroLoads(const Model& m, Workspace<T>& ws, const VecXT<T>& q, c
       if (st.ua) zi += ns;
       const Vec3T<T> Fb = L.fx * g.xnb + L.fy * g.yab;
       const Vec3T<T> Mb = L.mz * g.znb;
-      sum.addBody(pt, g.s, Fb, Mb, st.weight);
       if (totals) {  // ground components about and along the rotor axis through the apex (addAeroLoads')
         const Vec3T<T> Fg = L.fx * g.xn + L.fy * g.ya, Mg = L.mz * g.zn;
         totals->thrust += st.weight * Fg.dot(disk);
         totals->torque += st.weight * (Vec3T<T>(d.cross(Fg)) + Mg).dot(disk);
       }
-      if (e_qs) {  // the same loads where the element has neither states nor dynamic inflow
-        if (z && (st.ua || dynamic)) {
-          const aero::SectionLoads<T> Q = aero::frozenLoads(detail::bemStation(am, st, r), vx, vy, theta, ax, tn,
-                                                            am.air_density, am.bem);
-          sum_qs.addBody(pt, g.s, Vec3T<T>(Q.fx * g.xnb + Q.fy * g.yab), Vec3T<T>(Q.mz * g.znb), st.weight);
-        } else {
-          sum_qs.addBody(pt, g.s, Fb, Mb, st.weight);
-        }
+      if (!minus_quasi_steady) {
+        sum.addBody(pt, g.s, Fb, Mb, st.weight);
+      } else if (z && (st.ua || dynamic)) {  // less the loads without states on the frozen wake
+        const aero::SectionLoads<T> Q = aero::frozenLoads(detail::bemStation(am, st, r), vx, vy, theta, ax, tn,
+                                                          am.air_density, am.bem);
+        sum.addBody(pt, g.s, Vec3T<T>(Fb - Q.fx * g.xnb - Q.fy * g.yab), Vec3T<T>(Mb - Q.mz * g.znb), st.weight);
       }
     }
     sum.project(m, ws, blade.body, e);
     if (totals) sum.resultant(f.R, totals->blade_force[bi], totals->blade_moment[bi]);
-    if (e_qs) sum_qs.project(m, ws, blade.body, *e_qs);
   }
 }
 
 template void addUnsteadyAeroLoads<double>(const Model&, Workspace<double>&, const VecX&, const VecX&, const VecX&,
                                            const AeroInflow&, const VecX*, VecX&, VecX*,
-                                           std::vector<aero::UaInput<double>>*, VecX*, int, VecX*, RotorTotals<double>*,
+                                           std::vector<aero::UaInput<double>>*, VecX*, int, bool, RotorTotals<double>*,
                                            int);
 template void addUnsteadyAeroLoads<ADChunk>(const Model&, Workspace<ADChunk>&, const VecXT<ADChunk>&,
                                             const VecXT<ADChunk>&, const VecXT<ADChunk>&, const AeroInflow&,
                                             const VecXT<ADChunk>*, VecXT<ADChunk>&, VecXT<ADChunk>*,
-                                            std::vector<aero::UaInput<ADChunk>>*, VecXT<ADChunk>*, int, VecXT<ADChunk>*,
+                                            std::vector<aero::UaInput<ADChunk>>*, VecXT<ADChunk>*, int, bool,
                                             RotorTotals<ADChunk>*, int);
 
 }  // namespace whirl

@@ -62,8 +62,10 @@ void removeUnsteadyAirfoils(AeroModel& am);
 /// `quasi_steady` (if given, dim 2 nstations, with dynamic-inflow states) the quasi-steady induced velocities,
 /// axial and tangential per element. `element` ≥ 0 (an element over all blades, in AeroModel order) evaluates
 /// that element alone: e receives its loads only, zdot and `quasi_steady` its entries only (the rest untouched),
-/// `inputs` its UA inputs only. `e_qs` (if given) += the quasi-steady frozen-wake loads at the same kinematics
-/// (what z null gives in e), formed in the same pass over the elements: their frames once for both. A state of an
+/// `inputs` its UA inputs only. `minus_quasi_steady`: e receives the loads less the quasi-steady frozen-wake loads at
+/// the same kinematics (what z null gives), formed in the same pass over the elements: their frames once for both, one
+/// sum of the differences, and the elements without states or dynamic inflow (a difference of zero) skipped; not
+/// with `totals`. A state of an
 /// element enters only that element's loads and rates, so its Jacobian columns come from that element alone
 /// (linearize/unsteady_aero.cpp). `totals` (if given) receives the rotor thrust and torque of the loads in e and
 /// each blade's resultant force and moment about its body origin (ground components, as addAeroLoads forms them):
@@ -74,7 +76,7 @@ template <class T>
 void addUnsteadyAeroLoads(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const VecXT<T>& qd, const VecXT<T>& u,
                           const AeroInflow& frozen, const VecXT<T>* z, VecXT<T>& e, VecXT<T>* zdot,
                           std::vector<aero::UaInput<T>>* inputs = nullptr, VecXT<T>* quasi_steady = nullptr,
-                          int element = -1, VecXT<T>* e_qs = nullptr, RotorTotals<T>* totals = nullptr,
+                          int element = -1, bool minus_quasi_steady = false, RotorTotals<T>* totals = nullptr,
                           int only_blade = -1);
 
 /// The airfoil of a station for the UA functions (the polar, its UA table and Cm rule, the chord).

@@ -27,22 +27,26 @@ inline void basisPairs(const BodyInertia& in, std::vector<std::array<int, 2>>& p
 
 // D₂(x): ∂c/∂q_e's quadratic rows with the values x (x_j in column i, x_i in column j of the row of
 // q_i q_j), zero elsewhere (nc × ne).
-inline MatX quadraticRows(const BodyInertia& in, const std::vector<std::array<int, 2>>& pair, const double* x) {
-  MatX D = MatX::Zero(in.nc(), in.ne);
+inline void quadraticRows(const BodyInertia& in, const std::vector<std::array<int, 2>>& pair, const double* x,
+                          MatX& D) {
+  D.setZero(in.nc(), in.ne);
   for (int p = 1 + in.ne; p < in.nc(); ++p) {
     const auto [i, j] = pair[static_cast<std::size_t>(p)];
     D(p, i) += x[j];
     D(p, j) += x[i];
   }
-  return D;
 }
 
-// out = S D on S's block rows (nr × ne): the block's values (row-major) times D's rows of its columns.
-inline void blockTimesD(const ShapeIntegralBlock& S, const MatX& D, MatX& out) {
+// out = S D on S's block rows (nr × ne): the block's values (row-major) times D's rows of its columns,
+// gathered into `rows` (a buffer kept with the jet: forming allocates nothing once sized).
+inline void blockTimesD(const ShapeIntegralBlock& S, const MatX& D, MatX& rows, MatX& out) {
   using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
-  const Eigen::Map<const RowMajor> V(S.values.data(), static_cast<Eigen::Index>(S.rows.size()),
-                                     static_cast<Eigen::Index>(S.cols.size()));
-  out.noalias() = V * D(S.cols, Eigen::all);
+  const auto nr = static_cast<Eigen::Index>(S.rows.size()), ncol = static_cast<Eigen::Index>(S.cols.size());
+  const Eigen::Map<const RowMajor> V(S.values.data(), nr, ncol);
+  rows.resize(ncol, D.cols());
+  for (Eigen::Index k = 0; k < ncol; ++k) rows.row(k) = D.row(S.cols[static_cast<std::size_t>(k)]);
+  out.resize(nr, D.cols());
+  out.noalias() = V * rows;
 }
 
 // The jet at cb's values (a finalized body: its S_block and Strace_block set); D(q) is cb.basis.D.
@@ -54,14 +58,18 @@ inline void formBasisJet(const BodyInertia& in, const ConstantBasis& cb, BasisJe
   jet.rates = !cb.key.segment(ne, ne).isZero(0.0);
   jet.accelerations = !cb.key.segment(2 * ne, ne).isZero(0.0);
   const MatX& Dq = cb.basis.D;
-  MatX Dqd = jet.rates ? quadraticRows(in, jet.pair, qd) : MatX();
+  MatX& D2 = jet.quadratic;
+  if (jet.rates) quadraticRows(in, jet.pair, qd, D2);
   for (int kl = 0; kl < 9; ++kl) {
-    blockTimesD(in.S_block[kl], Dq, jet.Sq[kl]);
-    if (kl % 4 != 0 && jet.rates) blockTimesD(in.S_block[kl], Dqd, jet.Sqd[kl]);
+    blockTimesD(in.S_block[kl], Dq, jet.rows, jet.Sq[kl]);
+    if (kl % 4 != 0 && jet.rates) blockTimesD(in.S_block[kl], D2, jet.rows, jet.Sqd[kl]);
   }
-  blockTimesD(in.Strace_block, Dq, jet.Tq);
-  if (jet.rates) blockTimesD(in.Strace_block, Dqd, jet.Tqd);
-  if (jet.accelerations) blockTimesD(in.Strace_block, quadraticRows(in, jet.pair, qdd), jet.Tqdd);
+  blockTimesD(in.Strace_block, Dq, jet.rows, jet.Tq);
+  if (jet.rates) blockTimesD(in.Strace_block, D2, jet.rows, jet.Tqd);
+  if (jet.accelerations) {
+    quadraticRows(in, jet.pair, qdd, D2);
+    blockTimesD(in.Strace_block, D2, jet.rows, jet.Tqdd);
+  }
   jet.valid = true;
 }
 
@@ -124,6 +132,16 @@ void jetRateProducts(const BodyInertia& in, const BasisProducts<double, double>&
   if (sq && jet.accelerations) addJetProduct(jet.Tqdd, in.Strace_block, jet.dq, 1.0, p.scdd);
 }
 
+// The products of the positions alone (y, Pc, m1c) from the double ones at the point: a pass that seeds
+// none of the body's q_e takes them as they are.
+template <class T>
+void copyPositionProducts(const BodyInertia& in, const BasisProducts<double, double>& from,
+                          BasisProducts<double, T>& to) {
+  for (int k = 0; k < 9; ++k) to.y[k].head(in.len[k / 3]) = from.y[k].head(in.len[k / 3]);
+  to.Pc = from.Pc;
+  to.m1c = from.m1c;
+}
+
 }  // namespace detail
 
 /// Stage 1 in an AD pass whose seeded directions reach the body's own elastic coordinates (sq: q_e,
@@ -156,9 +174,7 @@ void jetRateProducts(const BodyInertia& in, ConstantBasis& cb, const T* qde, con
   const int ne = in.ne;
   if (sqd) detail::gatherDerivatives(qde, ne, jet.dqd);
   if (sqdd) detail::gatherDerivatives(qdde, ne, jet.dqdd);
-  for (int k = 0; k < 9; ++k) p.y[k].head(in.len[k / 3]) = cb.prod.y[k].head(in.len[k / 3]);
-  p.Pc = cb.prod.Pc;
-  p.m1c = cb.prod.m1c;
+  detail::copyPositionProducts(in, cb.prod, p);
   detail::jetRateProducts(in, cb.prod, jet, false, sqd, sqdd, p);
   detail::rateDots(in, bs.cd, bs.cdd, p);
 }

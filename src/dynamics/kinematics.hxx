@@ -86,11 +86,11 @@ void evalBasis(const BodyInertia& in, const T* q, const T* qd, const T* qdd, Bas
 /// new point made a sweep of NREL 5MW linearizations (nrel5mwAzimuths) 8–12 % slower.
 inline constexpr int kJetMinShapes = 6;
 
-// Whether any of x[0..n), ẋ, ẍ carries a seeded direction.
+// Whether any of the body's own elastic coordinates carries a seeded direction in x.
 template <class T>
-bool coordinatesSeeded(int n, const T* x, const T* xd, const T* xdd) {
-  for (int k = 0; k < n; ++k)
-    if (seeded(x[k]) || seeded(xd[k]) || seeded(xdd[k])) return true;
+bool elasticSeeded(const Body& b, const VecXT<T>& x) {
+  for (int j = 0; j < b.inertia.ne; ++j)
+    if (seeded(x(b.elastic_dof + j))) return true;
   return false;
 }
 
@@ -156,7 +156,7 @@ void forwardKinematics(const Model& m, Workspace<T>& ws, const VecXT<T>& q, cons
       if constexpr (!std::is_same_v<T, double>) {
         // In a derivatives-only pass, a basis no seeded coordinate moves is the double basis.
         if (pass.derivativesOnly() && b.inertia.ne >= detail::kJetMinShapes &&
-            !detail::coordinatesSeeded(b.inertia.ne, q.data() + e0, qd.data() + e0, qdd.data() + e0)) {
+            !(detail::elasticSeeded(b, q) || detail::elasticSeeded(b, qd) || detail::elasticSeeded(b, qdd))) {
           detail::constantBasis(b.inertia, pass.kinematics->basis[i], bs);
           continue;
         }

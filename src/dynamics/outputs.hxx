@@ -102,8 +102,7 @@ void evaluateOutputs(const Model& m, Workspace<T>& ws, const VecXT<T>& q, const 
       if (z->size() != aeroStateCount(m.aero))
         throw ComputeError("load outputs: " + std::to_string(z->size()) + " aerodynamic state values for " +
                            std::to_string(aeroStateCount(m.aero)) + " states");
-      addUnsteadyAeroLoads<T>(m, ws, q, qd, *u, *frozen, z, ws.scratch, nullptr, nullptr, nullptr, -1, nullptr,
-                              &totals);
+      addUnsteadyAeroLoads<T>(m, ws, q, qd, *u, *frozen, z, ws.scratch, nullptr, nullptr, nullptr, -1, false, &totals);
     } else {
       addAeroLoads(m, ws, q, *u, frozen, nullptr, ws.scratch, 0, &totals);
     }

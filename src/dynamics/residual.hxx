@@ -37,14 +37,6 @@ bool anySeeded(const VecXT<T>& x) {
   return false;
 }
 
-// Whether any of the body's own elastic coordinates carries a seeded direction in x.
-template <class T>
-bool elasticSeeded(const Body& b, const VecXT<T>& x) {
-  for (int j = 0; j < b.inertia.ne; ++j)
-    if (seeded(x(b.elastic_dof + j))) return true;
-  return false;
-}
-
 // The body's double basis and products at the values of its elastic coordinates in q, q̇, q̈
 // (kept while they keep their values; the jet is formed again when first asked for at new values).
 template <class T>
@@ -116,9 +108,7 @@ void bodyInertiaForces(const Model& m, int i, Workspace<T>& ws, const VecXT<T>& 
       if (use_jet) {
         jetRateProducts(in, cb, qd.data() + e0, qdd.data() + e0, sqd, sqdd, bs, p);
       } else {
-        for (int k = 0; k < 9; ++k) p.y[k].head(in.len[k / 3]) = cb.prod.y[k].head(in.len[k / 3]);
-        p.Pc = cb.prod.Pc;
-        p.m1c = cb.prod.m1c;
+        copyPositionProducts(in, cb.prod, p);
         basisRateProducts(in, bs.cd, bs.cdd, p);
       }
       frameForces(in, p, cb.basis.D, ahat, alpha, omega, ws.g, F, Tq, H);

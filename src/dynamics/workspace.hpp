@@ -68,6 +68,8 @@ struct BasisJet {
   /// Basis index → the pair (i, j) of its product q_i q_j (−1 for the constant and linear entries).
   std::vector<std::array<int, 2>> pair;
   MatX dq, dqd, dqdd;  ///< a pass's derivatives of q_e, q̇_e, q̈_e (directions × ne)
+  MatX quadratic;      ///< forming's D₂(q̇) or D₂(q̈) (nc × ne)
+  MatX rows;           ///< forming's rows of D at a block's columns (block columns × ne)
 };
 
 /// One body's basis state and basis products in double at given values of its elastic coordinates:

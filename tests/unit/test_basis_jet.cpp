@@ -97,50 +97,54 @@ void expectRatePartsSame(const BodyInertia& in, const BasisProducts<TQ, ADChunk>
   }
 }
 
-TEST(BasisJet, ProductsEqualTheirEvaluationInTheAdScalar) {
+// The blade at the point with the derivative directions asked for, and its products evaluated in the AD scalar.
+class BasisJet : public testing::Test {
+ protected:
+  void prepare(bool seed_q) {
+    body = bladeBody(m);
+    ASSERT_GE(body, 0);
+    ASSERT_EQ(in().Strace.rows(), in().nc());  // finalized: the jet's path
+    p = point(m, body, seed_q, true);
+    const int e0 = b().elastic_dof;
+    detail::evalBasis(in(), p.q.data() + e0, p.qd.data() + e0, p.qdd.data() + e0, ws.basis[body]);
+    ref = BasisProducts<ADChunk, ADChunk>(in().nc());
+    basisProducts(in(), ws.basis[body].c, ws.basis[body].cd, ws.basis[body].cdd, ref);
+  }
+  const Body& b() const { return m.bodies[body]; }
+  const BodyInertia& in() const { return b().inertia; }
+  const ADChunk* at(const VecXT<ADChunk>& x) const { return x.data() + b().elastic_dof; }
+
   const Model& m = blades();
-  const int body = bladeBody(m);
-  ASSERT_GE(body, 0);
-  const Body& b = m.bodies[body];
-  const BodyInertia& in = b.inertia;
-  ASSERT_EQ(in.Strace.rows(), in.nc());  // finalized: the jet's path
-  Workspace<ADChunk> ws(m);
-  const Point p = point(m, body, true, true);
-  const int e0 = b.elastic_dof;
-  detail::evalBasis(in, p.q.data() + e0, p.qd.data() + e0, p.qdd.data() + e0, ws.basis[body]);
-  BasisProducts<ADChunk, ADChunk> ref(in.nc()), jet(in.nc());
-  basisProducts(in, ws.basis[body].c, ws.basis[body].cd, ws.basis[body].cdd, ref);
-  ConstantBasis& cb = detail::constantBasisAt(b, ws, body, p.q, p.qd, p.qdd);
-  jetBasisProducts(in, cb, p.q.data() + e0, p.qd.data() + e0, p.qdd.data() + e0, true, true, true, ws.basis[body], jet);
+  int body = -1;
+  Workspace<ADChunk> ws{m};
+  Point p;
+  BasisProducts<ADChunk, ADChunk> ref{1};
+};
+
+TEST_F(BasisJet, ProductsEqualTheirEvaluationInTheAdScalar) {
+  ASSERT_NO_FATAL_FAILURE(prepare(true));
+  ConstantBasis& cb = detail::constantBasisAt(b(), ws, body, p.q, p.qd, p.qdd);
+  BasisProducts<ADChunk, ADChunk> jet(in().nc());
+  jetBasisProducts(in(), cb, at(p.q), at(p.qd), at(p.qdd), true, true, true, ws.basis[body], jet);
   ASSERT_TRUE(cb.jet.rates && cb.jet.accelerations);
   for (int kl = 0; kl < 9; ++kl) {
-    const int len = in.len[kl / 3];
+    const int len = in().len[kl / 3];
     const double s = scaleOf(ref.y[kl], len);
     for (int r = 0; r < len; ++r) expectSame(jet.y[kl](r), ref.y[kl](r), s, "y " + std::to_string(kl));
   }
   const double sc = scaleOf(ref.Pc);
   for (int k = 0; k < 9; ++k) expectSame(jet.Pc(k % 3, k / 3), ref.Pc(k % 3, k / 3), sc, "Pc");
   for (int k = 0; k < 3; ++k) expectSame(jet.m1c(k), ref.m1c(k), scaleOf(ref.m1c), "m1c");
-  expectRatePartsSame(in, jet, ref);
+  expectRatePartsSame(in(), jet, ref);
 }
 
 // q̇ and q̈ seeded, q not: the rate part alone (y, Pc, m1c stay double).
-TEST(BasisJet, RatePartEqualsItsEvaluationInTheAdScalar) {
-  const Model& m = blades();
-  const int body = bladeBody(m);
-  ASSERT_GE(body, 0);
-  const Body& b = m.bodies[body];
-  const BodyInertia& in = b.inertia;
-  Workspace<ADChunk> ws(m);
-  const Point p = point(m, body, false, true);
-  const int e0 = b.elastic_dof;
-  detail::evalBasis(in, p.q.data() + e0, p.qd.data() + e0, p.qdd.data() + e0, ws.basis[body]);
-  BasisProducts<ADChunk, ADChunk> ref(in.nc());
-  basisProducts(in, ws.basis[body].c, ws.basis[body].cd, ws.basis[body].cdd, ref);
-  ConstantBasis& cb = detail::constantBasisAt(b, ws, body, p.q, p.qd, p.qdd);
-  BasisProducts<double, ADChunk> jet(in.nc());
-  jetRateProducts(in, cb, p.qd.data() + e0, p.qdd.data() + e0, true, true, ws.basis[body], jet);
-  expectRatePartsSame(in, jet, ref);
+TEST_F(BasisJet, RatePartEqualsItsEvaluationInTheAdScalar) {
+  ASSERT_NO_FATAL_FAILURE(prepare(false));
+  ConstantBasis& cb = detail::constantBasisAt(b(), ws, body, p.q, p.qd, p.qdd);
+  BasisProducts<double, ADChunk> jet(in().nc());
+  jetRateProducts(in(), cb, at(p.qd), at(p.qdd), true, true, ws.basis[body], jet);
+  expectRatePartsSame(in(), jet, ref);
 }
 
 }  // namespace

@@ -138,7 +138,7 @@ struct EveryElement {
   }
   /// The loads and rates of a filtered call: element `el` alone, or blade `b` alone.
   void add(VecX& sum, VecX& rates, int el, int b) {
-    addUnsteadyAeroLoads<double>(m, ws, op.q, op.qd, op.u, op.inflow, &z, sum, &rates, nullptr, nullptr, el, nullptr,
+    addUnsteadyAeroLoads<double>(m, ws, op.q, op.qd, op.u, op.inflow, &z, sum, &rates, nullptr, nullptr, el, false,
                                  nullptr, b);
   }
 };

@@ -48,9 +48,8 @@ VecX unsteadyResidual(const Model& m, const OperatingPoint& op, const VecX& q, c
   VecX e(m.ndof());
   residual(m, ws, q, qd, qdd, u, e, &op.inflow);
   forwardKinematics(m, ws, q, qd, qdd);
-  VecX e_ua = VecX::Zero(m.ndof()), e_qs = VecX::Zero(m.ndof());
-  addUnsteadyAeroLoads<double>(m, ws, q, qd, u, op.inflow, &z, e_ua, nullptr, nullptr, nullptr, -1, &e_qs);
-  return e + e_ua - e_qs;
+  addUnsteadyAeroLoads<double>(m, ws, q, qd, u, op.inflow, &z, e, nullptr, nullptr, nullptr, -1, true);
+  return e;
 }
 
 // The states' steady values at op, each moved by up to `dz` (relative, at least absolute).
