@@ -11,78 +11,11 @@
 #include "src/dynamics/aero_element.hxx"
 #include "src/dynamics/aero_section.hxx"
 #include "src/dynamics/aero_skew.hxx"
+#include "src/dynamics/aero_unsteady_section.hxx"
 #include "src/dynamics/point_force.hxx"
 
 namespace whirl {
 namespace {
-
-template <class T>
-T atan2S(const T& y, const T& x) {
-  if constexpr (std::is_same_v<T, double>) {
-    return std::atan2(y, x);
-  } else {  // the fixed-size AD type (Eigen's overload goes through a dynamic-size derivative vector)
-    const double xv = x.value(), yv = y.value(), h = xv * xv + yv * yv;
-    return T(std::atan2(yv, xv), (xv * y.derivatives() - yv * x.derivatives()) / h);
-  }
-}
-
-// The section loads from the UA coefficients at the frozen-wake flow (x, y) = (Vx + AxInd, Vy + TnInd),
-// as aero::frozenLoads forms them from the static polar (AeroDyn SetOutputsFromBEMT).
-template <class T>
-aero::SectionLoads<T> loadsOfCoefficients(const T& x, const T& y, const T& phi, const T& alpha, const T& W,
-                                          const aero::Coefficients<T>& c, double chord, double rho) {
-  aero::SectionLoads<T> L;
-  L.phi = phi;
-  L.alpha = alpha;
-  L.W = W;
-  L.cl = c.cl;
-  L.cd = c.cd;
-  L.cm = c.cm;
-  const T sphi = x / W, cphi = y / W;
-  L.cx = c.cl * cphi + c.cd * sphi;
-  L.cy = c.cl * sphi - c.cd * cphi;
-  const T qd = 0.5 * rho * W * W;
-  L.fx = L.cx * qd * chord;
-  L.fy = -L.cy * qd * chord;
-  L.mz = c.cm * qd * (chord * chord);
-  return L;
-}
-
-// The quasi-steady induced velocity of an element at (vx, vy, θ): the BEM root solved in double at the values
-// (kept in `root` and reused while the values agree to round-off: the AD passes of one linearization), the
-// derivatives by the implicit-function theorem (aero::quasiSteadyInducedVelocity). No valid root: AeroDyn's
-// geometric fallback, no induction.
-template <class T>
-aero::InducedVelocity<T> quasiSteadyInduction(const AeroModel& am, aero::BemStation b, const T& vx, const T& vy,
-                                              const T& theta, const T& r, BemRoot& root) {
-  const double x = valueOf(vx), y = valueOf(vy), th = valueOf(theta);
-  b.theta = th;
-  const double tol = std::is_same_v<T, double> ? 0.0 : 1e-12, vscale = tol * (std::abs(x) + std::abs(y));
-  if (!(root.valid && std::abs(root.vx - x) <= vscale && std::abs(root.vy - y) <= vscale &&
-        std::abs(root.theta - th) <= tol && std::abs(root.r - b.r) <= tol * b.r)) {
-    const aero::InflowRoot sol = aero::findInflowRoot(b, x, y, am.bem,
-                                                      root.valid ? std::optional<double>(root.phi) : std::nullopt);
-    root = BemRoot{};
-    root.valid = true;
-    root.vx = x;
-    root.vy = y;
-    root.theta = th;
-    root.r = b.r;
-    root.phi = sol.phi;
-    root.a = sol.a;
-    root.ap = sol.ap;
-    root.bem_valid = sol.valid;
-  }
-  if (!root.bem_valid) return {T(0.0), T(0.0), false};
-  if constexpr (!std::is_same_v<T, double>) {
-    // An AD pass that seeds none of the inflow (the chunks of state columns): no derivatives, and the value
-    // is the root's own (−Vx a, Vy a'), without the implicit-function step in the AD scalar.
-    if (vx.derivatives().isZero(0.0) && vy.derivatives().isZero(0.0) && theta.derivatives().isZero(0.0) &&
-        r.derivatives().isZero(0.0))
-      return {T(-x * root.a), T(y * root.ap), aero::hasFixedInductions(b, am.bem)};
-  }
-  return aero::quasiSteadyInducedVelocity<T>(b, vx, vy, theta, root.phi, am.bem, &r, &root.slope);
-}
 
 // AeroDyn's BEM weight of the rotor's tip-speed ratio (check_turnOffBEMT), as addAeroLoads forms it.
 template <class T>
@@ -217,90 +150,61 @@ void addUnsteadyAeroLoads(const Model& m, Workspace<T>& ws, const VecXT<T>& q, c
       const BodyPoint& pt = body.points[st.point];
       const detail::ElementFrame<T> g = detail::elementFrame(body, pt, bm, axes, st.curve);
       const Vec3T<T> rel = detail::steadyWind(am.wind, wind_dir, speed, g.pos(2)) - g.vel;
-      const T vx = rel.dot(g.xn), vy = rel.dot(g.ya);
       const Vec3T<T> d = g.pos - hub.r;
-      const T r_t = detail::distanceFromAxis<T>(d, disk);
-      const double r = valueOf(r_t);
-      const T theta = T(st.twist) + T(pitch - g.twist);
-      const double ax = frozen.axial(index), tn = frozen.tangential(index);
-      // The relative flow (x, y) = (Vx(1−a), Vy(1+a')): the frozen wake's, or with the dynamic-inflow states
-      // v (AeroDyn calculate_Inductions_from_DBEMT), their rates driven by the quasi-steady induction.
-      T x = valueOf(vx) == 0 ? vx : T(vx + ax), y = valueOf(vy) == 0 ? vy : T(vy + tn);
-      T v_ax(0.0), v_tn(0.0);  // the induced velocities the loads see, with dynamic inflow
-      if (dynamic) {
-        const aero::BemStation b = detail::bemStation(am, st, r);
-        const aero::InducedVelocity<T> qs = quasiSteadyInduction(am, b, vx, vy, theta, r_t,
-                                                                 ws.bem[static_cast<std::size_t>(index)]);
-        const int k = zi_inflow + 4 * index;  // v axial, v tangential, v1 axial, v1 tangential
-        // Elements with fixed inductions (a loss constant of 0) take the BEM ones (AeroDyn skips DBEMT there).
-        v_ax = qs.fixed ? qs.axial : (*z)(k);
-        v_tn = qs.fixed ? qs.tangential : (*z)(k + 1);
-        if (skew.active && !qs.fixed && valueOf(vx) != 0)
-          v_ax = v_ax * detail::skewFactor<T>(am, blade_skew.template at<T>(skew, r_t), T(-v_ax / vx));
-        std::tie(x, y) = aero::inducedFlow<T>(vx, vy, v_ax, v_tn, &weight);
-        if (zdot) {
-          const double tau2 = aero::dbemtTau2(am.tau1, st.span_ratio);
-          const aero::OyeState<T> da = aero::oyeDerivative<T>({(*z)(k + 2), (*z)(k)}, qs.axial, am.tau1, tau2);
-          const aero::OyeState<T> dt = aero::oyeDerivative<T>({(*z)(k + 3), (*z)(k + 1)}, qs.tangential, am.tau1, tau2);
-          (*zdot)(k) = da.v;
-          (*zdot)(k + 1) = dt.v;
-          (*zdot)(k + 2) = da.v1;
-          (*zdot)(k + 3) = dt.v1;
-        }
-        if (quasi_steady) {
-          (*quasi_steady)(2 * index) = qs.axial;
-          (*quasi_steady)(2 * index + 1) = qs.tangential;
-        }
-      }
-      aero::SectionLoads<T> L;
-      if (!z) {
-        L = aero::frozenLoads(detail::bemStation(am, st, r), vx, vy, theta, ax, tn, am.air_density, am.bem);
-      } else if (!st.ua) {
-        L = dynamic ? aero::inducedVelocityLoads<T>(detail::bemStation(am, st, r), vx, vy, theta, v_ax, v_tn,
-                                                    am.air_density, &weight)
-                    : aero::frozenLoads(detail::bemStation(am, st, r), vx, vy, theta, ax, tn, am.air_density, am.bem);
-      } else {
-        const T phi = atan2S(x, y), alpha = phi - theta, W = sqrt(x * x + y * y);
-        // The section's rotation rate about the span axis: the body frame's and the elastic twist's.
+      detail::UnsteadySectionInputs<T> s{rel.dot(g.xn),
+                                         rel.dot(g.ya),
+                                         T(st.twist) + T(pitch - g.twist),
+                                         detail::distanceFromAxis<T>(d, disk),
+                                         T(0.0),
+                                         weight,
+                                         {}};
+      if (z && st.ua) {  // the section's rotation rate about the span axis: the body frame's and the elastic twist's
         Vec3T<T> twist_rate = Vec3T<T>::Zero();
         for (int j = 0; j < body.inertia.ne; ++j) twist_rate += pt.theta.col(j) * qde[j];
-        const T omega = (f.w + f.R * twist_rate).dot(g.zn);
-        using std::cos;
-        using std::sin;
-        aero::UaInput<T> in{atan2S(T(W * sin(alpha) + omega * (0.5 * st.chord)), T(W * cos(alpha))), alpha, W, omega};
-        const aero::UaSection sec = uaSection(am, st);
-        aero::HgmState<T> xs{T(0.0), T(0.0), T(0.0), T(0.0)};
-        if (ns == 4) xs = {(*z)(zi), (*z)(zi + 1), (*z)(zi + 2), (*z)(zi + 3)};
-        else xs.x4 = (*z)(zi);
-        L = loadsOfCoefficients(x, y, phi, alpha, W, aero::hgmLoads(sec, xs, in), st.chord, am.air_density);
-        if (zdot) {
-          const aero::HgmState<T> dx = aero::hgmDerivative(sec, xs, in);
-          if (ns == 4) {
-            (*zdot)(zi) = dx.x1;
-            (*zdot)(zi + 1) = dx.x2;
-            (*zdot)(zi + 2) = dx.x3;
-            (*zdot)(zi + 3) = dx.x4;
-          } else {
-            (*zdot)(zi) = dx.x4;
-          }
-        }
-        if (inputs) inputs->push_back(in);
+        s.omega = (f.w + f.R * twist_rate).dot(g.zn);
       }
+      if (dynamic && skew.active) s.skew = blade_skew.template at<T>(skew, s.r);
+      const detail::UnsteadySectionContext c{am,           st,      frozen.axial(index), frozen.tangential(index),
+                                             z != nullptr, dynamic, skew.active,         minus_quasi_steady};
+      const int n_ua = z && st.ua ? ns : 0, n_in = dynamic ? 4 : 0, k_in = zi_inflow + 4 * index;
+      const T* z_ua = n_ua ? z->data() + zi : nullptr;
+      const T* z_in = n_in ? z->data() + k_in : nullptr;
+      BemRoot& root = ws.bem[static_cast<std::size_t>(index)];
+      detail::UnsteadySectionOutputs<T> o;
+      if constexpr (std::is_same_v<T, ADChunk>) {
+        // A linearization's pass (loads less the quasi-steady ones) that seeds none of the element's states and
+        // asks for nothing but loads and rates: the element's jet.
+        bool seeded = false;
+        for (int k = 0; k < n_ua; ++k) seeded = seeded || !z_ua[k].derivatives().isZero(0.0);
+        for (int k = 0; k < n_in; ++k) seeded = seeded || !z_in[k].derivatives().isZero(0.0);
+        if (minus_quasi_steady && z && !seeded && !inputs && !quasi_steady)
+          o = detail::unsteadySectionByJet(c, s, z_ua, z_in, n_ua, n_in, root,
+                                           ws.jets.unsteady[static_cast<std::size_t>(index)]);
+        else o = detail::unsteadySection(c, s, z_ua, z_in, root);
+      } else {
+        o = detail::unsteadySection(c, s, z_ua, z_in, root);
+      }
+      if (zdot) {
+        for (int k = 0; k < n_ua; ++k) (*zdot)(zi + k) = o.zdot[static_cast<std::size_t>(k)];
+        for (int k = 0; k < n_in; ++k) (*zdot)(k_in + k) = o.zdot[static_cast<std::size_t>(n_ua + k)];
+      }
+      if (quasi_steady && dynamic) {
+        (*quasi_steady)(2 * index) = o.qs_axial;
+        (*quasi_steady)(2 * index + 1) = o.qs_tangential;
+      }
+      if (inputs && z && st.ua) inputs->push_back(o.ua_input);
       if (st.ua) zi += ns;
-      const Vec3T<T> Fb = L.fx * g.xnb + L.fy * g.yab;
-      const Vec3T<T> Mb = L.mz * g.znb;
+      const Vec3T<T> Fb = o.fx * g.xnb + o.fy * g.yab;
+      const Vec3T<T> Mb = o.mz * g.znb;
       if (totals) {  // ground components about and along the rotor axis through the apex (addAeroLoads')
-        const Vec3T<T> Fg = L.fx * g.xn + L.fy * g.ya, Mg = L.mz * g.zn;
+        const Vec3T<T> Fg = o.fx * g.xn + o.fy * g.ya, Mg = o.mz * g.zn;
         totals->thrust += st.weight * Fg.dot(disk);
         totals->torque += st.weight * (Vec3T<T>(d.cross(Fg)) + Mg).dot(disk);
       }
-      if (!minus_quasi_steady) {
-        sum.addBody(pt, g.s, Fb, Mb, st.weight);
-      } else if (z && (st.ua || dynamic)) {  // less the loads without states on the frozen wake
-        const aero::SectionLoads<T> Q = aero::frozenLoads(detail::bemStation(am, st, r), vx, vy, theta, ax, tn,
-                                                          am.air_density, am.bem);
-        sum.addBody(pt, g.s, Vec3T<T>(Fb - Q.fx * g.xnb - Q.fy * g.yab), Vec3T<T>(Mb - Q.mz * g.znb), st.weight);
-      }
+      if (minus_quasi_steady)  // less the loads without states on the frozen wake
+        sum.addBody(pt, g.s, Vec3T<T>(Fb - o.qs_fx * g.xnb - o.qs_fy * g.yab), Vec3T<T>(Mb - o.qs_mz * g.znb),
+                    st.weight);
+      else sum.addBody(pt, g.s, Fb, Mb, st.weight);
     }
     sum.project(m, ws, blade.body, e);
     if (totals) sum.resultant(f.R, totals->blade_force[bi], totals->blade_moment[bi]);

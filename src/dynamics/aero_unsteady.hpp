@@ -65,8 +65,9 @@ void removeUnsteadyAirfoils(AeroModel& am);
 /// `inputs` its UA inputs only. `minus_quasi_steady`: e receives the loads less the quasi-steady frozen-wake loads at
 /// the same kinematics (what z null gives), formed in the same pass over the elements: their frames once for both, one
 /// sum of the differences, and the elements without states or dynamic inflow (a difference of zero) skipped; not
-/// with `totals`. A state of an
-/// element enters only that element's loads and rates, so its Jacobian columns come from that element alone
+/// with `totals`. In the AD scalar it takes each element whose states the pass does not seed through its section
+/// jet (aero_unsteady_section.hxx: the airfoil and inflow equations evaluated once per element and point). A state of
+/// an element enters only that element's loads and rates, so its Jacobian columns come from that element alone
 /// (linearize/unsteady_aero.cpp). `totals` (if given) receives the rotor thrust and torque of the loads in e and
 /// each blade's resultant force and moment about its body origin (ground components, as addAeroLoads forms them):
 /// the load outputs with the states (evaluateOutputs); blades without the element asked for keep zero resultants.

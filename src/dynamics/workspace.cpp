@@ -21,7 +21,8 @@ template <class T>
 Workspace<T>::Workspace(const Model& m)
     : bem(static_cast<std::size_t>(m.aero.nstations())),
       jets{std::vector<SectionJet>(static_cast<std::size_t>(m.aero.nstations())),
-           std::vector<BladeJet>(m.aero.blades.size())},
+           std::vector<BladeJet>(m.aero.blades.size()),
+           std::vector<UnsteadySectionJet>(static_cast<std::size_t>(m.aero.nstations()))},
       prod(maxBasisSize(m)),
       prod_dt(maxBasisSize(m)) {
   const int n = m.ndof();

@@ -155,11 +155,27 @@ struct BladeJet {
   VecX u1, u2, u3, r1, r2, r3;
 };
 
+/// One blade element's section outputs with aerodynamic states and their first derivatives in its
+/// section inputs, at one point, for the AD passes of a linearization with those states that seed
+/// none of the element's states (aero_unsteady.cpp): its airfoil and inflow equations are then
+/// evaluated once per element instead of once per pass.
+/// Inputs (8): vx, vy, θ, r, ω, the rotor's BEM weight, the skew's χ0 and (r / R_tip) sin ψ.
+/// Outputs (kOutputs): the loads with the states fx, fy, mz, the quasi-steady frozen-wake ones, the
+/// element's state rates (its UA states, then its dynamic-inflow states; up to 8).
+struct UnsteadySectionJet {
+  static constexpr int kInputs = 8, kStates = 8, kOutputs = 6 + kStates;
+  bool valid = false;
+  Eigen::Matrix<double, kInputs + kStates + 2, 1> key;  ///< inputs, states, frozen inductions
+  Eigen::Matrix<double, kOutputs, 1> value;
+  Eigen::Matrix<double, kOutputs, kInputs> d;  ///< ∂ outputs / ∂ inputs
+};
+
 /// The jets of the blade elements and of the blades (per element, per blade), kept across the AD
 /// passes of one linearization.
 struct AeroJets {
-  std::vector<SectionJet> sections;  ///< per blade element (AeroModel::nstations())
-  std::vector<BladeJet> blades;      ///< per AeroModel::blades
+  std::vector<SectionJet> sections;          ///< per blade element (AeroModel::nstations())
+  std::vector<BladeJet> blades;              ///< per AeroModel::blades
+  std::vector<UnsteadySectionJet> unsteady;  ///< per blade element, with aerodynamic states
 };
 
 template <class T>
